@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Subcommand registry of axistune-cli. Each Cmd*.cpp defines one subcommand and registers it with a
+// static CliRegistrar, so adding a command never touches main.cpp.
+
+#include "core/model/Result.h"
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace axistune::cli {
+
+struct CliCommand {
+    std::string name;
+    std::string description;
+    /// Adds the subcommand's options to `sub` and returns the function that runs it (exit code).
+    std::function<std::function<int()>(CLI::App& sub)> setup;
+};
+
+std::vector<CliCommand>& commandRegistry();
+
+struct CliRegistrar {
+    explicit CliRegistrar(CliCommand c) { commandRegistry().push_back(std::move(c)); }
+};
+
+/// Prints "axistune-cli <command>: <detail>" to stderr and returns the exit code for the error.
+int reportError(const std::string& command, const Error& error);
+
+}  // namespace axistune::cli

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// axistune-cli: every analysis and capture without the GUI. Results as JSON on stdout (or --out),
+// errors on stderr with exit codes 2 (bad input), 3 (device error), 4 (safety stop).
+#include "app/cli/CliCommand.h"
+
+#include <iostream>
+#include <memory>
+
+namespace axistune::cli {
+
+std::vector<CliCommand>& commandRegistry()
+{
+    static std::vector<CliCommand> registry;
+    return registry;
+}
+
+int reportError(const std::string& command, const Error& error)
+{
+    std::cerr << "axistune-cli " << command << ": " << error.detail << '\n';
+    return exitCodeFor(error.code);
+}
+
+}  // namespace axistune::cli
+
+int main(int argc, char** argv)
+{
+    using namespace axistune::cli;
+    CLI::App app{"AxisTune command line: measure, analyse and tune NC feed axes without the GUI"};
+    app.set_version_flag("--version", std::string(AXISTUNE_VERSION));
+    app.require_subcommand(1);
+    std::function<int()> runner;
+    for (auto& cmd : commandRegistry()) {
+        auto* sub = app.add_subcommand(cmd.name, cmd.description);
+        auto run = std::make_shared<std::function<int()>>();
+        *run = cmd.setup(*sub);
+        sub->callback([run, &runner] { runner = *run; });
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int rc = app.exit(e);
+        return rc == 0 ? 0 : 2;
+    }
+    return runner ? runner() : 2;
+}
