@@ -70,3 +70,19 @@ Result<Biquad> designLowPass(double cutoffHz, double periodS)
 }
 
 }  // namespace axistune::dsp
+
+namespace axistune::dsp {
+
+Result<Biquad> designNotchDigitalWidth(const NotchSpec& spec, double periodS)
+{
+    if (!(periodS > 0.0))
+        return makeError(ErrorCode::BadInput, "notch: execution period must be positive");
+    if (!(spec.centerHz > 0.0) || spec.centerHz >= 0.5 / periodS)
+        return designNotch(spec, periodS);  // same refusal and message
+    const double x = std::numbers::pi * spec.centerHz * periodS;
+    NotchSpec corrected = spec;
+    corrected.widthHz = spec.widthHz * x / (std::sin(x) * std::cos(x));
+    return designNotch(corrected, periodS);
+}
+
+}  // namespace axistune::dsp

@@ -80,3 +80,13 @@ private:
 };
 
 }  // namespace axistune::dsp
+
+namespace axistune::dsp {
+
+/// Notch whose digital full-depth -3 dB width equals spec.widthHz (not only the analogue
+/// prototype's). Centre-only pre-warping shrinks the digital width by (sin x·cos x)/x with
+/// x = π·f0·h (spec/current-loop-and-multisweep-frf.md §3.8: 3.3 kHz/600 Hz at 16 kHz would give
+/// 444.7 Hz); this designs the prototype with width·x/(sin x·cos x) instead. Same errors as designNotch.
+Result<Biquad> designNotchDigitalWidth(const NotchSpec& spec, double periodS);
+
+}  // namespace axistune::dsp
