@@ -1,0 +1,360 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Multi-rate servo simulation of one feed axis (spec/current-loop-and-multisweep-frf.md §1.2, §1.6;
+// current PI with PI ratio α, §2.3; lost motion Δx = (A + B·x)·ΔT and its compensation,
+// spec/lost-motion-and-two-inertia.md §1.7–1.9). The discrete-time equations are in docs/simulator.md.
+#include "core/sim/AxisSimulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace axistune::sim {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+Result<int> integerRatio(double num, double den, const std::string& what)
+{
+    const double r = num / den;
+    const long n = std::lround(r);
+    if (n < 1 || std::abs(r - static_cast<double>(n)) > 1e-9 * r) {
+        return makeError(ErrorCode::OutOfRange, what + " must be a whole multiple (got a ratio of " + std::to_string(r) + ")");
+    }
+    return static_cast<int>(n);
+}
+
+double sgn(double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
+
+}  // namespace
+
+AxisSimulator::AxisSimulator(AxisDefinition def, std::uint64_t seed) : m_def(std::move(def)), m_seed(seed), m_rng(seed) {}
+
+Result<std::unique_ptr<AxisSimulator>> AxisSimulator::create(const AxisDefinition& axis, std::uint64_t seed)
+{
+    std::unique_ptr<AxisSimulator> sim(new AxisSimulator(axis, seed));
+    if (auto st = sim->configure(axis.values); !st)
+        return makeError(st.error().code, "axis " + axis.name + ": " + st.error().detail);
+    sim->reset(0.0);
+    return sim;
+}
+
+double AxisSimulator::parameter(const std::string& key) const
+{
+    auto it = m_values.find(key);
+    return it == m_values.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
+}
+
+Status AxisSimulator::setParameters(const model::ParameterValues& values)
+{
+    model::ParameterValues next = m_values;
+    for (const auto& [key, value] : values) {
+        const auto* meta = model::findParameter(parameterMetas(), key);
+        if (!meta)
+            return makeError(ErrorCode::NotFound, "axis " + m_def.name + ": unknown parameter '" + key + "'");
+        if (auto st = model::checkParameterValue(*meta, value); !st)
+            return st;
+        next[key] = value;
+    }
+    return configure(next);
+}
+
+Status AxisSimulator::configure(const model::ParameterValues& v)
+{
+    auto get = [&v](const char* k) { return v.at(k); };
+    const double h = get("current.period");
+    auto velDiv = integerRatio(get("velocity.period"), h, "velocity.period / current.period");
+    if (!velDiv)
+        return velDiv.error();
+    auto posDiv = integerRatio(get("position.period"), get("velocity.period"), "position.period / velocity.period");
+    if (!posDiv)
+        return posDiv.error();
+    int deadTicks = 0;
+    if (get("current.dead_time") > 0.0) {
+        auto d = integerRatio(get("current.dead_time"), h, "current.dead_time / current.period");
+        if (!d)
+            return d.error();
+        deadTicks = *d;
+    }
+    dsp::FilterCascade filters;
+    for (int n = 1; n <= kNotchCount; ++n) {
+        const std::string k = "filter.notch" + std::to_string(n);
+        const double fc = v.at(k + ".center");
+        if (fc <= 0.0)
+            continue;
+        auto b = dsp::designNotch({fc, v.at(k + ".width"), v.at(k + ".depth")}, h);
+        if (!b)
+            return makeError(b.error().code, k + ": " + b.error().detail);
+        filters.add(*b);
+    }
+    if (const double fc = get("filter.lowpass.cutoff"); fc > 0.0) {
+        auto b = dsp::designLowPass(fc, h);
+        if (!b)
+            return makeError(b.error().code, "filter.lowpass: " + b.error().detail);
+        filters.add(*b);
+    }
+
+    PlantConfig pc;
+    pc.resistanceOhm = get("plant.motor.resistance");
+    pc.inductanceH = get("plant.motor.inductance_q");
+    pc.inductanceDropAtMax = get("plant.motor.inductance_drop_at_max");
+    pc.maxCurrentA = get("motor.max_current");
+    pc.torqueConstantNmPerA = get("motor.torque_constant");
+    pc.backEmfVsPerRad = get("plant.motor.back_emf_constant");
+    pc.inertiaMotorKgm2 = get("plant.inertia_motor");
+    pc.inertiaLoadKgm2 = get("plant.inertia_load");
+    pc.stiffnessNmPerRad = get("plant.coupling_stiffness");
+    pc.dampingNmsPerRad = get("plant.coupling_damping");
+    pc.viscousMotorNmsPerRad = get("plant.viscous_motor");
+    pc.viscousLoadNmsPerRad = get("plant.viscous_load");
+    pc.modes = m_def.modes;
+
+    const bool rebuildPlant = !m_plant || h != m_hCurrent;
+    m_values = v;
+    m_hCurrent = h;
+    m_velDiv = *velDiv;
+    m_posDiv = *posDiv;
+    m_intDiv = static_cast<int>(get("velocity.integral_divider"));
+    m_traceDiv = static_cast<int>(get("trace.divider"));
+    if (deadTicks != m_deadTicks || m_delayLine.size() != static_cast<std::size_t>(deadTicks)) {
+        m_deadTicks = deadTicks;
+        m_delayLine.assign(static_cast<std::size_t>(deadTicks), 0.0);
+    }
+    m_filters = filters;
+    if (rebuildPlant) {
+        m_plant = std::make_unique<PlantModel>(pc, h);
+        if (m_x.size() != m_plant->stateSize())
+            m_x = Eigen::VectorXd::Zero(m_plant->stateSize());
+    }
+    return Status::success();
+}
+
+double AxisSimulator::screwLead() const { return m_def.kind == AxisKind::Linear ? m_values.at("plant.screw_lead") : 1.0; }
+
+void AxisSimulator::reset(double position)
+{
+    m_x = Eigen::VectorXd::Zero(m_plant->stateSize());
+    const double angle = position / screwLead();
+    m_x[1] = angle;
+    if (!m_plant->rigid())
+        m_x[3] = angle;
+    m_rng.seed(m_seed);
+    m_gauss.reset();
+    m_filters.reset();
+    m_delayLine.assign(static_cast<std::size_t>(m_deadTicks), 0.0);
+    m_tick = m_velTick = 0;
+    m_currentInt = m_velInt = m_torqueCmd = m_torqueFf = m_velCmd = m_velCmdFromPos = m_velMeas = 0.0;
+    m_posCmd = m_posFeedback = position;
+    m_lmComp = m_lastDirection = m_currentCmd = m_voltage = m_injectionNow = 0.0;
+    m_prevEncoder = quantize(m_plant->encoderAngle(m_x), m_values.at("plant.encoder_motor"));
+    m_clampCount = m_currentLimitCount = 0;
+    m_profile = MotionProfile(position);
+    m_profileStart = 0.0;
+    m_trace.clear();
+    m_tracing = false;
+}
+
+void AxisSimulator::setPositionProfile(MotionProfile profile)
+{
+    m_profile = std::move(profile);
+    m_profileStart = time();
+}
+
+double AxisSimulator::quantize(double value, double countsPerRev) const
+{
+    if (!m_nl.quantization || countsPerRev <= 0.0)
+        return value;
+    const double step = kTwoPi / countsPerRev;
+    return std::floor(value / step + 0.5) * step;
+}
+
+double AxisSimulator::frictionMotor() const
+{
+    const double tc = m_values.at("plant.coulomb_motor");
+    if (!m_nl.friction || tc <= 0.0)
+        return 0.0;
+    // The smoothing velocity never goes below what an explicit step can hold stably.
+    const double j = m_plant->rigid() ? m_values.at("plant.inertia_motor") + m_values.at("plant.inertia_load")
+                                      : m_values.at("plant.inertia_motor");
+    const double eps = std::max(m_values.at("plant.coulomb_velocity"), 2.0 * m_hCurrent * tc / j);
+    return tc * std::tanh(PlantModel::motorVelocity(m_x) / eps);
+}
+
+double AxisSimulator::frictionLoad() const
+{
+    const double tc = m_values.at("plant.coulomb_load");
+    if (!m_nl.friction || tc <= 0.0)
+        return 0.0;
+    const double j = m_values.at("plant.inertia_load") + (m_plant->rigid() ? m_values.at("plant.inertia_motor") : 0.0);
+    const double eps = std::max(m_values.at("plant.coulomb_velocity"), 2.0 * m_hCurrent * tc / std::max(j, 1e-9));
+    return tc * std::tanh(m_plant->loadVelocity(m_x) / eps);
+}
+
+double AxisSimulator::lostMotionDeflection() const
+{
+    if (m_def.kind != AxisKind::Linear || !m_nl.lostMotion)
+        return 0.0;
+    const double xbs = m_values.at("plant.screw_offset") + screwLead() * m_plant->loadAngle(m_x);
+    return (m_values.at("plant.lost_motion_A") + m_values.at("plant.lost_motion_B") * xbs) * torque();
+}
+
+double AxisSimulator::motorPosition() const { return screwLead() * PlantModel::motorAngle(m_x); }
+
+double AxisSimulator::tablePosition() const { return screwLead() * m_plant->loadAngle(m_x) - lostMotionDeflection(); }
+
+void AxisSimulator::positionTick(double t, double feedbackPos)
+{
+    const MotionState s = m_profile.at(t - m_profileStart);
+    m_posCmd = s.position;
+    m_posFeedback = feedbackPos;
+    double comp = 0.0;
+    if (m_def.kind == AxisKind::Linear) {
+        const int mode = static_cast<int>(m_values.at("lostmotion.mode"));
+        if (mode == 1) {
+            if (s.velocity != 0.0)
+                m_lastDirection = sgn(s.velocity);  // holds the last direction at standstill
+            comp = m_lastDirection * 0.5 * m_values.at("lostmotion.backlash");
+        } else if (mode == 2) {
+            // (A + B·x_bs)·T_m with the last torque command (no algebraic loop), x_bs = x0 + X_t.
+            const double xbs = m_values.at("lostmotion.screw_offset") + feedbackPos;
+            comp = (m_values.at("lostmotion.A") + m_values.at("lostmotion.B") * xbs) * m_torqueCmd;
+        }
+    }
+    m_lmComp = comp;
+    const double r = screwLead();
+    m_velCmdFromPos = (m_values.at("position.kp") * (s.position + comp - feedbackPos)
+                       + m_values.at("position.velocity_ff") * s.velocity) / r;
+    m_torqueFf = m_values.at("position.torque_ff") * m_values.at("velocity.inertia") * s.acceleration / r;
+}
+
+void AxisSimulator::velocityTick(double t)
+{
+    const double tv = velocityPeriod();
+    double enc = quantize(m_plant->encoderAngle(m_x), m_values.at("plant.encoder_motor"));
+    if (m_nl.noise && m_values.at("plant.noise_position") > 0.0)
+        enc += m_values.at("plant.noise_position") * m_gauss(m_rng);
+    m_velMeas = (enc - m_prevEncoder) / tv;
+    m_prevEncoder = enc;
+
+    if (m_mode == ControlMode::Position && m_velTick % m_posDiv == 0) {
+        double fb = screwLead() * enc;
+        if (m_values.at("position.feedback") >= 1.0) {
+            if (m_def.kind == AxisKind::Linear) {
+                const double res = m_values.at("plant.scale_resolution");
+                fb = tablePosition();
+                if (m_nl.quantization && res > 0.0)
+                    fb = std::floor(fb / res + 0.5) * res;
+            } else {
+                fb = quantize(m_plant->loadAngle(m_x), m_values.at("plant.encoder_load"));
+            }
+        }
+        positionTick(t, fb);
+    }
+    if (m_mode == ControlMode::Velocity) {
+        m_velCmd = m_velocityCommand ? m_velocityCommand(t) : 0.0;
+        m_torqueFf = 0.0;
+    } else {
+        m_velCmd = m_velCmdFromPos;
+    }
+    const double e = m_velCmd - m_velMeas;
+    if (m_velTick % m_intDiv == 0)
+        m_velInt += m_values.at("velocity.ki") * tv * m_intDiv * e;
+    m_torqueCmd = m_values.at("velocity.kp") * e + m_velInt + m_torqueFf;
+
+    if (m_tracing && m_velTick % m_traceDiv == 0) {
+        const double row[] = {t,
+                              m_velCmd,
+                              m_velMeas,
+                              m_torqueCmd,
+                              m_injectionNow,
+                              torque(),
+                              m_currentCmd,
+                              PlantModel::current(m_x),
+                              m_voltage,
+                              m_posCmd,
+                              screwLead() * enc,
+                              tablePosition(),
+                              m_lmComp,
+                              m_plant->loadVelocity(m_x)};
+        for (std::size_t c = 0; c < m_trace.size(); ++c)
+            m_trace[c].push_back(row[c]);
+    }
+    ++m_velTick;
+}
+
+void AxisSimulator::runTicks(std::int64_t ticks)
+{
+    const double kt = m_values.at("motor.torque_constant");
+    const double iMax = m_values.at("motor.max_current");
+    const double vMax = m_values.at("drive.max_voltage");
+    const double kp = m_values.at("current.kp"), ki = m_values.at("current.ki"), alpha = m_values.at("current.alpha");
+    const double noiseI = m_nl.noise ? m_values.at("plant.noise_current") : 0.0;
+    for (std::int64_t k = 0; k < ticks; ++k) {
+        const double t = time();
+        m_injectionNow = m_injection ? m_injection(t) : 0.0;
+        if (m_tick % m_velDiv == 0)
+            velocityTick(t);
+        double iCmd = m_filters.process(m_torqueCmd + m_injectionNow) / kt;
+        if (std::abs(iCmd) > iMax) {
+            iCmd = sgn(iCmd) * iMax;
+            ++m_currentLimitCount;
+        }
+        m_currentCmd = iCmd;
+        const double iMeas = PlantModel::current(m_x) + (noiseI > 0.0 ? noiseI * m_gauss(m_rng) : 0.0);
+        m_currentInt += ki * m_hCurrent * (iCmd - iMeas);
+        const double prop = kp * (alpha * iCmd - iMeas);
+        double v = m_currentInt + prop;
+        if (std::abs(v) > vMax) {
+            ++m_clampCount;
+            v = sgn(v) * vMax;
+            m_currentInt = v - prop;  // anti-windup: the integrator is rewritten to the clamped output
+        }
+        double applied = v;
+        if (m_deadTicks > 0) {
+            m_delayLine.push_back(v);
+            applied = m_delayLine.front();
+            m_delayLine.pop_front();
+        }
+        m_voltage = applied;
+        m_plant->step(m_x, applied, -frictionMotor(), -frictionLoad(), m_nl.inductanceDrop);
+        ++m_tick;
+    }
+}
+
+void AxisSimulator::run(double seconds) { runTicks(std::llround(seconds / m_hCurrent)); }
+
+std::vector<std::string> AxisSimulator::traceChannelNames() const
+{
+    const std::string u = m_def.kind == AxisKind::Linear ? "m" : "rad";
+    return {"t_s",          "velocity_cmd_rad_s", "motor_vel_rad_s",    "torque_cmd_Nm",   "injection_Nm",
+            "torque_Nm",    "current_cmd_A",      "current_A",          "voltage_V",       "position_cmd_" + u,
+            "motor_pos_" + u, "table_pos_" + u,   "lost_motion_comp_" + u, "load_vel_rad_s"};
+}
+
+void AxisSimulator::startTrace()
+{
+    m_trace.assign(traceChannelNames().size(), {});
+    m_tracing = true;
+}
+
+model::Capture AxisSimulator::takeTrace()
+{
+    model::Capture cap;
+    const auto names = traceChannelNames();
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", 1.0 / tracePeriod());
+    cap.metadata["fs_Hz"] = buf;
+    cap.metadata["axis"] = m_def.name;
+    std::snprintf(buf, sizeof buf, "%.17g", m_hCurrent);
+    cap.metadata["current_period_s"] = buf;
+    std::snprintf(buf, sizeof buf, "%.17g", velocityPeriod());
+    cap.metadata["velocity_period_s"] = buf;
+    cap.metadata["seed"] = std::to_string(m_seed);
+    for (std::size_t c = 0; c < names.size() && c < m_trace.size(); ++c)
+        cap.channels.push_back({names[c], std::move(m_trace[c])});
+    m_trace.clear();
+    m_tracing = false;
+    return cap;
+}
+
+}  // namespace axistune::sim

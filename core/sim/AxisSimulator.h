@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// One simulated feed axis with its drive: multi-rate current (default 62.5 µs), velocity (250 µs)
+// and position (1 ms) loops, torque-command filters at the current-loop rate, lost-motion
+// compensation, semi-/full-closed feedback, a trace recorder at a divider of the velocity period.
+// Deterministic for a seed. Not thread-safe: one thread drives one simulator.
+// The structure follows spec/current-loop-and-multisweep-frf.md §1.2, §1.6 and §2.3; see
+// docs/simulator.md for the exact discrete-time equations.
+
+#include "core/dsp/DigitalFilter.h"
+#include "core/model/Capture.h"
+#include "core/model/Parameter.h"
+#include "core/model/Result.h"
+#include "core/sim/MachineDefinition.h"
+#include "core/sim/MotionProfile.h"
+#include "core/sim/PlantModel.h"
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <random>
+
+namespace axistune::sim {
+
+enum class ControlMode {
+    Velocity,  ///< velocity command from setVelocityCommand, position loop open
+    Position,  ///< position command from setPositionProfile
+};
+
+/// Switches for the non-ideal parts. All on by default; tests turn them off to see the linear part.
+struct Nonlinearities {
+    bool friction = true;             ///< Coulomb friction
+    bool inductanceDrop = true;       ///< L falls with current
+    bool quantization = true;         ///< encoder and scale resolution
+    bool noise = true;                ///< measurement noise
+    bool lostMotion = true;           ///< elastic lost motion of the ball screw
+};
+
+class AxisSimulator {
+public:
+    /// Builds the simulator of one axis; fails when the periods are not integer multiples.
+    static Result<std::unique_ptr<AxisSimulator>> create(const AxisDefinition& axis, std::uint64_t seed);
+
+    const std::string& name() const { return m_def.name; }
+    AxisKind kind() const { return m_def.kind; }
+    const AxisDefinition& definition() const { return m_def; }
+    const std::vector<model::ParameterMeta>& parameterMetas() const { return axisParameterMetas(m_def.kind); }
+    const model::ParameterValues& parameters() const { return m_values; }
+    double parameter(const std::string& key) const;
+    /// Writes several parameters at once: all are range-checked first; nothing changes on an error.
+    Status setParameters(const model::ParameterValues& values);
+
+    void setNonlinearities(const Nonlinearities& n) { m_nl = n; }
+    const Nonlinearities& nonlinearities() const { return m_nl; }
+
+    /// Zero state at t = 0 with the position held at `position` (axis units); clears the trace and reseeds.
+    void reset(double position = 0.0);
+    void setControlMode(ControlMode mode) { m_mode = mode; }
+    /// Motor velocity command [rad/s] as a function of time, sampled at the velocity-loop rate.
+    void setVelocityCommand(std::function<double(double)> fn) { m_velocityCommand = std::move(fn); }
+    /// Position command (axis units), sampled at the position-loop rate. Time 0 of the profile is now.
+    void setPositionProfile(MotionProfile profile);
+    /// Torque added to the torque command [N·m] before the filters, sampled at the current-loop rate.
+    void setTorqueInjection(std::function<double(double)> fn) { m_injection = std::move(fn); }
+
+    /// Runs whole current-loop periods for `seconds` of machine time.
+    void run(double seconds);
+    void runTicks(std::int64_t ticks);
+
+    double time() const { return static_cast<double>(m_tick) * m_hCurrent; }
+    double currentPeriod() const { return m_hCurrent; }
+    double velocityPeriod() const { return m_hCurrent * m_velDiv; }
+    double tracePeriod() const { return velocityPeriod() * m_traceDiv; }
+    std::uint64_t voltageClampCount() const { return m_clampCount; }
+    std::uint64_t currentLimitCount() const { return m_currentLimitCount; }
+
+    // Instantaneous state (SI; positions in axis units).
+    double motorVelocity() const { return PlantModel::motorVelocity(m_x); }
+    double motorPosition() const;   ///< axis units from the rigid motor angle
+    double tablePosition() const;   ///< load side including elastic lost motion
+    double torque() const { return m_plant->config().torqueConstantNmPerA * PlantModel::current(m_x); }
+    double torqueCommand() const { return m_torqueCmd; }
+    double positionCommand() const { return m_posCmd; }
+
+    /// Trace recording: every `trace.divider` velocity periods while enabled.
+    void startTrace();
+    void stopTrace() { m_tracing = false; }
+    /// The recorded trace as a capture (channels in SI, metadata fs_Hz, axis, preset-free details).
+    model::Capture takeTrace();
+
+    /// Names of the trace channels for this axis kind, in capture order.
+    std::vector<std::string> traceChannelNames() const;
+
+private:
+    AxisSimulator(AxisDefinition def, std::uint64_t seed);
+    Status configure(const model::ParameterValues& v);
+    void velocityTick(double t);
+    void positionTick(double t, double feedbackPos);
+    double frictionMotor() const;
+    double frictionLoad() const;
+    double lostMotionDeflection() const;
+    double quantize(double value, double step) const;
+    double screwLead() const;  ///< R [m/rad] for linear axes, 1 for rotary
+
+    AxisDefinition m_def;
+    model::ParameterValues m_values;
+    std::uint64_t m_seed;
+    std::mt19937_64 m_rng;
+    std::normal_distribution<double> m_gauss{0.0, 1.0};
+    Nonlinearities m_nl;
+
+    std::unique_ptr<PlantModel> m_plant;
+    Eigen::VectorXd m_x;
+    double m_hCurrent = 62.5e-6;
+    int m_velDiv = 4;
+    int m_posDiv = 4;  ///< in velocity periods
+    int m_intDiv = 1;
+    int m_traceDiv = 1;
+    int m_deadTicks = 1;
+    dsp::FilterCascade m_filters;
+
+    ControlMode m_mode = ControlMode::Velocity;
+    std::function<double(double)> m_velocityCommand;
+    std::function<double(double)> m_injection;
+    MotionProfile m_profile;
+    double m_profileStart = 0.0;
+
+    // Controller state.
+    std::int64_t m_tick = 0;
+    std::int64_t m_velTick = 0;
+    double m_currentInt = 0.0;
+    double m_velInt = 0.0;
+    double m_torqueCmd = 0.0;
+    double m_torqueFf = 0.0;
+    double m_velCmd = 0.0;
+    double m_velCmdFromPos = 0.0;
+    double m_velMeas = 0.0;
+    double m_prevEncoder = 0.0;
+    double m_posCmd = 0.0;
+    double m_posFeedback = 0.0;
+    double m_lmComp = 0.0;
+    double m_lastDirection = 0.0;
+    double m_currentCmd = 0.0;
+    double m_voltage = 0.0;
+    double m_injectionNow = 0.0;
+    std::deque<double> m_delayLine;
+    std::uint64_t m_clampCount = 0;
+    std::uint64_t m_currentLimitCount = 0;
+
+    // Trace.
+    bool m_tracing = false;
+    std::vector<std::vector<double>> m_trace;
+};
+
+}  // namespace axistune::sim

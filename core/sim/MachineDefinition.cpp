@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/sim/MachineDefinition.h"
+
+#include "core/model/Units.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace axistune::sim {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+const AxisDefinition* MachineDefinition::axis(const std::string& axisName) const
+{
+    for (const auto& a : axes) {
+        if (a.name == axisName)
+            return &a;
+    }
+    return nullptr;
+}
+
+std::string resourceDir()
+{
+    if (const char* env = std::getenv("AXISTUNE_RESOURCE_DIR"); env && *env)
+        return env;
+    return AXISTUNE_SOURCE_RESOURCE_DIR;
+}
+
+std::vector<std::string> presetNames()
+{
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(fs::path(resourceDir()) / "machines", ec)) {
+        if (e.path().extension() == ".json")
+            names.push_back(e.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+Result<MachineDefinition> loadPreset(const std::string& name)
+{
+    const auto path = fs::path(resourceDir()) / "machines" / (name + ".json");
+    if (!fs::exists(path)) {
+        std::string known;
+        for (const auto& n : presetNames())
+            known += (known.empty() ? "" : ", ") + n;
+        return makeError(ErrorCode::NotFound, "unknown machine preset '" + name + "' (known: " + known + ")");
+    }
+    return loadMachineDefinitionFile(path.string());
+}
+
+namespace {
+
+Status applyParameters(const json& params, const std::string& where, AxisDefinition& axis)
+{
+    const auto& metas = axisParameterMetas(axis.kind);
+    for (const auto& [key, entry] : params.items()) {
+        const auto* meta = model::findParameter(metas, key);
+        if (!meta)
+            return makeError(ErrorCode::BadInput, where + ": unknown parameter '" + key + "'");
+        if (!entry.is_object() || !entry.contains("value") || !entry["value"].is_number())
+            return makeError(ErrorCode::BadInput, where + ", parameter '" + key + "': needs a numeric \"value\"");
+        const std::string unit = entry.value("unit", meta->siUnit);
+        auto si = model::convertUnit(entry["value"].get<double>(), unit, meta->siUnit);
+        if (!si)
+            return makeError(ErrorCode::BadInput, where + ", parameter '" + key + "': " + si.error().detail);
+        if (auto st = model::checkParameterValue(*meta, *si); !st)
+            return makeError(st.error().code, where + ": " + st.error().detail);
+        axis.values[key] = *si;
+        axis.sources[key] = entry.value("source", std::string("assumed"));
+    }
+    return Status::success();
+}
+
+Result<std::vector<ResonanceMode>> parseModes(const json& modes, const std::string& where)
+{
+    std::vector<ResonanceMode> out;
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+        const auto& m = modes[i];
+        const std::string w = where + ", mode " + std::to_string(i + 1);
+        for (const char* k : {"frequency_Hz", "damping", "modal_inertia_kgm2"}) {
+            if (!m.contains(k) || !m[k].is_number())
+                return makeError(ErrorCode::BadInput, w + ": needs a numeric \"" + std::string(k) + "\"");
+        }
+        ResonanceMode r{m["frequency_Hz"].get<double>(), m["damping"].get<double>(), m["modal_inertia_kgm2"].get<double>()};
+        if (!(r.frequencyHz > 0) || !(r.damping > 0) || !(r.modalInertiaKgm2 > 0))
+            return makeError(ErrorCode::OutOfRange, w + ": frequency, damping and modal inertia must be positive");
+        out.push_back(r);
+    }
+    return out;
+}
+
+}  // namespace
+
+Result<MachineDefinition> loadMachineDefinitionFile(const std::string& path)
+{
+    std::ifstream f(path);
+    if (!f)
+        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
+    json j;
+    try {
+        j = json::parse(f);
+    } catch (const json::parse_error& e) {
+        return makeError(ErrorCode::BadInput, path + ": not valid JSON (" + std::string(e.what()) + ")");
+    }
+    MachineDefinition def;
+    def.name = j.value("name", fs::path(path).stem().string());
+    def.description = j.value("description", std::string());
+    if (!j.contains("axes") || !j["axes"].is_array() || j["axes"].empty())
+        return makeError(ErrorCode::BadInput, path + ": needs a non-empty \"axes\" array");
+    const json common = j.value("common", json::object());
+    for (const auto& a : j["axes"]) {
+        AxisDefinition axis;
+        axis.name = a.value("name", std::string());
+        if (axis.name.empty())
+            return makeError(ErrorCode::BadInput, path + ": an axis has no \"name\"");
+        const std::string kind = a.value("kind", std::string("linear"));
+        if (kind != "linear" && kind != "rotary")
+            return makeError(ErrorCode::BadInput, path + ", axis " + axis.name + ": kind must be linear or rotary");
+        axis.kind = kind == "linear" ? AxisKind::Linear : AxisKind::Rotary;
+        axis.values = defaultAxisParameters(axis.kind);
+        const std::string where = path + ", axis " + axis.name;
+        if (common.contains("parameters")) {
+            if (auto st = applyParameters(common["parameters"], where + " (common)", axis); !st)
+                return st.error();
+        }
+        if (a.contains("parameters")) {
+            if (auto st = applyParameters(a["parameters"], where, axis); !st)
+                return st.error();
+        }
+        const json modes = a.contains("modes") ? a["modes"] : common.value("modes", json::array());
+        auto m = parseModes(modes, where);
+        if (!m)
+            return m.error();
+        axis.modes = *m;
+        def.axes.push_back(std::move(axis));
+    }
+    return def;
+}
+
+}  // namespace axistune::sim

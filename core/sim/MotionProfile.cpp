@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/sim/MotionProfile.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace axistune::sim {
+
+void MotionProfile::push(double dt, double a)
+{
+    if (dt <= 0.0)
+        return;
+    MotionState s = m_pieces.empty() ? MotionState{m_start, 0.0, 0.0} : at(duration());
+    const double t0 = duration();
+    m_pieces.push_back({t0, dt, s.position, m_pieces.empty() ? 0.0 : s.velocity, a});
+}
+
+void MotionProfile::dwell(double durationS) { push(durationS, 0.0); }
+
+void MotionProfile::move(double distance, double velocity, double acceleration)
+{
+    if (distance == 0.0 || velocity <= 0.0 || acceleration <= 0.0)
+        return;
+    const double sgn = distance > 0 ? 1.0 : -1.0;
+    const double d = std::abs(distance);
+    double vPeak = velocity;
+    double tAcc = vPeak / acceleration;
+    double dAcc = 0.5 * acceleration * tAcc * tAcc;
+    double tConst = 0.0;
+    if (2.0 * dAcc > d) {  // triangle
+        tAcc = std::sqrt(d / acceleration);
+        vPeak = acceleration * tAcc;
+    } else {
+        tConst = (d - 2.0 * dAcc) / vPeak;
+    }
+    push(tAcc, sgn * acceleration);
+    push(tConst, 0.0);
+    push(tAcc, -sgn * acceleration);
+}
+
+MotionState MotionProfile::at(double tS) const
+{
+    if (m_pieces.empty())
+        return {m_start, 0.0, 0.0};
+    auto it = std::upper_bound(m_pieces.begin(), m_pieces.end(), tS,
+                               [](double t, const Piece& p) { return t < p.t0; });
+    if (it == m_pieces.begin())
+        return {m_start, 0.0, 0.0};
+    const Piece& p = *(it - 1);
+    const double tau = std::min(tS - p.t0, p.dt);
+    MotionState s;
+    s.position = p.x0 + p.v0 * tau + 0.5 * p.a * tau * tau;
+    s.velocity = p.v0 + p.a * tau;
+    s.acceleration = tS - p.t0 <= p.dt ? p.a : 0.0;
+    if (tS - p.t0 > p.dt)  // after the end: hold
+        s.velocity = (it == m_pieces.end()) ? 0.0 : s.velocity;
+    return s;
+}
+
+}  // namespace axistune::sim
