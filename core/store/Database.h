@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The AxisTune store: one SQLite file (WAL, foreign keys, PRAGMA user_version with ordered
+// migrations) holding machines, axes, parameter sets, models, sessions with captures and results,
+// and the journal of parameter writes. Every logical save is one transaction, so a crash or kill
+// during a save leaves the previous state intact. Layout and usage: docs/storage.md.
+//
+// Thread affinity: a Database is used from one thread at a time (one connection).
+
+#include "core/io/Profile.h"
+#include "core/model/Capture.h"
+#include "core/model/Parameter.h"
+#include "core/model/Result.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace SQLite {
+class Database;
+}
+
+namespace axistune::store {
+
+enum class ParameterSource { Read, Proposed, Applied, Imported };
+enum class SessionStatus { Completed, Aborted, Failed };
+
+const char* toString(ParameterSource s);
+const char* toString(SessionStatus s);
+Result<ParameterSource> parameterSourceFrom(const std::string& s);
+Result<SessionStatus> sessionStatusFrom(const std::string& s);
+
+/// UTC time as ISO 8601 with milliseconds, "2026-11-22T05:33:33.120Z".
+std::string nowIso8601();
+
+struct ParameterSet {
+    std::int64_t id = 0;  ///< assigned by the store
+    std::string axis;
+    ParameterSource source = ParameterSource::Read;
+    std::string time;  ///< empty: now
+    std::string note;
+    model::ParameterValues values;
+};
+
+struct ModelRecord {
+    std::int64_t id = 0;
+    std::string axis;
+    std::string kind;  ///< io::modelKinds()
+    std::string time;  ///< empty: now
+    nlohmann::json data;
+};
+
+struct JournalEntry {
+    std::int64_t id = 0;
+    std::string machine;  ///< filled when read back
+    std::string axis;
+    std::string key;
+    std::optional<double> oldValue;  ///< none when the old value was unknown
+    double newValue = 0.0;
+    std::string time;  ///< empty: now
+    std::optional<std::int64_t> sessionId;
+};
+
+struct SessionInfo {
+    std::int64_t id = 0;
+    std::string machine;  ///< may be empty (analysis of files without a machine)
+    std::string axis;
+    std::string kind;     ///< "frf", "current-loop", "profile-import", ...
+    std::string started;  ///< empty: now
+    std::string finished; ///< empty: now
+    SessionStatus status = SessionStatus::Completed;
+    std::string appVersion;  ///< empty: this build's version
+    std::string operatorName;
+    std::string note;
+    int captureCount = 0;  ///< filled by listSessions/loadSession
+    int resultCount = 0;
+};
+
+struct NamedCapture {
+    std::string name;
+    model::Capture capture;
+};
+
+struct SessionResult {
+    std::string name;
+    nlohmann::json data;
+    std::vector<model::Channel> arrays;  ///< named arrays, e.g. "f_Hz", "mag_dB"
+};
+
+/// Everything one session recorded. Parameter sets, models and journal entries listed here are saved
+/// in the same transaction and linked to the session (the store never changes a profile without a
+/// session saying why).
+struct SessionRecord {
+    SessionInfo info;
+    std::vector<std::string> machineAxes;  ///< axes to create (in order) if the machine lacks them
+    std::string machineDescription;        ///< when not empty, replaces the machine's description
+    nlohmann::json inputs = nlohmann::json::object();
+    std::vector<NamedCapture> captures;
+    std::vector<SessionResult> results;
+    std::vector<ParameterSet> parameterSets;
+    std::vector<ModelRecord> models;
+    std::vector<JournalEntry> journal;
+};
+
+enum class OpenMode {
+    CreateIfMissing,  ///< creates a new, empty store when the file does not exist
+    MustExist,        ///< NotFound when the file does not exist (read-only commands)
+};
+
+class Database {
+public:
+    static constexpr int kSchemaVersion = 2;
+    static constexpr std::int32_t kApplicationId = 0x41585455;  // "AXTU"
+
+    /// Opens (and creates or migrates) a store. Refuses, with a message naming the file: a file that
+    /// is not SQLite, a truncated or corrupt file, a file from a newer AxisTune, another program's
+    /// SQLite file.
+    static Result<Database> open(const std::string& path, OpenMode mode = OpenMode::CreateIfMissing);
+
+    Database(Database&&) noexcept;
+    Database& operator=(Database&&) noexcept;
+    ~Database();
+
+    const std::string& path() const { return m_path; }
+    int schemaVersion() const;
+
+    // Machines and axes.
+    Result<std::vector<std::string>> listMachines() const;
+    /// Creates the machine (and its axes, appended in order) if missing; one transaction.
+    Status ensureMachine(const std::string& machine, const std::vector<std::string>& axes = {},
+                         const std::string& description = {});
+
+    // Parameters, models, journal (each call one transaction; prefer recordSession for a wizard).
+    Result<std::int64_t> saveParameterSet(const std::string& machine, const ParameterSet& set,
+                                          std::optional<std::int64_t> sessionId = std::nullopt);
+    /// Current parameters: for every key the value of the newest non-proposed set holding it.
+    Result<model::ParameterValues> currentParameters(const std::string& machine, const std::string& axis) const;
+    Result<std::vector<ParameterSet>> parameterSets(const std::string& machine, const std::string& axis) const;
+    Result<std::int64_t> saveModel(const std::string& machine, const ModelRecord& model,
+                                   std::optional<std::int64_t> sessionId = std::nullopt);
+    Result<std::vector<JournalEntry>> journal(const std::string& machine) const;
+
+    // Profiles.
+    /// The machine with its axes, current parameters and newest model of each kind.
+    Result<io::MachineProfile> loadProfile(const std::string& machine) const;
+    /// Saves a profile as an "imported" parameter set and models per axis, together with a session of
+    /// kind "profile-import" whose inputs name `sourceName`; one transaction. Returns the session id.
+    Result<std::int64_t> importProfile(const io::MachineProfile& profile, const std::string& sourceName,
+                                       const std::string& note = {});
+
+    // Sessions.
+    Result<std::int64_t> recordSession(const SessionRecord& record);
+    Result<std::vector<SessionInfo>> listSessions(const std::string& machine = {}) const;
+    Result<SessionRecord> loadSession(std::int64_t id) const;
+
+    /// `PRAGMA integrity_check`: "ok" or the first problems found.
+    Result<std::string> integrityCheck() const;
+
+    /// For tests and tools: the underlying connection.
+    SQLite::Database& connection() const { return *m_db; }
+
+private:
+    Database(std::string path, std::unique_ptr<SQLite::Database> db);
+    Status migrate();
+
+    std::string m_path;
+    std::unique_ptr<SQLite::Database> m_db;
+};
+
+}  // namespace axistune::store

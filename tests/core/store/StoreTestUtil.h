@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Helpers for the store tests: temporary folders and deterministic captures.
+
+#include "core/model/Capture.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace axistune::store::testutil {
+
+inline std::filesystem::path tempDir(const std::string& tag)
+{
+    std::string tmpl = (std::filesystem::temp_directory_path() / ("axistune-store-" + tag + "-XXXXXX")).string();
+    char* d = mkdtemp(tmpl.data());
+    return d ? std::filesystem::path(d) : std::filesystem::temp_directory_path();
+}
+
+/// Channel k, sample i: sin(0.001*i*(k+1)) + k — every value differs, so a swapped or shifted
+/// channel is caught.
+inline model::Capture makeCapture(std::size_t channels, std::size_t samples, double seed = 0.0)
+{
+    model::Capture c;
+    c.metadata["fs_Hz"] = "4000";
+    c.metadata["seed"] = std::to_string(seed);
+    for (std::size_t k = 0; k < channels; ++k) {
+        model::Channel ch;
+        ch.name = "ch" + std::to_string(k) + "_Nm";
+        ch.data.resize(samples);
+        for (std::size_t i = 0; i < samples; ++i)
+            ch.data[i] = std::sin(0.001 * static_cast<double>(i) * static_cast<double>(k + 1) + seed) + static_cast<double>(k);
+        c.channels.push_back(std::move(ch));
+    }
+    return c;
+}
+
+}  // namespace axistune::store::testutil
