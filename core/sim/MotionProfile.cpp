@@ -10,9 +10,14 @@ void MotionProfile::push(double dt, double a)
 {
     if (dt <= 0.0)
         return;
-    MotionState s = m_pieces.empty() ? MotionState{m_start, 0.0, 0.0} : at(duration());
-    const double t0 = duration();
-    m_pieces.push_back({t0, dt, s.position, m_pieces.empty() ? 0.0 : s.velocity, a});
+    double x = m_start, v = 0.0, t0 = 0.0;
+    if (!m_pieces.empty()) {  // the end state of the last piece
+        const Piece& p = m_pieces.back();
+        x = p.x0 + p.v0 * p.dt + 0.5 * p.a * p.dt * p.dt;
+        v = p.v0 + p.a * p.dt;
+        t0 = p.t0 + p.dt;
+    }
+    m_pieces.push_back({t0, dt, x, v, a});
 }
 
 void MotionProfile::dwell(double durationS) { push(durationS, 0.0); }
@@ -40,20 +45,18 @@ void MotionProfile::move(double distance, double velocity, double acceleration)
 
 MotionState MotionProfile::at(double tS) const
 {
-    if (m_pieces.empty())
+    if (m_pieces.empty() || tS <= 0.0)
         return {m_start, 0.0, 0.0};
+    // The last piece that starts at or before tS.
     auto it = std::upper_bound(m_pieces.begin(), m_pieces.end(), tS,
                                [](double t, const Piece& p) { return t < p.t0; });
-    if (it == m_pieces.begin())
-        return {m_start, 0.0, 0.0};
     const Piece& p = *(it - 1);
-    const double tau = std::min(tS - p.t0, p.dt);
+    const bool after = tS >= p.t0 + p.dt;
+    const double tau = after ? p.dt : tS - p.t0;
     MotionState s;
     s.position = p.x0 + p.v0 * tau + 0.5 * p.a * tau * tau;
     s.velocity = p.v0 + p.a * tau;
-    s.acceleration = tS - p.t0 <= p.dt ? p.a : 0.0;
-    if (tS - p.t0 > p.dt)  // after the end: hold
-        s.velocity = (it == m_pieces.end()) ? 0.0 : s.velocity;
+    s.acceleration = after ? 0.0 : p.a;
     return s;
 }
 
