@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// axistune-cli two-inertia: two-inertia fit of a torque → motor-velocity FRF, F_m/F_L settings,
+// velocity PI and position-gain limit on the fitted model, predicted load error (docs/tuning.md).
+#include "app/cli/CliCommand.h"
+#include "core/io/FrfCsv.h"
+#include "core/tuning/TwoInertia.h"
+#include "core/tuning/TwoInertiaFilter.h"
+#include "core/tuning/VelocityLoop.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <numbers>
+
+namespace axistune::cli {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+struct TwoInertiaOptions {
+    std::string frfPath;
+    std::string outPath;
+    tuning::TwoInertiaFitOptions fit;
+    std::string mode = "semi";
+    double tauS = 0.0;
+    double bandwidthHz = 24.0;
+    double staticGain = 10.0;
+    tuning::MotionProfile profile;
+};
+
+nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+int runTwoInertia(const TwoInertiaOptions& o)
+{
+    const std::string cmd = "two-inertia";
+    if (o.mode != "semi" && o.mode != "full") {
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--mode must be 'semi' or 'full', got '" + o.mode + "'"));
+    }
+    if (!(o.bandwidthHz > 0.0) || !(o.staticGain > 0.0) || o.tauS < 0.0 || !(o.profile.vMax > 0.0) ||
+        !(o.profile.aMax > 0.0) || !(o.profile.jerk > 0.0)) {
+        return reportError(cmd, makeError(ErrorCode::OutOfRange,
+                                          "--bandwidth-hz, --k, --vmax, --accel, --jerk must be > 0 and --tau-s >= 0"));
+    }
+    auto frf = io::readFrfCsvFile(o.frfPath);
+    if (!frf) {
+        return reportError(cmd, frf.error());
+    }
+    auto fit = tuning::fitTwoInertia(*frf, o.fit);
+    if (!fit) {
+        return reportError(cmd, Error{fit.error().code, o.frfPath + ": " + fit.error().detail});
+    }
+    const auto& p = fit->params;
+    const auto mode = o.mode == "full" ? tuning::SuppressionMode::Full : tuning::SuppressionMode::Semi;
+    const auto filter = tuning::suppressionFilterFromModel(p, mode, o.tauS);
+    const auto pi = tuning::velocityPiFromInertia(p.jmKgm2, kTwoPi * o.bandwidthHz, o.staticGain);
+    const auto fbMode = mode == tuning::SuppressionMode::Full ? tuning::FeedbackMode::Full : tuning::FeedbackMode::Semi;
+    const auto posPlain = tuning::positionGain(p, pi, fbMode, std::nullopt, false, 6.0);
+    std::optional<tuning::SuppressionFilter> inLoop;
+    if (mode == tuning::SuppressionMode::Full) {
+        inLoop = filter;
+    }
+    const auto posFilter = tuning::positionGain(p, pi, fbMode, inLoop, false, 6.0);
+    const auto semiFilter = tuning::suppressionFilterFromModel(p, tuning::SuppressionMode::Semi, 0.0);
+    const auto loadError = tuning::predictLoadError(p, semiFilter, o.profile);
+
+    nlohmann::json j;
+    j["Jm_kgm2"] = p.jmKgm2;
+    j["JL_kgm2"] = p.jlKgm2;
+    j["K_Nm_per_rad"] = p.kNmPerRad;
+    j["C_Nms_per_rad"] = p.cNmsPerRad;
+    j["delay_s"] = p.delayS;
+    j["antiresonance_Hz"] = tuning::antiresonanceRadS(p) / kTwoPi;
+    j["resonance_Hz"] = tuning::resonanceRadS(p) / kTwoPi;
+    j["zeta_zero"] = tuning::zetaZero(p);
+    j["zeta_pole"] = tuning::zetaPole(p);
+    j["fit_error"] = fit->fitError;
+    j["fit"] = {{"fmin_Hz", o.fit.fminHz},
+                {"fmax_Hz", o.fit.fmaxHz},
+                {"points_used", fit->pointsUsed},
+                {"iterations", fit->iterations},
+                {"data_antiresonance_Hz", fit->dataAntiresonanceHz},
+                {"data_resonance_Hz", fit->dataResonanceHz}};
+    j["filter"] = {{"mode", o.mode}, {"f0_Hz", filter.f0Hz}, {"zeta", filter.zeta}, {"tau_s", filter.tauS}};
+    j["velocity_pi"] = {{"bandwidth_Hz", o.bandwidthHz},
+                        {"k", o.staticGain},
+                        {"kp_Nms_per_rad", pi.kpNmsPerRad},
+                        {"ki_Nm_per_rad", pi.kiNmPerRad}};
+    j["position_gain"] = {{"mode", o.mode},
+                          {"limit_per_s", finiteOrNull(posPlain.limitPerS)},
+                          {"limit_with_filter_per_s", finiteOrNull(posFilter.limitPerS)},
+                          {"recommended_per_s", finiteOrNull(mode == tuning::SuppressionMode::Full
+                                                                 ? posFilter.recommendedPerS
+                                                                 : posPlain.recommendedPerS)}};
+    j["load_error"] = {{"profile", {{"vmax_rad_s", o.profile.vMax}, {"accel_rad_s2", o.profile.aMax},
+                                    {"jerk_rad_s3", o.profile.jerk}}},
+                       {"without_filter_rad", loadError.maxErrorWithoutFilter},
+                       {"with_filter_rad", loadError.maxErrorWithFilter}};
+    const std::string text = j.dump(2) + "\n";
+    if (!o.outPath.empty()) {
+        std::ofstream f(o.outPath);
+        if (!(f << text)) {
+            return reportError(cmd, makeError(ErrorCode::Io, o.outPath + ": cannot write"));
+        }
+        return 0;
+    }
+    std::cout << text;
+    return 0;
+}
+
+const CliRegistrar kRegistrar{CliCommand{
+    "two-inertia",
+    "Two-inertia fit (J_m, J_L, K, C, delay) of a torque->motor-velocity FRF and F_m/F_L filter settings",
+    [](CLI::App& sub) -> std::function<int()> {
+        auto o = std::make_shared<TwoInertiaOptions>();
+        sub.add_option("--frf", o->frfPath, "FRF CSV (f_Hz,re,im,mag_dB,phase_deg,coherence,valid)")->required();
+        sub.add_option("--fmin", o->fit.fminHz, "lower end of the fit band [Hz] (default 5)");
+        sub.add_option("--fmax", o->fit.fmaxHz, "upper end of the fit band [Hz] (default 300)");
+        sub.add_option("--mode", o->mode, "semi (F_m on the position command) or full (F_L in the loop)");
+        sub.add_option("--tau-s", o->tauS, "F_L time constant [s] (default: high-frequency gain 2.5)");
+        sub.add_option("--min-coherence", o->fit.minCoherence, "ignore points with a lower coherence (default 0)");
+        sub.add_option("--bandwidth-hz", o->bandwidthHz, "velocity-loop omega_l/2pi for k = 1 (default 24)");
+        sub.add_option("--k", o->staticGain, "velocity-loop static gain k (default 10)");
+        sub.add_option("--vmax", o->profile.vMax, "profile speed [rad/s] (default 62.83 = 10 rev/s)");
+        sub.add_option("--accel", o->profile.aMax, "profile acceleration [rad/s^2] (default 1256.6 = 200 rev/s^2)");
+        sub.add_option("--jerk", o->profile.jerk, "profile jerk [rad/s^3] (default 125660)");
+        sub.add_option("--out", o->outPath, "write the JSON to this file instead of stdout");
+        return [o] { return runTwoInertia(*o); };
+    }}};
+
+}  // namespace
+
+}  // namespace axistune::cli
