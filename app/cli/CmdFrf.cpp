@@ -47,11 +47,15 @@ Result<double> samplingFrequency(const model::Capture& cap, const FrfOptions& o)
         const double dt = (d.back() - d.front()) / static_cast<double>(d.size() - 1);
         if (!(dt > 0.0))
             return makeError(ErrorCode::BadInput, src + ", column '" + timeName + "': time does not increase");
+        const double step0 = d[1] - d[0];
         for (std::size_t i = 1; i < d.size(); ++i) {
-            if (std::abs((d[i] - d[i - 1]) - dt) > 1e-6 * dt + 1e-12 * std::abs(d[i])) {
-                return makeError(ErrorCode::BadInput, src + ", column '" + timeName + "': not uniformly sampled at data row "
-                                                          + std::to_string(i + 1) + " (step " + std::to_string(d[i] - d[i - 1])
-                                                          + " s, mean step " + std::to_string(dt) + " s)");
+            const double step = d[i] - d[i - 1];
+            if (std::abs(step - step0) > 1e-6 * std::abs(step0) + 1e-12 * std::abs(d[i])) {
+                return makeError(ErrorCode::BadInput, src + ", column '" + timeName
+                                                          + "': not uniformly sampled: the step between data rows "
+                                                          + std::to_string(i) + " and " + std::to_string(i + 1) + " is "
+                                                          + io::detail::formatDouble(step) + " s, the first step is "
+                                                          + io::detail::formatDouble(step0) + " s");
             }
         }
         fromTime = 1.0 / dt;
