@@ -29,7 +29,7 @@ fftw_plan cachedPlan(std::size_t n)
         return it->second;
     double* in = fftw_alloc_real(n);
     fftw_complex* out = fftw_alloc_complex(n / 2 + 1);
-    fftw_plan p = fftw_plan_dft_r2c_1d(static_cast<int>(n), in, out, FFTW_MEASURE);
+    fftw_plan p = fftw_plan_dft_r2c_1d(static_cast<int>(n), in, out, FFTW_ESTIMATE);
     fftw_free(in);
     fftw_free(out);
     plans.emplace(n, p);
