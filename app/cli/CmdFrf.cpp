@@ -2,6 +2,7 @@
 // axistune-cli frf: frequency response from a capture (Welch H1/H2 + coherence) or from a
 // sine-stream recording (conventional or three-phase multi-sweep demodulation); docs/frequency-response.md.
 #include "app/cli/CliCommand.h"
+#include "core/dsp/LoopAnalysis.h"
 #include "core/dsp/SineDemodulation.h"
 #include "core/dsp/Welch.h"
 #include "core/io/CaptureCsv.h"
@@ -31,6 +32,7 @@ struct FrfOptions {
     std::string estimator = "h1";
     std::string window = "hann";
     std::string outPath;
+    std::string margins;  // "", open, complementary, neg-complementary, sensitivity
 };
 
 // fs from --fs, the fs_Hz metadata or a uniform time column (checked to 1e-6 of the step).
@@ -133,6 +135,31 @@ nlohmann::json frfJson(const dsp::FrequencyResponse& f)
     return j;
 }
 
+nlohmann::json marginsJson(const dsp::FrequencyResponse& frf, const std::string& kind)
+{
+    const dsp::FrequencyResponse open = kind == "open" ? frf
+                                        : dsp::openLoopFromClosedLoop(frf, kind == "complementary" ? dsp::LoopMeasurement::Complementary
+                                                                           : kind == "sensitivity" ? dsp::LoopMeasurement::Sensitivity
+                                                                                                   : dsp::LoopMeasurement::NegComplementary);
+    const auto m = dsp::loopMargins(open);
+    auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+    nlohmann::json j{{"measurement", kind},
+                     {"phase_margin_deg", num(m.phaseMarginDeg)},
+                     {"phase_margin_freq_Hz", m.gainCrossovers.empty() ? nlohmann::json(nullptr) : num(m.phaseMarginFreqHz)},
+                     {"gain_margin_dB", num(m.gainMarginDb)},
+                     {"gain_margin_freq_Hz", m.phaseCrossovers.empty() ? nlohmann::json(nullptr) : num(m.gainMarginFreqHz)},
+                     {"peak_sensitivity", num(m.peakSensitivity)},
+                     {"peak_sensitivity_dB", num(m.peakSensitivityDb)},
+                     {"peak_sensitivity_freq_Hz", num(m.peakSensitivityFreqHz)}};
+    j["gain_crossovers_Hz"] = nlohmann::json::array();
+    for (const auto& c : m.gainCrossovers)
+        j["gain_crossovers_Hz"].push_back(c.freqHz);
+    j["phase_crossovers_Hz"] = nlohmann::json::array();
+    for (const auto& c : m.phaseCrossovers)
+        j["phase_crossovers_Hz"].push_back(c.freqHz);
+    return j;
+}
+
 int runFrf(const FrfOptions& o)
 {
     const std::string cmd = "frf";
@@ -152,7 +179,10 @@ int runFrf(const FrfOptions& o)
             return reportError(cmd, frf.error());
     }
     if (o.outPath.empty()) {
-        std::cout << frfJson(frf.value()).dump() << '\n';
+        auto j = frfJson(frf.value());
+        if (!o.margins.empty())
+            j["margins"] = marginsJson(frf.value(), o.margins);
+        std::cout << j.dump() << '\n';
         return 0;
     }
     if (auto st = io::writeFrfCsvFile(o.outPath, frf.value()); !st)
@@ -161,6 +191,8 @@ int runFrf(const FrfOptions& o)
     for (bool v : frf->valid)
         valid += v ? 1 : 0;
     nlohmann::json summary{{"out", o.outPath}, {"points", frf->size()}, {"valid_points", valid}, {"metadata", frf->metadata}};
+    if (!o.margins.empty())
+        summary["margins"] = marginsJson(frf.value(), o.margins);
     std::cout << summary.dump() << '\n';
     return 0;
 }
@@ -183,6 +215,11 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--window", o->window, "hann (periodic, default) or boxcar")->check(CLI::IsMember({"hann", "boxcar"}));
         sub.add_option("--out", o->outPath, "write the FRF CSV (f_Hz,re,im,mag_dB,phase_deg,coherence,valid) here; "
                                             "without it the FRF is printed as JSON");
+        sub.add_option("--margins", o->margins,
+                       "add gain/phase margins and peak sensitivity to the JSON; the FRF is: open (L), complementary "
+                       "(L/(1+L), disturbance injected into the torque command), neg-complementary (-L/(1+L)) or "
+                       "sensitivity (1/(1+L))")
+            ->check(CLI::IsMember({"open", "complementary", "neg-complementary", "sensitivity"}));
         return [o] { return runFrf(*o); };
     }}};
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -199,5 +200,37 @@ TEST(CliFrf, BadInputGivesClearMessageAndExitCode2)
     r = runCli("frf --in " + ok + " --input u_Nm --output v_rad_s --nperseg 16" + o);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("\"fs_Hz\":\"1000"), std::string::npos) << r.out;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CliFrf, MarginsOfAClosedLoopFrf)
+{
+    // T = L/(1+L) with L = 2π·50/s (integrator): crossover 50 Hz, phase margin 90°, no phase
+    // crossover, peak sensitivity → 1 from below at high frequency.
+    const auto dir = makeTempDir("frfmargins");
+    std::ostringstream s;
+    s.precision(17);
+    s << "# fs_Hz=100000\nfreq_Hz,phase_offset_deg,sample,excitation,response\n";
+    for (int i = 0; i < 60; ++i) {
+        const double f = std::pow(10.0, 0.5 + 2.0 * i / 59);
+        const std::complex<double> L = 2 * std::numbers::pi * 50 / std::complex<double>(0, 2 * std::numbers::pi * f);
+        const auto T = L / (1.0 + L);
+        for (double psi : {0.0, 120.0, -120.0}) {
+            for (int k = 0; k < 3; ++k) {
+                const double th = 2 * std::numbers::pi * f * k / 100000.0 + psi * std::numbers::pi / 180;
+                s << f << ',' << psi << ',' << k << ',' << std::sin(th) << ',' << std::abs(T) * std::sin(th + std::arg(T)) << '\n';
+            }
+        }
+    }
+    const auto r = runCli("frf --sweep " + writeText(dir / "s.csv", s.str()) + " --margins complementary --out "
+                          + (dir / "o.csv").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto pm = r.out.find("\"phase_margin_deg\":");
+    ASSERT_NE(pm, std::string::npos) << r.out;
+    EXPECT_NEAR(std::stod(r.out.substr(pm + 19)), 90.0, 1e-6);
+    const auto pf = r.out.find("\"phase_margin_freq_Hz\":");
+    ASSERT_NE(pf, std::string::npos);
+    EXPECT_NEAR(std::stod(r.out.substr(pf + 23)), 50.0, 1e-6);  // log|L| is linear in log f: interpolation is exact
+    EXPECT_NE(r.out.find("\"gain_margin_dB\":null"), std::string::npos) << r.out;
     std::filesystem::remove_all(dir);
 }
