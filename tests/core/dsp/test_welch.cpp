@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Welch spectra, H1/H2 and coherence against scipy.signal.csd/welch/coherence reference values
 // (tests/data/welch/make_reference.py, scipy 1.10), to 1e-9 relative.
+#include "core/dsp/DigitalFilter.h"
+#include "core/dsp/Excitation.h"
 #include "core/dsp/Welch.h"
 
 #include <gtest/gtest.h>
@@ -175,4 +177,40 @@ TEST(Welch, BadInputIsAnError)
     auto b = crossSpectra(x, y, 1000.0, o);
     ASSERT_FALSE(b.ok());
     EXPECT_NE(b.error().detail.find("sample 37 of the output"), std::string::npos) << b.error().detail;
+}
+
+TEST(Welch, PeriodicPrbsThroughAFilterGivesItsExactResponse)
+{
+    // A periodic excitation with a rectangular window of one period and the transient discarded:
+    // Y[k]/X[k] = H(e^{j2πk/N}) exactly at every bin (circular convolution), so H1 must equal the
+    // biquad's own response to rounding, and coherence is 1.
+    PrbsOptions p;
+    p.order = 10;
+    p.periods = 9;
+    p.amplitude = 0.5;
+    p.amplitudeLimit = 1.0;
+    auto x = makePrbs(p);
+    ASSERT_TRUE(x.ok());
+    const double fs = 4000.0;
+    auto notch = designNotch({600.0, 150.0, 0.1}, 1.0 / fs);
+    ASSERT_TRUE(notch.ok());
+    Biquad q = notch.value();
+    std::vector<double> y;
+    for (double v : *x)
+        y.push_back(q.process(v));
+    const std::size_t n = 1023;
+    // drop the first period (transient of the filter)
+    const std::span<const double> xs(x->data() + n, x->size() - n), ys(y.data() + n, y.size() - n);
+    WelchOptions o;
+    o.nperseg = n;
+    o.noverlap = 0;
+    o.window = WelchWindow::Rectangular;
+    auto frf = welchFrf(xs, ys, fs, o);
+    ASSERT_TRUE(frf.ok());
+    ASSERT_EQ(frf->size(), n / 2);
+    for (std::size_t k = 0; k < frf->size(); ++k) {
+        const auto truth = notch->response(frf->freqHz[k], 1.0 / fs);
+        EXPECT_LT(std::abs(frf->h[k] - truth), 1e-9) << frf->freqHz[k];
+        EXPECT_NEAR(frf->coherence[k], 1.0, 1e-9);
+    }
 }
