@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// End-to-end tests of the machining subcommands: lobes, spindle-speed, cutting-force, chatter-detect.
+#include "tests/app/cli/CliRunner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using axistune::testing::makeTempDir;
+using axistune::testing::readFileText;
+using axistune::testing::runCli;
+
+namespace {
+
+const std::string kSamples = std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/samples/";
+
+void writeFile(const std::filesystem::path& p, const std::string& text)
+{
+    std::ofstream f(p);
+    f << text;
+}
+
+}  // namespace
+
+TEST(CliMachining, LobesWritesCsvWithReferenceValues)
+{
+    const auto dir = makeTempDir("lobes");
+    const auto out = dir / "lobes.csv";
+    const auto r = runCli("lobes --tool " + kSamples + "tool-table1.json --cut " + kSamples +
+                          "cut-table1.json --rpm-min 2800 --rpm-max 2955 --rpm-step 155 --steps-per-period 80 --out " +
+                          out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::istringstream csv(readFileText(out));
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "rpm,limit_depth_m");
+    std::vector<std::pair<double, double>> rows;
+    while (std::getline(csv, line)) {
+        const auto comma = line.find(',');
+        rows.emplace_back(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
+    }
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_DOUBLE_EQ(rows[0].first, 2800.0);
+    EXPECT_NEAR(rows[0].second, 0.958e-3, 0.03 * 0.958e-3);  // spec §5.1, k = 80
+    EXPECT_DOUBLE_EQ(rows[1].first, 2955.0);
+    EXPECT_NEAR(rows[1].second, 3.80e-3, 0.05 * 3.80e-3);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CliMachining, LobesBadInputExitsWith2)
+{
+    const auto dir = makeTempDir("lobesbad");
+    writeFile(dir / "tool.json", R"({"modes_x":[{"mass_kg":0.0,"damping_Ns_per_m":83,"stiffness_N_per_m":3e7}],
+                                     "modes_y":[{"mass_kg":0.4,"damping_Ns_per_m":83,"stiffness_N_per_m":3e7}]})");
+    writeFile(dir / "cut.json", R"({"teeth":4,"Kt_N_per_m2":0.98e9,"Kr_N_per_m2":0.294e9,"radial_immersion":1.5,"milling":"down"})");
+    auto r = runCli("lobes --tool " + (dir / "tool.json").string() + " --cut " + kSamples +
+                    "cut-table1.json --rpm-min 2800 --rpm-max 3000 --rpm-step 100");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("mass_kg"), std::string::npos) << r.err;
+    r = runCli("lobes --tool " + kSamples + "tool-table1.json --cut " + (dir / "cut.json").string() +
+               " --rpm-min 2800 --rpm-max 3000 --rpm-step 100");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("radial_immersion"), std::string::npos) << r.err;
+    r = runCli("lobes --tool " + kSamples + "tool-table1.json --cut " + kSamples +
+               "cut-table1.json --rpm-min 3000 --rpm-max 2800 --rpm-step 100");
+    EXPECT_EQ(r.exitCode, 2);
+    r = runCli("lobes --tool " + (dir / "missing.json").string() + " --cut " + kSamples +
+               "cut-table1.json --rpm-min 2800 --rpm-max 3000 --rpm-step 100");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
+    std::filesystem::remove_all(dir);
+}
