@@ -138,8 +138,8 @@ Result<BallBarReport> analyzeBallBar(std::span<const io::BallBarTrace> traces, c
     }
     for (const auto& s : rep.spikes)
         rep.findings.push_back({std::string("reversal_spike_") + (s.axis == 0 ? "x" : "y"), s.heightM * 1e6, "um",
-                                "peak residual within ±" + fmt(opt.excludeDeg, 1) + "° of the reversal at " +
-                                    fmt(s.angleRad / kDeg, 1) + "° (width " + fmt(s.widthRad / kDeg, 2) +
+                                "peak residual at " + fmt(s.angleRad / kDeg, 1) + "°, within ±" + fmt(opt.excludeDeg, 1) +
+                                    "° of a " + axisName(s.axis) + " reversal (width " + fmt(s.widthRad / kDeg, 2) +
                                     "° at half height) against the local step fit; reported when above 4× the "
                                     "fit-window noise and 0.3 um"});
     if (full.empty())

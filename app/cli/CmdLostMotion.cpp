@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// axistune-cli lost-motion: A and B of Δx = (A + B·x)·ΔT from ball-bar traces, with residuals and the
+// predicted proposed and conventional compensation (docs/ballbar.md; spec/lost-motion-and-two-inertia.md §4.3–4.5).
+#include "app/cli/CliCommand.h"
+#include "core/io/BallBarCsv.h"
+#include "core/tuning/LostMotion.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <numbers>
+
+namespace axistune::cli {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+struct LostMotionCliOptions {
+    std::vector<std::string> paths;
+    std::string axis;
+    double screwOffsetM = 0.0;
+    double screwSign = 1.0;
+    bool bFree = false;
+    std::optional<double> conventionalUm;
+    double excludeDeg = 4.0;
+    double windowDeg = 20.0;
+    std::string compensatedOut;
+    std::string outPath;
+};
+
+Status writeCompensated(const std::string& path, const std::vector<tuning::CompensationPrediction>& preds)
+{
+    std::ofstream f(path);
+    if (!f)
+        return makeError(ErrorCode::Io, path + ": cannot open for writing");
+    f << std::setprecision(12) << "file_index,angle_deg,measured_um,proposed_um,conventional_um\n";
+    for (std::size_t k = 0; k < preds.size(); ++k) {
+        const auto& p = preds[k];
+        for (std::size_t i = 0; i < p.angleRad.size(); ++i)
+            f << k << ',' << p.angleRad[i] / kDeg << ',' << p.measuredM[i] * 1e6 << ',' << p.proposedM[i] * 1e6 << ','
+              << p.conventionalM[i] * 1e6 << '\n';
+    }
+    if (!f)
+        return makeError(ErrorCode::Io, path + ": write failed");
+    return Status::success();
+}
+
+nlohmann::json optJson(const std::optional<double>& v, double scale = 1.0)
+{
+    return v ? nlohmann::json(*v * scale) : nlohmann::json(nullptr);
+}
+
+int runLostMotion(const LostMotionCliOptions& o)
+{
+    const char* cmd = "lost-motion";
+    tuning::LostMotionSetup setup;
+    setup.axis = o.axis == "y" ? 1 : 0;
+    setup.screwOffsetM = o.screwOffsetM;
+    setup.screwSign = o.screwSign;
+    tuning::BallBarOptions bo;
+    bo.excludeDeg = o.excludeDeg;
+    bo.fitWindowDeg = o.windowDeg;
+
+    std::vector<io::BallBarTrace> traces;
+    std::vector<tuning::LostMotionPoint> points;
+    for (const auto& p : o.paths) {
+        auto t = io::readBallBarCsvFile(p);
+        if (!t)
+            return reportError(cmd, t.error());
+        auto pts = tuning::extractLostMotionPoints(*t, setup, bo);
+        if (!pts)
+            return reportError(cmd, pts.error());
+        points.insert(points.end(), pts->begin(), pts->end());
+        traces.push_back(std::move(t).value());
+    }
+    auto fit = tuning::fitLostMotion(points, o.bFree);
+    if (!fit)
+        return reportError(cmd, fit.error());
+    double xbl = 0.0;
+    for (const auto& p : points)
+        xbl += p.dxM / static_cast<double>(points.size());
+    if (o.conventionalUm)
+        xbl = *o.conventionalUm * 1e-6;
+
+    nlohmann::json j;
+    j["axis"] = o.axis;
+    j["method"] = tuning::lostMotionMethodName(fit->method);
+    j["A_m_per_Nm"] = fit->aMPerNm;
+    j["B_per_Nm"] = fit->bPerNm;
+    j["A_um_per_Nm"] = fit->aMPerNm * 1e6;
+    j["B_um_per_Nm_m"] = fit->bPerNm * 1e6;
+    j["A_stderr_m_per_Nm"] = optJson(fit->aStdErr);
+    j["B_stderr_per_Nm"] = optJson(fit->bStdErr);
+    if (fit->printedA)
+        j["printed_two_point"] = {{"A_m_per_Nm", *fit->printedA}, {"B_per_Nm", *fit->printedB}};
+    nlohmann::json pts = nlohmann::json::array();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto& p = points[i];
+        pts.push_back({{"x_m", p.xM}, {"dT_Nm", p.dTNm}, {"dx_m", p.dxM}, {"residual_m", fit->residualsM[i]},
+                       {"file", p.source}, {"angle_deg", p.angleRad / kDeg}});
+    }
+    j["points"] = pts;
+    j["residual_rms_m"] = fit->residualRmsM;
+    j["warnings"] = fit->warnings;
+
+    std::vector<tuning::CompensationPrediction> preds;
+    nlohmann::json pj = nlohmann::json::array();
+    std::optional<double> worst;
+    for (const auto& t : traces) {
+        auto p = tuning::predictCompensation(t, setup, *fit, xbl, bo);
+        if (!p)
+            return reportError(cmd, p.error());
+        pj.push_back({{"file", t.source},
+                      {"measured_circularity_um", optJson(p->measuredCircularityM, 1e6)},
+                      {"proposed_circularity_um", optJson(p->proposedCircularityM, 1e6)},
+                      {"conventional_circularity_um", optJson(p->conventionalCircularityM, 1e6)},
+                      {"measured_cut_in_um", p->measuredCutInM * 1e6},
+                      {"proposed_cut_in_um", p->proposedCutInM * 1e6},
+                      {"conventional_cut_in_um", p->conventionalCutInM * 1e6}});
+        if (p->proposedCircularityM)
+            worst = std::max(worst.value_or(0.0), *p->proposedCircularityM);
+        preds.push_back(std::move(p).value());
+    }
+    j["predicted_circularity_um"] = optJson(worst, 1e6);
+    j["conventional_backlash_um"] = xbl * 1e6;
+    j["predictions"] = pj;
+    if (!o.compensatedOut.empty()) {
+        if (auto s = writeCompensated(o.compensatedOut, preds); !s)
+            return reportError(cmd, s.error());
+    }
+    const std::string text = j.dump(2) + "\n";
+    if (o.outPath.empty()) {
+        std::cout << text;
+        return 0;
+    }
+    std::ofstream f(o.outPath);
+    if (!(f << text))
+        return reportError(cmd, makeError(ErrorCode::Io, o.outPath + ": cannot write"));
+    return 0;
+}
+
+const CliRegistrar kRegistrar{CliCommand{
+    "lost-motion",
+    "Lost-motion A/B of dx = (A + B x) dT from ball-bar traces, residuals and predicted compensation",
+    [](CLI::App& sub) -> std::function<int()> {
+        auto o = std::make_shared<LostMotionCliOptions>();
+        sub.add_option("--ballbar", o->paths,
+                       "ball-bar CSV files (each needs '# dT_x_Nm=' or '# dT_y_Nm=' for the axis, and the circle "
+                       "centre '# center_x_mm=', '# center_y_mm=')")
+            ->required();
+        sub.add_option("--axis", o->axis, "axis to identify: x or y")->required()->check(CLI::IsMember({"x", "y"}));
+        sub.add_option("--screw-offset-m", o->screwOffsetM,
+                       "x0: spring length (coupling to load point) at table coordinate 0, in m (default 0)");
+        sub.add_option("--screw-sign", o->screwSign,
+                       "+1 if the spring length grows with the table coordinate, -1 if it shrinks (default +1)")
+            ->check(CLI::IsMember({-1.0, 1.0}));
+        sub.add_flag("--b-free", o->bFree, "fix B = 0 (A = mean dx/dT), for axes without position dependence");
+        sub.add_option("--conventional-backlash-um", o->conventionalUm,
+                       "backlash x_bl of the conventional step compensation for the prediction (default: the mean "
+                       "measured lost motion)");
+        sub.add_option("--exclude-deg", o->excludeDeg, "reversal zone half-width (default 4)")->check(CLI::Range(0.2, 30.0));
+        sub.add_option("--window-deg", o->windowDeg, "step-fit window beyond the zone (default 20)")->check(CLI::Range(2.0, 60.0));
+        sub.add_option("--compensated-out", o->compensatedOut,
+                       "write measured, proposed and conventional traces here "
+                       "(file_index,angle_deg,measured_um,proposed_um,conventional_um)");
+        sub.add_option("--out", o->outPath, "write the JSON to this file instead of stdout");
+        return [o] { return runLostMotion(*o); };
+    }}};
+
+}  // namespace
+}  // namespace axistune::cli
