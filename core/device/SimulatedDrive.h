@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The embedded simulated drive: the default connection, a simulated machine behind the Drive seam.
+// Tests run in slices of machine time inside pollTest(), so a caller on one thread stays responsive
+// and can abort between polls.
+
+#include "core/device/Drive.h"
+#include "core/sim/AxisSimulator.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+
+namespace axistune::device {
+
+class SimulatedDrive : public Drive {
+public:
+    static Result<std::unique_ptr<SimulatedDrive>> create(const sim::MachineDefinition& machine, std::uint64_t seed);
+
+    Result<DriveIdentity> identify() override;
+    Result<std::vector<model::ParameterMeta>> parameterMetadata(const std::string& axis) override;
+    Result<model::ParameterValues> readParameters(const std::string& axis, std::span<const std::string> keys) override;
+    Status writeParameters(const std::string& axis, const model::ParameterValues& values) override;
+    Status startTest(const TestRequest& request) override;
+    Result<TestStatus> pollTest() override;
+    Result<model::Capture> readTrace() override;
+    Status abortTest() override;
+
+    /// Machine time advanced per pollTest() call [s].
+    void setSliceSeconds(double s) { m_slice = s; }
+    sim::AxisSimulator* simulator(const std::string& axis);
+
+private:
+    SimulatedDrive() = default;
+    Result<sim::AxisSimulator*> axisSim(const std::string& axis);
+
+    sim::MachineDefinition m_machine;
+    std::map<std::string, std::unique_ptr<sim::AxisSimulator>> m_axes;
+    double m_slice = 0.05;
+    // The running test.
+    std::optional<TestRequest> m_request;
+    sim::AxisSimulator* m_active = nullptr;
+    model::ParameterValues m_backup;
+    double m_endTime = 0.0;
+    double m_startTime = 0.0;
+    TestStatus m_status;
+    std::optional<model::Capture> m_trace;
+};
+
+}  // namespace axistune::device

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/device/SimulatedDrive.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace axistune;
+using namespace axistune::device;
+
+TEST(SimulatedDrive, IdentifiesTheVmcAxes)
+{
+    auto d = connect({"sim:vmc", 1});
+    ASSERT_TRUE(d.ok()) << d.error().detail;
+    auto id = (*d)->identify();
+    ASSERT_TRUE(id.ok());
+    EXPECT_EQ(id->axes, (std::vector<std::string>{"X", "Y", "Z"}));
+}
+
+TEST(SimulatedDrive, UnknownPresetAndBadUriAreClearErrors)
+{
+    auto a = connect({"sim:nope", 1});
+    ASSERT_FALSE(a.ok());
+    EXPECT_NE(a.error().detail.find("nope"), std::string::npos);
+    EXPECT_NE(a.error().detail.find("vmc"), std::string::npos);  // lists the known presets
+    auto b = connect({"ftp://x", 1});
+    ASSERT_FALSE(b.ok());
+    EXPECT_EQ(b.error().code, ErrorCode::BadInput);
+}
+
+TEST(SimulatedDrive, ReadsAndWritesParametersWithRangeChecks)
+{
+    auto d = connect({"sim:vmc", 1});
+    ASSERT_TRUE(d.ok());
+    Drive& drive = **d;
+    const std::vector<std::string> keys{"current.kp", "velocity.kp"};
+    auto v = drive.readParameters("X", keys);
+    ASSERT_TRUE(v.ok());
+    EXPECT_DOUBLE_EQ(v->at("current.kp"), 35.7);  // preset value (spec §2.8)
+    ASSERT_TRUE(drive.writeParameters("X", {{"velocity.kp", 0.7}}).ok());
+    EXPECT_DOUBLE_EQ(drive.readParameters("X", keys)->at("velocity.kp"), 0.7);
+    auto bad = drive.writeParameters("X", {{"velocity.kp", 0.5}, {"current.alpha", 2.0}});
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().code, ErrorCode::OutOfRange);
+    EXPECT_NE(bad.error().detail.find("current.alpha"), std::string::npos);
+    EXPECT_NE(bad.error().detail.find("[0, 1]"), std::string::npos);
+    // Nothing of a refused write is applied.
+    EXPECT_DOUBLE_EQ(drive.readParameters("X", keys)->at("velocity.kp"), 0.7);
+    // Read-only ratings and the plant are not writable.
+    EXPECT_FALSE(drive.writeParameters("X", {{"motor.max_current", 10.0}}).ok());
+    EXPECT_FALSE(drive.writeParameters("X", {{"plant.inertia_load", 1.0}}).ok());
+    EXPECT_FALSE(drive.readParameters("Q", keys).ok());
+}
+
+TEST(SimulatedDrive, StepTestTracesAndRestoresAndRefusesWritesWhileRunning)
+{
+    auto d = connect({"sim:two-inertia", 1});
+    ASSERT_TRUE(d.ok());
+    Drive& drive = **d;
+    TestRequest req;
+    req.axis = "A";
+    req.type = TestType::Step;
+    req.amplitude = 1.0;
+    req.durationS = 0.3;
+    ASSERT_TRUE(drive.startTest(req).ok());
+    EXPECT_EQ(drive.writeParameters("A", {{"velocity.kp", 5.0}}).error().code, ErrorCode::Busy);
+    TestStatus st;
+    do {
+        auto p = drive.pollTest();
+        ASSERT_TRUE(p.ok());
+        st = *p;
+    } while (st.state == TestState::Running);
+    EXPECT_EQ(st.state, TestState::Completed);
+    auto trace = drive.readTrace();
+    ASSERT_TRUE(trace.ok());
+    const auto* v = trace->channel("motor_vel_rad_s");
+    ASSERT_NE(v, nullptr);
+    EXPECT_EQ(trace->size(), 1200u);  // 0.3 s at 4 kHz
+    // The velocity loop has an integrator: the step settles at the command (1 rad/s) within 2 %.
+    EXPECT_NEAR(v->data.back(), 1.0, 0.02);
+}
+
+TEST(SimulatedDrive, AbortStopsAndRestoresParameters)
+{
+    auto d = connect({"sim:vmc", 1});
+    ASSERT_TRUE(d.ok());
+    Drive& drive = **d;
+    TestRequest req;
+    req.axis = "Y";
+    req.type = TestType::Jog;
+    req.distance = 0.01;
+    req.velocity = 0.01;
+    req.acceleration = 0.5;
+    req.traceDivider = 4;
+    ASSERT_TRUE(drive.startTest(req).ok());
+    ASSERT_TRUE(drive.pollTest().ok());
+    ASSERT_TRUE(drive.abortTest().ok());
+    EXPECT_EQ(drive.pollTest()->state, TestState::Aborted);
+    const std::vector<std::string> k{"trace.divider"};
+    EXPECT_DOUBLE_EQ(drive.readParameters("Y", k)->at("trace.divider"), 1.0);
+    EXPECT_FALSE(drive.readTrace().ok());
+}

@@ -1,0 +1,17 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Fails when the Japanese translation has an unfinished or empty entry.
+file(READ ${TS} _ts)
+string(FIND "${_ts}" "type=\"unfinished\"" _pos)
+if(NOT _pos EQUAL -1)
+  message(FATAL_ERROR "${TS}: an entry is marked unfinished")
+endif()
+string(REGEX MATCHALL "<translation */>|<translation></translation>" _empty "${_ts}")
+if(_empty)
+  message(FATAL_ERROR "${TS}: an entry has no translation")
+endif()
+string(REGEX MATCHALL "<message>" _msgs "${_ts}")
+list(LENGTH _msgs _n)
+if(_n EQUAL 0)
+  message(FATAL_ERROR "${TS}: no messages")
+endif()
+message(STATUS "${_n} messages translated")
