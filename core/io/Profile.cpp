@@ -277,14 +277,14 @@ Result<MachineProfile> parametersFromCsv(const std::string& text, const std::str
         if (cells.size() != 4)
             return bad(where, "expected 4 columns, found " + std::to_string(cells.size()));
         if (cells[0].empty() || cells[1].empty() || cells[2].empty())
-            return bad(where, "columns 'machine', 'axis' and 'key' must not be empty");
+            return makeError(ErrorCode::BadInput, where + ", columns 'machine', 'axis' and 'key' must not be empty");
         if (p.name.empty())
             p.name = cells[0];
         else if (p.name != cells[0])
-            return bad(where, "column 'machine': '" + cells[0] + "' differs from '" + p.name + "' (one machine per file)");
+            return makeError(ErrorCode::BadInput, where + ", column 'machine': '" + cells[0] + "' differs from '" + p.name + "' (one machine per file)");
         double v = 0.0;
         if (!parseDouble(cells[3], v))
-            return bad(where, "column 'value': '" + cells[3] + "' is not a finite number");
+            return makeError(ErrorCode::BadInput, where + ", column 'value': '" + cells[3] + "' is not a finite number");
         AxisProfile* axis = nullptr;
         for (auto& a : p.axes) {
             if (a.name == cells[1])
@@ -295,7 +295,7 @@ Result<MachineProfile> parametersFromCsv(const std::string& text, const std::str
             axis = &p.axes.back();
         }
         if (axis->parameters.count(cells[2]))
-            return bad(where, "column 'key': '" + cells[2] + "' appears twice for axis " + cells[1]);
+            return makeError(ErrorCode::BadInput, where + ", column 'key': '" + cells[2] + "' appears twice for axis " + cells[1]);
         axis->parameters[cells[2]] = v;
     }
     if (!formatSeen)
