@@ -28,6 +28,8 @@ struct LostMotionCliOptions {
     double excludeDeg = 4.0;
     double windowDeg = 20.0;
     std::string compensatedOut;
+    std::optional<double> leadMm, rootDiameterMm;
+    double shearModulusGpa = 79.0;
     std::string outPath;
 };
 
@@ -104,6 +106,12 @@ int runLostMotion(const LostMotionCliOptions& o)
     }
     j["points"] = pts;
     j["residual_rms_m"] = fit->residualRmsM;
+    if (o.leadMm && o.rootDiameterMm) {
+        // Spec §4.4 guard: the measured compliance is expected ~10× the textbook torsion of the screw.
+        const double slope = tuning::materialComplianceSlope(*o.leadMm * 1e-3, *o.rootDiameterMm * 1e-3, o.shearModulusGpa * 1e9);
+        j["material_B_per_Nm"] = slope;
+        j["material_ratio_m"] = fit->bPerNm != 0.0 ? nlohmann::json(slope / fit->bPerNm) : nlohmann::json(nullptr);
+    }
     j["warnings"] = fit->warnings;
 
     std::vector<tuning::CompensationPrediction> preds;
@@ -161,6 +169,11 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--conventional-backlash-um", o->conventionalUm,
                        "backlash x_bl of the conventional step compensation for the prediction (default: the mean "
                        "measured lost motion)");
+        sub.add_option("--lead-mm", o->leadMm, "screw lead [mm/rev], with --root-diameter-mm: material-model comparison")
+            ->check(CLI::PositiveNumber);
+        sub.add_option("--root-diameter-mm", o->rootDiameterMm, "screw root diameter [mm]")->check(CLI::PositiveNumber);
+        sub.add_option("--shear-modulus-gpa", o->shearModulusGpa, "screw shear modulus [GPa] (default 79)")
+            ->check(CLI::PositiveNumber);
         sub.add_option("--exclude-deg", o->excludeDeg, "reversal zone half-width (default 4)")->check(CLI::Range(0.2, 30.0));
         sub.add_option("--window-deg", o->windowDeg, "step-fit window beyond the zone (default 20)")->check(CLI::Range(2.0, 60.0));
         sub.add_option("--compensated-out", o->compensatedOut,

@@ -170,6 +170,11 @@ double proposedCompensation(double a, double b, double x, double torque) { retur
 
 double compensationAngleRad(double xc, double lead) { return xc / (lead / (2.0 * kPi)); }
 
+double materialComplianceSlope(double lead, double rootDiameter, double shearModulus, double m)
+{
+    return 16.0 * lead / (m * kPi * kPi * shearModulus * std::pow(rootDiameter, 4));
+}
+
 namespace {
 
 /// Deepest inward notch (≥ 0) in the zone just after each reversal of the axis, below the lower level of

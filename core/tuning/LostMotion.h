@@ -63,6 +63,11 @@ double proposedCompensation(double aMPerNm, double bPerNm, double screwLengthM, 
 /// Position compensation as a motor angle θ_c = x_c / R, R = lead / 2π [m/rad].
 double compensationAngleRad(double compensationM, double leadMPerRev);
 
+/// Material-mechanics slope of A(x) (spec §1.4, eq. 4.4): 16·p / (m·π²·G·d_r⁴) [1/(N·m)] — the torsional
+/// compliance of the screw converted to the table, per metre of spring length, with the empirical factor m.
+/// The thesis finds measured compliances ~10× this value with m = 1 (m ≈ 0.09 on its rig).
+double materialComplianceSlope(double leadMPerRev, double rootDiameterM, double shearModulusPa, double m = 1.0);
+
 /// Both compensations applied to a measured trace (the prediction drawn over the measured one).
 struct CompensationPrediction {
     std::vector<double> angleRad;

@@ -263,3 +263,15 @@ TEST(LostMotion, PredictedCompensationRemovesLostMotionWithoutCutIn)
     EXPECT_LT(p->proposedCutInM, 0.5e-6);
     EXPECT_LT(p->measuredCutInM, 0.5e-6);
 }
+
+TEST(LostMotion, MaterialModelMatchesThesisNumbers)
+{
+    // §4.7: G = 79 GPa, d_r = 20 mm, p = 12 mm/rev, m = 1 → 1.539 µm/(N·m·m); 17 µm/(N·m·m) measured → m = 0.0905.
+    const double slope = materialComplianceSlope(0.012, 0.020, 79e9);
+    EXPECT_NEAR(slope * 1e6, 1.539, 0.001);
+    EXPECT_NEAR(slope / 17e-6, 0.0905, 0.0005);
+    EXPECT_NEAR(materialComplianceSlope(0.012, 0.020, 79e9, 0.0905) * 1e6, 17.0, 0.02);
+    // Apparent constant of Fig. 4.4(a): 1 µm per 0.6 N·m per 0.1 m = 16.7 µm/(N·m·m), as a two-point B.
+    const std::vector<LostMotionPoint> pts{{0.4, 0.6, 3.0e-6}, {0.5, 0.6, 4.0e-6}};
+    EXPECT_NEAR(fitLostMotion(pts)->bPerNm * 1e6, 16.67, 0.01);
+}
