@@ -152,7 +152,7 @@ Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, c
     const double from = gapEnd / kDeg;
     const double to = std::fmod(gapEnd + 2.0 * kPi - maxGap, 2.0 * kPi) / kDeg;
     return makeError(ErrorCode::BadInput,
-                     t.source + ": " + what + " needs a full 360° circle, but the trace is a partial arc covering " +
+                     t.source + ": " + what + " refused: requires a full 360° circle, but the trace is a partial arc covering " +
                          fmt((2.0 * kPi - maxGap) / kDeg, 1) + "° (from " + fmt(from, 1) + "° to " + fmt(to, 1) +
                          "° CCW; largest gap " + fmt(maxGap / kDeg, 1) + "°, at most " + fmt(opt.maxGapDeg, 1) +
                          "° allowed)");

@@ -80,7 +80,7 @@ TEST(CliBallBar, PartialArcRefusesFullCircleDiagnosticsWithReason)
     EXPECT_TRUE(j["circularity_um"].is_null());
     EXPECT_TRUE(j["squareness_um_per_m"].is_null());
     ASSERT_FALSE(j["refused"].empty());
-    EXPECT_NE(j["refused"][0].get<std::string>().find("needs a full 360° circle, but the trace is a partial arc"),
+    EXPECT_NE(j["refused"][0].get<std::string>().find("refused: requires a full 360° circle, but the trace is a partial arc"),
               std::string::npos);
     EXPECT_NEAR(j["backlash_x_um"].get<double>(), 2.0, 0.2);
 }

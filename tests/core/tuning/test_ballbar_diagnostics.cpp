@@ -246,7 +246,7 @@ TEST(BallBarDiagnostics, PartialArcRefusesFullCircleDiagnosticsButKeepsReversals
     const auto t = makeTrace(m);
     auto s = requireFullCircle(t, {}, "circularity");
     ASSERT_FALSE(s.ok());
-    EXPECT_NE(s.error().detail.find("circularity needs a full 360° circle"), std::string::npos) << s.error().detail;
+    EXPECT_NE(s.error().detail.find("circularity refused: requires a full 360° circle"), std::string::npos) << s.error().detail;
     EXPECT_NE(s.error().detail.find("covering 219.9°"), std::string::npos) << s.error().detail;
     const std::vector<BallBarTrace> runs{t};
     auto rep = analyzeBallBar(runs);
