@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Writes resources/drives/axistune-sim.json from the simulator's parameter catalogue
+// (axistune-simdrive --write-map FILE). The drive and the client never use this code: they read the
+// JSON file, so another drive family is another file.
+#include "app/simdrive/RegisterMapTemplate.h"
+
+#include "core/sim/AxisParameters.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+namespace axistune::simdrive {
+
+std::string simRegisterMapJson()
+{
+    using nlohmann::ordered_json;
+    ordered_json j;
+    j["family"] = "axistune-sim";
+    j["version"] = 1;
+    j["description"] = "AxisTune simulated drive (axistune-simdrive). All data in holding registers (function codes 3, 6, 16, 23). "
+                       "Addresses are 0-based PDU addresses. Unit id = unit_id_base + axis index.";
+    j["word_order"] = "high_word_first";
+    j["unit_id_base"] = 1;
+    j["max_registers_per_read"] = 125;
+    j["magic"] = 0x4154;  // "AT"
+    ordered_json f;
+    auto add = [&f](const std::string& name, int address, const std::string& type, int count, const std::string& what) {
+        ordered_json e{{"address", address}, {"type", type}};
+        if (type == "string" || type == "window")
+            e["count"] = count;
+        e["description"] = what;
+        f[name] = e;
+    };
+    add("identity.magic", 0, "u16", 1, "0x4154 ('AT'): this is an AxisTune register map");
+    add("identity.map_version", 1, "u16", 1, "register map version");
+    add("identity.axis_count", 2, "u16", 1, "number of axes (unit ids unit_id_base .. unit_id_base + n - 1)");
+    add("identity.axis_index", 3, "u16", 1, "axis index of the unit id asked");
+    add("identity.axis_kind", 4, "u16", 1, "enum axis_kind");
+    add("identity.parameter_count", 5, "u16", 1, "parameters available on this axis");
+    add("identity.vendor", 8, "string", 8, "16 ASCII characters");
+    add("identity.model", 16, "string", 16, "32 ASCII characters");
+    add("identity.firmware", 32, "string", 8, "16 ASCII characters");
+    add("identity.machine", 40, "string", 16, "machine (preset) name, 32 ASCII characters");
+    add("identity.axis_name", 56, "string", 4, "axis name, 8 ASCII characters");
+    add("status.state", 100, "u16", 1, "enum state of the drive's test");
+    add("status.fault_code", 101, "u16", 1, "enum fault: why the last test stopped");
+    add("status.position", 102, "f32", 2, "load position [m or rad]");
+    add("status.velocity", 104, "f32", 2, "motor velocity [rad/s]");
+    add("status.torque", 106, "f32", 2, "motor torque [N m]");
+    add("status.progress", 108, "u16", 1, "test progress in 1/10000");
+    add("status.heartbeat_echo", 109, "u16", 1, "last value written to heartbeat.counter");
+    add("status.command_token_echo", 110, "u16", 1, "sequence token of the last executed command");
+    add("status.command_result", 111, "u16", 1, "0 or the Modbus exception code of the last command");
+    add("status.trace_samples", 112, "u32", 2, "samples per channel of the trace of the last completed test");
+    add("status.trace_channels", 114, "u16", 1, "channels in the trace");
+    add("status.trace_rate_hz", 116, "f64", 4, "trace sample rate [Hz]");
+    add("status.message", 120, "string", 32, "why the last request or test was refused or stopped, 64 ASCII characters");
+    add("test.type", 200, "u16", 1, "enum test_type");
+    add("test.flags", 201, "u16", 1, "bit set of enum test_flag");
+    add("test.trace_divider", 202, "u16", 1, "trace every N velocity periods (0: parameter trace.divider)");
+    add("test.freq_count", 203, "u16", 1, "frequencies of a sine-stream test (reserved)");
+    add("test.trace_channel_mask", 204, "u32", 2, "bit i: keep trace channel i (0: all)");
+    add("test.amplitude", 206, "f64", 4, "step: motor velocity step [rad/s]");
+    add("test.distance", 210, "f64", 4, "jog: distance [m or rad]");
+    add("test.velocity", 214, "f64", 4, "jog: velocity [m/s or rad/s]");
+    add("test.acceleration", 218, "f64", 4, "jog: acceleration [m/s^2 or rad/s^2]");
+    add("test.duration", 222, "f64", 4, "step/hold: length; jog: dwell before and after [s]");
+    add("test.offset", 226, "f64", 4, "excitation offset (reserved)");
+    add("test.freq_start", 230, "f64", 4, "first frequency [Hz] (reserved)");
+    add("test.freq_end", 234, "f64", 4, "last frequency [Hz] (reserved)");
+    add("command.code", 300, "u16", 1, "enum command; written together with command.token");
+    add("command.token", 301, "u16", 1, "sequence token: a command repeated with the same token is not executed twice");
+    add("heartbeat.counter", 310, "u16", 1, "written by the client while a test runs; the watchdog stops the test when it goes silent");
+    add("trace.select_offset", 400, "u32", 2, "first sample (or byte, for the text channels) of the window");
+    add("trace.select_channel", 402, "u16", 1, "trace channel index, or enum trace_channel");
+    add("trace.window", 410, "window", 124, "31 float64 samples of the selected channel (NaN past the end) or 248 text bytes");
+    j["fields"] = f;
+    j["enums"] = {
+        {"state", {{"idle", 0}, {"running", 1}, {"completed", 2}, {"aborted", 3}, {"faulted", 4}}},
+        {"fault", {{"none", 0}, {"amplitude_limit", 1}, {"travel_limit", 2}, {"speed_limit", 3}, {"following_error", 4},
+                   {"heartbeat_lost", 5}, {"drive_fault", 6}, {"aborted", 7}}},
+        {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}}},
+        {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}}},
+        {"test_flag", {{"return_to_start", 1}}},
+        {"axis_kind", {{"linear", 0}, {"rotary", 1}}},
+        {"trace_channel", {{"names", 65534}, {"metadata", 65535}}},
+    };
+    // Every drive parameter (the union of linear and rotary axes), in catalogue order.
+    ordered_json params = ordered_json::array();
+    const auto& lin = sim::axisParameterMetas(sim::AxisKind::Linear);
+    const auto& rot = sim::axisParameterMetas(sim::AxisKind::Rotary);
+    int address = 1000;
+    for (const auto& m : lin) {
+        if (sim::isPlantParameter(m.key))
+            continue;
+        const bool onRot = std::any_of(rot.begin(), rot.end(), [&](const auto& r) { return r.key == m.key; });
+        ordered_json p{{"key", m.key},        {"address", address},          {"type", "f32"},
+                       {"label", m.label},    {"si_unit", m.siUnit},         {"display_unit", m.displayUnit},
+                       {"min", m.minSi},      {"max", m.maxSi},              {"writable", m.writable},
+                       {"writable_during_test", m.writableDuringTest},       {"integer", m.integer},
+                       {"group", m.group}};
+        if (!onRot)
+            p["axis_kinds"] = {"linear"};
+        params.push_back(p);
+        address += 2;
+    }
+    j["parameters"] = params;
+    return j.dump(2) + "\n";
+}
+
+}  // namespace axistune::simdrive

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The simulated drive served over Modbus TCP (libmodbus) through a register map (docs/modbus.md):
+// one SimulatedDrive per server, one unit id per axis, several clients at once, and the safety of a
+// real drive around it (amplitude, travel, speed and following-error limits, heartbeat watchdog,
+// no parameter write during a test, range checks answered with ILLEGAL DATA VALUE).
+// Single-threaded: serve() runs the network loop and the simulation; requestStop() may be called
+// from a signal handler or another thread.
+
+#include "core/device/FaultInjection.h"
+#include "core/device/RegisterMap.h"
+#include "core/device/SimulatedDrive.h"
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace axistune::device {
+
+/// Limits enforced by the drive; axis units are m (linear) or rad (rotary).
+struct SafetyLimits {
+    double amplitudeLimitPct = 300.0;     ///< torque excitation, % of rated torque (rated current × k_t)
+    double travelLimit = 0.5;             ///< |position| window around 0 [m], linear axes only
+    double speedLimitRadS = 2.0 * 3.14159265358979 * 6000.0 / 60.0;  ///< motor speed [rad/s]
+    double followingErrorLimit = 0.01;    ///< |position command − feedback| in position tests [axis units]
+    double watchdogS = 1.0;               ///< no heartbeat this long while a test runs → stop
+};
+
+struct SimDriveServerOptions {
+    std::string preset = "vmc";
+    std::string bind = "127.0.0.1";
+    int port = 0;  ///< 0: a free port, see SimDriveServer::port()
+    std::uint64_t seed = 1;
+    std::string mapFamily = "axistune-sim";
+    SafetyLimits safety;
+    FaultInjection faults;
+    double pace = 0.0;      ///< > 0: at most this many machine seconds per wall second
+    std::string stateFile;  ///< parameters kept across restarts (written after each accepted write)
+    std::function<void(const std::string&)> log;  ///< one line per connection and per fault
+};
+
+class SimDriveServer {
+public:
+    static Result<std::unique_ptr<SimDriveServer>> create(const SimDriveServerOptions& options);
+    ~SimDriveServer();
+    SimDriveServer(const SimDriveServer&) = delete;
+    SimDriveServer& operator=(const SimDriveServer&) = delete;
+
+    int port() const { return m_port; }
+    /// Serves until requestStop(); returns after closing every socket.
+    Status serve();
+    void requestStop() { m_stop.store(true); }
+
+    // The register engine (SimDriveServerRegisters.cpp); returns 0 or a Modbus exception code.
+    int readRegisters(int unitId, int address, int count, std::uint16_t* out);
+    int writeRegisters(int unitId, int address, const std::uint16_t* values, int count);
+
+private:
+    struct Axis {
+        std::string name;
+        std::string kind;  ///< "linear" or "rotary"
+        sim::AxisSimulator* sim = nullptr;
+    };
+    struct TestConfig {
+        std::uint16_t type = 0, flags = 0, traceDivider = 0, freqCount = 0;
+        std::uint32_t channelMask = 0;
+        double amplitude = 0, distance = 0, velocity = 0, acceleration = 0, duration = 0.1, offset = 0, freqStart = 0,
+               freqEnd = 0;
+    };
+    using Clock = std::chrono::steady_clock;
+
+    SimDriveServer() = default;
+    void log(const std::string& line) const;
+    Status loadState();
+    void saveState() const;
+    // Simulation and safety (SimDriveServerSafety.cpp).
+    void step();
+    void checkSafety();
+    void trip(const std::string& fault, const std::string& message);
+    int startTest(int unitIndex);
+    int runCommand(int unitIndex, std::uint16_t code, std::uint16_t token);
+    void takeTrace();
+    // Register helpers.
+    void encodeField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
+    int writeField(const RegisterField& f, int unitIndex, const std::uint16_t* words);
+    int refuse(int exception, const std::string& message);
+
+    SimDriveServerOptions m_opt;
+    RegisterMap m_map;
+    std::unique_ptr<SimulatedDrive> m_drive;
+    std::string m_machine;
+    std::vector<Axis> m_axes;
+    std::vector<int> m_owner;  ///< register → index into m_slots, -1 unmapped
+    struct Slot {
+        const RegisterField* field = nullptr;
+        const ParameterRegister* parameter = nullptr;
+        int address = 0, count = 0;
+    };
+    std::vector<Slot> m_slots;
+
+    std::vector<TestConfig> m_config;  ///< per unit
+    std::string m_state = "idle";
+    std::string m_fault = "none";
+    std::string m_message;
+    double m_progress = 0.0;
+    int m_testUnit = -1;
+    double m_testStartMachineS = 0.0;
+    Clock::time_point m_testStartWall;
+    Clock::time_point m_lastHeartbeat;
+    std::uint16_t m_heartbeat = 0;
+    std::uint16_t m_lastCode = 0, m_lastToken = 0;
+    int m_lastResult = 0;
+    bool m_haveToken = false;
+    std::optional<model::Capture> m_trace;
+    std::string m_traceNames, m_traceMeta;
+    std::uint32_t m_selOffset = 0;
+    std::uint16_t m_selChannel = 0;
+
+    int m_port = 0;
+    int m_listenFd = -1;
+    void* m_ctx = nullptr;      ///< modbus_t*
+    void* m_mapping = nullptr;  ///< modbus_mapping_t*, the reply buffer
+    std::atomic<bool> m_stop{false};
+};
+
+}  // namespace axistune::device

@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The register engine of axistune-simdrive: field values encoded on read, writes validated as a
+// whole before anything changes, commands deduplicated by their sequence token (docs/modbus.md).
+#include "core/device/SimDriveServer.h"
+
+#include <modbus/modbus.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace axistune::device {
+
+int SimDriveServer::refuse(int exception, const std::string& message)
+{
+    m_message = message;
+    log("refused (exception " + std::to_string(exception) + "): " + message);
+    return exception;
+}
+
+void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* buf)
+{
+    const WordOrder o = m_map.wordOrder;
+    const std::string& n = f.name;
+    const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
+    const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
+    auto u16 = [&](int v) { buf[0] = static_cast<std::uint16_t>(v); };
+    auto text = [&](const std::string& s) { encodeString(s, f.count, buf); };
+    if (n == "identity.magic") return u16(m_map.magic);
+    if (n == "identity.map_version") return u16(m_map.version);
+    if (n == "identity.axis_count") return u16(static_cast<int>(m_axes.size()));
+    if (n == "identity.axis_index") return u16(ui);
+    if (n == "identity.axis_kind") return u16(m_map.code("axis_kind", ax.kind));
+    if (n == "identity.parameter_count") {
+        int k = 0;
+        for (const auto& p : m_map.parameters)
+            k += p.availableOn(ax.kind) ? 1 : 0;
+        return u16(k);
+    }
+    if (n == "identity.vendor") return text("AxisTune");
+    if (n == "identity.model") return text("simulated drive");
+    if (n == "identity.firmware") return text(AXISTUNE_VERSION);
+    if (n == "identity.machine") return text(m_machine);
+    if (n == "identity.axis_name") return text(ax.name);
+    if (n == "status.state") return u16(m_map.code("state", m_state));
+    if (n == "status.fault_code") return u16(m_map.code("fault", m_fault));
+    if (n == "status.position") return encodeF32(static_cast<float>(ax.sim->tablePosition()), o, buf);
+    if (n == "status.velocity") return encodeF32(static_cast<float>(ax.sim->motorVelocity()), o, buf);
+    if (n == "status.torque") return encodeF32(static_cast<float>(ax.sim->torque()), o, buf);
+    if (n == "status.progress") return u16(static_cast<int>(std::lround(m_progress * 10000.0)));
+    if (n == "status.heartbeat_echo") return u16(m_heartbeat);
+    if (n == "status.command_token_echo" || n == "command.token") return u16(m_lastToken);
+    if (n == "command.code") return u16(m_lastCode);
+    if (n == "status.command_result") return u16(m_lastResult);
+    if (n == "status.trace_samples") return encodeU32(m_trace ? static_cast<std::uint32_t>(m_trace->size()) : 0u, o, buf);
+    if (n == "status.trace_channels") return u16(m_trace ? static_cast<int>(m_trace->channels.size()) : 0);
+    if (n == "status.trace_rate_hz") {
+        const double fs = m_trace && m_trace->metadata.count("fs_Hz") ? std::stod(m_trace->metadata.at("fs_Hz")) : 0.0;
+        return encodeF64(fs, o, buf);
+    }
+    if (n == "status.message") return text(m_message);
+    if (n == "test.type") return u16(c.type);
+    if (n == "test.flags") return u16(c.flags);
+    if (n == "test.trace_divider") return u16(c.traceDivider);
+    if (n == "test.freq_count") return u16(c.freqCount);
+    if (n == "test.trace_channel_mask") return encodeU32(c.channelMask, o, buf);
+    const std::pair<const char*, double> f64s[] = {{"test.amplitude", c.amplitude},   {"test.distance", c.distance},
+                                                   {"test.velocity", c.velocity},     {"test.acceleration", c.acceleration},
+                                                   {"test.duration", c.duration},     {"test.offset", c.offset},
+                                                   {"test.freq_start", c.freqStart},  {"test.freq_end", c.freqEnd}};
+    for (const auto& [key, v] : f64s) {
+        if (n == key)
+            return encodeF64(v, o, buf);
+    }
+    if (n == "heartbeat.counter") return u16(m_heartbeat);
+    if (n == "trace.select_offset") return encodeU32(m_selOffset, o, buf);
+    if (n == "trace.select_channel") return u16(m_selChannel);
+    if (n == "trace.window") {
+        std::memset(buf, 0, sizeof(std::uint16_t) * static_cast<std::size_t>(f.count));
+        const int namesSel = m_map.code("trace_channel", "names"), metaSel = m_map.code("trace_channel", "metadata");
+        if (m_selChannel == namesSel || m_selChannel == metaSel) {
+            const std::string& s = m_selChannel == namesSel ? m_traceNames : m_traceMeta;
+            encodeString(m_selOffset < s.size() ? s.substr(m_selOffset) : std::string(), f.count, buf);
+        } else if (m_trace && m_selChannel < m_trace->channels.size()) {
+            const auto& d = m_trace->channels[m_selChannel].data;
+            for (int k = 0; k + 4 <= f.count; k += 4) {
+                const std::size_t i = m_selOffset + static_cast<std::size_t>(k / 4);
+                encodeF64(i < d.size() ? d[i] : std::numeric_limits<double>::quiet_NaN(), o, buf + k);
+            }
+        }
+        return;
+    }
+    std::memset(buf, 0, sizeof(std::uint16_t) * static_cast<std::size_t>(f.count));  // a field this server does not use
+}
+
+int SimDriveServer::readRegisters(int unitId, int address, int count, std::uint16_t* out)
+{
+    const int ui = unitId - m_map.unitIdBase;
+    if (ui < 0 || ui >= static_cast<int>(m_axes.size()))
+        return refuse(MODBUS_EXCEPTION_GATEWAY_TARGET, "no axis on unit id " + std::to_string(unitId));
+    if (address < 0 || address + count > static_cast<int>(m_owner.size()))
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "registers beyond 65535");
+    std::vector<std::uint16_t> buf(128);
+    for (int a = address; a < address + count;) {
+        const int si = m_owner[static_cast<std::size_t>(a)];
+        if (si < 0)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "register " + std::to_string(a) + " is not mapped");
+        const Slot& s = m_slots[static_cast<std::size_t>(si)];
+        if (s.parameter) {
+            if (m_opt.faults.illegalAddress) {
+                log("fault illegal-address: parameter register " + std::to_string(a));
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "parameter registers unavailable (fault injected)");
+            }
+            if (!s.parameter->availableOn(m_axes[static_cast<std::size_t>(ui)].kind))
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "parameter " + s.parameter->meta.key + " does not exist on axis "
+                                                                         + m_axes[static_cast<std::size_t>(ui)].name);
+            encodeF32(static_cast<float>(m_axes[static_cast<std::size_t>(ui)].sim->parameter(s.parameter->meta.key)),
+                      m_map.wordOrder, buf.data());
+        } else {
+            encodeField(*s.field, ui, buf.data());
+        }
+        const int end = std::min(address + count, s.address + s.count);
+        for (; a < end; ++a)
+            out[a - address] = buf[static_cast<std::size_t>(a - s.address)];
+    }
+    return 0;
+}
+
+int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16_t* w)
+{
+    TestConfig& c = m_config[static_cast<std::size_t>(ui)];
+    const std::string& n = f.name;
+    const WordOrder o = m_map.wordOrder;
+    if (n == "heartbeat.counter") {
+        m_heartbeat = w[0];
+        m_lastHeartbeat = Clock::now();
+        return 0;
+    }
+    if (n == "trace.select_offset") {
+        m_selOffset = decodeU32(w, o);
+        return 0;
+    }
+    if (n == "trace.select_channel") {
+        m_selChannel = w[0];
+        return 0;
+    }
+    if (n.rfind("test.", 0) != 0)
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "field " + n + " is read-only");
+    if (m_state == "running")
+        return refuse(MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY, "test configuration cannot change while a test runs");
+    if (f.type == RegisterType::F64) {
+        const double v = decodeF64(w, o);
+        if (!std::isfinite(v))
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, n + " must be finite");
+        double* target = n == "test.amplitude" ? &c.amplitude : n == "test.distance" ? &c.distance
+                       : n == "test.velocity" ? &c.velocity : n == "test.acceleration" ? &c.acceleration
+                       : n == "test.duration" ? &c.duration : n == "test.offset" ? &c.offset
+                       : n == "test.freq_start" ? &c.freqStart : n == "test.freq_end" ? &c.freqEnd : nullptr;
+        if (target)
+            *target = v;
+        return 0;
+    }
+    if (n == "test.type") {
+        if (m_map.name("test_type", w[0]).empty())
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "unknown test type " + std::to_string(w[0]));
+        c.type = w[0];
+    } else if (n == "test.trace_divider") {
+        if (w[0] > 1000)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "trace divider " + std::to_string(w[0]) + " outside 0..1000");
+        c.traceDivider = w[0];
+    } else if (n == "test.flags") {
+        c.flags = w[0];
+    } else if (n == "test.freq_count") {
+        c.freqCount = w[0];
+    } else if (n == "test.trace_channel_mask") {
+        c.channelMask = decodeU32(w, o);
+    }
+    return 0;
+}
+
+int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t* values, int count)
+{
+    const int ui = unitId - m_map.unitIdBase;
+    if (ui < 0 || ui >= static_cast<int>(m_axes.size()))
+        return refuse(MODBUS_EXCEPTION_GATEWAY_TARGET, "no axis on unit id " + std::to_string(unitId));
+    if (address < 0 || address + count > static_cast<int>(m_owner.size()))
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "registers beyond 65535");
+    const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
+    // First pass: every touched field must be written whole and be valid; nothing changes on an error.
+    std::vector<const Slot*> slots;
+    model::ParameterValues params;
+    const RegisterField* command = nullptr;
+    for (int a = address; a < address + count;) {
+        const int si = m_owner[static_cast<std::size_t>(a)];
+        if (si < 0)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "register " + std::to_string(a) + " is not mapped");
+        const Slot& s = m_slots[static_cast<std::size_t>(si)];
+        const std::string what = s.parameter ? "parameter " + s.parameter->meta.key : "field " + s.field->name;
+        if (s.address < address || s.address + s.count > address + count)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "a write must cover the whole " + what);
+        const std::uint16_t* w = values + (s.address - address);
+        if (s.parameter) {
+            const auto& meta = s.parameter->meta;
+            if (m_opt.faults.illegalAddress) {
+                log("fault illegal-address: parameter register " + std::to_string(a));
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "parameter registers unavailable (fault injected)");
+            }
+            if (!s.parameter->availableOn(ax.kind))
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, what + " does not exist on axis " + ax.name);
+            if (!meta.writable)
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, what + " is read-only");
+            if (m_state == "running" && !meta.writableDuringTest)
+                return refuse(MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY, what + " cannot be written while a test runs");
+            const double v = decodeF32(w, m_map.wordOrder);
+            if (auto st = model::checkParameterValue(meta, v); !st)
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "axis " + ax.name + ": " + st.error().detail);
+            params[meta.key] = v;
+        } else if (s.field->name == "command.code" || s.field->name == "command.token") {
+            if (s.field->name == "command.code") {
+                if (address + count < s.address + 2)
+                    return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "command.code and command.token are written together");
+                command = s.field;
+            } else if (!command) {
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "command.code and command.token are written together");
+            }
+        } else {
+            slots.push_back(&s);
+        }
+        a = s.address + s.count;
+    }
+    for (const Slot* s : slots) {
+        if (int ex = writeField(*s->field, ui, values + (s->address - address)); ex)
+            return ex;
+    }
+    if (!params.empty()) {
+        if (auto st = m_drive->writeParameters(ax.name, params); !st)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, st.error().detail);
+        saveState();
+    }
+    if (command) {
+        const std::uint16_t* w = values + (command->address - address);
+        return runCommand(ui, w[0], w[1]);
+    }
+    return 0;
+}
+
+int SimDriveServer::runCommand(int ui, std::uint16_t code, std::uint16_t token)
+{
+    if (m_haveToken && token == m_lastToken && code == m_lastCode)
+        return m_lastResult;  // a retried command: answered again, not executed twice
+    const std::string name = m_map.name("command", code);
+    int result = 0;
+    if (name == "start_test") {
+        result = startTest(ui);
+    } else if (name == "abort_test") {
+        if (m_state == "running") {
+            (void)m_drive->abortTest();
+            m_state = "aborted";
+            m_fault = "aborted";
+            m_message = "aborted by the client";
+            log("test aborted by the client; parameters restored");
+        }
+    } else if (name == "clear") {
+        if (m_state != "running") {
+            m_state = "idle";
+            m_fault = "none";
+            m_message.clear();
+        }
+    } else {
+        result = refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "unknown command " + std::to_string(code));
+    }
+    m_haveToken = true;
+    m_lastCode = code;
+    m_lastToken = token;
+    m_lastResult = result;
+    return result;
+}
+
+}  // namespace axistune::device

@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Safety of the simulated drive (DESIGN.md "Talking to drives"): limits checked before a test
+// starts and after every simulation slice while it runs (travel window, motor speed, torque
+// excitation in % of rated torque, following error); heartbeat watchdog. A trip stops the motion and
+// restores the pre-test parameters (SimulatedDrive::abortTest).
+#include "core/device/SimDriveServer.h"
+
+#include <modbus/modbus.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace axistune::device {
+namespace {
+
+std::string num(double v)
+{
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4g", v);
+    return b;
+}
+
+}  // namespace
+
+int SimDriveServer::startTest(int ui)
+{
+    if (m_state == "running")
+        return refuse(MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY, "a test is already running");
+    const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
+    const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
+    const SafetyLimits& lim = m_opt.safety;
+    const std::string type = m_map.name("test_type", c.type);
+    TestRequest req;
+    req.axis = ax.name;
+    req.amplitude = c.amplitude;
+    req.distance = c.distance;
+    req.velocity = c.velocity;
+    req.acceleration = c.acceleration;
+    req.returnToStart = (c.flags & m_map.code("test_flag", "return_to_start")) != 0;
+    req.durationS = c.duration;
+    req.traceDivider = c.traceDivider;
+    const std::string u = ax.kind == "linear" ? " m" : " rad";
+    if (type == "step") {
+        req.type = TestType::Step;
+        if (std::abs(c.amplitude) > lim.speedLimitRadS)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "step amplitude " + num(c.amplitude)
+                                                                   + " rad/s exceeds the speed limit " + num(lim.speedLimitRadS) + " rad/s");
+    } else if (type == "jog" || type == "hold") {
+        req.type = type == "jog" ? TestType::Jog : TestType::Hold;
+        const double target = ax.sim->positionCommand() + (type == "jog" ? c.distance : 0.0);
+        if (ax.kind == "linear" && std::abs(target) > lim.travelLimit)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog target " + num(target) + u + " outside the travel window ±"
+                                                                   + num(lim.travelLimit) + u);
+        const double motorSpeed = ax.kind == "linear" ? c.velocity / ax.sim->parameter("plant.screw_lead") : c.velocity;
+        if (type == "jog" && std::abs(motorSpeed) > lim.speedLimitRadS)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog velocity means " + num(motorSpeed)
+                                                                   + " rad/s at the motor, above the speed limit " + num(lim.speedLimitRadS) + " rad/s");
+    } else {
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test type '" + type + "' is not supported by this drive");
+    }
+    if (auto st = m_drive->startTest(req); !st) {
+        const auto code = st.error().code;
+        const int ex = code == ErrorCode::Busy ? MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY
+                     : code == ErrorCode::NotFound ? MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS
+                     : code == ErrorCode::OutOfRange || code == ErrorCode::BadInput ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
+                                                                                   : MODBUS_EXCEPTION_SLAVE_OR_SERVER_FAILURE;
+        return refuse(ex, st.error().detail);
+    }
+    m_state = "running";
+    m_fault = "none";
+    m_message.clear();
+    m_progress = 0.0;
+    m_testUnit = ui;
+    m_testStartMachineS = ax.sim->time();
+    m_testStartWall = m_lastHeartbeat = Clock::now();
+    m_trace.reset();
+    log("test " + type + " started on axis " + ax.name);
+    return 0;
+}
+
+void SimDriveServer::trip(const std::string& fault, const std::string& message)
+{
+    (void)m_drive->abortTest();
+    m_state = fault == "heartbeat_lost" ? "aborted" : "faulted";
+    m_fault = fault;
+    m_message = message;
+    log("fault " + fault + ": " + message + "; test stopped, parameters restored");
+}
+
+void SimDriveServer::checkSafety()
+{
+    const Axis& ax = m_axes[static_cast<std::size_t>(m_testUnit)];
+    const SafetyLimits& lim = m_opt.safety;
+    const sim::AxisSimulator& s = *ax.sim;
+    const std::string u = ax.kind == "linear" ? " m" : " rad";
+    const double machineS = s.time() - m_testStartMachineS;
+    const double ratedTorque = s.parameter("motor.rated_current") * s.parameter("motor.torque_constant");
+    const double torqueLimit = lim.amplitudeLimitPct / 100.0 * ratedTorque;
+    const bool fullClosed = s.parameter("position.feedback") > 0.5;
+    const std::string type = m_map.name("test_type", m_config[static_cast<std::size_t>(m_testUnit)].type);
+    const bool positionTest = type == "jog" || type == "hold";  // the position loop is closed only there
+    const double followingError = positionTest ? s.positionCommand() - (fullClosed ? s.tablePosition() : s.motorPosition()) : 0.0;
+    const bool linear = ax.kind == "linear";  // rotary tables turn endlessly: no travel window
+    if (m_opt.faults.driveFaultAfterS >= 0 && machineS >= m_opt.faults.driveFaultAfterS)
+        trip("drive_fault", "drive fault injected " + num(machineS) + " s into the test (fault drive-fault)");
+    else if (linear && std::abs(s.tablePosition()) > lim.travelLimit)
+        trip("travel_limit", "position " + num(s.tablePosition()) + u + " left the travel window ±" + num(lim.travelLimit) + u);
+    else if (std::abs(s.motorVelocity()) > lim.speedLimitRadS)
+        trip("speed_limit", "motor speed " + num(s.motorVelocity()) + " rad/s above the limit " + num(lim.speedLimitRadS) + " rad/s");
+    else if (std::abs(s.torqueCommand()) > torqueLimit)
+        trip("amplitude_limit", "torque command " + num(s.torqueCommand()) + " Nm above " + num(lim.amplitudeLimitPct)
+                                    + " % of the rated torque (" + num(torqueLimit) + " Nm)");
+    else if (std::abs(followingError) > lim.followingErrorLimit)
+        trip("following_error", "following error " + num(followingError) + u + " above the limit " + num(lim.followingErrorLimit) + u);
+}
+
+void SimDriveServer::takeTrace()
+{
+    auto t = m_drive->readTrace();
+    if (!t) {
+        m_trace.reset();
+        return;
+    }
+    model::Capture cap = std::move(t).value();
+    const std::uint32_t mask = m_config[static_cast<std::size_t>(m_testUnit)].channelMask;
+    if (mask != 0) {
+        std::vector<model::Channel> keep;
+        for (std::size_t i = 0; i < cap.channels.size() && i < 32; ++i) {
+            if (mask & (1u << i))
+                keep.push_back(std::move(cap.channels[i]));
+        }
+        cap.channels = std::move(keep);
+    }
+    m_traceNames.clear();
+    m_traceMeta.clear();
+    for (const auto& c : cap.channels)
+        m_traceNames += c.name + "\n";
+    for (const auto& [k, v] : cap.metadata)
+        m_traceMeta += k + "=" + v + "\n";
+    m_trace = std::move(cap);
+}
+
+void SimDriveServer::step()
+{
+    if (m_state != "running")
+        return;
+    const Axis& ax = m_axes[static_cast<std::size_t>(m_testUnit)];
+    const auto now = Clock::now();
+    const double sinceHeartbeat = std::chrono::duration<double>(now - m_lastHeartbeat).count();
+    if (sinceHeartbeat > m_opt.safety.watchdogS) {
+        trip("heartbeat_lost", "no heartbeat for " + num(sinceHeartbeat) + " s (watchdog " + num(m_opt.safety.watchdogS) + " s)");
+        return;
+    }
+    if (m_opt.pace > 0) {
+        const double wall = std::chrono::duration<double>(now - m_testStartWall).count();
+        if (ax.sim->time() - m_testStartMachineS > m_opt.pace * wall)
+            return;  // ahead of the allowed pace: wait
+    }
+    auto st = m_drive->pollTest();
+    if (!st) {
+        trip("drive_fault", st.error().detail);
+        return;
+    }
+    m_progress = st->progress;
+    if (st->state == TestState::Completed) {
+        takeTrace();
+        m_state = "completed";
+        log("test completed on axis " + ax.name + ", " + std::to_string(m_trace ? m_trace->size() : 0) + " samples");
+        return;
+    }
+    if (st->state != TestState::Running) {
+        m_state = st->state == TestState::Faulted ? "faulted" : "aborted";
+        m_fault = "drive_fault";
+        m_message = st->detail;
+        return;
+    }
+    checkSafety();
+}
+
+}  // namespace axistune::device
