@@ -211,6 +211,32 @@ bool readFloat64Blob(const SQLite::Column& col, std::vector<double>& out)
     return true;
 }
 
+bool readFloat64BlobDirect(SQLite::Database& db, const char* table, std::int64_t rowid, std::int64_t bytes,
+                           std::vector<double>& out)
+{
+    if (bytes < 0 || bytes % 8 != 0)
+        return false;
+    out.resize(static_cast<std::size_t>(bytes) / 8);
+    if (bytes == 0)
+        return true;
+    sqlite3_blob* blob = nullptr;
+    int rc = sqlite3_blob_open(db.getHandle(), "main", table, "data", rowid, 0, &blob);
+    if (rc == SQLITE_OK) {
+        if (sqlite3_blob_bytes(blob) != bytes)
+            rc = SQLITE_CORRUPT;
+        else
+            rc = sqlite3_blob_read(blob, out.data(), static_cast<int>(bytes), 0);
+    }
+    sqlite3_blob_close(blob);
+    if (rc != SQLITE_OK)
+        throw SQLite::Exception(db.getHandle(), rc);
+    if constexpr (std::endian::native != std::endian::little) {
+        for (auto& v : out)
+            v = std::bit_cast<double>(__builtin_bswap64(std::bit_cast<std::uint64_t>(v)));
+    }
+    return true;
+}
+
 }  // namespace detail
 
 namespace {

@@ -33,5 +33,9 @@ std::int64_t insertModel(SQLite::Database& db, std::int64_t axisId, const std::s
 /// Little-endian float64 BLOB codec.
 void bindFloat64Blob(SQLite::Statement& st, int index, const std::vector<double>& values, std::vector<char>& scratch);
 bool readFloat64Blob(const SQLite::Column& col, std::vector<double>& out);
+/// Reads the BLOB column `data` of `table` row `rowid` straight into `out` (incremental BLOB I/O:
+/// no intermediate copy of a multi-megabyte channel). Throws SQLite::Exception on failure.
+bool readFloat64BlobDirect(SQLite::Database& db, const char* table, std::int64_t rowid, std::int64_t bytes,
+                           std::vector<double>& out);
 
 }  // namespace axistune::store::detail

@@ -214,7 +214,7 @@ Result<SessionRecord> Database::loadSession(std::int64_t id) const
         r.inputs = nlohmann::json::parse(q.getColumn(12).getString());
 
         SQLite::Statement qc(*m_db, "SELECT id, name, metadata, samples FROM captures WHERE session_id = ? ORDER BY position");
-        SQLite::Statement qch(*m_db, "SELECT name, data FROM capture_channels WHERE capture_id = ? ORDER BY position");
+        SQLite::Statement qch(*m_db, "SELECT name, id, length(data) FROM capture_channels WHERE capture_id = ? ORDER BY position");
         qc.bind(1, id);
         while (qc.executeStep()) {
             NamedCapture c;
@@ -225,7 +225,9 @@ Result<SessionRecord> Database::loadSession(std::int64_t id) const
             while (qch.executeStep()) {
                 model::Channel ch;
                 ch.name = qch.getColumn(0).getString();
-                if (!detail::readFloat64Blob(qch.getColumn(1), ch.data) || ch.data.size() != samples) {
+                if (!detail::readFloat64BlobDirect(*m_db, "capture_channels", qch.getColumn(1).getInt64(),
+                                                   qch.getColumn(2).getInt64(), ch.data)
+                    || ch.data.size() != samples) {
                     return makeError(ErrorCode::BadInput, m_path + ": " + what + ", capture '" + c.name + "', channel '"
                                                               + ch.name + "': stored data has the wrong length");
                 }
