@@ -38,6 +38,7 @@ std::string simRegisterMapJson()
     add("identity.axis_index", 3, "u16", 1, "axis index of the unit id asked");
     add("identity.axis_kind", 4, "u16", 1, "enum axis_kind");
     add("identity.parameter_count", 5, "u16", 1, "parameters available on this axis");
+    add("identity.reserved", 6, "string", 2, "reserved, reads 0 (keeps the block contiguous for one read)");
     add("identity.vendor", 8, "string", 8, "16 ASCII characters");
     add("identity.model", 16, "string", 16, "32 ASCII characters");
     add("identity.firmware", 32, "string", 8, "16 ASCII characters");
@@ -54,6 +55,7 @@ std::string simRegisterMapJson()
     add("status.command_result", 111, "u16", 1, "0 or the Modbus exception code of the last command");
     add("status.trace_samples", 112, "u32", 2, "samples per channel of the trace of the last completed test");
     add("status.trace_channels", 114, "u16", 1, "channels in the trace");
+    add("status.reserved", 115, "u16", 1, "reserved, reads 0");
     add("status.trace_rate_hz", 116, "f64", 4, "trace sample rate [Hz]");
     add("status.message", 120, "string", 32, "why the last request or test was refused or stopped, 64 ASCII characters");
     add("test.type", 200, "u16", 1, "enum test_type");

@@ -1,0 +1,522 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Modbus TCP client of the Drive seam; protocol and register map in docs/modbus.md.
+#include "core/device/ModbusDrive.h"
+
+#include <modbus/modbus.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <thread>
+
+namespace axistune::device {
+namespace {
+
+modbus_t* mb(void* p) { return static_cast<modbus_t*>(p); }
+
+bool isException(int e) { return e >= EMBXILFUN && e <= EMBXGTAR; }
+
+}  // namespace
+
+std::string modbusExceptionText(int code)
+{
+    switch (code) {
+    case 1: return "exception 1 ILLEGAL FUNCTION: the drive does not support this request";
+    case 2: return "exception 2 ILLEGAL DATA ADDRESS: register not available on this drive or axis (check the register map)";
+    case 3: return "exception 3 ILLEGAL DATA VALUE: value refused by the drive (out of range or malformed)";
+    case 4: return "exception 4 SERVER DEVICE FAILURE: the drive failed while executing the request";
+    case 5: return "exception 5 ACKNOWLEDGE: accepted, still executing";
+    case 6: return "exception 6 SERVER DEVICE BUSY: the drive is busy (a test is running)";
+    case 7: return "exception 7 NEGATIVE ACKNOWLEDGE: the drive cannot execute the request";
+    case 8: return "exception 8 MEMORY PARITY ERROR in the drive";
+    case 10: return "exception 10 GATEWAY PATH UNAVAILABLE";
+    case 11: return "exception 11 GATEWAY TARGET DEVICE FAILED TO RESPOND: no axis on this unit id";
+    default: return "exception " + std::to_string(code) + " (not defined by Modbus)";
+    }
+}
+
+Result<ModbusUri> parseModbusUri(const std::string& uri)
+{
+    const std::string prefix = "modbus://";
+    auto bad = [&](const std::string& why) {
+        return makeError(ErrorCode::BadInput, "connection '" + uri + "': " + why + " (expected modbus://HOST:PORT[?timeout_ms=N&map=FAMILY])");
+    };
+    if (uri.rfind(prefix, 0) != 0)
+        return bad("not a modbus:// URI");
+    ModbusUri u;
+    u.text = uri;
+    std::string rest = uri.substr(prefix.size()), query;
+    if (auto q = rest.find('?'); q != std::string::npos) {
+        query = rest.substr(q + 1);
+        rest = rest.substr(0, q);
+    }
+    const auto colon = rest.rfind(':');
+    if (colon == std::string::npos || colon == 0)
+        return bad("host and port are required");
+    u.host = rest.substr(0, colon);
+    try {
+        std::size_t used = 0;
+        u.port = std::stoi(rest.substr(colon + 1), &used);
+        if (used != rest.size() - colon - 1 || u.port < 1 || u.port > 65535)
+            return bad("port must be a number in 1..65535");
+    } catch (const std::exception&) {
+        return bad("port must be a number in 1..65535");
+    }
+    std::stringstream qs(query);
+    for (std::string kv; std::getline(qs, kv, '&');) {
+        const auto eq = kv.find('=');
+        const std::string k = kv.substr(0, eq), v = eq == std::string::npos ? "" : kv.substr(eq + 1);
+        if (k == "timeout_ms") {
+            try {
+                u.timeoutMs = std::stoi(v);
+            } catch (const std::exception&) {
+                u.timeoutMs = -1;
+            }
+            if (u.timeoutMs < 10 || u.timeoutMs > 60000)
+                return bad("timeout_ms must lie in 10..60000");
+        } else if (k == "map" && !v.empty()) {
+            u.family = v;
+        } else {
+            return bad("unknown option '" + kv + "'");
+        }
+    }
+    return u;
+}
+
+Result<std::unique_ptr<ModbusDrive>> ModbusDrive::open(const ModbusUri& uri, RegisterMap map)
+{
+    std::unique_ptr<ModbusDrive> d(new ModbusDrive());
+    d->m_uri = uri;
+    d->m_map = std::move(map);
+    d->m_ctx = modbus_new_tcp(uri.host.c_str(), uri.port);
+    if (!d->m_ctx)
+        return makeError(ErrorCode::BadInput, uri.text + ": " + modbus_strerror(errno));
+    const auto sec = static_cast<std::uint32_t>(uri.timeoutMs / 1000), usec = static_cast<std::uint32_t>(uri.timeoutMs % 1000) * 1000;
+    modbus_set_response_timeout(mb(d->m_ctx), sec, usec);
+    modbus_set_byte_timeout(mb(d->m_ctx), sec, usec);
+    if (auto st = d->connectOnce(); !st)
+        return st.error();
+    if (auto st = d->loadAxes(); !st)
+        return st.error();
+    return d;
+}
+
+ModbusDrive::~ModbusDrive()
+{
+    if (m_testRunning && m_connected)
+        (void)abortTest();  // a drive left running would only stop by its watchdog
+    disconnect();
+    if (m_ctx)
+        modbus_free(mb(m_ctx));
+}
+
+Status ModbusDrive::connectOnce()
+{
+    if (m_connected)
+        return Status::success();
+    if (modbus_connect(mb(m_ctx)) != 0)
+        return makeError(ErrorCode::Device, m_uri.text + ": cannot connect: " + modbus_strerror(errno));
+    m_connected = true;
+    return Status::success();
+}
+
+void ModbusDrive::disconnect()
+{
+    if (m_connected)
+        modbus_close(mb(m_ctx));
+    m_connected = false;
+}
+
+template <typename Op>
+Status ModbusDrive::transact(int unit, const std::string& what, Retry retry, Op&& op)
+{
+    std::string lastError;
+    const int attempts = retry == Retry::Idempotent ? kMaxAttempts : 1;
+    for (int attempt = 0; attempt < attempts; ++attempt) {
+        if (attempt > 0) {
+            if (++m_reconnects > kMaxReconnects) {
+                lastError += "; giving up after " + std::to_string(kMaxReconnects) + " reconnects in this session";
+                break;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(50 * attempt));  // bounded: at most 150 ms in all
+        }
+        if (!m_connected) {
+            if (modbus_connect(mb(m_ctx)) != 0) {
+                lastError += std::string(lastError.empty() ? "" : "; ") + "reconnect failed: " + modbus_strerror(errno);
+                continue;
+            }
+            m_connected = true;
+        }
+        modbus_set_slave(mb(m_ctx), unit);
+        ++m_requests;
+        if (op(mb(m_ctx)) >= 0)
+            return Status::success();
+        const int e = errno;
+        if (isException(e))
+            return exceptionError(unit, e - MODBUS_ENOBASE, what);
+        // Transport or framing failure: the link is in an unknown state, so start a fresh connection.
+        const std::string why = e == ETIMEDOUT ? "no answer within " + std::to_string(m_uri.timeoutMs) + " ms"
+                                               : std::string("connection lost (") + modbus_strerror(e) + ")";
+        lastError += std::string(lastError.empty() ? "" : "; ") + why;
+        disconnect();
+    }
+    return makeError(ErrorCode::Device, m_uri.text + " unit " + std::to_string(unit) + ": " + what + ": " + lastError);
+}
+
+Error ModbusDrive::exceptionError(int unit, int code, const std::string& what)
+{
+    std::string detail = m_uri.text + " unit " + std::to_string(unit) + ": " + what + ": drive answered "
+                         + modbusExceptionText(code);
+    // The drive explains its refusals in status.message; one plain read, no retry.
+    const auto& f = m_map.field("status.message");
+    std::vector<std::uint16_t> buf(static_cast<std::size_t>(f.count));
+    if (m_connected && modbus_read_registers(mb(m_ctx), f.address, f.count, buf.data()) == f.count) {
+        ++m_requests;
+        const std::string msg = decodeString(buf.data(), f.count);
+        if (!msg.empty())
+            detail += " — " + msg;
+    }
+    const ErrorCode ec = code == 3 ? ErrorCode::OutOfRange : code == 6 ? ErrorCode::Busy : ErrorCode::Device;
+    return makeError(ec, detail);
+}
+
+Status ModbusDrive::readRegs(int unit, int address, int count, std::uint16_t* out, const std::string& what)
+{
+    return transact(unit, what, Retry::Idempotent,
+                    [&](modbus_t* c) { return modbus_read_registers(c, address, count, out); });
+}
+
+Status ModbusDrive::writeRegs(int unit, int address, const std::uint16_t* values, int count, const std::string& what)
+{
+    // Absolute values: writing them twice leaves the same state, so a retry is harmless.
+    return transact(unit, what, Retry::Idempotent,
+                    [&](modbus_t* c) { return modbus_write_registers(c, address, count, values); });
+}
+
+Status ModbusDrive::command(int unit, const std::string& name)
+{
+    const int code = m_map.code("command", name);
+    if (code < 0)
+        return makeError(ErrorCode::Internal, "register map " + m_map.family + " has no command '" + name + "'");
+    // The token makes the command idempotent: the drive answers a repeated (code, token) without executing it again.
+    const std::uint16_t w[2] = {static_cast<std::uint16_t>(code), ++m_token};
+    return writeRegs(unit, m_map.field("command.code").address, w, 2, "command " + name);
+}
+
+Status ModbusDrive::loadAxes()
+{
+    const auto& last = m_map.field("identity.axis_name");
+    const int n = last.address + last.count;
+    std::vector<std::uint16_t> r(static_cast<std::size_t>(n));
+    auto get = [&](const std::string& f) { return r[static_cast<std::size_t>(m_map.field(f).address)]; };
+    auto text = [&](const std::string& f) { return decodeString(&r[static_cast<std::size_t>(m_map.field(f).address)], m_map.field(f).count); };
+    if (auto st = readRegs(m_map.unitIdBase, 0, n, r.data(), "reading the identity block"); !st)
+        return st;
+    if (get("identity.magic") != m_map.magic)
+        return makeError(ErrorCode::Device, m_uri.text + ": identity.magic is " + std::to_string(get("identity.magic"))
+                                                + ", not " + std::to_string(m_map.magic) + ": not a " + m_map.family + " drive");
+    m_identity = {text("identity.vendor"), text("identity.model"), text("identity.firmware"), text("identity.machine"), {}};
+    const int axes = get("identity.axis_count");
+    if (axes < 1 || axes > 32)
+        return makeError(ErrorCode::Device, m_uri.text + ": implausible axis count " + std::to_string(axes));
+    m_axes.clear();
+    for (int i = 0; i < axes; ++i) {
+        const int unit = m_map.unitIdBase + i;
+        if (auto st = readRegs(unit, 0, n, r.data(), "reading the identity block of axis " + std::to_string(i)); !st)
+            return st;
+        m_axes.push_back({text("identity.axis_name"), m_map.name("axis_kind", get("identity.axis_kind")), unit});
+        m_identity.axes.push_back(m_axes.back().name);
+    }
+    return Status::success();
+}
+
+Result<ModbusDrive::AxisInfo> ModbusDrive::axisInfo(const std::string& axis)
+{
+    for (const auto& a : m_axes) {
+        if (a.name == axis)
+            return a;
+    }
+    std::string known;
+    for (const auto& a : m_axes)
+        known += (known.empty() ? "" : ", ") + a.name;
+    return makeError(ErrorCode::NotFound, "no axis '" + axis + "' on " + m_uri.text + " (axes: " + known + ")");
+}
+
+Result<DriveIdentity> ModbusDrive::identify()
+{
+    if (auto st = loadAxes(); !st)
+        return st.error();
+    return m_identity;
+}
+
+Result<std::vector<model::ParameterMeta>> ModbusDrive::parameterMetadata(const std::string& axis)
+{
+    auto a = axisInfo(axis);
+    if (!a)
+        return a.error();
+    std::vector<model::ParameterMeta> out;
+    for (const auto& p : m_map.parameters) {
+        if (p.availableOn(a->kind))
+            out.push_back(p.meta);
+    }
+    return out;
+}
+
+Result<model::ParameterValues> ModbusDrive::readParameters(const std::string& axis, std::span<const std::string> keys)
+{
+    auto a = axisInfo(axis);
+    if (!a)
+        return a.error();
+    std::vector<const ParameterRegister*> regs;
+    if (keys.empty()) {
+        for (const auto& p : m_map.parameters) {
+            if (p.availableOn(a->kind))
+                regs.push_back(&p);
+        }
+    }
+    for (const auto& k : keys) {
+        const auto* p = m_map.parameter(k);
+        if (!p || !p->availableOn(a->kind))
+            return makeError(ErrorCode::NotFound, "axis " + axis + ": unknown parameter '" + k + "'");
+        regs.push_back(p);
+    }
+    std::sort(regs.begin(), regs.end(), [](auto* x, auto* y) { return x->address < y->address; });
+    model::ParameterValues out;
+    const int maxRegs = m_map.maxRegistersPerRead;
+    for (std::size_t i = 0; i < regs.size();) {
+        // One read per run of adjacent parameter registers, at most maxRegistersPerRead long.
+        std::size_t j = i + 1;
+        while (j < regs.size() && regs[j]->address == regs[j - 1]->address + 2 && regs[j]->address + 2 - regs[i]->address <= maxRegs)
+            ++j;
+        const int first = regs[i]->address, count = regs[j - 1]->address + 2 - first;
+        std::vector<std::uint16_t> buf(static_cast<std::size_t>(count));
+        if (auto st = readRegs(a->unit, first, count, buf.data(), "reading parameter " + regs[i]->meta.key); !st)
+            return st.error();
+        for (std::size_t k = i; k < j; ++k)
+            out[regs[k]->meta.key] = decodeF32(&buf[static_cast<std::size_t>(regs[k]->address - first)], m_map.wordOrder);
+        i = j;
+    }
+    return out;
+}
+
+Status ModbusDrive::writeParameters(const std::string& axis, const model::ParameterValues& values)
+{
+    auto a = axisInfo(axis);
+    if (!a)
+        return a.error();
+    // Everything is checked before the first byte goes out (limits are the map's).
+    for (const auto& [k, v] : values) {
+        const auto* p = m_map.parameter(k);
+        if (!p || !p->availableOn(a->kind))
+            return makeError(ErrorCode::NotFound, "axis " + axis + ": unknown parameter '" + k + "'");
+        if (!p->meta.writable)
+            return makeError(ErrorCode::BadInput, "axis " + axis + ": parameter '" + k + "' is read-only");
+        if (m_testRunning && !p->meta.writableDuringTest)
+            return makeError(ErrorCode::Busy, "axis " + axis + ": parameter '" + k + "' cannot be written while a test runs");
+        for (const double x : {v, static_cast<double>(static_cast<float>(v))}) {
+            if (auto st = model::checkParameterValue(p->meta, x); !st)
+                return makeError(st.error().code, "axis " + axis + ": " + st.error().detail + " (not sent)");
+        }
+    }
+    for (const auto& [k, v] : values) {
+        const auto* p = m_map.parameter(k);
+        std::uint16_t w[2];
+        encodeF32(static_cast<float>(v), m_map.wordOrder, w);
+        if (auto st = writeRegs(a->unit, p->address, w, 2, "writing parameter " + k); !st)
+            return st;
+    }
+    // Read back: the drive must hold exactly the float32 that was sent.
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : values)
+        keys.push_back(k);
+    auto back = readParameters(axis, keys);
+    if (!back)
+        return back.error();
+    for (const auto& [k, v] : values) {
+        const double sent = static_cast<float>(v);
+        if (back->at(k) != sent)
+            return makeError(ErrorCode::Device, m_uri.text + ": read-back of " + k + " gave " + std::to_string(back->at(k))
+                                                    + " after writing " + std::to_string(sent));
+    }
+    return Status::success();
+}
+
+Status ModbusDrive::startTest(const TestRequest& request)
+{
+    auto a = axisInfo(request.axis);
+    if (!a)
+        return a.error();
+    const char* type = request.type == TestType::Step ? "step" : request.type == TestType::Jog ? "jog" : "hold";
+    const int code = m_map.code("test_type", type);
+    if (code < 0)
+        return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no test type '" + type + "'");
+    if (request.traceDivider < 0 || request.traceDivider > 65535)
+        return makeError(ErrorCode::OutOfRange, "trace divider must lie in 0..65535");
+    const auto& first = m_map.field("test.type");
+    const auto& last = m_map.field("test.freq_end");
+    std::vector<std::uint16_t> w(static_cast<std::size_t>(last.address + last.count - first.address));
+    auto at = [&](const std::string& f) { return &w[static_cast<std::size_t>(m_map.field(f).address - first.address)]; };
+    const WordOrder o = m_map.wordOrder;
+    *at("test.type") = static_cast<std::uint16_t>(code);
+    *at("test.flags") = static_cast<std::uint16_t>(request.returnToStart ? m_map.code("test_flag", "return_to_start") : 0);
+    *at("test.trace_divider") = static_cast<std::uint16_t>(request.traceDivider);
+    encodeF64(request.amplitude, o, at("test.amplitude"));
+    encodeF64(request.distance, o, at("test.distance"));
+    encodeF64(request.velocity, o, at("test.velocity"));
+    encodeF64(request.acceleration, o, at("test.acceleration"));
+    encodeF64(request.durationS, o, at("test.duration"));
+    if (auto st = writeRegs(a->unit, first.address, w.data(), static_cast<int>(w.size()), "writing the test configuration"); !st)
+        return st;
+    if (auto st = command(a->unit, "start_test"); !st)
+        return st;
+    m_testRunning = true;
+    m_testUnit = a->unit;
+    m_lastHeartbeat = m_lastPoll = Clock::now();
+    return Status::success();
+}
+
+Status ModbusDrive::heartbeat()
+{
+    const int unit = m_testUnit >= 0 ? m_testUnit : m_map.unitIdBase;
+    const std::uint16_t v = ++m_heartbeat;
+    m_lastHeartbeat = Clock::now();
+    return writeRegs(unit, m_map.field("heartbeat.counter").address, &v, 1, "heartbeat");
+}
+
+Result<TestStatus> ModbusDrive::pollTest()
+{
+    const int unit = m_testUnit >= 0 ? m_testUnit : m_map.unitIdBase;
+    if (m_testRunning) {
+        // Callers poll in a loop; pace them so the link carries status requests, not a flood.
+        const auto next = m_lastPoll + kMinPollInterval;
+        if (Clock::now() < next)
+            std::this_thread::sleep_until(next);
+        if (Clock::now() - m_lastHeartbeat >= kHeartbeatPeriod) {
+            if (auto st = heartbeat(); !st)
+                return st.error();
+        }
+    }
+    m_lastPoll = Clock::now();
+    const auto& f0 = m_map.field("status.state");
+    const auto& fm = m_map.field("status.message");
+    const int n = fm.address + fm.count - f0.address;
+    std::vector<std::uint16_t> r(static_cast<std::size_t>(n));
+    if (auto st = readRegs(unit, f0.address, n, r.data(), "reading the status block"); !st)
+        return st.error();
+    auto at = [&](const std::string& f) { return &r[static_cast<std::size_t>(m_map.field(f).address - f0.address)]; };
+    const std::string state = m_map.name("state", *at("status.state"));
+    const std::string fault = m_map.name("fault", *at("status.fault_code"));
+    TestStatus s;
+    s.progress = *at("status.progress") / 10000.0;
+    s.state = state == "running" ? TestState::Running : state == "completed" ? TestState::Completed
+            : state == "aborted" ? TestState::Aborted : state == "faulted" ? TestState::Faulted : TestState::Idle;
+    if (s.state == TestState::Aborted || s.state == TestState::Faulted)
+        s.detail = "drive " + m_uri.text + " stopped the test (" + fault + "): " + decodeString(at("status.message"), fm.count);
+    if (s.state != TestState::Running)
+        m_testRunning = false;
+    return s;
+}
+
+Result<std::string> ModbusDrive::readText(int unit, std::uint16_t channel)
+{
+    const auto& sel = m_map.field("trace.select_offset");
+    const auto& win = m_map.field("trace.window");
+    std::string text;
+    std::vector<std::uint16_t> buf(static_cast<std::size_t>(win.count));
+    for (int page = 0; page < 64; ++page) {  // texts are short: at most 64 windows
+        std::uint16_t w[3];
+        encodeU32(static_cast<std::uint32_t>(text.size()), m_map.wordOrder, w);
+        w[2] = channel;
+        auto st = transact(unit, "reading trace text", Retry::Idempotent, [&](modbus_t* c) {
+            return modbus_write_and_read_registers(c, sel.address, 3, w, win.address, win.count, buf.data());
+        });
+        if (!st)
+            return st.error();
+        const std::string part = decodeString(buf.data(), win.count);
+        text += part;
+        if (part.size() < 2 * static_cast<std::size_t>(win.count))
+            return text;
+    }
+    return text;
+}
+
+Result<model::Capture> ModbusDrive::readTrace()
+{
+    const int unit = m_testUnit >= 0 ? m_testUnit : m_map.unitIdBase;
+    const auto& fs = m_map.field("status.trace_samples");
+    std::vector<std::uint16_t> r(3);
+    if (auto st = readRegs(unit, fs.address, 3, r.data(), "reading the trace size"); !st)
+        return st.error();
+    const std::uint32_t samples = decodeU32(r.data(), m_map.wordOrder);
+    const int channels = r[2];
+    if (samples == 0 || channels == 0)
+        return makeError(ErrorCode::NotFound, m_uri.text + ": no trace: no test has completed");
+    model::Capture cap;
+    auto names = readText(unit, static_cast<std::uint16_t>(m_map.code("trace_channel", "names")));
+    if (!names)
+        return names.error();
+    auto meta = readText(unit, static_cast<std::uint16_t>(m_map.code("trace_channel", "metadata")));
+    if (!meta)
+        return meta.error();
+    std::stringstream ns(*names), ms(*meta);
+    for (std::string line; std::getline(ns, line);)
+        cap.channels.push_back({line, {}});
+    for (std::string line; std::getline(ms, line);) {
+        if (auto eq = line.find('='); eq != std::string::npos)
+            cap.metadata[line.substr(0, eq)] = line.substr(eq + 1);
+    }
+    if (static_cast<int>(cap.channels.size()) != channels)
+        return makeError(ErrorCode::Device, m_uri.text + ": trace lists " + std::to_string(cap.channels.size())
+                                                + " channel names for " + std::to_string(channels) + " channels");
+    const auto& sel = m_map.field("trace.select_offset");
+    const auto& win = m_map.field("trace.window");
+    const int perPage = win.count / 4;
+    std::vector<std::uint16_t> buf(static_cast<std::size_t>(win.count));
+    for (int c = 0; c < channels; ++c) {
+        auto& data = cap.channels[static_cast<std::size_t>(c)].data;
+        data.reserve(samples);
+        for (std::uint32_t off = 0; off < samples; off += static_cast<std::uint32_t>(perPage)) {
+            std::uint16_t w[3];
+            encodeU32(off, m_map.wordOrder, w);
+            w[2] = static_cast<std::uint16_t>(c);
+            // Select the page and read it in one request (function code 23); repeating it is harmless.
+            auto st = transact(unit, "reading trace channel " + cap.channels[static_cast<std::size_t>(c)].name,
+                               Retry::Idempotent, [&](modbus_t* ctx) {
+                                   return modbus_write_and_read_registers(ctx, sel.address, 3, w, win.address, win.count, buf.data());
+                               });
+            if (!st)
+                return st.error();
+            const std::uint32_t n = std::min<std::uint32_t>(static_cast<std::uint32_t>(perPage), samples - off);
+            for (std::uint32_t k = 0; k < n; ++k)
+                data.push_back(decodeF64(&buf[4 * k], m_map.wordOrder));
+        }
+    }
+    return cap;
+}
+
+Status ModbusDrive::abortTest()
+{
+    const int unit = m_testUnit >= 0 ? m_testUnit : m_map.unitIdBase;
+    m_testRunning = false;
+    return command(unit, "abort_test");
+}
+
+Result<std::unique_ptr<Drive>> connectAny(const ConnectionSettings& settings)
+{
+    if (settings.uri.rfind("modbus://", 0) != 0)
+        return connect(settings);
+    auto uri = parseModbusUri(settings.uri);
+    if (!uri)
+        return uri.error();
+    auto map = loadRegisterMap(uri->family);
+    if (!map)
+        return makeError(map.error().code, "connection '" + settings.uri + "': " + map.error().detail);
+    auto d = ModbusDrive::open(*uri, std::move(map).value());
+    if (!d)
+        return d.error();
+    return std::unique_ptr<Drive>(std::move(d).value());
+}
+
+}  // namespace axistune::device

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The Modbus TCP drive (libmodbus client) behind the Drive seam, speaking a register map
+// (resources/drives/*.json, docs/modbus.md). Synchronous; one thread per instance (libmodbus
+// contexts are not thread-safe). Every request is bounded by the response timeout; requests are
+// retried after a reconnect only when repeating them is harmless (reads, absolute writes, commands
+// carrying a sequence token); the heartbeat goes out from pollTest() while a test runs.
+
+#include "core/device/Drive.h"
+#include "core/device/RegisterMap.h"
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace axistune::device {
+
+struct ModbusUri {
+    std::string host;
+    int port = 502;
+    int timeoutMs = 1000;               ///< per request, also the connect timeout
+    std::string family = "axistune-sim";  ///< register map resources/drives/<family>.json
+    std::string text;                   ///< the URI as given, for messages
+};
+
+/// "modbus://HOST:PORT[?timeout_ms=N&map=FAMILY]"; errors name the URI and the part that is wrong.
+Result<ModbusUri> parseModbusUri(const std::string& uri);
+
+/// A text for each Modbus exception code (1..11) and libmodbus protocol error.
+std::string modbusExceptionText(int exceptionCode);
+
+class ModbusDrive : public Drive {
+public:
+    static Result<std::unique_ptr<ModbusDrive>> open(const ModbusUri& uri, RegisterMap map);
+    ~ModbusDrive() override;
+
+    Result<DriveIdentity> identify() override;
+    Result<std::vector<model::ParameterMeta>> parameterMetadata(const std::string& axis) override;
+    Result<model::ParameterValues> readParameters(const std::string& axis, std::span<const std::string> keys) override;
+    Status writeParameters(const std::string& axis, const model::ParameterValues& values) override;
+    Status startTest(const TestRequest& request) override;
+    Result<TestStatus> pollTest() override;
+    Result<model::Capture> readTrace() override;
+    Status abortTest() override;
+
+    /// Writes the heartbeat register now (pollTest() does this every kHeartbeatPeriod while a test runs).
+    Status heartbeat();
+    const RegisterMap& registerMap() const { return m_map; }
+    /// Requests sent so far (for benchmarks).
+    std::uint64_t requestCount() const { return m_requests; }
+
+    static constexpr int kMaxAttempts = 3;     ///< per idempotent request
+    static constexpr int kMaxReconnects = 5;   ///< per session
+    static constexpr std::chrono::milliseconds kHeartbeatPeriod{200};
+    static constexpr std::chrono::milliseconds kMinPollInterval{10};
+
+private:
+    using Clock = std::chrono::steady_clock;
+    struct AxisInfo {
+        std::string name;
+        std::string kind;
+        int unit = 0;
+    };
+    enum class Retry { Idempotent, Never };
+
+    ModbusDrive() = default;
+    Status connectOnce();
+    void disconnect();
+    template <typename Op>
+    Status transact(int unit, const std::string& what, Retry retry, Op&& op);
+    Status readRegs(int unit, int address, int count, std::uint16_t* out, const std::string& what);
+    Status writeRegs(int unit, int address, const std::uint16_t* values, int count, const std::string& what);
+    Status command(int unit, const std::string& name);
+    Status loadAxes();
+    Result<AxisInfo> axisInfo(const std::string& axis);
+    Result<std::string> readText(int unit, std::uint16_t channel);
+    Error exceptionError(int unit, int exceptionCode, const std::string& what);
+
+    ModbusUri m_uri;
+    RegisterMap m_map;
+    void* m_ctx = nullptr;  ///< modbus_t*
+    bool m_connected = false;
+    int m_reconnects = 0;
+    std::uint64_t m_requests = 0;
+    std::vector<AxisInfo> m_axes;
+    DriveIdentity m_identity;
+    std::uint16_t m_token = 0;
+    std::uint16_t m_heartbeat = 0;
+    bool m_testRunning = false;
+    int m_testUnit = -1;
+    Clock::time_point m_lastHeartbeat;
+    Clock::time_point m_lastPoll;
+};
+
+/// Opens "sim:PRESET" (embedded) or "modbus://HOST:PORT" (Modbus TCP) alike.
+Result<std::unique_ptr<Drive>> connectAny(const ConnectionSettings& settings);
+
+}  // namespace axistune::device
