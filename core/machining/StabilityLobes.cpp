@@ -88,7 +88,8 @@ SpeedSetup setupSpeed(const CuttingConditions& cut, double rpm, int k)
 
 // Small matrices (tool state plus the two force inputs) live on the stack when they fit.
 template <typename Small>
-Eigen::MatrixXd monodromyImpl(const StateSpace& ss, double omega0, const SpeedSetup& sp, double depthM)
+Eigen::MatrixXd monodromyImpl(const StateSpace& ss, double omega0, const SpeedSetup& sp, double depthM,
+                              Eigen::MatrixXd* feedInput)
 {
     const int k = static_cast<int>(sp.kf.size());
     const int ns = ss.ns;
@@ -103,6 +104,12 @@ Eigen::MatrixXd monodromyImpl(const StateSpace& ss, double omega0, const SpeedSe
     Small aug = Small::Zero(ns + 2, ns + 2);
     Small bc(ns, 2), e(ns + 2, ns + 2), p(ns, ns), r(ns, 2);
     Eigen::MatrixXd delayed(2, n), newQ(2, n), nextTop(ns, n);
+    // Optional lifted input matrix G (spec (3-25)), tracked with the same structure: N × k.
+    Eigen::MatrixXd gTop, gRing, gDelayed, gNewQ, gNextTop;
+    if (feedInput) {
+        gTop = Eigen::MatrixXd::Zero(ns, k);
+        gRing = Eigen::MatrixXd::Zero(2 * k, k);
+    }
     for (int i = 0; i < k; ++i) {
         // ω0 scaling: the force from scaled displacement is K_f·(ω0 q)/ω0.
         bc.noalias() = (depthM / omega0) * b * sp.kf[static_cast<std::size_t>(i)];
@@ -119,8 +126,24 @@ Eigen::MatrixXd monodromyImpl(const StateSpace& ss, double omega0, const SpeedSe
         nextTop.noalias() = p * top;
         nextTop.noalias() += r * delayed;
         top.swap(nextTop);
+        if (feedInput) {
+            // The static chip enters like the delayed position with weight 1 (h0 = [u_f, 0]): E_i = R_i[:, 0].
+            gDelayed = 0.5 * (gRing.middleRows(2 * slotK, 2) + gRing.middleRows(2 * slotK1, 2));
+            gNewQ.noalias() = c * gTop;
+            gNextTop.noalias() = p * gTop;
+            gNextTop.noalias() += r * gDelayed;
+            gNextTop.col(i) += r.col(0);
+            gTop.swap(gNextTop);
+            gRing.middleRows(2 * ((head + k - 1) % k), 2) = gNewQ;
+        }
         head = (head + k - 1) % k;
         ring.middleRows(2 * head, 2) = newQ;  // the shift: only the ring head moves
+    }
+    if (feedInput) {
+        feedInput->resize(n, k);
+        feedInput->topRows(ns) = gTop;
+        for (int j = 0; j < k; ++j)
+            feedInput->middleRows(ns + 2 * j, 2) = gRing.middleRows(2 * ((head + j) % k), 2);
     }
     Eigen::MatrixXd f(n, n);
     f.topRows(ns) = top;
@@ -129,12 +152,13 @@ Eigen::MatrixXd monodromyImpl(const StateSpace& ss, double omega0, const SpeedSe
     return f;
 }
 
-Eigen::MatrixXd monodromy(const StateSpace& ss, double omega0, const SpeedSetup& sp, double depthM)
+Eigen::MatrixXd monodromy(const StateSpace& ss, double omega0, const SpeedSetup& sp, double depthM,
+                          Eigen::MatrixXd* feedInput = nullptr)
 {
     using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 16, 16>;
     if (ss.ns + 2 <= 16)
-        return monodromyImpl<Small>(ss, omega0, sp, depthM);
-    return monodromyImpl<Eigen::MatrixXd>(ss, omega0, sp, depthM);
+        return monodromyImpl<Small>(ss, omega0, sp, depthM, feedInput);
+    return monodromyImpl<Eigen::MatrixXd>(ss, omega0, sp, depthM, feedInput);
 }
 
 double denseSpectralRadius(const Eigen::MatrixXd& f)
@@ -274,6 +298,37 @@ Result<double> monodromySpectralRadius(const ToolModes& tool, const CuttingCondi
     const double w0 = referenceOmega(tool);
     const auto ss = buildStateSpace(tool, w0);
     return denseSpectralRadius(monodromy(ss, w0, setupSpeed(cut, rpm, stepsPerPeriod), depthM));
+}
+
+Result<ChatterIndices> chatterIndices(const ToolModes& tool, const CuttingConditions& cut, double rpm, double depthM,
+                                      int stepsPerPeriod)
+{
+    if (auto s = checkInputs(tool, cut, stepsPerPeriod); !s)
+        return s.error();
+    if (!(rpm > 0.0) || !std::isfinite(rpm) || !(depthM >= 0.0) || !std::isfinite(depthM))
+        return makeError(ErrorCode::OutOfRange, "spindle speed must be > 0 rpm and depth >= 0 m");
+    const double w0 = referenceOmega(tool);
+    const auto ss = buildStateSpace(tool, w0);
+    Eigen::MatrixXd g;
+    const Eigen::MatrixXd f = monodromy(ss, w0, setupSpeed(cut, rpm, stepsPerPeriod), depthM, &g);
+    ChatterIndices out;
+    out.lambda = denseSpectralRadius(f);
+    if (out.lambda >= 1.0) {
+        out.sigma = std::numeric_limits<double>::infinity();
+        return out;
+    }
+    // H selects the y position now and in the delay line: y[ki], y[ki−1], …, y[ki−k] (spec (3-27)).
+    // In scaled coordinates H̃(I−F)⁻¹G̃ equals the physical ratio (the ω0 factors cancel).
+    const Eigen::Index n = f.rows();
+    const int k = stepsPerPeriod;
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(k + 1, n);
+    h.row(0).head(ss.ns) = ss.c.row(1);
+    for (int j = 0; j < k; ++j)
+        h(j + 1, ss.ns + 2 * j + 1) = 1.0;
+    const Eigen::MatrixXd x = (Eigen::MatrixXd::Identity(n, n) - f).partialPivLu().solve(g);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(h * x);
+    out.sigma = svd.singularValues()(0);
+    return out;
 }
 
 Result<double> limitDepth(const ToolModes& tool, const CuttingConditions& cut, double rpm, const LobeOptions& opt)

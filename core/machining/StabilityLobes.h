@@ -30,6 +30,16 @@ struct LobePoint {
 Result<double> monodromySpectralRadius(const ToolModes& tool, const CuttingConditions& cut, double rpm,
                                        double depthM, int stepsPerPeriod);
 
+/// Self-excited and forced chatter indices of spec §2.5/§2.6 at one operating point:
+/// lambda = ρ(F), sigma = σ_max(H (I − F)⁻¹ G) with H the y-position history and G the feed input
+/// (static chip per unit feed per tooth, so sigma is in m of y displacement per m of feed per tooth).
+struct ChatterIndices {
+    double lambda = 0.0;
+    double sigma = 0.0;  ///< +infinity when lambda ≥ 1
+};
+Result<ChatterIndices> chatterIndices(const ToolModes& tool, const CuttingConditions& cut, double rpm, double depthM,
+                                      int stepsPerPeriod);
+
 /// Limit axial depth [m] at one spindle speed.
 Result<double> limitDepth(const ToolModes& tool, const CuttingConditions& cut, double rpm, const LobeOptions& opt);
 

@@ -75,3 +75,26 @@ TEST(CliMachining, LobesBadInputExitsWith2)
     EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
     std::filesystem::remove_all(dir);
 }
+
+TEST(CliMachining, SpindleSpeedPocketRule)
+{
+    const auto r = runCli("spindle-speed --chatter-hz 1390 --rpm 2800 --teeth 4");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // spec §6.3 Ch.4 exp: ratio 7.446 → ρ 7 → 2978.6 rpm.
+    EXPECT_NE(r.out.find("\"lobe\": 7"), std::string::npos) << r.out;
+    const auto p = r.out.find("\"pocket_rpm\": ");
+    ASSERT_NE(p, std::string::npos);
+    EXPECT_NEAR(std::stod(r.out.substr(p + 14)), 2978.57, 0.01);
+    EXPECT_EQ(runCli("spindle-speed --chatter-hz -5 --rpm 2800 --teeth 4").exitCode, 2);
+    EXPECT_EQ(runCli("spindle-speed --rpm 2800 --teeth 4").exitCode, 2);
+}
+
+TEST(CliMachining, SpindleSpeedWithLobeDiagram)
+{
+    const auto r = runCli("spindle-speed --chatter-hz 1581.5 --rpm 2800 --teeth 4 --tool " + kSamples +
+                          "tool-table1.json --cut " + kSamples + "cut-table1.json --depth-mm 1.5");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto p = r.out.find("\"cost_optimal_rpm\": ");
+    ASSERT_NE(p, std::string::npos) << r.out;
+    EXPECT_NEAR(std::stod(r.out.substr(p + 20)), 2900.0, 30.0);  // spec §5.1: argmin J_8 ≈ 2895–2905 rpm
+}
