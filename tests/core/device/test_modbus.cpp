@@ -1,0 +1,401 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Modbus TCP drive against axistune-simdrive's server run in-process on a thread, over a real
+// loopback socket. The embedded SimulatedDrive with the same seed is the independent reference.
+#include "core/device/ModbusDrive.h"
+#include "core/device/SimDriveServer.h"
+
+#include <gtest/gtest.h>
+#include <modbus/modbus.h>
+
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <thread>
+
+using namespace axistune;
+using namespace axistune::device;
+
+namespace {
+
+class ServerThread {
+public:
+    explicit ServerThread(SimDriveServerOptions o)
+    {
+        o.log = [this](const std::string& l) {
+            std::lock_guard lock(m_mutex);
+            m_log += l + "\n";
+        };
+        auto s = SimDriveServer::create(o);
+        EXPECT_TRUE(s.ok()) << (s.ok() ? "" : s.error().detail);
+        if (!s.ok())
+            return;
+        m_server = std::move(s).value();
+        m_thread = std::thread([this] { (void)m_server->serve(); });
+    }
+    ~ServerThread() { stop(); }
+    void stop()
+    {
+        if (m_server)
+            m_server->requestStop();
+        if (m_thread.joinable())
+            m_thread.join();
+    }
+    int port() const { return m_server ? m_server->port() : 0; }
+    std::string uri(int timeoutMs = 1000) const
+    {
+        return "modbus://127.0.0.1:" + std::to_string(port()) + "?timeout_ms=" + std::to_string(timeoutMs);
+    }
+    std::string log()
+    {
+        std::lock_guard lock(m_mutex);
+        return m_log;
+    }
+
+private:
+    std::unique_ptr<SimDriveServer> m_server;
+    std::thread m_thread;
+    std::mutex m_mutex;
+    std::string m_log;
+};
+
+SimDriveServerOptions options(const std::string& preset = "vmc")
+{
+    SimDriveServerOptions o;
+    o.preset = preset;
+    o.seed = 7;
+    return o;
+}
+
+std::unique_ptr<Drive> open(const std::string& uri)
+{
+    auto d = connectAny({uri, 7});
+    EXPECT_TRUE(d.ok()) << (d.ok() ? "" : d.error().detail);
+    return d.ok() ? std::move(d).value() : nullptr;
+}
+
+/// Polls until the test leaves Running; bounded in count and time.
+Result<TestStatus> finish(Drive& d, double maxSeconds = 30.0)
+{
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(maxSeconds);
+    for (int i = 0; i < 100000 && std::chrono::steady_clock::now() < end; ++i) {
+        auto s = d.pollTest();
+        if (!s || s->state != TestState::Running)
+            return s;
+    }
+    return makeError(ErrorCode::Internal, "test did not finish in time");
+}
+
+TestRequest step(const std::string& axis, double amplitude, double duration)
+{
+    TestRequest r;
+    r.axis = axis;
+    r.type = TestType::Step;
+    r.amplitude = amplitude;
+    r.durationS = duration;
+    return r;
+}
+
+/// A raw libmodbus client: the drive's answers without ModbusDrive in between.
+struct RawClient {
+    modbus_t* ctx;
+    RawClient(int port, int unit) : ctx(modbus_new_tcp("127.0.0.1", port))
+    {
+        modbus_set_response_timeout(ctx, 1, 0);
+        EXPECT_EQ(modbus_connect(ctx), 0);
+        modbus_set_slave(ctx, unit);
+    }
+    ~RawClient() { modbus_close(ctx), modbus_free(ctx); }
+};
+
+}  // namespace
+
+TEST(ModbusDrive, IdentityAndParametersMatchTheEmbeddedDrive)
+{
+    ServerThread srv(options("dd-table"));
+    auto remote = open(srv.uri());
+    auto local = open("sim:dd-table");
+    ASSERT_TRUE(remote && local);
+    auto a = remote->identify(), b = local->identify();
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a->axes, b->axes);
+    EXPECT_EQ(a->machine, b->machine);
+    for (const auto& axis : b->axes) {
+        auto pr = remote->readParameters(axis, {});
+        auto pl = local->readParameters(axis, {});
+        ASSERT_TRUE(pr.ok() && pl.ok()) << (pr.ok() ? "" : pr.error().detail);
+        ASSERT_EQ(pr->size(), pl->size()) << axis;
+        for (const auto& [k, v] : *pl)
+            EXPECT_EQ(pr->at(k), static_cast<double>(static_cast<float>(v))) << axis << " " << k;  // float32 on the wire
+    }
+}
+
+TEST(ModbusDrive, TraceOverModbusIsTheEmbeddedTraceBitForBit)
+{
+    ServerThread srv(options("vmc"));
+    auto remote = open(srv.uri());
+    auto local = open("sim:vmc");
+    ASSERT_TRUE(remote && local);
+    for (Drive* d : {remote.get(), local.get()}) {
+        ASSERT_TRUE(d->startTest(step("X", 20.0, 0.1)).ok());
+        auto s = finish(*d);
+        ASSERT_TRUE(s.ok()) << s.error().detail;
+        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
+    }
+    auto tr = remote->readTrace();
+    auto tl = local->readTrace();
+    ASSERT_TRUE(tr.ok()) << tr.error().detail;
+    ASSERT_TRUE(tl.ok());
+    ASSERT_EQ(tr->channels.size(), tl->channels.size());
+    ASSERT_GT(tl->size(), 100u);
+    EXPECT_EQ(tr->metadata, tl->metadata);
+    for (std::size_t c = 0; c < tl->channels.size(); ++c) {
+        EXPECT_EQ(tr->channels[c].name, tl->channels[c].name);
+        EXPECT_EQ(tr->channels[c].data, tl->channels[c].data) << tl->channels[c].name;  // float64 on the wire: exact
+    }
+}
+
+TEST(ModbusDrive, OutOfLimitWriteIsRefusedByClientAndDrive)
+{
+    ServerThread srv(options());
+    auto d = open(srv.uri());
+    ASSERT_TRUE(d);
+    auto* md = dynamic_cast<ModbusDrive*>(d.get());
+    auto old = d->readParameters("X", std::vector<std::string>{"velocity.kp"});
+    ASSERT_TRUE(old.ok());
+    const auto before = md->requestCount();
+    auto st = d->writeParameters("X", {{"velocity.kp", 2e5}});  // limit 1e5
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
+    EXPECT_NE(st.error().detail.find("not sent"), std::string::npos) << st.error().detail;
+    EXPECT_EQ(md->requestCount(), before);  // nothing went out
+    // The drive itself refuses the same value with ILLEGAL DATA VALUE.
+    const auto* p = md->registerMap().parameter("velocity.kp");
+    std::uint16_t w[2];
+    encodeF32(2e5f, WordOrder::HighWordFirst, w);
+    RawClient raw(srv.port(), 1);
+    EXPECT_EQ(modbus_write_registers(raw.ctx, p->address, 2, w), -1);
+    EXPECT_EQ(errno, EMBXILVAL);
+    auto v = d->readParameters("X", std::vector<std::string>{"velocity.kp"});
+    ASSERT_TRUE(v.ok());
+    EXPECT_EQ(v->at("velocity.kp"), old->at("velocity.kp"));  // unchanged
+    // Half a float32 pair is refused too (ILLEGAL DATA ADDRESS), and so is an unknown unit id.
+    EXPECT_EQ(modbus_write_register(raw.ctx, p->address, 0x3F80), -1);
+    EXPECT_EQ(errno, EMBXILADD);
+    modbus_set_slave(raw.ctx, 9);
+    std::uint16_t r[1];
+    EXPECT_EQ(modbus_read_registers(raw.ctx, 0, 1, r), -1);
+    EXPECT_EQ(errno, EMBXGTAR);
+}
+
+TEST(ModbusDrive, WriteDuringTestIsRefusedAndCommandsAreNotRunTwice)
+{
+    auto o = options();
+    o.pace = 1.0;  // real time: the test lasts
+    ServerThread srv(o);
+    auto d = open(srv.uri());
+    ASSERT_TRUE(d);
+    ASSERT_TRUE(d->startTest(step("X", 5.0, 3.0)).ok());
+    auto st = d->writeParameters("X", {{"velocity.kp", 0.5}});
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::Busy);  // the client knows a test runs
+    auto* md = dynamic_cast<ModbusDrive*>(d.get());
+    RawClient raw(srv.port(), 1);
+    std::uint16_t w[2];
+    encodeF32(0.5f, WordOrder::HighWordFirst, w);
+    EXPECT_EQ(modbus_write_registers(raw.ctx, md->registerMap().parameter("velocity.kp")->address, 2, w), -1);
+    EXPECT_EQ(errno, EMBXSBUSY);  // and so does the drive
+    // A start command repeated with the token of the running test is answered, not executed again.
+    std::uint16_t echo[1];
+    const int tokenAddr = md->registerMap().field("status.command_token_echo").address;
+    ASSERT_EQ(modbus_read_registers(raw.ctx, tokenAddr, 1, echo), 1);
+    const std::uint16_t cmd[2] = {static_cast<std::uint16_t>(md->registerMap().code("command", "start_test")), echo[0]};
+    EXPECT_EQ(modbus_write_registers(raw.ctx, md->registerMap().field("command.code").address, 2, cmd), 2);
+    const std::uint16_t again[2] = {cmd[0], static_cast<std::uint16_t>(echo[0] + 1)};
+    EXPECT_EQ(modbus_write_registers(raw.ctx, md->registerMap().field("command.code").address, 2, again), -1);
+    EXPECT_EQ(errno, EMBXSBUSY);  // a new token is a new command: refused while the test runs
+    ASSERT_TRUE(d->abortTest().ok());
+    auto s = d->pollTest();
+    ASSERT_TRUE(s.ok());
+    EXPECT_EQ(s->state, TestState::Aborted);
+}
+
+TEST(ModbusDrive, SilentClientMakesTheDriveStopAndRestoreByItself)
+{
+    auto o = options();
+    o.pace = 1.0;
+    o.safety.watchdogS = 0.3;
+    ServerThread srv(o);
+    auto d = open(srv.uri());
+    ASSERT_TRUE(d);
+    // With heartbeats (pollTest) a 0.6 s test outlives the 0.3 s watchdog.
+    ASSERT_TRUE(d->startTest(step("X", 5.0, 0.6)).ok());
+    auto ok = finish(*d, 10.0);
+    ASSERT_TRUE(ok.ok()) << ok.error().detail;
+    EXPECT_EQ(ok->state, TestState::Completed) << ok->detail;
+    // Silent: the drive stops the test and restores trace.divider (the test set it to 4).
+    auto req = step("X", 5.0, 5.0);
+    req.traceDivider = 4;
+    ASSERT_TRUE(d->startTest(req).ok());
+    std::this_thread::sleep_for(std::chrono::milliseconds(900));
+    const std::string log = srv.log();
+    EXPECT_NE(log.find("fault heartbeat_lost"), std::string::npos) << log;
+    auto s = d->pollTest();
+    ASSERT_TRUE(s.ok());
+    EXPECT_EQ(s->state, TestState::Aborted);
+    EXPECT_NE(s->detail.find("heartbeat_lost"), std::string::npos) << s->detail;
+    auto v = d->readParameters("X", std::vector<std::string>{"trace.divider"});
+    ASSERT_TRUE(v.ok());
+    EXPECT_EQ(v->at("trace.divider"), 1.0);
+}
+
+TEST(ModbusDrive, SafetyLimitsRefuseOrStopTests)
+{
+    auto o = options();
+    o.safety.speedLimitRadS = 100.0;
+    o.safety.amplitudeLimitPct = 1.0;  // 1 % of rated torque: any real step trips
+    ServerThread srv(o);
+    auto d = open(srv.uri());
+    ASSERT_TRUE(d);
+    auto st = d->startTest(step("X", 150.0, 0.1));
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
+    EXPECT_NE(st.error().detail.find("speed limit"), std::string::npos) << st.error().detail;
+    TestRequest jog;
+    jog.axis = "X";
+    jog.type = TestType::Jog;
+    jog.distance = 0.8;  // beyond the ±0.5 m window
+    jog.velocity = 0.01;
+    jog.acceleration = 1.0;
+    st = d->startTest(jog);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().detail.find("travel window"), std::string::npos) << st.error().detail;
+    auto req = step("X", 50.0, 0.5);
+    req.traceDivider = 3;
+    ASSERT_TRUE(d->startTest(req).ok());
+    auto s = finish(*d);
+    ASSERT_TRUE(s.ok());
+    EXPECT_EQ(s->state, TestState::Faulted);
+    EXPECT_NE(s->detail.find("amplitude_limit"), std::string::npos) << s->detail;
+    auto v = d->readParameters("X", std::vector<std::string>{"trace.divider"});
+    ASSERT_TRUE(v.ok());
+    EXPECT_EQ(v->at("trace.divider"), 1.0);  // pre-test value back
+}
+
+TEST(ModbusDrive, FollowingErrorTripsAJog)
+{
+    auto o = options();
+    o.safety.followingErrorLimit = 1e-6;  // 1 µm: a 50 mm/s jog lags more
+    ServerThread srv(o);
+    auto d = open(srv.uri());
+    ASSERT_TRUE(d);
+    TestRequest jog;
+    jog.axis = "X";
+    jog.type = TestType::Jog;
+    jog.distance = 0.05;
+    jog.velocity = 0.05;
+    jog.acceleration = 1.0;
+    jog.durationS = 0.05;
+    ASSERT_TRUE(d->startTest(jog).ok());
+    auto s = finish(*d);
+    ASSERT_TRUE(s.ok());
+    EXPECT_EQ(s->state, TestState::Faulted);
+    EXPECT_NE(s->detail.find("following_error"), std::string::npos) << s->detail;
+}
+
+TEST(ModbusDrive, InjectedFaultsGiveTheirOwnErrorsAndNeverHang)
+{
+    using Clock = std::chrono::steady_clock;
+    {
+        auto o = options();
+        o.faults.illegalAddress = true;
+        ServerThread srv(o);
+        auto d = open(srv.uri());
+        ASSERT_TRUE(d);
+        auto v = d->readParameters("X", {});
+        ASSERT_FALSE(v.ok());
+        EXPECT_EQ(v.error().code, ErrorCode::Device);
+        EXPECT_NE(v.error().detail.find("ILLEGAL DATA ADDRESS"), std::string::npos) << v.error().detail;
+    }
+    {
+        auto o = options();
+        o.faults.delayMs = 400;
+        ServerThread srv(o);
+        const auto t0 = Clock::now();
+        auto d = connectAny({srv.uri(200), 7});
+        const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+        ASSERT_FALSE(d.ok());
+        EXPECT_EQ(d.error().code, ErrorCode::Device);
+        EXPECT_NE(d.error().detail.find("no answer within 200 ms"), std::string::npos) << d.error().detail;
+        EXPECT_LT(s, 3.0);
+    }
+    {
+        auto o = options();
+        o.faults.dropAfterRequests = 2;  // every connection dies at its 2nd request: reconnects run out
+        ServerThread srv(o);
+        auto d = open(srv.uri());
+        ASSERT_TRUE(d);
+        Error last;
+        int failures = 0;
+        for (int i = 0; i < 20 && failures == 0; ++i) {
+            auto v = d->readParameters("X", {});
+            if (!v.ok())
+                last = v.error(), ++failures;
+        }
+        ASSERT_EQ(failures, 1);
+        EXPECT_EQ(last.code, ErrorCode::Device);
+        EXPECT_NE(last.detail.find("connection lost"), std::string::npos) << last.detail;
+        EXPECT_NE(last.detail.find("giving up"), std::string::npos) << last.detail;
+        EXPECT_NE(srv.log().find("fault drop-after:2"), std::string::npos);
+    }
+    {
+        auto o = options();
+        o.faults.driveFaultAfterS = 0.05;
+        ServerThread srv(o);
+        auto d = open(srv.uri());
+        ASSERT_TRUE(d);
+        ASSERT_TRUE(d->startTest(step("X", 5.0, 0.5)).ok());
+        auto s = finish(*d);
+        ASSERT_TRUE(s.ok());
+        EXPECT_EQ(s->state, TestState::Faulted);
+        EXPECT_NE(s->detail.find("drive_fault"), std::string::npos) << s->detail;
+    }
+}
+
+TEST(ModbusDrive, ReconnectsAndRetriesReadsWhenTheLinkDrops)
+{
+    auto o = options();
+    o.faults.dropAfterRequests = 120;  // a trace readout needs a few hundred requests: ~3 drops
+    ServerThread srv(o);
+    auto remote = open(srv.uri());
+    auto local = open("sim:vmc");
+    ASSERT_TRUE(remote && local);
+    for (Drive* d : {remote.get(), local.get()}) {
+        ASSERT_TRUE(d->startTest(step("X", 20.0, 0.1)).ok());
+        auto s = finish(*d);
+        ASSERT_TRUE(s.ok()) << s.error().detail;
+        ASSERT_EQ(s->state, TestState::Completed);
+    }
+    auto tr = remote->readTrace();
+    ASSERT_TRUE(tr.ok()) << tr.error().detail;
+    auto tl = local->readTrace();
+    ASSERT_TRUE(tl.ok());
+    for (std::size_t c = 0; c < tl->channels.size(); ++c)
+        EXPECT_EQ(tr->channels[c].data, tl->channels[c].data) << tl->channels[c].name;
+    EXPECT_NE(srv.log().find("fault drop-after:120"), std::string::npos);
+}
+
+TEST(ModbusDrive, UriErrorsNameThePart)
+{
+    for (const std::string u : {"modbus://127.0.0.1", "modbus://127.0.0.1:99999", "modbus://127.0.0.1:502?timeout_ms=1",
+                                "modbus://127.0.0.1:502?colour=red"}) {
+        auto r = parseModbusUri(u);
+        ASSERT_FALSE(r.ok()) << u;
+        EXPECT_EQ(r.error().code, ErrorCode::BadInput);
+        EXPECT_NE(r.error().detail.find(u), std::string::npos);
+    }
+    auto ok = parseModbusUri("modbus://127.0.0.1:1502?timeout_ms=250");
+    ASSERT_TRUE(ok.ok());
+    EXPECT_EQ(ok->port, 1502);
+    EXPECT_EQ(ok->timeoutMs, 250);
+    EXPECT_EQ(modbusExceptionText(3).substr(0, 34), "exception 3 ILLEGAL DATA VALUE: va");
+}
