@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// axistune-cli notch: resonances of a measured velocity-loop FRF, a notch per resonance within the
+// execution rate's limits and the free drive slots, predicted FRF and margins (docs/notch.md).
+#include "app/cli/CliCommand.h"
+#include "core/io/FrfCsv.h"
+#include "core/tuning/Notch.h"
+#include "core/tuning/Resonance.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+namespace axistune::cli {
+
+namespace {
+
+struct NotchCliOptions {
+    std::string frfPath;
+    std::string existingPath;
+    std::string loop = "complementary";
+    std::string outFrf;
+    int maxNotches = -1;  ///< -1: all free slots
+    tuning::NotchOptions notch;
+    tuning::ResonanceOptions res;
+};
+
+nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+Result<std::vector<dsp::NotchSpec>> readExisting(const std::string& path)
+{
+    std::ifstream f(path);
+    if (!f)
+        return makeError(ErrorCode::NotFound, path + ": cannot open");
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(f);
+    } catch (const nlohmann::json::parse_error& e) {
+        return makeError(ErrorCode::BadInput, path + ": not valid JSON (" + e.what() + ")");
+    }
+    if (!j.is_array())
+        return makeError(ErrorCode::BadInput, path + ": expected a JSON list of {center_Hz, width_Hz, depth}");
+    std::vector<dsp::NotchSpec> out;
+    for (std::size_t k = 0; k < j.size(); ++k) {
+        const auto& e = j[k];
+        const std::string where = path + ": element " + std::to_string(k);
+        if (!e.is_object())
+            return makeError(ErrorCode::BadInput, where + ": expected an object");
+        dsp::NotchSpec n;
+        for (const auto& [key, dst] : {std::pair<const char*, double*>{"center_Hz", &n.centerHz},
+                                       {"width_Hz", &n.widthHz}, {"depth", &n.depth}}) {
+            if (!e.contains(key))
+                return makeError(ErrorCode::BadInput, where + ": missing field '" + key + "'");
+            if (!e[key].is_number())
+                return makeError(ErrorCode::BadInput, where + ", field '" + key + "': not a number");
+            *dst = e[key].get<double>();
+        }
+        out.push_back(n);
+    }
+    return out;
+}
+
+nlohmann::json marginsJson(const dsp::LoopMargins& m)
+{
+    return {{"gain_margin_dB", finiteOrNull(m.gainMarginDb)},
+            {"gain_margin_Hz", std::isfinite(m.gainMarginDb) ? nlohmann::json(m.gainMarginFreqHz) : nlohmann::json(nullptr)},
+            {"phase_margin_deg", finiteOrNull(m.phaseMarginDeg)},
+            {"phase_margin_Hz", std::isfinite(m.phaseMarginDeg) ? nlohmann::json(m.phaseMarginFreqHz) : nlohmann::json(nullptr)},
+            {"peak_sensitivity_dB", finiteOrNull(m.peakSensitivityDb)},
+            {"peak_sensitivity_Hz", m.peakSensitivityFreqHz}};
+}
+
+int runNotch(NotchCliOptions o)
+{
+    const std::string cmd = "notch";
+    tuning::LoopForm form;
+    if (o.loop == "open")
+        form.open = true;
+    else if (o.loop == "complementary")
+        form.closed = dsp::LoopMeasurement::Complementary;
+    else if (o.loop == "neg-complementary")
+        form.closed = dsp::LoopMeasurement::NegComplementary;
+    else if (o.loop == "sensitivity")
+        form.closed = dsp::LoopMeasurement::Sensitivity;
+    else
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--loop must be open, complementary, neg-complementary or "
+                                                               "sensitivity (got '" + o.loop + "')"));
+    if (!(o.notch.execRateHz > 0.0) || !std::isfinite(o.notch.execRateHz))
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--exec-rate-hz must be > 0"));
+    if (o.maxNotches < -1)
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--max must be >= 0"));
+    o.notch.maxNotches = o.maxNotches < 0 ? o.notch.slotCount : o.maxNotches;
+
+    std::vector<dsp::NotchSpec> existing;
+    if (!o.existingPath.empty()) {
+        auto e = readExisting(o.existingPath);
+        if (!e)
+            return reportError(cmd, e.error());
+        existing = *e;
+        for (std::size_t k = 0; k < existing.size(); ++k)
+            if (auto st = tuning::checkExistingNotch(existing[k], o.notch.execRateHz,
+                                                     o.existingPath + ": element " + std::to_string(k));
+                !st)
+                return reportError(cmd, st.error());
+    }
+    auto frf = io::readFrfCsvFile(o.frfPath);
+    if (!frf)
+        return reportError(cmd, frf.error());
+    const auto openLoop = tuning::openLoopOf(*frf, form);
+    auto res = tuning::findResonances(openLoop, o.res);
+    if (!res)
+        return reportError(cmd, Error{res.error().code, o.frfPath + ": " + res.error().detail});
+    auto proposal = tuning::proposeNotches(*res, existing, o.notch);
+    if (!proposal)
+        return reportError(cmd, proposal.error());
+    std::vector<dsp::NotchSpec> added;
+    for (const auto& n : proposal->notches)
+        added.push_back(n.spec);
+    auto pred = tuning::predictWithNotches(*frf, form, added, o.notch.execRateHz);
+    if (!pred)
+        return reportError(cmd, pred.error());
+    if (!o.outFrf.empty()) {
+        auto out = pred->measuredAfter;
+        out.metadata["predicted_with_notches"] = std::to_string(added.size());
+        if (auto st = io::writeFrfCsvFile(o.outFrf, out); !st)
+            return reportError(cmd, st.error());
+    }
+
+    nlohmann::json j;
+    j["frf"] = o.frfPath;
+    j["loop"] = o.loop;
+    j["exec_rate_Hz"] = o.notch.execRateHz;
+    j["nyquist_Hz"] = 0.5 * o.notch.execRateHz;
+    j["slots_total"] = o.notch.slotCount;
+    j["slots_free"] = proposal->slotsFree;
+    j["target_open_loop_dB"] = o.notch.targetOpenLoopDb;
+    j["resonances"] = nlohmann::json::array();
+    for (const auto& r : *res)
+        j["resonances"].push_back({{"f_Hz", r.freqHz},
+                                   {"peak_dB", r.peakDb},
+                                   {"width_Hz", r.widthHz},
+                                   {"open_loop_dB", r.levelDb},
+                                   {"noise_dB", r.noiseDb},
+                                   {"width_one_sided", r.widthOneSided}});
+    j["existing"] = nlohmann::json::array();
+    for (std::size_t k = 0; k < existing.size(); ++k)
+        j["existing"].push_back({{"slot", k + 1},
+                                 {"center_Hz", existing[k].centerHz},
+                                 {"width_Hz", existing[k].widthHz},
+                                 {"depth", existing[k].depth}});
+    j["notches"] = nlohmann::json::array();
+    for (const auto& n : proposal->notches)
+        j["notches"].push_back({{"slot", n.slot},
+                                {"center_Hz", n.spec.centerHz},
+                                {"width_Hz", n.spec.widthHz},
+                                {"depth", n.spec.depth},
+                                {"digital_width_Hz", n.digitalWidthHz},
+                                {"parameters", {{"filter.notch" + std::to_string(n.slot) + ".center", n.spec.centerHz},
+                                                {"filter.notch" + std::to_string(n.slot) + ".width", n.spec.widthHz},
+                                                {"filter.notch" + std::to_string(n.slot) + ".depth", n.spec.depth}}}});
+    j["skipped"] = nlohmann::json::array();
+    for (const auto& s : proposal->skipped)
+        j["skipped"].push_back({{"f_Hz", s.freqHz}, {"reason", s.reason}});
+    j["margins_before"] = marginsJson(pred->before);
+    j["margins_after"] = marginsJson(pred->after);
+    if (!o.outFrf.empty())
+        j["predicted_frf"] = o.outFrf;
+    std::cout << j.dump(2) << "\n";
+    return 0;
+}
+
+const CliRegistrar kRegistrar{CliCommand{
+    "notch",
+    "Resonances of a velocity-loop FRF, proposed notch filters, predicted FRF and margins before/after",
+    [](CLI::App& sub) -> std::function<int()> {
+        auto o = std::make_shared<NotchCliOptions>();
+        sub.add_option("--frf", o->frfPath, "measured FRF CSV (f_Hz,re,im,... or f_Hz,mag_dB,phase_deg,...)")->required();
+        sub.add_option("--exec-rate-hz", o->notch.execRateHz, "rate the notches run at (current loop), default 16000");
+        sub.add_option("--existing", o->existingPath, "JSON list of existing notches {center_Hz, width_Hz, depth}");
+        sub.add_option("--max", o->maxNotches, "propose at most N notches (default: all free slots)");
+        sub.add_option("--slots", o->notch.slotCount, "notch slots of the drive (default 4)");
+        sub.add_option("--target-db", o->notch.targetOpenLoopDb, "open-loop gain wanted at a resonance [dB], default -20");
+        sub.add_option("--loop", o->loop, "what the FRF is: complementary (T = L/(1+L), default), neg-complementary, "
+                                          "sensitivity or open");
+        sub.add_option("--min-height-db", o->res.minHeightDb, "smallest peak height above the baseline [dB], default 6");
+        sub.add_option("--min-coherence", o->res.minCoherence, "ignore points with a lower coherence, default 0.5");
+        sub.add_option("--fmin", o->res.fminHz, "search resonances above this frequency [Hz]");
+        sub.add_option("--fmax", o->res.fmaxHz, "search resonances below this frequency [Hz]");
+        sub.add_option("--out-frf", o->outFrf, "write the predicted FRF (measured form, with the notches) to this CSV");
+        return [o] { return runNotch(*o); };
+    }}};
+
+}  // namespace
+
+}  // namespace axistune::cli
