@@ -1,0 +1,311 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// End to end over a real loopback socket: the axistune-simdrive binary on a free port, read and
+// written by mbpoll (an independent Modbus client from Debian) and by axistune-cli params; the
+// server killed in the middle of a test; injected faults.
+#include "tests/app/cli/CliRunner.h"
+
+#include "core/device/ModbusDrive.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+using namespace axistune;
+using namespace axistune::testing;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// axistune-simdrive in a child process on a free loopback port; stopped with SIGTERM at the end.
+class SimDrive {
+public:
+    explicit SimDrive(const std::string& args)
+    {
+        m_dir = makeTempDir("simdrive");
+        m_errPath = (m_dir / "stderr.txt").string();
+        int fds[2];
+        if (pipe(fds) != 0)
+            return;
+        m_pid = fork();
+        if (m_pid == 0) {
+            dup2(fds[1], 1);
+            close(fds[0]);
+            const std::string cmd = std::string("exec ") + AXISTUNE_SIMDRIVE + " --port 0 " + args + " 2>" + m_errPath;
+            execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        close(fds[1]);
+        m_out = fds[0];
+        // First stdout line: "axistune-simdrive listening on 127.0.0.1:PORT"; bounded to 10 s.
+        std::string line;
+        for (int i = 0; i < 100 && line.find('\n') == std::string::npos; ++i) {
+            pollfd p{m_out, POLLIN, 0};
+            if (poll(&p, 1, 100) > 0) {
+                char buf[256];
+                const auto n = read(m_out, buf, sizeof buf);
+                if (n <= 0)
+                    break;
+                line.append(buf, static_cast<std::size_t>(n));
+            }
+        }
+        const auto colon = line.rfind(':');
+        if (colon != std::string::npos)
+            m_port = std::atoi(line.c_str() + colon + 1);
+    }
+    ~SimDrive()
+    {
+        stop(SIGTERM);
+        if (m_out >= 0)
+            close(m_out);
+        std::filesystem::remove_all(m_dir);
+    }
+    /// Sends the signal and waits (at most 5 s) for the process; returns its exit status or -1.
+    int stop(int sig)
+    {
+        if (m_pid <= 0)
+            return -1;
+        kill(m_pid, sig);
+        int status = 0;
+        for (int i = 0; i < 500; ++i) {
+            if (waitpid(m_pid, &status, WNOHANG) == m_pid) {
+                m_pid = -1;
+                return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        kill(m_pid, SIGKILL);
+        waitpid(m_pid, &status, 0);
+        m_pid = -1;
+        return -1;
+    }
+    int port() const { return m_port; }
+    std::string uri(const std::string& query = "") const
+    {
+        return "modbus://127.0.0.1:" + std::to_string(m_port) + (query.empty() ? "" : "?" + query);
+    }
+    std::string log() const { return readFileText(m_errPath); }
+
+private:
+    std::filesystem::path m_dir;
+    std::string m_errPath;
+    pid_t m_pid = -1;
+    int m_out = -1;
+    int m_port = 0;
+};
+
+nlohmann::json registerMap()
+{
+    return nlohmann::json::parse(readFileText(std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/drives/axistune-sim.json"));
+}
+
+int parameterAddress(const std::string& key)
+{
+    const auto map = registerMap();
+    for (const auto& p : map["parameters"]) {
+        if (p["key"] == key)
+            return p["address"].get<int>();
+    }
+    return -1;
+}
+
+/// Runs mbpoll once (1 s timeout) and returns its stdout and stderr.
+std::string mbpoll(int port, const std::string& args)
+{
+    const std::string cmd = "mbpoll -m tcp -0 -1 -o 1 -p " + std::to_string(port) + " " + args + " 2>&1";
+    std::string out;
+    if (FILE* f = popen(cmd.c_str(), "r")) {
+        char buf[512];
+        while (fgets(buf, sizeof buf, f))
+            out += buf;
+        pclose(f);
+    }
+    return out;
+}
+
+/// The value mbpoll printed for reference `address` ("[1020]: \t0.8").
+double mbpollValue(const std::string& out, int address)
+{
+    const std::string tag = "[" + std::to_string(address) + "]:";
+    const auto at = out.find(tag);
+    return at == std::string::npos ? std::nan("") : std::strtod(out.c_str() + at + tag.size(), nullptr);
+}
+
+double paramsValue(const std::string& uri, const std::string& key)
+{
+    auto r = runCli("params --connect '" + uri + "' --axis X --get " + key);
+    if (r.exitCode != 0)
+        return std::nan("");
+    return nlohmann::json::parse(r.out)["parameters"][key].get<double>();
+}
+
+device::TestRequest step(double amplitude, double duration, int divider)
+{
+    device::TestRequest r;
+    r.axis = "X";
+    r.type = device::TestType::Step;
+    r.amplitude = amplitude;
+    r.durationS = duration;
+    r.traceDivider = divider;
+    return r;
+}
+
+}  // namespace
+
+TEST(ModbusCli, MbpollReadsIdentityAndParametersAtTheMapAddressesAndSeesParamsWrites)
+{
+    SimDrive srv("--preset vmc");
+    ASSERT_GT(srv.port(), 0) << srv.log();
+    const auto map = registerMap();
+    const int magicAddr = map["fields"]["identity.magic"]["address"];
+    const int axesAddr = map["fields"]["identity.axis_count"]["address"];
+    auto out = mbpoll(srv.port(), "-a 1 -r " + std::to_string(magicAddr) + " -c " + std::to_string(axesAddr - magicAddr + 1) + " 127.0.0.1");
+    EXPECT_EQ(mbpollValue(out, magicAddr), map["magic"].get<double>()) << out;
+    EXPECT_EQ(mbpollValue(out, axesAddr), 3.0) << out;  // vmc: X, Y, Z
+    const int kp = parameterAddress("velocity.kp");
+    ASSERT_GT(kp, 0);
+    const std::string floatArgs = "-t 4:float -B -a 1 -r " + std::to_string(kp) + " 127.0.0.1";
+    out = mbpoll(srv.port(), floatArgs);
+    EXPECT_EQ(mbpollValue(out, kp), paramsValue(srv.uri(), "velocity.kp")) << out;
+    // mbpoll writes, params reads.
+    out = mbpoll(srv.port(), floatArgs + " 0.75");
+    EXPECT_NE(out.find("Written 1 references"), std::string::npos) << out;
+    EXPECT_EQ(paramsValue(srv.uri(), "velocity.kp"), 0.75);
+    // params writes (with read-back), mbpoll reads.
+    auto r = runCli("params --connect " + srv.uri() + " --axis X --set velocity.kp=0.625");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["written"][0], "velocity.kp");
+    EXPECT_EQ(mbpollValue(mbpoll(srv.port(), floatArgs), kp), 0.625);
+    EXPECT_NE(srv.log().find("connection 1 from 127.0.0.1"), std::string::npos) << srv.log();
+    EXPECT_EQ(srv.stop(SIGTERM), 0);
+    EXPECT_NE(srv.log().find("shut down cleanly"), std::string::npos) << srv.log();
+}
+
+TEST(ModbusCli, WriteOutsideLimitsIsRefusedByTheClientAndByTheDrive)
+{
+    SimDrive srv("--preset vmc");
+    ASSERT_GT(srv.port(), 0);
+    const double before = paramsValue(srv.uri(), "velocity.kp");
+    auto r = runCli("params --connect " + srv.uri() + " --axis X --set velocity.kp=200000");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("outside its limits"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("not sent"), std::string::npos) << r.err;
+    EXPECT_EQ(srv.log().find("refused"), std::string::npos) << srv.log();  // the drive never saw it
+    const int kp = parameterAddress("velocity.kp");
+    auto out = mbpoll(srv.port(), "-t 4:float -B -a 1 -r " + std::to_string(kp) + " 127.0.0.1 200000");
+    EXPECT_NE(out.find("Illegal data value"), std::string::npos) << out;
+    EXPECT_NE(srv.log().find("refused (exception 3)"), std::string::npos) << srv.log();
+    EXPECT_EQ(paramsValue(srv.uri(), "velocity.kp"), before);
+}
+
+TEST(ModbusCli, EachInjectedFaultHasItsOwnMessageAndExitCode)
+{
+    auto timed = [](const std::string& args, double& seconds) {
+        const auto t0 = Clock::now();
+        auto r = runCli(args);
+        seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        return r;
+    };
+    double s = 0;
+    {
+        auto r = timed("params --connect modbus://127.0.0.1:1 --axis X", s);  // nobody listens on port 1
+        EXPECT_EQ(r.exitCode, 3);
+        EXPECT_NE(r.err.find("cannot connect"), std::string::npos) << r.err;
+    }
+    {
+        auto r = runCli("params --connect modbus://127.0.0.1:notaport --axis X");
+        EXPECT_EQ(r.exitCode, 2);
+        EXPECT_NE(r.err.find("port must be a number"), std::string::npos) << r.err;
+    }
+    {
+        SimDrive srv("--fault illegal-address");
+        auto r = timed("params --connect " + srv.uri() + " --axis X", s);
+        EXPECT_EQ(r.exitCode, 3);
+        EXPECT_NE(r.err.find("ILLEGAL DATA ADDRESS"), std::string::npos) << r.err;
+        EXPECT_NE(srv.log().find("fault illegal-address"), std::string::npos);
+    }
+    {
+        SimDrive srv("--fault delay:1500");
+        auto r = timed("params --connect '" + srv.uri("timeout_ms=300") + "' --axis X", s);
+        EXPECT_EQ(r.exitCode, 3);
+        EXPECT_NE(r.err.find("no answer within 300 ms"), std::string::npos) << r.err;
+        EXPECT_LT(s, 8.0);
+    }
+    {
+        SimDrive srv("--fault drop-after:1");
+        auto r = timed("params --connect " + srv.uri() + " --axis X", s);
+        EXPECT_EQ(r.exitCode, 3);
+        EXPECT_NE(r.err.find("connection lost"), std::string::npos) << r.err;
+        EXPECT_LT(s, 5.0);
+        EXPECT_NE(srv.log().find("fault drop-after:1"), std::string::npos);
+    }
+    {
+        SimDrive srv("--fault drive-fault:0.05");
+        auto d = device::connectAny({srv.uri(), 1});
+        ASSERT_TRUE(d.ok()) << d.error().detail;
+        ASSERT_TRUE((*d)->startTest(step(5.0, 1.0, 0)).ok());
+        Result<device::TestStatus> st = device::TestStatus{device::TestState::Running};
+        for (int i = 0; i < 2000 && st.ok() && st->state == device::TestState::Running; ++i)
+            st = (*d)->pollTest();
+        ASSERT_TRUE(st.ok());
+        EXPECT_EQ(st->state, device::TestState::Faulted);
+        EXPECT_NE(st->detail.find("drive_fault"), std::string::npos) << st->detail;
+        EXPECT_NE(srv.log().find("fault drive_fault"), std::string::npos);
+    }
+    auto bad = runCli("params --connect sim:vmc --axis X --set velocity.kp");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("KEY=VALUE"), std::string::npos);
+}
+
+TEST(ModbusCli, ServerKilledMidTestIsALostConnectionAndTheRestartedDriveHasThePreTestParameters)
+{
+    const auto dir = makeTempDir("modbus-state");
+    const std::string state = (dir / "state.json").string();
+    const std::string args = "--preset vmc --pace 1 --state " + state;
+    {
+        SimDrive srv(args);
+        ASSERT_GT(srv.port(), 0) << srv.log();
+        ASSERT_EQ(runCli("params --connect " + srv.uri() + " --axis X --set velocity.kp=0.7").exitCode, 0);
+        auto d = device::connectAny({srv.uri("timeout_ms=500"), 1});
+        ASSERT_TRUE(d.ok()) << d.error().detail;
+        ASSERT_TRUE((*d)->startTest(step(5.0, 10.0, 4)).ok());
+        for (int i = 0; i < 5; ++i)
+            ASSERT_TRUE((*d)->pollTest().ok());
+        srv.stop(SIGKILL);
+        const auto t0 = Clock::now();
+        auto st = (*d)->pollTest();
+        const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+        ASSERT_FALSE(st.ok());
+        EXPECT_EQ(exitCodeFor(st.error().code), 3);
+        EXPECT_NE(st.error().detail.find("connection lost"), std::string::npos) << st.error().detail;
+        EXPECT_NE(st.error().detail.find(srv.uri()), std::string::npos) << st.error().detail;
+        EXPECT_LT(s, 2.0);  // within the 500 ms timeout plus bounded reconnect attempts
+    }
+    SimDrive again(args);
+    ASSERT_GT(again.port(), 0) << again.log();
+    EXPECT_EQ(paramsValue(again.uri(), "velocity.kp"), 0.7);  // params prints the float32 as its shortest text
+    EXPECT_EQ(paramsValue(again.uri(), "trace.divider"), 1.0);  // not the test's 4
+    std::filesystem::remove_all(dir);
+}
+
+TEST(ModbusCli, SilencedClientLetsTheDriveStopTheTestAndRestoreParameters)
+{
+    SimDrive srv("--preset vmc --pace 1 --watchdog 0.3");
+    ASSERT_GT(srv.port(), 0);
+    {
+        auto d = device::connectAny({srv.uri(), 1});
+        ASSERT_TRUE(d.ok()) << d.error().detail;
+        ASSERT_TRUE((*d)->startTest(step(5.0, 10.0, 4)).ok());
+        EXPECT_EQ(paramsValue(srv.uri(), "trace.divider"), 4.0);  // the test's setting while it runs
+        std::this_thread::sleep_for(std::chrono::milliseconds(1000));  // no pollTest: no heartbeat
+        EXPECT_NE(srv.log().find("fault heartbeat_lost"), std::string::npos) << srv.log();
+    }
+    EXPECT_EQ(paramsValue(srv.uri(), "trace.divider"), 1.0);
+}
