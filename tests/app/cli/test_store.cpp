@@ -66,7 +66,7 @@ TEST(CliStore, JsonAndCsvRoundTripThroughImport)
         const auto db2 = (dir / (f + ".db")).string();
         auto r = runCli("import --db " + db2 + " --in " + first);
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        EXPECT_EQ(nlohmann::json::parse(r.out)["parameters"], 3 * 31) << f;  // the sample has 31 keys per axis
+        EXPECT_EQ(nlohmann::json::parse(r.out)["parameters"], 3 * 32) << f;  // the sample has 32 keys per axis
         r = runCli("export --db " + db2 + " --machine vmc --format " + f);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(r.out, readFileText(first)) << f;

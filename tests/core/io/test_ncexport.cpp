@@ -47,18 +47,18 @@ TEST(NcExport, EveryFormatMatchesTheCommittedFile)
 TEST(NcExport, HandCheckedValues)
 {
     // position.kp = 30 1/s: FANUC 1825 in 0.01/s = 3000; Siemens/Heidenhain kv in (m/min)/mm =
-    // 30 / (1000/60) = 1.8; notch X at 800 Hz, depth 0.1 = 10 %.
+    // 30 / (1000/60) = 1.8; notches at 800 Hz, depth 0.1 = 10 %.
     const auto fanuc = exportFamily("fanuc");
     EXPECT_NE(fanuc.find("\nN01825A1P3000A2P3000A3P3000\n"), std::string::npos);
-    EXPECT_NE(fanuc.find("\nN02113A1P800A2P750A3P650\n"), std::string::npos);
+    EXPECT_NE(fanuc.find("\nN02113A1P800A2P800A3P800\n"), std::string::npos);
     EXPECT_NE(fanuc.find("\nN02359A1P10A2P10A3P10\n"), std::string::npos);
     EXPECT_EQ(fanuc.rfind("%\n", 0), 0u);
     const auto siemens = exportFamily("siemens");
     EXPECT_NE(siemens.find("\n$MA_POSCTRL_GAIN[0,AX2]=1.8000\n"), std::string::npos);
-    EXPECT_NE(siemens.find("\nDO3:p1460[0]=2.4500\n"), std::string::npos);
+    EXPECT_NE(siemens.find("\nDO3:p1460[0]=0.8000\n"  /* velocity.kp 0.8 Nm*s/rad */), std::string::npos);
     const auto heidenhain = exportFamily("heidenhain");
     EXPECT_NE(heidenhain.find("\nMP1810.0:1.800\n"), std::string::npos);
-    EXPECT_NE(heidenhain.find("\nMP2550.2:650\n"), std::string::npos);
+    EXPECT_NE(heidenhain.find("\nMP2550.2:800\n"), std::string::npos);
 }
 
 TEST(NcExport, UnmappedKeysAreListedNotDropped)
@@ -70,7 +70,7 @@ TEST(NcExport, UnmappedKeysAreListedNotDropped)
     EXPECT_EQ(std::find(unmapped.begin(), unmapped.end(), "position.kp"), unmapped.end());
     for (const auto& k : unmapped)
         EXPECT_NE(text.find("UNMAPPED " + k + ": "), std::string::npos) << k;
-    EXPECT_NE(text.find("(UNMAPPED lostmotion.A: X=1.8e-06, Y=4.1e-06, Z=2.5e-06)"), std::string::npos);
+    EXPECT_NE(text.find("(UNMAPPED lostmotion.A: X=1.8e-06, Y=7e-07, Z=1.8e-06)"), std::string::npos);
     // Every parameter of every axis is either mapped or listed.
     auto map = readNcMapFile(kResources + "/nc/fanuc.json");
     ASSERT_TRUE(map.ok());

@@ -41,13 +41,17 @@ TEST(Profile, SampleHasTheVmcAxesAndValues)
     ASSERT_EQ(p->axes.size(), 3u);
     EXPECT_EQ(p->axes[0].name, "X");
     EXPECT_EQ(p->axes[2].name, "Z");
+    // Values of the simulator preset resources/machines/vmc.json, converted to SI.
     const auto& x = p->axes[0].parameters;
-    EXPECT_EQ(x.at("current.kp"), 35.7);
-    EXPECT_EQ(x.at("current.ki"), 1.03e5);
-    EXPECT_EQ(x.at("current.period"), 62.5e-6);
-    EXPECT_EQ(x.at("velocity.period"), 250e-6);
-    EXPECT_EQ(x.at("position.period"), 1e-3);
-    EXPECT_EQ(p->axes[1].parameters.at("lostmotion.A"), 4.10e-6);  // spec lost-motion §4: A_Y = 4.10 um/Nm
+    EXPECT_DOUBLE_EQ(x.at("current.kp"), 35.7);
+    EXPECT_DOUBLE_EQ(x.at("current.ki"), 1.03e5);
+    EXPECT_DOUBLE_EQ(x.at("current.period"), 62.5e-6);
+    EXPECT_DOUBLE_EQ(x.at("velocity.period"), 250e-6);
+    EXPECT_DOUBLE_EQ(x.at("position.period"), 1e-3);
+    EXPECT_DOUBLE_EQ(x.at("position.kp"), 30.0);
+    EXPECT_DOUBLE_EQ(x.at("lostmotion.A"), 1.80e-6);  // spec lost-motion §4.4.1: A_X = 1.80 um/Nm
+    EXPECT_DOUBLE_EQ(p->axes[1].parameters.at("lostmotion.B"), 17e-6);  // 17 um/(Nm m) -> 1/Nm
+    EXPECT_DOUBLE_EQ(p->axes[1].parameters.at("lostmotion.screw_offset"), 0.2);
     EXPECT_TRUE(p->axes[0].models.count("motor"));
 }
 
