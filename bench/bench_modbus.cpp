@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Modbus TCP over loopback: trace readout throughput (float64 samples per second through the paged
+// trace window, function code 23) and a whole step test (start, poll, read the trace) over Modbus
+// versus the embedded simulated drive. The server runs in-process on its own thread.
+#include "core/device/ModbusDrive.h"
+#include "core/device/SimDriveServer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <thread>
+
+using namespace axistune;
+using namespace axistune::device;
+
+namespace {
+
+struct Server {
+    std::unique_ptr<SimDriveServer> server;
+    std::thread thread;
+    Server()
+    {
+        SimDriveServerOptions o;
+        o.preset = "vmc";
+        server = std::move(SimDriveServer::create(o)).value();
+        thread = std::thread([this] { (void)server->serve(); });
+    }
+    ~Server()
+    {
+        server->requestStop();
+        thread.join();
+    }
+    std::string uri() const { return "modbus://127.0.0.1:" + std::to_string(server->port()); }
+};
+
+TestRequest stepRequest(double durationS)
+{
+    TestRequest r;
+    r.axis = "X";
+    r.type = TestType::Step;
+    r.amplitude = 20.0;
+    r.durationS = durationS;
+    return r;
+}
+
+bool runTest(Drive& d, double durationS)
+{
+    if (!d.startTest(stepRequest(durationS)))
+        return false;
+    for (int i = 0; i < 1000000; ++i) {
+        auto s = d.pollTest();
+        if (!s || s->state != TestState::Running)
+            return s && s->state == TestState::Completed;
+    }
+    return false;
+}
+
+void BM_TraceReadout(benchmark::State& state)
+{
+    Server srv;
+    auto d = std::move(connectAny({srv.uri(), 1})).value();
+    const double duration = static_cast<double>(state.range(0)) / 4000.0;  // trace at 4 kHz
+    if (!runTest(*d, duration)) {
+        state.SkipWithError("test failed");
+        return;
+    }
+    std::size_t samples = 0;
+    for (auto _ : state) {
+        auto t = d->readTrace();
+        if (!t) {
+            state.SkipWithError(t.error().detail.c_str());
+            return;
+        }
+        samples = t->size() * t->channels.size();
+        benchmark::DoNotOptimize(t->channels.front().data.data());
+    }
+    state.counters["samples"] = static_cast<double>(samples);
+    state.counters["samples_per_s"] = benchmark::Counter(static_cast<double>(samples) * static_cast<double>(state.iterations()),
+                                                         benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_TraceReadout)->Arg(400)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_StepTest(benchmark::State& state, bool modbus)
+{
+    std::unique_ptr<Server> srv;
+    if (modbus)
+        srv = std::make_unique<Server>();
+    auto d = std::move(connectAny({modbus ? srv->uri() : "sim:vmc", 1})).value();
+    for (auto _ : state) {
+        if (!runTest(*d, 1.0)) {
+            state.SkipWithError("test failed");
+            return;
+        }
+        auto t = d->readTrace();
+        benchmark::DoNotOptimize(t.ok());
+    }
+}
+BENCHMARK_CAPTURE(BM_StepTest, embedded, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_StepTest, modbus, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
