@@ -185,6 +185,7 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--loop", o->loop, "what the FRF is: complementary (T = L/(1+L), default), neg-complementary, "
                                           "sensitivity or open");
         sub.add_option("--min-height-db", o->res.minHeightDb, "smallest peak height above the baseline [dB], default 6");
+        sub.add_option("--noise-factor", o->res.noiseFactor, "peak height must exceed this many local noise scales, default 4");
         sub.add_option("--min-coherence", o->res.minCoherence, "ignore points with a lower coherence, default 0.5");
         sub.add_option("--fmin", o->res.fminHz, "search resonances above this frequency [Hz]");
         sub.add_option("--fmax", o->res.fmaxHz, "search resonances below this frequency [Hz]");

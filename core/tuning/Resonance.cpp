@@ -78,9 +78,18 @@ Line robustLine(const std::vector<Point>& pts, std::size_t lo, std::size_t hi, d
         return line;
     std::vector<double> rw(n, 1.0);
     std::vector<double> absRes(n);
-    double a = 0.0, b = 0.0;
-    if (!weightedLine(pts, lo, hi, rw, x0, a, b))
-        return line;
+    // Start from medians of the two halves (breakdown 50 %), so that a few wild points (near-zero
+    // magnitudes far below the trend) cannot pull the starting line where the bisquare keeps it.
+    std::vector<double> yl, yr, xl, xr;
+    for (std::size_t k = lo; k < hi; ++k) {
+        auto& ys = k - lo < n / 2 ? yl : yr;
+        auto& xs = k - lo < n / 2 ? xl : xr;
+        ys.push_back(pts[k].y);
+        xs.push_back(pts[k].x);
+    }
+    const double mxl = median(xl), mxr = median(xr), myl = median(yl), myr = median(yr);
+    double b = mxr > mxl ? (myr - myl) / (mxr - mxl) : 0.0;
+    double a = 0.5 * (myl + myr) + b * (x0 - 0.5 * (mxl + mxr));
     double scale = 0.0;
     for (int it = 0; it < 30; ++it) {
         for (std::size_t k = 0; k < n; ++k)

@@ -30,7 +30,7 @@ namespace axistune::tuning {
 struct ResonanceOptions {
     double halfWindowOctaves = 0.5;  ///< baseline window: f·2^(±halfWindowOctaves)
     double minHeightDb = 6.0;        ///< smallest height above the baseline
-    double noiseFactor = 5.0;        ///< height must also exceed this many local noise scales
+    double noiseFactor = 4.0;        ///< height must also exceed this many local noise scales
     double minCoherence = 0.5;       ///< points below are not used (where coherence is defined)
     double fminHz = 0.0;             ///< search band
     double fmaxHz = 1e300;
