@@ -148,6 +148,23 @@ double crossing(const std::vector<Point>& pts, const Line& base, std::size_t k, 
     }
 }
 
+/// Vertex of the parabola through the excess over `base` at k and its neighbours, when they are
+/// contiguous usable points and the parabola opens downwards; xp/ep unchanged otherwise.
+void parabolicPeak(const std::vector<Point>& pts, const Line& base, std::size_t k, double& xp, double& ep)
+{
+    if (k == 0 || k + 1 >= pts.size() || pts[k].index - pts[k - 1].index != 1 || pts[k + 1].index - pts[k].index != 1)
+        return;
+    const double x0 = pts[k - 1].x, x1 = pts[k].x, x2 = pts[k + 1].x;
+    const double e0 = pts[k - 1].y - base.at(x0), e1 = pts[k].y - base.at(x1), e2 = pts[k + 1].y - base.at(x2);
+    const double d01 = (e1 - e0) / (x1 - x0), d12 = (e2 - e1) / (x2 - x1);
+    const double curv = (d12 - d01) / (x2 - x0);  // Newton form: e0 + d01(x−x0) + curv(x−x0)(x−x1)
+    if (!(curv < 0.0))
+        return;
+    const double xc = std::clamp(0.5 * (x0 + x1) - d01 / (2.0 * curv), x0, x2);
+    xp = xc;
+    ep = e0 + d01 * (xc - x0) + curv * (xc - x0) * (xc - x1);
+}
+
 }  // namespace
 
 Result<std::vector<Resonance>> findResonances(const dsp::FrequencyResponse& frf, const ResonanceOptions& o)
@@ -213,20 +230,8 @@ Result<std::vector<Resonance>> findResonances(const dsp::FrequencyResponse& frf,
     for (const auto& c : cands) {
         const std::size_t k = c.k;
         const Line& l = base[k];
-        // Parabolic vertex through the neighbours when they are contiguous usable points.
         double xp = pts[k].x, ep = c.e;
-        if (k > 0 && k + 1 < pts.size() && pts[k].index - pts[k - 1].index == 1 && pts[k + 1].index - pts[k].index == 1) {
-            const double x0 = pts[k - 1].x, x1 = pts[k].x, x2 = pts[k + 1].x;
-            const double e0 = excess(k - 1, l), e1 = c.e, e2 = excess(k + 1, l);
-            const double d01 = (e1 - e0) / (x1 - x0), d12 = (e2 - e1) / (x2 - x1);
-            const double curv = (d12 - d01) / (x2 - x0);  // half the second derivative
-            if (curv < 0.0) {
-                const double xv = 0.5 * (x0 + x1) - d01 / (2.0 * curv);  // vertex of the interpolating parabola
-                const double xc = std::clamp(xv, x0, x2);
-                xp = xc;
-                ep = e0 + d01 * (xc - x0) + curv * (xc - x0) * (xc - x1);
-            }
-        }
+        parabolicPeak(pts, l, k, xp, ep);
         const double level = ep - 3.0;
         const double xl = crossing(pts, l, k, -1, level, halfDec);
         const double xr = crossing(pts, l, k, +1, level, halfDec);
