@@ -4,11 +4,10 @@
 #include "core/io/BallBarCsv.h"
 #include "core/tuning/BallBarDiagnostics.h"
 
-#include <nlohmann/json.hpp>
-
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 namespace axistune::cli {
@@ -28,7 +27,10 @@ nlohmann::json opt(const std::optional<double>& v, double scale)
     return v ? nlohmann::json(*v * scale) : nlohmann::json(nullptr);
 }
 
-const char* axisKey(int axis) { return axis == 0 ? "x" : "y"; }
+const char* axisKey(int axis)
+{
+    return axis == 0 ? "x" : "y";
+}
 
 nlohmann::json runJson(const tuning::RunDiagnostics& r)
 {
@@ -65,8 +67,8 @@ nlohmann::json reportJson(const tuning::BallBarReport& rep)
 {
     nlohmann::json j;
     j["circularity_um"] = opt(rep.circularityM, 1e6);
-    j["center_um"] = rep.centerXM ? nlohmann::json{{"x", *rep.centerXM * 1e6}, {"y", *rep.centerYM * 1e6}}
-                                  : nlohmann::json(nullptr);
+    j["center_um"] =
+        rep.centerXM ? nlohmann::json{{"x", *rep.centerXM * 1e6}, {"y", *rep.centerYM * 1e6}} : nlohmann::json(nullptr);
     j["radius_deviation_um"] = opt(rep.radiusDeviationM, 1e6);
     j["backlash_x_um"] = opt(rep.backlashM[0], 1e6);
     j["backlash_y_um"] = opt(rep.backlashM[1], 1e6);
@@ -162,5 +164,5 @@ const CliRegistrar kRegistrar{CliCommand{
         return [o] { return runBallBar(*o); };
     }}};
 
-}  // namespace
-}  // namespace axistune::cli
+} // namespace
+} // namespace axistune::cli

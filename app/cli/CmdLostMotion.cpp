@@ -5,12 +5,11 @@
 #include "core/io/BallBarCsv.h"
 #include "core/tuning/LostMotion.h"
 
-#include <nlohmann/json.hpp>
-
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 namespace axistune::cli {
@@ -55,6 +54,45 @@ nlohmann::json optJson(const std::optional<double>& v, double scale = 1.0)
     return v ? nlohmann::json(*v * scale) : nlohmann::json(nullptr);
 }
 
+/// A, B, the points with residuals, the guards and the optional material-model comparison.
+nlohmann::json fitJson(const LostMotionCliOptions& o, const tuning::LostMotionFit& fitv,
+                       const std::vector<tuning::LostMotionPoint>& points)
+{
+    const auto* fit = &fitv;
+    nlohmann::json j;
+    j["axis"] = o.axis;
+    j["method"] = tuning::lostMotionMethodName(fit->method);
+    j["A_m_per_Nm"] = fit->aMPerNm;
+    j["B_per_Nm"] = fit->bPerNm;
+    j["A_um_per_Nm"] = fit->aMPerNm * 1e6;
+    j["B_um_per_Nm_m"] = fit->bPerNm * 1e6;
+    j["A_stderr_m_per_Nm"] = optJson(fit->aStdErr);
+    j["B_stderr_per_Nm"] = optJson(fit->bStdErr);
+    if (fit->printedA)
+        j["printed_two_point"] = {{"A_m_per_Nm", *fit->printedA}, {"B_per_Nm", *fit->printedB}};
+    nlohmann::json pts = nlohmann::json::array();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto& p = points[i];
+        pts.push_back({{"x_m", p.xM},
+                       {"dT_Nm", p.dTNm},
+                       {"dx_m", p.dxM},
+                       {"residual_m", fit->residualsM[i]},
+                       {"file", p.source},
+                       {"angle_deg", p.angleRad / kDeg}});
+    }
+    j["points"] = pts;
+    j["residual_rms_m"] = fit->residualRmsM;
+    if (o.leadMm && o.rootDiameterMm) {
+        // Spec §4.4 guard: the measured compliance is expected ~10× the textbook torsion of the screw.
+        const double slope =
+            tuning::materialComplianceSlope(*o.leadMm * 1e-3, *o.rootDiameterMm * 1e-3, o.shearModulusGpa * 1e9);
+        j["material_B_per_Nm"] = slope;
+        j["material_ratio_m"] = fit->bPerNm != 0.0 ? nlohmann::json(slope / fit->bPerNm) : nlohmann::json(nullptr);
+    }
+    j["warnings"] = fit->warnings;
+    return j;
+}
+
 int runLostMotion(const LostMotionCliOptions& o)
 {
     const char* cmd = "lost-motion";
@@ -87,33 +125,7 @@ int runLostMotion(const LostMotionCliOptions& o)
     if (o.conventionalUm)
         xbl = *o.conventionalUm * 1e-6;
 
-    nlohmann::json j;
-    j["axis"] = o.axis;
-    j["method"] = tuning::lostMotionMethodName(fit->method);
-    j["A_m_per_Nm"] = fit->aMPerNm;
-    j["B_per_Nm"] = fit->bPerNm;
-    j["A_um_per_Nm"] = fit->aMPerNm * 1e6;
-    j["B_um_per_Nm_m"] = fit->bPerNm * 1e6;
-    j["A_stderr_m_per_Nm"] = optJson(fit->aStdErr);
-    j["B_stderr_per_Nm"] = optJson(fit->bStdErr);
-    if (fit->printedA)
-        j["printed_two_point"] = {{"A_m_per_Nm", *fit->printedA}, {"B_per_Nm", *fit->printedB}};
-    nlohmann::json pts = nlohmann::json::array();
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const auto& p = points[i];
-        pts.push_back({{"x_m", p.xM}, {"dT_Nm", p.dTNm}, {"dx_m", p.dxM}, {"residual_m", fit->residualsM[i]},
-                       {"file", p.source}, {"angle_deg", p.angleRad / kDeg}});
-    }
-    j["points"] = pts;
-    j["residual_rms_m"] = fit->residualRmsM;
-    if (o.leadMm && o.rootDiameterMm) {
-        // Spec §4.4 guard: the measured compliance is expected ~10× the textbook torsion of the screw.
-        const double slope = tuning::materialComplianceSlope(*o.leadMm * 1e-3, *o.rootDiameterMm * 1e-3, o.shearModulusGpa * 1e9);
-        j["material_B_per_Nm"] = slope;
-        j["material_ratio_m"] = fit->bPerNm != 0.0 ? nlohmann::json(slope / fit->bPerNm) : nlohmann::json(nullptr);
-    }
-    j["warnings"] = fit->warnings;
-
+    nlohmann::json j = fitJson(o, *fit, points);
     std::vector<tuning::CompensationPrediction> preds;
     nlohmann::json pj = nlohmann::json::array();
     std::optional<double> worst;
@@ -151,8 +163,7 @@ int runLostMotion(const LostMotionCliOptions& o)
 }
 
 const CliRegistrar kRegistrar{CliCommand{
-    "lost-motion",
-    "Lost-motion A/B of dx = (A + B x) dT from ball-bar traces, residuals and predicted compensation",
+    "lost-motion", "Lost-motion A/B of dx = (A + B x) dT from ball-bar traces, residuals and predicted compensation",
     [](CLI::App& sub) -> std::function<int()> {
         auto o = std::make_shared<LostMotionCliOptions>();
         sub.add_option("--ballbar", o->paths,
@@ -169,13 +180,16 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--conventional-backlash-um", o->conventionalUm,
                        "backlash x_bl of the conventional step compensation for the prediction (default: the mean "
                        "measured lost motion)");
-        sub.add_option("--lead-mm", o->leadMm, "screw lead [mm/rev], with --root-diameter-mm: material-model comparison")
+        sub.add_option("--lead-mm", o->leadMm,
+                       "screw lead [mm/rev], with --root-diameter-mm: material-model comparison")
             ->check(CLI::PositiveNumber);
         sub.add_option("--root-diameter-mm", o->rootDiameterMm, "screw root diameter [mm]")->check(CLI::PositiveNumber);
         sub.add_option("--shear-modulus-gpa", o->shearModulusGpa, "screw shear modulus [GPa] (default 79)")
             ->check(CLI::PositiveNumber);
-        sub.add_option("--exclude-deg", o->excludeDeg, "reversal zone half-width (default 4)")->check(CLI::Range(0.2, 30.0));
-        sub.add_option("--window-deg", o->windowDeg, "step-fit window beyond the zone (default 20)")->check(CLI::Range(2.0, 60.0));
+        sub.add_option("--exclude-deg", o->excludeDeg, "reversal zone half-width (default 4)")
+            ->check(CLI::Range(0.2, 30.0));
+        sub.add_option("--window-deg", o->windowDeg, "step-fit window beyond the zone (default 20)")
+            ->check(CLI::Range(2.0, 60.0));
         sub.add_option("--compensated-out", o->compensatedOut,
                        "write measured, proposed and conventional traces here "
                        "(file_index,angle_deg,measured_um,proposed_um,conventional_um)");
@@ -183,5 +197,5 @@ const CliRegistrar kRegistrar{CliCommand{
         return [o] { return runLostMotion(*o); };
     }}};
 
-}  // namespace
-}  // namespace axistune::cli
+} // namespace
+} // namespace axistune::cli

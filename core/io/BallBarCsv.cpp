@@ -54,7 +54,10 @@ struct MetaLine {
     int line = 0;
 };
 
-Error bad(const std::string& what) { return makeError(ErrorCode::BadInput, what); }
+Error bad(const std::string& what)
+{
+    return makeError(ErrorCode::BadInput, what);
+}
 
 /// A required or optional positive, finite number from metadata.
 Result<std::optional<double>> metaNumber(const std::map<std::string, MetaLine>& meta, const std::string& src,
@@ -109,19 +112,21 @@ Status applyMetadata(const std::map<std::string, MetaLine>& meta, const std::str
 
     auto dir = meta.find("direction");
     if (dir == meta.end())
-        return bad(src + ": metadata 'direction' missing (the travel direction, '# direction=ccw' or '# direction=cw')");
+        return bad(src +
+                   ": metadata 'direction' missing (the travel direction, '# direction=ccw' or '# direction=cw')");
     const std::string d = lower(trim(dir->second.value));
     if (d == "ccw")
         t.direction = CircleDirection::Ccw;
     else if (d == "cw")
         t.direction = CircleDirection::Cw;
     else
-        return bad(src + " line " + std::to_string(dir->second.line) + ", metadata 'direction': must be 'ccw' or 'cw' (is '" +
-                   dir->second.value + "')");
+        return bad(src + " line " + std::to_string(dir->second.line) +
+                   ", metadata 'direction': must be 'ccw' or 'cw' (is '" + dir->second.value + "')");
 
     if (auto p = meta.find("plane"); p != meta.end()) {
         std::string plane = trim(p->second.value);
-        std::transform(plane.begin(), plane.end(), plane.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+        std::transform(plane.begin(), plane.end(), plane.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
         static const std::set<std::string> kPlanes{"XY", "YZ", "ZX", "XZ", "YX", "ZY"};
         if (!kPlanes.count(plane))
             return bad(src + " line " + std::to_string(p->second.line) +
@@ -132,8 +137,7 @@ Status applyMetadata(const std::map<std::string, MetaLine>& meta, const std::str
 }
 
 /// Checks samples: count, finiteness and strict monotonicity. `lineOf(i)` names the line of sample i.
-template <typename LineOf>
-Status checkSamples(const BallBarTrace& t, const std::string& src, LineOf lineOf)
+template <typename LineOf> Status checkSamples(const BallBarTrace& t, const std::string& src, LineOf lineOf)
 {
     if (t.size() < kBallBarMinSamples)
         return bad(src + ": has " + std::to_string(t.size()) + " sample" + (t.size() == 1 ? "" : "s") +
@@ -157,7 +161,7 @@ Status checkSamples(const BallBarTrace& t, const std::string& src, LineOf lineOf
     return Status::success();
 }
 
-}  // namespace
+} // namespace
 
 Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceName)
 {
@@ -179,7 +183,7 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
         if (line.front() == '#') {
             const auto eq = line.find('=');
             if (eq == std::string::npos)
-                continue;  // a plain comment
+                continue; // a plain comment
             const std::string key = trim(line.substr(1, eq - 1));
             if (key.empty())
                 return bad(where + ": metadata line without a key ('" + line + "')");
@@ -201,7 +205,8 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
             continue;
         }
         if (fields.size() != 2)
-            return bad(where + ": expected 2 columns (angle_deg, deviation_um), found " + std::to_string(fields.size()));
+            return bad(where + ": expected 2 columns (angle_deg, deviation_um), found " +
+                       std::to_string(fields.size()));
         static const char* kCols[2] = {"angle_deg", "deviation_um"};
         double v[2] = {0.0, 0.0};
         for (int c = 0; c < 2; ++c) {
@@ -257,8 +262,8 @@ Status writeBallBarCsv(std::ostream& out, const BallBarTrace& t)
         out << "# dT_x_Nm=" << *t.dTxNm << '\n';
     if (t.dTyNm)
         out << "# dT_y_Nm=" << *t.dTyNm << '\n';
-    static const std::set<std::string> kWritten{"radius_mm", "feed_mm_min", "direction", "plane",
-                                                "center_x_mm", "center_y_mm", "dT_x_Nm", "dT_y_Nm"};
+    static const std::set<std::string> kWritten{"radius_mm",   "feed_mm_min", "direction", "plane",
+                                                "center_x_mm", "center_y_mm", "dT_x_Nm",   "dT_y_Nm"};
     for (const auto& [k, v] : t.metadata) {
         if (!kWritten.count(k))
             out << "# " << k << '=' << v << '\n';
@@ -285,4 +290,4 @@ Status writeBallBarCsvFile(const std::string& path, const BallBarTrace& trace)
     return Status::success();
 }
 
-}  // namespace axistune::io
+} // namespace axistune::io

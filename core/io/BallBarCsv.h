@@ -27,18 +27,18 @@ namespace axistune::io {
 enum class CircleDirection { Ccw, Cw };
 
 struct BallBarTrace {
-    std::string source;                        ///< file name used in messages
-    double radiusM = 0.0;                      ///< nominal radius
-    double feedMPerS = 0.0;                    ///< programmed feed
+    std::string source;     ///< file name used in messages
+    double radiusM = 0.0;   ///< nominal radius
+    double feedMPerS = 0.0; ///< programmed feed
     CircleDirection direction = CircleDirection::Ccw;
-    std::string plane = "XY";                  ///< two axis letters: first = "x" role, second = "y" role
-    double centerXM = 0.0;                     ///< circle centre, machine coordinates
+    std::string plane = "XY"; ///< two axis letters: first = "x" role, second = "y" role
+    double centerXM = 0.0;    ///< circle centre, machine coordinates
     double centerYM = 0.0;
-    std::optional<double> dTxNm;               ///< reversal torque change of the first axis (p-p)
-    std::optional<double> dTyNm;               ///< reversal torque change of the second axis (p-p)
-    std::vector<double> angleRad;              ///< as in the file (unwrapped, monotonic)
-    std::vector<double> deviationM;            ///< measured minus nominal radius
-    std::map<std::string, std::string> metadata;  ///< every metadata line, verbatim
+    std::optional<double> dTxNm;                 ///< reversal torque change of the first axis (p-p)
+    std::optional<double> dTyNm;                 ///< reversal torque change of the second axis (p-p)
+    std::vector<double> angleRad;                ///< as in the file (unwrapped, monotonic)
+    std::vector<double> deviationM;              ///< measured minus nominal radius
+    std::map<std::string, std::string> metadata; ///< every metadata line, verbatim
 
     std::size_t size() const { return angleRad.size(); }
     /// +1 for counter-clockwise travel, -1 for clockwise.
@@ -57,4 +57,4 @@ Result<BallBarTrace> readBallBarCsvFile(const std::string& path);
 Status writeBallBarCsv(std::ostream& out, const BallBarTrace& trace);
 Status writeBallBarCsvFile(const std::string& path, const BallBarTrace& trace);
 
-}  // namespace axistune::io
+} // namespace axistune::io

@@ -6,7 +6,6 @@
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -31,14 +30,24 @@ double wrapPi(double a)
 /// Mean angular spacing of the samples.
 double meanStepRad(const io::BallBarTrace& t)
 {
-    return std::abs(t.angleRad.back() - t.angleRad.front()) / static_cast<double>(std::max<std::size_t>(t.size() - 1, 1));
+    return std::abs(t.angleRad.back() - t.angleRad.front()) /
+           static_cast<double>(std::max<std::size_t>(t.size() - 1, 1));
 }
 
-double sgn(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
+double sgn(double v)
+{
+    return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0);
+}
 
-double axisProjection(int axis, double theta) { return axis == 0 ? std::cos(theta) : std::sin(theta); }
+double axisProjection(int axis, double theta)
+{
+    return axis == 0 ? std::cos(theta) : std::sin(theta);
+}
 
-const char* axisName(int axis) { return axis == 0 ? "X" : "Y"; }
+const char* axisName(int axis)
+{
+    return axis == 0 ? "X" : "Y";
+}
 
 std::string fmt(double v, int prec = 2)
 {
@@ -53,7 +62,7 @@ std::string fmt(double v, int prec = 2)
 struct LsFit {
     Eigen::VectorXd coef;
     Eigen::VectorXd resid;
-    Eigen::VectorXd varDiag;  ///< diag((AᵀA)⁻¹)
+    Eigen::VectorXd varDiag; ///< diag((AᵀA)⁻¹)
     double rms = 0.0;
 };
 
@@ -121,13 +130,13 @@ void findSpike(ReversalEvent& ev, const std::vector<std::pair<double, double>>& 
     ev.spikeWidthRad = crossing(+1) - crossing(-1);
 }
 
-}  // namespace
+} // namespace
 
 double lostMotionBasis(int axis, double theta, double sigma)
 {
     if (axis == 0)
-        return 0.5 * sigma * sgn(std::sin(theta)) * std::cos(theta);   // −½ sgn(ẋ) cosθ, sgn(ẋ) = −σ sgn(sinθ)
-    return -0.5 * sigma * sgn(std::cos(theta)) * std::sin(theta);      // −½ sgn(ẏ) sinθ, sgn(ẏ) = σ sgn(cosθ)
+        return 0.5 * sigma * sgn(std::sin(theta)) * std::cos(theta); // −½ sgn(ẋ) cosθ, sgn(ẋ) = −σ sgn(sinθ)
+    return -0.5 * sigma * sgn(std::cos(theta)) * std::sin(theta);    // −½ sgn(ẏ) sinθ, sgn(ẏ) = σ sgn(cosθ)
 }
 
 Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, const std::string& what)
@@ -151,17 +160,18 @@ Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, c
         return Status::success();
     const double from = gapEnd / kDeg;
     const double to = std::fmod(gapEnd + 2.0 * kPi - maxGap, 2.0 * kPi) / kDeg;
-    return makeError(ErrorCode::BadInput,
-                     t.source + ": " + what + " refused: requires a full 360° circle, but the trace is a partial arc covering " +
-                         fmt((2.0 * kPi - maxGap) / kDeg, 1) + "° (from " + fmt(from, 1) + "° to " + fmt(to, 1) +
-                         "° CCW; largest gap " + fmt(maxGap / kDeg, 1) + "°, at most " + fmt(opt.maxGapDeg, 1) +
-                         "° allowed)");
+    return makeError(
+        ErrorCode::BadInput,
+        t.source + ": " + what + " refused: requires a full 360° circle, but the trace is a partial arc covering " +
+            fmt((2.0 * kPi - maxGap) / kDeg, 1) + "° (from " + fmt(from, 1) + "° to " + fmt(to, 1) +
+            "° CCW; largest gap " + fmt(maxGap / kDeg, 1) + "°, at most " + fmt(opt.maxGapDeg, 1) + "° allowed)");
 }
 
-Result<double> circularityOf(std::span<const double> angle, std::span<const double> dev)
+namespace {
+
+/// ISO 230-4 least-squares circle Δr = r0 + a cosθ + b sinθ.
+LsFit fitCircle(std::span<const double> angle, std::span<const double> dev)
 {
-    if (angle.size() != dev.size() || angle.size() < 4)
-        return makeError(ErrorCode::BadInput, "circularity needs at least 4 samples");
     const auto n = static_cast<Eigen::Index>(angle.size());
     Eigen::MatrixXd a(n, 3);
     Eigen::VectorXd y(n);
@@ -169,7 +179,16 @@ Result<double> circularityOf(std::span<const double> angle, std::span<const doub
         a.row(i) << 1.0, std::cos(angle[i]), std::sin(angle[i]);
         y(i) = dev[i];
     }
-    const auto f = leastSquares(a, y);
+    return leastSquares(a, y);
+}
+
+} // namespace
+
+Result<double> circularityOf(std::span<const double> angle, std::span<const double> dev)
+{
+    if (angle.size() != dev.size() || angle.size() < 4)
+        return makeError(ErrorCode::BadInput, "circularity needs at least 4 samples");
+    const auto f = fitCircle(angle, dev);
     return f.resid.maxCoeff() - f.resid.minCoeff();
 }
 
@@ -246,7 +265,7 @@ namespace {
 /// radially (× u_a), scanned over pitch p from 4 samples at full axis speed up to R/2.
 struct CyclicScan {
     int axis = 0;
-    double k = 0.0;  ///< wavenumber 1/p [1/m]
+    double k = 0.0; ///< wavenumber 1/p [1/m]
     double alpha = 0.0, beta = 0.0, power = 0.0;
     double kLo = 0.0, kHi = 0.0;
 };
@@ -297,7 +316,7 @@ public:
         best.power = -1.0;
         int step = 0;
         for (double k = m_kLo; k <= m_kHi; k += dk, ++step) {
-            if (step % 64 == 0) {  // fresh phasors now and then, so rounding never accumulates
+            if (step % 64 == 0) { // fresh phasors now and then, so rounding never accumulates
                 for (std::size_t i = 0; i < n; ++i) {
                     z[i] = std::polar(1.0, 2.0 * kPi * k * m_x[i]);
                     w[i] = std::polar(1.0, 2.0 * kPi * dk * m_x[i]);
@@ -380,7 +399,61 @@ std::array<CyclicScan, 2> scanCyclic(const std::array<CyclicScanner, 2>& sc, con
     return s;
 }
 
-}  // namespace
+} // namespace
+
+namespace {
+
+/// Joint smooth fit outside the spike zones: circle + second harmonics + lost motion (constant and
+/// linear in the axis coordinate, for position-dependent lost motion), then the cyclic pitches from its
+/// residual and one refit with the cyclic regressors, so smooth terms and cyclic amplitudes do not
+/// absorb each other.
+Status jointFit(const io::BallBarTrace& t, const BallBarOptions& opt, RunDiagnostics& run)
+{
+    std::vector<std::size_t> idx;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (!inAnySpikeZone(t.angleRad[i], run.sigma, opt.excludeDeg * kDeg))
+            idx.push_back(i);
+    }
+    constexpr Eigen::Index kSmooth = 9;
+    Eigen::MatrixXd a(static_cast<Eigen::Index>(idx.size()), kSmooth + 4);
+    Eigen::VectorXd y(a.rows());
+    std::vector<double> theta(idx.size());
+    for (Eigen::Index k = 0; k < a.rows(); ++k) {
+        const double th = t.angleRad[idx[k]];
+        const double c = std::cos(th), s = std::sin(th);
+        const double lx = lostMotionBasis(0, th, run.sigma), ly = lostMotionBasis(1, th, run.sigma);
+        a.row(k).head(kSmooth) << 1.0, c, s, std::cos(2.0 * th), std::sin(2.0 * th), lx, lx * c, ly, ly * s;
+        y(k) = t.deviationM[idx[k]];
+        theta[k] = th;
+    }
+    if (a.rows() < 2 * a.cols())
+        return makeError(ErrorCode::BadInput,
+                         t.source + ": too few samples outside the reversal zones for the diagnostics");
+    const std::array<CyclicScanner, 2> sc{CyclicScanner(0, theta, t.radiusM, meanStepRad(t)),
+                                          CyclicScanner(1, theta, t.radiusM, meanStepRad(t))};
+    const auto scans = scanCyclic(sc, leastSquares(a.leftCols(kSmooth), y).resid);
+    for (Eigen::Index k = 0; k < a.rows(); ++k) {
+        for (int axis = 0; axis < 2; ++axis) {
+            const auto [c, s] = sc[axis].columns(scans[axis].k, static_cast<std::size_t>(k));
+            a(k, kSmooth + 2 * axis) = c;
+            a(k, kSmooth + 2 * axis + 1) = s;
+        }
+    }
+    const auto f = leastSquares(a, y);
+    run.cos2M = f.coef(3);
+    run.sin2M = f.coef(4);
+    run.lostMotionM = {f.coef(5), f.coef(7)};
+    run.residualRmsM = f.rms;
+    for (int axis = 0; axis < 2; ++axis) {
+        CyclicScan c = scans[axis];
+        c.alpha = f.coef(kSmooth + 2 * axis);
+        c.beta = f.coef(kSmooth + 2 * axis + 1);
+        run.cyclic[axis] = sc[axis].result(c, f.rms * f.rms);
+    }
+    return Status::success();
+}
+
+} // namespace
 
 Result<RunDiagnostics> analyzeRun(const io::BallBarTrace& t, const BallBarOptions& opt)
 {
@@ -391,79 +464,24 @@ Result<RunDiagnostics> analyzeRun(const io::BallBarTrace& t, const BallBarOption
     run.feedMPerS = t.feedMPerS;
     for (int axis = 0; axis < 2; ++axis) {
         for (double rev : reversalAngles(axis)) {
-            auto ev = fitReversal(t, axis, rev, opt);
-            if (ev)
+            if (auto ev = fitReversal(t, axis, rev, opt))
                 run.events.push_back(*ev);
         }
     }
-    if (auto s = requireFullCircle(t, opt, "centre, radius, circularity, scale mismatch, squareness, servo mismatch and cyclic error"); !s) {
+    const char* what = "centre, radius, circularity, scale mismatch, squareness, servo mismatch and cyclic error";
+    if (auto s = requireFullCircle(t, opt, what); !s) {
         run.refusal = s.error().detail;
         return run;
     }
     run.fullCircle = true;
-    auto circ = circularityOf(t.angleRad, t.deviationM);
-    if (!circ)
-        return circ.error();
-    run.circularityM = *circ;
-    {
-        const auto n = static_cast<Eigen::Index>(t.size());
-        Eigen::MatrixXd a(n, 3);
-        Eigen::VectorXd y(n);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            a.row(i) << 1.0, std::cos(t.angleRad[i]), std::sin(t.angleRad[i]);
-            y(i) = t.deviationM[i];
-        }
-        const auto f = leastSquares(a, y);
-        run.radiusDeviationM = f.coef(0);
-        run.centerXM = f.coef(1);
-        run.centerYM = f.coef(2);
-    }
-    // Joint smooth fit outside the spike zones: circle + second harmonics + lost motion (constant and
-    // linear in the axis coordinate, for position-dependent lost motion).
-    std::vector<std::size_t> idx;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        if (!inAnySpikeZone(t.angleRad[i], run.sigma, opt.excludeDeg * kDeg))
-            idx.push_back(i);
-    }
-    Eigen::MatrixXd a(static_cast<Eigen::Index>(idx.size()), 9);
-    Eigen::VectorXd y(a.rows());
-    std::vector<double> theta(idx.size());
-    for (Eigen::Index k = 0; k < a.rows(); ++k) {
-        const double th = t.angleRad[idx[k]];
-        const double c = std::cos(th), s = std::sin(th);
-        const double lx = lostMotionBasis(0, th, run.sigma), ly = lostMotionBasis(1, th, run.sigma);
-        a.row(k) << 1.0, c, s, std::cos(2.0 * th), std::sin(2.0 * th), lx, lx * c, ly, ly * s;
-        y(k) = t.deviationM[idx[k]];
-        theta[k] = th;
-    }
-    if (a.rows() < 2 * a.cols())
-        return makeError(ErrorCode::BadInput, t.source + ": too few samples outside the reversal zones for the diagnostics");
-    // Cyclic pitches from the residual, then one joint refit with the cyclic regressors so the
-    // smooth terms and the cyclic amplitudes do not absorb each other.
-    const std::array<CyclicScanner, 2> sc{CyclicScanner(0, theta, t.radiusM, meanStepRad(t)),
-                                          CyclicScanner(1, theta, t.radiusM, meanStepRad(t))};
-    const auto scans = scanCyclic(sc, leastSquares(a, y).resid);
-    Eigen::MatrixXd a2(a.rows(), a.cols() + 4);
-    a2.leftCols(a.cols()) = a;
-    for (Eigen::Index k = 0; k < a.rows(); ++k) {
-        for (int axis = 0; axis < 2; ++axis) {
-            const auto [c, s] = sc[axis].columns(scans[axis].k, static_cast<std::size_t>(k));
-            a2(k, a.cols() + 2 * axis) = c;
-            a2(k, a.cols() + 2 * axis + 1) = s;
-        }
-    }
-    const auto f = leastSquares(a2, y);
-    run.cos2M = f.coef(3);
-    run.sin2M = f.coef(4);
-    run.lostMotionM = {f.coef(5), f.coef(7)};
-    run.residualRmsM = f.rms;
-    for (int axis = 0; axis < 2; ++axis) {
-        CyclicScan c = scans[axis];
-        c.alpha = f.coef(a.cols() + 2 * axis);
-        c.beta = f.coef(a.cols() + 2 * axis + 1);
-        run.cyclic[axis] = sc[axis].result(c, f.rms * f.rms);
-    }
+    const auto circle = fitCircle(t.angleRad, t.deviationM);
+    run.circularityM = circle.resid.maxCoeff() - circle.resid.minCoeff();
+    run.radiusDeviationM = circle.coef(0);
+    run.centerXM = circle.coef(1);
+    run.centerYM = circle.coef(2);
+    if (auto s = jointFit(t, opt, run); !s)
+        return s.error();
     return run;
 }
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

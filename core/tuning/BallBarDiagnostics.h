@@ -26,50 +26,50 @@
 namespace axistune::tuning {
 
 struct BallBarOptions {
-    double excludeDeg = 4.0;     ///< half-window around a reversal left out of the smooth fits (spike zone)
-    double fitWindowDeg = 20.0;  ///< width of each side window of the local step fit, beyond excludeDeg
-    double maxGapDeg = 5.0;      ///< largest angular gap a "full circle" may have
+    double excludeDeg = 4.0;    ///< half-window around a reversal left out of the smooth fits (spike zone)
+    double fitWindowDeg = 20.0; ///< width of each side window of the local step fit, beyond excludeDeg
+    double maxGapDeg = 5.0;     ///< largest angular gap a "full circle" may have
 };
 
 /// One reversal of one axis in one run (LM-1 of spec §4.3).
 struct ReversalEvent {
-    int axis = 0;                  ///< 0 = first plane axis ("x"), 1 = second ("y")
-    double angleRad = 0.0;         ///< reversal angle: x at 0 / π, y at π/2 / 3π/2
-    double tableCoordM = 0.0;      ///< axis coordinate of the event: centre ± R
-    double stepM = 0.0;            ///< radial step across the reversal (lost motion; outward positive)
+    int axis = 0;             ///< 0 = first plane axis ("x"), 1 = second ("y")
+    double angleRad = 0.0;    ///< reversal angle: x at 0 / π, y at π/2 / 3π/2
+    double tableCoordM = 0.0; ///< axis coordinate of the event: centre ± R
+    double stepM = 0.0;       ///< radial step across the reversal (lost motion; outward positive)
     double stepStdErrM = 0.0;
-    double noiseRmsM = 0.0;        ///< rms residual of the local fit windows
-    std::array<double, 4> poly{};  ///< local smooth part c0 + c1·d + c2·d² + c3·d³ (d = travel angle from reversal, rad)
-    bool spike = false;            ///< a spike above the detection rule was found
-    double spikeHeightM = 0.0;     ///< signed peak of the residual in the spike zone (outward positive)
-    double spikeAngleRad = 0.0;    ///< angle of the peak
-    double spikeWidthRad = 0.0;    ///< full width at half height
+    double noiseRmsM = 0.0;       ///< rms residual of the local fit windows
+    std::array<double, 4> poly{}; ///< local smooth part c0 + c1·d + c2·d² + c3·d³ (d = travel angle from reversal, rad)
+    bool spike = false;           ///< a spike above the detection rule was found
+    double spikeHeightM = 0.0;  ///< signed peak of the residual in the spike zone (outward positive)
+    double spikeAngleRad = 0.0; ///< angle of the peak
+    double spikeWidthRad = 0.0; ///< full width at half height
 };
 
 struct CyclicFit {
     double amplitudeM = 0.0;
     double pitchM = 0.0;
     bool detected = false;
-    double thresholdM = 0.0;  ///< amplitude that noise alone exceeds with probability ≈ 1e-3
+    double thresholdM = 0.0; ///< amplitude that noise alone exceeds with probability ≈ 1e-3
 };
 
 /// Diagnostics of one trace.
 struct RunDiagnostics {
     std::string source;
-    double sigma = 1.0;  ///< +1 CCW, −1 CW
+    double sigma = 1.0; ///< +1 CCW, −1 CW
     double radiusM = 0.0;
     double feedMPerS = 0.0;
-    std::vector<ReversalEvent> events;  ///< every reversal whose windows the trace covers
+    std::vector<ReversalEvent> events; ///< every reversal whose windows the trace covers
     bool fullCircle = false;
-    std::string refusal;  ///< why the full-circle diagnostics were refused (empty when fullCircle)
+    std::string refusal; ///< why the full-circle diagnostics were refused (empty when fullCircle)
     // Full-circle diagnostics (valid when fullCircle):
     double radiusDeviationM = 0.0;
-    double centerXM = 0.0;  ///< machine circle centre relative to the ball-bar pivot
+    double centerXM = 0.0; ///< machine circle centre relative to the ball-bar pivot
     double centerYM = 0.0;
-    double circularityM = 0.0;  ///< max − min after removing the least-squares circle
-    double cos2M = 0.0;         ///< cos2θ coefficient
-    double sin2M = 0.0;         ///< sin2θ coefficient
-    std::array<double, 2> lostMotionM{};  ///< global lost-motion amplitudes per axis (joint fit)
+    double circularityM = 0.0;           ///< max − min after removing the least-squares circle
+    double cos2M = 0.0;                  ///< cos2θ coefficient
+    double sin2M = 0.0;                  ///< sin2θ coefficient
+    std::array<double, 2> lostMotionM{}; ///< global lost-motion amplitudes per axis (joint fit)
     double residualRmsM = 0.0;
     std::array<CyclicFit, 2> cyclic{};
 };
@@ -93,8 +93,8 @@ double lostMotionBasis(int axis, double thetaRad, double sigma);
 struct Finding {
     std::string name;
     double value = 0.0;
-    std::string unit;  ///< display unit of `value`
-    std::string rule;  ///< the rule that decided it, for people
+    std::string unit; ///< display unit of `value`
+    std::string rule; ///< the rule that decided it, for people
 };
 
 struct ReversalSpike {
@@ -113,14 +113,14 @@ struct BallBarReport {
     std::optional<double> radiusDeviationM;
     std::array<std::optional<double>, 2> backlashM;
     std::vector<ReversalSpike> spikes;
-    std::optional<double> scaleMismatch;      ///< εx − εy (ratio)
-    std::optional<double> squarenessRad;      ///< γ
-    std::optional<double> servoMismatchS;     ///< τx − τy
+    std::optional<double> scaleMismatch;  ///< εx − εy (ratio)
+    std::optional<double> squarenessRad;  ///< γ
+    std::optional<double> servoMismatchS; ///< τx − τy
     std::array<std::optional<CyclicFit>, 2> cyclic;
     std::vector<Finding> findings;
-    std::vector<std::string> refused;  ///< diagnostics that could not be computed, with the reason
+    std::vector<std::string> refused; ///< diagnostics that could not be computed, with the reason
 };
 
 Result<BallBarReport> analyzeBallBar(std::span<const io::BallBarTrace> traces, const BallBarOptions& opt = {});
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

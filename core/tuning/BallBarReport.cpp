@@ -5,7 +5,6 @@
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include <Eigen/Dense>
-
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -24,7 +23,10 @@ std::string fmt(double v, int prec = 2)
     return os.str();
 }
 
-const char* axisName(int axis) { return axis == 0 ? "X" : "Y"; }
+const char* axisName(int axis)
+{
+    return axis == 0 ? "X" : "Y";
+}
 
 void combineSin2(BallBarReport& rep, const std::vector<const RunDiagnostics*>& full)
 {
@@ -78,37 +80,19 @@ void combineCyclic(BallBarReport& rep, const std::vector<const RunDiagnostics*>&
             }
         }
         rep.cyclic[axis] = c;
-        rep.findings.push_back(
-            {std::string("cyclic_error_") + (axis == 0 ? "x" : "y"), c.amplitudeM * 1e6, "um",
-             std::string("largest least-squares sinusoid of the ") + axisName(axis) +
-                 " coordinate (pitch scanned from the sampling limit to R/2, best pitch " + fmt(c.pitchM * 1e3, 3) +
-                 " mm) in the residual of the smooth fit, projected radially; " +
-                 (c.detected ? "detected" : "not detected") + " against a noise threshold of " +
-                 fmt(c.thresholdM * 1e6, 3) + " um (false alarm ≈ 1e-3)"});
+        rep.findings.push_back({std::string("cyclic_error_") + (axis == 0 ? "x" : "y"), c.amplitudeM * 1e6, "um",
+                                std::string("largest least-squares sinusoid of the ") + axisName(axis) +
+                                    " coordinate (pitch scanned from the sampling limit to R/2, best pitch " +
+                                    fmt(c.pitchM * 1e3, 3) +
+                                    " mm) in the residual of the smooth fit, projected radially; " +
+                                    (c.detected ? "detected" : "not detected") + " against a noise threshold of " +
+                                    fmt(c.thresholdM * 1e6, 3) + " um (false alarm ≈ 1e-3)"});
     }
 }
 
-}  // namespace
-
-Result<BallBarReport> analyzeBallBar(std::span<const io::BallBarTrace> traces, const BallBarOptions& opt)
+/// Reversal steps and spikes need only the windows around each reversal (partial arcs too).
+void combineReversals(BallBarReport& rep, const BallBarOptions& opt)
 {
-    if (traces.empty())
-        return makeError(ErrorCode::BadInput, "ball-bar analysis needs at least one trace");
-    BallBarReport rep;
-    for (const auto& t : traces) {
-        auto r = analyzeRun(t, opt);
-        if (!r)
-            return r.error();
-        rep.runs.push_back(std::move(r).value());
-    }
-    std::vector<const RunDiagnostics*> full;
-    for (const auto& r : rep.runs) {
-        if (r.fullCircle)
-            full.push_back(&r);
-        else
-            rep.refused.push_back(r.refusal);
-    }
-    // Reversal steps and spikes need only the windows around each reversal.
     for (int axis = 0; axis < 2; ++axis) {
         double sum = 0.0;
         int n = 0;
@@ -130,21 +114,26 @@ Result<BallBarReport> analyzeBallBar(std::span<const io::BallBarTrace> traces, c
         rep.backlashM[axis] = sum / n;
         rep.findings.push_back(
             {std::string("backlash_") + (axis == 0 ? "x" : "y"), *rep.backlashM[axis] * 1e6, "um",
-             std::string("mean radial step across ") + std::to_string(n) + " " + axisName(axis) +
-                 " reversal(s) (" + (axis == 0 ? "0°/180°" : "90°/270°") + "): joint fit of a cubic plus a step "
-                 "over " + fmt(opt.excludeDeg, 1) + "–" + fmt(opt.excludeDeg + opt.fitWindowDeg, 1) +
+             std::string("mean radial step across ") + std::to_string(n) + " " + axisName(axis) + " reversal(s) (" +
+                 (axis == 0 ? "0°/180°" : "90°/270°") +
+                 "): joint fit of a cubic plus a step "
+                 "over " +
+                 fmt(opt.excludeDeg, 1) + "–" + fmt(opt.excludeDeg + opt.fitWindowDeg, 1) +
                  "° each side of the reversal; positive = outward step (lost motion), negative = inward "
                  "(over-compensation)"});
     }
     for (const auto& s : rep.spikes)
         rep.findings.push_back({std::string("reversal_spike_") + (s.axis == 0 ? "x" : "y"), s.heightM * 1e6, "um",
-                                "peak residual at " + fmt(s.angleRad / kDeg, 1) + "°, within ±" + fmt(opt.excludeDeg, 1) +
-                                    "° of a " + axisName(s.axis) + " reversal (width " + fmt(s.widthRad / kDeg, 2) +
+                                "peak residual at " + fmt(s.angleRad / kDeg, 1) + "°, within ±" +
+                                    fmt(opt.excludeDeg, 1) + "° of a " + axisName(s.axis) + " reversal (width " +
+                                    fmt(s.widthRad / kDeg, 2) +
                                     "° at half height) against the local step fit; reported when above 4× the "
                                     "fit-window noise and 0.3 um"});
-    if (full.empty())
-        return rep;
+}
 
+/// Centre, radius deviation, circularity and scale mismatch of the full-circle runs.
+void combineCircle(BallBarReport& rep, const std::vector<const RunDiagnostics*>& full)
+{
     double circ = 0.0, cx = 0.0, cy = 0.0, r0 = 0.0, scale = 0.0;
     for (const auto* r : full) {
         circ = std::max(circ, r->circularityM);
@@ -169,9 +158,36 @@ Result<BallBarReport> analyzeBallBar(std::span<const io::BallBarTrace> traces, c
     rep.findings.push_back({"scale_mismatch", scale * 1e6, "ppm",
                             "εx − εy = 2c/R from the cos2θ coefficient c of the joint fit (circle, 2nd harmonics, "
                             "lost motion) outside the reversal zones; positive = X travels further than Y"});
+}
+
+} // namespace
+
+Result<BallBarReport> analyzeBallBar(std::span<const io::BallBarTrace> traces, const BallBarOptions& opt)
+{
+    if (traces.empty())
+        return makeError(ErrorCode::BadInput, "ball-bar analysis needs at least one trace");
+    BallBarReport rep;
+    for (const auto& t : traces) {
+        auto r = analyzeRun(t, opt);
+        if (!r)
+            return r.error();
+        rep.runs.push_back(std::move(r).value());
+    }
+    std::vector<const RunDiagnostics*> full;
+    for (const auto& r : rep.runs) {
+        if (r.fullCircle)
+            full.push_back(&r);
+        else
+            rep.refused.push_back(r.refusal);
+    }
+    combineReversals(rep, opt);
+    if (full.empty())
+        return rep;
+
+    combineCircle(rep, full);
     combineSin2(rep, full);
     combineCyclic(rep, full);
     return rep;
 }
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

@@ -5,7 +5,6 @@
 #include "core/tuning/LostMotion.h"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -17,7 +16,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kDistinctXM = 1e-6;           ///< x values closer than this count as one position
-constexpr double kApparentThesisUmPerNmM = 17;  ///< Fig. 4.4(a), spec §1.4
+constexpr double kApparentThesisUmPerNmM = 17; ///< Fig. 4.4(a), spec §1.4
 
 std::string fmtG(double v)
 {
@@ -27,9 +26,18 @@ std::string fmtG(double v)
     return os.str();
 }
 
-double wrapPi(double a) { return std::remainder(a, 2.0 * kPi); }
-double sgn(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
-double axisProjection(int axis, double theta) { return axis == 0 ? std::cos(theta) : std::sin(theta); }
+double wrapPi(double a)
+{
+    return std::remainder(a, 2.0 * kPi);
+}
+double sgn(double v)
+{
+    return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0);
+}
+double axisProjection(int axis, double theta)
+{
+    return axis == 0 ? std::cos(theta) : std::sin(theta);
+}
 
 void addGuards(LostMotionFit& f, std::span<const LostMotionPoint> pts)
 {
@@ -44,22 +52,61 @@ void addGuards(LostMotionFit& f, std::span<const LostMotionPoint> pts)
     for (const auto& p : pts)
         xMax = std::max(xMax, std::abs(p.xM));
     if (std::abs(f.bPerNm) * xMax > 10.0 * std::abs(f.aMPerNm))
-        f.warnings.push_back("B·x_max = " + fmtG(std::abs(f.bPerNm) * xMax * 1e6) + " um/(N m) exceeds 10·A: typical of a "
+        f.warnings.push_back("B·x_max = " + fmtG(std::abs(f.bPerNm) * xMax * 1e6) +
+                             " um/(N m) exceeds 10·A: typical of a "
                              "unit error such as the thesis's B = 2.39e-4 (spec §1.11.2)");
     if (f.method != LostMotionMethod::BFree)
         f.warnings.push_back("apparent position-dependent compliance B = " + fmtG(f.bPerNm * 1e6) +
-                             " um/(N m m) (thesis test rig, Fig. 4.4(a): about " +
-                             fmtG(kApparentThesisUmPerNmM) + ")");
+                             " um/(N m m) (thesis test rig, Fig. 4.4(a): about " + fmtG(kApparentThesisUmPerNmM) + ")");
 }
 
-}  // namespace
+/// General exact two-point form (spec §1.8, corrected (4.13)) and the printed form for comparison.
+void fitTwoPoint(LostMotionFit& f, const LostMotionPoint& p1, const LostMotionPoint& p2)
+{
+    f.method = LostMotionMethod::TwoPoint;
+    f.bPerNm = (p1.dxM / p1.dTNm - p2.dxM / p2.dTNm) / (p1.xM - p2.xM);
+    f.aMPerNm = p1.dxM / p1.dTNm - f.bPerNm * p1.xM;
+    const double den = p1.xM * p1.dTNm - p2.xM * p2.dTNm;
+    if (std::abs(den) > 0.0) {
+        f.printedB = (p1.dxM - p2.dxM) / den;
+        f.printedA = p1.dxM / p1.dTNm - *f.printedB * p1.xM;
+    }
+    if (std::abs(p1.dTNm - p2.dTNm) / (0.5 * (p1.dTNm + p2.dTNm)) > 0.05)
+        f.warnings.push_back("the two torque changes differ by more than 5 %: the printed two-point form (4.13) "
+                             "would be wrong; the general form is used");
+}
+
+/// Linear least squares on the regressors [ΔT_i, x_i·ΔT_i] (spec §1.8), with standard errors.
+void fitLeastSquares(LostMotionFit& f, std::span<const LostMotionPoint> pts)
+{
+    f.method = LostMotionMethod::LeastSquares;
+    const auto n = static_cast<Eigen::Index>(pts.size());
+    Eigen::MatrixXd a(n, 2);
+    Eigen::VectorXd y(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        a.row(i) << pts[i].dTNm, pts[i].xM * pts[i].dTNm;
+        y(i) = pts[i].dxM;
+    }
+    const Eigen::Vector2d c = a.colPivHouseholderQr().solve(y);
+    f.aMPerNm = c(0);
+    f.bPerNm = c(1);
+    const double rss = (y - a * c).squaredNorm();
+    const Eigen::Matrix2d cov = (a.transpose() * a).inverse() * (rss / static_cast<double>(n - 2));
+    f.aStdErr = std::sqrt(cov(0, 0));
+    f.bStdErr = std::sqrt(cov(1, 1));
+}
+
+} // namespace
 
 const char* lostMotionMethodName(LostMotionMethod m)
 {
     switch (m) {
-    case LostMotionMethod::BFree: return "b-free";
-    case LostMotionMethod::TwoPoint: return "two-point";
-    case LostMotionMethod::LeastSquares: return "least-squares";
+    case LostMotionMethod::BFree:
+        return "b-free";
+    case LostMotionMethod::TwoPoint:
+        return "two-point";
+    case LostMotionMethod::LeastSquares:
+        return "least-squares";
     }
     return "?";
 }
@@ -71,10 +118,12 @@ Result<LostMotionFit> fitLostMotion(std::span<const LostMotionPoint> pts, bool b
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const auto& p = pts[i];
         if (!std::isfinite(p.xM) || !std::isfinite(p.dTNm) || !std::isfinite(p.dxM))
-            return makeError(ErrorCode::BadInput, "lost-motion point " + std::to_string(i) + " (" + p.source + "): not finite");
+            return makeError(ErrorCode::BadInput,
+                             "lost-motion point " + std::to_string(i) + " (" + p.source + "): not finite");
         if (!(p.dTNm > 0.0))
             return makeError(ErrorCode::BadInput, "lost-motion point " + std::to_string(i) + " (" + p.source +
-                                                      "): torque change dT must be positive (is " + fmtG(p.dTNm) + " N m)");
+                                                      "): torque change dT must be positive (is " + fmtG(p.dTNm) +
+                                                      " N m)");
     }
     std::vector<double> xs;
     for (const auto& p : pts) {
@@ -82,44 +131,18 @@ Result<LostMotionFit> fitLostMotion(std::span<const LostMotionPoint> pts, bool b
             xs.push_back(p.xM);
     }
     LostMotionFit f;
-    const auto n = static_cast<Eigen::Index>(pts.size());
     if (bFree || xs.size() < 2) {
         f.method = LostMotionMethod::BFree;
         double s = 0.0;
         for (const auto& p : pts)
             s += p.dxM / p.dTNm;
-        f.aMPerNm = s / static_cast<double>(pts.size());  // spec §4.4: A = mean(Δx_i/ΔT_i)
+        f.aMPerNm = s / static_cast<double>(pts.size()); // spec §4.4: A = mean(Δx_i/ΔT_i)
         if (!bFree)
             f.warnings.push_back("all events at one screw position: B cannot be identified and is fixed at 0");
     } else if (pts.size() == 2) {
-        f.method = LostMotionMethod::TwoPoint;
-        const auto& p1 = pts[0];
-        const auto& p2 = pts[1];
-        f.bPerNm = (p1.dxM / p1.dTNm - p2.dxM / p2.dTNm) / (p1.xM - p2.xM);
-        f.aMPerNm = p1.dxM / p1.dTNm - f.bPerNm * p1.xM;
-        const double den = p1.xM * p1.dTNm - p2.xM * p2.dTNm;
-        if (std::abs(den) > 0.0) {
-            f.printedB = (p1.dxM - p2.dxM) / den;
-            f.printedA = p1.dxM / p1.dTNm - *f.printedB * p1.xM;
-        }
-        if (std::abs(p1.dTNm - p2.dTNm) / (0.5 * (p1.dTNm + p2.dTNm)) > 0.05)
-            f.warnings.push_back("the two torque changes differ by more than 5 %: the printed two-point form (4.13) "
-                                 "would be wrong; the general form is used");
+        fitTwoPoint(f, pts[0], pts[1]);
     } else {
-        f.method = LostMotionMethod::LeastSquares;
-        Eigen::MatrixXd a(n, 2);
-        Eigen::VectorXd y(n);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            a.row(i) << pts[i].dTNm, pts[i].xM * pts[i].dTNm;
-            y(i) = pts[i].dxM;
-        }
-        const Eigen::Vector2d c = a.colPivHouseholderQr().solve(y);
-        f.aMPerNm = c(0);
-        f.bPerNm = c(1);
-        const double rss = (y - a * c).squaredNorm();
-        const Eigen::Matrix2d cov = (a.transpose() * a).inverse() * (rss / static_cast<double>(n - 2));
-        f.aStdErr = std::sqrt(cov(0, 0));
-        f.bStdErr = std::sqrt(cov(1, 1));
+        fitLeastSquares(f, pts);
     }
     double ss = 0.0;
     for (const auto& p : pts) {
@@ -143,8 +166,8 @@ Result<std::vector<LostMotionPoint>> extractLostMotionPoints(const io::BallBarTr
                                                   "trace, is needed for lost-motion identification)");
     std::vector<LostMotionPoint> pts;
     std::string lastError;
-    const std::array<double, 2> revs = setup.axis == 0 ? std::array<double, 2>{0.0, kPi}
-                                                       : std::array<double, 2>{0.5 * kPi, 1.5 * kPi};
+    const std::array<double, 2> revs =
+        setup.axis == 0 ? std::array<double, 2>{0.0, kPi} : std::array<double, 2>{0.5 * kPi, 1.5 * kPi};
     for (double rev : revs) {
         auto ev = fitReversal(t, setup.axis, rev, opt);
         if (!ev) {
@@ -166,9 +189,15 @@ double conventionalCompensation(double velocity, double backlashM, bool holdLast
     return 0.5 * backlashM * dir;
 }
 
-double proposedCompensation(double a, double b, double x, double torque) { return (a + b * x) * torque; }
+double proposedCompensation(double a, double b, double x, double torque)
+{
+    return (a + b * x) * torque;
+}
 
-double compensationAngleRad(double xc, double lead) { return xc / (lead / (2.0 * kPi)); }
+double compensationAngleRad(double xc, double lead)
+{
+    return xc / (lead / (2.0 * kPi));
+}
 
 double materialComplianceSlope(double lead, double rootDiameter, double shearModulus, double m)
 {
@@ -202,7 +231,7 @@ double cutIn(const io::BallBarTrace& t, int axis, const BallBarOptions& opt)
     return worst;
 }
 
-}  // namespace
+} // namespace
 
 Result<CompensationPrediction> predictCompensation(const io::BallBarTrace& t, const LostMotionSetup& setup,
                                                    const LostMotionFit& fit, double xbl, const BallBarOptions& opt)
@@ -258,4 +287,4 @@ Result<CompensationPrediction> predictCompensation(const io::BallBarTrace& t, co
     return p;
 }
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

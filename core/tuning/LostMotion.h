@@ -24,14 +24,14 @@ struct LostMotionPoint {
     double xM = 0.0;
     double dTNm = 0.0;
     double dxM = 0.0;
-    std::string source;     ///< trace it came from (empty for hand-entered points)
-    double angleRad = 0.0;  ///< reversal angle in that trace
+    std::string source;    ///< trace it came from (empty for hand-entered points)
+    double angleRad = 0.0; ///< reversal angle in that trace
 };
 
 struct LostMotionSetup {
-    int axis = 0;               ///< 0 = first plane axis ("x"), 1 = second ("y")
-    double screwOffsetM = 0.0;  ///< x₀: spring length at table coordinate 0
-    double screwSign = 1.0;     ///< s: x_bs = x₀ + s·X_t (spec §4.1; the thesis has s = +1)
+    int axis = 0;              ///< 0 = first plane axis ("x"), 1 = second ("y")
+    double screwOffsetM = 0.0; ///< x₀: spring length at table coordinate 0
+    double screwSign = 1.0;    ///< s: x_bs = x₀ + s·X_t (spec §4.1; the thesis has s = +1)
 };
 
 enum class LostMotionMethod { BFree, TwoPoint, LeastSquares };
@@ -41,19 +41,19 @@ struct LostMotionFit {
     double aMPerNm = 0.0;
     double bPerNm = 0.0;
     LostMotionMethod method = LostMotionMethod::BFree;
-    std::vector<double> residualsM;  ///< Δx_i − (A + B x_i) ΔT_i
+    std::vector<double> residualsM; ///< Δx_i − (A + B x_i) ΔT_i
     double residualRmsM = 0.0;
-    std::optional<double> aStdErr, bStdErr;  ///< least squares with more points than unknowns
-    std::optional<double> printedA, printedB;  ///< thesis (4.13) as printed, for comparison (two points)
-    std::vector<std::string> warnings;         ///< plausibility guards of spec §4.4
+    std::optional<double> aStdErr, bStdErr;   ///< least squares with more points than unknowns
+    std::optional<double> printedA, printedB; ///< thesis (4.13) as printed, for comparison (two points)
+    std::vector<std::string> warnings;        ///< plausibility guards of spec §4.4
 };
 
 /// LM-2. `bFree` forces B = 0 (A = mean Δx/ΔT); a single distinct x forces it too, with a warning.
 Result<LostMotionFit> fitLostMotion(std::span<const LostMotionPoint> points, bool bFree = false);
 
 /// LM-1: the events of one axis in one trace (both reversals where covered); needs dT of that axis.
-Result<std::vector<LostMotionPoint>> extractLostMotionPoints(const io::BallBarTrace& trace, const LostMotionSetup& setup,
-                                                             const BallBarOptions& opt = {});
+Result<std::vector<LostMotionPoint>>
+extractLostMotionPoints(const io::BallBarTrace& trace, const LostMotionSetup& setup, const BallBarOptions& opt = {});
 
 /// LM-0 (4.5) with the reading of spec §6 #6: +x_bl/2 moving forward, −x_bl/2 backward, and at
 /// standstill 0 (as printed) or, when holdLast, the value for `lastDirection` (not from the source).
@@ -72,11 +72,11 @@ double materialComplianceSlope(double leadMPerRev, double rootDiameterM, double 
 struct CompensationPrediction {
     std::vector<double> angleRad;
     std::vector<double> measuredM;
-    std::vector<double> proposedM;      ///< measured − torque-synchronous compensation
-    std::vector<double> conventionalM;  ///< measured − step compensation
+    std::vector<double> proposedM;     ///< measured − torque-synchronous compensation
+    std::vector<double> conventionalM; ///< measured − step compensation
     double conventionalBacklashM = 0.0;
     std::optional<double> measuredCircularityM, proposedCircularityM, conventionalCircularityM;
-    double proposedCutInM = 0.0;      ///< deepest inward notch right after a reversal (≥ 0)
+    double proposedCutInM = 0.0; ///< deepest inward notch right after a reversal (≥ 0)
     double conventionalCutInM = 0.0;
     double measuredCutInM = 0.0;
 };
@@ -88,4 +88,4 @@ Result<CompensationPrediction> predictCompensation(const io::BallBarTrace& trace
                                                    const LostMotionFit& fit, double conventionalBacklashM,
                                                    const BallBarOptions& opt = {});
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // End-to-end: axistune-cli ballbar and lost-motion on the reference traces of tests/data/ballbar
 // (made by make_traces.py with the injected values in injected.json) and on malformed files.
-#include "tests/app/cli/CliRunner.h"
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/app/cli/CliRunner.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::readFileText;
@@ -18,7 +17,10 @@ namespace {
 
 const std::string kData = std::string(AXISTUNE_TEST_DATA_DIR) + "/ballbar/";
 
-nlohmann::json injected() { return nlohmann::json::parse(readFileText(kData + "injected.json")); }
+nlohmann::json injected()
+{
+    return nlohmann::json::parse(readFileText(kData + "injected.json"));
+}
 
 void expectWithin(double got, double want, double floor, const char* what)
 {
@@ -40,7 +42,7 @@ std::string circleRows(int n)
     return s;
 }
 
-}  // namespace
+} // namespace
 
 TEST(CliBallBar, DiagnosticsOfCwAndCcwMatchInjectedErrors)
 {
@@ -60,7 +62,7 @@ TEST(CliBallBar, DiagnosticsOfCwAndCcwMatchInjectedErrors)
     expectWithin(j["cyclic_error_um"]["pitch_x_mm"], inj["cyclic_x"]["pitch_mm"], 0.0, "cyclic pitch x");
     EXPECT_TRUE(j["cyclic_error_um"]["detected_x"].get<bool>());
     EXPECT_FALSE(j["cyclic_error_um"]["detected_y"].get<bool>());
-    ASSERT_EQ(j["reversal_spikes"].size(), 2u);  // one per run, after the Y reversal at 90°
+    ASSERT_EQ(j["reversal_spikes"].size(), 2u); // one per run, after the Y reversal at 90°
     for (const auto& s : j["reversal_spikes"]) {
         EXPECT_EQ(s["axis"], "y");
         expectWithin(s["height_um"], inj["spike_y"]["height_um"], 1.0, "spike height");
@@ -80,8 +82,9 @@ TEST(CliBallBar, PartialArcRefusesFullCircleDiagnosticsWithReason)
     EXPECT_TRUE(j["circularity_um"].is_null());
     EXPECT_TRUE(j["squareness_um_per_m"].is_null());
     ASSERT_FALSE(j["refused"].empty());
-    EXPECT_NE(j["refused"][0].get<std::string>().find("refused: requires a full 360° circle, but the trace is a partial arc"),
-              std::string::npos);
+    EXPECT_NE(
+        j["refused"][0].get<std::string>().find("refused: requires a full 360° circle, but the trace is a partial arc"),
+        std::string::npos);
     EXPECT_NEAR(j["backlash_x_um"].get<double>(), 2.0, 0.2);
 }
 
@@ -134,7 +137,8 @@ TEST(CliBallBar, MalformedTracesExitWithCodeTwoAndAClearMessage)
     const Case cases[] = {
         {"nometa.csv", circleRows(360), "no metadata"},
         {"one.csv", meta + "angle_deg,deviation_um\n0,1.0\n", "has 1 sample"},
-        {"nan.csv", meta + "angle_deg,deviation_um\n0,1.0\n1,nan\n", "line 7, column 'deviation_um': not a finite number"},
+        {"nan.csv", meta + "angle_deg,deviation_um\n0,1.0\n1,nan\n",
+         "line 7, column 'deviation_um': not a finite number"},
         {"order.csv", meta + "angle_deg,deviation_um\n0,1\n2,1\n1,1\n3,1\n4,1\n5,1\n6,1\n7,1\n",
          "line 8, column 'angle_deg': angles must be strictly increasing"},
         {"noradius.csv", "# feed_mm_min=1000\n# direction=ccw\n" + circleRows(360), "metadata 'radius_mm' missing"},
@@ -150,7 +154,8 @@ TEST(CliBallBar, MalformedTracesExitWithCodeTwoAndAClearMessage)
         }
     }
     // A well-formed trace without the torque change cannot give A and B.
-    const auto path = writeTemp(dir, "nodt.csv", "# radius_mm=100\n# feed_mm_min=1000\n# direction=ccw\n" + circleRows(720));
+    const auto path =
+        writeTemp(dir, "nodt.csv", "# radius_mm=100\n# feed_mm_min=1000\n# direction=ccw\n" + circleRows(720));
     auto r = runCli("lost-motion --axis y --ballbar " + path);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("metadata 'dT_y_Nm' missing"), std::string::npos) << r.err;

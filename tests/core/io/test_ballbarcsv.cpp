@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/BallBarCsv.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <sstream>
 
@@ -31,15 +30,16 @@ Result<BallBarTrace> parse(const std::string& text)
     return readBallBarCsv(in, "t.csv");
 }
 
-}  // namespace
+} // namespace
 
 TEST(BallBarCsv, ReadsMetadataInSiAndSamples)
 {
     auto r = parse("# radius_mm=150\n# feed_mm_min=3000\n# direction=CW\n# plane=XY\n# center_x_mm=-20\n"
-                   "# center_y_mm=400\n# dT_x_Nm=0.61\n# dT_y_Nm=0.6\n# operator=someone\n" + rows(36));
+                   "# center_y_mm=400\n# dT_x_Nm=0.61\n# dT_y_Nm=0.6\n# operator=someone\n" +
+                   rows(36));
     ASSERT_TRUE(r.ok()) << r.error().detail;
     EXPECT_DOUBLE_EQ(r->radiusM, 0.150);
-    EXPECT_NEAR(r->feedMPerS, 0.05, 1e-15);  // 3000 mm/min = 50 mm/s
+    EXPECT_NEAR(r->feedMPerS, 0.05, 1e-15); // 3000 mm/min = 50 mm/s
     EXPECT_EQ(r->direction, CircleDirection::Cw);
     EXPECT_DOUBLE_EQ(r->directionSign(), -1.0);
     EXPECT_DOUBLE_EQ(r->centerXM, -0.020);
@@ -80,8 +80,10 @@ TEST(BallBarCsv, RefusesMalformedTracesNamingLineAndField)
         {"# feed_mm_min=1000\n# direction=ccw\n" + rows(36), "'radius_mm' missing"},
         {"# radius_mm=100\n# direction=ccw\n" + rows(36), "'feed_mm_min' missing"},
         {"# radius_mm=100\n# feed_mm_min=1000\n" + rows(36), "'direction' missing"},
-        {"# radius_mm=abc\n# feed_mm_min=1000\n# direction=ccw\n" + rows(36), "line 1, metadata 'radius_mm': not a number"},
-        {"# radius_mm=-5\n# feed_mm_min=1000\n# direction=ccw\n" + rows(36), "line 1, metadata 'radius_mm': must be greater"},
+        {"# radius_mm=abc\n# feed_mm_min=1000\n# direction=ccw\n" + rows(36),
+         "line 1, metadata 'radius_mm': not a number"},
+        {"# radius_mm=-5\n# feed_mm_min=1000\n# direction=ccw\n" + rows(36),
+         "line 1, metadata 'radius_mm': must be greater"},
         {"# radius_mm=100\n# feed_mm_min=1000\n# direction=up\n" + rows(36), "line 3, metadata 'direction'"},
         {kMeta + "angle_deg,deviation_um\n0,1\n", "has 1 sample;"},
         {kMeta + "angle_deg,deviation_um\n0,1\n10,nan\n", "t.csv line 6, column 'deviation_um': not a finite number"},

@@ -4,9 +4,8 @@
 // changing sign gradually after each reversal, so the table lags by ½(A + B·x)ΔT against its motion.
 #include "core/tuning/LostMotion.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <random>
 
@@ -20,16 +19,21 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
 struct LmMachine {
-    int axis = 1;  ///< axis with the modelled lost motion
+    int axis = 1; ///< axis with the modelled lost motion
     double a = 4.1e-6, b = 1.7e-5, dT = 0.61, x0 = 0.05;
     double centerX = 0.39, centerY = 0.4;
-    double otherAxisStep = 1.0e-6;  ///< constant lost motion of the other axis (must not leak)
-    double transitionDeg = 0.5;     ///< e-folding travel angle of the torque reversal
+    double otherAxisStep = 1.0e-6; ///< constant lost motion of the other axis (must not leak)
+    double transitionDeg = 0.5;    ///< e-folding travel angle of the torque reversal
     double radius = 0.1, feedMmMin = 1000.0;
     bool ccw = true;
     double noise = 0.1e-6;
     unsigned seed = 7;
 };
+
+LostMotionPoint pt(double x, double dT, double dx)
+{
+    return LostMotionPoint{x, dT, dx, "", 0.0};
+}
 
 BallBarTrace makeLmTrace(const LmMachine& m)
 {
@@ -68,27 +72,27 @@ BallBarTrace makeLmTrace(const LmMachine& m)
     return t;
 }
 
-}  // namespace
+} // namespace
 
 TEST(LostMotion, ThesisExampleBFree)
 {
     // §1.11.1: ΔT = 0.61 N·m, lost motion 1.1 µm (X) and 2.6 µm (Y), B = 0.
-    const std::vector<LostMotionPoint> x{{0.29, 0.61, 1.1e-6}, {0.49, 0.61, 1.1e-6}};
+    const std::vector<LostMotionPoint> x{pt(0.29, 0.61, 1.1e-6), pt(0.49, 0.61, 1.1e-6)};
     auto fx = fitLostMotion(x, true);
     ASSERT_TRUE(fx.ok());
     EXPECT_EQ(fx->method, LostMotionMethod::BFree);
-    EXPECT_NEAR(fx->aMPerNm * 1e6, 1.80, 0.005);  // thesis 1.80 µm/(N·m); 1.1/0.61 = 1.803
+    EXPECT_NEAR(fx->aMPerNm * 1e6, 1.80, 0.005); // thesis 1.80 µm/(N·m); 1.1/0.61 = 1.803
     EXPECT_DOUBLE_EQ(fx->bPerNm, 0.0);
     // Y: 2.6/0.61 = 4.26 µm/(N·m); the thesis prints 4.10, which is 2.50 µm / 0.61 (spec §6 #11).
-    const std::vector<LostMotionPoint> y{{0.4, 0.61, 2.6e-6}, {0.6, 0.61, 2.6e-6}};
+    const std::vector<LostMotionPoint> y{pt(0.4, 0.61, 2.6e-6), pt(0.6, 0.61, 2.6e-6)};
     auto fy = fitLostMotion(y, true);
     ASSERT_TRUE(fy.ok());
     EXPECT_NEAR(fy->aMPerNm * 1e6, 4.262, 0.001);
     EXPECT_GE(fy->aMPerNm * 1e6, 4.10 - 0.005);
     EXPECT_LE(fy->aMPerNm * 1e6, 4.26 + 0.005);
-    const std::vector<LostMotionPoint> y25{{0.4, 0.61, 2.5e-6}};
+    const std::vector<LostMotionPoint> y25{pt(0.4, 0.61, 2.5e-6)};
     EXPECT_NEAR(fitLostMotion(y25)->aMPerNm * 1e6, 4.10, 0.005);
-    EXPECT_FALSE(fitLostMotion(y25)->warnings.empty());  // single position: B fixed at 0, said so
+    EXPECT_FALSE(fitLostMotion(y25)->warnings.empty()); // single position: B fixed at 0, said so
 }
 
 TEST(LostMotion, ThesisExampleFromBallBarTraces)
@@ -116,7 +120,7 @@ TEST(LostMotion, ThesisExampleFromBallBarTraces)
 TEST(LostMotion, GeneralTwoPointFormAndPrintedForm)
 {
     // Spec §4.7, equal ΔT: both forms agree.
-    const std::vector<LostMotionPoint> eq{{0.3, 0.61, 5.612e-6}, {0.5, 0.61, 7.686e-6}};
+    const std::vector<LostMotionPoint> eq{pt(0.3, 0.61, 5.612e-6), pt(0.5, 0.61, 7.686e-6)};
     auto f = fitLostMotion(eq);
     ASSERT_TRUE(f.ok());
     EXPECT_EQ(f->method, LostMotionMethod::TwoPoint);
@@ -125,7 +129,7 @@ TEST(LostMotion, GeneralTwoPointFormAndPrintedForm)
     EXPECT_NEAR(*f->printedA * 1e6, 4.10, 0.005);
     EXPECT_NEAR(*f->printedB, 1.70e-5, 0.005e-5);
     // Unequal ΔT: the general form returns the true A, B; the printed (4.13) does not.
-    const std::vector<LostMotionPoint> uneq{{0.3, 0.5, 4.60e-6}, {0.5, 0.7, 8.82e-6}};
+    const std::vector<LostMotionPoint> uneq{pt(0.3, 0.5, 4.60e-6), pt(0.5, 0.7, 8.82e-6)};
     auto g = fitLostMotion(uneq);
     ASSERT_TRUE(g.ok());
     EXPECT_NEAR(g->aMPerNm * 1e6, 4.10, 0.005);
@@ -144,7 +148,7 @@ TEST(LostMotion, LeastSquaresOnExactPointsIsExactAndFlagsUnitErrors)
     const double a = 3e-6, b = 2e-5;
     std::vector<LostMotionPoint> pts;
     for (double x : {0.1, 0.2, 0.35, 0.5, 0.7})
-        pts.push_back({x, 0.5 + x, (a + b * x) * (0.5 + x)});
+        pts.push_back(pt(x, 0.5 + x, (a + b * x) * (0.5 + x)));
     auto f = fitLostMotion(pts);
     ASSERT_TRUE(f.ok());
     EXPECT_EQ(f->method, LostMotionMethod::LeastSquares);
@@ -153,14 +157,15 @@ TEST(LostMotion, LeastSquaresOnExactPointsIsExactAndFlagsUnitErrors)
     ASSERT_TRUE(f->bStdErr.has_value());
     EXPECT_LT(f->residualRmsM, 1e-15);
     // The thesis's B = 2.39e-4 taken literally in SI (spec §1.11.2) trips the 10·A guard.
-    std::vector<LostMotionPoint> bad{{0.3, 0.61, (4.1e-6 + 2.39e-4 * 0.3) * 0.61}, {0.5, 0.61, (4.1e-6 + 2.39e-4 * 0.5) * 0.61}};
+    std::vector<LostMotionPoint> bad{pt(0.3, 0.61, (4.1e-6 + 2.39e-4 * 0.3) * 0.61),
+                                     pt(0.5, 0.61, (4.1e-6 + 2.39e-4 * 0.5) * 0.61)};
     auto h = fitLostMotion(bad);
     ASSERT_TRUE(h.ok());
     bool flagged = false;
     for (const auto& w : h->warnings)
         flagged = flagged || w.find("exceeds 10·A") != std::string::npos;
     EXPECT_TRUE(flagged);
-    const std::vector<LostMotionPoint> zeroTorque{{0.3, 0.0, 1e-6}};
+    const std::vector<LostMotionPoint> zeroTorque{pt(0.3, 0.0, 1e-6)};
     EXPECT_FALSE(fitLostMotion(zeroTorque).ok());
 }
 
@@ -249,7 +254,7 @@ TEST(LostMotion, PredictedCompensationRemovesLostMotionWithoutCutIn)
     ASSERT_TRUE(pts.ok());
     auto f = fitLostMotion(*pts, true);
     ASSERT_TRUE(f.ok());
-    const double lost = m.a * m.dT;  // 2.5 µm
+    const double lost = m.a * m.dT; // 2.5 µm
     auto p = predictCompensation(t, setup, *f, lost);
     ASSERT_TRUE(p.ok()) << p.error().detail;
     ASSERT_TRUE(p->measuredCircularityM && p->proposedCircularityM && p->conventionalCircularityM);
@@ -272,6 +277,6 @@ TEST(LostMotion, MaterialModelMatchesThesisNumbers)
     EXPECT_NEAR(slope / 17e-6, 0.0905, 0.0005);
     EXPECT_NEAR(materialComplianceSlope(0.012, 0.020, 79e9, 0.0905) * 1e6, 17.0, 0.02);
     // Apparent constant of Fig. 4.4(a): 1 µm per 0.6 N·m per 0.1 m = 16.7 µm/(N·m·m), as a two-point B.
-    const std::vector<LostMotionPoint> pts{{0.4, 0.6, 3.0e-6}, {0.5, 0.6, 4.0e-6}};
+    const std::vector<LostMotionPoint> pts{pt(0.4, 0.6, 3.0e-6), pt(0.5, 0.6, 4.0e-6)};
     EXPECT_NEAR(fitLostMotion(pts)->bPerNm * 1e6, 16.67, 0.01);
 }
