@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/ParameterText.h"
+
 #include "core/model/Parameter.h"
 #include "core/model/Units.h"
 #include "core/sim/MachineDefinition.h"
@@ -108,7 +110,7 @@ void MainWindow::showAxis(const QString& axis)
     int row = 0;
     for (const auto& m : *metas) {
         const double v = values->count(m.key) ? values->at(m.key) : 0.0;
-        auto* name = new QTableWidgetItem(QString::fromStdString(m.label));
+        auto* name = new QTableWidgetItem(parameterLabel(m.label));
         m_params->setItem(row, 0, name);
         m_params->setItem(row, 1, new QTableWidgetItem(QString::fromStdString(m.key)));
         auto* val = new QTableWidgetItem(displayValue(m, v));

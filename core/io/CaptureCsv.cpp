@@ -11,15 +11,17 @@
 namespace axistune::io {
 namespace {
 
-std::string trim(std::string_view s)
+std::string_view trimView(std::string_view s)
 {
     std::size_t b = 0, e = s.size();
     while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
         ++b;
     while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
         --e;
-    return std::string(s.substr(b, e - b));
+    return s.substr(b, e - b);
 }
+
+std::string trim(std::string_view s) { return std::string(trimView(s)); }
 
 std::vector<std::string> splitComma(const std::string& line)
 {
@@ -35,7 +37,7 @@ std::vector<std::string> splitComma(const std::string& line)
     return out;
 }
 
-bool parseDouble(const std::string& s, double& v)
+bool parseDouble(std::string_view s, double& v)
 {
     if (s.empty())
         return false;
@@ -55,55 +57,57 @@ Result<model::Capture> readCaptureCsv(std::istream& in, const std::string& sourc
     std::string line;
     std::size_t lineNo = 0;
     bool haveHeader = false;
+    auto where = [&](std::size_t ln) { return sourceName + " line " + std::to_string(ln); };
     while (std::getline(in, line)) {
         ++lineNo;
-        const std::string t = trim(line);
+        const std::string_view t = trimView(line);
         if (t.empty())
             continue;
         if (t[0] == '#') {
-            const auto body = trim(std::string_view(t).substr(1));
+            const std::string_view body = trimView(t.substr(1));
             const auto eq = body.find('=');
-            if (eq == std::string::npos) {
-                continue;  // a plain comment
-            }
-            cap.metadata[trim(std::string_view(body).substr(0, eq))] = trim(std::string_view(body).substr(eq + 1));
-            continue;
+            if (eq != std::string_view::npos)
+                cap.metadata[std::string(trimView(body.substr(0, eq)))] = std::string(trimView(body.substr(eq + 1)));
+            continue;  // a plain comment otherwise
         }
-        const auto cells = splitComma(t);
         if (!haveHeader) {
-            for (const auto& name : cells) {
-                if (name.empty()) {
-                    return makeError(ErrorCode::BadInput,
-                                     sourceName + " line " + std::to_string(lineNo) + ": empty column name in the header");
-                }
-                for (const auto& c : cap.channels) {
-                    if (c.name == name) {
-                        return makeError(ErrorCode::BadInput, sourceName + " line " + std::to_string(lineNo)
-                                                                  + ": column '" + name + "' appears twice");
-                    }
-                }
+            for (const auto& name : splitComma(std::string(t))) {
+                if (name.empty())
+                    return makeError(ErrorCode::BadInput, where(lineNo) + ": empty column name in the header");
+                if (cap.channel(name))
+                    return makeError(ErrorCode::BadInput, where(lineNo) + ": column '" + name + "' appears twice");
                 cap.channels.push_back({name, {}});
             }
             haveHeader = true;
             continue;
         }
-        if (cells.size() != cap.channels.size()) {
-            return makeError(ErrorCode::BadInput, sourceName + " line " + std::to_string(lineNo) + ": "
-                                                      + std::to_string(cells.size()) + " fields, the header has "
-                                                      + std::to_string(cap.channels.size()));
-        }
-        for (std::size_t i = 0; i < cells.size(); ++i) {
+        // Data row: parse the fields in place, without a string per cell.
+        std::size_t col = 0, pos = 0;
+        while (true) {
+            const auto comma = t.find(',', pos);
+            const std::string_view cell = trimView(t.substr(pos, comma == std::string_view::npos ? std::string_view::npos : comma - pos));
+            if (col >= cap.channels.size()) {
+                return makeError(ErrorCode::BadInput, where(lineNo) + ": more fields than the "
+                                                          + std::to_string(cap.channels.size()) + " columns of the header");
+            }
             double v = 0.0;
-            if (!parseDouble(cells[i], v)) {
-                return makeError(ErrorCode::BadInput, sourceName + " line " + std::to_string(lineNo) + ", column '"
-                                                          + cap.channels[i].name + "': '" + cells[i]
-                                                          + "' is not a number");
+            if (!parseDouble(cell, v)) {
+                return makeError(ErrorCode::BadInput, where(lineNo) + ", column '" + cap.channels[col].name + "': '"
+                                                          + std::string(cell) + "' is not a number");
             }
             if (!std::isfinite(v)) {
-                return makeError(ErrorCode::BadInput, sourceName + " line " + std::to_string(lineNo) + ", column '"
-                                                          + cap.channels[i].name + "': value is not finite");
+                return makeError(ErrorCode::BadInput, where(lineNo) + ", column '" + cap.channels[col].name
+                                                          + "': value is not finite");
             }
-            cap.channels[i].data.push_back(v);
+            cap.channels[col].data.push_back(v);
+            ++col;
+            if (comma == std::string_view::npos)
+                break;
+            pos = comma + 1;
+        }
+        if (col != cap.channels.size()) {
+            return makeError(ErrorCode::BadInput, where(lineNo) + ": " + std::to_string(col) + " fields, the header has "
+                                                      + std::to_string(cap.channels.size()));
         }
     }
     if (!haveHeader)
