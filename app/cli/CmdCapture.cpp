@@ -3,6 +3,8 @@
 #include "app/cli/CliCommand.h"
 #include "core/device/Drive.h"
 #include "core/io/CaptureCsv.h"
+#include "core/io/FrfCsv.h"
+#include "core/io/SweepCsv.h"
 
 #include <iostream>
 #include <memory>
@@ -23,7 +25,42 @@ struct CaptureOptions {
     int divider = 0;
     std::uint64_t seed = 1;
     std::string out;
+    // --test frf
+    std::string method = "multisweep";
+    double fmin = 10.0;
+    double fmax = 3900.0;
+    int points = 60;
+    double amplitudePct = 5.0;
+    double settle = 0.0;
+    double minMeasure = 0.0;
+    std::string sweepOut;
+    std::string traceOut;
 };
+
+/// Writes the FRF (and the sine-stream recording) of a completed FRF test; prints a JSON summary.
+int writeFrfResult(const std::string& cmd, device::Drive& drive, const CaptureOptions& o)
+{
+    auto res = drive.readFrequencyResponse();
+    if (!res)
+        return reportError(cmd, res.error());
+    auto m = std::make_unique<device::FrfMeasurement>(std::move(res).value());
+    m->frf.metadata["connection"] = o.connect;
+    if (auto st = io::writeFrfCsvFile(o.out, m->frf); !st)
+        return reportError(cmd, st.error());
+    if (!o.sweepOut.empty()) {
+        if (m->sweep.blocks.empty())
+            return reportError(cmd, makeError(ErrorCode::BadInput, "--sweep-out needs a sine-stream method (multisweep or conventional)"));
+        if (auto st = io::writeSweepCsvFile(o.sweepOut, m->sweep); !st)
+            return reportError(cmd, st.error());
+    }
+    std::size_t valid = 0;
+    for (bool v : m->frf.valid)
+        valid += v ? 1 : 0;
+    std::cout << "{\"out\": \"" << o.out << "\", \"method\": \"" << o.method << "\", \"points\": " << m->frf.size()
+              << ", \"valid_points\": " << valid << ", \"motion_time_s\": " << m->motionTimeS
+              << ", \"amplitude_Nm\": " << m->frf.metadata["amplitude_Nm"] << ", \"fs_Hz\": " << m->frf.metadata["fs_Hz"] << "}\n";
+    return 0;
+}
 
 int runCapture(const CaptureOptions& o)
 {
@@ -46,9 +83,27 @@ int runCapture(const CaptureOptions& o)
         req.returnToStart = o.back;
     } else if (o.test == "hold") {
         req.type = device::TestType::Hold;
+    } else if (o.test == "frf") {
+        req.type = device::TestType::Frf;
+        if (o.method == "multisweep")
+            req.frfMethod = device::FrfMethod::MultiSweep;
+        else if (o.method == "conventional")
+            req.frfMethod = device::FrfMethod::Conventional;
+        else if (o.method == "prbs")
+            req.frfMethod = device::FrfMethod::Prbs;
+        else
+            return reportError(cmd, makeError(ErrorCode::BadInput, "--method must be multisweep, conventional or prbs (got '" + o.method + "')"));
+        req.fminHz = o.fmin;
+        req.fmaxHz = o.fmax;
+        req.points = o.points;
+        req.amplitudePct = o.amplitudePct;
+        req.settleS = o.settle;
+        req.minMeasureS = o.minMeasure;
     } else {
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--test must be step, jog or hold (got '" + o.test + "')"));
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--test must be step, jog, hold or frf (got '" + o.test + "')"));
     }
+    if (o.test != "frf" && !o.sweepOut.empty())
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--sweep-out is only for --test frf"));
     if (auto st = (*drive)->startTest(req); !st)
         return reportError(cmd, st.error());
     while (true) {
@@ -60,6 +115,16 @@ int runCapture(const CaptureOptions& o)
         if (status->state != device::TestState::Running)
             return reportError(cmd, makeError(ErrorCode::Safety, std::string("test ") + device::testStateName(status->state)
                                                                      + ": " + status->detail));
+    }
+    if (o.test == "frf") {
+        if (!o.traceOut.empty()) {
+            auto trace = (*drive)->readTrace();
+            if (!trace)
+                return reportError(cmd, trace.error());
+            if (auto st = io::writeCaptureCsvFile(o.traceOut, *trace); !st)
+                return reportError(cmd, st.error());
+        }
+        return writeFrfResult(cmd, **drive, o);
     }
     auto trace = (*drive)->readTrace();
     if (!trace)
@@ -79,7 +144,7 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         auto o = std::make_shared<CaptureOptions>();
         sub.add_option("--connect", o->connect, "sim:PRESET (vmc, dd-table, two-inertia)")->capture_default_str();
         sub.add_option("--axis", o->axis, "axis name, e.g. X")->required();
-        sub.add_option("--test", o->test, "step | jog | hold")->capture_default_str();
+        sub.add_option("--test", o->test, "step | jog | hold | frf")->capture_default_str();
         sub.add_option("--amplitude", o->amplitude, "step: motor velocity step [rad/s]");
         sub.add_option("--distance", o->distance, "jog: distance [m or rad]");
         sub.add_option("--velocity", o->velocity, "jog: velocity [m/s or rad/s]");
@@ -89,7 +154,17 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
             ->capture_default_str();
         sub.add_option("--trace-divider", o->divider, "trace every N velocity periods (0: drive setting)");
         sub.add_option("--seed", o->seed, "noise seed of the simulated machine")->capture_default_str();
-        sub.add_option("--out", o->out, "capture CSV to write")->required();
+        sub.add_option("--method", o->method, "frf: multisweep | conventional | prbs")->capture_default_str();
+        sub.add_option("--fmin", o->fmin, "frf: lowest frequency [Hz]")->capture_default_str();
+        sub.add_option("--fmax", o->fmax, "frf: highest frequency [Hz] (below fs; prbs: at most fs/2)")->capture_default_str();
+        sub.add_option("--points", o->points, "frf: log-spaced frequencies")->capture_default_str();
+        sub.add_option("--amplitude-pct", o->amplitudePct, "frf: excitation amplitude, % of rated torque (at most 50)")
+            ->capture_default_str();
+        sub.add_option("--settle-s", o->settle, "frf: settle time per frequency [s] (0: from the loop dynamics)");
+        sub.add_option("--min-measure-s", o->minMeasure, "frf: measured time per frequency at least [s] (0: from the loop dynamics)");
+        sub.add_option("--sweep-out", o->sweepOut, "frf: sine-stream CSV of the excitation and response");
+        sub.add_option("--trace-out", o->traceOut, "frf: the whole trace as a capture CSV");
+        sub.add_option("--out", o->out, "capture CSV to write (frf: FRF CSV)")->required();
         return [o] { return runCapture(*o); };
     }}};
 

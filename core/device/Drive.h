@@ -3,6 +3,8 @@
 // The drive seam (STYLE.md "A device seam"): synchronous, created and used on one I/O thread.
 // Implementations: the embedded simulated drive (SimulatedDrive) and, later, the Modbus TCP client.
 
+#include "core/dsp/FrequencyResponse.h"
+#include "core/dsp/SineDemodulation.h"
 #include "core/model/Capture.h"
 #include "core/model/Parameter.h"
 #include "core/model/Result.h"
@@ -26,7 +28,17 @@ enum class TestType {
     Step,  ///< velocity step: amplitude [rad/s motor], duration [s]
     Jog,   ///< position move: distance [axis units] at velocity [axis units/s], optional return
     Hold,  ///< position hold for duration [s]
+    Frf,   ///< frequency response: torque injection in the closed velocity loop (FrfTest.h)
 };
+
+/// Excitation and analysis of an FRF test (docs/frequency-response-sim.md).
+enum class FrfMethod {
+    MultiSweep,    ///< sine stream at phase offsets 0, +120°, −120°: valid below the trace rate fs
+    Conventional,  ///< sine stream at one phase offset: valid below fs/2
+    Prbs,          ///< PRBS with Welch H1 and coherence: valid below fs/2
+};
+
+const char* frfMethodName(FrfMethod m);
 
 struct TestRequest {
     std::string axis;
@@ -38,6 +50,21 @@ struct TestRequest {
     bool returnToStart = false; ///< Jog: move back (a reversal)
     double durationS = 0.1;     ///< Step/Hold: recording length; Jog: dwell before and after
     int traceDivider = 0;       ///< 0: the drive's trace.divider parameter
+    // Frf (durationS is not used: the length follows from the plan).
+    FrfMethod frfMethod = FrfMethod::MultiSweep;
+    double fminHz = 10.0;
+    double fmaxHz = 3900.0;
+    int points = 60;
+    double amplitudePct = 5.0;   ///< % of rated torque; refused above kMaxFrfAmplitudePct
+    double settleS = 0.0;        ///< settle per frequency; 0: from the loop's dynamics
+    double minMeasureS = 0.0;    ///< measured time per frequency at least; 0: from the loop's dynamics
+};
+
+/// The result of an FRF test: the closed velocity loop T = −T_c/d (spec §3.2 eq. 3.1) with validity.
+struct FrfMeasurement {
+    dsp::FrequencyResponse frf;
+    dsp::SweepRecording sweep;  ///< sine streams: excitation d and response −T_c per window (empty for PRBS)
+    double motionTimeS = 0.0;   ///< machine time of the excitation (settling included)
 };
 
 enum class TestState { Idle, Running, Completed, Aborted, Faulted };
@@ -66,6 +93,11 @@ public:
     virtual Result<model::Capture> readTrace() = 0;
     /// Stops the motion at once and restores the parameters from before the test.
     virtual Status abortTest() = 0;
+    /// The FRF of the last completed Frf test.
+    virtual Result<FrfMeasurement> readFrequencyResponse()
+    {
+        return makeError(ErrorCode::NotFound, "this drive does not evaluate frequency-response tests");
+    }
 };
 
 struct ConnectionSettings {

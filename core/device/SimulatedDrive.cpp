@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace axistune::device {
@@ -137,7 +138,7 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     if (!s)
         return s.error();
     sim::AxisSimulator& sim = **s;
-    if (!(request.durationS > 0.0) || request.durationS > 600.0)
+    if (request.type != TestType::Frf && (!(request.durationS > 0.0) || request.durationS > 600.0))
         return makeError(ErrorCode::OutOfRange, "test duration must lie in (0, 600] s");
     m_backup = sim.parameters();
     if (request.traceDivider > 0) {
@@ -146,6 +147,8 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     }
     const double start = sim.positionCommand();
     double length = request.durationS;
+    m_frfPlan.reset();
+    m_frf.reset();
     switch (request.type) {
     case TestType::Step: {
         const double maxSpeed = 2.0 * std::numbers::pi * 6000.0 / 60.0;
@@ -177,11 +180,20 @@ Status SimulatedDrive::startTest(const TestRequest& request)
         sim.setPositionProfile(p);
         break;
     }
+    case TestType::Frf: {
+        auto len = startFrf(sim, request);
+        if (!len) {
+            (void)sim.setParameters(m_backup);
+            return len.error();
+        }
+        length = *len;
+        break;
+    }
     }
     sim.startTrace();
     m_request = request;
     m_active = &sim;
-    m_startTime = sim.time();
+    m_startTime = sim.time();  // for Frf: aligned to the first trace sample
     m_endTime = m_startTime + length;
     m_trace.reset();
     m_status = {TestState::Running, 0.0, {}};
@@ -200,9 +212,21 @@ Result<TestStatus> SimulatedDrive::pollTest()
         m_trace = m_active->takeTrace();
         m_trace->metadata["machine"] = m_machine.name;
         m_active->setVelocityCommand({});
+        m_active->setTorqueInjection({});
         (void)m_active->setParameters(m_backup);
         m_status = {TestState::Completed, 1.0, {}};
         m_active = nullptr;
+        if (m_frfPlan) {
+            auto frf = evaluateFrfTrace(*m_frfPlan, *m_trace);
+            if (!frf) {
+                m_status = {TestState::Faulted, 1.0, "FRF evaluation: " + frf.error().detail};
+                return m_status;
+            }
+            FrfMeasurement m = std::move(frf).value();
+            m.frf.metadata["machine"] = m_machine.name;
+            m.frf.metadata["axis"] = m_request->axis;
+            m_frf = std::move(m);
+        }
     }
     return m_status;
 }
@@ -212,6 +236,69 @@ Result<model::Capture> SimulatedDrive::readTrace()
     if (!m_trace)
         return makeError(ErrorCode::NotFound, "no trace: no test has completed");
     return *m_trace;
+}
+
+Result<FrfMeasurement> SimulatedDrive::readFrequencyResponse()
+{
+    if (!m_frf)
+        return makeError(ErrorCode::NotFound, "no frequency response: no FRF test has completed");
+    return *m_frf;
+}
+
+Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestRequest& r)
+{
+    const auto& v = sim.parameters();
+    const double rated = v.at("motor.rated_current") * v.at("motor.torque_constant");
+    if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0) || r.amplitudePct > kMaxFrfAmplitudePct) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "FRF amplitude %g %% of rated torque refused: it must lie in (0, %g] %% (rated torque %.4g Nm)",
+                      r.amplitudePct, kMaxFrfAmplitudePct, rated);
+        return makeError(ErrorCode::OutOfRange, buf);
+    }
+    if (!(r.settleS >= 0.0) || !(r.minMeasureS >= 0.0))
+        return makeError(ErrorCode::OutOfRange, "FRF settle and measure times must not be negative");
+    LoopTiming timing;
+    if (auto t = loopTimingFromParameters(v); t)
+        timing = *t;
+    else if (r.settleS <= 0.0 || r.minMeasureS <= 0.0)
+        return t.error();
+    if (r.settleS > 0.0) {
+        timing.settleS = r.settleS;  // the caller's settle time replaces both rules
+        timing.settlePeriods = 0.0;
+    }
+    if (r.minMeasureS > 0.0)
+        timing.minMeasureS = r.minMeasureS;
+    FrfPlanOptions po;
+    po.method = r.frfMethod;
+    po.fsHz = 1.0 / sim.tracePeriod();
+    po.fminHz = r.fminHz;
+    po.fmaxHz = r.fmaxHz;
+    po.points = r.points;
+    po.amplitudeNm = r.amplitudePct / 100.0 * rated;
+    po.timing = timing;
+    po.voltageLimitV = v.at("drive.max_voltage");
+    auto plan = planFrfTest(po);
+    if (!plan)
+        return plan.error();
+    // The axis holds velocity 0 while the disturbance acts (spec §4.3 step 1).
+    sim.setControlMode(sim::ControlMode::Velocity);
+    sim.setVelocityCommand({});
+    // Run to the next current tick that is also a traced velocity tick: trace sample 0 is there.
+    const double h = sim.currentPeriod();
+    const auto ticksPerSample = std::llround(sim.tracePeriod() / h);
+    const auto now = std::llround(sim.time() / h);
+    const auto first = (now + ticksPerSample - 1) / ticksPerSample * ticksPerSample;
+    sim.runTicks(first - now);
+    auto shared = std::make_shared<const FrfPlan>(std::move(plan).value());
+    const double t0 = static_cast<double>(first) * h;
+    const double sampleS = sim.tracePeriod();
+    sim.setTorqueInjection([shared, t0, sampleS, h](double t) {
+        // Whole current ticks from the first sample, as a fractional trace-sample position.
+        const double ticks = std::round((t - t0) / h);
+        return frfExcitation(*shared, ticks * h / sampleS);
+    });
+    m_frfPlan = shared;
+    return shared->durationS();
 }
 
 Status SimulatedDrive::abortTest()
@@ -224,6 +311,7 @@ Status SimulatedDrive::abortTest()
     m_active->setTorqueInjection({});
     m_active->setControlMode(sim::ControlMode::Velocity);
     (void)m_active->setParameters(m_backup);
+    m_frfPlan.reset();
     m_status = {TestState::Aborted, m_status.progress, "aborted by the user"};
     m_active = nullptr;
     return Status::success();

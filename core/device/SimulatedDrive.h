@@ -5,6 +5,7 @@
 // and can abort between polls.
 
 #include "core/device/Drive.h"
+#include "core/device/FrfTest.h"
 #include "core/sim/AxisSimulator.h"
 
 #include <map>
@@ -25,6 +26,7 @@ public:
     Result<TestStatus> pollTest() override;
     Result<model::Capture> readTrace() override;
     Status abortTest() override;
+    Result<FrfMeasurement> readFrequencyResponse() override;
 
     /// Machine time advanced per pollTest() call [s].
     void setSliceSeconds(double s) { m_slice = s; }
@@ -33,6 +35,8 @@ public:
 private:
     SimulatedDrive() = default;
     Result<sim::AxisSimulator*> axisSim(const std::string& axis);
+    /// Plans the FRF test, aligns to the trace grid and installs the injection; returns its length [s].
+    Result<double> startFrf(sim::AxisSimulator& sim, const TestRequest& request);
 
     sim::MachineDefinition m_machine;
     std::map<std::string, std::unique_ptr<sim::AxisSimulator>> m_axes;
@@ -45,6 +49,8 @@ private:
     double m_startTime = 0.0;
     TestStatus m_status;
     std::optional<model::Capture> m_trace;
+    std::shared_ptr<const FrfPlan> m_frfPlan;
+    std::optional<FrfMeasurement> m_frf;
 };
 
 }  // namespace axistune::device

@@ -1,0 +1,306 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// FRF test planning and evaluation: velocity-loop FRF from a torque disturbance injected at the
+// current-loop rate, spec/current-loop-and-multisweep-frf.md §3.2 (eq. 3.1), §3.5 (three-phase
+// multi-sweep, implementation form), §3.6 (alias-free ranges, excitation at the current-loop rate),
+// §4.3 (wizard C). Settle and window from the closed velocity loop's slowest pole (docs/frequency-response-sim.md).
+#include "core/device/FrfTest.h"
+
+#include "core/dsp/Excitation.h"
+#include "core/dsp/Welch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace axistune::device {
+namespace {
+
+std::string num(double v)
+{
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+/// The frequency of the window grid nearest to f: f' = (p + c)·fs/M with M ≥ mMin, p ≥ pMin.
+struct GridPoint {
+    double freqHz = 0.0;
+    std::size_t m = 0;
+};
+GridPoint nearestGridFrequency(double f, double fs, double c, std::size_t mMin, long pMin)
+{
+    GridPoint best;
+    double bestErr = std::numeric_limits<double>::infinity();
+    // Up to twice the minimum window, and far enough for p = pMin to reach f.
+    const double mReach = (static_cast<double>(pMin) + c + 1.0) * fs / f;
+    const std::size_t span = std::max<std::size_t>({2 * mMin, 64, static_cast<std::size_t>(std::min(mReach, 1e7))});
+    for (std::size_t m = mMin; m <= mMin + span; ++m) {
+        const double md = static_cast<double>(m);
+        const long p = std::max(pMin, std::lround(f * md / fs - c));
+        const double fp = (static_cast<double>(p) + c) * fs / md;
+        if (!(fp < fs))
+            continue;
+        const double err = std::abs(fp - f) / f;
+        if (err < bestErr) {
+            bestErr = err;
+            best = {fp, m};
+        }
+        if (err < 1e-3)
+            break;  // the shortest window that lands within 0.1 % (else the best of the span)
+    }
+    return best;
+}
+
+std::vector<double> logSpaced(double f0, double f1, int n)
+{
+    if (n == 1)
+        return {f0};
+    std::vector<double> out;
+    for (int i = 0; i < n; ++i)
+        out.push_back(f0 * std::pow(f1 / f0, static_cast<double>(i) / (n - 1)));
+    return out;
+}
+
+}  // namespace
+
+const char* frfMethodName(FrfMethod m)
+{
+    switch (m) {
+    case FrfMethod::MultiSweep: return "multisweep";
+    case FrfMethod::Conventional: return "conventional";
+    case FrfMethod::Prbs: return "prbs";
+    }
+    return "?";
+}
+
+Result<LoopTiming> loopTimingFromParameters(const model::ParameterValues& v, double settleTc, double measureTc,
+                                            double settlePeriods)
+{
+    auto get = [&v](const char* k) {
+        auto it = v.find(k);
+        return it == v.end() ? 0.0 : it->second;
+    };
+    const double j = get("velocity.inertia"), kp = get("velocity.kp"), ki = get("velocity.ki");
+    if (!(j > 0.0) || !(kp > 0.0)) {
+        return makeError(ErrorCode::BadInput, "the settle time follows from velocity.inertia, velocity.kp and velocity.ki: "
+                                              "velocity.inertia and velocity.kp must be positive (or give the settle time)");
+    }
+    double tau = 0.0;
+    const double disc = kp * kp - 4.0 * j * ki;
+    if (ki <= 0.0)
+        tau = j / kp;
+    else if (disc >= 0.0)
+        tau = 2.0 * j / (kp - std::sqrt(disc));  // the slow real pole (−k_p + √disc)/(2J)
+    else
+        tau = 2.0 * j / kp;  // complex pair, real part −k_p/(2J)
+    LoopTiming t;
+    t.timeConstantS = tau;
+    t.settleS = settleTc * tau;
+    t.settlePeriods = settlePeriods;
+    t.minMeasureS = measureTc * tau;
+    return t;
+}
+
+Result<FrfPlan> planFrfTest(const FrfPlanOptions& o)
+{
+    if (!(o.fsHz > 0.0))
+        return makeError(ErrorCode::BadInput, "FRF test: trace rate must be positive");
+    if (!std::isfinite(o.amplitudeNm) || !(o.amplitudeNm > 0.0))
+        return makeError(ErrorCode::OutOfRange, "FRF test: amplitude must be positive");
+    if (!std::isfinite(o.fminHz) || !(o.fminHz > 0.0))
+        return makeError(ErrorCode::OutOfRange, "FRF test: fmin must be positive (got " + num(o.fminHz) + " Hz)");
+    if (!std::isfinite(o.fmaxHz) || o.fmaxHz < o.fminHz)
+        return makeError(ErrorCode::OutOfRange, "FRF test: fmax must not be below fmin");
+    const double fTop = o.method == FrfMethod::Prbs ? 0.5 * o.fsHz : o.fsHz;
+    if (!(o.fmaxHz < fTop) && !(o.method == FrfMethod::Prbs && o.fmaxHz == fTop)) {
+        return makeError(ErrorCode::OutOfRange, "FRF test: fmax " + num(o.fmaxHz) + " Hz must lie below "
+                                                    + num(fTop) + " Hz (" + (o.method == FrfMethod::Prbs ? "fs/2" : "fs")
+                                                    + " at the trace rate " + num(o.fsHz) + " Hz)");
+    }
+    if (o.points < 1 || (o.points == 1 && o.fmaxHz != o.fminHz) || o.points > 10000)
+        return makeError(ErrorCode::OutOfRange, "FRF test: points must lie in [2, 10000] (1 only when fmin = fmax)");
+    if (!(o.timing.settleS >= 0.0) || !(o.timing.minMeasureS >= 0.0) || o.timing.settleS > 10.0 || o.timing.minMeasureS > 10.0
+        || !(o.timing.settlePeriods >= 0.0) || !(o.timing.maxSettleS >= 0.0))
+        return makeError(ErrorCode::OutOfRange, "FRF test: settle and measure times must lie in [0, 10] s");
+
+    FrfPlan plan;
+    plan.method = o.method;
+    plan.fsHz = o.fsHz;
+    plan.amplitudeNm = o.amplitudeNm;
+    plan.timing = o.timing;
+    plan.fminHz = o.fminHz;
+    plan.fmaxHz = o.fmaxHz;
+    plan.points = o.points;
+    plan.voltageLimitV = o.voltageLimitV;
+    const auto settle = static_cast<std::size_t>(std::ceil(o.timing.settleS * o.fsHz - 1e-9));
+
+    if (o.method == FrfMethod::Prbs) {
+        std::size_t n = 64;
+        while (n < 65536 && static_cast<double>(n) < o.fsHz / o.fminHz)
+            n *= 2;
+        unsigned order = 0;
+        while ((std::size_t{1} << order) < n)
+            ++order;
+        const std::size_t record = 8 * n;  // 15 Hann segments with half overlap
+        dsp::PrbsOptions po;
+        po.order = order;
+        po.amplitude = o.amplitudeNm;
+        po.amplitudeLimit = o.amplitudeNm;
+        po.periods = (settle + record) / (n - 1) + 1;
+        auto seq = dsp::makePrbs(po);
+        if (!seq)
+            return seq.error();
+        plan.prbs.assign(seq->begin(), seq->begin() + static_cast<std::ptrdiff_t>(settle + record));
+        plan.prbsStart = static_cast<std::int64_t>(settle);
+        plan.nperseg = n;
+        plan.totalSamples = settle + record;
+        return plan;
+    }
+
+    const bool multi = o.method == FrfMethod::MultiSweep;
+    const double c = multi ? 1.0 / 3.0 : 0.0;
+    const std::size_t windows = multi ? 3 : 1;
+    const auto mMin = std::max<std::size_t>(
+        1, static_cast<std::size_t>(std::ceil(o.timing.minMeasureS * o.fsHz / static_cast<double>(windows) - 1e-9)));
+    std::int64_t cursor = 0;
+    double last = 0.0;
+    for (double target : logSpaced(o.fminHz, o.fmaxHz, o.points)) {
+        const GridPoint g = nearestGridFrequency(target, o.fsHz, c, mMin, multi ? 0 : 1);
+        if (g.m == 0 || g.freqHz <= last)
+            continue;  // two targets on one grid frequency: measured once
+        last = g.freqHz;
+        const double settleF = std::max(o.timing.settleS, std::min(o.timing.settlePeriods / g.freqHz, o.timing.maxSettleS));
+        const auto settleSamples = static_cast<std::size_t>(std::ceil(settleF * o.fsHz - 1e-9));
+        for (std::size_t w = 0; w < windows; ++w) {
+            FrfSegment s;
+            s.freqHz = g.freqHz;
+            s.phaseOffsetDeg = dsp::kMultiSweepOffsetsDeg[w];
+            s.settleSamples = w == 0 ? settleSamples : 0;
+            s.windowStart = cursor + static_cast<std::int64_t>(s.settleSamples);
+            s.measureSamples = g.m;
+            cursor = s.windowStart + static_cast<std::int64_t>(g.m);
+            plan.segments.push_back(s);
+        }
+    }
+    plan.totalSamples = static_cast<std::size_t>(cursor);
+    return plan;
+}
+
+double frfExcitation(const FrfPlan& plan, double s)
+{
+    if (s < 0.0 || s >= static_cast<double>(plan.totalSamples))
+        return 0.0;
+    if (plan.method == FrfMethod::Prbs) {
+        const auto i = static_cast<std::size_t>(std::floor(s));
+        return i < plan.prbs.size() ? plan.prbs[i] : 0.0;
+    }
+    // The last segment whose window ends after s.
+    auto it = std::upper_bound(plan.segments.begin(), plan.segments.end(), s, [](double x, const FrfSegment& seg) {
+        return x < static_cast<double>(seg.windowStart) + static_cast<double>(seg.measureSamples);
+    });
+    if (it == plan.segments.end())
+        return 0.0;
+    const double cycles = std::fmod(it->freqHz * (s - static_cast<double>(it->windowStart)) / plan.fsHz, 1.0);
+    return plan.amplitudeNm * std::sin(2.0 * std::numbers::pi * cycles + it->phaseOffsetDeg * std::numbers::pi / 180.0);
+}
+
+Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace)
+{
+    const auto* d = trace.channel("injection_Nm");
+    const auto* tc = trace.channel("torque_cmd_Nm");
+    if (!d || !tc)
+        return makeError(ErrorCode::BadInput, "FRF trace: channels injection_Nm and torque_cmd_Nm are required");
+    if (d->data.size() < plan.totalSamples)
+        return makeError(ErrorCode::BadInput, "FRF trace: " + std::to_string(d->data.size()) + " samples, the plan needs "
+                                                  + std::to_string(plan.totalSamples));
+    FrfMeasurement out;
+    out.motionTimeS = plan.durationS();
+    if (plan.method == FrfMethod::Prbs) {
+        const auto first = static_cast<std::size_t>(plan.prbsStart);
+        const std::size_t n = plan.totalSamples - first;
+        std::vector<double> x(d->data.begin() + static_cast<std::ptrdiff_t>(first),
+                              d->data.begin() + static_cast<std::ptrdiff_t>(first + n));
+        std::vector<double> y(n);
+        for (std::size_t i = 0; i < n; ++i)
+            y[i] = -tc->data[first + i];
+        dsp::WelchOptions wo;
+        wo.nperseg = plan.nperseg;
+        auto full = dsp::welchFrf(x, y, plan.fsHz, wo, dsp::FrfEstimator::H1);
+        if (!full)
+            return full.error();
+        // Bins in [fmin, fmax], thinned to about `points` log-spaced frequencies.
+        double next = plan.fminHz;
+        const double step = plan.points > 1 ? std::pow(plan.fmaxHz / plan.fminHz, 1.0 / (plan.points - 1)) : 2.0;
+        for (std::size_t i = 0; i < full->size(); ++i) {
+            const double f = full->freqHz[i];
+            if (f < plan.fminHz * (1 - 1e-12) || f > plan.fmaxHz * (1 + 1e-12) || f < next * (1 - 1e-12))
+                continue;
+            out.frf.push(f, full->h[i], full->coherence[i], full->valid[i] && f < 0.5 * plan.fsHz);
+            next = f * step;
+        }
+        out.frf.metadata["method"] = "prbs";
+        out.frf.metadata["fs_Hz"] = num(plan.fsHz);
+        out.frf.metadata["nperseg"] = std::to_string(plan.nperseg);
+    } else {
+        dsp::SweepRecording& rec = out.sweep;
+        rec.fsHz = plan.fsHz;
+        rec.amplitude = plan.amplitudeNm;
+        rec.metadata["excitation"] = "injection_Nm";
+        rec.metadata["response"] = "-torque_cmd_Nm";
+        for (const auto& s : plan.segments) {
+            dsp::SweepBlock b;
+            b.freqHz = s.freqHz;
+            b.phaseOffsetDeg = s.phaseOffsetDeg;
+            const std::int64_t begin = s.windowStart - static_cast<std::int64_t>(s.settleSamples);
+            const std::int64_t end = s.windowStart + static_cast<std::int64_t>(s.measureSamples);
+            for (std::int64_t i = begin; i < end; ++i) {
+                b.sample.push_back(i - s.windowStart);
+                b.excitation.push_back(d->data[static_cast<std::size_t>(i)]);
+                b.response.push_back(-tc->data[static_cast<std::size_t>(i)]);
+            }
+            rec.blocks.push_back(std::move(b));
+        }
+        auto frf = dsp::sineStreamFrf(rec);
+        if (!frf)
+            return frf.error();
+        out.frf = std::move(frf).value();
+        // A window in which the current loop ran into its voltage limit is not a linear measurement.
+        const auto* volt = trace.channel("voltage_V");
+        std::size_t clamped = 0;
+        if (volt && plan.voltageLimitV > 0.0) {
+            for (const auto& s : plan.segments) {
+                bool hit = false;
+                for (std::size_t i = 0; i < s.measureSamples && !hit; ++i)
+                    hit = std::abs(volt->data[static_cast<std::size_t>(s.windowStart) + i]) >= 0.999 * plan.voltageLimitV;
+                if (!hit)
+                    continue;
+                auto it = std::find(out.frf.freqHz.begin(), out.frf.freqHz.end(), s.freqHz);
+                if (it != out.frf.freqHz.end()) {
+                    auto idx = static_cast<std::size_t>(it - out.frf.freqHz.begin());
+                    clamped += out.frf.valid[idx] ? 1 : 0;
+                    out.frf.valid[idx] = false;
+                }
+            }
+        }
+        out.frf.metadata["voltage_clamped_points"] = std::to_string(clamped);
+    }
+    auto& md = out.frf.metadata;
+    md["input"] = "injection_Nm";
+    md["output"] = "-torque_cmd_Nm";
+    md["measurement"] = "complementary";  // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
+    md["amplitude_Nm"] = num(plan.amplitudeNm);
+    md["settle_s"] = num(plan.timing.settleS);
+    md["settle_periods"] = num(plan.timing.settlePeriods);
+    md["min_measure_s"] = num(plan.timing.minMeasureS);
+    md["loop_time_constant_s"] = num(plan.timing.timeConstantS);
+    md["motion_time_s"] = num(out.motionTimeS);
+    for (const auto& [k, v] : md) {
+        if (k != "method" && k != "fs_Hz")
+            out.sweep.metadata[k] = v;
+    }
+    return out;
+}
+
+}  // namespace axistune::device

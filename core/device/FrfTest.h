@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The frequency-response test of a drive (spec/current-loop-and-multisweep-frf.md §3.2, §3.5, §4.3):
+// a torque disturbance d is added to the velocity-controller output inside the closed velocity loop
+// (at the current-loop rate), the velocity-controller output T_c and the motor velocity are traced at
+// the trace rate, and the FRF is the closed loop T = −T_c/d = PC/(1+PC) (eq. 3.1 with ω* = 0).
+//
+// Sine streams are planned with a *continuous* excitation per frequency: one settle time, then three
+// windows of M samples each spanning p + 1/3 periods (f = (p + 1/3)·fs/M exactly), so that the
+// windows see the phase offsets 0, +120° and +240° ≡ −120° of one uninterrupted sine — the three
+// sweeps of the multi-sweep method without a settle between them. The conventional method uses one
+// window of p whole periods (f = p·fs/M). Settle time and minimum window come from the velocity
+// loop's own dynamics (the slowest closed-loop time constant of the drive's PI and inertia setting);
+// see docs/frequency-response-sim.md.
+
+#include "core/device/Drive.h"
+#include "core/dsp/FrequencyResponse.h"
+#include "core/dsp/SineDemodulation.h"
+#include "core/model/Capture.h"
+#include "core/model/Parameter.h"
+#include "core/model/Result.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace axistune::device {
+
+/// Amplitude limit of the FRF excitation, % of the rated torque (rated current × torque constant).
+inline constexpr double kMaxFrfAmplitudePct = 50.0;
+
+/// Timing derived from the velocity loop's own dynamics.
+struct LoopTiming {
+    double timeConstantS = 0.0;  ///< slowest closed-loop time constant of J s² + k_p s + k_i
+    double settleS = 0.0;        ///< settle time after each frequency change ...
+    double settlePeriods = 0.0;  ///< ... and at least this many periods of the new frequency
+    double maxSettleS = 0.5;     ///< cap of the period rule
+    double minMeasureS = 0.0;    ///< minimum measured time per frequency (all windows together)
+};
+
+/// Slowest time constant 1/|Re s| of the rigid velocity loop J s² + k_p s + k_i = 0 (J = velocity.inertia),
+/// settle = max(settleTimeConstants · τ, settlePeriods / f) (the period rule covers lightly damped
+/// mechanical modes the PI setting does not show, capped at maxSettleS), minimum measured time =
+/// measureTimeConstants · τ.
+/// Errors when the drive's inertia setting or k_p is not positive.
+Result<LoopTiming> loopTimingFromParameters(const model::ParameterValues& values, double settleTimeConstants = 5.0,
+                                            double measureTimeConstants = 2.0, double settlePeriods = 8.0);
+
+/// One window (k ≥ 0) of one frequency at one phase offset, with its settle samples before it.
+struct FrfSegment {
+    double freqHz = 0.0;
+    double phaseOffsetDeg = 0.0;
+    std::int64_t windowStart = 0;  ///< trace sample index of k = 0
+    std::size_t settleSamples = 0; ///< samples before windowStart that belong to this segment
+    std::size_t measureSamples = 0;
+};
+
+struct FrfPlan {
+    FrfMethod method = FrfMethod::MultiSweep;
+    double fsHz = 0.0;          ///< trace rate
+    double amplitudeNm = 0.0;
+    std::vector<FrfSegment> segments;  ///< sine streams, in time order
+    std::vector<double> prbs;          ///< PRBS: one value per trace sample (after prbsStart)
+    std::int64_t prbsStart = 0;        ///< PRBS: first sample of the analysed record (after settling)
+    std::size_t nperseg = 0;           ///< PRBS: Welch segment length
+    std::size_t totalSamples = 0;
+    LoopTiming timing;
+    double voltageLimitV = 0.0;  ///< points whose traced voltage reaches it are marked invalid (0: no check)
+    double fminHz = 0.0, fmaxHz = 0.0;  ///< requested range (PRBS output is thinned to it)
+    int points = 0;
+    double durationS() const { return static_cast<double>(totalSamples) / fsHz; }
+};
+
+struct FrfPlanOptions {
+    FrfMethod method = FrfMethod::MultiSweep;
+    double fsHz = 4000.0;
+    double fminHz = 10.0;
+    double fmaxHz = 3900.0;
+    int points = 60;
+    double amplitudeNm = 0.0;
+    LoopTiming timing;
+    double voltageLimitV = 0.0;
+};
+
+/// Frequencies log-spaced from fmin to fmax (points ≥ 2, or one point when fmin = fmax), each moved
+/// to the shortest window of the grid within 0.1 % of it (else the nearest within three times the
+/// minimum window; up to about 1 % for short windows when f/fs is a simple fraction).
+/// Errors name the option: fmin ≤ 0, fmax < fmin, fmax ≥ fs (multi-sweep) or ≥ fs/2 (PRBS), points < 1.
+Result<FrfPlan> planFrfTest(const FrfPlanOptions& options);
+
+/// The excitation at a (fractional) trace-sample position s (current-loop ticks between samples).
+/// Zero outside the plan.
+double frfExcitation(const FrfPlan& plan, double s);
+
+/// The sine-stream recording of a completed trace (channels injection_Nm and torque_cmd_Nm, the
+/// response is −torque_cmd_Nm), and the FRF: sine streams by dsp::sineStreamFrf, PRBS by Welch H1.
+Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace);
+
+}  // namespace axistune::device
