@@ -57,20 +57,24 @@ std::string simRegisterMapJson()
     add("status.trace_channels", 114, "u16", 1, "channels in the trace");
     add("status.reserved", 115, "u16", 1, "reserved, reads 0");
     add("status.trace_rate_hz", 116, "f64", 4, "trace sample rate [Hz]");
-    add("status.message", 120, "string", 32, "why the last request or test was refused or stopped, 64 ASCII characters");
+    add("status.message", 120, "string", 64, "why the last request or test was refused or stopped, 128 ASCII characters");
     add("test.type", 200, "u16", 1, "enum test_type");
     add("test.flags", 201, "u16", 1, "bit set of enum test_flag");
     add("test.trace_divider", 202, "u16", 1, "trace every N velocity periods (0: parameter trace.divider)");
-    add("test.freq_count", 203, "u16", 1, "frequencies of a sine-stream test (reserved)");
+    add("test.freq_count", 203, "u16", 1, "frf: number of frequencies");
     add("test.trace_channel_mask", 204, "u32", 2, "bit i: keep trace channel i (0: all)");
-    add("test.amplitude", 206, "f64", 4, "step: motor velocity step [rad/s]");
+    add("test.amplitude", 206, "f64", 4, "step: motor velocity step [rad/s]; frf: excitation amplitude [% of rated torque]");
     add("test.distance", 210, "f64", 4, "jog: distance [m or rad]");
     add("test.velocity", 214, "f64", 4, "jog: velocity [m/s or rad/s]");
     add("test.acceleration", 218, "f64", 4, "jog: acceleration [m/s^2 or rad/s^2]");
     add("test.duration", 222, "f64", 4, "step/hold: length; jog: dwell before and after [s]");
     add("test.offset", 226, "f64", 4, "excitation offset (reserved)");
-    add("test.freq_start", 230, "f64", 4, "first frequency [Hz] (reserved)");
-    add("test.freq_end", 234, "f64", 4, "last frequency [Hz] (reserved)");
+    add("test.freq_start", 230, "f64", 4, "frf: lowest frequency [Hz]");
+    add("test.freq_end", 234, "f64", 4, "frf: highest frequency [Hz]");
+    add("test.frf_method", 238, "u16", 1, "frf: enum frf_method");
+    add("test.reserved", 239, "u16", 1, "reserved, reads 0");
+    add("test.settle", 240, "f64", 4, "frf: settle time per frequency [s] (0: from the loop dynamics)");
+    add("test.min_measure", 244, "f64", 4, "frf: minimum measured time per frequency [s] (0: from the loop dynamics)");
     add("command.code", 300, "u16", 1, "enum command; written together with command.token");
     add("command.token", 301, "u16", 1, "sequence token: a command repeated with the same token is not executed twice");
     add("heartbeat.counter", 310, "u16", 1, "written by the client while a test runs; the watchdog stops the test when it goes silent");
@@ -83,10 +87,11 @@ std::string simRegisterMapJson()
         {"fault", {{"none", 0}, {"amplitude_limit", 1}, {"travel_limit", 2}, {"speed_limit", 3}, {"following_error", 4},
                    {"heartbeat_lost", 5}, {"drive_fault", 6}, {"aborted", 7}}},
         {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}}},
-        {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}}},
+        {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}}},
+        {"frf_method", {{"multisweep", 0}, {"conventional", 1}, {"prbs", 2}}},
         {"test_flag", {{"return_to_start", 1}}},
         {"axis_kind", {{"linear", 0}, {"rotary", 1}}},
-        {"trace_channel", {{"names", 65534}, {"metadata", 65535}}},
+        {"trace_channel", {{"frf_metadata", 65532}, {"frf_data", 65533}, {"names", 65534}, {"metadata", 65535}}},
     };
     // Every drive parameter (the union of linear and rotary axes), in catalogue order.
     ordered_json params = ordered_json::array();

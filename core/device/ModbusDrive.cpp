@@ -348,15 +348,23 @@ Status ModbusDrive::startTest(const TestRequest& request)
     auto a = axisInfo(request.axis);
     if (!a)
         return a.error();
-    const char* type = request.type == TestType::Step ? "step" : request.type == TestType::Jog ? "jog" : "hold";
+    const char* type = request.type == TestType::Step ? "step" : request.type == TestType::Jog ? "jog"
+                     : request.type == TestType::Hold ? "hold" : "frf";
     const int code = m_map.code("test_type", type);
     if (code < 0)
         return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no test type '" + type + "'");
     if (request.traceDivider < 0 || request.traceDivider > 65535)
         return makeError(ErrorCode::OutOfRange, "trace divider must lie in 0..65535");
+    // The whole test block in one write: from the first to the last "test." field of the map.
+    int lo = 65536, hi = 0;
+    for (const auto& [n, f] : m_map.fields) {
+        if (n.rfind("test.", 0) == 0)
+            lo = std::min(lo, f.address), hi = std::max(hi, f.address + f.count);
+    }
     const auto& first = m_map.field("test.type");
-    const auto& last = m_map.field("test.freq_end");
-    std::vector<std::uint16_t> w(static_cast<std::size_t>(last.address + last.count - first.address));
+    std::vector<std::uint16_t> w(static_cast<std::size_t>(hi - lo));
+    if (first.address != lo || hi - lo > 123)
+        return makeError(ErrorCode::Internal, "register map " + m_map.family + ": the test block must start at test.type and fit one write");
     auto at = [&](const std::string& f) { return &w[static_cast<std::size_t>(m_map.field(f).address - first.address)]; };
     const WordOrder o = m_map.wordOrder;
     *at("test.type") = static_cast<std::uint16_t>(code);
@@ -367,6 +375,21 @@ Status ModbusDrive::startTest(const TestRequest& request)
     encodeF64(request.velocity, o, at("test.velocity"));
     encodeF64(request.acceleration, o, at("test.acceleration"));
     encodeF64(request.durationS, o, at("test.duration"));
+    if (request.type == TestType::Frf) {
+        const char* method = request.frfMethod == FrfMethod::Prbs ? "prbs"
+                           : request.frfMethod == FrfMethod::Conventional ? "conventional" : "multisweep";
+        if (!m_map.fields.count("test.frf_method") || m_map.code("frf_method", method) < 0)
+            return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no FRF method '" + method + "'");
+        if (request.points < 1 || request.points > 65535)
+            return makeError(ErrorCode::OutOfRange, "FRF points must lie in 1..65535");
+        *at("test.frf_method") = static_cast<std::uint16_t>(m_map.code("frf_method", method));
+        *at("test.freq_count") = static_cast<std::uint16_t>(request.points);
+        encodeF64(request.amplitudePct, o, at("test.amplitude"));
+        encodeF64(request.fminHz, o, at("test.freq_start"));
+        encodeF64(request.fmaxHz, o, at("test.freq_end"));
+        encodeF64(request.settleS, o, at("test.settle"));
+        encodeF64(request.minMeasureS, o, at("test.min_measure"));
+    }
     if (auto st = writeRegs(a->unit, first.address, w.data(), static_cast<int>(w.size()), "writing the test configuration"); !st)
         return st;
     if (auto st = command(a->unit, "start_test"); !st)
@@ -494,6 +517,95 @@ Result<model::Capture> ModbusDrive::readTrace()
         }
     }
     return cap;
+}
+
+Result<std::vector<double>> ModbusDrive::readBlob(int unit, std::uint16_t channel)
+{
+    const auto& sel = m_map.field("trace.select_offset");
+    const auto& win = m_map.field("trace.window");
+    const std::uint32_t perPage = static_cast<std::uint32_t>(win.count / 4);
+    std::vector<std::uint16_t> buf(static_cast<std::size_t>(win.count));
+    std::vector<double> blob;
+    std::size_t length = 1;  // known after the first page: element 0 is the length
+    constexpr std::size_t kMaxLength = 50'000'000;
+    for (std::uint32_t off = 0; off < length; off += perPage) {
+        std::uint16_t w[3];
+        encodeU32(off, m_map.wordOrder, w);
+        w[2] = channel;
+        auto st = transact(unit, "reading the frequency response", Retry::Idempotent, [&](modbus_t* c) {
+            return modbus_write_and_read_registers(c, sel.address, 3, w, win.address, win.count, buf.data());
+        });
+        if (!st)
+            return st.error();
+        for (std::uint32_t k = 0; k < perPage && off + k < length; ++k) {
+            blob.push_back(decodeF64(&buf[4 * k], m_map.wordOrder));
+            if (off + k == 0) {
+                if (!(blob[0] >= 3.0 && blob[0] <= static_cast<double>(kMaxLength)))
+                    return makeError(ErrorCode::NotFound, m_uri.text + ": no frequency response: no FRF test has completed");
+                length = static_cast<std::size_t>(blob[0]);
+            }
+        }
+    }
+    return blob;
+}
+
+Result<FrfMeasurement> ModbusDrive::readFrequencyResponse()
+{
+    const int unit = m_testUnit >= 0 ? m_testUnit : m_map.unitIdBase;
+    const int dataSel = m_map.code("trace_channel", "frf_data"), metaSel = m_map.code("trace_channel", "frf_metadata");
+    if (dataSel < 0 || metaSel < 0)
+        return makeError(ErrorCode::NotFound, "drive family " + m_map.family + " does not serve frequency responses");
+    auto blob = readBlob(unit, static_cast<std::uint16_t>(dataSel));
+    if (!blob)
+        return blob.error();
+    auto meta = readText(unit, static_cast<std::uint16_t>(metaSel));
+    if (!meta)
+        return meta.error();
+    const std::vector<double>& b = *blob;
+    std::size_t i = 1;
+    auto malformed = [&] { return makeError(ErrorCode::Device, m_uri.text + ": malformed frequency response from the drive"); };
+    auto take = [&](std::size_t n) { return i + n <= b.size(); };
+    FrfMeasurement m;
+    if (!take(2))
+        return malformed();
+    m.motionTimeS = b[i++];
+    const auto points = static_cast<std::size_t>(b[i++]);
+    if (!take(5 * points + 3))
+        return malformed();
+    for (std::size_t p = 0; p < points; ++p, i += 5)
+        m.frf.push(b[i], {b[i + 1], b[i + 2]}, b[i + 3], b[i + 4] != 0.0);
+    m.sweep.fsHz = b[i++];
+    m.sweep.amplitude = b[i++];
+    const auto blocks = static_cast<std::size_t>(b[i++]);
+    for (std::size_t k = 0; k < blocks; ++k) {
+        if (!take(3))
+            return malformed();
+        dsp::SweepBlock blk;
+        blk.freqHz = b[i];
+        blk.phaseOffsetDeg = b[i + 1];
+        const auto n = static_cast<std::size_t>(b[i + 2]);
+        i += 3;
+        if (!take(3 * n))
+            return malformed();
+        for (std::size_t s = 0; s < n; ++s)
+            blk.sample.push_back(static_cast<std::int64_t>(b[i + s]));
+        blk.excitation.assign(b.begin() + static_cast<std::ptrdiff_t>(i + n), b.begin() + static_cast<std::ptrdiff_t>(i + 2 * n));
+        blk.response.assign(b.begin() + static_cast<std::ptrdiff_t>(i + 2 * n), b.begin() + static_cast<std::ptrdiff_t>(i + 3 * n));
+        i += 3 * n;
+        m.sweep.blocks.push_back(std::move(blk));
+    }
+    std::stringstream ms(*meta);
+    for (std::string line; std::getline(ms, line);) {
+        const auto eq = line.find('=');
+        if (eq == std::string::npos)
+            continue;
+        const std::string k = line.substr(0, eq), v = line.substr(eq + 1);
+        if (k.rfind("frf.", 0) == 0)
+            m.frf.metadata[k.substr(4)] = v;
+        else if (k.rfind("sweep.", 0) == 0)
+            m.sweep.metadata[k.substr(6)] = v;
+    }
+    return m;
 }
 
 Status ModbusDrive::abortTest()

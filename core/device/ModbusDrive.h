@@ -44,6 +44,8 @@ public:
     Result<TestStatus> pollTest() override;
     Result<model::Capture> readTrace() override;
     Status abortTest() override;
+    /// The FRF the drive evaluated for the last completed Frf test (float64 on the wire: exact).
+    Result<FrfMeasurement> readFrequencyResponse() override;
 
     /// Writes the heartbeat register now (pollTest() does this every kHeartbeatPeriod while a test runs).
     Status heartbeat();
@@ -76,6 +78,7 @@ private:
     Status loadAxes();
     Result<AxisInfo> axisInfo(const std::string& axis);
     Result<std::string> readText(int unit, std::uint16_t channel);
+    Result<std::vector<double>> readBlob(int unit, std::uint16_t channel);
     Error exceptionError(int unit, int exceptionCode, const std::string& what);
 
     ModbusUri m_uri;

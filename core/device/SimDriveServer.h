@@ -67,10 +67,10 @@ private:
         sim::AxisSimulator* sim = nullptr;
     };
     struct TestConfig {
-        std::uint16_t type = 0, flags = 0, traceDivider = 0, freqCount = 0;
+        std::uint16_t type = 0, flags = 0, traceDivider = 0, freqCount = 0, frfMethod = 0;
         std::uint32_t channelMask = 0;
         double amplitude = 0, distance = 0, velocity = 0, acceleration = 0, duration = 0.1, offset = 0, freqStart = 0,
-               freqEnd = 0;
+               freqEnd = 0, settle = 0, minMeasure = 0;
     };
     using Clock = std::chrono::steady_clock;
 
@@ -85,6 +85,7 @@ private:
     int startTest(int unitIndex);
     int runCommand(int unitIndex, std::uint16_t code, std::uint16_t token);
     void takeTrace();
+    void takeFrequencyResponse();
     // Register helpers.
     void encodeField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
     int writeField(const RegisterField& f, int unitIndex, const std::uint16_t* words);
@@ -118,6 +119,8 @@ private:
     bool m_haveToken = false;
     std::optional<model::Capture> m_trace;
     std::string m_traceNames, m_traceMeta;
+    std::vector<double> m_frfBlob;  ///< the FRF of the last FRF test, serialised (docs/modbus.md)
+    std::string m_frfMeta;
     std::uint32_t m_selOffset = 0;
     std::uint16_t m_selChannel = 0;
 

@@ -63,11 +63,13 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
     if (n == "test.flags") return u16(c.flags);
     if (n == "test.trace_divider") return u16(c.traceDivider);
     if (n == "test.freq_count") return u16(c.freqCount);
+    if (n == "test.frf_method") return u16(c.frfMethod);
     if (n == "test.trace_channel_mask") return encodeU32(c.channelMask, o, buf);
     const std::pair<const char*, double> f64s[] = {{"test.amplitude", c.amplitude},   {"test.distance", c.distance},
                                                    {"test.velocity", c.velocity},     {"test.acceleration", c.acceleration},
                                                    {"test.duration", c.duration},     {"test.offset", c.offset},
-                                                   {"test.freq_start", c.freqStart},  {"test.freq_end", c.freqEnd}};
+                                                   {"test.freq_start", c.freqStart},  {"test.freq_end", c.freqEnd},
+                                                   {"test.settle", c.settle},         {"test.min_measure", c.minMeasure}};
     for (const auto& [key, v] : f64s) {
         if (n == key)
             return encodeF64(v, o, buf);
@@ -78,9 +80,15 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
     if (n == "trace.window") {
         std::memset(buf, 0, sizeof(std::uint16_t) * static_cast<std::size_t>(f.count));
         const int namesSel = m_map.code("trace_channel", "names"), metaSel = m_map.code("trace_channel", "metadata");
-        if (m_selChannel == namesSel || m_selChannel == metaSel) {
-            const std::string& s = m_selChannel == namesSel ? m_traceNames : m_traceMeta;
+        const int frfSel = m_map.code("trace_channel", "frf_data"), frfMetaSel = m_map.code("trace_channel", "frf_metadata");
+        if (m_selChannel == namesSel || m_selChannel == metaSel || m_selChannel == frfMetaSel) {
+            const std::string& s = m_selChannel == namesSel ? m_traceNames : m_selChannel == metaSel ? m_traceMeta : m_frfMeta;
             encodeString(m_selOffset < s.size() ? s.substr(m_selOffset) : std::string(), f.count, buf);
+        } else if (m_selChannel == frfSel) {
+            for (int k = 0; k + 4 <= f.count; k += 4) {
+                const std::size_t i = m_selOffset + static_cast<std::size_t>(k / 4);
+                encodeF64(i < m_frfBlob.size() ? m_frfBlob[i] : std::numeric_limits<double>::quiet_NaN(), o, buf + k);
+            }
         } else if (m_trace && m_selChannel < m_trace->channels.size()) {
             const auto& d = m_trace->channels[m_selChannel].data;
             for (int k = 0; k + 4 <= f.count; k += 4) {
@@ -155,7 +163,8 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
         double* target = n == "test.amplitude" ? &c.amplitude : n == "test.distance" ? &c.distance
                        : n == "test.velocity" ? &c.velocity : n == "test.acceleration" ? &c.acceleration
                        : n == "test.duration" ? &c.duration : n == "test.offset" ? &c.offset
-                       : n == "test.freq_start" ? &c.freqStart : n == "test.freq_end" ? &c.freqEnd : nullptr;
+                       : n == "test.freq_start" ? &c.freqStart : n == "test.freq_end" ? &c.freqEnd
+                       : n == "test.settle" ? &c.settle : n == "test.min_measure" ? &c.minMeasure : nullptr;
         if (target)
             *target = v;
         return 0;
@@ -170,6 +179,10 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
         c.traceDivider = w[0];
     } else if (n == "test.flags") {
         c.flags = w[0];
+    } else if (n == "test.frf_method") {
+        if (m_map.name("frf_method", w[0]).empty())
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "unknown FRF method " + std::to_string(w[0]));
+        c.frfMethod = w[0];
     } else if (n == "test.freq_count") {
         c.freqCount = w[0];
     } else if (n == "test.trace_channel_mask") {

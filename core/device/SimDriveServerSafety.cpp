@@ -55,6 +55,19 @@ int SimDriveServer::startTest(int ui)
         if (type == "jog" && std::abs(motorSpeed) > lim.speedLimitRadS)
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog velocity means " + num(motorSpeed)
                                                                    + " rad/s at the motor, above the speed limit " + num(lim.speedLimitRadS) + " rad/s");
+    } else if (type == "frf") {
+        req.type = TestType::Frf;
+        const std::string method = m_map.name("frf_method", c.frfMethod);
+        req.frfMethod = method == "prbs" ? FrfMethod::Prbs : method == "conventional" ? FrfMethod::Conventional : FrfMethod::MultiSweep;
+        req.fminHz = c.freqStart;
+        req.fmaxHz = c.freqEnd;
+        req.points = c.freqCount;
+        req.amplitudePct = c.amplitude;
+        req.settleS = c.settle;
+        req.minMeasureS = c.minMeasure;
+        if (!(c.amplitude <= lim.amplitudeLimitPct))
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "excitation amplitude " + num(c.amplitude)
+                                                                   + " % of the rated torque above the drive's limit " + num(lim.amplitudeLimitPct) + " %");
     } else {
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test type '" + type + "' is not supported by this drive");
     }
@@ -74,6 +87,8 @@ int SimDriveServer::startTest(int ui)
     m_testStartMachineS = ax.sim->time();
     m_testStartWall = m_lastHeartbeat = Clock::now();
     m_trace.reset();
+    m_frfBlob.clear();
+    m_frfMeta.clear();
     log("test " + type + " started on axis " + ax.name);
     return 0;
 }
@@ -140,6 +155,36 @@ void SimDriveServer::takeTrace()
     m_trace = std::move(cap);
 }
 
+void SimDriveServer::takeFrequencyResponse()
+{
+    if (m_map.name("test_type", m_config[static_cast<std::size_t>(m_testUnit)].type) != "frf")
+        return;
+    auto r = m_drive->readFrequencyResponse();
+    if (!r) {
+        m_message = r.error().detail;
+        return;
+    }
+    // Serialised as float64 (docs/modbus.md "FRF readout"): length, motion time, points, then sweep blocks.
+    std::vector<double>& b = m_frfBlob;
+    b = {0.0, r->motionTimeS, static_cast<double>(r->frf.size())};
+    for (std::size_t i = 0; i < r->frf.size(); ++i)
+        b.insert(b.end(), {r->frf.freqHz[i], r->frf.h[i].real(), r->frf.h[i].imag(), r->frf.coherence[i], r->frf.valid[i] ? 1.0 : 0.0});
+    b.insert(b.end(), {r->sweep.fsHz, r->sweep.amplitude, static_cast<double>(r->sweep.blocks.size())});
+    for (const auto& blk : r->sweep.blocks) {
+        b.insert(b.end(), {blk.freqHz, blk.phaseOffsetDeg, static_cast<double>(blk.sample.size())});
+        for (const auto k : blk.sample)
+            b.push_back(static_cast<double>(k));
+        b.insert(b.end(), blk.excitation.begin(), blk.excitation.end());
+        b.insert(b.end(), blk.response.begin(), blk.response.end());
+    }
+    b[0] = static_cast<double>(b.size());
+    m_frfMeta.clear();
+    for (const auto& [k, v] : r->frf.metadata)
+        m_frfMeta += "frf." + k + "=" + v + "\n";
+    for (const auto& [k, v] : r->sweep.metadata)
+        m_frfMeta += "sweep." + k + "=" + v + "\n";
+}
+
 void SimDriveServer::step()
 {
     if (m_state != "running")
@@ -164,6 +209,7 @@ void SimDriveServer::step()
     m_progress = st->progress;
     if (st->state == TestState::Completed) {
         takeTrace();
+        takeFrequencyResponse();
         m_state = "completed";
         log("test completed on axis " + ax.name + ", " + std::to_string(m_trace ? m_trace->size() : 0) + " samples");
         return;

@@ -399,3 +399,65 @@ TEST(ModbusDrive, UriErrorsNameThePart)
     EXPECT_EQ(ok->timeoutMs, 250);
     EXPECT_EQ(modbusExceptionText(3).substr(0, 34), "exception 3 ILLEGAL DATA VALUE: va");
 }
+
+TEST(ModbusDrive, FrfOverModbusIsTheEmbeddedFrf)
+{
+    ServerThread srv(options("dd-table"));
+    auto remote = open(srv.uri());
+    auto local = open("sim:dd-table");
+    ASSERT_TRUE(remote && local);
+    TestRequest r;
+    r.axis = local->identify()->axes.front();
+    r.type = TestType::Frf;
+    r.frfMethod = FrfMethod::MultiSweep;
+    r.fminHz = 100.0;
+    r.fmaxHz = 3000.0;
+    r.points = 6;
+    r.amplitudePct = 5.0;
+    std::vector<FrfMeasurement> m;
+    for (Drive* d : {remote.get(), local.get()}) {
+        ASSERT_TRUE(d->startTest(r).ok());
+        auto s = finish(*d, 120.0);
+        ASSERT_TRUE(s.ok()) << s.error().detail;
+        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
+        auto f = d->readFrequencyResponse();
+        ASSERT_TRUE(f.ok()) << f.error().detail;
+        m.push_back(std::move(f).value());
+    }
+    const auto& a = m[0].frf;
+    const auto& b = m[1].frf;
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_GE(b.size(), 5u);
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        EXPECT_EQ(a.freqHz[i], b.freqHz[i]);
+        EXPECT_LE(std::abs(a.h[i] - b.h[i]), 1e-9 * std::abs(b.h[i])) << b.freqHz[i];
+        EXPECT_EQ(a.valid[i], b.valid[i]);
+        EXPECT_EQ(std::isnan(a.coherence[i]), std::isnan(b.coherence[i]));
+    }
+    EXPECT_EQ(a.metadata, b.metadata);
+    EXPECT_EQ(m[0].motionTimeS, m[1].motionTimeS);
+    ASSERT_EQ(m[0].sweep.blocks.size(), m[1].sweep.blocks.size());
+    for (std::size_t k = 0; k < m[1].sweep.blocks.size(); ++k) {
+        EXPECT_EQ(m[0].sweep.blocks[k].sample, m[1].sweep.blocks[k].sample);
+        EXPECT_EQ(m[0].sweep.blocks[k].response, m[1].sweep.blocks[k].response);
+    }
+    EXPECT_EQ(m[0].sweep.metadata, m[1].sweep.metadata);
+}
+
+TEST(ModbusDrive, FrfAmplitudeAboveTheDriveLimitIsRefused)
+{
+    auto o = options("dd-table");
+    o.safety.amplitudeLimitPct = 2.0;
+    ServerThread srv(o);
+    auto d = open(srv.uri());
+    ASSERT_TRUE(d);
+    TestRequest r;
+    r.axis = d->identify()->axes.front();
+    r.type = TestType::Frf;
+    r.amplitudePct = 5.0;
+    auto st = d->startTest(r);
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
+    EXPECT_NE(st.error().detail.find("excitation amplitude 5 % of the rated torque above the drive's limit 2 %"),
+              std::string::npos) << st.error().detail;
+}
