@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Modbus TCP over loopback: trace readout throughput (float64 samples per second through the paged
 // trace window, function code 23) and a whole step test (start, poll, read the trace) over Modbus
-// versus the embedded simulated drive. The server runs in-process on its own thread.
+// and a whole multi-sweep FRF test versus the embedded simulated drive. The server runs in-process on its own thread.
 #include "core/device/ModbusDrive.h"
 #include "core/device/SimDriveServer.h"
 
@@ -17,10 +17,10 @@ namespace {
 struct Server {
     std::unique_ptr<SimDriveServer> server;
     std::thread thread;
-    Server()
+    explicit Server(const std::string& preset = "vmc")
     {
         SimDriveServerOptions o;
-        o.preset = "vmc";
+        o.preset = preset;
         server = std::move(SimDriveServer::create(o)).value();
         thread = std::thread([this] { (void)server->serve(); });
     }
@@ -96,6 +96,37 @@ void BM_StepTest(benchmark::State& state, bool modbus)
 }
 BENCHMARK_CAPTURE(BM_StepTest, embedded, false)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_StepTest, modbus, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_MultiSweep(benchmark::State& state, bool modbus)
+{
+    // dd-table rotary axis, 60 points 10 Hz .. 3900 Hz, 5 % of rated torque (capture --test frf defaults).
+    std::unique_ptr<Server> srv;
+    if (modbus) {
+        srv = std::make_unique<Server>("dd-table");
+    }
+    auto d = std::move(connectAny({modbus ? srv->uri() : "sim:dd-table", 1})).value();
+    TestRequest r;
+    r.axis = d->identify()->axes.front();
+    r.type = TestType::Frf;
+    r.amplitudePct = 5.0;
+    for (auto _ : state) {
+        bool ok = d->startTest(r).ok();
+        for (int i = 0; ok && i < 10000000; ++i) {
+            auto s = d->pollTest();
+            ok = s.ok() && s->state != TestState::Faulted && s->state != TestState::Aborted;
+            if (!ok || s->state == TestState::Completed)
+                break;
+        }
+        auto f = d->readFrequencyResponse();
+        if (!ok || !f) {
+            state.SkipWithError("FRF test failed");
+            return;
+        }
+        state.counters["motion_s"] = f->motionTimeS;
+    }
+}
+BENCHMARK_CAPTURE(BM_MultiSweep, embedded, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
+BENCHMARK_CAPTURE(BM_MultiSweep, modbus, true)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 
 }  // namespace
 
