@@ -11,9 +11,12 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
+
+struct _modbus;  // libmodbus's modbus_t
 
 namespace axistune::device {
 
@@ -70,8 +73,8 @@ private:
     ModbusDrive() = default;
     Status connectOnce();
     void disconnect();
-    template <typename Op>
-    Status transact(int unit, const std::string& what, Retry retry, Op&& op);
+    /// One request with the retry policy; `op` returns libmodbus's result (< 0 with errno on failure).
+    Status transact(int unit, const std::string& what, Retry retry, const std::function<int(_modbus*)>& op);
     Status readRegs(int unit, int address, int count, std::uint16_t* out, const std::string& what);
     Status writeRegs(int unit, int address, const std::uint16_t* values, int count, const std::string& what);
     Status command(int unit, const std::string& name);

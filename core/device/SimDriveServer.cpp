@@ -150,6 +150,44 @@ void SimDriveServer::saveState() const
     std::rename(tmp.c_str(), m_opt.stateFile.c_str());  // atomic: a kill never leaves half a file
 }
 
+void SimDriveServer::reply(const std::uint8_t* query, int length)
+{
+    modbus_t* ctx = mb(m_ctx);
+    const int hl = modbus_get_header_length(ctx);
+    const std::uint8_t* q = query + hl;  // function code
+    const int unit = query[hl - 1];
+    int ex = 0;
+    const int fc = q[0];
+    if (fc == 0x03) {
+        const int addr = be16(q + 1), count = be16(q + 3);
+        ex = count < 1 || count > 125 ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
+                                      : readRegisters(unit, addr, count, mapping(m_mapping)->tab_registers + addr);
+    } else if (fc == 0x06) {
+        const std::uint16_t v = static_cast<std::uint16_t>(be16(q + 3));
+        ex = writeRegisters(unit, be16(q + 1), &v, 1);
+    } else if (fc == 0x10 || fc == 0x17) {
+        const int waddr = be16(q + (fc == 0x10 ? 1 : 5)), wcount = be16(q + (fc == 0x10 ? 3 : 7));
+        const std::uint8_t* bytes = q + (fc == 0x10 ? 6 : 10);
+        std::vector<std::uint16_t> v(static_cast<std::size_t>(std::max(0, wcount)));
+        for (int k = 0; k < wcount; ++k)
+            v[static_cast<std::size_t>(k)] = static_cast<std::uint16_t>(be16(bytes + 2 * k));
+        ex = wcount < 1 || wcount > 123 ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
+                                        : writeRegisters(unit, waddr, v.data(), wcount);
+        if (!ex && fc == 0x17) {
+            const int raddr = be16(q + 1), rcount = be16(q + 3);
+            ex = rcount < 1 || rcount > 125
+                     ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
+                     : readRegisters(unit, raddr, rcount, mapping(m_mapping)->tab_registers + raddr);
+        }
+    } else {
+        ex = MODBUS_EXCEPTION_ILLEGAL_FUNCTION;
+    }
+    if (ex)
+        modbus_reply_exception(ctx, query, static_cast<unsigned>(ex));
+    else
+        modbus_reply(ctx, query, length, mapping(m_mapping));
+}
+
 Status SimDriveServer::serve()
 {
     struct Conn {
@@ -162,7 +200,6 @@ Status SimDriveServer::serve()
     int nextId = 1;
     std::vector<std::uint8_t> query(MODBUS_TCP_MAX_ADU_LENGTH);
     modbus_t* ctx = mb(m_ctx);
-    const int hl = modbus_get_header_length(ctx);
     auto drop = [&](std::size_t i, const std::string& why) {
         log("connection " + std::to_string(conns[i].id) + " from " + conns[i].peer + " closed (" + why + ", "
             + std::to_string(conns[i].requests) + " requests)");
@@ -222,38 +259,7 @@ Status SimDriveServer::serve()
                 log("fault delay:" + std::to_string(m_opt.faults.delayMs) + ": answering late");
                 std::this_thread::sleep_for(std::chrono::milliseconds(m_opt.faults.delayMs));
             }
-            const std::uint8_t* q = query.data() + hl;  // function code
-            const int unit = query[hl - 1];
-            int ex = 0;
-            const int fc = q[0];
-            if (fc == 0x03) {
-                const int addr = be16(q + 1), count = be16(q + 3);
-                ex = count < 1 || count > 125 ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
-                                              : readRegisters(unit, addr, count, mapping(m_mapping)->tab_registers + addr);
-            } else if (fc == 0x06) {
-                const std::uint16_t v = static_cast<std::uint16_t>(be16(q + 3));
-                ex = writeRegisters(unit, be16(q + 1), &v, 1);
-            } else if (fc == 0x10 || fc == 0x17) {
-                const int waddr = be16(q + (fc == 0x10 ? 1 : 5)), wcount = be16(q + (fc == 0x10 ? 3 : 7));
-                const std::uint8_t* bytes = q + (fc == 0x10 ? 6 : 10);
-                std::vector<std::uint16_t> v(static_cast<std::size_t>(std::max(0, wcount)));
-                for (int k = 0; k < wcount; ++k)
-                    v[static_cast<std::size_t>(k)] = static_cast<std::uint16_t>(be16(bytes + 2 * k));
-                ex = wcount < 1 || wcount > 123 ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
-                                                : writeRegisters(unit, waddr, v.data(), wcount);
-                if (!ex && fc == 0x17) {
-                    const int raddr = be16(q + 1), rcount = be16(q + 3);
-                    ex = rcount < 1 || rcount > 125
-                             ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
-                             : readRegisters(unit, raddr, rcount, mapping(m_mapping)->tab_registers + raddr);
-                }
-            } else {
-                ex = MODBUS_EXCEPTION_ILLEGAL_FUNCTION;
-            }
-            if (ex)
-                modbus_reply_exception(ctx, query.data(), static_cast<unsigned>(ex));
-            else
-                modbus_reply(ctx, query.data(), rc, mapping(m_mapping));
+            reply(query.data(), rc);
             ++i;
         }
         step();

@@ -76,6 +76,8 @@ private:
 
     SimDriveServer() = default;
     void log(const std::string& line) const;
+    /// Decodes one request (function codes 3, 6, 16, 23), runs it through the register engine, answers.
+    void reply(const std::uint8_t* query, int length);
     Status loadState();
     void saveState() const;
     // Simulation and safety (SimDriveServerSafety.cpp).
