@@ -138,9 +138,9 @@ double mbpollValue(const std::string& out, int address)
     return at == std::string::npos ? std::nan("") : std::strtod(out.c_str() + at + tag.size(), nullptr);
 }
 
-double paramsValue(const std::string& uri, const std::string& key)
+double paramsValue(const std::string& uri, const std::string& key, const std::string& axis = "X")
 {
-    auto r = runCli("params --connect '" + uri + "' --axis X --get " + key);
+    auto r = runCli("params --connect '" + uri + "' --axis " + axis + " --get " + key);
     if (r.exitCode != 0)
         return std::nan("");
     return nlohmann::json::parse(r.out)["parameters"][key].get<double>();
@@ -264,20 +264,39 @@ TEST(ModbusCli, EachInjectedFaultHasItsOwnMessageAndExitCode)
     EXPECT_NE(bad.err.find("KEY=VALUE"), std::string::npos);
 }
 
-TEST(ModbusCli, ServerKilledMidTestIsALostConnectionAndTheRestartedDriveHasThePreTestParameters)
+device::TestRequest multiSweep(int divider)
+{
+    device::TestRequest r;
+    r.axis = "C";
+    r.type = device::TestType::Frf;
+    r.frfMethod = device::FrfMethod::MultiSweep;
+    r.fminHz = 20.0;
+    r.fmaxHz = 900.0;
+    r.points = 12;
+    r.amplitudePct = 5.0;
+    r.traceDivider = divider;
+    return r;
+}
+
+TEST(ModbusCli, ServerKilledMidMultiSweepIsALostConnectionAndTheRestartedDriveHasThePreTestParameters)
 {
     const auto dir = makeTempDir("modbus-state");
     const std::string state = (dir / "state.json").string();
-    const std::string args = "--preset vmc --pace 1 --state " + state;
+    const std::string args = "--preset dd-table --pace 1 --state " + state;
     {
         SimDrive srv(args);
         ASSERT_GT(srv.port(), 0) << srv.log();
-        ASSERT_EQ(runCli("params --connect " + srv.uri() + " --axis X --set velocity.kp=0.7").exitCode, 0);
+        ASSERT_EQ(runCli("params --connect " + srv.uri() + " --axis C --set velocity.kp=250").exitCode, 0);
         auto d = device::connectAny({srv.uri("timeout_ms=500"), 1});
         ASSERT_TRUE(d.ok()) << d.error().detail;
-        ASSERT_TRUE((*d)->startTest(step(5.0, 10.0, 4)).ok());
-        for (int i = 0; i < 5; ++i)
-            ASSERT_TRUE((*d)->pollTest().ok());
+        auto started = (*d)->startTest(multiSweep(2));
+        ASSERT_TRUE(started.ok()) << started.error().detail;
+        for (int i = 0; i < 5; ++i) {
+            auto st = (*d)->pollTest();
+            ASSERT_TRUE(st.ok());
+            ASSERT_EQ(st->state, device::TestState::Running) << st->detail;
+        }
+        EXPECT_EQ(paramsValue(srv.uri(), "trace.divider", "C"), 2.0);  // the test's setting
         srv.stop(SIGKILL);
         const auto t0 = Clock::now();
         auto st = (*d)->pollTest();
@@ -290,9 +309,37 @@ TEST(ModbusCli, ServerKilledMidTestIsALostConnectionAndTheRestartedDriveHasThePr
     }
     SimDrive again(args);
     ASSERT_GT(again.port(), 0) << again.log();
-    EXPECT_EQ(paramsValue(again.uri(), "velocity.kp"), 0.7);  // params prints the float32 as its shortest text
-    EXPECT_EQ(paramsValue(again.uri(), "trace.divider"), 1.0);  // not the test's 4
+    EXPECT_EQ(paramsValue(again.uri(), "velocity.kp", "C"), 250.0);  // not the preset 233
+    EXPECT_EQ(paramsValue(again.uri(), "trace.divider", "C"), 1.0);  // not the test's 2
     std::filesystem::remove_all(dir);
+}
+
+TEST(ModbusCli, MultiSweepThroughTheSimdriveBinaryEqualsTheEmbeddedDriveWithTheSameSeed)
+{
+    SimDrive srv("--preset dd-table --seed 3");
+    ASSERT_GT(srv.port(), 0) << srv.log();
+    auto remote = device::connectAny({srv.uri(), 3});
+    auto local = device::connectAny({"sim:dd-table", 3});
+    ASSERT_TRUE(remote.ok() && local.ok());
+    std::vector<device::FrfMeasurement> m;
+    for (device::Drive* d : {remote->get(), local->get()}) {
+        ASSERT_TRUE(d->startTest(multiSweep(0)).ok());
+        Result<device::TestStatus> st = device::TestStatus{device::TestState::Running};
+        const auto end = Clock::now() + std::chrono::seconds(60);
+        while (st.ok() && st->state == device::TestState::Running && Clock::now() < end)
+            st = d->pollTest();
+        ASSERT_TRUE(st.ok());
+        ASSERT_EQ(st->state, device::TestState::Completed) << st->detail;
+        auto f = d->readFrequencyResponse();
+        ASSERT_TRUE(f.ok()) << f.error().detail;
+        m.push_back(std::move(f).value());
+    }
+    ASSERT_EQ(m[0].frf.size(), m[1].frf.size());
+    ASSERT_GE(m[1].frf.size(), 10u);
+    for (std::size_t i = 0; i < m[1].frf.size(); ++i) {
+        EXPECT_EQ(m[0].frf.freqHz[i], m[1].frf.freqHz[i]);
+        EXPECT_LE(std::abs(m[0].frf.h[i] - m[1].frf.h[i]), 1e-9 * std::abs(m[1].frf.h[i])) << m[1].frf.freqHz[i];
+    }
 }
 
 TEST(ModbusCli, SilencedClientLetsTheDriveStopTheTestAndRestoreParameters)
