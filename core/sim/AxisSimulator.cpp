@@ -111,6 +111,42 @@ Status AxisSimulator::configure(const model::ParameterValues& v)
 
     const bool rebuildPlant = !m_plant || h != m_hCurrent;
     m_values = v;
+    const bool linear = m_def.kind == AxisKind::Linear;
+    Loop p;
+    p.kt = get("motor.torque_constant");
+    p.iMax = get("motor.max_current");
+    p.vMax = get("drive.max_voltage");
+    p.kp = get("current.kp");
+    p.ki = get("current.ki");
+    p.alpha = get("current.alpha");
+    p.noiseCurrent = get("plant.noise_current");
+    p.noisePosition = get("plant.noise_position");
+    p.velKp = get("velocity.kp");
+    p.velKi = get("velocity.ki");
+    p.posKp = get("position.kp");
+    p.velFf = get("position.velocity_ff");
+    p.torqueFf = get("position.torque_ff");
+    p.inertiaFf = get("velocity.inertia");
+    p.encoderMotor = get("plant.encoder_motor");
+    p.encoderLoad = linear ? 0.0 : get("plant.encoder_load");
+    p.scaleResolution = linear ? get("plant.scale_resolution") : 0.0;
+    p.coulombMotor = get("plant.coulomb_motor");
+    p.coulombLoad = get("plant.coulomb_load");
+    p.coulombVelocity = get("plant.coulomb_velocity");
+    const bool rigid = get("plant.coupling_stiffness") <= 0.0;
+    p.jMotorSide = get("plant.inertia_motor") + (rigid ? get("plant.inertia_load") : 0.0);
+    p.jLoadSide = std::max(1e-9, get("plant.inertia_load") + (rigid ? get("plant.inertia_motor") : 0.0));
+    p.lead = linear ? get("plant.screw_lead") : 1.0;
+    p.lmA = linear ? get("plant.lost_motion_A") : 0.0;
+    p.lmB = linear ? get("plant.lost_motion_B") : 0.0;
+    p.screwOffset = linear ? get("plant.screw_offset") : 0.0;
+    p.compMode = linear ? static_cast<int>(get("lostmotion.mode")) : 0;
+    p.compA = linear ? get("lostmotion.A") : 0.0;
+    p.compB = linear ? get("lostmotion.B") : 0.0;
+    p.compOffset = linear ? get("lostmotion.screw_offset") : 0.0;
+    p.backlash = linear ? get("lostmotion.backlash") : 0.0;
+    p.fullClosed = get("position.feedback") >= 1.0;
+    m_p = p;
     m_hCurrent = h;
     m_velDiv = *velDiv;
     m_posDiv = *posDiv;
@@ -129,7 +165,7 @@ Status AxisSimulator::configure(const model::ParameterValues& v)
     return Status::success();
 }
 
-double AxisSimulator::screwLead() const { return m_def.kind == AxisKind::Linear ? m_values.at("plant.screw_lead") : 1.0; }
+double AxisSimulator::screwLead() const { return m_p.lead; }
 
 void AxisSimulator::reset(double position)
 {
@@ -146,7 +182,7 @@ void AxisSimulator::reset(double position)
     m_currentInt = m_velInt = m_torqueCmd = m_torqueFf = m_velCmd = m_velCmdFromPos = m_velMeas = 0.0;
     m_posCmd = m_posFeedback = position;
     m_lmComp = m_lastDirection = m_currentCmd = m_voltage = m_injectionNow = 0.0;
-    m_prevEncoder = quantize(m_plant->encoderAngle(m_x), m_values.at("plant.encoder_motor"));
+    m_prevEncoder = quantize(m_plant->encoderAngle(m_x), m_p.encoderMotor);
     m_clampCount = m_currentLimitCount = 0;
     m_profile = MotionProfile(position);
     m_profileStart = 0.0;
@@ -170,23 +206,20 @@ double AxisSimulator::quantize(double value, double countsPerRev) const
 
 double AxisSimulator::frictionMotor() const
 {
-    const double tc = m_values.at("plant.coulomb_motor");
+    const double tc = m_p.coulombMotor;
     if (!m_nl.friction || tc <= 0.0)
         return 0.0;
     // The smoothing velocity never goes below what an explicit step can hold stably.
-    const double j = m_plant->rigid() ? m_values.at("plant.inertia_motor") + m_values.at("plant.inertia_load")
-                                      : m_values.at("plant.inertia_motor");
-    const double eps = std::max(m_values.at("plant.coulomb_velocity"), 2.0 * m_hCurrent * tc / j);
+    const double eps = std::max(m_p.coulombVelocity, 2.0 * m_hCurrent * tc / m_p.jMotorSide);
     return tc * std::tanh(PlantModel::motorVelocity(m_x) / eps);
 }
 
 double AxisSimulator::frictionLoad() const
 {
-    const double tc = m_values.at("plant.coulomb_load");
+    const double tc = m_p.coulombLoad;
     if (!m_nl.friction || tc <= 0.0)
         return 0.0;
-    const double j = m_values.at("plant.inertia_load") + (m_plant->rigid() ? m_values.at("plant.inertia_motor") : 0.0);
-    const double eps = std::max(m_values.at("plant.coulomb_velocity"), 2.0 * m_hCurrent * tc / std::max(j, 1e-9));
+    const double eps = std::max(m_p.coulombVelocity, 2.0 * m_hCurrent * tc / m_p.jLoadSide);
     return tc * std::tanh(m_plant->loadVelocity(m_x) / eps);
 }
 
@@ -194,8 +227,8 @@ double AxisSimulator::lostMotionDeflection() const
 {
     if (m_def.kind != AxisKind::Linear || !m_nl.lostMotion)
         return 0.0;
-    const double xbs = m_values.at("plant.screw_offset") + screwLead() * m_plant->loadAngle(m_x);
-    return (m_values.at("plant.lost_motion_A") + m_values.at("plant.lost_motion_B") * xbs) * torque();
+    const double xbs = m_p.screwOffset + m_p.lead * m_plant->loadAngle(m_x);
+    return (m_p.lmA + m_p.lmB * xbs) * torque();
 }
 
 double AxisSimulator::motorPosition() const { return screwLead() * PlantModel::motorAngle(m_x); }
@@ -209,43 +242,41 @@ void AxisSimulator::positionTick(double t, double feedbackPos)
     m_posFeedback = feedbackPos;
     double comp = 0.0;
     if (m_def.kind == AxisKind::Linear) {
-        const int mode = static_cast<int>(m_values.at("lostmotion.mode"));
-        if (mode == 1) {
+        if (m_p.compMode == 1) {
             if (s.velocity != 0.0)
                 m_lastDirection = sgn(s.velocity);  // holds the last direction at standstill
-            comp = m_lastDirection * 0.5 * m_values.at("lostmotion.backlash");
-        } else if (mode == 2) {
+            comp = m_lastDirection * 0.5 * m_p.backlash;
+        } else if (m_p.compMode == 2) {
             // (A + B·x_bs)·T_m with the last torque command (no algebraic loop), x_bs = x0 + X_t.
-            const double xbs = m_values.at("lostmotion.screw_offset") + feedbackPos;
-            comp = (m_values.at("lostmotion.A") + m_values.at("lostmotion.B") * xbs) * m_torqueCmd;
+            const double xbs = m_p.compOffset + feedbackPos;
+            comp = (m_p.compA + m_p.compB * xbs) * m_torqueCmd;
         }
     }
     m_lmComp = comp;
     const double r = screwLead();
-    m_velCmdFromPos = (m_values.at("position.kp") * (s.position + comp - feedbackPos)
-                       + m_values.at("position.velocity_ff") * s.velocity) / r;
-    m_torqueFf = m_values.at("position.torque_ff") * m_values.at("velocity.inertia") * s.acceleration / r;
+    m_velCmdFromPos = (m_p.posKp * (s.position + comp - feedbackPos) + m_p.velFf * s.velocity) / r;
+    m_torqueFf = m_p.torqueFf * m_p.inertiaFf * s.acceleration / r;
 }
 
 void AxisSimulator::velocityTick(double t)
 {
     const double tv = velocityPeriod();
-    double enc = quantize(m_plant->encoderAngle(m_x), m_values.at("plant.encoder_motor"));
-    if (m_nl.noise && m_values.at("plant.noise_position") > 0.0)
-        enc += m_values.at("plant.noise_position") * m_gauss(m_rng);
+    double enc = quantize(m_plant->encoderAngle(m_x), m_p.encoderMotor);
+    if (m_nl.noise && m_p.noisePosition > 0.0)
+        enc += m_p.noisePosition * m_gauss(m_rng);
     m_velMeas = (enc - m_prevEncoder) / tv;
     m_prevEncoder = enc;
 
     if (m_mode == ControlMode::Position && m_velTick % m_posDiv == 0) {
         double fb = screwLead() * enc;
-        if (m_values.at("position.feedback") >= 1.0) {
+        if (m_p.fullClosed) {
             if (m_def.kind == AxisKind::Linear) {
-                const double res = m_values.at("plant.scale_resolution");
+                const double res = m_p.scaleResolution;
                 fb = tablePosition();
                 if (m_nl.quantization && res > 0.0)
                     fb = std::floor(fb / res + 0.5) * res;
             } else {
-                fb = quantize(m_plant->loadAngle(m_x), m_values.at("plant.encoder_load"));
+                fb = quantize(m_plant->loadAngle(m_x), m_p.encoderLoad);
             }
         }
         positionTick(t, fb);
@@ -258,8 +289,8 @@ void AxisSimulator::velocityTick(double t)
     }
     const double e = m_velCmd - m_velMeas;
     if (m_velTick % m_intDiv == 0)
-        m_velInt += m_values.at("velocity.ki") * tv * m_intDiv * e;
-    m_torqueCmd = m_values.at("velocity.kp") * e + m_velInt + m_torqueFf;
+        m_velInt += m_p.velKi * tv * m_intDiv * e;
+    m_torqueCmd = m_p.velKp * e + m_velInt + m_torqueFf;
 
     if (m_tracing && m_velTick % m_traceDiv == 0) {
         const double row[] = {t,
@@ -284,11 +315,9 @@ void AxisSimulator::velocityTick(double t)
 
 void AxisSimulator::runTicks(std::int64_t ticks)
 {
-    const double kt = m_values.at("motor.torque_constant");
-    const double iMax = m_values.at("motor.max_current");
-    const double vMax = m_values.at("drive.max_voltage");
-    const double kp = m_values.at("current.kp"), ki = m_values.at("current.ki"), alpha = m_values.at("current.alpha");
-    const double noiseI = m_nl.noise ? m_values.at("plant.noise_current") : 0.0;
+    const double kt = m_p.kt, iMax = m_p.iMax, vMax = m_p.vMax;
+    const double kp = m_p.kp, ki = m_p.ki, alpha = m_p.alpha;
+    const double noiseI = m_nl.noise ? m_p.noiseCurrent : 0.0;
     for (std::int64_t k = 0; k < ticks; ++k) {
         const double t = time();
         m_injectionNow = m_injection ? m_injection(t) : 0.0;

@@ -103,8 +103,21 @@ private:
     double quantize(double value, double step) const;
     double screwLead() const;  ///< R [m/rad] for linear axes, 1 for rotary
 
+    /// Parameters used in the loops, copied from m_values at configure() (no map look-ups per tick).
+    struct Loop {
+        double kt = 0, iMax = 0, vMax = 0, kp = 0, ki = 0, alpha = 0, noiseCurrent = 0, noisePosition = 0;
+        double velKp = 0, velKi = 0, posKp = 0, velFf = 0, torqueFf = 0, inertiaFf = 0;
+        double encoderMotor = 0, encoderLoad = 0, scaleResolution = 0;
+        double coulombMotor = 0, coulombLoad = 0, coulombVelocity = 0, jMotorSide = 0, jLoadSide = 0;
+        double lead = 1, lmA = 0, lmB = 0, screwOffset = 0;
+        double compA = 0, compB = 0, compOffset = 0, backlash = 0;
+        int compMode = 0;
+        bool fullClosed = false;
+    };
+
     AxisDefinition m_def;
     model::ParameterValues m_values;
+    Loop m_p;
     std::uint64_t m_seed;
     std::mt19937_64 m_rng;
     std::normal_distribution<double> m_gauss{0.0, 1.0};
