@@ -282,7 +282,7 @@ TEST(ModbusCli, ServerKilledMidMultiSweepIsALostConnectionAndTheRestartedDriveHa
 {
     const auto dir = makeTempDir("modbus-state");
     const std::string state = (dir / "state.json").string();
-    const std::string args = "--preset dd-table --pace 1 --state " + state;
+    const std::string args = "--preset dd-table --pace 1 --watchdog 5 --state " + state;
     {
         SimDrive srv(args);
         ASSERT_GT(srv.port(), 0) << srv.log();
@@ -344,14 +344,14 @@ TEST(ModbusCli, MultiSweepThroughTheSimdriveBinaryEqualsTheEmbeddedDriveWithTheS
 
 TEST(ModbusCli, SilencedClientLetsTheDriveStopTheTestAndRestoreParameters)
 {
-    SimDrive srv("--preset vmc --pace 1 --watchdog 0.3");
+    SimDrive srv("--preset vmc --pace 1 --watchdog 0.8");
     ASSERT_GT(srv.port(), 0);
     {
         auto d = device::connectAny({srv.uri(), 1});
         ASSERT_TRUE(d.ok()) << d.error().detail;
         ASSERT_TRUE((*d)->startTest(step(5.0, 10.0, 4)).ok());
         EXPECT_EQ(paramsValue(srv.uri(), "trace.divider"), 4.0);  // the test's setting while it runs
-        std::this_thread::sleep_for(std::chrono::milliseconds(1000));  // no pollTest: no heartbeat
+        std::this_thread::sleep_for(std::chrono::milliseconds(2000));  // no pollTest: no heartbeat
         EXPECT_NE(srv.log().find("fault heartbeat_lost"), std::string::npos) << srv.log();
     }
     EXPECT_EQ(paramsValue(srv.uri(), "trace.divider"), 1.0);

@@ -223,12 +223,12 @@ TEST(ModbusDrive, SilentClientMakesTheDriveStopAndRestoreByItself)
 {
     auto o = options();
     o.pace = 1.0;
-    o.safety.watchdogS = 0.3;
+    o.safety.watchdogS = 0.5;
     ServerThread srv(o);
     auto d = open(srv.uri());
     ASSERT_TRUE(d);
-    // With heartbeats (pollTest) a 0.6 s test outlives the 0.3 s watchdog.
-    ASSERT_TRUE(d->startTest(step("X", 5.0, 0.6)).ok());
+    // With heartbeats (pollTest, every 200 ms) a 1.2 s test outlives the 0.5 s watchdog.
+    ASSERT_TRUE(d->startTest(step("X", 5.0, 1.2)).ok());
     auto ok = finish(*d, 10.0);
     ASSERT_TRUE(ok.ok()) << ok.error().detail;
     EXPECT_EQ(ok->state, TestState::Completed) << ok->detail;
@@ -236,7 +236,7 @@ TEST(ModbusDrive, SilentClientMakesTheDriveStopAndRestoreByItself)
     auto req = step("X", 5.0, 5.0);
     req.traceDivider = 4;
     ASSERT_TRUE(d->startTest(req).ok());
-    std::this_thread::sleep_for(std::chrono::milliseconds(900));
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
     const std::string log = srv.log();
     EXPECT_NE(log.find("fault heartbeat_lost"), std::string::npos) << log;
     auto s = d->pollTest();
