@@ -185,6 +185,7 @@ void AxisSimulator::reset(double position)
     m_prevEncoder = quantize(m_plant->encoderAngle(m_x), m_p.encoderMotor);
     m_clampCount = m_currentLimitCount = 0;
     m_profile = MotionProfile(position);
+    m_positionCommand = nullptr;
     m_profileStart = 0.0;
     m_trace.clear();
     m_tracing = false;
@@ -193,6 +194,13 @@ void AxisSimulator::reset(double position)
 void AxisSimulator::setPositionProfile(MotionProfile profile)
 {
     m_profile = std::move(profile);
+    m_positionCommand = nullptr;
+    m_profileStart = time();
+}
+
+void AxisSimulator::setPositionCommand(std::function<MotionState(double)> fn)
+{
+    m_positionCommand = std::move(fn);
     m_profileStart = time();
 }
 
@@ -237,7 +245,7 @@ double AxisSimulator::tablePosition() const { return screwLead() * m_plant->load
 
 void AxisSimulator::positionTick(double t, double feedbackPos)
 {
-    const MotionState s = m_profile.at(t - m_profileStart);
+    const MotionState s = m_positionCommand ? m_positionCommand(t - m_profileStart) : m_profile.at(t - m_profileStart);
     m_posCmd = s.position;
     m_posFeedback = feedbackPos;
     double comp = 0.0;

@@ -61,6 +61,9 @@ public:
     void setVelocityCommand(std::function<double(double)> fn) { m_velocityCommand = std::move(fn); }
     /// Position command (axis units), sampled at the position-loop rate. Time 0 of the profile is now.
     void setPositionProfile(MotionProfile profile);
+    /// Arbitrary position command (axis units) as a function of time since this call, sampled at the
+    /// position-loop rate; used instead of the profile while set (an empty function clears it).
+    void setPositionCommand(std::function<MotionState(double)> fn);
     /// Torque added to the torque command [N·m] before the filters, sampled at the current-loop rate.
     void setTorqueInjection(std::function<double(double)> fn) { m_injection = std::move(fn); }
 
@@ -137,6 +140,7 @@ private:
     std::function<double(double)> m_velocityCommand;
     std::function<double(double)> m_injection;
     MotionProfile m_profile;
+    std::function<MotionState(double)> m_positionCommand;
     double m_profileStart = 0.0;
 
     // Controller state.
