@@ -6,7 +6,6 @@
 #include "core/device/SimDriveServer.h"
 
 #include <benchmark/benchmark.h>
-
 #include <thread>
 
 using namespace axistune;
@@ -58,7 +57,7 @@ void BM_TraceReadout(benchmark::State& state)
 {
     Server srv;
     auto d = std::move(connectAny({srv.uri(), 1})).value();
-    const double duration = static_cast<double>(state.range(0)) / 4000.0;  // trace at 4 kHz
+    const double duration = static_cast<double>(state.range(0)) / 4000.0; // trace at 4 kHz
     if (!runTest(*d, duration)) {
         state.SkipWithError("test failed");
         return;
@@ -74,8 +73,8 @@ void BM_TraceReadout(benchmark::State& state)
         benchmark::DoNotOptimize(t->channels.front().data.data());
     }
     state.counters["samples"] = static_cast<double>(samples);
-    state.counters["samples_per_s"] = benchmark::Counter(static_cast<double>(samples) * static_cast<double>(state.iterations()),
-                                                         benchmark::Counter::kIsRate);
+    state.counters["samples_per_s"] = benchmark::Counter(
+        static_cast<double>(samples) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_TraceReadout)->Arg(400)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -128,6 +127,6 @@ void BM_MultiSweep(benchmark::State& state, bool modbus)
 BENCHMARK_CAPTURE(BM_MultiSweep, embedded, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 BENCHMARK_CAPTURE(BM_MultiSweep, modbus, true)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 
-}  // namespace
+} // namespace
 
 BENCHMARK_MAIN();

@@ -24,7 +24,8 @@ std::string numberText(double v)
 {
     char buf[64];
     const auto f = static_cast<float>(v);
-    const auto r = static_cast<double>(f) == v ? std::to_chars(buf, buf + sizeof buf, f) : std::to_chars(buf, buf + sizeof buf, v);
+    const auto r =
+        static_cast<double>(f) == v ? std::to_chars(buf, buf + sizeof buf, f) : std::to_chars(buf, buf + sizeof buf, v);
     return std::string(buf, r.ptr);
 }
 
@@ -49,7 +50,8 @@ Result<model::ParameterValues> parseSets(const std::vector<std::string>& sets)
         const char* e = s.data() + s.size();
         const auto r = b ? std::from_chars(b, e, x) : std::from_chars_result{nullptr, std::errc::invalid_argument};
         if (eq == std::string::npos || eq == 0 || r.ec != std::errc() || r.ptr != e)
-            return makeError(ErrorCode::BadInput, "--set '" + s + "': expected KEY=VALUE with VALUE a number in SI units");
+            return makeError(ErrorCode::BadInput,
+                             "--set '" + s + "': expected KEY=VALUE with VALUE a number in SI units");
         v[s.substr(0, eq)] = x;
     }
     return v;
@@ -98,16 +100,18 @@ int runParams(const ParamsOptions& o)
     return 0;
 }
 
-const CliRegistrar kRegistrar{{"params", "Read (JSON, SI units) and write drive parameters with read-back",
-    [](CLI::App& sub) {
-        auto o = std::make_shared<ParamsOptions>();
-        sub.add_option("--connect", o->connect, "sim:PRESET or modbus://HOST:PORT[?timeout_ms=N]")->capture_default_str();
-        sub.add_option("--axis", o->axis, "axis name, e.g. X")->required();
-        sub.add_option("--set", o->set, "KEY=VALUE in SI units (repeatable); checked against the limits before sending");
-        sub.add_option("--get", o->get, "read only these keys (repeatable; default: all)");
-        sub.add_option("--seed", o->seed, "noise seed of an embedded simulated machine")->capture_default_str();
-        return [o] { return runParams(*o); };
-    }}};
+const CliRegistrar kRegistrar{
+    {"params", "Read (JSON, SI units) and write drive parameters with read-back", [](CLI::App& sub) {
+         auto o = std::make_shared<ParamsOptions>();
+         sub.add_option("--connect", o->connect, "sim:PRESET or modbus://HOST:PORT[?timeout_ms=N]")
+             ->capture_default_str();
+         sub.add_option("--axis", o->axis, "axis name, e.g. X")->required();
+         sub.add_option("--set", o->set,
+                        "KEY=VALUE in SI units (repeatable); checked against the limits before sending");
+         sub.add_option("--get", o->get, "read only these keys (repeatable; default: all)");
+         sub.add_option("--seed", o->seed, "noise seed of an embedded simulated machine")->capture_default_str();
+         return [o] { return runParams(*o); };
+     }}};
 
-}  // namespace
-}  // namespace axistune::cli
+} // namespace
+} // namespace axistune::cli

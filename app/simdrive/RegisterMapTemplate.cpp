@@ -6,9 +6,8 @@
 
 #include "core/sim/AxisParameters.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 namespace axistune::simdrive {
 
@@ -18,12 +17,13 @@ std::string simRegisterMapJson()
     ordered_json j;
     j["family"] = "axistune-sim";
     j["version"] = 1;
-    j["description"] = "AxisTune simulated drive (axistune-simdrive). All data in holding registers (function codes 3, 6, 16, 23). "
-                       "Addresses are 0-based PDU addresses. Unit id = unit_id_base + axis index.";
+    j["description"] =
+        "AxisTune simulated drive (axistune-simdrive). All data in holding registers (function codes 3, 6, 16, 23). "
+        "Addresses are 0-based PDU addresses. Unit id = unit_id_base + axis index.";
     j["word_order"] = "high_word_first";
     j["unit_id_base"] = 1;
     j["max_registers_per_read"] = 125;
-    j["magic"] = 0x4154;  // "AT"
+    j["magic"] = 0x4154; // "AT"
     ordered_json f;
     auto add = [&f](const std::string& name, int address, const std::string& type, int count, const std::string& what) {
         ordered_json e{{"address", address}, {"type", type}};
@@ -57,13 +57,15 @@ std::string simRegisterMapJson()
     add("status.trace_channels", 114, "u16", 1, "channels in the trace");
     add("status.reserved", 115, "u16", 1, "reserved, reads 0");
     add("status.trace_rate_hz", 116, "f64", 4, "trace sample rate [Hz]");
-    add("status.message", 120, "string", 64, "why the last request or test was refused or stopped, 128 ASCII characters");
+    add("status.message", 120, "string", 64,
+        "why the last request or test was refused or stopped, 128 ASCII characters");
     add("test.type", 200, "u16", 1, "enum test_type");
     add("test.flags", 201, "u16", 1, "bit set of enum test_flag");
     add("test.trace_divider", 202, "u16", 1, "trace every N velocity periods (0: parameter trace.divider)");
     add("test.freq_count", 203, "u16", 1, "frf: number of frequencies");
     add("test.trace_channel_mask", 204, "u32", 2, "bit i: keep trace channel i (0: all)");
-    add("test.amplitude", 206, "f64", 4, "step: motor velocity step [rad/s]; frf: excitation amplitude [% of rated torque]");
+    add("test.amplitude", 206, "f64", 4,
+        "step: motor velocity step [rad/s]; frf: excitation amplitude [% of rated torque]");
     add("test.distance", 210, "f64", 4, "jog: distance [m or rad]");
     add("test.velocity", 214, "f64", 4, "jog: velocity [m/s or rad/s]");
     add("test.acceleration", 218, "f64", 4, "jog: acceleration [m/s^2 or rad/s^2]");
@@ -77,15 +79,24 @@ std::string simRegisterMapJson()
     add("test.min_measure", 244, "f64", 4, "frf: minimum measured time per frequency [s] (0: from the loop dynamics)");
     add("command.code", 300, "u16", 1, "enum command; written together with command.token");
     add("command.token", 301, "u16", 1, "sequence token: a command repeated with the same token is not executed twice");
-    add("heartbeat.counter", 310, "u16", 1, "written by the client while a test runs; the watchdog stops the test when it goes silent");
+    add("heartbeat.counter", 310, "u16", 1,
+        "written by the client while a test runs; the watchdog stops the test when it goes silent");
     add("trace.select_offset", 400, "u32", 2, "first sample (or byte, for the text channels) of the window");
     add("trace.select_channel", 402, "u16", 1, "trace channel index, or enum trace_channel");
-    add("trace.window", 410, "window", 124, "31 float64 samples of the selected channel (NaN past the end) or 248 text bytes");
+    add("trace.window", 410, "window", 124,
+        "31 float64 samples of the selected channel (NaN past the end) or 248 text bytes");
     j["fields"] = f;
     j["enums"] = {
         {"state", {{"idle", 0}, {"running", 1}, {"completed", 2}, {"aborted", 3}, {"faulted", 4}}},
-        {"fault", {{"none", 0}, {"amplitude_limit", 1}, {"travel_limit", 2}, {"speed_limit", 3}, {"following_error", 4},
-                   {"heartbeat_lost", 5}, {"drive_fault", 6}, {"aborted", 7}}},
+        {"fault",
+         {{"none", 0},
+          {"amplitude_limit", 1},
+          {"travel_limit", 2},
+          {"speed_limit", 3},
+          {"following_error", 4},
+          {"heartbeat_lost", 5},
+          {"drive_fault", 6},
+          {"aborted", 7}}},
         {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}}},
         {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}}},
         {"frf_method", {{"multisweep", 0}, {"conventional", 1}, {"prbs", 2}}},
@@ -102,11 +113,12 @@ std::string simRegisterMapJson()
         if (sim::isPlantParameter(m.key))
             continue;
         const bool onRot = std::any_of(rot.begin(), rot.end(), [&](const auto& r) { return r.key == m.key; });
-        ordered_json p{{"key", m.key},        {"address", address},          {"type", "f32"},
-                       {"label", m.label},    {"si_unit", m.siUnit},         {"display_unit", m.displayUnit},
-                       {"min", m.minSi},      {"max", m.maxSi},              {"writable", m.writable},
-                       {"writable_during_test", m.writableDuringTest},       {"integer", m.integer},
-                       {"group", m.group}};
+        ordered_json p{{"key", m.key},           {"address", address},
+                       {"type", "f32"},          {"label", m.label},
+                       {"si_unit", m.siUnit},    {"display_unit", m.displayUnit},
+                       {"min", m.minSi},         {"max", m.maxSi},
+                       {"writable", m.writable}, {"writable_during_test", m.writableDuringTest},
+                       {"integer", m.integer},   {"group", m.group}};
         if (!onRot)
             p["axis_kinds"] = {"linear"};
         params.push_back(p);
@@ -116,4 +128,4 @@ std::string simRegisterMapJson()
     return j.dump(2) + "\n";
 }
 
-}  // namespace axistune::simdrive
+} // namespace axistune::simdrive

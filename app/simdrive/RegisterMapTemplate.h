@@ -8,4 +8,4 @@ namespace axistune::simdrive {
 /// The JSON text of resources/drives/axistune-sim.json, built from the simulator's catalogue.
 std::string simRegisterMapJson();
 
-}  // namespace axistune::simdrive
+} // namespace axistune::simdrive

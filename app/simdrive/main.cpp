@@ -4,7 +4,6 @@
 #include "core/device/SimDriveServer.h"
 
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <csignal>
 #include <ctime>
@@ -18,7 +17,7 @@ axistune::device::SimDriveServer* g_server = nullptr;
 extern "C" void onSignal(int)
 {
     if (g_server)
-        g_server->requestStop();  // an atomic store: async-signal-safe
+        g_server->requestStop(); // an atomic store: async-signal-safe
 }
 
 void logLine(const std::string& line)
@@ -29,7 +28,7 @@ void logLine(const std::string& line)
     std::cerr << "axistune-simdrive " << ts << " " << line << std::endl;
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -43,7 +42,8 @@ int main(int argc, char** argv)
     app.add_option("--bind", o.bind, "address to listen on (127.0.0.1 only)")->capture_default_str();
     app.add_option("--seed", o.seed, "noise seed of the simulated machine")->capture_default_str();
     app.add_option("--map", o.mapFamily, "register map resources/drives/NAME.json")->capture_default_str();
-    app.add_option("--fault", faults, "fault injection: drop-after:N, delay:MS, illegal-address, drive-fault:S (repeatable)");
+    app.add_option("--fault", faults,
+                   "fault injection: drop-after:N, delay:MS, illegal-address, drive-fault:S (repeatable)");
     app.add_option("--watchdog", o.safety.watchdogS, "heartbeat watchdog [s]")->capture_default_str();
     app.add_option("--travel-limit", o.safety.travelLimit, "travel window ± [m] (linear axes)")->capture_default_str();
     app.add_option("--speed-limit", o.safety.speedLimitRadS, "motor speed limit [rad/s]")->capture_default_str();
@@ -81,13 +81,13 @@ int main(int argc, char** argv)
     struct sigaction sa {};
     sa.sa_handler = onSignal;
     sigemptyset(&sa.sa_mask);
-    sa.sa_flags = 0;  // no SA_RESTART: select() returns so the loop sees the stop flag
+    sa.sa_flags = 0; // no SA_RESTART: select() returns so the loop sees the stop flag
     sigaction(SIGINT, &sa, nullptr);
     sigaction(SIGTERM, &sa, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
     std::cout << "axistune-simdrive listening on 127.0.0.1:" << (*server)->port() << std::endl;
-    logLine("preset " + o.preset + ", seed " + std::to_string(o.seed) + ", faults " + device::describeFaults(o.faults)
-            + ", watchdog " + std::to_string(o.safety.watchdogS) + " s");
+    logLine("preset " + o.preset + ", seed " + std::to_string(o.seed) + ", faults " + device::describeFaults(o.faults) +
+            ", watchdog " + std::to_string(o.safety.watchdogS) + " s");
     const auto st = (*server)->serve();
     g_server = nullptr;
     logLine(st ? "shut down cleanly" : "stopped: " + st.error().detail);

@@ -18,7 +18,7 @@ bool parseNumber(const std::string& s, double& out)
     return end && *end == '\0' && std::isfinite(out);
 }
 
-}  // namespace
+} // namespace
 
 Status addFaultMode(FaultInjection& f, const std::string& mode)
 {
@@ -66,4 +66,4 @@ std::string describeFaults(const FaultInjection& f)
     return s.empty() ? "none" : s;
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -11,10 +11,10 @@
 namespace axistune::device {
 
 struct FaultInjection {
-    int dropAfterRequests = 0;     ///< > 0: close each connection when its N-th request arrives
-    int delayMs = 0;               ///< > 0: answer every request this late (past the client's timeout)
-    bool illegalAddress = false;   ///< parameter registers answer ILLEGAL DATA ADDRESS
-    double driveFaultAfterS = -1;  ///< >= 0: the drive faults this long (machine time) into a test
+    int dropAfterRequests = 0;    ///< > 0: close each connection when its N-th request arrives
+    int delayMs = 0;              ///< > 0: answer every request this late (past the client's timeout)
+    bool illegalAddress = false;  ///< parameter registers answer ILLEGAL DATA ADDRESS
+    double driveFaultAfterS = -1; ///< >= 0: the drive faults this long (machine time) into a test
 
     bool any() const { return dropAfterRequests > 0 || delayMs > 0 || illegalAddress || driveFaultAfterS >= 0; }
 };
@@ -25,4 +25,4 @@ Result<FaultInjection> parseFaultModes(const std::vector<std::string>& modes);
 /// A one-line description of the active modes for the log, e.g. "drop-after:5, delay:1500".
 std::string describeFaults(const FaultInjection& f);
 
-}  // namespace axistune::device
+} // namespace axistune::device

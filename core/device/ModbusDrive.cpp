@@ -2,38 +2,55 @@
 // Modbus TCP client of the Drive seam; protocol and register map in docs/modbus.md.
 #include "core/device/ModbusDrive.h"
 
-#include <modbus/modbus.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <modbus/modbus.h>
 #include <sstream>
 #include <thread>
 
 namespace axistune::device {
 namespace {
 
-modbus_t* mb(void* p) { return static_cast<modbus_t*>(p); }
+modbus_t* mb(void* p)
+{
+    return static_cast<modbus_t*>(p);
+}
 
-bool isException(int e) { return e >= EMBXILFUN && e <= EMBXGTAR; }
+bool isException(int e)
+{
+    return e >= EMBXILFUN && e <= EMBXGTAR;
+}
 
-}  // namespace
+} // namespace
 
 std::string modbusExceptionText(int code)
 {
     switch (code) {
-    case 1: return "exception 1 ILLEGAL FUNCTION: the drive does not support this request";
-    case 2: return "exception 2 ILLEGAL DATA ADDRESS: register not available on this drive or axis (check the register map)";
-    case 3: return "exception 3 ILLEGAL DATA VALUE: value refused by the drive (out of range or malformed)";
-    case 4: return "exception 4 SERVER DEVICE FAILURE: the drive failed while executing the request";
-    case 5: return "exception 5 ACKNOWLEDGE: accepted, still executing";
-    case 6: return "exception 6 SERVER DEVICE BUSY: the drive is busy (a test is running)";
-    case 7: return "exception 7 NEGATIVE ACKNOWLEDGE: the drive cannot execute the request";
-    case 8: return "exception 8 MEMORY PARITY ERROR in the drive";
-    case 10: return "exception 10 GATEWAY PATH UNAVAILABLE";
-    case 11: return "exception 11 GATEWAY TARGET DEVICE FAILED TO RESPOND: no axis on this unit id";
-    default: return "exception " + std::to_string(code) + " (not defined by Modbus)";
+    case 1:
+        return "exception 1 ILLEGAL FUNCTION: the drive does not support this request";
+    case 2:
+        return "exception 2 ILLEGAL DATA ADDRESS: register not available on this drive or axis (check the register "
+               "map)";
+    case 3:
+        return "exception 3 ILLEGAL DATA VALUE: value refused by the drive (out of range or malformed)";
+    case 4:
+        return "exception 4 SERVER DEVICE FAILURE: the drive failed while executing the request";
+    case 5:
+        return "exception 5 ACKNOWLEDGE: accepted, still executing";
+    case 6:
+        return "exception 6 SERVER DEVICE BUSY: the drive is busy (a test is running)";
+    case 7:
+        return "exception 7 NEGATIVE ACKNOWLEDGE: the drive cannot execute the request";
+    case 8:
+        return "exception 8 MEMORY PARITY ERROR in the drive";
+    case 10:
+        return "exception 10 GATEWAY PATH UNAVAILABLE";
+    case 11:
+        return "exception 11 GATEWAY TARGET DEVICE FAILED TO RESPOND: no axis on this unit id";
+    default:
+        return "exception " + std::to_string(code) + " (not defined by Modbus)";
     }
 }
 
@@ -41,7 +58,8 @@ Result<ModbusUri> parseModbusUri(const std::string& uri)
 {
     const std::string prefix = "modbus://";
     auto bad = [&](const std::string& why) {
-        return makeError(ErrorCode::BadInput, "connection '" + uri + "': " + why + " (expected modbus://HOST:PORT[?timeout_ms=N&map=FAMILY])");
+        return makeError(ErrorCode::BadInput, "connection '" + uri + "': " + why +
+                                                  " (expected modbus://HOST:PORT[?timeout_ms=N&map=FAMILY])");
     };
     if (uri.rfind(prefix, 0) != 0)
         return bad("not a modbus:// URI");
@@ -93,7 +111,8 @@ Result<std::unique_ptr<ModbusDrive>> ModbusDrive::open(const ModbusUri& uri, Reg
     d->m_ctx = modbus_new_tcp(uri.host.c_str(), uri.port);
     if (!d->m_ctx)
         return makeError(ErrorCode::BadInput, uri.text + ": " + modbus_strerror(errno));
-    const auto sec = static_cast<std::uint32_t>(uri.timeoutMs / 1000), usec = static_cast<std::uint32_t>(uri.timeoutMs % 1000) * 1000;
+    const auto sec = static_cast<std::uint32_t>(uri.timeoutMs / 1000),
+               usec = static_cast<std::uint32_t>(uri.timeoutMs % 1000) * 1000;
     modbus_set_response_timeout(mb(d->m_ctx), sec, usec);
     modbus_set_byte_timeout(mb(d->m_ctx), sec, usec);
     if (auto st = d->connectOnce(); !st)
@@ -106,7 +125,7 @@ Result<std::unique_ptr<ModbusDrive>> ModbusDrive::open(const ModbusUri& uri, Reg
 ModbusDrive::~ModbusDrive()
 {
     if (m_testRunning && m_connected)
-        (void)abortTest();  // a drive left running would only stop by its watchdog
+        (void)abortTest(); // a drive left running would only stop by its watchdog
     disconnect();
     if (m_ctx)
         modbus_free(mb(m_ctx));
@@ -139,7 +158,7 @@ Status ModbusDrive::transact(int unit, const std::string& what, Retry retry, con
                 lastError += "; giving up after " + std::to_string(kMaxReconnects) + " reconnects in this session";
                 break;
             }
-            std::this_thread::sleep_for(std::chrono::milliseconds(50 * attempt));  // bounded: at most 150 ms in all
+            std::this_thread::sleep_for(std::chrono::milliseconds(50 * attempt)); // bounded: at most 150 ms in all
         }
         if (!m_connected) {
             if (modbus_connect(mb(m_ctx)) != 0) {
@@ -166,8 +185,8 @@ Status ModbusDrive::transact(int unit, const std::string& what, Retry retry, con
 
 Error ModbusDrive::exceptionError(int unit, int code, const std::string& what)
 {
-    std::string detail = m_uri.text + " unit " + std::to_string(unit) + ": " + what + ": drive answered "
-                         + modbusExceptionText(code);
+    std::string detail =
+        m_uri.text + " unit " + std::to_string(unit) + ": " + what + ": drive answered " + modbusExceptionText(code);
     // The drive explains its refusals in status.message; one plain read, no retry.
     const auto& f = m_map.field("status.message");
     std::vector<std::uint16_t> buf(static_cast<std::size_t>(f.count));
@@ -210,13 +229,17 @@ Status ModbusDrive::loadAxes()
     const int n = last.address + last.count;
     std::vector<std::uint16_t> r(static_cast<std::size_t>(n));
     auto get = [&](const std::string& f) { return r[static_cast<std::size_t>(m_map.field(f).address)]; };
-    auto text = [&](const std::string& f) { return decodeString(&r[static_cast<std::size_t>(m_map.field(f).address)], m_map.field(f).count); };
+    auto text = [&](const std::string& f) {
+        return decodeString(&r[static_cast<std::size_t>(m_map.field(f).address)], m_map.field(f).count);
+    };
     if (auto st = readRegs(m_map.unitIdBase, 0, n, r.data(), "reading the identity block"); !st)
         return st;
     if (get("identity.magic") != m_map.magic)
-        return makeError(ErrorCode::Device, m_uri.text + ": identity.magic is " + std::to_string(get("identity.magic"))
-                                                + ", not " + std::to_string(m_map.magic) + ": not a " + m_map.family + " drive");
-    m_identity = {text("identity.vendor"), text("identity.model"), text("identity.firmware"), text("identity.machine"), {}};
+        return makeError(ErrorCode::Device, m_uri.text + ": identity.magic is " +
+                                                std::to_string(get("identity.magic")) + ", not " +
+                                                std::to_string(m_map.magic) + ": not a " + m_map.family + " drive");
+    m_identity = {
+        text("identity.vendor"), text("identity.model"), text("identity.firmware"), text("identity.machine"), {}};
     const int axes = get("identity.axis_count");
     if (axes < 1 || axes > 32)
         return makeError(ErrorCode::Device, m_uri.text + ": implausible axis count " + std::to_string(axes));
@@ -287,14 +310,16 @@ Result<model::ParameterValues> ModbusDrive::readParameters(const std::string& ax
     for (std::size_t i = 0; i < regs.size();) {
         // One read per run of adjacent parameter registers, at most maxRegistersPerRead long.
         std::size_t j = i + 1;
-        while (j < regs.size() && regs[j]->address == regs[j - 1]->address + 2 && regs[j]->address + 2 - regs[i]->address <= maxRegs)
+        while (j < regs.size() && regs[j]->address == regs[j - 1]->address + 2 &&
+               regs[j]->address + 2 - regs[i]->address <= maxRegs)
             ++j;
         const int first = regs[i]->address, count = regs[j - 1]->address + 2 - first;
         std::vector<std::uint16_t> buf(static_cast<std::size_t>(count));
         if (auto st = readRegs(a->unit, first, count, buf.data(), "reading parameter " + regs[i]->meta.key); !st)
             return st.error();
         for (std::size_t k = i; k < j; ++k)
-            out[regs[k]->meta.key] = decodeF32(&buf[static_cast<std::size_t>(regs[k]->address - first)], m_map.wordOrder);
+            out[regs[k]->meta.key] =
+                decodeF32(&buf[static_cast<std::size_t>(regs[k]->address - first)], m_map.wordOrder);
         i = j;
     }
     return out;
@@ -313,7 +338,8 @@ Status ModbusDrive::writeParameters(const std::string& axis, const model::Parame
         if (!p->meta.writable)
             return makeError(ErrorCode::BadInput, "axis " + axis + ": parameter '" + k + "' is read-only");
         if (m_testRunning && !p->meta.writableDuringTest)
-            return makeError(ErrorCode::Busy, "axis " + axis + ": parameter '" + k + "' cannot be written while a test runs");
+            return makeError(ErrorCode::Busy,
+                             "axis " + axis + ": parameter '" + k + "' cannot be written while a test runs");
         for (const double x : {v, static_cast<double>(static_cast<float>(v))}) {
             if (auto st = model::checkParameterValue(p->meta, x); !st)
                 return makeError(st.error().code, "axis " + axis + ": " + st.error().detail + " (not sent)");
@@ -336,8 +362,9 @@ Status ModbusDrive::writeParameters(const std::string& axis, const model::Parame
     for (const auto& [k, v] : values) {
         const double sent = static_cast<float>(v);
         if (back->at(k) != sent)
-            return makeError(ErrorCode::Device, m_uri.text + ": read-back of " + k + " gave " + std::to_string(back->at(k))
-                                                    + " after writing " + std::to_string(sent));
+            return makeError(ErrorCode::Device, m_uri.text + ": read-back of " + k + " gave " +
+                                                    std::to_string(back->at(k)) + " after writing " +
+                                                    std::to_string(sent));
     }
     return Status::success();
 }
@@ -347,8 +374,10 @@ Status ModbusDrive::startTest(const TestRequest& request)
     auto a = axisInfo(request.axis);
     if (!a)
         return a.error();
-    const char* type = request.type == TestType::Step ? "step" : request.type == TestType::Jog ? "jog"
-                     : request.type == TestType::Hold ? "hold" : "frf";
+    const char* type = request.type == TestType::Step   ? "step"
+                       : request.type == TestType::Jog  ? "jog"
+                       : request.type == TestType::Hold ? "hold"
+                                                        : "frf";
     const int code = m_map.code("test_type", type);
     if (code < 0)
         return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no test type '" + type + "'");
@@ -363,11 +392,15 @@ Status ModbusDrive::startTest(const TestRequest& request)
     const auto& first = m_map.field("test.type");
     std::vector<std::uint16_t> w(static_cast<std::size_t>(hi - lo));
     if (first.address != lo || hi - lo > 123)
-        return makeError(ErrorCode::Internal, "register map " + m_map.family + ": the test block must start at test.type and fit one write");
-    auto at = [&](const std::string& f) { return &w[static_cast<std::size_t>(m_map.field(f).address - first.address)]; };
+        return makeError(ErrorCode::Internal,
+                         "register map " + m_map.family + ": the test block must start at test.type and fit one write");
+    auto at = [&](const std::string& f) {
+        return &w[static_cast<std::size_t>(m_map.field(f).address - first.address)];
+    };
     const WordOrder o = m_map.wordOrder;
     *at("test.type") = static_cast<std::uint16_t>(code);
-    *at("test.flags") = static_cast<std::uint16_t>(request.returnToStart ? m_map.code("test_flag", "return_to_start") : 0);
+    *at("test.flags") =
+        static_cast<std::uint16_t>(request.returnToStart ? m_map.code("test_flag", "return_to_start") : 0);
     *at("test.trace_divider") = static_cast<std::uint16_t>(request.traceDivider);
     encodeF64(request.amplitude, o, at("test.amplitude"));
     encodeF64(request.distance, o, at("test.distance"));
@@ -375,10 +408,12 @@ Status ModbusDrive::startTest(const TestRequest& request)
     encodeF64(request.acceleration, o, at("test.acceleration"));
     encodeF64(request.durationS, o, at("test.duration"));
     if (request.type == TestType::Frf) {
-        const char* method = request.frfMethod == FrfMethod::Prbs ? "prbs"
-                           : request.frfMethod == FrfMethod::Conventional ? "conventional" : "multisweep";
+        const char* method = request.frfMethod == FrfMethod::Prbs           ? "prbs"
+                             : request.frfMethod == FrfMethod::Conventional ? "conventional"
+                                                                            : "multisweep";
         if (!m_map.fields.count("test.frf_method") || m_map.code("frf_method", method) < 0)
-            return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no FRF method '" + method + "'");
+            return makeError(ErrorCode::BadInput,
+                             "drive family " + m_map.family + " has no FRF method '" + method + "'");
         if (request.points < 1 || request.points > 65535)
             return makeError(ErrorCode::OutOfRange, "FRF points must lie in 1..65535");
         *at("test.frf_method") = static_cast<std::uint16_t>(m_map.code("frf_method", method));
@@ -389,7 +424,9 @@ Status ModbusDrive::startTest(const TestRequest& request)
         encodeF64(request.settleS, o, at("test.settle"));
         encodeF64(request.minMeasureS, o, at("test.min_measure"));
     }
-    if (auto st = writeRegs(a->unit, first.address, w.data(), static_cast<int>(w.size()), "writing the test configuration"); !st)
+    if (auto st =
+            writeRegs(a->unit, first.address, w.data(), static_cast<int>(w.size()), "writing the test configuration");
+        !st)
         return st;
     if (auto st = command(a->unit, "start_test"); !st)
         return st;
@@ -432,10 +469,14 @@ Result<TestStatus> ModbusDrive::pollTest()
     const std::string fault = m_map.name("fault", *at("status.fault_code"));
     TestStatus s;
     s.progress = *at("status.progress") / 10000.0;
-    s.state = state == "running" ? TestState::Running : state == "completed" ? TestState::Completed
-            : state == "aborted" ? TestState::Aborted : state == "faulted" ? TestState::Faulted : TestState::Idle;
+    s.state = state == "running"     ? TestState::Running
+              : state == "completed" ? TestState::Completed
+              : state == "aborted"   ? TestState::Aborted
+              : state == "faulted"   ? TestState::Faulted
+                                     : TestState::Idle;
     if (s.state == TestState::Aborted || s.state == TestState::Faulted)
-        s.detail = "drive " + m_uri.text + " stopped the test (" + fault + "): " + decodeString(at("status.message"), fm.count);
+        s.detail = "drive " + m_uri.text + " stopped the test (" + fault +
+                   "): " + decodeString(at("status.message"), fm.count);
     if (s.state != TestState::Running)
         m_testRunning = false;
     return s;
@@ -464,4 +505,4 @@ Result<std::unique_ptr<Drive>> connectAny(const ConnectionSettings& settings)
     return std::unique_ptr<Drive>(std::move(d).value());
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -16,16 +16,16 @@
 #include <string>
 #include <vector>
 
-struct _modbus;  // libmodbus's modbus_t
+struct _modbus; // libmodbus's modbus_t
 
 namespace axistune::device {
 
 struct ModbusUri {
     std::string host;
     int port = 502;
-    int timeoutMs = 1000;               ///< per request, also the connect timeout
-    std::string family = "axistune-sim";  ///< register map resources/drives/<family>.json
-    std::string text;                   ///< the URI as given, for messages
+    int timeoutMs = 1000;                ///< per request, also the connect timeout
+    std::string family = "axistune-sim"; ///< register map resources/drives/<family>.json
+    std::string text;                    ///< the URI as given, for messages
 };
 
 /// "modbus://HOST:PORT[?timeout_ms=N&map=FAMILY]"; errors name the URI and the part that is wrong.
@@ -56,8 +56,8 @@ public:
     /// Requests sent so far (for benchmarks).
     std::uint64_t requestCount() const { return m_requests; }
 
-    static constexpr int kMaxAttempts = 3;     ///< per idempotent request
-    static constexpr int kMaxReconnects = 5;   ///< per session
+    static constexpr int kMaxAttempts = 3;   ///< per idempotent request
+    static constexpr int kMaxReconnects = 5; ///< per session
     static constexpr std::chrono::milliseconds kHeartbeatPeriod{200};
     static constexpr std::chrono::milliseconds kMinPollInterval{10};
 
@@ -86,7 +86,7 @@ private:
 
     ModbusUri m_uri;
     RegisterMap m_map;
-    void* m_ctx = nullptr;  ///< modbus_t*
+    void* m_ctx = nullptr; ///< modbus_t*
     bool m_connected = false;
     int m_reconnects = 0;
     std::uint64_t m_requests = 0;
@@ -103,4 +103,4 @@ private:
 /// Opens "sim:PRESET" (embedded) or "modbus://HOST:PORT" (Modbus TCP) alike.
 Result<std::unique_ptr<Drive>> connectAny(const ConnectionSettings& settings);
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -3,9 +3,8 @@
 // (function code 23: select and read in one round trip); format in docs/modbus.md.
 #include "core/device/ModbusDrive.h"
 
-#include <modbus/modbus.h>
-
 #include <algorithm>
+#include <modbus/modbus.h>
 #include <sstream>
 
 namespace axistune::device {
@@ -16,7 +15,7 @@ Result<std::string> ModbusDrive::readText(int unit, std::uint16_t channel)
     const auto& win = m_map.field("trace.window");
     std::string text;
     std::vector<std::uint16_t> buf(static_cast<std::size_t>(win.count));
-    for (int page = 0; page < 64; ++page) {  // texts are short: at most 64 windows
+    for (int page = 0; page < 64; ++page) { // texts are short: at most 64 windows
         std::uint16_t w[3];
         encodeU32(static_cast<std::uint32_t>(text.size()), m_map.wordOrder, w);
         w[2] = channel;
@@ -59,8 +58,8 @@ Result<model::Capture> ModbusDrive::readTrace()
             cap.metadata[line.substr(0, eq)] = line.substr(eq + 1);
     }
     if (static_cast<int>(cap.channels.size()) != channels)
-        return makeError(ErrorCode::Device, m_uri.text + ": trace lists " + std::to_string(cap.channels.size())
-                                                + " channel names for " + std::to_string(channels) + " channels");
+        return makeError(ErrorCode::Device, m_uri.text + ": trace lists " + std::to_string(cap.channels.size()) +
+                                                " channel names for " + std::to_string(channels) + " channels");
     const auto& sel = m_map.field("trace.select_offset");
     const auto& win = m_map.field("trace.window");
     const int perPage = win.count / 4;
@@ -75,7 +74,8 @@ Result<model::Capture> ModbusDrive::readTrace()
             // Select the page and read it in one request (function code 23); repeating it is harmless.
             auto st = transact(unit, "reading trace channel " + cap.channels[static_cast<std::size_t>(c)].name,
                                Retry::Idempotent, [&](modbus_t* ctx) {
-                                   return modbus_write_and_read_registers(ctx, sel.address, 3, w, win.address, win.count, buf.data());
+                                   return modbus_write_and_read_registers(ctx, sel.address, 3, w, win.address,
+                                                                          win.count, buf.data());
                                });
             if (!st)
                 return st.error();
@@ -94,7 +94,7 @@ Result<std::vector<double>> ModbusDrive::readBlob(int unit, std::uint16_t channe
     const std::uint32_t perPage = static_cast<std::uint32_t>(win.count / 4);
     std::vector<std::uint16_t> buf(static_cast<std::size_t>(win.count));
     std::vector<double> blob;
-    std::size_t length = 1;  // known after the first page: element 0 is the length
+    std::size_t length = 1; // known after the first page: element 0 is the length
     constexpr std::size_t kMaxLength = 50'000'000;
     for (std::uint32_t off = 0; off < length; off += perPage) {
         std::uint16_t w[3];
@@ -109,7 +109,8 @@ Result<std::vector<double>> ModbusDrive::readBlob(int unit, std::uint16_t channe
             blob.push_back(decodeF64(&buf[4 * k], m_map.wordOrder));
             if (off + k == 0) {
                 if (!(blob[0] >= 3.0 && blob[0] <= static_cast<double>(kMaxLength)))
-                    return makeError(ErrorCode::NotFound, m_uri.text + ": no frequency response: no FRF test has completed");
+                    return makeError(ErrorCode::NotFound,
+                                     m_uri.text + ": no frequency response: no FRF test has completed");
                 length = static_cast<std::size_t>(blob[0]);
             }
         }
@@ -131,7 +132,9 @@ Result<FrfMeasurement> ModbusDrive::readFrequencyResponse()
         return meta.error();
     const std::vector<double>& b = *blob;
     std::size_t i = 1;
-    auto malformed = [&] { return makeError(ErrorCode::Device, m_uri.text + ": malformed frequency response from the drive"); };
+    auto malformed = [&] {
+        return makeError(ErrorCode::Device, m_uri.text + ": malformed frequency response from the drive");
+    };
     auto take = [&](std::size_t n) { return i + n <= b.size(); };
     FrfMeasurement m;
     if (!take(2))
@@ -157,8 +160,10 @@ Result<FrfMeasurement> ModbusDrive::readFrequencyResponse()
             return malformed();
         for (std::size_t s = 0; s < n; ++s)
             blk.sample.push_back(static_cast<std::int64_t>(b[i + s]));
-        blk.excitation.assign(b.begin() + static_cast<std::ptrdiff_t>(i + n), b.begin() + static_cast<std::ptrdiff_t>(i + 2 * n));
-        blk.response.assign(b.begin() + static_cast<std::ptrdiff_t>(i + 2 * n), b.begin() + static_cast<std::ptrdiff_t>(i + 3 * n));
+        blk.excitation.assign(b.begin() + static_cast<std::ptrdiff_t>(i + n),
+                              b.begin() + static_cast<std::ptrdiff_t>(i + 2 * n));
+        blk.response.assign(b.begin() + static_cast<std::ptrdiff_t>(i + 2 * n),
+                            b.begin() + static_cast<std::ptrdiff_t>(i + 3 * n));
         i += 3 * n;
         m.sweep.blocks.push_back(std::move(blk));
     }
@@ -176,4 +181,4 @@ Result<FrfMeasurement> ModbusDrive::readFrequencyResponse()
     return m;
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

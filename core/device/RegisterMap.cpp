@@ -4,11 +4,10 @@
 
 #include "core/sim/MachineDefinition.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace axistune::device {
@@ -16,12 +15,16 @@ namespace axistune::device {
 int registerCount(RegisterType type)
 {
     switch (type) {
-    case RegisterType::U16: return 1;
+    case RegisterType::U16:
+        return 1;
     case RegisterType::U32:
-    case RegisterType::F32: return 2;
-    case RegisterType::F64: return 4;
+    case RegisterType::F32:
+        return 2;
+    case RegisterType::F64:
+        return 4;
     case RegisterType::String:
-    case RegisterType::Window: return 0;
+    case RegisterType::Window:
+        return 0;
     }
     return 0;
 }
@@ -29,12 +32,18 @@ int registerCount(RegisterType type)
 const char* registerTypeName(RegisterType type)
 {
     switch (type) {
-    case RegisterType::U16: return "u16";
-    case RegisterType::U32: return "u32";
-    case RegisterType::F32: return "f32";
-    case RegisterType::F64: return "f64";
-    case RegisterType::String: return "string";
-    case RegisterType::Window: return "window";
+    case RegisterType::U16:
+        return "u16";
+    case RegisterType::U32:
+        return "u32";
+    case RegisterType::F32:
+        return "f32";
+    case RegisterType::F64:
+        return "f64";
+    case RegisterType::String:
+        return "string";
+    case RegisterType::Window:
+        return "window";
     }
     return "?";
 }
@@ -92,18 +101,49 @@ std::string RegisterMap::name(const std::string& group, int c) const
 
 const std::vector<std::string>& requiredRegisterFields()
 {
-    static const std::vector<std::string> k{
-        "identity.magic", "identity.map_version", "identity.axis_count", "identity.axis_index", "identity.vendor",
-        "identity.model", "identity.firmware", "identity.machine", "identity.axis_name", "identity.axis_kind",
-        "identity.parameter_count",
-        "status.state", "status.fault_code", "status.position", "status.velocity", "status.torque", "status.progress",
-        "status.heartbeat_echo", "status.command_token_echo", "status.command_result", "status.trace_samples",
-        "status.trace_channels", "status.trace_rate_hz", "status.message",
-        "test.type", "test.flags", "test.trace_divider", "test.trace_channel_mask", "test.amplitude", "test.distance",
-        "test.velocity", "test.acceleration", "test.duration", "test.offset", "test.freq_start", "test.freq_end",
-        "test.freq_count",
-        "command.code", "command.token", "heartbeat.counter",
-        "trace.select_offset", "trace.select_channel", "trace.window"};
+    static const std::vector<std::string> k{"identity.magic",
+                                            "identity.map_version",
+                                            "identity.axis_count",
+                                            "identity.axis_index",
+                                            "identity.vendor",
+                                            "identity.model",
+                                            "identity.firmware",
+                                            "identity.machine",
+                                            "identity.axis_name",
+                                            "identity.axis_kind",
+                                            "identity.parameter_count",
+                                            "status.state",
+                                            "status.fault_code",
+                                            "status.position",
+                                            "status.velocity",
+                                            "status.torque",
+                                            "status.progress",
+                                            "status.heartbeat_echo",
+                                            "status.command_token_echo",
+                                            "status.command_result",
+                                            "status.trace_samples",
+                                            "status.trace_channels",
+                                            "status.trace_rate_hz",
+                                            "status.message",
+                                            "test.type",
+                                            "test.flags",
+                                            "test.trace_divider",
+                                            "test.trace_channel_mask",
+                                            "test.amplitude",
+                                            "test.distance",
+                                            "test.velocity",
+                                            "test.acceleration",
+                                            "test.duration",
+                                            "test.offset",
+                                            "test.freq_start",
+                                            "test.freq_end",
+                                            "test.freq_count",
+                                            "command.code",
+                                            "command.token",
+                                            "heartbeat.counter",
+                                            "trace.select_offset",
+                                            "trace.select_channel",
+                                            "trace.window"};
     return k;
 }
 
@@ -111,9 +151,9 @@ namespace {
 
 Result<RegisterType> parseType(const std::string& s)
 {
-    static const std::map<std::string, RegisterType> k{{"u16", RegisterType::U16},       {"u32", RegisterType::U32},
-                                                       {"f32", RegisterType::F32},       {"f64", RegisterType::F64},
-                                                       {"string", RegisterType::String}, {"window", RegisterType::Window}};
+    static const std::map<std::string, RegisterType> k{
+        {"u16", RegisterType::U16}, {"u32", RegisterType::U32},       {"f32", RegisterType::F32},
+        {"f64", RegisterType::F64}, {"string", RegisterType::String}, {"window", RegisterType::Window}};
     auto it = k.find(s);
     if (it == k.end())
         return makeError(ErrorCode::BadInput, "unknown type '" + s + "' (u16, u32, f32, f64, string, window)");
@@ -130,8 +170,8 @@ Status checkLayout(const RegisterMap& m, const std::string& source)
         for (int a = addr; a < addr + count; ++a) {
             auto [it, fresh] = owner.emplace(a, who);
             if (!fresh)
-                return makeError(ErrorCode::BadInput, source + ": register " + std::to_string(a) + " is used by both '"
-                                                          + it->second + "' and '" + who + "'");
+                return makeError(ErrorCode::BadInput, source + ": register " + std::to_string(a) +
+                                                          " is used by both '" + it->second + "' and '" + who + "'");
         }
         return Status::success();
     };
@@ -161,7 +201,7 @@ Status checkLayout(const RegisterMap& m, const std::string& source)
     return Status::success();
 }
 
-}  // namespace
+} // namespace
 
 Result<RegisterMap> parseRegisterMap(const std::string& jsonText, const std::string& source)
 {
@@ -185,7 +225,8 @@ Result<RegisterMap> parseRegisterMap(const std::string& jsonText, const std::str
         m.maxRegistersPerRead = j.value("max_registers_per_read", 125);
         m.magic = j.at("magic").get<std::uint16_t>();
         if (m.unitIdBase < 1 || m.unitIdBase > 247 || m.maxRegistersPerRead < 4 || m.maxRegistersPerRead > 125)
-            return makeError(ErrorCode::BadInput, source + ": unit_id_base must lie in 1..247, max_registers_per_read in 4..125");
+            return makeError(ErrorCode::BadInput,
+                             source + ": unit_id_base must lie in 1..247, max_registers_per_read in 4..125");
         for (const auto& [n, f] : j.at("fields").items()) {
             where = "field '" + n + "'";
             RegisterField rf;
@@ -221,7 +262,8 @@ Result<RegisterMap> parseRegisterMap(const std::string& jsonText, const std::str
             pr.meta.description = p.value("description", std::string());
             pr.axisKinds = p.value("axis_kinds", std::vector<std::string>{});
             if (p.value("type", std::string("f32")) != "f32")
-                return makeError(ErrorCode::BadInput, source + ": " + where + ": parameters are float32 pairs (type f32)");
+                return makeError(ErrorCode::BadInput,
+                                 source + ": " + where + ": parameters are float32 pairs (type f32)");
             if (!(pr.meta.minSi <= pr.meta.maxSi))
                 return makeError(ErrorCode::BadInput, source + ": " + where + ": min exceeds max");
             m.parameters.push_back(std::move(pr));
@@ -283,7 +325,7 @@ void encodeF64(double v, WordOrder o, std::uint16_t* out)
     std::uint64_t bits;
     std::memcpy(&bits, &v, sizeof bits);
     for (int i = 0; i < 4; ++i) {
-        const auto w = static_cast<std::uint16_t>(bits >> (16 * (3 - i)));  // most significant first
+        const auto w = static_cast<std::uint16_t>(bits >> (16 * (3 - i))); // most significant first
         out[o == WordOrder::HighWordFirst ? i : 3 - i] = w;
     }
 }
@@ -321,4 +363,4 @@ std::string decodeString(const std::uint16_t* in, int registers)
     return s;
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

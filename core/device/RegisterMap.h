@@ -23,17 +23,17 @@ int registerCount(RegisterType type);
 const char* registerTypeName(RegisterType type);
 
 struct RegisterField {
-    std::string name;  ///< "status.state", "trace.window"
-    int address = 0;   ///< PDU address (0-based) of the first holding register
+    std::string name; ///< "status.state", "trace.window"
+    int address = 0;  ///< PDU address (0-based) of the first holding register
     RegisterType type = RegisterType::U16;
-    int count = 1;     ///< registers
+    int count = 1; ///< registers
     std::string description;
 };
 
 struct ParameterRegister {
     model::ParameterMeta meta;
-    int address = 0;                     ///< float32 pair at address, address+1
-    std::vector<std::string> axisKinds;  ///< "linear", "rotary"; empty: every axis
+    int address = 0;                    ///< float32 pair at address, address+1
+    std::vector<std::string> axisKinds; ///< "linear", "rotary"; empty: every axis
     bool availableOn(const std::string& axisKind) const;
 };
 
@@ -81,4 +81,4 @@ double decodeF64(const std::uint16_t* in, WordOrder o);
 void encodeString(const std::string& s, int registers, std::uint16_t* out);
 std::string decodeString(const std::uint16_t* in, int registers);
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -5,20 +5,18 @@
 
 #include "core/sim/MachineDefinition.h"
 
-#include <modbus/modbus.h>
-#include <nlohmann/json.hpp>
-
 #include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/select.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <modbus/modbus.h>
+#include <netinet/in.h>
+#include <nlohmann/json.hpp>
 #include <sstream>
+#include <sys/select.h>
+#include <sys/socket.h>
 #include <thread>
+#include <unistd.h>
 
 namespace axistune::device {
 namespace {
@@ -26,12 +24,21 @@ namespace {
 constexpr int kMaxClients = 8;
 constexpr int kRegisterSpace = 65536;
 
-modbus_t* mb(void* p) { return static_cast<modbus_t*>(p); }
-modbus_mapping_t* mapping(void* p) { return static_cast<modbus_mapping_t*>(p); }
+modbus_t* mb(void* p)
+{
+    return static_cast<modbus_t*>(p);
+}
+modbus_mapping_t* mapping(void* p)
+{
+    return static_cast<modbus_mapping_t*>(p);
+}
 
-int be16(const std::uint8_t* p) { return (p[0] << 8) | p[1]; }
+int be16(const std::uint8_t* p)
+{
+    return (p[0] << 8) | p[1];
+}
 
-}  // namespace
+} // namespace
 
 Result<std::unique_ptr<SimDriveServer>> SimDriveServer::create(const SimDriveServerOptions& options)
 {
@@ -46,7 +53,8 @@ Result<std::unique_ptr<SimDriveServer>> SimDriveServer::create(const SimDriveSer
     s->m_drive = std::move(drive).value();
     s->m_machine = def->name;
     for (const auto& a : def->axes)
-        s->m_axes.push_back({a.name, a.kind == sim::AxisKind::Linear ? "linear" : "rotary", s->m_drive->simulator(a.name)});
+        s->m_axes.push_back(
+            {a.name, a.kind == sim::AxisKind::Linear ? "linear" : "rotary", s->m_drive->simulator(a.name)});
     s->m_config.resize(s->m_axes.size());
     auto map = loadRegisterMap(options.mapFamily);
     if (!map)
@@ -67,17 +75,18 @@ Result<std::unique_ptr<SimDriveServer>> SimDriveServer::create(const SimDriveSer
         return st.error();
 
     if (options.bind != "127.0.0.1" && options.bind != "localhost")
-        return makeError(ErrorCode::BadInput, "--bind " + options.bind + ": the simulated drive serves on 127.0.0.1 only");
+        return makeError(ErrorCode::BadInput,
+                         "--bind " + options.bind + ": the simulated drive serves on 127.0.0.1 only");
     if (options.port < 0 || options.port > 65535)
         return makeError(ErrorCode::BadInput, "--port must lie in 0..65535 (0: a free port)");
     s->m_ctx = modbus_new_tcp("127.0.0.1", options.port);
     if (!s->m_ctx)
         return makeError(ErrorCode::Device, std::string("cannot create the Modbus context: ") + modbus_strerror(errno));
-    modbus_set_indication_timeout(mb(s->m_ctx), 1, 0);  // a request that stops half-way is dropped after 1 s
+    modbus_set_indication_timeout(mb(s->m_ctx), 1, 0); // a request that stops half-way is dropped after 1 s
     s->m_listenFd = modbus_tcp_listen(mb(s->m_ctx), kMaxClients);
     if (s->m_listenFd < 0)
-        return makeError(ErrorCode::Device, "cannot listen on 127.0.0.1:" + std::to_string(options.port) + ": "
-                                                + modbus_strerror(errno));
+        return makeError(ErrorCode::Device,
+                         "cannot listen on 127.0.0.1:" + std::to_string(options.port) + ": " + modbus_strerror(errno));
     sockaddr_in addr{};
     socklen_t len = sizeof addr;
     getsockname(s->m_listenFd, reinterpret_cast<sockaddr*>(&addr), &len);
@@ -110,7 +119,7 @@ Status SimDriveServer::loadState()
         return Status::success();
     std::ifstream f(m_opt.stateFile);
     if (!f)
-        return Status::success();  // first run: the preset's values
+        return Status::success(); // first run: the preset's values
     try {
         const auto j = nlohmann::json::parse(f);
         for (const auto& [axis, values] : j.items()) {
@@ -147,14 +156,14 @@ void SimDriveServer::saveState() const
         std::ofstream f(tmp);
         f << j.dump(1) << '\n';
     }
-    std::rename(tmp.c_str(), m_opt.stateFile.c_str());  // atomic: a kill never leaves half a file
+    std::rename(tmp.c_str(), m_opt.stateFile.c_str()); // atomic: a kill never leaves half a file
 }
 
 void SimDriveServer::reply(const std::uint8_t* query, int length)
 {
     modbus_t* ctx = mb(m_ctx);
     const int hl = modbus_get_header_length(ctx);
-    const std::uint8_t* q = query + hl;  // function code
+    const std::uint8_t* q = query + hl; // function code
     const int unit = query[hl - 1];
     int ex = 0;
     const int fc = q[0];
@@ -201,8 +210,8 @@ Status SimDriveServer::serve()
     std::vector<std::uint8_t> query(MODBUS_TCP_MAX_ADU_LENGTH);
     modbus_t* ctx = mb(m_ctx);
     auto drop = [&](std::size_t i, const std::string& why) {
-        log("connection " + std::to_string(conns[i].id) + " from " + conns[i].peer + " closed (" + why + ", "
-            + std::to_string(conns[i].requests) + " requests)");
+        log("connection " + std::to_string(conns[i].id) + " from " + conns[i].peer + " closed (" + why + ", " +
+            std::to_string(conns[i].requests) + " requests)");
         close(conns[i].fd);
         conns.erase(conns.begin() + static_cast<std::ptrdiff_t>(i));
     };
@@ -250,8 +259,8 @@ Status SimDriveServer::serve()
             }
             ++conns[i].requests;
             if (m_opt.faults.dropAfterRequests > 0 && conns[i].requests >= m_opt.faults.dropAfterRequests) {
-                log("fault drop-after:" + std::to_string(m_opt.faults.dropAfterRequests) + ": dropping connection "
-                    + std::to_string(conns[i].id));
+                log("fault drop-after:" + std::to_string(m_opt.faults.dropAfterRequests) + ": dropping connection " +
+                    std::to_string(conns[i].id));
                 drop(i, "fault injected");
                 continue;
             }
@@ -273,4 +282,4 @@ Status SimDriveServer::serve()
     return Status::success();
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

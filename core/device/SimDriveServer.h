@@ -24,24 +24,24 @@ namespace axistune::device {
 
 /// Limits enforced by the drive; axis units are m (linear) or rad (rotary).
 struct SafetyLimits {
-    double amplitudeLimitPct = 300.0;     ///< torque excitation, % of rated torque (rated current × k_t)
-    double travelLimit = 0.5;             ///< |position| window around 0 [m], linear axes only
-    double speedLimitRadS = 2.0 * 3.14159265358979 * 6000.0 / 60.0;  ///< motor speed [rad/s]
-    double followingErrorLimit = 0.01;    ///< |position command − feedback| in position tests [axis units]
-    double watchdogS = 1.0;               ///< no heartbeat this long while a test runs → stop
+    double amplitudeLimitPct = 300.0; ///< torque excitation, % of rated torque (rated current × k_t)
+    double travelLimit = 0.5;         ///< |position| window around 0 [m], linear axes only
+    double speedLimitRadS = 2.0 * 3.14159265358979 * 6000.0 / 60.0; ///< motor speed [rad/s]
+    double followingErrorLimit = 0.01; ///< |position command − feedback| in position tests [axis units]
+    double watchdogS = 1.0;            ///< no heartbeat this long while a test runs → stop
 };
 
 struct SimDriveServerOptions {
     std::string preset = "vmc";
     std::string bind = "127.0.0.1";
-    int port = 0;  ///< 0: a free port, see SimDriveServer::port()
+    int port = 0; ///< 0: a free port, see SimDriveServer::port()
     std::uint64_t seed = 1;
     std::string mapFamily = "axistune-sim";
     SafetyLimits safety;
     FaultInjection faults;
-    double pace = 0.0;      ///< > 0: at most this many machine seconds per wall second
-    std::string stateFile;  ///< parameters kept across restarts (written after each accepted write)
-    std::function<void(const std::string&)> log;  ///< one line per connection and per fault
+    double pace = 0.0;     ///< > 0: at most this many machine seconds per wall second
+    std::string stateFile; ///< parameters kept across restarts (written after each accepted write)
+    std::function<void(const std::string&)> log; ///< one line per connection and per fault
 };
 
 class SimDriveServer {
@@ -63,7 +63,7 @@ public:
 private:
     struct Axis {
         std::string name;
-        std::string kind;  ///< "linear" or "rotary"
+        std::string kind; ///< "linear" or "rotary"
         sim::AxisSimulator* sim = nullptr;
     };
     struct TestConfig {
@@ -90,6 +90,8 @@ private:
     void takeFrequencyResponse();
     // Register helpers.
     void encodeField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
+    bool encodeIdentity(const RegisterField& f, int unitIndex, std::uint16_t* buf);
+    void encodeWindow(const RegisterField& f, std::uint16_t* buf);
     int writeField(const RegisterField& f, int unitIndex, const std::uint16_t* words);
     int refuse(int exception, const std::string& message);
 
@@ -98,7 +100,7 @@ private:
     std::unique_ptr<SimulatedDrive> m_drive;
     std::string m_machine;
     std::vector<Axis> m_axes;
-    std::vector<int> m_owner;  ///< register → index into m_slots, -1 unmapped
+    std::vector<int> m_owner; ///< register → index into m_slots, -1 unmapped
     struct Slot {
         const RegisterField* field = nullptr;
         const ParameterRegister* parameter = nullptr;
@@ -106,7 +108,7 @@ private:
     };
     std::vector<Slot> m_slots;
 
-    std::vector<TestConfig> m_config;  ///< per unit
+    std::vector<TestConfig> m_config; ///< per unit
     std::string m_state = "idle";
     std::string m_fault = "none";
     std::string m_message;
@@ -121,16 +123,16 @@ private:
     bool m_haveToken = false;
     std::optional<model::Capture> m_trace;
     std::string m_traceNames, m_traceMeta;
-    std::vector<double> m_frfBlob;  ///< the FRF of the last FRF test, serialised (docs/modbus.md)
+    std::vector<double> m_frfBlob; ///< the FRF of the last FRF test, serialised (docs/modbus.md)
     std::string m_frfMeta;
     std::uint32_t m_selOffset = 0;
     std::uint16_t m_selChannel = 0;
 
     int m_port = 0;
     int m_listenFd = -1;
-    void* m_ctx = nullptr;      ///< modbus_t*
-    void* m_mapping = nullptr;  ///< modbus_mapping_t*, the reply buffer
+    void* m_ctx = nullptr;     ///< modbus_t*
+    void* m_mapping = nullptr; ///< modbus_mapping_t*, the reply buffer
     std::atomic<bool> m_stop{false};
 };
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -3,11 +3,10 @@
 // whole before anything changes, commands deduplicated by their sequence token (docs/modbus.md).
 #include "core/device/SimDriveServer.h"
 
-#include <modbus/modbus.h>
-
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <modbus/modbus.h>
 
 namespace axistune::device {
 
@@ -18,6 +17,73 @@ int SimDriveServer::refuse(int exception, const std::string& message)
     return exception;
 }
 
+bool SimDriveServer::encodeIdentity(const RegisterField& f, int ui, std::uint16_t* buf)
+{
+    const std::string& n = f.name;
+    const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
+    auto u16 = [&](int v) {
+        buf[0] = static_cast<std::uint16_t>(v);
+        return true;
+    };
+    auto text = [&](const std::string& s) {
+        encodeString(s, f.count, buf);
+        return true;
+    };
+    if (n == "identity.magic")
+        return u16(m_map.magic);
+    if (n == "identity.map_version")
+        return u16(m_map.version);
+    if (n == "identity.axis_count")
+        return u16(static_cast<int>(m_axes.size()));
+    if (n == "identity.axis_index")
+        return u16(ui);
+    if (n == "identity.axis_kind")
+        return u16(m_map.code("axis_kind", ax.kind));
+    if (n == "identity.parameter_count") {
+        int k = 0;
+        for (const auto& p : m_map.parameters)
+            k += p.availableOn(ax.kind) ? 1 : 0;
+        return u16(k);
+    }
+    if (n == "identity.vendor")
+        return text("AxisTune");
+    if (n == "identity.model")
+        return text("simulated drive");
+    if (n == "identity.firmware")
+        return text(AXISTUNE_VERSION);
+    if (n == "identity.machine")
+        return text(m_machine);
+    if (n == "identity.axis_name")
+        return text(ax.name);
+    return false;
+}
+
+void SimDriveServer::encodeWindow(const RegisterField& f, std::uint16_t* buf)
+{
+    const WordOrder o = m_map.wordOrder;
+    std::memset(buf, 0, sizeof(std::uint16_t) * static_cast<std::size_t>(f.count));
+    const int namesSel = m_map.code("trace_channel", "names"), metaSel = m_map.code("trace_channel", "metadata");
+    const int frfSel = m_map.code("trace_channel", "frf_data"),
+              frfMetaSel = m_map.code("trace_channel", "frf_metadata");
+    if (m_selChannel == namesSel || m_selChannel == metaSel || m_selChannel == frfMetaSel) {
+        const std::string& s = m_selChannel == namesSel  ? m_traceNames
+                               : m_selChannel == metaSel ? m_traceMeta
+                                                         : m_frfMeta;
+        encodeString(m_selOffset < s.size() ? s.substr(m_selOffset) : std::string(), f.count, buf);
+    } else if (m_selChannel == frfSel) {
+        for (int k = 0; k + 4 <= f.count; k += 4) {
+            const std::size_t i = m_selOffset + static_cast<std::size_t>(k / 4);
+            encodeF64(i < m_frfBlob.size() ? m_frfBlob[i] : std::numeric_limits<double>::quiet_NaN(), o, buf + k);
+        }
+    } else if (m_trace && m_selChannel < m_trace->channels.size()) {
+        const auto& d = m_trace->channels[m_selChannel].data;
+        for (int k = 0; k + 4 <= f.count; k += 4) {
+            const std::size_t i = m_selOffset + static_cast<std::size_t>(k / 4);
+            encodeF64(i < d.size() ? d[i] : std::numeric_limits<double>::quiet_NaN(), o, buf + k);
+        }
+    }
+}
+
 void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* buf)
 {
     const WordOrder o = m_map.wordOrder;
@@ -26,79 +92,68 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
     const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
     auto u16 = [&](int v) { buf[0] = static_cast<std::uint16_t>(v); };
     auto text = [&](const std::string& s) { encodeString(s, f.count, buf); };
-    if (n == "identity.magic") return u16(m_map.magic);
-    if (n == "identity.map_version") return u16(m_map.version);
-    if (n == "identity.axis_count") return u16(static_cast<int>(m_axes.size()));
-    if (n == "identity.axis_index") return u16(ui);
-    if (n == "identity.axis_kind") return u16(m_map.code("axis_kind", ax.kind));
-    if (n == "identity.parameter_count") {
-        int k = 0;
-        for (const auto& p : m_map.parameters)
-            k += p.availableOn(ax.kind) ? 1 : 0;
-        return u16(k);
-    }
-    if (n == "identity.vendor") return text("AxisTune");
-    if (n == "identity.model") return text("simulated drive");
-    if (n == "identity.firmware") return text(AXISTUNE_VERSION);
-    if (n == "identity.machine") return text(m_machine);
-    if (n == "identity.axis_name") return text(ax.name);
-    if (n == "status.state") return u16(m_map.code("state", m_state));
-    if (n == "status.fault_code") return u16(m_map.code("fault", m_fault));
-    if (n == "status.position") return encodeF32(static_cast<float>(ax.sim->tablePosition()), o, buf);
-    if (n == "status.velocity") return encodeF32(static_cast<float>(ax.sim->motorVelocity()), o, buf);
-    if (n == "status.torque") return encodeF32(static_cast<float>(ax.sim->torque()), o, buf);
-    if (n == "status.progress") return u16(static_cast<int>(std::lround(m_progress * 10000.0)));
-    if (n == "status.heartbeat_echo") return u16(m_heartbeat);
-    if (n == "status.command_token_echo" || n == "command.token") return u16(m_lastToken);
-    if (n == "command.code") return u16(m_lastCode);
-    if (n == "status.command_result") return u16(m_lastResult);
-    if (n == "status.trace_samples") return encodeU32(m_trace ? static_cast<std::uint32_t>(m_trace->size()) : 0u, o, buf);
-    if (n == "status.trace_channels") return u16(m_trace ? static_cast<int>(m_trace->channels.size()) : 0);
+    if (n.rfind("identity.", 0) == 0 && encodeIdentity(f, ui, buf))
+        return;
+    if (n == "status.state")
+        return u16(m_map.code("state", m_state));
+    if (n == "status.fault_code")
+        return u16(m_map.code("fault", m_fault));
+    if (n == "status.position")
+        return encodeF32(static_cast<float>(ax.sim->tablePosition()), o, buf);
+    if (n == "status.velocity")
+        return encodeF32(static_cast<float>(ax.sim->motorVelocity()), o, buf);
+    if (n == "status.torque")
+        return encodeF32(static_cast<float>(ax.sim->torque()), o, buf);
+    if (n == "status.progress")
+        return u16(static_cast<int>(std::lround(m_progress * 10000.0)));
+    if (n == "status.heartbeat_echo")
+        return u16(m_heartbeat);
+    if (n == "status.command_token_echo" || n == "command.token")
+        return u16(m_lastToken);
+    if (n == "command.code")
+        return u16(m_lastCode);
+    if (n == "status.command_result")
+        return u16(m_lastResult);
+    if (n == "status.trace_samples")
+        return encodeU32(m_trace ? static_cast<std::uint32_t>(m_trace->size()) : 0u, o, buf);
+    if (n == "status.trace_channels")
+        return u16(m_trace ? static_cast<int>(m_trace->channels.size()) : 0);
     if (n == "status.trace_rate_hz") {
         const double fs = m_trace && m_trace->metadata.count("fs_Hz") ? std::stod(m_trace->metadata.at("fs_Hz")) : 0.0;
         return encodeF64(fs, o, buf);
     }
-    if (n == "status.message") return text(m_message);
-    if (n == "test.type") return u16(c.type);
-    if (n == "test.flags") return u16(c.flags);
-    if (n == "test.trace_divider") return u16(c.traceDivider);
-    if (n == "test.freq_count") return u16(c.freqCount);
-    if (n == "test.frf_method") return u16(c.frfMethod);
-    if (n == "test.trace_channel_mask") return encodeU32(c.channelMask, o, buf);
-    const std::pair<const char*, double> f64s[] = {{"test.amplitude", c.amplitude},   {"test.distance", c.distance},
-                                                   {"test.velocity", c.velocity},     {"test.acceleration", c.acceleration},
-                                                   {"test.duration", c.duration},     {"test.offset", c.offset},
-                                                   {"test.freq_start", c.freqStart},  {"test.freq_end", c.freqEnd},
-                                                   {"test.settle", c.settle},         {"test.min_measure", c.minMeasure}};
+    if (n == "status.message")
+        return text(m_message);
+    if (n == "test.type")
+        return u16(c.type);
+    if (n == "test.flags")
+        return u16(c.flags);
+    if (n == "test.trace_divider")
+        return u16(c.traceDivider);
+    if (n == "test.freq_count")
+        return u16(c.freqCount);
+    if (n == "test.frf_method")
+        return u16(c.frfMethod);
+    if (n == "test.trace_channel_mask")
+        return encodeU32(c.channelMask, o, buf);
+    const std::pair<const char*, double> f64s[] = {
+        {"test.amplitude", c.amplitude},       {"test.distance", c.distance}, {"test.velocity", c.velocity},
+        {"test.acceleration", c.acceleration}, {"test.duration", c.duration}, {"test.offset", c.offset},
+        {"test.freq_start", c.freqStart},      {"test.freq_end", c.freqEnd},  {"test.settle", c.settle},
+        {"test.min_measure", c.minMeasure}};
     for (const auto& [key, v] : f64s) {
         if (n == key)
             return encodeF64(v, o, buf);
     }
-    if (n == "heartbeat.counter") return u16(m_heartbeat);
-    if (n == "trace.select_offset") return encodeU32(m_selOffset, o, buf);
-    if (n == "trace.select_channel") return u16(m_selChannel);
-    if (n == "trace.window") {
-        std::memset(buf, 0, sizeof(std::uint16_t) * static_cast<std::size_t>(f.count));
-        const int namesSel = m_map.code("trace_channel", "names"), metaSel = m_map.code("trace_channel", "metadata");
-        const int frfSel = m_map.code("trace_channel", "frf_data"), frfMetaSel = m_map.code("trace_channel", "frf_metadata");
-        if (m_selChannel == namesSel || m_selChannel == metaSel || m_selChannel == frfMetaSel) {
-            const std::string& s = m_selChannel == namesSel ? m_traceNames : m_selChannel == metaSel ? m_traceMeta : m_frfMeta;
-            encodeString(m_selOffset < s.size() ? s.substr(m_selOffset) : std::string(), f.count, buf);
-        } else if (m_selChannel == frfSel) {
-            for (int k = 0; k + 4 <= f.count; k += 4) {
-                const std::size_t i = m_selOffset + static_cast<std::size_t>(k / 4);
-                encodeF64(i < m_frfBlob.size() ? m_frfBlob[i] : std::numeric_limits<double>::quiet_NaN(), o, buf + k);
-            }
-        } else if (m_trace && m_selChannel < m_trace->channels.size()) {
-            const auto& d = m_trace->channels[m_selChannel].data;
-            for (int k = 0; k + 4 <= f.count; k += 4) {
-                const std::size_t i = m_selOffset + static_cast<std::size_t>(k / 4);
-                encodeF64(i < d.size() ? d[i] : std::numeric_limits<double>::quiet_NaN(), o, buf + k);
-            }
-        }
-        return;
-    }
-    std::memset(buf, 0, sizeof(std::uint16_t) * static_cast<std::size_t>(f.count));  // a field this server does not use
+    if (n == "heartbeat.counter")
+        return u16(m_heartbeat);
+    if (n == "trace.select_offset")
+        return encodeU32(m_selOffset, o, buf);
+    if (n == "trace.select_channel")
+        return u16(m_selChannel);
+    if (n == "trace.window")
+        return encodeWindow(f, buf);
+    std::memset(buf, 0, sizeof(std::uint16_t) * static_cast<std::size_t>(f.count)); // a field this server does not use
 }
 
 int SimDriveServer::readRegisters(int unitId, int address, int count, std::uint16_t* out)
@@ -117,11 +172,13 @@ int SimDriveServer::readRegisters(int unitId, int address, int count, std::uint1
         if (s.parameter) {
             if (m_opt.faults.illegalAddress) {
                 log("fault illegal-address: parameter register " + std::to_string(a));
-                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "parameter registers unavailable (fault injected)");
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS,
+                              "parameter registers unavailable (fault injected)");
             }
             if (!s.parameter->availableOn(m_axes[static_cast<std::size_t>(ui)].kind))
-                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "parameter " + s.parameter->meta.key + " does not exist on axis "
-                                                                         + m_axes[static_cast<std::size_t>(ui)].name);
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "parameter " + s.parameter->meta.key +
+                                                                         " does not exist on axis " +
+                                                                         m_axes[static_cast<std::size_t>(ui)].name);
             encodeF32(static_cast<float>(m_axes[static_cast<std::size_t>(ui)].sim->parameter(s.parameter->meta.key)),
                       m_map.wordOrder, buf.data());
         } else {
@@ -160,11 +217,17 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
         const double v = decodeF64(w, o);
         if (!std::isfinite(v))
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, n + " must be finite");
-        double* target = n == "test.amplitude" ? &c.amplitude : n == "test.distance" ? &c.distance
-                       : n == "test.velocity" ? &c.velocity : n == "test.acceleration" ? &c.acceleration
-                       : n == "test.duration" ? &c.duration : n == "test.offset" ? &c.offset
-                       : n == "test.freq_start" ? &c.freqStart : n == "test.freq_end" ? &c.freqEnd
-                       : n == "test.settle" ? &c.settle : n == "test.min_measure" ? &c.minMeasure : nullptr;
+        double* target = n == "test.amplitude"      ? &c.amplitude
+                         : n == "test.distance"     ? &c.distance
+                         : n == "test.velocity"     ? &c.velocity
+                         : n == "test.acceleration" ? &c.acceleration
+                         : n == "test.duration"     ? &c.duration
+                         : n == "test.offset"       ? &c.offset
+                         : n == "test.freq_start"   ? &c.freqStart
+                         : n == "test.freq_end"     ? &c.freqEnd
+                         : n == "test.settle"       ? &c.settle
+                         : n == "test.min_measure"  ? &c.minMeasure
+                                                    : nullptr;
         if (target)
             *target = v;
         return 0;
@@ -175,7 +238,8 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
         c.type = w[0];
     } else if (n == "test.trace_divider") {
         if (w[0] > 1000)
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "trace divider " + std::to_string(w[0]) + " outside 0..1000");
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
+                          "trace divider " + std::to_string(w[0]) + " outside 0..1000");
         c.traceDivider = w[0];
     } else if (n == "test.flags") {
         c.flags = w[0];
@@ -216,7 +280,8 @@ int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t*
             const auto& meta = s.parameter->meta;
             if (m_opt.faults.illegalAddress) {
                 log("fault illegal-address: parameter register " + std::to_string(a));
-                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "parameter registers unavailable (fault injected)");
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS,
+                              "parameter registers unavailable (fault injected)");
             }
             if (!s.parameter->availableOn(ax.kind))
                 return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, what + " does not exist on axis " + ax.name);
@@ -231,10 +296,12 @@ int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t*
         } else if (s.field->name == "command.code" || s.field->name == "command.token") {
             if (s.field->name == "command.code") {
                 if (address + count < s.address + 2)
-                    return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "command.code and command.token are written together");
+                    return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS,
+                                  "command.code and command.token are written together");
                 command = s.field;
             } else if (!command) {
-                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "command.code and command.token are written together");
+                return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS,
+                              "command.code and command.token are written together");
             }
         } else {
             slots.push_back(&s);
@@ -260,7 +327,7 @@ int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t*
 int SimDriveServer::runCommand(int ui, std::uint16_t code, std::uint16_t token)
 {
     if (m_haveToken && token == m_lastToken && code == m_lastCode)
-        return m_lastResult;  // a retried command: answered again, not executed twice
+        return m_lastResult; // a retried command: answered again, not executed twice
     const std::string name = m_map.name("command", code);
     int result = 0;
     if (name == "start_test") {
@@ -289,4 +356,4 @@ int SimDriveServer::runCommand(int ui, std::uint16_t code, std::uint16_t token)
     return result;
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

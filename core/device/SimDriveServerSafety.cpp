@@ -5,10 +5,9 @@
 // restores the pre-test parameters (SimulatedDrive::abortTest).
 #include "core/device/SimDriveServer.h"
 
-#include <modbus/modbus.h>
-
 #include <cmath>
 #include <cstdio>
+#include <modbus/modbus.h>
 
 namespace axistune::device {
 namespace {
@@ -20,7 +19,7 @@ std::string num(double v)
     return b;
 }
 
-}  // namespace
+} // namespace
 
 int SimDriveServer::startTest(int ui)
 {
@@ -43,22 +42,26 @@ int SimDriveServer::startTest(int ui)
     if (type == "step") {
         req.type = TestType::Step;
         if (std::abs(c.amplitude) > lim.speedLimitRadS)
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "step amplitude " + num(c.amplitude)
-                                                                   + " rad/s exceeds the speed limit " + num(lim.speedLimitRadS) + " rad/s");
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "step amplitude " + num(c.amplitude) +
+                                                                   " rad/s exceeds the speed limit " +
+                                                                   num(lim.speedLimitRadS) + " rad/s");
     } else if (type == "jog" || type == "hold") {
         req.type = type == "jog" ? TestType::Jog : TestType::Hold;
         const double target = ax.sim->positionCommand() + (type == "jog" ? c.distance : 0.0);
         if (ax.kind == "linear" && std::abs(target) > lim.travelLimit)
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog target " + num(target) + u + " outside the travel window ±"
-                                                                   + num(lim.travelLimit) + u);
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
+                          "jog target " + num(target) + u + " outside the travel window ±" + num(lim.travelLimit) + u);
         const double motorSpeed = ax.kind == "linear" ? c.velocity / ax.sim->parameter("plant.screw_lead") : c.velocity;
         if (type == "jog" && std::abs(motorSpeed) > lim.speedLimitRadS)
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog velocity means " + num(motorSpeed)
-                                                                   + " rad/s at the motor, above the speed limit " + num(lim.speedLimitRadS) + " rad/s");
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog velocity means " + num(motorSpeed) +
+                                                                   " rad/s at the motor, above the speed limit " +
+                                                                   num(lim.speedLimitRadS) + " rad/s");
     } else if (type == "frf") {
         req.type = TestType::Frf;
         const std::string method = m_map.name("frf_method", c.frfMethod);
-        req.frfMethod = method == "prbs" ? FrfMethod::Prbs : method == "conventional" ? FrfMethod::Conventional : FrfMethod::MultiSweep;
+        req.frfMethod = method == "prbs"           ? FrfMethod::Prbs
+                        : method == "conventional" ? FrfMethod::Conventional
+                                                   : FrfMethod::MultiSweep;
         req.fminHz = c.freqStart;
         req.fmaxHz = c.freqEnd;
         req.points = c.freqCount;
@@ -66,17 +69,19 @@ int SimDriveServer::startTest(int ui)
         req.settleS = c.settle;
         req.minMeasureS = c.minMeasure;
         if (!(c.amplitude <= lim.amplitudeLimitPct))
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "excitation amplitude " + num(c.amplitude)
-                                                                   + " % of the rated torque above the drive's limit " + num(lim.amplitudeLimitPct) + " %");
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "excitation amplitude " + num(c.amplitude) +
+                                                                   " % of the rated torque above the drive's limit " +
+                                                                   num(lim.amplitudeLimitPct) + " %");
     } else {
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test type '" + type + "' is not supported by this drive");
     }
     if (auto st = m_drive->startTest(req); !st) {
         const auto code = st.error().code;
-        const int ex = code == ErrorCode::Busy ? MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY
-                     : code == ErrorCode::NotFound ? MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS
-                     : code == ErrorCode::OutOfRange || code == ErrorCode::BadInput ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
-                                                                                   : MODBUS_EXCEPTION_SLAVE_OR_SERVER_FAILURE;
+        const int ex = code == ErrorCode::Busy       ? MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY
+                       : code == ErrorCode::NotFound ? MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS
+                       : code == ErrorCode::OutOfRange || code == ErrorCode::BadInput
+                           ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
+                           : MODBUS_EXCEPTION_SLAVE_OR_SERVER_FAILURE;
         return refuse(ex, st.error().detail);
     }
     m_state = "running";
@@ -113,20 +118,24 @@ void SimDriveServer::checkSafety()
     const double torqueLimit = lim.amplitudeLimitPct / 100.0 * ratedTorque;
     const bool fullClosed = s.parameter("position.feedback") > 0.5;
     const std::string type = m_map.name("test_type", m_config[static_cast<std::size_t>(m_testUnit)].type);
-    const bool positionTest = type == "jog" || type == "hold";  // the position loop is closed only there
-    const double followingError = positionTest ? s.positionCommand() - (fullClosed ? s.tablePosition() : s.motorPosition()) : 0.0;
-    const bool linear = ax.kind == "linear";  // rotary tables turn endlessly: no travel window
+    const bool positionTest = type == "jog" || type == "hold"; // the position loop is closed only there
+    const double followingError =
+        positionTest ? s.positionCommand() - (fullClosed ? s.tablePosition() : s.motorPosition()) : 0.0;
+    const bool linear = ax.kind == "linear"; // rotary tables turn endlessly: no travel window
     if (m_opt.faults.driveFaultAfterS >= 0 && machineS >= m_opt.faults.driveFaultAfterS)
         trip("drive_fault", "drive fault injected " + num(machineS) + " s into the test (fault drive-fault)");
     else if (linear && std::abs(s.tablePosition()) > lim.travelLimit)
-        trip("travel_limit", "position " + num(s.tablePosition()) + u + " left the travel window ±" + num(lim.travelLimit) + u);
+        trip("travel_limit",
+             "position " + num(s.tablePosition()) + u + " left the travel window ±" + num(lim.travelLimit) + u);
     else if (std::abs(s.motorVelocity()) > lim.speedLimitRadS)
-        trip("speed_limit", "motor speed " + num(s.motorVelocity()) + " rad/s above the limit " + num(lim.speedLimitRadS) + " rad/s");
+        trip("speed_limit",
+             "motor speed " + num(s.motorVelocity()) + " rad/s above the limit " + num(lim.speedLimitRadS) + " rad/s");
     else if (std::abs(s.torqueCommand()) > torqueLimit)
-        trip("amplitude_limit", "torque command " + num(s.torqueCommand()) + " Nm above " + num(lim.amplitudeLimitPct)
-                                    + " % of the rated torque (" + num(torqueLimit) + " Nm)");
+        trip("amplitude_limit", "torque command " + num(s.torqueCommand()) + " Nm above " + num(lim.amplitudeLimitPct) +
+                                    " % of the rated torque (" + num(torqueLimit) + " Nm)");
     else if (std::abs(followingError) > lim.followingErrorLimit)
-        trip("following_error", "following error " + num(followingError) + u + " above the limit " + num(lim.followingErrorLimit) + u);
+        trip("following_error",
+             "following error " + num(followingError) + u + " above the limit " + num(lim.followingErrorLimit) + u);
 }
 
 void SimDriveServer::takeTrace()
@@ -168,7 +177,8 @@ void SimDriveServer::takeFrequencyResponse()
     std::vector<double>& b = m_frfBlob;
     b = {0.0, r->motionTimeS, static_cast<double>(r->frf.size())};
     for (std::size_t i = 0; i < r->frf.size(); ++i)
-        b.insert(b.end(), {r->frf.freqHz[i], r->frf.h[i].real(), r->frf.h[i].imag(), r->frf.coherence[i], r->frf.valid[i] ? 1.0 : 0.0});
+        b.insert(b.end(), {r->frf.freqHz[i], r->frf.h[i].real(), r->frf.h[i].imag(), r->frf.coherence[i],
+                           r->frf.valid[i] ? 1.0 : 0.0});
     b.insert(b.end(), {r->sweep.fsHz, r->sweep.amplitude, static_cast<double>(r->sweep.blocks.size())});
     for (const auto& blk : r->sweep.blocks) {
         b.insert(b.end(), {blk.freqHz, blk.phaseOffsetDeg, static_cast<double>(blk.sample.size())});
@@ -193,13 +203,14 @@ void SimDriveServer::step()
     const auto now = Clock::now();
     const double sinceHeartbeat = std::chrono::duration<double>(now - m_lastHeartbeat).count();
     if (sinceHeartbeat > m_opt.safety.watchdogS) {
-        trip("heartbeat_lost", "no heartbeat for " + num(sinceHeartbeat) + " s (watchdog " + num(m_opt.safety.watchdogS) + " s)");
+        trip("heartbeat_lost",
+             "no heartbeat for " + num(sinceHeartbeat) + " s (watchdog " + num(m_opt.safety.watchdogS) + " s)");
         return;
     }
     if (m_opt.pace > 0) {
         const double wall = std::chrono::duration<double>(now - m_testStartWall).count();
         if (ax.sim->time() - m_testStartMachineS > m_opt.pace * wall)
-            return;  // ahead of the allowed pace: wait
+            return; // ahead of the allowed pace: wait
     }
     auto st = m_drive->pollTest();
     if (!st) {
@@ -223,4 +234,4 @@ void SimDriveServer::step()
     checkSafety();
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -2,20 +2,18 @@
 // End to end over a real loopback socket: the axistune-simdrive binary on a free port, read and
 // written by mbpoll (an independent Modbus client from Debian) and by axistune-cli params; the
 // server killed in the middle of a test; injected faults.
-#include "tests/app/cli/CliRunner.h"
-
 #include "core/device/ModbusDrive.h"
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
-#include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
 
 #include <chrono>
 #include <cstdio>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <thread>
+
+#include "tests/app/cli/CliRunner.h"
 
 using namespace axistune;
 using namespace axistune::testing;
@@ -103,7 +101,8 @@ private:
 
 nlohmann::json registerMap()
 {
-    return nlohmann::json::parse(readFileText(std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/drives/axistune-sim.json"));
+    return nlohmann::json::parse(
+        readFileText(std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/drives/axistune-sim.json"));
 }
 
 int parameterAddress(const std::string& key)
@@ -157,7 +156,7 @@ device::TestRequest step(double amplitude, double duration, int divider)
     return r;
 }
 
-}  // namespace
+} // namespace
 
 TEST(ModbusCli, MbpollReadsIdentityAndParametersAtTheMapAddressesAndSeesParamsWrites)
 {
@@ -166,9 +165,10 @@ TEST(ModbusCli, MbpollReadsIdentityAndParametersAtTheMapAddressesAndSeesParamsWr
     const auto map = registerMap();
     const int magicAddr = map["fields"]["identity.magic"]["address"];
     const int axesAddr = map["fields"]["identity.axis_count"]["address"];
-    auto out = mbpoll(srv.port(), "-a 1 -r " + std::to_string(magicAddr) + " -c " + std::to_string(axesAddr - magicAddr + 1) + " 127.0.0.1");
+    auto out = mbpoll(srv.port(), "-a 1 -r " + std::to_string(magicAddr) + " -c " +
+                                      std::to_string(axesAddr - magicAddr + 1) + " 127.0.0.1");
     EXPECT_EQ(mbpollValue(out, magicAddr), map["magic"].get<double>()) << out;
-    EXPECT_EQ(mbpollValue(out, axesAddr), 3.0) << out;  // vmc: X, Y, Z
+    EXPECT_EQ(mbpollValue(out, axesAddr), 3.0) << out; // vmc: X, Y, Z
     const int kp = parameterAddress("velocity.kp");
     ASSERT_GT(kp, 0);
     const std::string floatArgs = "-t 4:float -B -a 1 -r " + std::to_string(kp) + " 127.0.0.1";
@@ -197,7 +197,7 @@ TEST(ModbusCli, WriteOutsideLimitsIsRefusedByTheClientAndByTheDrive)
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("outside its limits"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("not sent"), std::string::npos) << r.err;
-    EXPECT_EQ(srv.log().find("refused"), std::string::npos) << srv.log();  // the drive never saw it
+    EXPECT_EQ(srv.log().find("refused"), std::string::npos) << srv.log(); // the drive never saw it
     const int kp = parameterAddress("velocity.kp");
     auto out = mbpoll(srv.port(), "-t 4:float -B -a 1 -r " + std::to_string(kp) + " 127.0.0.1 200000");
     EXPECT_NE(out.find("Illegal data value"), std::string::npos) << out;
@@ -215,7 +215,7 @@ TEST(ModbusCli, EachInjectedFaultHasItsOwnMessageAndExitCode)
     };
     double s = 0;
     {
-        auto r = timed("params --connect modbus://127.0.0.1:1 --axis X", s);  // nobody listens on port 1
+        auto r = timed("params --connect modbus://127.0.0.1:1 --axis X", s); // nobody listens on port 1
         EXPECT_EQ(r.exitCode, 3);
         EXPECT_NE(r.err.find("cannot connect"), std::string::npos) << r.err;
     }
@@ -296,7 +296,7 @@ TEST(ModbusCli, ServerKilledMidMultiSweepIsALostConnectionAndTheRestartedDriveHa
             ASSERT_TRUE(st.ok());
             ASSERT_EQ(st->state, device::TestState::Running) << st->detail;
         }
-        EXPECT_EQ(paramsValue(srv.uri(), "trace.divider", "C"), 2.0);  // the test's setting
+        EXPECT_EQ(paramsValue(srv.uri(), "trace.divider", "C"), 2.0); // the test's setting
         srv.stop(SIGKILL);
         const auto t0 = Clock::now();
         auto st = (*d)->pollTest();
@@ -305,12 +305,12 @@ TEST(ModbusCli, ServerKilledMidMultiSweepIsALostConnectionAndTheRestartedDriveHa
         EXPECT_EQ(exitCodeFor(st.error().code), 3);
         EXPECT_NE(st.error().detail.find("connection lost"), std::string::npos) << st.error().detail;
         EXPECT_NE(st.error().detail.find(srv.uri()), std::string::npos) << st.error().detail;
-        EXPECT_LT(s, 2.0);  // within the 500 ms timeout plus bounded reconnect attempts
+        EXPECT_LT(s, 2.0); // within the 500 ms timeout plus bounded reconnect attempts
     }
     SimDrive again(args);
     ASSERT_GT(again.port(), 0) << again.log();
-    EXPECT_EQ(paramsValue(again.uri(), "velocity.kp", "C"), 250.0);  // not the preset 233
-    EXPECT_EQ(paramsValue(again.uri(), "trace.divider", "C"), 1.0);  // not the test's 2
+    EXPECT_EQ(paramsValue(again.uri(), "velocity.kp", "C"), 250.0); // not the preset 233
+    EXPECT_EQ(paramsValue(again.uri(), "trace.divider", "C"), 1.0); // not the test's 2
     std::filesystem::remove_all(dir);
 }
 
@@ -350,8 +350,8 @@ TEST(ModbusCli, SilencedClientLetsTheDriveStopTheTestAndRestoreParameters)
         auto d = device::connectAny({srv.uri(), 1});
         ASSERT_TRUE(d.ok()) << d.error().detail;
         ASSERT_TRUE((*d)->startTest(step(5.0, 10.0, 4)).ok());
-        EXPECT_EQ(paramsValue(srv.uri(), "trace.divider"), 4.0);  // the test's setting while it runs
-        std::this_thread::sleep_for(std::chrono::milliseconds(2000));  // no pollTest: no heartbeat
+        EXPECT_EQ(paramsValue(srv.uri(), "trace.divider"), 4.0);      // the test's setting while it runs
+        std::this_thread::sleep_for(std::chrono::milliseconds(2000)); // no pollTest: no heartbeat
         EXPECT_NE(srv.log().find("fault heartbeat_lost"), std::string::npos) << srv.log();
     }
     EXPECT_EQ(paramsValue(srv.uri(), "trace.divider"), 1.0);

@@ -4,11 +4,10 @@
 #include "core/device/ModbusDrive.h"
 #include "core/device/SimDriveServer.h"
 
-#include <gtest/gtest.h>
-#include <modbus/modbus.h>
-
 #include <chrono>
 #include <cmath>
+#include <gtest/gtest.h>
+#include <modbus/modbus.h>
 #include <mutex>
 #include <thread>
 
@@ -107,7 +106,7 @@ struct RawClient {
     ~RawClient() { modbus_close(ctx), modbus_free(ctx); }
 };
 
-}  // namespace
+} // namespace
 
 TEST(ModbusDrive, IdentityAndParametersMatchTheEmbeddedDrive)
 {
@@ -125,7 +124,7 @@ TEST(ModbusDrive, IdentityAndParametersMatchTheEmbeddedDrive)
         ASSERT_TRUE(pr.ok() && pl.ok()) << (pr.ok() ? "" : pr.error().detail);
         ASSERT_EQ(pr->size(), pl->size()) << axis;
         for (const auto& [k, v] : *pl)
-            EXPECT_EQ(pr->at(k), static_cast<double>(static_cast<float>(v))) << axis << " " << k;  // float32 on the wire
+            EXPECT_EQ(pr->at(k), static_cast<double>(static_cast<float>(v))) << axis << " " << k; // float32 on the wire
     }
 }
 
@@ -150,7 +149,7 @@ TEST(ModbusDrive, TraceOverModbusIsTheEmbeddedTraceBitForBit)
     EXPECT_EQ(tr->metadata, tl->metadata);
     for (std::size_t c = 0; c < tl->channels.size(); ++c) {
         EXPECT_EQ(tr->channels[c].name, tl->channels[c].name);
-        EXPECT_EQ(tr->channels[c].data, tl->channels[c].data) << tl->channels[c].name;  // float64 on the wire: exact
+        EXPECT_EQ(tr->channels[c].data, tl->channels[c].data) << tl->channels[c].name; // float64 on the wire: exact
     }
 }
 
@@ -163,11 +162,11 @@ TEST(ModbusDrive, OutOfLimitWriteIsRefusedByClientAndDrive)
     auto old = d->readParameters("X", std::vector<std::string>{"velocity.kp"});
     ASSERT_TRUE(old.ok());
     const auto before = md->requestCount();
-    auto st = d->writeParameters("X", {{"velocity.kp", 2e5}});  // limit 1e5
+    auto st = d->writeParameters("X", {{"velocity.kp", 2e5}}); // limit 1e5
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
     EXPECT_NE(st.error().detail.find("not sent"), std::string::npos) << st.error().detail;
-    EXPECT_EQ(md->requestCount(), before);  // nothing went out
+    EXPECT_EQ(md->requestCount(), before); // nothing went out
     // The drive itself refuses the same value with ILLEGAL DATA VALUE.
     const auto* p = md->registerMap().parameter("velocity.kp");
     std::uint16_t w[2];
@@ -177,7 +176,7 @@ TEST(ModbusDrive, OutOfLimitWriteIsRefusedByClientAndDrive)
     EXPECT_EQ(errno, EMBXILVAL);
     auto v = d->readParameters("X", std::vector<std::string>{"velocity.kp"});
     ASSERT_TRUE(v.ok());
-    EXPECT_EQ(v->at("velocity.kp"), old->at("velocity.kp"));  // unchanged
+    EXPECT_EQ(v->at("velocity.kp"), old->at("velocity.kp")); // unchanged
     // Half a float32 pair is refused too (ILLEGAL DATA ADDRESS), and so is an unknown unit id.
     EXPECT_EQ(modbus_write_register(raw.ctx, p->address, 0x3F80), -1);
     EXPECT_EQ(errno, EMBXILADD);
@@ -190,20 +189,20 @@ TEST(ModbusDrive, OutOfLimitWriteIsRefusedByClientAndDrive)
 TEST(ModbusDrive, WriteDuringTestIsRefusedAndCommandsAreNotRunTwice)
 {
     auto o = options();
-    o.pace = 1.0;  // real time: the test lasts
+    o.pace = 1.0; // real time: the test lasts
     ServerThread srv(o);
     auto d = open(srv.uri());
     ASSERT_TRUE(d);
     ASSERT_TRUE(d->startTest(step("X", 5.0, 3.0)).ok());
     auto st = d->writeParameters("X", {{"velocity.kp", 0.5}});
     ASSERT_FALSE(st.ok());
-    EXPECT_EQ(st.error().code, ErrorCode::Busy);  // the client knows a test runs
+    EXPECT_EQ(st.error().code, ErrorCode::Busy); // the client knows a test runs
     auto* md = dynamic_cast<ModbusDrive*>(d.get());
     RawClient raw(srv.port(), 1);
     std::uint16_t w[2];
     encodeF32(0.5f, WordOrder::HighWordFirst, w);
     EXPECT_EQ(modbus_write_registers(raw.ctx, md->registerMap().parameter("velocity.kp")->address, 2, w), -1);
-    EXPECT_EQ(errno, EMBXSBUSY);  // and so does the drive
+    EXPECT_EQ(errno, EMBXSBUSY); // and so does the drive
     // A start command repeated with the token of the running test is answered, not executed again.
     std::uint16_t echo[1];
     const int tokenAddr = md->registerMap().field("status.command_token_echo").address;
@@ -212,7 +211,7 @@ TEST(ModbusDrive, WriteDuringTestIsRefusedAndCommandsAreNotRunTwice)
     EXPECT_EQ(modbus_write_registers(raw.ctx, md->registerMap().field("command.code").address, 2, cmd), 2);
     const std::uint16_t again[2] = {cmd[0], static_cast<std::uint16_t>(echo[0] + 1)};
     EXPECT_EQ(modbus_write_registers(raw.ctx, md->registerMap().field("command.code").address, 2, again), -1);
-    EXPECT_EQ(errno, EMBXSBUSY);  // a new token is a new command: refused while the test runs
+    EXPECT_EQ(errno, EMBXSBUSY); // a new token is a new command: refused while the test runs
     ASSERT_TRUE(d->abortTest().ok());
     auto s = d->pollTest();
     ASSERT_TRUE(s.ok());
@@ -230,7 +229,7 @@ TEST(ModbusDrive, SilentClientMakesTheDriveStopAndRestoreByItself)
     // With heartbeats (pollTest, every 200 ms) a 1.2 s test outlives the 0.5 s watchdog.
     ASSERT_TRUE(d->startTest(step("X", 5.0, 1.2)).ok());
     auto ok = finish(*d, 10.0);
-    ASSERT_TRUE(ok.ok()) << ok.error().detail;
+    ASSERT_TRUE(ok.ok()) << ok.error().detail << "\n" << srv.log();
     EXPECT_EQ(ok->state, TestState::Completed) << ok->detail;
     // Silent: the drive stops the test and restores trace.divider (the test set it to 4).
     auto req = step("X", 5.0, 5.0);
@@ -252,7 +251,7 @@ TEST(ModbusDrive, SafetyLimitsRefuseOrStopTests)
 {
     auto o = options();
     o.safety.speedLimitRadS = 100.0;
-    o.safety.amplitudeLimitPct = 1.0;  // 1 % of rated torque: any real step trips
+    o.safety.amplitudeLimitPct = 1.0; // 1 % of rated torque: any real step trips
     ServerThread srv(o);
     auto d = open(srv.uri());
     ASSERT_TRUE(d);
@@ -263,7 +262,7 @@ TEST(ModbusDrive, SafetyLimitsRefuseOrStopTests)
     TestRequest jog;
     jog.axis = "X";
     jog.type = TestType::Jog;
-    jog.distance = 0.8;  // beyond the ±0.5 m window
+    jog.distance = 0.8; // beyond the ±0.5 m window
     jog.velocity = 0.01;
     jog.acceleration = 1.0;
     st = d->startTest(jog);
@@ -278,13 +277,13 @@ TEST(ModbusDrive, SafetyLimitsRefuseOrStopTests)
     EXPECT_NE(s->detail.find("amplitude_limit"), std::string::npos) << s->detail;
     auto v = d->readParameters("X", std::vector<std::string>{"trace.divider"});
     ASSERT_TRUE(v.ok());
-    EXPECT_EQ(v->at("trace.divider"), 1.0);  // pre-test value back
+    EXPECT_EQ(v->at("trace.divider"), 1.0); // pre-test value back
 }
 
 TEST(ModbusDrive, FollowingErrorTripsAJog)
 {
     auto o = options();
-    o.safety.followingErrorLimit = 1e-6;  // 1 µm: a 50 mm/s jog lags more
+    o.safety.followingErrorLimit = 1e-6; // 1 µm: a 50 mm/s jog lags more
     ServerThread srv(o);
     auto d = open(srv.uri());
     ASSERT_TRUE(d);
@@ -330,7 +329,7 @@ TEST(ModbusDrive, InjectedFaultsGiveTheirOwnErrorsAndNeverHang)
     }
     {
         auto o = options();
-        o.faults.dropAfterRequests = 2;  // every connection dies at its 2nd request: reconnects run out
+        o.faults.dropAfterRequests = 2; // every connection dies at its 2nd request: reconnects run out
         ServerThread srv(o);
         auto d = open(srv.uri());
         ASSERT_TRUE(d);
@@ -364,7 +363,7 @@ TEST(ModbusDrive, InjectedFaultsGiveTheirOwnErrorsAndNeverHang)
 TEST(ModbusDrive, ReconnectsAndRetriesReadsWhenTheLinkDrops)
 {
     auto o = options();
-    o.faults.dropAfterRequests = 120;  // a trace readout needs a few hundred requests: ~3 drops
+    o.faults.dropAfterRequests = 120; // a trace readout needs a few hundred requests: ~3 drops
     ServerThread srv(o);
     auto remote = open(srv.uri());
     auto local = open("sim:vmc");
@@ -459,5 +458,6 @@ TEST(ModbusDrive, FrfAmplitudeAboveTheDriveLimitIsRefused)
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
     EXPECT_NE(st.error().detail.find("excitation amplitude 5 % of the rated torque above the drive's limit 2 %"),
-              std::string::npos) << st.error().detail;
+              std::string::npos)
+        << st.error().detail;
 }

@@ -2,11 +2,9 @@
 #include "core/device/RegisterMap.h"
 #include "core/sim/AxisParameters.h"
 
-#include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
-
 #include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 using namespace axistune;
@@ -22,7 +20,7 @@ std::string mapText()
     return ss.str();
 }
 
-}  // namespace
+} // namespace
 
 TEST(RegisterMap, CommittedMapCarriesEveryDriveParameterOfTheCatalogue)
 {
@@ -48,7 +46,7 @@ TEST(RegisterMap, CommittedMapCarriesEveryDriveParameterOfTheCatalogue)
         int available = 0;
         for (const auto& p : m->parameters)
             available += p.availableOn(k) ? 1 : 0;
-        EXPECT_EQ(available, count) << k;  // nothing on the map that the axis does not have
+        EXPECT_EQ(available, count) << k; // nothing on the map that the axis does not have
     }
     EXPECT_FALSE(m->parameter("lostmotion.A")->availableOn("rotary"));
     EXPECT_EQ(m->wordOrder, WordOrder::HighWordFirst);
@@ -58,17 +56,17 @@ TEST(RegisterMap, CommittedMapCarriesEveryDriveParameterOfTheCatalogue)
 TEST(RegisterMap, EncodingsFollowIeee754AndTheWordOrder)
 {
     std::uint16_t w[4];
-    encodeF32(1.0f, WordOrder::HighWordFirst, w);  // 1.0f = 0x3F800000
+    encodeF32(1.0f, WordOrder::HighWordFirst, w); // 1.0f = 0x3F800000
     EXPECT_EQ(w[0], 0x3F80);
     EXPECT_EQ(w[1], 0x0000);
-    encodeF32(-2.5f, WordOrder::LowWordFirst, w);  // -2.5f = 0xC0200000
+    encodeF32(-2.5f, WordOrder::LowWordFirst, w); // -2.5f = 0xC0200000
     EXPECT_EQ(w[0], 0x0000);
     EXPECT_EQ(w[1], 0xC020);
     EXPECT_EQ(decodeF32(w, WordOrder::LowWordFirst), -2.5f);
-    encodeF64(1.0, WordOrder::HighWordFirst, w);  // 1.0 = 0x3FF0000000000000
+    encodeF64(1.0, WordOrder::HighWordFirst, w); // 1.0 = 0x3FF0000000000000
     EXPECT_EQ(w[0], 0x3FF0);
     EXPECT_EQ(w[3], 0x0000);
-    encodeF64(0.1, WordOrder::LowWordFirst, w);  // 0.1 = 0x3FB999999999999A
+    encodeF64(0.1, WordOrder::LowWordFirst, w); // 0.1 = 0x3FB999999999999A
     EXPECT_EQ(w[0], 0x999A);
     EXPECT_EQ(w[3], 0x3FB9);
     EXPECT_EQ(decodeF64(w, WordOrder::LowWordFirst), 0.1);
@@ -77,7 +75,7 @@ TEST(RegisterMap, EncodingsFollowIeee754AndTheWordOrder)
     EXPECT_EQ(w[1], 0x5678);
     std::uint16_t s[3];
     encodeString("ABC", 3, s);
-    EXPECT_EQ(s[0], 0x4142);  // 'A' in the high byte
+    EXPECT_EQ(s[0], 0x4142); // 'A' in the high byte
     EXPECT_EQ(s[1], 0x4300);
     EXPECT_EQ(s[2], 0x0000);
     EXPECT_EQ(decodeString(s, 3), "ABC");
