@@ -251,7 +251,7 @@ TEST(ModbusCli, EachInjectedFaultHasItsOwnMessageAndExitCode)
         auto d = device::connectAny({srv.uri(), 1});
         ASSERT_TRUE(d.ok()) << d.error().detail;
         ASSERT_TRUE((*d)->startTest(step(5.0, 1.0, 0)).ok());
-        Result<device::TestStatus> st = device::TestStatus{device::TestState::Running};
+        Result<device::TestStatus> st = device::TestStatus{device::TestState::Running, 0.0, {}};
         for (int i = 0; i < 2000 && st.ok() && st->state == device::TestState::Running; ++i)
             st = (*d)->pollTest();
         ASSERT_TRUE(st.ok());
@@ -324,7 +324,7 @@ TEST(ModbusCli, MultiSweepThroughTheSimdriveBinaryEqualsTheEmbeddedDriveWithTheS
     std::vector<device::FrfMeasurement> m;
     for (device::Drive* d : {remote->get(), local->get()}) {
         ASSERT_TRUE(d->startTest(multiSweep(0)).ok());
-        Result<device::TestStatus> st = device::TestStatus{device::TestState::Running};
+        Result<device::TestStatus> st = device::TestStatus{device::TestState::Running, 0.0, {}};
         const auto end = Clock::now() + std::chrono::seconds(60);
         while (st.ok() && st->state == device::TestState::Running && Clock::now() < end)
             st = d->pollTest();
