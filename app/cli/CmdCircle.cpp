@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// axistune-cli circle: a ball-bar circle test on a simulated machine (core/sim/CircleTest.h), written as a
+// ball-bar CSV (docs/ballbar.md "Simulated circle tests"); to be spelled `capture --test circle` once merged.
+#include "app/cli/CliCommand.h"
+#include "core/io/BallBarCsv.h"
+#include "core/io/CaptureCsv.h"
+#include "core/model/Parameter.h"
+#include "core/sim/AxisParameters.h"
+#include "core/sim/CircleTest.h"
+#include "core/sim/MachineDefinition.h"
+
+#include <iostream>
+#include <memory>
+
+namespace axistune::cli {
+namespace {
+
+struct CircleCliOptions {
+    std::string connect = "sim:vmc";
+    std::string plane = "XY";
+    double radiusMm = 50.0;
+    double feedMmMin = 1000.0;
+    std::string direction = "ccw";
+    double centerXMm = 0.0, centerYMm = 0.0;
+    double squarenessUmPerM = 0.0, scaleXPpm = 0.0, scaleYPpm = 0.0;
+    double leadArcDeg = 90.0, startDeg = 45.0;
+    std::vector<std::string> sets;
+    std::uint64_t seed = 1;
+    std::string out, servoOutX, servoOutY;
+};
+
+/// "X:lostmotion.mode=2" (or "lostmotion.mode=2" for both plane axes), range-checked against the metadata.
+Status applySet(sim::MachineDefinition& m, const std::string& item, const std::string& plane)
+{
+    const auto eq = item.find('=');
+    if (eq == std::string::npos)
+        return makeError(ErrorCode::BadInput, "--set '" + item + "': expected AXIS:KEY=VALUE");
+    std::string key = item.substr(0, eq);
+    std::vector<std::string> axes;
+    if (const auto colon = key.find(':'); colon != std::string::npos) {
+        axes.push_back(key.substr(0, colon));
+        key = key.substr(colon + 1);
+    } else {
+        axes = {plane.substr(0, 1), plane.substr(1, 1)};
+    }
+    double value = 0.0;
+    try {
+        std::size_t used = 0;
+        value = std::stod(item.substr(eq + 1), &used);
+        if (used != item.size() - eq - 1)
+            throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+        return makeError(ErrorCode::BadInput, "--set '" + item + "': value is not a number");
+    }
+    for (const auto& name : axes) {
+        sim::AxisDefinition* axis = nullptr;
+        for (auto& a : m.axes)
+            if (a.name == name)
+                axis = &a;
+        if (!axis)
+            return makeError(ErrorCode::BadInput, "--set '" + item + "': machine has no axis '" + name + "'");
+        const auto* meta = model::findParameter(sim::axisParameterMetas(axis->kind), key);
+        if (!meta)
+            return makeError(ErrorCode::BadInput, "--set '" + item + "': unknown parameter '" + key + "'");
+        if (auto st = model::checkParameterValue(*meta, value); !st)
+            return makeError(ErrorCode::BadInput, "--set '" + item + "': " + st.error().detail);
+        axis->values[key] = value;
+    }
+    return Status::success();
+}
+
+int runCircle(const CircleCliOptions& o)
+{
+    const std::string cmd = "circle";
+    if (o.connect.rfind("sim:", 0) != 0)
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--connect '" + o.connect +
+                                                                   "': circle tests run on simulated machines (sim:PRESET)"));
+    auto loaded = sim::loadPreset(o.connect.substr(4));
+    if (!loaded)
+        return reportError(cmd, makeError(ErrorCode::BadInput, loaded.error().detail));
+    sim::MachineDefinition machine = *loaded;
+    if (o.plane.size() != 2)
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--plane '" + o.plane + "': two axis letters, e.g. XY"));
+    for (const auto& s : o.sets)
+        if (auto st = applySet(machine, s, o.plane); !st)
+            return reportError(cmd, st.error());
+    sim::CircleTestOptions c;
+    c.axisX = o.plane.substr(0, 1);
+    c.axisY = o.plane.substr(1, 1);
+    c.radiusM = o.radiusMm * 1e-3;
+    c.feedMPerS = o.feedMmMin / 60000.0;
+    c.direction = o.direction == "cw" ? io::CircleDirection::Cw : io::CircleDirection::Ccw;
+    c.centerXM = o.centerXMm * 1e-3;
+    c.centerYM = o.centerYMm * 1e-3;
+    c.squarenessPerM = o.squarenessUmPerM * 1e-6;
+    c.scaleX = o.scaleXPpm * 1e-6;
+    c.scaleY = o.scaleYPpm * 1e-6;
+    c.leadArcDeg = o.leadArcDeg;
+    c.dataStartDeg = o.startDeg;
+    c.seed = o.seed;
+    auto ran = sim::runCircleTest(machine, c);
+    if (!ran)
+        return reportError(cmd, ran.error());
+    sim::CircleTestResult result = *ran;
+    auto* res = &result;
+    res->ballbar.metadata["connection"] = o.connect;
+    if (auto st = io::writeBallBarCsvFile(o.out, res->ballbar); !st)
+        return reportError(cmd, st.error());
+    if (!o.servoOutX.empty())
+        if (auto st = io::writeCaptureCsvFile(o.servoOutX, res->traceX); !st)
+            return reportError(cmd, st.error());
+    if (!o.servoOutY.empty())
+        if (auto st = io::writeCaptureCsvFile(o.servoOutY, res->traceY); !st)
+            return reportError(cmd, st.error());
+    std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << res->ballbar.size() << ", \"dT_x_Nm\": " << res->dTxNm
+              << ", \"dT_y_Nm\": " << res->dTyNm << "}\n";
+    return 0;
+}
+
+const CliRegistrar kRegistrar{{"circle", "Ball-bar circle test on a simulated machine, written as a ball-bar CSV",
+    [](CLI::App& sub) {
+        auto o = std::make_shared<CircleCliOptions>();
+        sub.add_option("--connect", o->connect, "sim:PRESET with two linear axes (vmc)")->capture_default_str();
+        sub.add_option("--plane", o->plane, "the two axes, first = x role")->capture_default_str();
+        sub.add_option("--radius-mm", o->radiusMm, "circle radius [mm]")->capture_default_str()->check(CLI::PositiveNumber);
+        sub.add_option("--feed-mm-min", o->feedMmMin, "feed [mm/min]")->capture_default_str()->check(CLI::PositiveNumber);
+        sub.add_option("--direction", o->direction, "ccw | cw")->capture_default_str()->check(CLI::IsMember({"ccw", "cw"}));
+        sub.add_option("--center-x-mm", o->centerXMm, "circle centre, first axis [mm]")->capture_default_str();
+        sub.add_option("--center-y-mm", o->centerYMm, "circle centre, second axis [mm]")->capture_default_str();
+        sub.add_option("--squareness-um-per-m", o->squarenessUmPerM, "injected squareness (angle below 90 deg > 0)");
+        sub.add_option("--scale-x-ppm", o->scaleXPpm, "injected scale error of the first axis [ppm]");
+        sub.add_option("--scale-y-ppm", o->scaleYPpm, "injected scale error of the second axis [ppm]");
+        sub.add_option("--lead-arc-deg", o->leadArcDeg, "lead-in and lead-out arc [deg]")->capture_default_str();
+        sub.add_option("--start-deg", o->startDeg, "angle where the 360 deg data arc starts")->capture_default_str();
+        sub.add_option("--set", o->sets, "AXIS:KEY=VALUE drive parameter in SI, e.g. Y:lostmotion.mode=2 (repeatable)");
+        sub.add_option("--seed", o->seed, "noise seed")->capture_default_str();
+        sub.add_option("--servo-out-x", o->servoOutX, "servo trace of the first axis (capture CSV)");
+        sub.add_option("--servo-out-y", o->servoOutY, "servo trace of the second axis (capture CSV)");
+        sub.add_option("--out", o->out, "ball-bar CSV to write")->required();
+        return [o] { return runCircle(*o); };
+    }}};
+
+} // namespace
+} // namespace axistune::cli
