@@ -491,8 +491,11 @@ Status ModbusDrive::abortTest()
 
 Result<std::unique_ptr<Drive>> connectAny(const ConnectionSettings& settings)
 {
-    if (settings.uri.rfind("modbus://", 0) != 0)
-        return connect(settings);
+    return settings.uri.rfind("modbus://", 0) == 0 ? connectModbus(settings) : connect(settings);
+}
+
+Result<std::unique_ptr<Drive>> connectModbus(const ConnectionSettings& settings)
+{
     auto uri = parseModbusUri(settings.uri);
     if (!uri)
         return uri.error();

@@ -100,6 +100,9 @@ private:
     Clock::time_point m_lastPoll;
 };
 
+/// Opens "modbus://HOST:PORT[?timeout_ms=N&map=FAMILY]" (the map from resources/drives/FAMILY.json).
+/// device::connect() can hand modbus:// URIs to this function, so every --connect accepts them.
+Result<std::unique_ptr<Drive>> connectModbus(const ConnectionSettings& settings);
 /// Opens "sim:PRESET" (embedded) or "modbus://HOST:PORT" (Modbus TCP) alike.
 Result<std::unique_ptr<Drive>> connectAny(const ConnectionSettings& settings);
 
