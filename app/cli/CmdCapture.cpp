@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli capture: runs a test on a drive and writes the trace as a capture CSV.
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/device/Drive.h"
+#include "core/device/SimulatedDrive.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
 #include "core/io/SweepCsv.h"
 
+#include <charconv>
 #include <iostream>
 #include <memory>
 
@@ -35,7 +38,59 @@ struct CaptureOptions {
     double minMeasure = 0.0;
     std::string sweepOut;
     std::string traceOut;
+    // Parameters written before the test, and the simulator's linear switch (test/diagnostic).
+    std::vector<std::string> set;
+    bool linear = false;
 };
+
+/// Parses the --set KEY=VALUE options (VALUE a number in SI units) and checks each key and value
+/// against the axis's parameter metadata: unknown, read-only or out-of-range → BadInput (exit 2).
+Result<model::ParameterValues> parseSets(device::Drive& drive, const std::string& axis, const std::vector<std::string>& sets)
+{
+    model::ParameterValues v;
+    if (sets.empty())
+        return v;
+    auto metas = drive.parameterMetadata(axis);
+    if (!metas)
+        return metas.error();
+    for (const auto& s : sets) {
+        const auto eq = s.find('=');
+        double x = 0.0;
+        const char* b = eq == std::string::npos ? nullptr : s.data() + eq + 1;
+        const char* e = s.data() + s.size();
+        const auto r = b ? std::from_chars(b, e, x) : std::from_chars_result{nullptr, std::errc::invalid_argument};
+        if (eq == std::string::npos || eq == 0 || r.ec != std::errc() || r.ptr != e)
+            return makeError(ErrorCode::BadInput, "--set '" + s + "': expected KEY=VALUE with VALUE a number in SI units");
+        const std::string key = s.substr(0, eq);
+        const auto* meta = model::findParameter(*metas, key);
+        if (!meta || !meta->writable)
+            return makeError(ErrorCode::BadInput, "--set '" + s + "': axis " + axis + " has no writable parameter '" + key + "'");
+        if (auto st = model::checkParameterValue(*meta, x); !st)
+            return makeError(ErrorCode::BadInput, "--set '" + s + "': " + st.error().detail);
+        v[key] = x;
+    }
+    return v;
+}
+
+/// Applies --set and --linear before the test.
+Status prepareDrive(device::Drive& drive, const CaptureOptions& o)
+{
+    auto sets = parseSets(drive, o.axis, o.set);
+    if (!sets)
+        return sets.error();
+    if (!sets->empty()) {
+        if (auto st = drive.writeParameters(o.axis, *sets); !st)
+            return makeError(ErrorCode::BadInput, "--set: " + st.error().detail);
+    }
+    if (o.linear) {
+        auto* simDrive = dynamic_cast<device::SimulatedDrive*>(&drive);
+        sim::AxisSimulator* sim = simDrive ? simDrive->simulator(o.axis) : nullptr;
+        if (!sim)
+            return makeError(ErrorCode::BadInput, "--linear needs a simulated drive (sim:PRESET) and one of its axes");
+        sim->setNonlinearities({false, false, false, false, false});
+    }
+    return {};
+}
 
 /// Writes the FRF (and the sine-stream recording) of a completed FRF test; prints a JSON summary.
 int writeFrfResult(const std::string& cmd, device::Drive& drive, const CaptureOptions& o)
@@ -104,6 +159,8 @@ int runCapture(const CaptureOptions& o)
     }
     if (o.test != "frf" && !o.sweepOut.empty())
         return reportError(cmd, makeError(ErrorCode::BadInput, "--sweep-out is only for --test frf"));
+    if (auto st = prepareDrive(**drive, o); !st)
+        return reportError(cmd, st.error());
     if (auto st = (*drive)->startTest(req); !st)
         return reportError(cmd, st.error());
     while (true) {
@@ -164,8 +221,11 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         sub.add_option("--min-measure-s", o->minMeasure, "frf: measured time per frequency at least [s] (0: from the loop dynamics)");
         sub.add_option("--sweep-out", o->sweepOut, "frf: sine-stream CSV of the excitation and response");
         sub.add_option("--trace-out", o->traceOut, "frf: the whole trace as a capture CSV");
+        sub.add_option("--set", o->set, "write parameter KEY=VALUE (SI units) before the test; repeatable");
+        sub.add_flag("--linear", o->linear, "simulator only, test/diagnostic: friction, inductance drop, quantization, "
+                                            "noise and lost motion off");
         sub.add_option("--out", o->out, "capture CSV to write (frf: FRF CSV)")->required();
-        return [o] { return runCapture(*o); };
+        return recordSessions(sub, [o] { return runCapture(*o); });
     }}};
 
 }  // namespace

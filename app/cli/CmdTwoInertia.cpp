@@ -2,6 +2,8 @@
 // axistune-cli two-inertia: two-inertia fit of a torque → motor-velocity FRF, F_m/F_L settings,
 // velocity PI and position-gain limit on the fitted model, predicted load error (docs/tuning.md).
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
+#include "core/dsp/LoopAnalysis.h"
 #include "core/io/FrfCsv.h"
 #include "core/tuning/TwoInertia.h"
 #include "core/tuning/TwoInertiaFilter.h"
@@ -10,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -30,7 +33,46 @@ struct TwoInertiaOptions {
     double bandwidthHz = 24.0;
     double staticGain = 10.0;
     tuning::MotionProfile profile;
+    std::vector<double> loopPi;      ///< KP,KI: the FRF is T = PC/(1+PC) of this velocity PI; fit P
+    double loopPeriodS = 250e-6;     ///< velocity-loop period of C(z)
+    double injectionPeriodS = 0.0;   ///< period the injection d is applied at (0: the loop period)
 };
+
+/// P = L / C with L = T/(1−T) and C(z) = K_P + K_I·T_v/(1 − z⁻¹), z = e^{jωT_v} (the simulated
+/// drive's velocity PI, integral divider 1, docs/frequency-response-sim.md). Points where T = 1 stay invalid.
+/// An injection applied every h = T_v/N (the simulated drive: the current-loop period) while the trace
+/// holds its value at the velocity tick reaches the plant as G·d, G = N / Σ_{m<N} e^{−jωmh} (the
+/// fundamental of the N-tap hold relative to the fine staircase), so T = T_meas / G first (docs/tuning.md).
+Result<dsp::FrequencyResponse> plantFromComplementary(const dsp::FrequencyResponse& t, const TwoInertiaOptions& o,
+                                                      const std::string& path)
+{
+    if (o.loopPi.size() != 2 || !(o.loopPi[0] >= 0.0) || !(o.loopPi[1] >= 0.0) || !(o.loopPi[0] + o.loopPi[1] > 0.0) ||
+        !(o.loopPeriodS > 0.0))
+        return makeError(ErrorCode::BadInput, "--loop-pi needs KP,KI >= 0 (not both 0) and --loop-period-s > 0");
+    if (auto it = t.metadata.find("measurement"); it != t.metadata.end() && it->second != "complementary")
+        return makeError(ErrorCode::BadInput, path + ": --loop-pi needs a complementary FRF (T = PC/(1+PC)), the file says "
+                                                  "measurement=" + it->second);
+    const double h = o.injectionPeriodS > 0.0 ? o.injectionPeriodS : o.loopPeriodS;
+    const double ratio = o.loopPeriodS / h;
+    const long n = std::lround(ratio);
+    if (n < 1 || std::abs(ratio - static_cast<double>(n)) > 1e-6 * ratio)
+        return makeError(ErrorCode::BadInput, "--loop-period-s must be an integer multiple of --injection-period-s");
+    dsp::FrequencyResponse corrected = t;
+    for (std::size_t i = 0; i < corrected.size(); ++i) {
+        std::complex<double> sum = 0.0;
+        for (long m = 0; m < n; ++m)
+            sum += std::polar(1.0, -kTwoPi * corrected.freqHz[i] * static_cast<double>(m) * h);
+        corrected.h[i] *= sum / static_cast<double>(n);
+    }
+    auto p = dsp::openLoopFromClosedLoop(corrected, dsp::LoopMeasurement::Complementary);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const std::complex<double> zInv = std::polar(1.0, -kTwoPi * p.freqHz[i] * o.loopPeriodS);
+        const std::complex<double> c = o.loopPi[0] + o.loopPi[1] * o.loopPeriodS / (1.0 - zInv);
+        p.h[i] = p.valid[i] ? p.h[i] / c : std::complex<double>(0.0, 0.0);
+    }
+    p.metadata["loop"] = "plant-from-complementary";
+    return p;
+}
 
 nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
@@ -49,7 +91,14 @@ int runTwoInertia(const TwoInertiaOptions& o)
     if (!frf) {
         return reportError(cmd, frf.error());
     }
-    auto fit = tuning::fitTwoInertia(*frf, o.fit);
+    dsp::FrequencyResponse data = std::move(frf).value();
+    if (!o.loopPi.empty()) {
+        auto plant = plantFromComplementary(data, o, o.frfPath);
+        if (!plant)
+            return reportError(cmd, plant.error());
+        data = std::move(plant).value();
+    }
+    auto fit = tuning::fitTwoInertia(data, o.fit);
     if (!fit) {
         return reportError(cmd, Error{fit.error().code, o.frfPath + ": " + fit.error().detail});
     }
@@ -127,8 +176,16 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--vmax", o->profile.vMax, "profile speed [rad/s] (default 62.83 = 10 rev/s)");
         sub.add_option("--accel", o->profile.aMax, "profile acceleration [rad/s^2] (default 1256.6 = 200 rev/s^2)");
         sub.add_option("--jerk", o->profile.jerk, "profile jerk [rad/s^3] (default 125660)");
+        sub.add_option("--loop-pi", o->loopPi, "KP,KI: the FRF is the closed velocity loop T = PC/(1+PC) of this PI "
+                                               "[Nm*s/rad, Nm/rad]; fit P = T/((1-T)C)")
+            ->delimiter(',')
+            ->expected(2);
+        sub.add_option("--loop-period-s", o->loopPeriodS, "velocity-loop period of the PI for --loop-pi (default 250e-6)");
+        sub.add_option("--injection-period-s", o->injectionPeriodS,
+                       "for --loop-pi: period the injection is applied at, e.g. the current loop's 62.5e-6 on the "
+                       "simulated drive (default: the loop period)");
         sub.add_option("--out", o->outPath, "write the JSON to this file instead of stdout");
-        return [o] { return runTwoInertia(*o); };
+        return recordSessions(sub, [o] { return runTwoInertia(*o); });
     }}};
 
 }  // namespace
