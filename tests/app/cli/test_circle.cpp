@@ -124,3 +124,144 @@ TEST(SimCircleDiagnostics, ServoMismatchFromPositionGains)
     ASSERT_TRUE(rep.squarenessRad.has_value());
     EXPECT_LT(std::abs(*rep.squarenessRad), 5e-6);
 }
+
+namespace {
+
+/// CCW circles of radius 50 mm at three centres along Y (screw lengths x₀ + cy ± R from 0.0 to 0.4 m on Y).
+std::vector<io::BallBarTrace> threePositions(const sim::MachineDefinition& m)
+{
+    std::vector<io::BallBarTrace> traces;
+    for (double cy : {-0.15, 0.0, 0.15}) {
+        sim::CircleTestOptions o;
+        o.centerYM = cy;
+        auto r = sim::runCircleTest(m, o);
+        EXPECT_TRUE(r.ok());
+        traces.push_back(r->ballbar);
+    }
+    return traces;
+}
+
+tuning::LostMotionFit fitAxis(const std::vector<io::BallBarTrace>& traces, int axis, double x0)
+{
+    std::vector<tuning::LostMotionPoint> pts;
+    for (const auto& t : traces) {
+        auto p = tuning::extractLostMotionPoints(t, {axis, x0, 1.0});
+        EXPECT_TRUE(p.ok()) << (p.ok() ? "" : p.error().detail);
+        pts.insert(pts.end(), p->begin(), p->end());
+    }
+    auto fit = tuning::fitLostMotion(pts);
+    EXPECT_TRUE(fit.ok()) << (fit.ok() ? "" : fit.error().detail);
+    return *fit;
+}
+
+} // namespace
+
+TEST(SimCircleLostMotion, ThreeTablePositionsGivePresetAandBAndCompensationRemovesTheStep)
+{
+    const auto m = vmc();
+    const double x0 = preset("Y", "plant.screw_offset");
+    const auto traces = threePositions(m);
+    const auto fy = fitAxis(traces, 1, x0);
+    const double aY = preset("Y", "plant.lost_motion_A"), bY = preset("Y", "plant.lost_motion_B");
+    EXPECT_NEAR(fy.aMPerNm, aY, kTolRel * aY);
+    EXPECT_NEAR(fy.bPerNm, bY, kTolRel * bY);
+    // X: one screw length per reversal side only (centre x = 0 in all three), B forced 0.
+    const auto fx = fitAxis(traces, 0, preset("X", "plant.screw_offset"));
+    const double aX = preset("X", "plant.lost_motion_A");
+    EXPECT_NEAR(fx.aMPerNm, aX, kTolRel * aX);
+
+    // Apply: torque-synchronous compensation (mode 2) with the identified A, B, x0 on both axes.
+    auto comp = m;
+    param(comp, "Y", "lostmotion.mode") = 2;
+    param(comp, "Y", "lostmotion.A") = fy.aMPerNm;
+    param(comp, "Y", "lostmotion.B") = fy.bPerNm;
+    param(comp, "Y", "lostmotion.screw_offset") = x0;
+    param(comp, "X", "lostmotion.mode") = 2;
+    param(comp, "X", "lostmotion.A") = fx.aMPerNm;
+    param(comp, "X", "lostmotion.B") = 0.0;
+    param(comp, "X", "lostmotion.screw_offset") = preset("X", "plant.screw_offset");
+    sim::CircleTestOptions o;
+    o.centerYM = 0.15;
+    auto after = sim::runCircleTest(comp, o);
+    ASSERT_TRUE(after.ok());
+    const auto& before = traces[2];
+    const double cBefore = *tuning::circularityOf(before.angleRad, before.deviationM);
+    const double cAfter = *tuning::circularityOf(after->ballbar.angleRad, after->ballbar.deviationM);
+    auto dBefore = tuning::analyzeRun(before);
+    auto dAfter = tuning::analyzeRun(after->ballbar);
+    ASSERT_TRUE(dBefore.ok() && dAfter.ok());
+    const tuning::LostMotionSetup setupY{1, x0, 1.0};
+    auto pAfter = tuning::predictCompensation(after->ballbar, setupY, fy, 0.0);
+    ASSERT_TRUE(pAfter.ok());
+    // The reversal step of Y (the lost motion the compensation is predicted to remove) is gone ...
+    EXPECT_LT(std::abs(dAfter->lostMotionM[1]), 0.1 * std::abs(dBefore->lostMotionM[1]));
+    EXPECT_NEAR(dBefore->lostMotionM[1], presetLostMotion("Y", 0.15), std::max(kTolAbs, kTolRel * presetLostMotion("Y", 0.15)));
+    // ... the circularity improves ...
+    EXPECT_LT(cAfter, cBefore - 1e-6);
+    // ... and no inward notch after the reversals (the cut-in rule of core/tuning/LostMotion.h).
+    EXPECT_LT(pAfter->measuredCutInM, 0.1e-6);
+    // The prediction on the measured trace expects an improvement as well.
+    auto pBefore = tuning::predictCompensation(before, setupY, fy, 0.0);
+    ASSERT_TRUE(pBefore.ok() && pBefore->proposedCircularityM.has_value());
+    EXPECT_LT(*pBefore->proposedCircularityM, cBefore);
+}
+
+TEST(CliCircle, ThreeCirclesThroughLostMotionGiveThePresetY)
+{
+    const auto dir = makeTempDir("circle");
+    std::string files;
+    for (const char* cy : {"-150", "0", "150"}) {
+        const auto path = (dir / (std::string("c") + cy + ".csv")).string();
+        auto r = runCli("circle --connect sim:vmc --radius-mm 50 --feed-mm-min 1000 --direction ccw --center-y-mm " +
+                        std::string(cy) + " --out " + path);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        auto j = nlohmann::json::parse(r.out);
+        EXPECT_NEAR(j["dT_y_Nm"].get<double>(), 2.0 * preset("Y", "plant.coulomb_motor"), 0.05 * 0.61);
+        auto t = io::readBallBarCsvFile(path);
+        ASSERT_TRUE(t.ok()) << t.error().detail;
+        EXPECT_NEAR(t->radiusM, 0.05, 1e-12);
+        EXPECT_NEAR(t->centerYM, std::stod(cy) * 1e-3, 1e-12);
+        files += " " + path;
+    }
+    auto r = runCli("lost-motion --ballbar" + files + " --axis y --screw-offset-m 0.2");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const double aY = preset("Y", "plant.lost_motion_A"), bY = preset("Y", "plant.lost_motion_B");
+    EXPECT_NEAR(j["A_m_per_Nm"].get<double>(), aY, kTolRel * aY);
+    EXPECT_NEAR(j["B_per_Nm"].get<double>(), bY, kTolRel * bY);
+}
+
+TEST(CliCircle, SetAppliesCompensationAndInjectedErrorsReachTheBallbar)
+{
+    const auto dir = makeTempDir("circle");
+    const auto ccw = (dir / "ccw.csv").string(), cw = (dir / "cw.csv").string();
+    const std::string common = "circle --connect sim:vmc --radius-mm 50 --feed-mm-min 1000 --squareness-um-per-m 40 "
+                               "--set Y:lostmotion.mode=2 --set Y:lostmotion.A=0.7e-6 --set Y:lostmotion.B=17e-6 "
+                               "--set Y:lostmotion.screw_offset=0.2";
+    ASSERT_EQ(runCli(common + " --direction ccw --out " + ccw).exitCode, 0);
+    ASSERT_EQ(runCli(common + " --direction cw --out " + cw).exitCode, 0);
+    auto r = runCli("ballbar --in " + ccw + " --in " + cw);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_NEAR(j["squareness_um_per_m"].get<double>(), 40.0, 4.0);
+    // Y compensated with the preset's own A, B: no lost motion left on Y (uncompensated: 2.5 µm).
+    EXPECT_LT(std::abs(j["backlash_y_um"].get<double>()), 0.3);
+}
+
+TEST(CliCircle, BadOptionsExitTwoWithAClearMessage)
+{
+    const auto out = (makeTempDir("circle") / "x.csv").string();
+    auto r = runCli("circle --connect sim:vmc --set Y:lostmotion.nothing=1 --out " + out);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("lostmotion.nothing"), std::string::npos) << r.err;
+    r = runCli("circle --connect sim:vmc --set X:lostmotion.A=1 --out " + out);  // 1 m/(N·m): above the limit
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("lostmotion.A"), std::string::npos) << r.err;
+    r = runCli("circle --connect sim:vmc --set X:lostmotion.mode=two --out " + out);
+    EXPECT_EQ(r.exitCode, 2);
+    r = runCli("circle --connect sim:dd-table --out " + out);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("axis"), std::string::npos) << r.err;
+    r = runCli("circle --connect sim:vmc --radius-mm -5 --out " + out);
+    EXPECT_NE(r.exitCode, 0);
+}
