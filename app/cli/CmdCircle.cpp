@@ -73,8 +73,9 @@ int runCircle(const CircleCliOptions& o)
 {
     const std::string cmd = "circle";
     if (o.connect.rfind("sim:", 0) != 0)
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--connect '" + o.connect +
-                                                                   "': circle tests run on simulated machines (sim:PRESET)"));
+        return reportError(
+            cmd, makeError(ErrorCode::BadInput,
+                           "--connect '" + o.connect + "': circle tests run on simulated machines (sim:PRESET)"));
     auto loaded = sim::loadPreset(o.connect.substr(4));
     if (!loaded)
         return reportError(cmd, makeError(ErrorCode::BadInput, loaded.error().detail));
@@ -112,33 +113,40 @@ int runCircle(const CircleCliOptions& o)
     if (!o.servoOutY.empty())
         if (auto st = io::writeCaptureCsvFile(o.servoOutY, res->traceY); !st)
             return reportError(cmd, st.error());
-    std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << res->ballbar.size() << ", \"dT_x_Nm\": " << res->dTxNm
-              << ", \"dT_y_Nm\": " << res->dTyNm << "}\n";
+    std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << res->ballbar.size()
+              << ", \"dT_x_Nm\": " << res->dTxNm << ", \"dT_y_Nm\": " << res->dTyNm << "}\n";
     return 0;
 }
 
-const CliRegistrar kRegistrar{{"circle", "Ball-bar circle test on a simulated machine, written as a ball-bar CSV",
-    [](CLI::App& sub) {
-        auto o = std::make_shared<CircleCliOptions>();
-        sub.add_option("--connect", o->connect, "sim:PRESET with two linear axes (vmc)")->capture_default_str();
-        sub.add_option("--plane", o->plane, "the two axes, first = x role")->capture_default_str();
-        sub.add_option("--radius-mm", o->radiusMm, "circle radius [mm]")->capture_default_str()->check(CLI::PositiveNumber);
-        sub.add_option("--feed-mm-min", o->feedMmMin, "feed [mm/min]")->capture_default_str()->check(CLI::PositiveNumber);
-        sub.add_option("--direction", o->direction, "ccw | cw")->capture_default_str()->check(CLI::IsMember({"ccw", "cw"}));
-        sub.add_option("--center-x-mm", o->centerXMm, "circle centre, first axis [mm]")->capture_default_str();
-        sub.add_option("--center-y-mm", o->centerYMm, "circle centre, second axis [mm]")->capture_default_str();
-        sub.add_option("--squareness-um-per-m", o->squarenessUmPerM, "injected squareness (angle below 90 deg > 0)");
-        sub.add_option("--scale-x-ppm", o->scaleXPpm, "injected scale error of the first axis [ppm]");
-        sub.add_option("--scale-y-ppm", o->scaleYPpm, "injected scale error of the second axis [ppm]");
-        sub.add_option("--lead-arc-deg", o->leadArcDeg, "lead-in and lead-out arc [deg]")->capture_default_str();
-        sub.add_option("--start-deg", o->startDeg, "angle where the 360 deg data arc starts")->capture_default_str();
-        sub.add_option("--set", o->sets, "AXIS:KEY=VALUE drive parameter in SI, e.g. Y:lostmotion.mode=2 (repeatable)");
-        sub.add_option("--seed", o->seed, "noise seed")->capture_default_str();
-        sub.add_option("--servo-out-x", o->servoOutX, "servo trace of the first axis (capture CSV)");
-        sub.add_option("--servo-out-y", o->servoOutY, "servo trace of the second axis (capture CSV)");
-        sub.add_option("--out", o->out, "ball-bar CSV to write")->required();
-        return [o] { return runCircle(*o); };
-    }}};
+const CliRegistrar kRegistrar{
+    {"circle", "Ball-bar circle test on a simulated machine, written as a ball-bar CSV", [](CLI::App& sub) {
+         auto o = std::make_shared<CircleCliOptions>();
+         sub.add_option("--connect", o->connect, "sim:PRESET with two linear axes (vmc)")->capture_default_str();
+         sub.add_option("--plane", o->plane, "the two axes, first = x role")->capture_default_str();
+         sub.add_option("--radius-mm", o->radiusMm, "circle radius [mm]")
+             ->capture_default_str()
+             ->check(CLI::PositiveNumber);
+         sub.add_option("--feed-mm-min", o->feedMmMin, "feed [mm/min]")
+             ->capture_default_str()
+             ->check(CLI::PositiveNumber);
+         sub.add_option("--direction", o->direction, "ccw | cw")
+             ->capture_default_str()
+             ->check(CLI::IsMember({"ccw", "cw"}));
+         sub.add_option("--center-x-mm", o->centerXMm, "circle centre, first axis [mm]")->capture_default_str();
+         sub.add_option("--center-y-mm", o->centerYMm, "circle centre, second axis [mm]")->capture_default_str();
+         sub.add_option("--squareness-um-per-m", o->squarenessUmPerM, "injected squareness (angle below 90 deg > 0)");
+         sub.add_option("--scale-x-ppm", o->scaleXPpm, "injected scale error of the first axis [ppm]");
+         sub.add_option("--scale-y-ppm", o->scaleYPpm, "injected scale error of the second axis [ppm]");
+         sub.add_option("--lead-arc-deg", o->leadArcDeg, "lead-in and lead-out arc [deg]")->capture_default_str();
+         sub.add_option("--start-deg", o->startDeg, "angle where the 360 deg data arc starts")->capture_default_str();
+         sub.add_option("--set", o->sets,
+                        "AXIS:KEY=VALUE drive parameter in SI, e.g. Y:lostmotion.mode=2 (repeatable)");
+         sub.add_option("--seed", o->seed, "noise seed")->capture_default_str();
+         sub.add_option("--servo-out-x", o->servoOutX, "servo trace of the first axis (capture CSV)");
+         sub.add_option("--servo-out-y", o->servoOutY, "servo trace of the second axis (capture CSV)");
+         sub.add_option("--out", o->out, "ball-bar CSV to write")->required();
+         return [o] { return runCircle(*o); };
+     }}};
 
 } // namespace
 } // namespace axistune::cli

@@ -19,7 +19,10 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
-double wrapPi(double a) { return std::remainder(a, 2.0 * kPi); }
+double wrapPi(double a)
+{
+    return std::remainder(a, 2.0 * kPi);
+}
 
 std::string fmt(double v)
 {
@@ -84,7 +87,7 @@ double reversalTorqueChange(const Samples& d, const CircleTestOptions& o, double
     int count = 0;
     for (int k = -2; k <= 6; ++k) {
         const double revPhi = (axis == 0 ? 0.0 : 0.5 * kPi) + k * kPi;
-        const double sRev = sigma * (revPhi - phi0);  // travelled arc at that reversal
+        const double sRev = sigma * (revPhi - phi0); // travelled arc at that reversal
         if (sRev - win < sFrom || sRev + win > sTo)
             continue;
         double before = 0, after = 0;
@@ -126,7 +129,8 @@ Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const C
     AxisSimulator& ax = **simX;
     AxisSimulator& ay = **simY;
     const double tp = ax.parameter("position.period");
-    if (std::abs(tp - ay.parameter("position.period")) > 1e-12 || std::abs(ax.currentPeriod() - ay.currentPeriod()) > 1e-15)
+    if (std::abs(tp - ay.parameter("position.period")) > 1e-12 ||
+        std::abs(ax.currentPeriod() - ay.currentPeriod()) > 1e-15)
         return makeError(ErrorCode::BadInput, "circle test: axes " + o.axisX + " and " + o.axisY +
                                                   " must share the position and current periods");
     const std::int64_t ticksPerSample = std::llround(tp / ax.currentPeriod());
@@ -192,7 +196,7 @@ Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const C
         const double phi = phi0 + sigma * d.s[i];
         const double theta = phi + wrapPi(std::atan2(d.y[i] - cy, d.x[i] - cx) - phi);
         if (!bb.angleRad.empty() && !(sigma * (theta - bb.angleRad.back()) > 0.0))
-            continue;  // keeps the angles strictly monotonic
+            continue; // keeps the angles strictly monotonic
         bb.angleRad.push_back(theta);
         bb.deviationM.push_back(std::hypot(d.x[i] - cx, d.y[i] - cy) - r);
     }

@@ -26,11 +26,11 @@ struct CircleTestOptions {
     double centerYM = 0.0;
     std::string axisX = "X"; ///< axes of the plane (first = "x" role)
     std::string axisY = "Y";
-    double dataStartDeg = 45.0;   ///< geometric angle at which the 360° data arc begins
-    double leadArcDeg = 90.0;     ///< lead-in and lead-out arc length (acceleration happens in its first half)
-    double dwellS = 0.1;          ///< hold at the start before moving
-    double squarenessPerM = 0.0;  ///< γ [rad]: Y leans toward +X by γ per unit of Y (angle X–Y below 90° → γ > 0)
-    double scaleX = 0.0;          ///< relative scale error of X (ratio, 1e-6 = 1 ppm)
+    double dataStartDeg = 45.0;  ///< geometric angle at which the 360° data arc begins
+    double leadArcDeg = 90.0;    ///< lead-in and lead-out arc length (acceleration happens in its first half)
+    double dwellS = 0.1;         ///< hold at the start before moving
+    double squarenessPerM = 0.0; ///< γ [rad]: Y leans toward +X by γ per unit of Y (angle X–Y below 90° → γ > 0)
+    double scaleX = 0.0;         ///< relative scale error of X (ratio, 1e-6 = 1 ppm)
     double scaleY = 0.0;
     double torqueExcludeDeg = 5.0; ///< torque plateaus for ΔT: from this angle ...
     double torqueWindowDeg = 20.0; ///< ... to this angle either side of each reversal
@@ -38,8 +38,8 @@ struct CircleTestOptions {
 };
 
 struct CircleTestResult {
-    io::BallBarTrace ballbar;  ///< angle and radial deviation over the data arc, metadata filled in
-    model::Capture traceX;     ///< servo trace of the first axis over the whole run
+    io::BallBarTrace ballbar; ///< angle and radial deviation over the data arc, metadata filled in
+    model::Capture traceX;    ///< servo trace of the first axis over the whole run
     model::Capture traceY;
     double dTxNm = 0.0; ///< reversal torque change (peak-to-peak, mean over both reversals)
     double dTyNm = 0.0;
@@ -49,4 +49,4 @@ struct CircleTestResult {
 /// hold any change to apply (lost-motion compensation, gains). Bad options give BadInput.
 Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const CircleTestOptions& opt);
 
-}  // namespace axistune::sim
+} // namespace axistune::sim

@@ -39,7 +39,10 @@ double& param(sim::MachineDefinition& m, const std::string& axis, const std::str
     throw std::runtime_error("no axis " + axis);
 }
 
-double preset(const std::string& axis, const std::string& key) { return vmc().axis(axis)->values.at(key); }
+double preset(const std::string& axis, const std::string& key)
+{
+    return vmc().axis(axis)->values.at(key);
+}
 
 /// CCW and CW runs of the same machine and options.
 tuning::BallBarReport bothDirections(const sim::MachineDefinition& m, sim::CircleTestOptions o)
@@ -195,7 +198,8 @@ TEST(SimCircleLostMotion, ThreeTablePositionsGivePresetAandBAndCompensationRemov
     ASSERT_TRUE(pAfter.ok());
     // The reversal step of Y (the lost motion the compensation is predicted to remove) is gone ...
     EXPECT_LT(std::abs(dAfter->lostMotionM[1]), 0.1 * std::abs(dBefore->lostMotionM[1]));
-    EXPECT_NEAR(dBefore->lostMotionM[1], presetLostMotion("Y", 0.15), std::max(kTolAbs, kTolRel * presetLostMotion("Y", 0.15)));
+    EXPECT_NEAR(dBefore->lostMotionM[1], presetLostMotion("Y", 0.15),
+                std::max(kTolAbs, kTolRel * presetLostMotion("Y", 0.15)));
     // ... the circularity improves ...
     EXPECT_LT(cAfter, cBefore - 1e-6);
     // ... and no inward notch after the reversals (the cut-in rule of core/tuning/LostMotion.h).
@@ -254,7 +258,7 @@ TEST(CliCircle, BadOptionsExitTwoWithAClearMessage)
     auto r = runCli("circle --connect sim:vmc --set Y:lostmotion.nothing=1 --out " + out);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("lostmotion.nothing"), std::string::npos) << r.err;
-    r = runCli("circle --connect sim:vmc --set X:lostmotion.A=1 --out " + out);  // 1 m/(N·m): above the limit
+    r = runCli("circle --connect sim:vmc --set X:lostmotion.A=1 --out " + out); // 1 m/(N·m): above the limit
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("lostmotion.A"), std::string::npos) << r.err;
     r = runCli("circle --connect sim:vmc --set X:lostmotion.mode=two --out " + out);

@@ -5,10 +5,9 @@
 #include "core/sim/AxisSimulator.h"
 #include "core/sim/CircleTest.h"
 
-#include <gtest/gtest.h>
-
 #include <Eigen/Dense>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 
 using namespace axistune;
@@ -93,7 +92,7 @@ TEST(CircleTest, ReversalTorqueChangeIsTwiceCoulombFriction)
     CircleTestOptions o;
     auto r = runCircleTest(m, o);
     ASSERT_TRUE(r.ok());
-    const double expected = 2.0 * m.axis("X")->values.at("plant.coulomb_motor");  // 0.61 N·m, spec §4.4
+    const double expected = 2.0 * m.axis("X")->values.at("plant.coulomb_motor"); // 0.61 N·m, spec §4.4
     EXPECT_NEAR(r->dTxNm, expected, 0.05 * expected);
     EXPECT_NEAR(r->dTyNm, 2.0 * m.axis("Y")->values.at("plant.coulomb_motor"), 0.05 * expected);
     ASSERT_TRUE(r->ballbar.dTxNm.has_value());
