@@ -107,6 +107,31 @@ double reversalTorqueChange(const Samples& d, const CircleTestOptions& o, double
     return count > 0 ? sum / count : std::numeric_limits<double>::quiet_NaN();
 }
 
+/// Ball-bar reading over the data arc [sFrom, sTo] of travelled arc.
+io::BallBarTrace ballBarFromSamples(const Samples& d, const CircleTestOptions& o, double phi0, double sigma,
+                                    double sFrom, double sTo)
+{
+    const double r = o.radiusM, cx = o.centerXM, cy = o.centerYM;
+    io::BallBarTrace bb;
+    bb.radiusM = o.radiusM;
+    bb.feedMPerS = o.feedMPerS;
+    bb.direction = o.direction;
+    bb.plane = o.axisX + o.axisY;
+    bb.centerXM = o.centerXM;
+    bb.centerYM = o.centerYM;
+    for (std::size_t i = 0; i < d.s.size(); ++i) {
+        if (d.s[i] < sFrom || d.s[i] > sTo)
+            continue;
+        const double phi = phi0 + sigma * d.s[i];
+        const double theta = phi + wrapPi(std::atan2(d.y[i] - cy, d.x[i] - cx) - phi);
+        if (!bb.angleRad.empty() && !(sigma * (theta - bb.angleRad.back()) > 0.0))
+            continue; // keeps the angles strictly monotonic
+        bb.angleRad.push_back(theta);
+        bb.deviationM.push_back(std::hypot(d.x[i] - cx, d.y[i] - cy) - r);
+    }
+    return bb;
+}
+
 } // namespace
 
 Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const CircleTestOptions& o)
@@ -182,24 +207,9 @@ Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const C
     }
 
     CircleTestResult res;
+    res.ballbar = ballBarFromSamples(d, o, phi0, sigma, sFrom, sTo);
     io::BallBarTrace& bb = res.ballbar;
     bb.source = "sim:" + machine.name;
-    bb.radiusM = r;
-    bb.feedMPerS = o.feedMPerS;
-    bb.direction = o.direction;
-    bb.plane = o.axisX + o.axisY;
-    bb.centerXM = cx;
-    bb.centerYM = cy;
-    for (std::size_t i = 0; i < d.s.size(); ++i) {
-        if (d.s[i] < sFrom || d.s[i] > sTo)
-            continue;
-        const double phi = phi0 + sigma * d.s[i];
-        const double theta = phi + wrapPi(std::atan2(d.y[i] - cy, d.x[i] - cx) - phi);
-        if (!bb.angleRad.empty() && !(sigma * (theta - bb.angleRad.back()) > 0.0))
-            continue; // keeps the angles strictly monotonic
-        bb.angleRad.push_back(theta);
-        bb.deviationM.push_back(std::hypot(d.x[i] - cx, d.y[i] - cy) - r);
-    }
     res.dTxNm = reversalTorqueChange(d, o, phi0, sigma, 0, sFrom, sTo);
     res.dTyNm = reversalTorqueChange(d, o, phi0, sigma, 1, sFrom, sTo);
     if (std::isfinite(res.dTxNm))
