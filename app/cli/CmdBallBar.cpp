@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli ballbar: ball-bar diagnostics of one or more circle traces (docs/ballbar.md).
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/io/BallBarCsv.h"
 #include "core/tuning/BallBarDiagnostics.h"
 
@@ -161,7 +162,7 @@ const CliRegistrar kRegistrar{CliCommand{
                        "width of the fit window on each side of a reversal, beyond the excluded zone (default 20)")
             ->check(CLI::Range(2.0, 60.0));
         sub.add_option("--out", o->outPath, "write the JSON to this file instead of stdout");
-        return [o] { return runBallBar(*o); };
+        return recordSessions(sub, [o] { return runBallBar(*o); });
     }}};
 
 } // namespace

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli capture: runs a test on a drive and writes the trace as a capture CSV.
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/device/Drive.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/io/CaptureCsv.h"
@@ -224,7 +225,7 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         sub.add_flag("--linear", o->linear, "simulator only, test/diagnostic: friction, inductance drop, quantization, "
                                             "noise and lost motion off");
         sub.add_option("--out", o->out, "capture CSV to write (frf: FRF CSV)")->required();
-        return [o] { return runCapture(*o); };
+        return recordSessions(sub, [o] { return runCapture(*o); });
     }}};
 
 }  // namespace

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli current-loop: PI ratio α and current gains from motor data (docs/tuning.md).
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/tuning/CurrentLoop.h"
 
 #include <nlohmann/json.hpp>
@@ -129,7 +130,7 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--period-s", o->periodS, "current-loop period of the discrete step response (default = tau)");
         sub.add_flag("--plots", o->plots, "add plot data: boundaries per alpha and step responses");
         sub.add_option("--out", o->outPath, "write the JSON to this file instead of stdout");
-        return [o] { return runCurrentLoop(*o); };
+        return recordSessions(sub, [o] { return runCurrentLoop(*o); });
     }}};
 
 }  // namespace

@@ -2,6 +2,7 @@
 // axistune-cli frf: frequency response from a capture (Welch H1/H2 + coherence) or from a
 // sine-stream recording (conventional or three-phase multi-sweep demodulation); docs/frequency-response.md.
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/dsp/SineDemodulation.h"
 #include "core/dsp/Welch.h"
@@ -220,7 +221,7 @@ const CliRegistrar kRegistrar{CliCommand{
                        "(L/(1+L), disturbance injected into the torque command), neg-complementary (-L/(1+L)) or "
                        "sensitivity (1/(1+L))")
             ->check(CLI::IsMember({"open", "complementary", "neg-complementary", "sensitivity"}));
-        return [o] { return runFrf(*o); };
+        return recordSessions(sub, [o] { return runFrf(*o); });
     }}};
 
 }  // namespace

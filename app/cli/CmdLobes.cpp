@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli lobes: stability lobe table by semi-discretization (docs/machining.md).
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/machining/MachiningJson.h"
 #include "core/machining/StabilityLobes.h"
 
@@ -78,7 +79,7 @@ const CliRegistrar kRegistrar{{
         sub.add_option("--depth-max-mm", a->depthMaxMm, "search limit [mm]; stable up to here is written as inf (default 50)");
         sub.add_option("--threads", a->threads, "worker threads (default 2)");
         sub.add_option("--out", a->out, "output CSV (default stdout)");
-        return [a] { return runLobes(*a); };
+        return recordSessions(sub, [a] { return runLobes(*a); });
     },
 }};
 

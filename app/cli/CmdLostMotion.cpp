@@ -2,6 +2,7 @@
 // axistune-cli lost-motion: A and B of Δx = (A + B·x)·ΔT from ball-bar traces, with residuals and the
 // predicted proposed and conventional compensation (docs/ballbar.md; spec/lost-motion-and-two-inertia.md §4.3–4.5).
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/io/BallBarCsv.h"
 #include "core/tuning/LostMotion.h"
 
@@ -194,7 +195,7 @@ const CliRegistrar kRegistrar{CliCommand{
                        "write measured, proposed and conventional traces here "
                        "(file_index,angle_deg,measured_um,proposed_um,conventional_um)");
         sub.add_option("--out", o->outPath, "write the JSON to this file instead of stdout");
-        return [o] { return runLostMotion(*o); };
+        return recordSessions(sub, [o] { return runLostMotion(*o); });
     }}};
 
 } // namespace

@@ -2,6 +2,7 @@
 // axistune-cli notch: resonances of a measured velocity-loop FRF, a notch per resonance within the
 // execution rate's limits and the free drive slots, predicted FRF and margins (docs/notch.md).
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/io/FrfCsv.h"
 #include "core/tuning/Notch.h"
 #include "core/tuning/Resonance.h"
@@ -190,7 +191,7 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--fmin", o->res.fminHz, "search resonances above this frequency [Hz]");
         sub.add_option("--fmax", o->res.fmaxHz, "search resonances below this frequency [Hz]");
         sub.add_option("--out-frf", o->outFrf, "write the predicted FRF (measured form, with the notches) to this CSV");
-        return [o] { return runNotch(*o); };
+        return recordSessions(sub, [o] { return runNotch(*o); });
     }}};
 
 }  // namespace

@@ -2,6 +2,7 @@
 // axistune-cli spindle-speed: lobe number and stable-pocket speed from a chatter frequency (or from a captured
 // signal through the Kalman AR estimator), optionally with the SDM chapter-3 cost over the lobe (docs/machining.md).
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/ChatterFrequencyEstimator.h"
 #include "core/machining/MachiningJson.h"
@@ -154,7 +155,7 @@ const CliRegistrar kRegistrar{{
         sub.add_option("--cut", a->cut, "cut.json (with --tool)");
         sub.add_option("--depth-mm", a->depthMm, "axial depth for the chapter-3 cost J (with --tool/--cut)");
         sub.add_option("--steps-per-period", a->steps, "SDM steps per tooth period (default 40)");
-        return [a] { return runSpindle(*a); };
+        return recordSessions(sub, [a] { return runSpindle(*a); });
     },
 }};
 

@@ -2,6 +2,7 @@
 // axistune-cli two-inertia: two-inertia fit of a torque → motor-velocity FRF, F_m/F_L settings,
 // velocity PI and position-gain limit on the fitted model, predicted load error (docs/tuning.md).
 #include "app/cli/CliCommand.h"
+#include "app/cli/SessionRecorder.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/io/FrfCsv.h"
 #include "core/tuning/TwoInertia.h"
@@ -184,7 +185,7 @@ const CliRegistrar kRegistrar{CliCommand{
                        "for --loop-pi: period the injection is applied at, e.g. the current loop's 62.5e-6 on the "
                        "simulated drive (default: the loop period)");
         sub.add_option("--out", o->outPath, "write the JSON to this file instead of stdout");
-        return [o] { return runTwoInertia(*o); };
+        return recordSessions(sub, [o] { return runTwoInertia(*o); });
     }}};
 
 }  // namespace
