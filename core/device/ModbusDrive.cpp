@@ -491,7 +491,7 @@ Status ModbusDrive::abortTest()
 
 Result<std::unique_ptr<Drive>> connectAny(const ConnectionSettings& settings)
 {
-    return settings.uri.rfind("modbus://", 0) == 0 ? connectModbus(settings) : connect(settings);
+    return connect(settings);  // connect() dispatches sim: and modbus: alike
 }
 
 Result<std::unique_ptr<Drive>> connectModbus(const ConnectionSettings& settings)

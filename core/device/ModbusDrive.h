@@ -103,7 +103,7 @@ private:
 /// Opens "modbus://HOST:PORT[?timeout_ms=N&map=FAMILY]" (the map from resources/drives/FAMILY.json).
 /// device::connect() can hand modbus:// URIs to this function, so every --connect accepts them.
 Result<std::unique_ptr<Drive>> connectModbus(const ConnectionSettings& settings);
-/// Opens "sim:PRESET" (embedded) or "modbus://HOST:PORT" (Modbus TCP) alike.
+/// Same as device::connect(), which opens "sim:PRESET" and "modbus://HOST:PORT" alike.
 Result<std::unique_ptr<Drive>> connectAny(const ConnectionSettings& settings);
 
 } // namespace axistune::device

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/device/SimulatedDrive.h"
 
+#include "core/device/ModbusDrive.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -32,8 +34,9 @@ Result<std::unique_ptr<Drive>> connect(const ConnectionSettings& settings)
             return d.error();
         return std::unique_ptr<Drive>(std::move(d).value());
     }
-    return makeError(ErrorCode::BadInput, "connection '" + settings.uri
-                                              + "': expected sim:PRESET (Modbus TCP comes with a later release)");
+    if (settings.uri.rfind("modbus://", 0) == 0)
+        return connectModbus(settings);
+    return makeError(ErrorCode::BadInput, "connection '" + settings.uri + "': expected sim:PRESET or modbus://HOST:PORT");
 }
 
 Result<std::unique_ptr<SimulatedDrive>> SimulatedDrive::create(const sim::MachineDefinition& machine, std::uint64_t seed)
