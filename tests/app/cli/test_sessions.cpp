@@ -177,6 +177,12 @@ TEST(CliSessions, FailingCommandRecordsAFailedSessionWithItsInputDigest)
     ASSERT_NE(err, nullptr);
     EXPECT_EQ((*err)["data"]["exit_code"], 2);
     EXPECT_NE((*err)["data"]["message"].get<std::string>().find(bad.string()), std::string::npos);
+
+    // 56 bytes: the padding needs a second block. SHA-256 from FIPS 180-2 appendix B.2.
+    std::ofstream(bad) << "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";
+    ASSERT_EQ(runCli("current-loop --motor " + bad.string() + " --db " + db + " --machine vmc").exitCode, 2);
+    EXPECT_EQ(sessionShow(db, 3)["inputs"]["files"][0]["sha256"],
+              "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
 }
 
 TEST(CliSessions, UnknownMachineOrStoreIsExit2AndRunsNothing)
