@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli capture: runs a test on a drive and writes the trace as a capture CSV.
 #include "app/cli/CliCommand.h"
+#include "app/cli/CircleCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/device/Drive.h"
 #include "core/device/SimulatedDrive.h"
@@ -41,6 +42,7 @@ struct CaptureOptions {
     // Parameters written before the test, and the simulator's linear switch (test/diagnostic).
     std::vector<std::string> set;
     bool linear = false;
+    CircleCliOptions circle;  ///< --test circle
 };
 
 /// Parses the --set KEY=VALUE options (VALUE a number in SI units) and checks each key and value
@@ -119,6 +121,18 @@ int writeFrfResult(const std::string& cmd, device::Drive& drive, const CaptureOp
 
 int runCapture(const CaptureOptions& o)
 {
+    if (o.test == "circle") {
+        if (o.linear)
+            return reportError("capture", makeError(ErrorCode::BadInput, "--linear is not available for --test circle"));
+        CircleCliOptions c = o.circle;
+        c.connect = o.connect;
+        c.seed = o.seed;
+        c.out = o.out;
+        c.sets = o.set;
+        return runCircle(c);
+    }
+    if (o.axis.empty())
+        return reportError("capture", makeError(ErrorCode::BadInput, "--axis is required for --test " + o.test));
     const std::string cmd = "capture";
     auto drive = device::connect({o.connect, o.seed});
     if (!drive)
@@ -155,7 +169,7 @@ int runCapture(const CaptureOptions& o)
         req.settleS = o.settle;
         req.minMeasureS = o.minMeasure;
     } else {
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--test must be step, jog, hold or frf (got '" + o.test + "')"));
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--test must be step, jog, hold, frf or circle (got '" + o.test + "')"));
     }
     if (o.test != "frf" && !o.sweepOut.empty())
         return reportError(cmd, makeError(ErrorCode::BadInput, "--sweep-out is only for --test frf"));
@@ -200,8 +214,8 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
     [](CLI::App& sub) {
         auto o = std::make_shared<CaptureOptions>();
         sub.add_option("--connect", o->connect, "sim:PRESET (vmc, dd-table, two-inertia)")->capture_default_str();
-        sub.add_option("--axis", o->axis, "axis name, e.g. X")->required();
-        sub.add_option("--test", o->test, "step | jog | hold | frf")->capture_default_str();
+        sub.add_option("--axis", o->axis, "axis name, e.g. X (all tests but circle)");
+        sub.add_option("--test", o->test, "step | jog | hold | frf | circle")->capture_default_str();
         sub.add_option("--amplitude", o->amplitude, "step: motor velocity step [rad/s]");
         sub.add_option("--distance", o->distance, "jog: distance [m or rad]");
         sub.add_option("--velocity", o->velocity, "jog: velocity [m/s or rad/s]");
@@ -224,7 +238,18 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         sub.add_option("--set", o->set, "write parameter KEY=VALUE (SI units) before the test; repeatable");
         sub.add_flag("--linear", o->linear, "simulator only, test/diagnostic: friction, inductance drop, quantization, "
                                             "noise and lost motion off");
-        sub.add_option("--out", o->out, "capture CSV to write (frf: FRF CSV)")->required();
+        sub.add_option("--plane", o->circle.plane, "circle: the two axes, first = x role")->capture_default_str();
+        sub.add_option("--radius-mm", o->circle.radiusMm, "circle: radius [mm]")->capture_default_str();
+        sub.add_option("--feed-mm-min", o->circle.feedMmMin, "circle: feed [mm/min]")->capture_default_str();
+        sub.add_option("--direction", o->circle.direction, "circle: ccw | cw")->capture_default_str();
+        sub.add_option("--center-x-mm", o->circle.centerXMm, "circle: centre, first axis [mm]");
+        sub.add_option("--center-y-mm", o->circle.centerYMm, "circle: centre, second axis [mm]");
+        sub.add_option("--squareness-um-per-m", o->circle.squarenessUmPerM, "circle: injected squareness [um/m]");
+        sub.add_option("--scale-x-ppm", o->circle.scaleXPpm, "circle: injected scale error, first axis [ppm]");
+        sub.add_option("--scale-y-ppm", o->circle.scaleYPpm, "circle: injected scale error, second axis [ppm]");
+        sub.add_option("--servo-out-x", o->circle.servoOutX, "circle: servo trace of the first axis (capture CSV)");
+        sub.add_option("--servo-out-y", o->circle.servoOutY, "circle: servo trace of the second axis (capture CSV)");
+        sub.add_option("--out", o->out, "capture CSV to write (frf: FRF CSV, circle: ball-bar CSV)")->required();
         return recordSessions(sub, [o] { return runCapture(*o); });
     }}};
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli circle: a ball-bar circle test on a simulated machine (core/sim/CircleTest.h), written as a
-// ball-bar CSV (docs/ballbar.md "Simulated circle tests"); to be spelled `capture --test circle` once merged.
+// ball-bar CSV (docs/ballbar.md "Simulated circle tests"); also reachable as `capture --test circle`.
 #include "app/cli/CliCommand.h"
+#include "app/cli/CircleCommand.h"
 #include "core/io/BallBarCsv.h"
 #include "core/io/CaptureCsv.h"
 #include "core/model/Parameter.h"
@@ -15,19 +16,7 @@
 namespace axistune::cli {
 namespace {
 
-struct CircleCliOptions {
-    std::string connect = "sim:vmc";
-    std::string plane = "XY";
-    double radiusMm = 50.0;
-    double feedMmMin = 1000.0;
-    std::string direction = "ccw";
-    double centerXMm = 0.0, centerYMm = 0.0;
-    double squarenessUmPerM = 0.0, scaleXPpm = 0.0, scaleYPpm = 0.0;
-    double leadArcDeg = 90.0, startDeg = 45.0;
-    std::vector<std::string> sets;
-    std::uint64_t seed = 1;
-    std::string out, servoOutX, servoOutY;
-};
+
 
 /// "X:lostmotion.mode=2" (or "lostmotion.mode=2" for both plane axes), range-checked against the metadata.
 Status applySet(sim::MachineDefinition& m, const std::string& item, const std::string& plane)
@@ -68,6 +57,8 @@ Status applySet(sim::MachineDefinition& m, const std::string& item, const std::s
     }
     return Status::success();
 }
+
+}  // namespace
 
 int runCircle(const CircleCliOptions& o)
 {
@@ -117,6 +108,8 @@ int runCircle(const CircleCliOptions& o)
               << ", \"dT_x_Nm\": " << res->dTxNm << ", \"dT_y_Nm\": " << res->dTyNm << "}\n";
     return 0;
 }
+
+namespace {
 
 const CliRegistrar kRegistrar{
     {"circle", "Ball-bar circle test on a simulated machine, written as a ball-bar CSV", [](CLI::App& sub) {

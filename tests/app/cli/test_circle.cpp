@@ -273,3 +273,21 @@ TEST(CliCircle, BadOptionsExitTwoWithAClearMessage)
     r = runCli("circle --connect sim:vmc --radius-mm -5 --out " + out);
     EXPECT_NE(r.exitCode, 0);
 }
+
+// The spelling: capture --test circle gives the same ball-bar trace as the circle command.
+TEST(CliCircle, CaptureTestCircleEqualsTheCircleCommand)
+{
+    const auto dir = axistune::testing::makeTempDir("capture-circle");
+    const auto a = (dir / "a.csv").string(), b = (dir / "b.csv").string();
+    const std::string opts = " --connect sim:vmc --radius-mm 40 --feed-mm-min 2000 --direction cw --center-y-mm 20";
+    auto r = axistune::testing::runCli("capture --test circle" + opts + " --out " + a);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = axistune::testing::runCli("circle" + opts + " --out " + b);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(axistune::testing::readFileText(a), axistune::testing::readFileText(b));
+    EXPECT_NE(axistune::testing::readFileText(a).find("# direction=cw"), std::string::npos);
+    r = axistune::testing::runCli("capture --test step --amplitude 1 --out " + (dir / "c.csv").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--axis is required"), std::string::npos) << r.err;
+    std::filesystem::remove_all(dir);
+}
