@@ -59,7 +59,12 @@ TEST(ModbusCapture, ServerKilledMidMultiSweepExitsThreeNamingTheLostConnection)
         execl("/bin/sh", "sh", "-c", ("exec " + cmd).c_str(), static_cast<char*>(nullptr));
         _exit(127);
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    // Kill once the server has logged the start of the test (bounded to 15 s), so a slow start on a
+    // loaded machine cannot turn this into a refused connection.
+    for (int i = 0; i < 150 && srv.log().find("started on axis C") == std::string::npos; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    ASSERT_NE(srv.log().find("started on axis C"), std::string::npos) << srv.log();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
     srv.stop(SIGKILL);
     const auto t0 = std::chrono::steady_clock::now();
     int status = 0;
