@@ -49,8 +49,10 @@ void MainWindow::buildUi()
     m_params = new QTableWidget(split);
     m_params->setColumnCount(5);
     m_params->setHorizontalHeaderLabels({tr("Parameter"), tr("Key"), tr("Value"), tr("Unit"), tr("Limits")});
+    // Values, units and limits take what they need; the parameter name takes the rest.
     m_params->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_params->horizontalHeader()->setStretchLastSection(true);
+    m_params->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_params->setWordWrap(false);
     m_params->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_params->verticalHeader()->hide();
     split->setStretchFactor(1, 1);
