@@ -29,4 +29,7 @@ struct CliRegistrar {
 /// Prints "axistune-cli <command>: <detail>" to stderr and returns the exit code for the error.
 int reportError(const std::string& command, const Error& error);
 
+/// Writes a command's text result to `outPath`, or to stdout when it is empty; returns the exit code.
+int writeResult(const std::string& command, const std::string& text, const std::string& outPath);
+
 }  // namespace axistune::cli

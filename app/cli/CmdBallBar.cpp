@@ -133,15 +133,7 @@ int runBallBar(const BallBarCliOptions& o)
             why += (why.empty() ? "" : "; ") + r;
         return reportError("ballbar", makeError(ErrorCode::BadInput, "no diagnostic could be computed: " + why));
     }
-    const std::string text = reportJson(*rep).dump(2) + "\n";
-    if (o.outPath.empty()) {
-        std::cout << text;
-        return 0;
-    }
-    std::ofstream f(o.outPath);
-    if (!(f << text))
-        return reportError("ballbar", makeError(ErrorCode::Io, o.outPath + ": cannot write"));
-    return 0;
+    return writeResult("ballbar", reportJson(*rep).dump(2) + "\n", o.outPath);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

@@ -101,16 +101,7 @@ int runCurrentLoop(const CurrentLoopOptions& o)
                                   {"discrete_with_delay", step.discrete}};
         j["plots"] = plots;
     }
-    const std::string text = j.dump(2) + "\n";
-    if (!o.outPath.empty()) {
-        std::ofstream f(o.outPath);
-        if (!(f << text)) {
-            return reportError(cmd, makeError(ErrorCode::Io, o.outPath + ": cannot write"));
-        }
-        return 0;
-    }
-    std::cout << text;
-    return 0;
+    return writeResult(cmd, j.dump(2) + "\n", o.outPath);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

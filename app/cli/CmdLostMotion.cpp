@@ -152,15 +152,7 @@ int runLostMotion(const LostMotionCliOptions& o)
         if (auto s = writeCompensated(o.compensatedOut, preds); !s)
             return reportError(cmd, s.error());
     }
-    const std::string text = j.dump(2) + "\n";
-    if (o.outPath.empty()) {
-        std::cout << text;
-        return 0;
-    }
-    std::ofstream f(o.outPath);
-    if (!(f << text))
-        return reportError(cmd, makeError(ErrorCode::Io, o.outPath + ": cannot write"));
-    return 0;
+    return writeResult(cmd, j.dump(2) + "\n", o.outPath);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

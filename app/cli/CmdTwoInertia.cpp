@@ -148,16 +148,7 @@ int runTwoInertia(const TwoInertiaOptions& o)
                                     {"jerk_rad_s3", o.profile.jerk}}},
                        {"without_filter_rad", loadError.maxErrorWithoutFilter},
                        {"with_filter_rad", loadError.maxErrorWithFilter}};
-    const std::string text = j.dump(2) + "\n";
-    if (!o.outPath.empty()) {
-        std::ofstream f(o.outPath);
-        if (!(f << text)) {
-            return reportError(cmd, makeError(ErrorCode::Io, o.outPath + ": cannot write"));
-        }
-        return 0;
-    }
-    std::cout << text;
-    return 0;
+    return writeResult(cmd, j.dump(2) + "\n", o.outPath);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

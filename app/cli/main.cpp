@@ -3,6 +3,7 @@
 // errors on stderr with exit codes 2 (bad input), 3 (device error), 4 (safety stop).
 #include "app/cli/CliCommand.h"
 
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -18,6 +19,18 @@ int reportError(const std::string& command, const Error& error)
 {
     std::cerr << "axistune-cli " << command << ": " << error.detail << '\n';
     return exitCodeFor(error.code);
+}
+
+int writeResult(const std::string& command, const std::string& text, const std::string& outPath)
+{
+    if (outPath.empty()) {
+        std::cout << text;
+        return 0;
+    }
+    std::ofstream f(outPath);
+    if (!(f << text))
+        return reportError(command, makeError(ErrorCode::Io, outPath + ": cannot write"));
+    return 0;
 }
 
 }  // namespace axistune::cli
