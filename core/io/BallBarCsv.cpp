@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Ball-bar CSV reader and writer (format: DESIGN.md "File formats", docs/ballbar.md).
 #include "core/io/BallBarCsv.h"
+#include "core/io/TextFile.h"
 
 #include <algorithm>
 #include <cctype>
@@ -278,16 +279,7 @@ Status writeBallBarCsv(std::ostream& out, const BallBarTrace& t)
 
 Status writeBallBarCsvFile(const std::string& path, const BallBarTrace& trace)
 {
-    std::ofstream f(path);
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": cannot open for writing");
-    auto s = writeBallBarCsv(f, trace);
-    if (!s)
-        return s;
-    f.close();
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": write failed");
-    return Status::success();
+    return writeTextFile(path, [&](std::ostream& out) { return writeBallBarCsv(out, trace); });
 }
 
 } // namespace axistune::io

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Capture CSV reader/writer (DESIGN.md "File formats").
 #include "core/io/CaptureCsv.h"
+#include "core/io/TextFile.h"
 
 #include <charconv>
 #include <cmath>
@@ -154,13 +155,7 @@ Status writeCaptureCsv(std::ostream& out, const model::Capture& capture)
 
 Status writeCaptureCsvFile(const std::string& path, const model::Capture& capture)
 {
-    std::ofstream f(path);
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": cannot open the file for writing");
-    auto st = writeCaptureCsv(f, capture);
-    if (!st)
-        return makeError(st.error().code, path + ": " + st.error().detail);
-    return st;
+    return writeTextFile(path, [&](std::ostream& out) { return writeCaptureCsv(out, capture); });
 }
 
 }  // namespace axistune::io

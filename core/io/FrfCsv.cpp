@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // FRF CSV reader and writer (DESIGN.md "File formats").
 #include "core/io/FrfCsv.h"
+#include "core/io/TextFile.h"
 
 #include <charconv>
 #include <cmath>
@@ -240,16 +241,7 @@ Status writeFrfCsv(std::ostream& out, const dsp::FrequencyResponse& frf)
 
 Status writeFrfCsvFile(const std::string& path, const dsp::FrequencyResponse& frf)
 {
-    std::ofstream f(path);
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": cannot open for writing");
-    auto s = writeFrfCsv(f, frf);
-    if (!s)
-        return makeError(s.error().code, path + ": " + s.error().detail);
-    f.close();
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": write failed");
-    return {};
+    return writeTextFile(path, [&](std::ostream& out) { return writeFrfCsv(out, frf); });
 }
 
 }  // namespace axistune::io

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Sine-stream CSV reader and writer (DESIGN.md "File formats").
 #include "core/io/SweepCsv.h"
+#include "core/io/TextFile.h"
 
 #include "core/io/FrfCsv.h"
 
@@ -145,16 +146,7 @@ Status writeSweepCsv(std::ostream& out, const dsp::SweepRecording& rec)
 
 Status writeSweepCsvFile(const std::string& path, const dsp::SweepRecording& rec)
 {
-    std::ofstream f(path);
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": cannot open for writing");
-    auto s = writeSweepCsv(f, rec);
-    if (!s)
-        return makeError(s.error().code, path + ": " + s.error().detail);
-    f.close();
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": write failed");
-    return {};
+    return writeTextFile(path, [&](std::ostream& out) { return writeSweepCsv(out, rec); });
 }
 
 }  // namespace axistune::io
