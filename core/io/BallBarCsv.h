@@ -13,6 +13,7 @@
 // travel direction comes from `direction`), and may run past 360 or below 0. Deviation is the
 // measured radius minus the nominal radius, in µm (outward positive). Inside core everything is SI.
 
+#include "core/model/BallBarTrace.h"
 #include "core/model/Result.h"
 
 #include <istream>
@@ -24,26 +25,9 @@
 
 namespace axistune::io {
 
-enum class CircleDirection { Ccw, Cw };
-
-struct BallBarTrace {
-    std::string source;     ///< file name used in messages
-    double radiusM = 0.0;   ///< nominal radius
-    double feedMPerS = 0.0; ///< programmed feed
-    CircleDirection direction = CircleDirection::Ccw;
-    std::string plane = "XY"; ///< two axis letters: first = "x" role, second = "y" role
-    double centerXM = 0.0;    ///< circle centre, machine coordinates
-    double centerYM = 0.0;
-    std::optional<double> dTxNm;                 ///< reversal torque change of the first axis (p-p)
-    std::optional<double> dTyNm;                 ///< reversal torque change of the second axis (p-p)
-    std::vector<double> angleRad;                ///< as in the file (unwrapped, monotonic)
-    std::vector<double> deviationM;              ///< measured minus nominal radius
-    std::map<std::string, std::string> metadata; ///< every metadata line, verbatim
-
-    std::size_t size() const { return angleRad.size(); }
-    /// +1 for counter-clockwise travel, -1 for clockwise.
-    double directionSign() const { return direction == CircleDirection::Ccw ? 1.0 : -1.0; }
-};
+// The trace type lives in core/model so the simulator can produce it without depending on io.
+using model::BallBarTrace;
+using model::CircleDirection;
 
 /// Fewest samples a trace may have.
 inline constexpr std::size_t kBallBarMinSamples = 8;

@@ -108,11 +108,11 @@ double reversalTorqueChange(const Samples& d, const CircleTestOptions& o, double
 }
 
 /// Ball-bar reading over the data arc [sFrom, sTo] of travelled arc.
-io::BallBarTrace ballBarFromSamples(const Samples& d, const CircleTestOptions& o, double phi0, double sigma,
+model::BallBarTrace ballBarFromSamples(const Samples& d, const CircleTestOptions& o, double phi0, double sigma,
                                     double sFrom, double sTo)
 {
     const double r = o.radiusM, cx = o.centerXM, cy = o.centerYM;
-    io::BallBarTrace bb;
+    model::BallBarTrace bb;
     bb.radiusM = o.radiusM;
     bb.feedMPerS = o.feedMPerS;
     bb.direction = o.direction;
@@ -160,7 +160,7 @@ Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const C
                                                   " must share the position and current periods");
     const std::int64_t ticksPerSample = std::llround(tp / ax.currentPeriod());
 
-    const double sigma = o.direction == io::CircleDirection::Ccw ? 1.0 : -1.0;
+    const double sigma = o.direction == model::CircleDirection::Ccw ? 1.0 : -1.0;
     const double r = o.radiusM, cx = o.centerXM, cy = o.centerYM;
     ArcPlan plan;
     plan.dwell = o.dwellS;
@@ -208,7 +208,7 @@ Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const C
 
     CircleTestResult res;
     res.ballbar = ballBarFromSamples(d, o, phi0, sigma, sFrom, sTo);
-    io::BallBarTrace& bb = res.ballbar;
+    model::BallBarTrace& bb = res.ballbar;
     bb.source = "sim:" + machine.name;
     res.dTxNm = reversalTorqueChange(d, o, phi0, sigma, 0, sFrom, sTo);
     res.dTyNm = reversalTorqueChange(d, o, phi0, sigma, 1, sFrom, sTo);

@@ -8,7 +8,7 @@
 // full 360° data arc at the programmed feed, and decelerates along a lead-out arc. The data arc starts
 // at `dataStartDeg` (default 45°) so that no reversal lies at its ends.
 
-#include "core/io/BallBarCsv.h"
+#include "core/model/BallBarTrace.h"
 #include "core/model/Capture.h"
 #include "core/model/Result.h"
 #include "core/sim/MachineDefinition.h"
@@ -21,7 +21,7 @@ namespace axistune::sim {
 struct CircleTestOptions {
     double radiusM = 0.05;
     double feedMPerS = 1000.0 / 60000.0; ///< 1000 mm/min
-    io::CircleDirection direction = io::CircleDirection::Ccw;
+    model::CircleDirection direction = model::CircleDirection::Ccw;
     double centerXM = 0.0; ///< circle centre in machine coordinates
     double centerYM = 0.0;
     std::string axisX = "X"; ///< axes of the plane (first = "x" role)
@@ -38,7 +38,7 @@ struct CircleTestOptions {
 };
 
 struct CircleTestResult {
-    io::BallBarTrace ballbar; ///< angle and radial deviation over the data arc, metadata filled in
+    model::BallBarTrace ballbar; ///< angle and radial deviation over the data arc, metadata filled in
     model::Capture traceX;    ///< servo trace of the first axis over the whole run
     model::Capture traceY;
     double dTxNm = 0.0; ///< reversal torque change (peak-to-peak, mean over both reversals)

@@ -103,7 +103,7 @@ TEST(CircleTest, ReversalTorqueChangeIsTwiceCoulombFriction)
 TEST(CircleTest, ClockwiseRunsTheOtherWay)
 {
     CircleTestOptions o;
-    o.direction = io::CircleDirection::Cw;
+    o.direction = model::CircleDirection::Cw;
     auto r = runCircleTest(vmc(), o);
     ASSERT_TRUE(r.ok());
     const auto& t = r->ballbar.angleRad;
