@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/AppContext.h"
+
+#include <QDateTime>
+
+namespace axistune {
+namespace gui {
+
+AppContext::AppContext(QObject* parent) : QObject(parent), m_drive(new DriveController(this)) {}
+
+AppContext::~AppContext() = default;
+
+bool AppContext::openDatabase(const QString& path)
+{
+    auto db = store::Database::open(path.toStdString());
+    if (!db) {
+        m_db.reset();
+        log(tr("Could not open the store %1: %2").arg(path, QString::fromStdString(db.error().detail)));
+        return false;
+    }
+    m_db = std::make_unique<store::Database>(std::move(db).value());
+    m_dbPath = path;
+    log(tr("Store: %1").arg(path));
+    return true;
+}
+
+QString AppContext::machine() const
+{
+    const auto& id = m_drive->identity();
+    return id && m_drive->isConnected() ? QString::fromStdString(id->machine) : QString();
+}
+
+QStringList AppContext::axes() const
+{
+    QStringList out;
+    const auto& id = m_drive->identity();
+    if (id && m_drive->isConnected())
+        for (const auto& a : id->axes)
+            out << QString::fromStdString(a);
+    return out;
+}
+
+void AppContext::setProposed(const QString& axis, const model::ParameterValues& values)
+{
+    m_proposed[axis] = values;
+    emit proposedChanged(axis);
+}
+
+model::ParameterValues AppContext::proposed(const QString& axis) const
+{
+    const auto it = m_proposed.find(axis);
+    return it == m_proposed.end() ? model::ParameterValues{} : it->second;
+}
+
+Result<std::int64_t> AppContext::saveSession(store::SessionRecord record)
+{
+    if (!m_db) {
+        log(tr("The session was not saved: no store is open"));
+        return makeError(ErrorCode::Io, "no store is open");
+    }
+    if (record.info.machine.empty())
+        record.info.machine = machine().toStdString();
+    if (record.info.operatorName.empty())
+        record.info.operatorName = m_operator.toStdString();
+    if (record.machineAxes.empty() && m_drive->identity())
+        record.machineAxes = m_drive->identity()->axes;
+    auto id = m_db->recordSession(record);
+    if (!id) {
+        log(tr("Saving the session failed: %1").arg(QString::fromStdString(id.error().detail)));
+        return id;
+    }
+    log(tr("Session %1 saved (%2, %3)")
+            .arg(*id)
+            .arg(QString::fromStdString(record.info.kind), QString::fromStdString(store::toString(record.info.status))));
+    emit sessionSaved(*id);
+    return id;
+}
+
+void AppContext::log(const QString& message)
+{
+    emit logged(QDateTime::currentDateTime().toString("HH:mm:ss  ") + message);
+}
+
+}  // namespace gui
+}  // namespace axistune

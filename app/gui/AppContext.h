@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// What every window and wizard of the app shares: the drive link, the store, the connected machine,
+// the operator, the proposed parameter values per axis (shown by the parameter inspector), and the
+// log. Owned by the main window; wizards get a reference.
+
+#include "app/gui/DriveController.h"
+
+#include "core/model/Parameter.h"
+#include "core/model/Result.h"
+#include "core/store/Database.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+#include <map>
+#include <memory>
+
+namespace axistune {
+namespace gui {
+
+class AppContext : public QObject {
+    Q_OBJECT
+public:
+    explicit AppContext(QObject* parent = nullptr);
+    ~AppContext() override;
+
+    DriveController& drive() { return *m_drive; }
+
+    /// Opens (or creates) the store; on failure database() is null and the error is logged.
+    bool openDatabase(const QString& path);
+    store::Database* database() { return m_db.get(); }
+    QString databasePath() const { return m_dbPath; }
+
+    /// The connected machine's name (the preset or the drive's machine string) and axes; empty when
+    /// not connected.
+    QString machine() const;
+    QStringList axes() const;
+
+    QString operatorName() const { return m_operator; }
+    void setOperatorName(const QString& name) { m_operator = name; }
+
+    /// Proposed values of an axis (from a wizard), shown beside the device and profile values.
+    void setProposed(const QString& axis, const model::ParameterValues& values);
+    model::ParameterValues proposed(const QString& axis) const;
+
+    /// Saves a session (fills machine, operator and axes of the machine when empty), logs the result
+    /// and emits sessionSaved. Errors are logged and returned.
+    Result<std::int64_t> saveSession(store::SessionRecord record);
+
+public slots:
+    void log(const QString& message);
+
+signals:
+    void logged(const QString& timeStampedMessage);
+    void proposedChanged(const QString& axis);
+    void sessionSaved(qint64 id);
+    /// Applied parameters (journal written) for an axis.
+    void parametersApplied(const QString& axis);
+
+private:
+    DriveController* m_drive = nullptr;
+    std::unique_ptr<store::Database> m_db;
+    QString m_dbPath;
+    QString m_operator;
+    std::map<QString, model::ParameterValues> m_proposed;
+};
+
+}  // namespace gui
+}  // namespace axistune
