@@ -4,6 +4,7 @@
 // Implementations: the embedded simulated drive (SimulatedDrive) and, later, the Modbus TCP client.
 
 #include "core/dsp/FrequencyResponse.h"
+#include "core/dsp/Multisine.h"
 #include "core/dsp/SineDemodulation.h"
 #include "core/model/Capture.h"
 #include "core/model/Parameter.h"
@@ -36,6 +37,7 @@ enum class FrfMethod {
     MultiSweep,    ///< sine stream at phase offsets 0, +120°, −120°: valid below the trace rate fs
     Conventional,  ///< sine stream at one phase offset: valid below fs/2
     Prbs,          ///< PRBS with Welch H1 and coherence: valid below fs/2
+    Multisine,     ///< three-phase multisine, all lines at once: valid below fs (docs/multisine.md)
 };
 
 const char* frfMethodName(FrfMethod m);
@@ -58,6 +60,13 @@ struct TestRequest {
     double amplitudePct = 5.0;   ///< % of rated torque; refused above kMaxFrfAmplitudePct
     double settleS = 0.0;        ///< settle per frequency; 0: from the loop's dynamics
     double minMeasureS = 0.0;    ///< measured time per frequency at least; 0: from the loop's dynamics
+    // Frf with FrfMethod::Multisine (docs/multisine.md): amplitudePct is the PEAK of the multisine,
+    // settleS the settle time before the record (0: from the loop's dynamics); points is not used.
+    double multisineSpacingHz = 0.0;                ///< line spacing of the band fminHz..fmaxHz; 0: fminHz/2
+    std::vector<dsp::MultisineBand> multisineBands; ///< bands with their own spacing; empty: the one band above
+    int multisinePeriods = 0;                       ///< averaged periods (three phases each); 0: from the loop's dynamics
+    dsp::MultisinePhases multisinePhases = dsp::MultisinePhases::Clipping;
+    std::vector<std::pair<double, double>> multisineShape;  ///< (f [Hz], relative amplitude); empty: flat
 };
 
 /// The result of an FRF test: the closed velocity loop T = −T_c/d (spec §3.2 eq. 3.1) with validity.
@@ -65,6 +74,7 @@ struct FrfMeasurement {
     dsp::FrequencyResponse frf;
     dsp::SweepRecording sweep;  ///< sine streams: excitation d and response −T_c per window (empty for PRBS)
     double motionTimeS = 0.0;   ///< machine time of the excitation (settling included)
+    std::vector<double> relativeNoise;  ///< multisine: σ_H/|H| per point from the scatter over the periods (else empty)
 };
 
 enum class TestState { Idle, Running, Completed, Aborted, Faulted };
