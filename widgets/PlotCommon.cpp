@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/PlotCommon.h"
+
+#include <QLocale>
+#include <QVector>
+
+#include <qcustomplot.h>
+
+#include <cmath>
+
+namespace axistune {
+namespace widgets {
+namespace detail {
+
+namespace {
+
+// Decade ticks labelled 1, 10, 100, 1k, 10k (no "1·10³" in a frequency axis); when less than about
+// two decades are visible, 1-2-5 ticks so that a zoomed-in axis still has labels.
+class FriendlyLogTicker : public QCPAxisTickerLog {
+protected:
+    QString getTickLabel(double tick, const QLocale& locale, QChar, int) override
+    {
+        const double a = std::abs(tick);
+        if (a >= 1e6)
+            return locale.toString(tick / 1e6, 'g', 4) + QStringLiteral("M");
+        if (a >= 1e3)
+            return locale.toString(tick / 1e3, 'g', 4) + QStringLiteral("k");
+        return locale.toString(tick, 'g', 4);
+    }
+    int getSubTickCount(double tickStep) override
+    {
+        return m_fine ? 0 : QCPAxisTickerLog::getSubTickCount(tickStep);
+    }
+    QVector<double> createTickVector(double tickStep, const QCPRange& range) override
+    {
+        m_fine = range.lower > 0 && range.upper / range.lower < 100.0;
+        if (!m_fine)
+            return QCPAxisTickerLog::createTickVector(tickStep, range);
+        QVector<double> ticks;
+        const int k0 = static_cast<int>(std::floor(std::log10(range.lower))) - 1;
+        const int k1 = static_cast<int>(std::ceil(std::log10(range.upper))) + 1;
+        for (int k = k0; k <= k1; ++k) {
+            for (double m : {1.0, 2.0, 5.0})
+                ticks.push_back(m * std::pow(10.0, k));
+        }
+        return ticks;
+    }
+
+private:
+    bool m_fine = false;
+};
+
+}  // namespace
+
+QColor paletteColor(int n)
+{
+    // Tableau 10: distinguishable for most colour vision and in print.
+    static const QColor kColors[] = {QColor(31, 119, 180),  QColor(214, 39, 40),  QColor(44, 160, 44),
+                                     QColor(255, 127, 14),  QColor(148, 103, 189), QColor(140, 86, 75),
+                                     QColor(227, 119, 194), QColor(127, 127, 127), QColor(188, 189, 34),
+                                     QColor(23, 190, 207)};
+    const int count = static_cast<int>(sizeof(kColors) / sizeof(kColors[0]));
+    return kColors[((n % count) + count) % count];
+}
+
+QString axisTitle(const QString& label, const QString& unit)
+{
+    if (unit.isEmpty())
+        return label;
+    return QStringLiteral("%1 [%2]").arg(label, unit);
+}
+
+void applyBaseStyle(QCustomPlot& plot)
+{
+    plot.setNoAntialiasingOnDrag(true);
+    plot.setAntialiasedElements(QCP::aeNone);
+    plot.setNotAntialiasedElements(QCP::aeAll);
+    plot.setAntialiasedElement(QCP::aePlottables, true);
+    plot.setAntialiasedElement(QCP::aeItems, true);
+    plot.setMinimumSize(240, 180);
+}
+
+QCPLegend* placeLegendBelow(QCustomPlot& plot, int columns)
+{
+    QCPLegend* legend = plot.legend;
+    legend->setVisible(true);
+    if (QCPLayoutInset* inset = plot.axisRect()->insetLayout()) {
+        for (int i = 0; i < inset->elementCount(); ++i) {
+            if (inset->elementAt(i) == legend) {
+                inset->take(legend);
+                break;
+            }
+        }
+    }
+    auto* row = new QCPLayoutGrid;
+    plot.plotLayout()->addElement(plot.plotLayout()->rowCount(), 0, row);
+    row->setMargins(QMargins(6, 0, 6, 4));
+    row->addElement(0, 0, legend);
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    legend->setWrap(columns);
+    legend->setBorderPen(Qt::NoPen);
+    legend->setBrush(Qt::NoBrush);
+    legend->setIconSize(24, 10);
+    legend->setRowSpacing(0);
+    legend->setColumnSpacing(12);
+    plot.plotLayout()->setRowStretchFactor(plot.plotLayout()->rowCount() - 1, 0.001);
+    plot.plotLayout()->simplify();
+    return legend;
+}
+
+void makeLogAxis(QCPAxis& axis)
+{
+    axis.setScaleType(QCPAxis::stLogarithmic);
+    QSharedPointer<QCPAxisTicker> ticker(new FriendlyLogTicker);
+    axis.setTicker(ticker);
+}
+
+}  // namespace detail
+}  // namespace widgets
+}  // namespace axistune

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "widgets/PlotExport.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QStringList>
+#include <QSvgGenerator>
+
+#include <qcustomplot.h>
+
+namespace axistune {
+namespace widgets {
+
+namespace {
+
+// Translation context for the messages of this file (lupdate reads Q_DECLARE_TR_FUNCTIONS).
+class PlotExport {
+    Q_DECLARE_TR_FUNCTIONS(PlotExport)
+};
+
+bool writeSvg(QCustomPlot& plot, const QString& path, int width, int height)
+{
+    QSvgGenerator generator;
+    generator.setFileName(path);
+    generator.setSize(QSize(width, height));
+    generator.setViewBox(QRect(0, 0, width, height));
+    generator.setTitle(plot.windowTitle());
+    QCPPainter painter;
+    if (!painter.begin(&generator))
+        return false;
+    plot.toPainter(&painter, width, height);
+    return painter.end();
+}
+
+}  // namespace
+
+QStringList plotImageSuffixes()
+{
+    return {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("pdf")};
+}
+
+bool exportPlotImage(QCustomPlot& plot, const QString& path, int width, int height, QString* error)
+{
+    auto fail = [&](const QString& message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    const QFileInfo info(path);
+    const QString suffix = info.suffix().toLower();
+    if (!plotImageSuffixes().contains(suffix))
+        return fail(PlotExport::tr("%1: unknown image type '%2' (use .png, .svg or .pdf)").arg(path, info.suffix()));
+    if (!info.absoluteDir().exists())
+        return fail(PlotExport::tr("%1: the folder %2 does not exist").arg(path, info.absolutePath()));
+    if (width < 0 || height < 0)
+        return fail(PlotExport::tr("%1: negative image size %2×%3").arg(path).arg(width).arg(height));
+    // A plot that was never shown has no useful size of its own.
+    if (width == 0)
+        width = plot.width() >= 100 ? plot.width() : 1000;
+    if (height == 0)
+        height = plot.height() >= 100 ? plot.height() : 700;
+
+    // Never report an older file of the same name as the written one.
+    if (QFileInfo::exists(path) && !QFile::remove(path))
+        return fail(PlotExport::tr("%1: the existing file cannot be replaced").arg(path));
+    bool ok = false;
+    if (suffix == QLatin1String("png"))
+        ok = plot.savePng(path, width, height);
+    else if (suffix == QLatin1String("pdf"))
+        ok = plot.savePdf(path, width, height, QCP::epNoCosmetic);
+    else
+        ok = writeSvg(plot, path, width, height);
+    // QSvgGenerator and QPdfWriter do not report write errors: check the file.
+    const QFileInfo written(path);
+    if (!ok || !written.exists() || written.size() == 0)
+        return fail(PlotExport::tr("%1: could not write the image (is the folder writable and the disk not full?)").arg(path));
+    return true;
+}
+
+}  // namespace widgets
+}  // namespace axistune
