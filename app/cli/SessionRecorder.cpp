@@ -3,6 +3,8 @@
 // (issue 5 item 3; docs/storage.md "Sessions from the CLI"). Digests: SHA-256, FIPS 180-4.
 #include "app/cli/SessionRecorder.h"
 
+#include "core/store/FrfCapture.h"
+
 #include "app/cli/CliCommand.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
@@ -220,25 +222,6 @@ std::vector<OutputFile> outputFiles(const CLI::App& sub)
     return out;
 }
 
-model::Capture frfAsCapture(const dsp::FrequencyResponse& frf)
-{
-    model::Capture c;
-    c.metadata = frf.metadata;
-    c.metadata["content"] = "frf";
-    std::vector<model::Channel> ch = {{"f_Hz", frf.freqHz}, {"re", {}}, {"im", {}}, {"mag_dB", {}},
-                                      {"phase_deg", {}}, {"coherence", frf.coherence}, {"valid", {}}};
-    for (std::size_t i = 0; i < frf.size(); ++i) {
-        ch[1].data.push_back(frf.h[i].real());
-        ch[2].data.push_back(frf.h[i].imag());
-        ch[3].data.push_back(dsp::magnitudeDb(frf.h[i]));
-        ch[4].data.push_back(dsp::phaseDeg(frf.h[i]));
-        ch[6].data.push_back(frf.valid[i] ? 1.0 : 0.0);
-    }
-    ch[5].data.resize(frf.size(), std::nan(""));
-    c.channels = std::move(ch);
-    return c;
-}
-
 /// Adds a file the command wrote: a capture (capture or FRF CSV), a result (JSON) or its digest.
 void addOutput(store::SessionRecord& rec, const OutputFile& f)
 {
@@ -255,7 +238,7 @@ void addOutput(store::SessionRecord& rec, const OutputFile& f)
         return;
     }
     if (auto frf = io::readFrfCsvFile(f.path)) {
-        rec.captures.push_back({f.option, frfAsCapture(*frf)});
+        rec.captures.push_back({f.option, store::frfAsCapture(*frf)});
     } else if (auto cap = io::readCaptureCsvFile(f.path)) {
         rec.captures.push_back({f.option, std::move(cap).value()});
     } else {
