@@ -151,6 +151,7 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     const double start = sim.positionCommand();
     double length = request.durationS;
     m_frfPlan.reset();
+    m_multisinePlan.reset();
     m_frf.reset();
     switch (request.type) {
     case TestType::Step: {
@@ -219,8 +220,8 @@ Result<TestStatus> SimulatedDrive::pollTest()
         (void)m_active->setParameters(m_backup);
         m_status = {TestState::Completed, 1.0, {}};
         m_active = nullptr;
-        if (m_frfPlan) {
-            auto frf = evaluateFrfTrace(*m_frfPlan, *m_trace);
+        if (m_frfPlan || m_multisinePlan) {
+            auto frf = m_frfPlan ? evaluateFrfTrace(*m_frfPlan, *m_trace) : evaluateMultisineTrace(*m_multisinePlan, *m_trace);
             if (!frf) {
                 m_status = {TestState::Faulted, 1.0, "FRF evaluation: " + frf.error().detail};
                 return m_status;
@@ -271,6 +272,8 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     }
     if (r.minMeasureS > 0.0)
         timing.minMeasureS = r.minMeasureS;
+    if (r.frfMethod == FrfMethod::Multisine)
+        return startMultisine(sim, r, r.amplitudePct / 100.0 * rated, timing);
     FrfPlanOptions po;
     po.method = r.frfMethod;
     po.fsHz = 1.0 / sim.tracePeriod();
@@ -304,6 +307,40 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     return shared->durationS();
 }
 
+Result<double> SimulatedDrive::startMultisine(sim::AxisSimulator& sim, const TestRequest& r, double peakNm,
+                                              const LoopTiming& timing)
+{
+    const auto& v = sim.parameters();
+    const double h = sim.currentPeriod();
+    MultisinePlanOptions po;
+    po.fsHz = 1.0 / sim.tracePeriod();
+    po.ticksPerSample = static_cast<int>(std::llround(sim.tracePeriod() / h));
+    po.currentPeriodS = h;
+    po.ticksPerVelocity = static_cast<int>(std::llround(v.at("velocity.period") / h));
+    po.bands = multisineBandsOf(r);
+    po.shape = r.multisineShape;
+    po.phases = r.multisinePhases;
+    po.peakNm = peakNm;  // the limit in % of rated torque holds at the multisine's peak
+    po.timing = timing;
+    po.periods = r.multisinePeriods;
+    po.voltageLimitV = v.at("drive.max_voltage");
+    auto plan = planMultisineTest(po);
+    if (!plan)
+        return plan.error();
+    sim.setControlMode(sim::ControlMode::Velocity);
+    sim.setVelocityCommand({});
+    // Trace sample 0 on a current tick that is a traced velocity tick (as startFrf).
+    const auto ticksPerSample = std::llround(sim.tracePeriod() / h);
+    const auto now = std::llround(sim.time() / h);
+    const auto first = (now + ticksPerSample - 1) / ticksPerSample * ticksPerSample;
+    sim.runTicks(first - now);
+    auto shared = std::make_shared<const MultisinePlan>(std::move(plan).value());
+    const double t0 = static_cast<double>(first) * h;
+    sim.setTorqueInjection([shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
+    m_multisinePlan = shared;
+    return shared->durationS();
+}
+
 Status SimulatedDrive::abortTest()
 {
     if (m_status.state != TestState::Running || !m_active)
@@ -315,6 +352,7 @@ Status SimulatedDrive::abortTest()
     m_active->setControlMode(sim::ControlMode::Velocity);
     (void)m_active->setParameters(m_backup);
     m_frfPlan.reset();
+    m_multisinePlan.reset();
     m_status = {TestState::Aborted, m_status.progress, "aborted by the user"};
     m_active = nullptr;
     return Status::success();

@@ -6,6 +6,7 @@
 
 #include "core/device/Drive.h"
 #include "core/device/FrfTest.h"
+#include "core/device/MultisineTest.h"
 #include "core/sim/AxisSimulator.h"
 
 #include <map>
@@ -37,6 +38,8 @@ private:
     Result<sim::AxisSimulator*> axisSim(const std::string& axis);
     /// Plans the FRF test, aligns to the trace grid and installs the injection; returns its length [s].
     Result<double> startFrf(sim::AxisSimulator& sim, const TestRequest& request);
+    /// The multisine variant of startFrf (MultisineTest.h), after the amplitude and timing checks.
+    Result<double> startMultisine(sim::AxisSimulator& sim, const TestRequest& request, double peakNm, const LoopTiming& timing);
 
     sim::MachineDefinition m_machine;
     std::map<std::string, std::unique_ptr<sim::AxisSimulator>> m_axes;
@@ -50,6 +53,7 @@ private:
     TestStatus m_status;
     std::optional<model::Capture> m_trace;
     std::shared_ptr<const FrfPlan> m_frfPlan;
+    std::shared_ptr<const MultisinePlan> m_multisinePlan;
     std::optional<FrfMeasurement> m_frf;
 };
 
