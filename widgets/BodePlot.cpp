@@ -179,6 +179,7 @@ void BodePlot::setupAxes()
     m_plot->plotLayout()->setRowStretchFactor(1, 2.0);
     m_plot->plotLayout()->setRowStretchFactor(2, 0.9);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    connect(m_plot, &QCustomPlot::afterLayout, this, &BodePlot::alignMarkerLabels);
     detail::placeLegendBelow(*m_plot, 4);
     updateCoherenceStrip();
 }
@@ -209,7 +210,9 @@ int BodePlot::addResponse(const dsp::FrequencyResponse& frf, const QString& name
         if (faint)
             c.setAlpha(70);
         g->setPen(QPen(c, faint ? 1.0 : 1.6, faint ? Qt::SolidLine : r.style));
-        g->setAdaptiveSampling(true);
+        // Adaptive sampling would merge the NaN gaps (invalid points, phase wraps) into neighbouring
+        // pixel columns; a few thousand points per response draw fast enough without it.
+        g->setAdaptiveSampling(false);
         g->removeFromLegend();
         return g;
     };
@@ -399,6 +402,21 @@ void BodePlot::rebuildMarkers()
             m.items.push_back(text);
         }
         ++index;
+    }
+}
+
+void BodePlot::alignMarkerLabels()
+{
+    // A label in the right quarter of the axis grows to the left of its line so it is never cut.
+    const QCPRange range = m_magRect->axis(QCPAxis::atBottom)->range();
+    if (!(range.lower > 0) || !(range.upper > range.lower))
+        return;
+    const double split = range.lower * std::pow(range.upper / range.lower, 0.72);
+    for (auto& m : m_markers) {
+        for (auto* item : m.items) {
+            if (auto* text = qobject_cast<QCPItemText*>(item))
+                text->setPositionAlignment((m.fHz > split ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
+        }
     }
 }
 

@@ -85,6 +85,7 @@ private:
     void rebuildResponse(Response& r);
     void rebuildBands();
     void rebuildMarkers();
+    void alignMarkerLabels();
     void updateCoherenceStrip();
     void updateBandLegend();
     const Response* findResponse(int id) const;

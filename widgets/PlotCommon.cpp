@@ -100,8 +100,8 @@ QCPLegend* placeLegendBelow(QCustomPlot& plot, int columns)
     legend->setWrap(columns);
     legend->setBorderPen(Qt::NoPen);
     legend->setBrush(Qt::NoBrush);
-    legend->setIconSize(24, 10);
-    legend->setRowSpacing(0);
+    legend->setIconSize(24, 15);  // tall enough that underscores in names are not clipped
+    legend->setRowSpacing(2);
     legend->setColumnSpacing(12);
     plot.plotLayout()->setRowStretchFactor(plot.plotLayout()->rowCount() - 1, 0.001);
     plot.plotLayout()->simplify();

@@ -56,11 +56,17 @@ bool exportPlotImage(QCustomPlot& plot, const QString& path, int width, int heig
         return fail(PlotExport::tr("%1: the folder %2 does not exist").arg(path, info.absolutePath()));
     if (width < 0 || height < 0)
         return fail(PlotExport::tr("%1: negative image size %2×%3").arg(path).arg(width).arg(height));
-    // A plot that was never shown has no useful size of its own.
+    // A plot that was never shown has no useful size of its own: take that of the widget holding it
+    // (sized by resize() before export), else 1000×700.
+    QSize size = plot.size();
+    if (!plot.isVisible() && plot.parentWidget())
+        size = plot.parentWidget()->size();
+    if (size.width() < 100 || size.height() < 100)
+        size = QSize(1000, 700);
     if (width == 0)
-        width = plot.width() >= 100 ? plot.width() : 1000;
+        width = size.width();
     if (height == 0)
-        height = plot.height() >= 100 ? plot.height() : 700;
+        height = size.height();
 
     // Never report an older file of the same name as the written one.
     if (QFileInfo::exists(path) && !QFile::remove(path))

@@ -82,7 +82,11 @@ QString formatValue(double v)
 
 }  // namespace
 
-QString channelUnitLabel(const QString& channelName)
+namespace {
+
+// Number of trailing '_'-separated parts of a channel name that form its unit token (0: none), and
+// the unit label.
+std::pair<int, QString> unitSuffix(const QString& channelName)
 {
     const QStringList parts = channelName.split(QLatin1Char('_'));
     for (int k = std::min<int>(3, static_cast<int>(parts.size()) - 1); k >= 1; --k) {
@@ -90,11 +94,49 @@ QString channelUnitLabel(const QString& channelName)
         if (token == QLatin1String("1"))
             continue;
         if (model::findUnit(token.toStdString()).ok())
-            return QString::fromStdString(model::unitLabel(token.toStdString()));
+            return {k, QString::fromStdString(model::unitLabel(token.toStdString()))};
         if (token.endsWith(QLatin1String("/s2")) && model::findUnit(token.chopped(1).toStdString()).ok())
-            return QString::fromStdString(model::unitLabel(token.chopped(1).toStdString())) + QStringLiteral("²");
+            return {k, QString::fromStdString(model::unitLabel(token.chopped(1).toStdString())) + QStringLiteral("²")};
     }
-    return {};
+    return {0, QString()};
+}
+
+// "motor_vel_rad_s" -> "motor_vel".
+QString channelBaseName(const QString& channelName)
+{
+    const int k = unitSuffix(channelName).first;
+    if (k == 0)
+        return channelName;
+    const QStringList parts = channelName.split(QLatin1Char('_'));
+    return parts.mid(0, parts.size() - k).join(QLatin1Char('_'));
+}
+
+}  // namespace
+
+QString channelUnitLabel(const QString& channelName)
+{
+    return unitSuffix(channelName).second;
+}
+
+QString TimeTracePlot::quantityOf(const QString& unit)
+{
+    if (unit == QLatin1String("rad/s") || unit == QLatin1String("m/s") || unit == QStringLiteral("min⁻¹"))
+        return tr("Velocity");
+    if (unit.endsWith(QStringLiteral("²")))
+        return tr("Acceleration");
+    if (unit == QStringLiteral("N·m"))
+        return tr("Torque");
+    if (unit == QLatin1String("N"))
+        return tr("Force");
+    if (unit == QLatin1String("A"))
+        return tr("Current");
+    if (unit == QLatin1String("V"))
+        return tr("Voltage");
+    if (unit == QLatin1String("m") || unit == QLatin1String("mm") || unit == QStringLiteral("µm"))
+        return tr("Position");
+    if (unit == QLatin1String("rad") || unit == QLatin1String("deg"))
+        return tr("Angle");
+    return tr("Value");
 }
 
 struct TimeTracePlot::Trace {
@@ -131,6 +173,10 @@ TimeTracePlot::TimeTracePlot(QWidget* parent)
     m_plot->plotLayout()->simplify();
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     connect(m_plot, &QCustomPlot::mousePress, this, &TimeTracePlot::onPlotMousePress);
+    connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent* event) {
+        if (event->button() == Qt::LeftButton)
+            rescale();
+    });
     rebuild();
 }
 
@@ -198,12 +244,9 @@ void TimeTracePlot::addSeries(const QString& name, const std::vector<double>& t,
         std::stable_sort(tr.data.begin(), tr.data.end(), qcpLessThanSortKey<QCPGraphData>);
     const bool first = m_traces.empty();
     m_traces.push_back(std::move(tr));
-    const auto range = visibleRange();
     rebuild();
     if (first)
         rescale();
-    else
-        setVisibleRange(range.first, range.second);
 }
 
 void TimeTracePlot::clear()
@@ -234,6 +277,12 @@ TimeTracePlot::Strip& TimeTracePlot::stripFor(const QString& unit)
 
 void TimeTracePlot::rebuild()
 {
+    // The strips are made anew; the value ranges the user has stay for the units that remain.
+    std::vector<std::pair<QString, QCPRange>> oldRanges;
+    for (auto& s : m_strips)
+        oldRanges.emplace_back(s.unit, s.rect->axis(QCPAxis::atLeft)->range());
+    const bool hadTraces = m_plot->graphCount() > 0;
+    const auto [t0, t1] = visibleRange();
     m_plot->clearGraphs();
     m_plot->clearItems();
     for (auto& s : m_strips)
@@ -255,10 +304,11 @@ void TimeTracePlot::rebuild()
         QCPAxis* x = s.rect->axis(QCPAxis::atBottom);
         x->setTickLabels(bottom);
         x->setLabel(bottom ? detail::axisTitle(tr("Time"), tr("s")) : QString());
-        QString names = s.names.join(QStringLiteral(", "));
-        if (names.size() > 40)
-            names = names.left(38) + QStringLiteral("…");
-        s.rect->axis(QCPAxis::atLeft)->setLabel(detail::axisTitle(names.isEmpty() ? tr("Value") : names, s.unit));
+        // One channel: its name; several: the quantity of their unit (the legend names them).
+        QString title = s.names.size() == 1 ? channelBaseName(s.names.front()) : quantityOf(s.unit);
+        if (title.size() > 28)
+            title = title.left(27) + QStringLiteral("…");
+        s.rect->axis(QCPAxis::atLeft)->setLabel(detail::axisTitle(title, s.unit));
         s.rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_margins);
         s.rect->setRangeDrag(m_zoomY ? Qt::Horizontal | Qt::Vertical : Qt::Horizontal);
         s.rect->setRangeZoom(m_zoomY ? Qt::Horizontal | Qt::Vertical : Qt::Horizontal);
@@ -276,6 +326,16 @@ void TimeTracePlot::rebuild()
             line->setPen(QPen(QColor(40, 40, 40), 1.0, c == 0 ? Qt::SolidLine : Qt::DashLine));
             line->setSelectable(false);
             s.cursor[c] = line;
+        }
+    }
+    if (hadTraces) {
+        syncTimeAxes(t0, t1);
+        for (auto& s : m_strips) {
+            auto old = std::find_if(oldRanges.begin(), oldRanges.end(), [&](const auto& o) { return o.first == s.unit; });
+            if (old != oldRanges.end())
+                s.rect->axis(QCPAxis::atLeft)->setRange(old->second);
+            else
+                rescaleValues(s);
         }
     }
     updateCursorItems();
@@ -346,20 +406,26 @@ void TimeTracePlot::rescale()
         hi = 1.0;
     }
     syncTimeAxes(lo, hi);
-    for (auto& s : m_strips) {
-        bool first = true;
-        for (const auto& t : m_traces) {
-            if (t.graph && t.graph->valueAxis() == s.rect->axis(QCPAxis::atLeft)) {
-                t.graph->rescaleValueAxis(!first, false);
-                first = false;
-            }
-        }
-        QCPAxis* y = s.rect->axis(QCPAxis::atLeft);
-        const double span = y->range().size();
-        const double pad = span > 0 ? 0.05 * span : std::max(1e-12, 0.05 * std::abs(y->range().center()) + 1e-9);
-        y->setRange(y->range().lower - pad, y->range().upper + pad);
-    }
+    for (auto& s : m_strips)
+        rescaleValues(s);
     m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void TimeTracePlot::rescaleValues(Strip& s)
+{
+    bool first = true;
+    for (const auto& t : m_traces) {
+        if (t.graph && t.graph->valueAxis() == s.rect->axis(QCPAxis::atLeft)) {
+            t.graph->rescaleValueAxis(!first, false);
+            first = false;
+        }
+    }
+    if (first)
+        return;
+    QCPAxis* y = s.rect->axis(QCPAxis::atLeft);
+    const double span = y->range().size();
+    const double pad = span > 0 ? 0.05 * span : 0.05 * std::abs(y->range().center()) + 1e-9;
+    y->setRange(y->range().lower - pad, y->range().upper + pad);
 }
 
 void TimeTracePlot::setZoomY(bool enabled)

@@ -4,8 +4,8 @@
 // channel: QCustomPlot's adaptive sampling over data copied once. Channels are grouped by unit, one
 // strip per unit (y label with the unit taken from the channel name suffix: _rad_s -> rad/s,
 // _Nm -> N·m, ...); all strips share the time axis [s]. Wheel zooms and drag pans in time only
-// (setZoomY(true) also in y). Two vertical cursors (right click moves the nearest one) with a
-// readout of Δt and the channel values at the cursors below the plot.
+// (setZoomY(true) also in y); a double click fits all. Two vertical cursors (a right click moves the
+// nearer one) with a readout of Δt and the channel values at the cursors below the plot.
 
 #include "core/model/Capture.h"
 
@@ -83,6 +83,8 @@ private:
     struct Strip;
 
     void rebuild();
+    void rescaleValues(Strip& s);
+    static QString quantityOf(const QString& unitLabel);
     Strip& stripFor(const QString& unitLabel);
     void addTraceGraph(Trace& t, Strip& s);
     void updateCursorItems();
