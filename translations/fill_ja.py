@@ -2,6 +2,11 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Fills translations/axistune_ja.ts from the table below (terms from shared/GLOSSARY-ja.md).
 # Run after lupdate; it fails when a source text has no Japanese here, so nothing stays unfinished.
+# More tables: translations/ja/*.json ({"source": "Japanese", ...}, one file per part of the app).
+# `fill_ja.py --missing [FILE]` lists the source texts without Japanese as a JSON object to fill.
+import glob
+import json
+import os
 import sys
 import xml.etree.ElementTree as ET
 
@@ -71,8 +76,22 @@ JA = {
     'Notch 4 depth': 'ノッチフィルタ 4 深さ',
 }
 
-path = sys.argv[1] if len(sys.argv) > 1 else "translations/axistune_ja.ts"
+here = os.path.dirname(os.path.abspath(__file__))
+for f in sorted(glob.glob(os.path.join(here, "ja", "*.json"))):
+    with open(f, encoding="utf-8") as fh:
+        JA.update(json.load(fh))
+
+args = [a for a in sys.argv[1:] if a != "--missing"]
+path = args[0] if args else os.path.join(here, "axistune_ja.ts")
 tree = ET.parse(path)
+if "--missing" in sys.argv:
+    todo = {}
+    for msg in tree.iter("message"):
+        src = msg.find("source").text or ""
+        if src not in JA:
+            todo[src] = ""
+    print(json.dumps(todo, ensure_ascii=False, indent=1))
+    sys.exit(0)
 missing = []
 for msg in tree.iter("message"):
     src = msg.find("source").text or ""
@@ -80,7 +99,15 @@ for msg in tree.iter("message"):
     if src not in JA:
         missing.append(src)
         continue
-    tr.text = JA[src]
+    forms = tr.findall("numerusform")
+    if msg.get("numerus") == "yes":
+        # Japanese has one plural form: every numerusform gets the same text.
+        if not forms:
+            forms = [ET.SubElement(tr, "numerusform")]
+        for form in forms:
+            form.text = JA[src]
+    else:
+        tr.text = JA[src]
     tr.attrib.pop("type", None)
 tree.write(path, encoding="utf-8", xml_declaration=True)
 if missing:
