@@ -16,11 +16,13 @@ bool AppContext::openDatabase(const QString& path)
     if (!db) {
         m_db.reset();
         log(tr("Could not open the store %1: %2").arg(path, QString::fromStdString(db.error().detail)));
+        emit databaseChanged();
         return false;
     }
     m_db = std::make_unique<store::Database>(std::move(db).value());
     m_dbPath = path;
     log(tr("Store: %1").arg(path));
+    emit databaseChanged();
     return true;
 }
 

@@ -14,6 +14,8 @@
 #include <QString>
 #include <QStringList>
 
+class QWidget;
+
 #include <map>
 #include <memory>
 
@@ -49,6 +51,10 @@ public:
     /// and emits sessionSaved. Errors are logged and returned.
     Result<std::int64_t> saveSession(store::SessionRecord record);
 
+    /// Asks the main window to show `widget` as a document tab in the centre (it takes ownership).
+    /// Wizards use it for plots the user keeps after the wizard closes.
+    void showDocument(QWidget* widget, const QString& title) { emit documentRequested(widget, title); }
+
 public slots:
     void log(const QString& message);
 
@@ -58,6 +64,10 @@ signals:
     void sessionSaved(qint64 id);
     /// Applied parameters (journal written) for an axis.
     void parametersApplied(const QString& axis);
+    /// openDatabase() opened another store (or failed: database() is null).
+    void databaseChanged();
+    /// See showDocument().
+    void documentRequested(QWidget* widget, const QString& title);
 
 private:
     DriveController* m_drive = nullptr;
