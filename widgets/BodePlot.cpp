@@ -209,7 +209,8 @@ int BodePlot::addResponse(const dsp::FrequencyResponse& frf, const QString& name
         QColor c = r.color;
         if (faint)
             c.setAlpha(70);
-        g->setPen(QPen(c, faint ? 1.0 : 1.6, faint ? Qt::SolidLine : r.style));
+        // 1-pixel pens: Qt strokes wider antialiased lines as outlines, five times slower here.
+        g->setPen(QPen(c, 1.0, faint ? Qt::SolidLine : r.style));
         // Adaptive sampling would merge the NaN gaps (invalid points, phase wraps) into neighbouring
         // pixel columns; a few thousand points per response draw fast enough without it.
         g->setAdaptiveSampling(false);
