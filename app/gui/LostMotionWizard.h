@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Lost-motion wizard (issue 9 item 3; spec/lost-motion-and-two-inertia.md chapter 4 and W-LM §4.6;
+// docs/wizards/lost-motion.md): ball-bar traces imported from files or measured by circle tests on
+// the machine at two or more table positions → polar plot and diagnostics (core/tuning
+// BallBarDiagnostics) → A/B fit of Δx = (A + B·x)·ΔT (core/tuning LostMotion) → compensated trace
+// predicted over the measured one, with the conventional step's cut-in → apply (lostmotion.*) →
+// verify with a new circle → save (session kind "lost-motion", model kind "lost_motion").
+//
+// Circle tests: the drive seam (device::Drive) has no circle test (a circle moves two axes together),
+// so the wizard does what `axistune-cli circle` does: it runs core/sim CircleTest on the connected
+// simulated machine's preset with the drive's current parameter values of both plane axes (read
+// through the DriveController). That is possible on simulated connections only; on other machines the
+// wizard imports ball-bar files.
+
+#include "core/io/BallBarCsv.h"
+#include "core/sim/CircleTest.h"
+#include "core/tuning/BallBarDiagnostics.h"
+#include "core/tuning/LostMotion.h"
+
+#include <QFutureWatcher>
+#include <QWizard>
+#include <QWizardPage>
+
+#include <atomic>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QButtonGroup;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QRadioButton;
+class QTableWidget;
+
+namespace axistune {
+namespace widgets {
+class CurvePlot;
+class PolarPlot;
+}  // namespace widgets
+namespace gui {
+
+class AppContext;
+class ApplyPage;
+class SafetyPage;
+
+/// Everything the pages share; owned by the wizard.
+struct LostMotionData {
+    bool fromMachine = false;
+    QString plane = "XY";
+    int axisRole = 1;  ///< 0 = first plane axis, 1 = second
+    QString axisName() const { return plane.mid(axisRole, 1); }
+    double screwOffsetM = 0.2;
+    double screwSign = 1.0;
+    tuning::BallBarOptions options;
+    // Circle settings (machine source).
+    double radiusM = 0.05;
+    double feedMPerS = 1000.0 / 60000.0;
+    std::vector<double> centresM;  ///< circle centres along the identified axis
+    QStringList files;
+    std::vector<io::BallBarTrace> traces;
+    // Analysis.
+    std::optional<tuning::BallBarReport> report;
+    std::vector<tuning::LostMotionPoint> points;
+    std::optional<tuning::LostMotionFit> fit;
+    double conventionalBacklashM = 0.0;
+    std::vector<tuning::CompensationPrediction> predictions;
+    QString analysisError;
+    // Verification.
+    std::optional<io::BallBarTrace> verification;
+    std::optional<double> stepBeforeM, stepAfterM, predictedStepAfterM;
+    std::optional<double> circularityBeforeM, circularityAfterM, predictedCircularityM;
+};
+
+/// Runs circle tests on the simulated machine behind the drive link (see the header comment): reads
+/// the parameters of both plane axes, then runs the circles one after another off the GUI thread.
+class CircleRunner : public QObject {
+    Q_OBJECT
+public:
+    CircleRunner(AppContext& ctx, QObject* parent = nullptr);
+    /// Empty when circle tests can run on the current connection, else why not (translated).
+    QString unavailableReason() const;
+    void start(const QString& plane, std::vector<sim::CircleTestOptions> circles);
+    void abort() { m_abort->store(true); }
+    bool isRunning() const { return m_running; }
+    const std::vector<io::BallBarTrace>& traces() const { return m_traces; }
+
+signals:
+    void progress(int done, int total, const QString& text);
+    void finished(bool ok, const QString& error, bool aborted);
+
+private:
+    void onValues(const QString& axis, const model::ParameterValues& values);
+    void runAll();
+    AppContext& m_ctx;
+    QString m_plane;
+    std::vector<sim::CircleTestOptions> m_circles;
+    std::vector<io::BallBarTrace> m_traces;
+    std::map<QString, model::ParameterValues> m_values;
+    std::map<int, QString> m_requests;
+    std::shared_ptr<std::atomic<bool>> m_abort;
+    bool m_running = false;
+};
+
+class LostMotionSourcePage : public QWizardPage {
+    Q_OBJECT
+public:
+    LostMotionSourcePage(AppContext& ctx, LostMotionData& data, QWidget* parent = nullptr);
+    /// Reads ball-bar files (errors listed with file, line and field); false when any failed.
+    bool addFiles(const QStringList& paths);
+    void initializePage() override;
+    bool isComplete() const override;
+    bool validatePage() override;
+    int nextId() const override;
+
+private:
+    void updateMode();
+    AppContext& m_ctx;
+    LostMotionData& m_d;
+    QRadioButton* m_importRadio = nullptr;
+    QRadioButton* m_machineRadio = nullptr;
+    QListWidget* m_fileList = nullptr;
+    QLabel* m_fileErrors = nullptr;
+    QComboBox* m_axisRole = nullptr;
+    QDoubleSpinBox* m_offset = nullptr;
+    QComboBox* m_sign = nullptr;
+    QDoubleSpinBox* m_exclude = nullptr;
+    QDoubleSpinBox* m_radius = nullptr;
+    QDoubleSpinBox* m_feed = nullptr;
+    QLineEdit* m_centres = nullptr;
+    QLabel* m_machineNote = nullptr;
+    QWidget* m_importBox = nullptr;
+    QWidget* m_machineBox = nullptr;
+};
+
+/// Runs the circle tests of the source page (progress, Abort).
+class LostMotionCirclePage : public QWizardPage {
+    Q_OBJECT
+public:
+    LostMotionCirclePage(AppContext& ctx, LostMotionData& data, QWidget* parent = nullptr);
+    void initializePage() override;
+    void cleanupPage() override;
+    bool isComplete() const override;
+    QPushButton* abortButton() const { return m_abort; }
+    bool succeeded() const { return m_ok; }
+
+signals:
+    /// A failed or aborted run, with the traces measured so far already in the data.
+    void runFailed(const QString& why);
+
+private:
+    void start();
+    AppContext& m_ctx;
+    LostMotionData& m_d;
+    CircleRunner* m_runner = nullptr;
+    QLabel* m_label = nullptr;
+    QProgressBar* m_bar = nullptr;
+    QPushButton* m_abort = nullptr;
+    QPushButton* m_retry = nullptr;
+    bool m_ok = false;
+};
+
+/// Polar plot and diagnostics table; the analysis (diagnostics, fit, prediction) runs here off the GUI thread.
+class LostMotionDiagnosticsPage : public QWizardPage {
+    Q_OBJECT
+public:
+    LostMotionDiagnosticsPage(LostMotionData& data, QWidget* parent = nullptr);
+    void initializePage() override;
+    bool isComplete() const override;
+    QTableWidget* table() const { return m_table; }
+    widgets::PolarPlot* plot() const { return m_plot; }
+    bool analysed() const { return m_done; }
+
+private:
+    void showResults();
+    LostMotionData& m_d;
+    widgets::PolarPlot* m_plot = nullptr;
+    QTableWidget* m_table = nullptr;
+    QLabel* m_status = nullptr;
+    QFutureWatcher<void>* m_watcher = nullptr;
+    bool m_done = false;
+};
+
+/// The A/B fit with its points and line, and the predicted compensated trace with the conventional one.
+class LostMotionFitPage : public QWizardPage {
+    Q_OBJECT
+public:
+    LostMotionFitPage(AppContext& ctx, LostMotionData& data, ApplyPage* apply, QWidget* parent = nullptr);
+    void initializePage() override;
+    bool isComplete() const override;
+    int nextId() const override;
+
+private:
+    AppContext& m_ctx;
+    LostMotionData& m_d;
+    ApplyPage* m_apply;
+    widgets::CurvePlot* m_fitPlot = nullptr;
+    widgets::PolarPlot* m_predPlot = nullptr;
+    QLabel* m_result = nullptr;
+    QTableWidget* m_predTable = nullptr;
+};
+
+/// A new circle at the last table position with the applied compensation: measured against predicted.
+class LostMotionVerifyPage : public QWizardPage {
+    Q_OBJECT
+public:
+    LostMotionVerifyPage(AppContext& ctx, LostMotionData& data, ApplyPage* apply, QWidget* parent = nullptr);
+    void initializePage() override;
+    void cleanupPage() override;
+    bool isComplete() const override;
+
+private:
+    void evaluate();
+    AppContext& m_ctx;
+    LostMotionData& m_d;
+    ApplyPage* m_apply;
+    CircleRunner* m_runner = nullptr;
+    QLabel* m_label = nullptr;
+    QProgressBar* m_bar = nullptr;
+    QPushButton* m_abort = nullptr;
+    widgets::PolarPlot* m_plot = nullptr;
+    QTableWidget* m_table = nullptr;
+    bool m_done = false;
+};
+
+/// Summary and save (the session is saved when this page is entered).
+class LostMotionSavePage : public QWizardPage {
+    Q_OBJECT
+public:
+    LostMotionSavePage(AppContext& ctx, LostMotionData& data, ApplyPage* apply, QWidget* parent = nullptr);
+    void initializePage() override;
+
+private:
+    AppContext& m_ctx;
+    LostMotionData& m_d;
+    ApplyPage* m_apply;
+    QLabel* m_text = nullptr;
+};
+
+class LostMotionWizard : public QWizard {
+    Q_OBJECT
+public:
+    enum PageId { Source, Safety, Circles, Diagnostics, Fit, Apply, Verify, Save };
+
+    explicit LostMotionWizard(AppContext& ctx, QWidget* parent = nullptr);
+
+    LostMotionData& data() { return m_data; }
+    LostMotionSourcePage* sourcePage() const { return m_source; }
+    SafetyPage* safetyPage() const { return m_safety; }
+    LostMotionCirclePage* circlePage() const { return m_circles; }
+    LostMotionDiagnosticsPage* diagnosticsPage() const { return m_diag; }
+    ApplyPage* applyPage() const { return m_apply; }
+    /// Id of the saved session (0 before the save).
+    qint64 savedSessionId() const { return m_sessionId; }
+
+    /// Saves the session (Completed, or Aborted with the reason); called by the last page, or on failure.
+    void saveSession(bool aborted, const QString& reason);
+
+private:
+    AppContext& m_ctx;
+    LostMotionData m_data;
+    LostMotionSourcePage* m_source = nullptr;
+    SafetyPage* m_safety = nullptr;
+    LostMotionCirclePage* m_circles = nullptr;
+    LostMotionDiagnosticsPage* m_diag = nullptr;
+    ApplyPage* m_apply = nullptr;
+    qint64 m_sessionId = 0;
+};
+
+}  // namespace gui
+}  // namespace axistune

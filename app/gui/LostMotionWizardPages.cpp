@@ -1,0 +1,828 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Pages of the lost-motion wizard (LostMotionWizard.h; docs/wizards/lost-motion.md): source, circle
+// runs, diagnostics, fit and prediction, verification.
+#include "app/gui/LostMotionWizard.h"
+
+#include "app/gui/AppContext.h"
+#include "app/gui/WizardPages.h"
+#include "core/model/Units.h"
+#include "core/sim/MachineDefinition.h"
+#include "widgets/CurvePlot.h"
+#include "widgets/PolarPlot.h"
+
+#include <QApplication>
+#include <QButtonGroup>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPointer>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <QtConcurrent>
+
+#include <cmath>
+#include <numbers>
+
+namespace axistune {
+namespace gui {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+QString um(double m, int prec = 3) { return QString::number(m * 1e6, 'f', prec); }
+
+QTableWidget* makeTable(QWidget* parent, const QStringList& headers)
+{
+    auto* t = new QTableWidget(0, headers.size(), parent);
+    t->setHorizontalHeaderLabels(headers);
+    t->verticalHeader()->setVisible(false);
+    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->horizontalHeader()->setStretchLastSection(true);
+    t->setWordWrap(true);
+    return t;
+}
+
+void addRow(QTableWidget* t, const QStringList& cells)
+{
+    const int r = t->rowCount();
+    t->insertRow(r);
+    for (int c = 0; c < cells.size(); ++c)
+        t->setItem(r, c, new QTableWidgetItem(cells[c]));
+}
+
+/// Deviation of a trace as a new trace (the prediction drawn as a ball-bar trace).
+io::BallBarTrace withDeviation(const io::BallBarTrace& t, const std::vector<double>& dev)
+{
+    io::BallBarTrace out = t;
+    out.deviationM = dev;
+    return out;
+}
+
+/// The mean reversal step of one axis over the reversals a trace covers.
+std::optional<double> meanStep(const io::BallBarTrace& t, int axis, const tuning::BallBarOptions& opt)
+{
+    auto run = tuning::analyzeRun(t, opt);
+    if (!run)
+        return std::nullopt;
+    double sum = 0.0;
+    int n = 0;
+    for (const auto& e : run->events) {
+        if (e.axis == axis) {
+            sum += e.stepM;
+            ++n;
+        }
+    }
+    return n > 0 ? std::optional<double>(sum / n) : std::nullopt;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// CircleRunner
+
+CircleRunner::CircleRunner(AppContext& ctx, QObject* parent)
+    : QObject(parent), m_ctx(ctx), m_abort(std::make_shared<std::atomic<bool>>(false))
+{
+    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+        auto it = m_requests.find(r.id);
+        if (it == m_requests.end() || !m_running)
+            return;
+        const QString axis = it->second;
+        m_requests.erase(it);
+        if (!r.ok) {
+            m_running = false;
+            m_requests.clear();
+            emit finished(false, tr("Reading the parameters of axis %1 failed: %2").arg(axis, r.error), false);
+            return;
+        }
+        onValues(axis, r.values);
+    });
+}
+
+QString CircleRunner::unavailableReason() const
+{
+    if (!m_ctx.drive().isConnected())
+        return tr("Not connected: circle tests need a connection to a machine.");
+    if (!sim::loadPreset(m_ctx.machine().toStdString()))
+        return tr("Machine %1 is not a simulated machine: the drive link has no circle test (two axes together). "
+                  "Measure with a ball bar and import the files.")
+            .arg(m_ctx.machine());
+    return {};
+}
+
+void CircleRunner::start(const QString& plane, std::vector<sim::CircleTestOptions> circles)
+{
+    if (m_running)
+        return;
+    m_plane = plane;
+    m_circles = std::move(circles);
+    m_traces.clear();
+    m_values.clear();
+    m_requests.clear();
+    m_abort->store(false);
+    if (const QString why = unavailableReason(); !why.isEmpty()) {
+        emit finished(false, why, false);
+        return;
+    }
+    m_running = true;
+    emit progress(0, static_cast<int>(m_circles.size()), tr("Reading the parameters of both plane axes"));
+    for (int i = 0; i < plane.size(); ++i)
+        m_requests[m_ctx.drive().readParameters(plane.mid(i, 1))] = plane.mid(i, 1);
+}
+
+void CircleRunner::onValues(const QString& axis, const model::ParameterValues& values)
+{
+    m_values[axis] = values;
+    if (m_requests.empty())
+        runAll();
+}
+
+void CircleRunner::runAll()
+{
+    auto loaded = sim::loadPreset(m_ctx.machine().toStdString());
+    if (!loaded) {
+        m_running = false;
+        emit finished(false, qs(loaded.error().detail), false);
+        return;
+    }
+    sim::MachineDefinition machine = std::move(loaded).value();
+    // The drive's current values (gains, compensation) replace the preset's.
+    for (auto& a : machine.axes) {
+        auto it = m_values.find(qs(a.name));
+        if (it == m_values.end())
+            continue;
+        for (const auto& [k, v] : it->second)
+            if (a.values.count(k))
+                a.values[k] = v;
+    }
+    QPointer<CircleRunner> self(this);
+    auto abortFlag = m_abort;
+    auto circles = m_circles;
+    auto* watcher = new QFutureWatcher<std::pair<QString, std::vector<io::BallBarTrace>>>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+        const auto [error, traces] = watcher->result();
+        watcher->deleteLater();
+        m_traces = traces;
+        m_running = false;
+        const bool aborted = m_abort->load();
+        if (aborted)
+            emit finished(false, tr("Aborted by the operator after %1 of %2 circles.").arg(traces.size()).arg(m_circles.size()),
+                          true);
+        else
+            emit finished(error.isEmpty(), error, false);
+    });
+    watcher->setFuture(QtConcurrent::run([self, abortFlag, circles, machine]() {
+        std::vector<io::BallBarTrace> out;
+        for (std::size_t i = 0; i < circles.size(); ++i) {
+            if (abortFlag->load())
+                break;
+            QMetaObject::invokeMethod(
+                qApp,
+                [self, i, n = circles.size()] {
+                    if (self)
+                        emit self->progress(static_cast<int>(i), static_cast<int>(n),
+                                            CircleRunner::tr("Circle %1 of %2").arg(i + 1).arg(n));
+                },
+                Qt::QueuedConnection);
+            auto r = sim::runCircleTest(machine, circles[i]);
+            if (!r)
+                return std::make_pair(qs(r.error().detail), out);
+            out.push_back(r->ballbar);
+        }
+        return std::make_pair(QString(), out);
+    }));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Source page
+
+LostMotionSourcePage::LostMotionSourcePage(AppContext& ctx, LostMotionData& shared, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared)
+{
+    setTitle(tr("Lost motion: ball-bar traces"));
+    setSubTitle(tr("Import ball-bar files or run circle tests at two or more table positions. The spring length x "
+                   "of each reversal is x₀ + s·(circle centre ± R) along the identified axis."));
+    auto* lay = new QVBoxLayout(this);
+    auto* group = new QButtonGroup(this);
+    m_importRadio = new QRadioButton(tr("Import ball-bar files (CSV)"), this);
+    m_machineRadio = new QRadioButton(tr("Run circle tests on the machine"), this);
+    m_importRadio->setObjectName("lmImport");
+    m_machineRadio->setObjectName("lmMachine");
+    group->addButton(m_importRadio);
+    group->addButton(m_machineRadio);
+    m_importRadio->setChecked(true);
+    lay->addWidget(m_importRadio);
+    lay->addWidget(m_machineRadio);
+
+    m_importBox = new QWidget(this);
+    auto* il = new QVBoxLayout(m_importBox);
+    il->setContentsMargins(20, 0, 0, 0);
+    m_fileList = new QListWidget(m_importBox);
+    m_fileList->setObjectName("lmFiles");
+    m_fileList->setMaximumHeight(90);
+    il->addWidget(m_fileList);
+    auto* fb = new QHBoxLayout;
+    auto* add = new QPushButton(tr("Add files…"), m_importBox);
+    auto* clear = new QPushButton(tr("Clear"), m_importBox);
+    fb->addWidget(add);
+    fb->addWidget(clear);
+    fb->addStretch(1);
+    il->addLayout(fb);
+    m_fileErrors = new QLabel(m_importBox);
+    m_fileErrors->setObjectName("lmFileErrors");
+    m_fileErrors->setWordWrap(true);
+    m_fileErrors->setStyleSheet("color: #b00000;");
+    il->addWidget(m_fileErrors);
+    lay->addWidget(m_importBox);
+
+    m_machineBox = new QWidget(this);
+    auto* ml = new QFormLayout(m_machineBox);
+    ml->setContentsMargins(20, 0, 0, 0);
+    m_radius = new QDoubleSpinBox(m_machineBox);
+    m_radius->setRange(5, 500);
+    m_radius->setValue(50);
+    m_radius->setSuffix(" mm");
+    m_feed = new QDoubleSpinBox(m_machineBox);
+    m_feed->setRange(10, 20000);
+    m_feed->setValue(1000);
+    m_feed->setSuffix(" mm/min");
+    m_centres = new QLineEdit("-150, 0, 150", m_machineBox);
+    m_centres->setObjectName("lmCentres");
+    ml->addRow(tr("Circle radius R:"), m_radius);
+    ml->addRow(tr("Feed:"), m_feed);
+    ml->addRow(tr("Circle centres along the identified axis [mm]:"), m_centres);
+    m_machineNote = new QLabel(m_machineBox);
+    m_machineNote->setWordWrap(true);
+    ml->addRow(m_machineNote);
+    lay->addWidget(m_machineBox);
+
+    auto* common = new QGroupBox(tr("Model of the axis"), this);
+    auto* cl = new QFormLayout(common);
+    m_axisRole = new QComboBox(common);
+    m_axisRole->setObjectName("lmAxisRole");
+    m_axisRole->addItems({tr("First plane axis (X)"), tr("Second plane axis (Y)")});
+    m_axisRole->setCurrentIndex(1);
+    m_offset = new QDoubleSpinBox(common);
+    m_offset->setObjectName("lmScrewOffset");
+    m_offset->setRange(-10000, 10000);
+    m_offset->setDecimals(1);
+    m_offset->setValue(200);
+    m_offset->setSuffix(" mm");
+    m_sign = new QComboBox(common);
+    m_sign->addItems({"+1", "−1"});
+    m_exclude = new QDoubleSpinBox(common);
+    m_exclude->setRange(0.5, 30);
+    m_exclude->setValue(8.0);
+    m_exclude->setSuffix(QString::fromUtf8(" °"));
+    m_exclude->setToolTip(tr("Half-width of the zone around each reversal left out of the step fit: the friction "
+                             "spike must not count as lost motion (±8° at 1000 mm/min, R 50 mm)."));
+    cl->addRow(tr("Axis to identify:"), m_axisRole);
+    cl->addRow(tr("Screw length offset x₀ (coupling to load point at table 0):"), m_offset);
+    cl->addRow(tr("Sign s (spring length grows with the coordinate: +1):"), m_sign);
+    cl->addRow(tr("Reversal zone ±:"), m_exclude);
+    lay->addWidget(common);
+    lay->addStretch(1);
+
+    connect(m_importRadio, &QRadioButton::toggled, this, [this] { updateMode(); });
+    connect(add, &QPushButton::clicked, this, [this] {
+        addFiles(QFileDialog::getOpenFileNames(this, tr("Ball-bar files"), {}, tr("Ball-bar CSV (*.csv);;All files (*)")));
+    });
+    connect(clear, &QPushButton::clicked, this, [this] {
+        m_d.files.clear();
+        m_d.traces.clear();
+        m_fileList->clear();
+        m_fileErrors->clear();
+        emit completeChanged();
+    });
+    connect(m_centres, &QLineEdit::textChanged, this, &QWizardPage::completeChanged);
+    updateMode();
+}
+
+bool LostMotionSourcePage::addFiles(const QStringList& paths)
+{
+    QStringList errors;
+    for (const auto& p : paths) {
+        auto t = io::readBallBarCsvFile(p.toStdString());
+        if (!t) {
+            errors << qs(t.error().detail);
+            continue;
+        }
+        m_d.files << p;
+        m_d.traces.push_back(std::move(t).value());
+        const auto& tr0 = m_d.traces.back();
+        m_fileList->addItem(tr("%1 — R %2 mm, centre (%3, %4) mm, %5 samples")
+                                .arg(QFileInfo(p).fileName())
+                                .arg(tr0.radiusM * 1e3)
+                                .arg(tr0.centerXM * 1e3)
+                                .arg(tr0.centerYM * 1e3)
+                                .arg(tr0.size()));
+    }
+    m_fileErrors->setText(errors.join("\n"));
+    emit completeChanged();
+    return errors.isEmpty();
+}
+
+void LostMotionSourcePage::initializePage()
+{
+    CircleRunner probe(m_ctx);
+    const QString why = probe.unavailableReason();
+    m_machineRadio->setEnabled(why.isEmpty());
+    m_machineNote->setText(why.isEmpty() ? tr("Circle tests run on %1 with the drive's current parameters; both plane "
+                                              "axes move.")
+                                               .arg(m_ctx.machine())
+                                         : why);
+    if (!why.isEmpty())
+        m_importRadio->setChecked(true);
+    updateMode();
+}
+
+void LostMotionSourcePage::updateMode()
+{
+    m_importBox->setEnabled(m_importRadio->isChecked());
+    m_machineBox->setEnabled(m_machineRadio->isChecked());
+    emit completeChanged();
+}
+
+static std::vector<double> parseCentres(const QString& text, bool* ok)
+{
+    std::vector<double> out;
+    *ok = true;
+    for (const auto& part : text.split(',', Qt::SkipEmptyParts)) {
+        bool good = false;
+        const double v = part.trimmed().toDouble(&good);
+        if (!good) {
+            *ok = false;
+            return {};
+        }
+        out.push_back(v * 1e-3);
+    }
+    return out;
+}
+
+bool LostMotionSourcePage::isComplete() const
+{
+    if (m_importRadio->isChecked())
+        return !m_d.traces.empty();
+    bool ok = false;
+    const auto c = parseCentres(m_centres->text(), &ok);
+    return ok && c.size() >= 2;
+}
+
+bool LostMotionSourcePage::validatePage()
+{
+    m_d.fromMachine = m_machineRadio->isChecked();
+    m_d.axisRole = m_axisRole->currentIndex();
+    m_d.screwOffsetM = m_offset->value() * 1e-3;
+    m_d.screwSign = m_sign->currentIndex() == 0 ? 1.0 : -1.0;
+    m_d.options.excludeDeg = m_exclude->value();
+    m_d.radiusM = m_radius->value() * 1e-3;
+    m_d.feedMPerS = m_feed->value() / 60000.0;
+    bool ok = false;
+    m_d.centresM = parseCentres(m_centres->text(), &ok);
+    if (m_d.fromMachine) {
+        m_d.traces.clear();
+        m_d.files.clear();
+    } else if (!m_d.traces.empty()) {
+        m_d.plane = qs(m_d.traces.front().plane);
+    }
+    return true;
+}
+
+int LostMotionSourcePage::nextId() const
+{
+    return m_machineRadio->isChecked() ? LostMotionWizard::Safety : LostMotionWizard::Diagnostics;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Circle page
+
+LostMotionCirclePage::LostMotionCirclePage(AppContext& ctx, LostMotionData& shared, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared)
+{
+    setTitle(tr("Circle tests"));
+    setSubTitle(tr("Both plane axes move on circles at the table positions chosen. Abort stops after the circle "
+                   "that is running."));
+    auto* lay = new QVBoxLayout(this);
+    m_label = new QLabel(this);
+    m_label->setWordWrap(true);
+    lay->addWidget(m_label);
+    m_bar = new QProgressBar(this);
+    m_bar->setTextVisible(false);
+    lay->addWidget(m_bar);
+    auto* b = new QHBoxLayout;
+    m_abort = new QPushButton(tr("Abort"), this);
+    m_abort->setObjectName("lmCircleAbort");
+    m_abort->setStyleSheet("QPushButton { color: #b00000; font-weight: bold; }");
+    m_retry = new QPushButton(tr("Run again"), this);
+    b->addWidget(m_abort);
+    b->addWidget(m_retry);
+    b->addStretch(1);
+    lay->addLayout(b);
+    lay->addStretch(1);
+    m_runner = new CircleRunner(ctx, this);
+    connect(m_abort, &QPushButton::clicked, m_runner, &CircleRunner::abort);
+    connect(m_retry, &QPushButton::clicked, this, &LostMotionCirclePage::start);
+    connect(m_runner, &CircleRunner::progress, this, [this](int done, int total, const QString& text) {
+        m_bar->setRange(0, total);
+        m_bar->setValue(done);
+        m_label->setText(text);
+    });
+    connect(m_runner, &CircleRunner::finished, this, [this](bool ok, const QString& error, bool aborted) {
+        m_ok = ok;
+        m_d.traces = m_runner->traces();
+        m_abort->setEnabled(false);
+        m_retry->setEnabled(!ok);
+        m_bar->setValue(static_cast<int>(m_d.traces.size()));
+        m_label->setText(ok ? tr("Completed: %1 circles.").arg(m_d.traces.size())
+                            : (aborted ? tr("Aborted: %1") : tr("Failed: %1")).arg(error));
+        m_ctx.log(m_label->text());
+        if (!ok)
+            emit runFailed(error);
+        emit completeChanged();
+    });
+}
+
+void LostMotionCirclePage::start()
+{
+    std::vector<sim::CircleTestOptions> circles;
+    int i = 0;
+    for (double c : m_d.centresM) {
+        sim::CircleTestOptions o;
+        o.axisX = m_d.plane.mid(0, 1).toStdString();
+        o.axisY = m_d.plane.mid(1, 1).toStdString();
+        o.radiusM = m_d.radiusM;
+        o.feedMPerS = m_d.feedMPerS;
+        (m_d.axisRole == 0 ? o.centerXM : o.centerYM) = c;
+        o.seed = static_cast<std::uint64_t>(++i);
+        circles.push_back(o);
+    }
+    m_ok = false;
+    m_abort->setEnabled(true);
+    m_retry->setEnabled(false);
+    emit completeChanged();
+    m_runner->start(m_d.plane, circles);
+}
+
+void LostMotionCirclePage::initializePage() { start(); }
+
+void LostMotionCirclePage::cleanupPage()
+{
+    if (m_runner->isRunning())
+        m_runner->abort();
+}
+
+bool LostMotionCirclePage::isComplete() const { return m_ok && !m_runner->isRunning(); }
+
+// ---------------------------------------------------------------------------------------------
+// Diagnostics page
+
+LostMotionDiagnosticsPage::LostMotionDiagnosticsPage(LostMotionData& shared, QWidget* parent)
+    : QWizardPage(parent), m_d(shared)
+{
+    setTitle(tr("Ball-bar diagnostics"));
+    setSubTitle(tr("Measured traces over the nominal circle (deviation magnified), reversal markers, and every "
+                   "finding with the rule that decided it."));
+    auto* lay = new QVBoxLayout(this);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    m_plot = new widgets::PolarPlot(split);
+    m_plot->setObjectName("lmPolar");
+    m_table = makeTable(split, {tr("Finding"), tr("Value"), tr("Rule")});
+    m_table->setObjectName("lmDiagnostics");
+    split->addWidget(m_plot);
+    split->addWidget(m_table);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+    lay->addWidget(split, 1);
+    m_status = new QLabel(this);
+    m_status->setWordWrap(true);
+    lay->addWidget(m_status);
+    m_watcher = new QFutureWatcher<void>(this);
+    connect(m_watcher, &QFutureWatcherBase::finished, this, [this] {
+        m_done = true;
+        showResults();
+        emit completeChanged();
+    });
+}
+
+void LostMotionDiagnosticsPage::initializePage()
+{
+    m_done = false;
+    m_plot->clear();
+    m_table->setRowCount(0);
+    m_status->setText(tr("Analysing %1 traces…").arg(m_d.traces.size()));
+    emit completeChanged();
+    LostMotionData* d = &m_d;
+    // The analysis writes into the shared data only from this future; the pages wait for it.
+    m_watcher->setFuture(QtConcurrent::run([d] {
+        d->report.reset();
+        d->fit.reset();
+        d->points.clear();
+        d->predictions.clear();
+        d->analysisError.clear();
+        auto rep = tuning::analyzeBallBar(d->traces, d->options);
+        if (rep)
+            d->report = std::move(rep).value();
+        else
+            d->analysisError = qs(rep.error().detail);
+        const tuning::LostMotionSetup setup{d->axisRole, d->screwOffsetM, d->screwSign};
+        for (const auto& t : d->traces) {
+            auto pts = tuning::extractLostMotionPoints(t, setup, d->options);
+            if (!pts) {
+                d->analysisError = qs(pts.error().detail);
+                return;
+            }
+            d->points.insert(d->points.end(), pts->begin(), pts->end());
+        }
+        auto fit = tuning::fitLostMotion(d->points);
+        if (!fit) {
+            d->analysisError = qs(fit.error().detail);
+            return;
+        }
+        d->fit = *fit;
+        double xbl = 0.0;
+        for (const auto& p : d->points)
+            xbl += p.dxM / static_cast<double>(d->points.size());
+        d->conventionalBacklashM = xbl;
+        for (const auto& t : d->traces) {
+            auto p = tuning::predictCompensation(t, setup, *fit, xbl, d->options);
+            if (!p) {
+                d->analysisError = qs(p.error().detail);
+                return;
+            }
+            d->predictions.push_back(std::move(p).value());
+        }
+    }));
+}
+
+void LostMotionDiagnosticsPage::showResults()
+{
+    for (std::size_t i = 0; i < m_d.traces.size(); ++i) {
+        const auto& t = m_d.traces[i];
+        const double c = m_d.axisRole == 0 ? t.centerXM : t.centerYM;
+        m_plot->addTrace(t, tr("%1 = %2 mm").arg(m_d.axisName()).arg(c * 1e3));
+    }
+    m_plot->addMarker(0.0, tr("X rev."));
+    m_plot->addMarker(std::numbers::pi, tr("X rev."));
+    m_plot->addMarker(std::numbers::pi / 2, tr("Y rev."));
+    m_plot->addMarker(3 * std::numbers::pi / 2, tr("Y rev."));
+    if (m_d.report) {
+        for (const auto& f : m_d.report->findings)
+            addRow(m_table, {qs(f.name), QString("%1 %2").arg(f.value, 0, 'g', 4).arg(qs(model::unitLabel(f.unit))),
+                             qs(f.rule)});
+        for (const auto& r : m_d.report->refused)
+            addRow(m_table, {tr("not computed"), QString(), qs(r)});
+    }
+    m_table->resizeRowsToContents();
+    m_status->setText(m_d.analysisError.isEmpty() ? tr("%1 traces, %2 reversal events of axis %3.")
+                                                         .arg(m_d.traces.size())
+                                                         .arg(m_d.points.size())
+                                                         .arg(m_d.axisName())
+                                                   : tr("Analysis failed: %1").arg(m_d.analysisError));
+}
+
+bool LostMotionDiagnosticsPage::isComplete() const { return m_done && m_d.fit.has_value(); }
+
+// ---------------------------------------------------------------------------------------------
+// Fit and prediction page
+
+LostMotionFitPage::LostMotionFitPage(AppContext& ctx, LostMotionData& shared, ApplyPage* apply, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
+{
+    setTitle(tr("A/B fit and predicted compensation"));
+    setSubTitle(tr("Δx = (A + B·x)·ΔT (spec eq. 4.12): each reversal gives a point Δx/ΔT at its spring length x; "
+                   "the line is A + B·x. The torque-synchronous compensation (A + B·x)·T_m is predicted on the "
+                   "measured trace, next to the conventional step of the mean lost motion."));
+    auto* lay = new QVBoxLayout(this);
+    m_result = new QLabel(this);
+    m_result->setObjectName("lmFitResult");
+    m_result->setWordWrap(true);
+    lay->addWidget(m_result);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    m_fitPlot = new widgets::CurvePlot(split);
+    m_fitPlot->setObjectName("lmFitPlot");
+    m_fitPlot->setAxes(tr("Spring length x"), "mm", tr("Δx/ΔT"), QString::fromUtf8("µm/(N·m)"));
+    m_predPlot = new widgets::PolarPlot(split);
+    m_predPlot->setObjectName("lmPrediction");
+    split->addWidget(m_fitPlot);
+    split->addWidget(m_predPlot);
+    lay->addWidget(split, 1);
+    m_predTable = makeTable(this, {tr("Trace"), tr("Circularity measured / proposed / conventional"),
+                                   tr("Cut-in measured / proposed / conventional")});
+    m_predTable->setObjectName("lmPredTable");
+    m_predTable->setMaximumHeight(110);
+    lay->addWidget(m_predTable);
+}
+
+void LostMotionFitPage::initializePage()
+{
+    m_fitPlot->clear();
+    m_predPlot->clear();
+    m_predTable->setRowCount(0);
+    if (!m_d.fit)
+        return;
+    const auto& fit = *m_d.fit;
+    std::vector<double> x, y;
+    double xmin = 1e9, xmax = -1e9;
+    for (const auto& p : m_d.points) {
+        x.push_back(p.xM * 1e3);
+        y.push_back(p.dxM / p.dTNm * 1e6);
+        xmin = std::min(xmin, p.xM);
+        xmax = std::max(xmax, p.xM);
+    }
+    m_fitPlot->addCurve(tr("reversals"), x, y, QColor(0, 90, 200), Qt::SolidLine, true);
+    const double lo = std::min(0.0, xmin), hi = xmax + 0.05;
+    m_fitPlot->addCurve(tr("A + B·x"), {lo * 1e3, hi * 1e3},
+                        {(fit.aMPerNm + fit.bPerNm * lo) * 1e6, (fit.aMPerNm + fit.bPerNm * hi) * 1e6},
+                        QColor(200, 60, 0));
+    m_fitPlot->rescale();
+    QString text = tr("A = %1 µm/(N·m), B = %2 µm/(N·m·m) (%3, %4 points, residual rms %5 µm).")
+                       .arg(fit.aMPerNm * 1e6, 0, 'f', 3)
+                       .arg(fit.bPerNm * 1e6, 0, 'f', 2)
+                       .arg(qs(tuning::lostMotionMethodName(fit.method)))
+                       .arg(m_d.points.size())
+                       .arg(fit.residualRmsM * 1e6, 0, 'f', 3);
+    if (fit.aStdErr && fit.bStdErr)
+        text += " " + tr("Standard errors: A ±%1, B ±%2.").arg(*fit.aStdErr * 1e6, 0, 'f', 3).arg(*fit.bStdErr * 1e6, 0, 'f', 2);
+    for (const auto& w : fit.warnings)
+        text += "\n" + tr("Warning: %1").arg(qs(w));
+    text += "\n" + tr("Rule: least squares on the regressors [ΔT, x·ΔT] over all reversals (two points: the general "
+                      "two-point form); conventional step for comparison x_bl = %1 µm (mean measured lost motion).")
+                       .arg(um(m_d.conventionalBacklashM, 2));
+    m_result->setText(text);
+    // The prediction on the trace with the largest lost motion (the last table position).
+    if (!m_d.predictions.empty()) {
+        const std::size_t k = m_d.predictions.size() - 1;
+        const auto& p = m_d.predictions[k];
+        m_predPlot->setNominalRadius(m_d.traces[k].radiusM);
+        m_predPlot->addTrace(tr("measured"), p.angleRad, p.measuredM, QColor(0, 90, 200));
+        m_predPlot->addTrace(tr("predicted, proposed"), p.angleRad, p.proposedM, QColor(0, 150, 60));
+        m_predPlot->addTrace(tr("predicted, conventional"), p.angleRad, p.conventionalM, QColor(200, 60, 0), Qt::DashLine);
+        const QString ax = m_d.axisName();
+        m_predPlot->addMarker(m_d.axisRole == 0 ? 0.0 : std::numbers::pi / 2, tr("%1 rev.").arg(ax));
+        m_predPlot->addMarker(m_d.axisRole == 0 ? std::numbers::pi : 3 * std::numbers::pi / 2, tr("%1 rev.").arg(ax));
+    }
+    auto opt = [](const std::optional<double>& v) { return v ? um(*v, 2) : QString("–"); };
+    for (std::size_t k = 0; k < m_d.predictions.size(); ++k) {
+        const auto& p = m_d.predictions[k];
+        addRow(m_predTable, {qs(m_d.traces[k].source),
+                             tr("%1 / %2 / %3 µm").arg(opt(p.measuredCircularityM), opt(p.proposedCircularityM),
+                                                       opt(p.conventionalCircularityM)),
+                             tr("%1 / %2 / %3 µm").arg(um(p.measuredCutInM, 2), um(p.proposedCutInM, 2),
+                                                       um(p.conventionalCutInM, 2))});
+    }
+    // The proposal: torque-synchronous compensation (mode 2) with A, B and x₀ on the identified axis.
+    const model::ParameterValues proposal{{"lostmotion.mode", 2.0},
+                                          {"lostmotion.A", fit.aMPerNm},
+                                          {"lostmotion.B", fit.bPerNm},
+                                          {"lostmotion.screw_offset", m_d.screwOffsetM}};
+    if (m_ctx.drive().isConnected()) {
+        m_apply->setProposal(m_d.axisName(), proposal);
+        m_ctx.setProposed(m_d.axisName(), proposal);
+    }
+}
+
+bool LostMotionFitPage::isComplete() const { return m_d.fit.has_value(); }
+
+int LostMotionFitPage::nextId() const
+{
+    return m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axisName()) ? LostMotionWizard::Apply
+                                                                                : LostMotionWizard::Save;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Verify page
+
+LostMotionVerifyPage::LostMotionVerifyPage(AppContext& ctx, LostMotionData& shared, ApplyPage* apply, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
+{
+    setTitle(tr("Verify with a new circle"));
+    setSubTitle(tr("A circle at the last table position with the compensation applied: measured against the "
+                   "prediction and against the trace before."));
+    auto* lay = new QVBoxLayout(this);
+    m_label = new QLabel(this);
+    m_label->setWordWrap(true);
+    lay->addWidget(m_label);
+    auto* row = new QHBoxLayout;
+    m_bar = new QProgressBar(this);
+    m_bar->setTextVisible(false);
+    m_abort = new QPushButton(tr("Abort"), this);
+    m_abort->setStyleSheet("QPushButton { color: #b00000; font-weight: bold; }");
+    row->addWidget(m_bar, 1);
+    row->addWidget(m_abort);
+    lay->addLayout(row);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    m_plot = new widgets::PolarPlot(split);
+    m_plot->setObjectName("lmVerifyPlot");
+    m_table = makeTable(split, {tr("Quantity"), tr("Before"), tr("Predicted"), tr("Measured")});
+    m_table->setObjectName("lmVerifyTable");
+    split->addWidget(m_plot);
+    split->addWidget(m_table);
+    lay->addWidget(split, 1);
+    m_runner = new CircleRunner(ctx, this);
+    connect(m_abort, &QPushButton::clicked, m_runner, &CircleRunner::abort);
+    connect(m_runner, &CircleRunner::progress, this, [this](int, int, const QString& text) { m_label->setText(text); });
+    connect(m_runner, &CircleRunner::finished, this, [this](bool ok, const QString& error, bool aborted) {
+        m_abort->setEnabled(false);
+        m_bar->setRange(0, 1);
+        m_bar->setValue(1);
+        if (!ok || m_runner->traces().empty()) {
+            m_label->setText((aborted ? tr("Aborted: %1") : tr("Failed: %1")).arg(error));
+            m_done = true;
+            emit completeChanged();
+            return;
+        }
+        m_d.verification = m_runner->traces().front();
+        evaluate();
+        m_done = true;
+        emit completeChanged();
+    });
+}
+
+void LostMotionVerifyPage::initializePage()
+{
+    m_done = false;
+    m_plot->clear();
+    m_table->setRowCount(0);
+    m_d.verification.reset();
+    if (!m_apply->applied()) {
+        m_label->setText(tr("The compensation was not applied: nothing to verify."));
+        m_abort->setEnabled(false);
+        m_done = true;
+        return;
+    }
+    if (const QString why = m_runner->unavailableReason(); !why.isEmpty()) {
+        m_label->setText(why + " " + tr("Verify with a new ball-bar measurement and compare it in the session review."));
+        m_abort->setEnabled(false);
+        m_done = true;
+        return;
+    }
+    sim::CircleTestOptions o;
+    o.axisX = m_d.plane.mid(0, 1).toStdString();
+    o.axisY = m_d.plane.mid(1, 1).toStdString();
+    o.radiusM = m_d.radiusM;
+    o.feedMPerS = m_d.feedMPerS;
+    const auto& last = m_d.traces.back();
+    o.radiusM = last.radiusM;
+    o.feedMPerS = last.feedMPerS;
+    o.centerXM = last.centerXM;
+    o.centerYM = last.centerYM;
+    o.seed = 101;
+    m_bar->setRange(0, 0);
+    m_abort->setEnabled(true);
+    m_runner->start(m_d.plane, {o});
+}
+
+void LostMotionVerifyPage::evaluate()
+{
+    const auto& before = m_d.traces.back();
+    const auto& after = *m_d.verification;
+    const auto& pred = m_d.predictions.back();
+    const io::BallBarTrace predicted = withDeviation(before, pred.proposedM);
+    m_d.stepBeforeM = meanStep(before, m_d.axisRole, m_d.options);
+    m_d.stepAfterM = meanStep(after, m_d.axisRole, m_d.options);
+    m_d.predictedStepAfterM = meanStep(predicted, m_d.axisRole, m_d.options);
+    m_d.circularityBeforeM = pred.measuredCircularityM;
+    m_d.predictedCircularityM = pred.proposedCircularityM;
+    if (auto c = tuning::circularityOf(after.angleRad, after.deviationM))
+        m_d.circularityAfterM = *c;
+    m_plot->addTrace(before, tr("before"), QColor(0, 90, 200));
+    m_plot->addTrace(predicted, tr("predicted"), QColor(0, 150, 60), Qt::DashLine);
+    m_plot->addTrace(after, tr("measured after"), QColor(200, 0, 120));
+    auto opt = [](const std::optional<double>& v) { return v ? um(*v, 2) + QString::fromUtf8(" µm") : QString("–"); };
+    addRow(m_table, {tr("Reversal step of %1").arg(m_d.axisName()), opt(m_d.stepBeforeM), opt(m_d.predictedStepAfterM),
+                     opt(m_d.stepAfterM)});
+    addRow(m_table, {tr("Circularity"), opt(m_d.circularityBeforeM), opt(m_d.predictedCircularityM),
+                     opt(m_d.circularityAfterM)});
+    const bool better = m_d.stepBeforeM && m_d.stepAfterM && std::abs(*m_d.stepAfterM) < std::abs(*m_d.stepBeforeM);
+    m_label->setText(better ? tr("The reversal step fell from %1 to %2. If the result is worse than predicted, "
+                                 "restore the previous values on the apply page (Back).")
+                                  .arg(opt(m_d.stepBeforeM), opt(m_d.stepAfterM))
+                            : tr("The reversal step did not fall (%1 → %2): check x₀ and the sign, or restore the "
+                                 "previous values on the apply page (Back).")
+                                  .arg(opt(m_d.stepBeforeM), opt(m_d.stepAfterM)));
+}
+
+void LostMotionVerifyPage::cleanupPage()
+{
+    if (m_runner->isRunning())
+        m_runner->abort();
+}
+
+bool LostMotionVerifyPage::isComplete() const { return m_done && !m_runner->isRunning(); }
+
+}  // namespace gui
+}  // namespace axistune

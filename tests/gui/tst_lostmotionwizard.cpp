@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Lost-motion wizard end to end on the simulated vmc (issue 9): circle tests at three table positions
+// along Y run through the wizard (core/sim CircleTest on the connected preset with the drive's
+// parameters), diagnostics, A/B fit, apply, a verification circle, and the stored session. A and B
+// must lie within 10 % of the preset's Y values (resources/machines/vmc.json: A = 0.70 µm/(N·m),
+// B = 17 µm/(N·m·m), x₀ = 200 mm), and the verification circle must show a smaller reversal step.
+#include "app/gui/AppContext.h"
+#include "app/gui/LostMotionWizard.h"
+#include "app/gui/WizardPages.h"
+#include "app/gui/WizardRegistry.h"
+#include "core/sim/MachineDefinition.h"
+#include "tests/gui/GuiTestUtil.h"
+#include "widgets/PolarPlot.h"
+
+#include <QAbstractButton>
+#include <QCheckBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <fstream>
+
+using namespace axistune;
+using namespace axistune::gui;
+using axistune::testing::maybeScreenshot;
+using axistune::testing::waitUntil;
+
+namespace {
+double presetY(const std::string& key)
+{
+    auto m = sim::loadPreset("vmc");
+    return m->axis("Y")->values.at(key);
+}
+}  // namespace
+
+class TestLostMotionWizard : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { axistune::testing::installLanguageFromEnv(); }
+
+    void registeredAndWorksOffline()
+    {
+        const WizardEntry* e = findWizard("lost-motion");
+        QVERIFY(e);
+        QCOMPARE(e->order, 50);
+        QVERIFY(!e->needsDrive);
+    }
+
+    void badFileIsReportedWithFileAndLine()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("bad.csv");
+        {
+            std::ofstream f(path.toStdString());
+            f << "# radius_mm=50\n# feed_mm_min=1000\n# direction=ccw\nangle_deg,deviation_um\n0,1\n1,abc\n";
+        }
+        AppContext ctx;
+        LostMotionWizard w(ctx);
+        w.show();
+        QVERIFY(!w.sourcePage()->addFiles({path}));
+        const auto* label = w.findChild<QLabel*>("lmFileErrors");
+        QVERIFY(label);
+        QVERIFY2(label->text().contains("bad.csv") && label->text().contains("line 6"), qPrintable(label->text()));
+        QVERIFY(!w.sourcePage()->isComplete());
+    }
+
+    void circlesOnVmcGivePresetAandB()
+    {
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        ctx.drive().connectTo("sim:vmc");
+        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
+
+        LostMotionWizard w(ctx);
+        w.resize(1000, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* src = w.sourcePage();
+        auto* machine = w.findChild<QRadioButton*>("lmMachine");
+        QVERIFY(machine && machine->isEnabled());
+        machine->setChecked(true);
+        w.findChild<QLineEdit*>("lmCentres")->setText("-150, 0, 150");
+        QVERIFY(src->isComplete());
+        maybeScreenshot(&w, "lost-motion-01-source");
+        w.next();
+        QCOMPARE(w.currentId(), int(LostMotionWizard::Safety));
+        w.safetyPage()->confirmation()->setChecked(true);
+        QVERIFY(waitUntil([&] { return w.safetyPage()->isComplete(); }, 5000));
+        maybeScreenshot(&w, "lost-motion-02-safety");
+        w.next();
+        QCOMPARE(w.currentId(), int(LostMotionWizard::Circles));
+        QVERIFY(waitUntil([&] { return w.circlePage()->isComplete(); }, 60000));
+        QCOMPARE(w.data().traces.size(), std::size_t(3));
+        maybeScreenshot(&w, "lost-motion-03-circles");
+        w.next();
+        QCOMPARE(w.currentId(), int(LostMotionWizard::Diagnostics));
+        QVERIFY(waitUntil([&] { return w.diagnosticsPage()->isComplete(); }, 60000));
+        QVERIFY(w.diagnosticsPage()->table()->rowCount() >= 5);
+        QCOMPARE(w.diagnosticsPage()->plot()->traceCount(), 3);
+        maybeScreenshot(&w, "lost-motion-04-diagnostics");
+        w.next();
+        QCOMPARE(w.currentId(), int(LostMotionWizard::Fit));
+        maybeScreenshot(&w, "lost-motion-05-fit");
+        w.next();
+        QCOMPARE(w.currentId(), int(LostMotionWizard::Apply));
+        ApplyPage* apply = w.applyPage();
+        apply->confirmation()->setChecked(true);
+        // The device values must have been read (the diff) before Apply does anything.
+        QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); }, 10000));
+        maybeScreenshot(&w, "lost-motion-06-apply");
+        apply->applyButton()->click();
+        QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
+        w.next();
+        QCOMPARE(w.currentId(), int(LostMotionWizard::Verify));
+        QVERIFY(waitUntil([&] { return w.currentPage()->isComplete(); }, 60000));
+        QVERIFY(w.data().verification.has_value());
+        maybeScreenshot(&w, "lost-motion-07-verify");
+        w.next();
+        QCOMPARE(w.currentId(), int(LostMotionWizard::Save));
+        maybeScreenshot(&w, "lost-motion-08-save");
+        QVERIFY(w.savedSessionId() > 0);
+
+        auto rec = ctx.database()->loadSession(w.savedSessionId());
+        QVERIFY(rec.ok());
+        QCOMPARE(QString::fromStdString(rec->info.kind), QString("lost-motion"));
+        QCOMPARE(QString::fromStdString(rec->info.axis), QString("Y"));
+        const nlohmann::json* fit = nullptr;
+        const nlohmann::json* diag = nullptr;
+        const nlohmann::json* verify = nullptr;
+        for (const auto& r : rec->results) {
+            if (r.name == "fit")
+                fit = &r.data;
+            if (r.name == "diagnostics")
+                diag = &r.data;
+            if (r.name == "verification")
+                verify = &r.data;
+        }
+        QVERIFY(fit && diag && verify);
+        const double aY = presetY("plant.lost_motion_A"), bY = presetY("plant.lost_motion_B");
+        const double a = (*fit)["A_m_per_Nm"].get<double>(), b = (*fit)["B_per_Nm"].get<double>();
+        QVERIFY2(std::abs(a - aY) <= 0.10 * aY, qPrintable(QString("A %1 preset %2").arg(a).arg(aY)));
+        QVERIFY2(std::abs(b - bY) <= 0.10 * bY, qPrintable(QString("B %1 preset %2").arg(b).arg(bY)));
+        QVERIFY((*diag)["findings"].size() >= 5);
+        const double before = (*verify)["step_before_m"].get<double>();
+        const double after = (*verify)["step_after_m"].get<double>();
+        QVERIFY2(std::abs(after) < std::abs(before), qPrintable(QString("step %1 -> %2").arg(before).arg(after)));
+        // The Y lost motion at the last position (cy = 150 mm): (A + B·(x₀ + cy))·ΔT, ΔT = 2 × 0.305 N·m.
+        const double want = (aY + bY * (presetY("plant.screw_offset") + 0.15)) * 2.0 * presetY("plant.coulomb_motor");
+        QVERIFY2(std::abs(before - want) <= 0.10 * want, qPrintable(QString("before %1 want %2").arg(before).arg(want)));
+        // Captures: three traces and the verification; the model and both parameter sets.
+        QCOMPARE(rec->captures.size(), std::size_t(4));
+        bool model = false;
+        for (const auto& m : rec->models)
+            model = model || (m.kind == "lost_motion" && std::abs(m.data["A_m_per_Nm"].get<double>() - a) < 1e-15);
+        QVERIFY(model);
+        QCOMPARE(rec->parameterSets.size(), std::size_t(2));
+        QVERIFY(!rec->journal.empty());
+    }
+};
+
+QTEST_MAIN(TestLostMotionWizard)
+#include "tst_lostmotionwizard.moc"
