@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The frequency-response wizard (issue 8 item 4; docs/wizards/frf.md): safety → method and band →
+// run → Bode with validity bands and resonances → session. The test itself is the drive's FRF test
+// (docs/frequency-response-sim.md); the session stores the FRF only through store::frfAsCapture.
+#include "app/gui/FrfWizard.h"
+
+#include "app/gui/AppContext.h"
+#include "app/gui/WizardRegistry.h"
+
+#include "core/device/FrfTest.h"
+#include "core/store/FrfCapture.h"
+
+#include <QAbstractButton>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSpinBox>
+
+#include <cmath>
+
+namespace axistune {
+namespace gui {
+
+namespace {
+const WizardRegistrar kRegistrar{"frf", QT_TRANSLATE_NOOP("Wizards", "Frequency response…"), 10,
+                                 [](AppContext& ctx, QWidget* parent) -> QWizard* { return new FrfWizard(ctx, parent); }};
+}  // namespace
+
+FrfWizard::FrfWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_ctx(ctx)
+{
+    setObjectName("frfWizard");
+    setWindowTitle(tr("Frequency response"));
+    setWizardStyle(QWizard::ClassicStyle);
+    setOption(QWizard::NoBackButtonOnLastPage, false);
+    resize(1000, 700);
+    m_safety = new FrfSafetyPage(ctx, this);
+    m_config = new FrfConfigPage(ctx, *m_safety, this);
+    m_run = new TestRunPage(ctx, this);
+    m_run->setObjectName("frfRunPage");
+    m_result = new FrfResultPage(this);
+    m_save = new FrfSavePage(this);
+    setPage(SafetyId, m_safety);
+    setPage(ConfigId, m_config);
+    setPage(RunId, m_run);
+    setPage(ResultId, m_result);
+    setPage(SaveId, m_save);
+    m_run->setRequestFactory([this] {
+        m_lastRequest = request();
+        m_measurement.reset();
+        m_runSaved = false;
+        return std::vector<device::TestRequest>{m_lastRequest};
+    });
+    connect(m_run, &TestRunPage::runFinished, this, &FrfWizard::onRunFinished);
+    connect(this, &QWizard::currentIdChanged, this, &FrfWizard::onPageChanged);
+}
+
+device::TestRequest FrfWizard::request() const
+{
+    device::TestRequest r;
+    r.axis = field("axis").toString().toStdString();
+    r.type = device::TestType::Frf;
+    r.frfMethod = m_config->selectedMethod();
+    r.fminHz = field("fminHz").toDouble();
+    r.fmaxHz = field("fmaxHz").toDouble();
+    r.points = field("points").toInt();
+    r.amplitudePct = field("amplitudePct").toDouble();
+    return r;
+}
+
+void FrfWizard::onRunFinished(bool ok)
+{
+    if (!ok) {
+        if (!m_runSaved)
+            saveAborted(m_run->failure());
+        return;
+    }
+    const auto& replies = m_run->replies();
+    if (replies.empty() || !replies.back().frf) {
+        saveAborted(tr("The drive returned no frequency response."));
+        return;
+    }
+    m_measurement = replies.back().frf;
+    m_result->setMeasurement(m_measurement->frf, m_lastRequest.frfMethod);
+}
+
+void FrfWizard::onPageChanged(int id)
+{
+    if (id != SaveId)
+        return;
+    const auto& a = m_result->analysis();
+    m_save->showSaved(tr("Finish stores: the settings (axis %1, %2, %3–%4 Hz, %5 points, %6 % of rated torque), the "
+                         "measured frequency response (%7 points) and the %n resonance(s) found.",
+                         nullptr, static_cast<int>(a.resonances.size()))
+                          .arg(QString::fromStdString(m_lastRequest.axis),
+                               QString::fromLatin1(device::frfMethodName(m_lastRequest.frfMethod)))
+                          .arg(m_lastRequest.fminHz)
+                          .arg(m_lastRequest.fmaxHz)
+                          .arg(m_lastRequest.points)
+                          .arg(m_lastRequest.amplitudePct)
+                          .arg(m_result->measured().size()));
+}
+
+nlohmann::json FrfWizard::inputsJson() const
+{
+    const auto& r = m_lastRequest;
+    nlohmann::json j;
+    j["axis"] = r.axis;
+    j["method"] = device::frfMethodName(r.frfMethod);
+    j["fmin_Hz"] = r.fminHz;
+    j["fmax_Hz"] = r.fmaxHz;
+    j["points"] = r.points;
+    j["amplitude_pct"] = r.amplitudePct;
+    const double rated = m_safety->driveInfo().ratedTorqueNm();
+    if (std::isfinite(rated))
+        j["amplitude_Nm"] = r.amplitudePct / 100.0 * rated;
+    j["connection"] = m_ctx.drive().uri().toStdString();
+    if (std::isfinite(m_config->estimatedMotionS()))
+        j["estimated_motion_s"] = m_config->estimatedMotionS();
+    return j;
+}
+
+void FrfWizard::saveCompleted()
+{
+    if (m_runSaved || !m_measurement)
+        return;
+    store::SessionRecord rec;
+    rec.info.kind = "frf";
+    rec.info.axis = m_lastRequest.axis;
+    rec.info.status = store::SessionStatus::Completed;
+    rec.info.note = m_save->note()->text().toStdString();
+    rec.inputs = inputsJson();
+    rec.captures.push_back({"measured", store::frfAsCapture(m_result->measured())});
+    nlohmann::json res;
+    res["analysed"] = m_result->analysis().analysedForm.toStdString();
+    res["error"] = m_result->analysis().error.toStdString();
+    res["resonances"] = nlohmann::json::array();
+    for (const auto& x : m_result->analysis().resonances)
+        res["resonances"].push_back({{"frequency_Hz", x.freqHz},
+                                     {"peak_dB", x.peakDb},
+                                     {"width_Hz", x.widthHz},
+                                     {"width_one_sided", x.widthOneSided},
+                                     {"open_loop_dB", x.levelDb}});
+    rec.results.push_back({"resonances", res, {}});
+    nlohmann::json meas;
+    meas["motion_time_s"] = m_measurement->motionTimeS;
+    meas["fs_Hz"] = m_result->traceRateHz();
+    std::size_t valid = 0;
+    for (bool v : m_result->measured().valid)
+        valid += v ? 1 : 0;
+    meas["points"] = m_result->measured().size();
+    meas["valid_points"] = valid;
+    rec.results.push_back({"measurement", meas, {}});
+    auto id = m_ctx.saveSession(rec);
+    m_runSaved = true;
+    if (id) {
+        m_sessionId = *id;
+        emit sessionSaved(*id);
+    }
+}
+
+void FrfWizard::saveAborted(const QString& reason)
+{
+    store::SessionRecord rec;
+    rec.info.kind = "frf";
+    rec.info.axis = m_lastRequest.axis;
+    rec.info.status = store::SessionStatus::Aborted;
+    rec.info.note = reason.toStdString();
+    rec.inputs = inputsJson();
+    m_runSaved = true;
+    auto id = m_ctx.saveSession(rec);
+    if (id) {
+        m_sessionId = *id;
+        emit sessionSaved(*id);
+    }
+}
+
+void FrfWizard::accept()
+{
+    if (currentId() == SaveId)
+        saveCompleted();
+    QWizard::accept();
+}
+
+void FrfWizard::reject()
+{
+    if (m_run->isRunning()) {
+        m_run->abortRun();
+        if (!m_runSaved)
+            saveAborted(tr("The wizard was closed during the run."));
+    }
+    QWizard::reject();
+}
+
+}  // namespace gui
+}  // namespace axistune

@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The frequency-response wizard (issue 8 item 4, docs/wizards/frf.md):
+//   1. safety   — axis, the limits that matter for a torque injection, the excitation amplitude in %
+//                 of rated torque (refused above device::kMaxFrfAmplitudePct), confirmation;
+//   2. method   — multi-sweep sine stream (default), conventional sine stream, PRBS with Welch,
+//                 multisine (simulated drives), band fmin..fmax and points, estimated motion time
+//                 (device::planFrfTest / planMultisineTest from the drive's own parameters);
+//   3. run      — one device::TestRequest of type Frf on the shared TestRunPage (progress, Abort);
+//   4. result   — Bode plot of the measured closed loop with coherence, the validity bands
+//                 ("valid only by multi-sweep" fs/2..fs, "not measurable" at invalid points and above
+//                 fs) and the resonances of the open loop (tuning::findResonances) as table and markers;
+//   5. save     — the session (kind "frf"): inputs, the FRF as capture "measured", the resonances.
+// A run that fails (Abort, lost connection, drive fault) is saved at once as Aborted with the reason.
+
+#include "app/gui/WizardPages.h"
+
+#include "core/device/Drive.h"
+#include "core/dsp/FrequencyResponse.h"
+#include "core/tuning/Resonance.h"
+
+#include <QFutureWatcher>
+#include <QWizard>
+#include <QWizardPage>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace axistune {
+namespace widgets {
+class BodePlot;
+}
+namespace gui {
+
+class AppContext;
+
+/// The drive values the FRF pages need (SI), read once per axis.
+struct FrfDriveInfo {
+    QString axis;
+    model::ParameterValues values;
+    double ratedTorqueNm() const;  ///< motor.rated_current × motor.torque_constant (NaN when unknown)
+    double traceRateHz() const;    ///< 1 / (trace.divider × velocity.period) (NaN when unknown)
+};
+
+/// Safety step: SafetyPage plus the excitation amplitude (wizard field "amplitudePct").
+class FrfSafetyPage : public SafetyPage {
+    Q_OBJECT
+public:
+    explicit FrfSafetyPage(AppContext& ctx, QWidget* parent = nullptr);
+    QDoubleSpinBox* amplitude() const { return m_amplitude; }
+    const FrfDriveInfo& driveInfo() const { return m_info; }
+    void initializePage() override;
+    bool isComplete() const override;
+
+private:
+    void readInfo();
+    void showAmplitude();
+    AppContext& m_ctx;
+    FrfDriveInfo m_info;
+    int m_request = 0;
+    QDoubleSpinBox* m_amplitude = nullptr;
+    QLabel* m_amplitudeText = nullptr;
+};
+
+/// Method and band (fields "method", "fminHz", "fmaxHz", "points") with the estimated motion time.
+class FrfConfigPage : public QWizardPage {
+    Q_OBJECT
+public:
+    explicit FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidget* parent = nullptr);
+    QComboBox* method() const { return m_method; }
+    QDoubleSpinBox* fmin() const { return m_fmin; }
+    QDoubleSpinBox* fmax() const { return m_fmax; }
+    QSpinBox* points() const { return m_points; }
+    /// Motion time of the planned test [s]; NaN while unknown or when the plan is refused.
+    double estimatedMotionS() const { return m_motionS; }
+    device::FrfMethod selectedMethod() const;
+    void initializePage() override;
+    bool isComplete() const override;
+
+private:
+    void updateEstimate();
+    AppContext& m_ctx;
+    const FrfSafetyPage& m_safety;
+    QComboBox* m_method = nullptr;
+    QDoubleSpinBox* m_fmin = nullptr;
+    QDoubleSpinBox* m_fmax = nullptr;
+    QSpinBox* m_points = nullptr;
+    QLabel* m_validity = nullptr;
+    QLabel* m_estimate = nullptr;
+    QFutureWatcher<std::pair<double, QString>>* m_watcher = nullptr;
+    int m_generation = 0;
+    int m_pendingGeneration = -1;
+    bool m_planOk = false;
+    double m_motionS = 0.0;
+};
+
+/// What the result page computes off the GUI thread.
+struct FrfAnalysis {
+    std::vector<tuning::Resonance> resonances;
+    QString error;        ///< why no resonance list (e.g. too few usable points)
+    QString analysedForm; ///< which response the resonances come from
+};
+
+/// Bode plot with validity bands and resonance markers, and the resonance table.
+class FrfResultPage : public QWizardPage {
+    Q_OBJECT
+public:
+    explicit FrfResultPage(QWidget* parent = nullptr);
+    /// The measured FRF to show (set by the wizard before the page is entered).
+    void setMeasurement(const dsp::FrequencyResponse& frf, device::FrfMethod method);
+    widgets::BodePlot* bodePlot() const { return m_plot; }
+    QTableWidget* resonanceTable() const { return m_table; }
+    const dsp::FrequencyResponse& measured() const { return m_frf; }
+    bool analysed() const { return m_done; }
+    const FrfAnalysis& analysis() const { return m_analysis; }
+    double traceRateHz() const { return m_fsHz; }
+    void initializePage() override;
+    bool isComplete() const override;
+
+private:
+    void showAnalysis();
+    void addBands();
+    dsp::FrequencyResponse m_frf;
+    device::FrfMethod m_method = device::FrfMethod::MultiSweep;
+    double m_fsHz = 0.0;
+    FrfAnalysis m_analysis;
+    bool m_done = false;
+    widgets::BodePlot* m_plot = nullptr;
+    QTableWidget* m_table = nullptr;
+    QLabel* m_summary = nullptr;
+    QFutureWatcher<FrfAnalysis>* m_watcher = nullptr;
+};
+
+/// Saves the session on entering; shows its id and what was stored.
+class FrfSavePage : public QWizardPage {
+    Q_OBJECT
+public:
+    explicit FrfSavePage(QWidget* parent = nullptr);
+    QLineEdit* note() const { return m_note; }
+    QLabel* status() const { return m_status; }
+    void showSaved(const QString& text);
+
+private:
+    QLineEdit* m_note = nullptr;
+    QLabel* m_status = nullptr;
+};
+
+class FrfWizard : public QWizard {
+    Q_OBJECT
+public:
+    enum PageId { SafetyId, ConfigId, RunId, ResultId, SaveId };
+
+    explicit FrfWizard(AppContext& ctx, QWidget* parent = nullptr);
+
+    FrfSafetyPage* safetyPage() const { return m_safety; }
+    FrfConfigPage* configPage() const { return m_config; }
+    TestRunPage* runPage() const { return m_run; }
+    FrfResultPage* resultPage() const { return m_result; }
+    FrfSavePage* savePage() const { return m_save; }
+
+    /// The test as configured on the pages.
+    device::TestRequest request() const;
+    /// Id of the last session this wizard saved (completed or aborted); 0: none.
+    std::int64_t savedSessionId() const { return m_sessionId; }
+
+    /// Finish on the save page stores the completed session.
+    void accept() override;
+    void reject() override;
+
+signals:
+    void sessionSaved(qint64 id);
+
+private:
+    void onRunFinished(bool ok);
+    void onPageChanged(int id);
+    /// The inputs JSON of the current request.
+    nlohmann::json inputsJson() const;
+    void saveCompleted();
+    void saveAborted(const QString& reason);
+
+    AppContext& m_ctx;
+    FrfSafetyPage* m_safety = nullptr;
+    FrfConfigPage* m_config = nullptr;
+    TestRunPage* m_run = nullptr;
+    FrfResultPage* m_result = nullptr;
+    FrfSavePage* m_save = nullptr;
+    device::TestRequest m_lastRequest;
+    std::shared_ptr<const device::FrfMeasurement> m_measurement;
+    bool m_runSaved = false;  ///< the session of the current run is stored
+    std::int64_t m_sessionId = 0;
+};
+
+}  // namespace gui
+}  // namespace axistune

@@ -1,0 +1,496 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Pages of the frequency-response wizard (FrfWizard.h, docs/wizards/frf.md). The maths lives in
+// core: the motion time comes from the drive's own test plan (device::planFrfTest /
+// planMultisineTest with the timing of device::loopTimingFromParameters), the open loop from
+// dsp::openLoopFromClosedLoop and the resonances from tuning::findResonances
+// (spec/current-loop-and-multisweep-frf.md §4.3 step 7).
+#include "app/gui/FrfWizard.h"
+
+#include "app/gui/AppContext.h"
+
+#include "core/device/FrfTest.h"
+#include "core/device/MultisineTest.h"
+#include "core/dsp/LoopAnalysis.h"
+#include "widgets/BodePlot.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <cmath>
+#include <limits>
+
+namespace axistune {
+namespace gui {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double valueOr(const model::ParameterValues& v, const char* key, double fallback)
+{
+    const auto it = v.find(key);
+    return it == v.end() ? fallback : it->second;
+}
+
+/// Motion time of the test the drive would plan for this request, or the drive's reason to refuse it.
+std::pair<double, QString> planMotionTime(const model::ParameterValues& v, const device::TestRequest& r)
+{
+    const double rated = valueOr(v, "motor.rated_current", kNaN) * valueOr(v, "motor.torque_constant", kNaN);
+    const double period = valueOr(v, "velocity.period", kNaN) * valueOr(v, "trace.divider", kNaN);
+    const double h = valueOr(v, "current.period", kNaN);
+    if (!std::isfinite(rated) || !std::isfinite(period) || !(period > 0.0))
+        return {kNaN, QCoreApplication::translate("FrfConfigPage", "The drive's ratings or trace rate are unknown.")};
+    auto timing = device::loopTimingFromParameters(v);
+    if (!timing)
+        return {kNaN, QString::fromStdString(timing.error().detail)};
+    const double amplitudeNm = r.amplitudePct / 100.0 * rated;
+    if (r.frfMethod == device::FrfMethod::Multisine) {
+        if (!(h > 0.0))
+            return {kNaN, QCoreApplication::translate("FrfConfigPage", "The current-loop period is unknown.")};
+        device::MultisinePlanOptions o;
+        o.fsHz = 1.0 / period;
+        o.ticksPerSample = static_cast<int>(std::llround(period / h));
+        o.currentPeriodS = h;
+        o.ticksPerVelocity = static_cast<int>(std::llround(valueOr(v, "velocity.period", h) / h));
+        o.bands = device::multisineBandsOf(r);
+        o.phases = r.multisinePhases;
+        o.peakNm = amplitudeNm;
+        o.timing = *timing;
+        auto plan = device::planMultisineTest(o);
+        if (!plan)
+            return {kNaN, QString::fromStdString(plan.error().detail)};
+        return {plan->durationS(), {}};
+    }
+    device::FrfPlanOptions o;
+    o.method = r.frfMethod;
+    o.fsHz = 1.0 / period;
+    o.fminHz = r.fminHz;
+    o.fmaxHz = r.fmaxHz;
+    o.points = r.points;
+    o.amplitudeNm = amplitudeNm;
+    o.timing = *timing;
+    auto plan = device::planFrfTest(o);
+    if (!plan)
+        return {kNaN, QString::fromStdString(plan.error().detail)};
+    return {plan->durationS(), {}};
+}
+
+QString hz(double f) { return QCoreApplication::translate("FrfResultPage", "%1 Hz").arg(f, 0, 'f', f < 100 ? 1 : 0); }
+}  // namespace
+
+double FrfDriveInfo::ratedTorqueNm() const
+{
+    return valueOr(values, "motor.rated_current", kNaN) * valueOr(values, "motor.torque_constant", kNaN);
+}
+
+double FrfDriveInfo::traceRateHz() const
+{
+    return 1.0 / (valueOr(values, "trace.divider", kNaN) * valueOr(values, "velocity.period", kNaN));
+}
+
+// ---------------------------------------------------------------------------------------------
+// FrfSafetyPage
+
+FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx, parent), m_ctx(ctx)
+{
+    setObjectName("frfSafetyPage");
+    setLimitKeys({"motor.rated_current", "motor.torque_constant", "motor.max_current", "drive.max_voltage",
+                  "velocity.kp", "velocity.ki", "velocity.inertia", "trace.divider"});
+    setMotionDescription(
+        tr("The axis holds velocity 0 in velocity mode while a small torque disturbance is added to the "
+           "velocity-controller output. The axis vibrates with small amplitude at each test frequency; it does "
+           "not travel. Abort stops the excitation at once and restores the parameters."));
+    auto* row = new QWidget(this);
+    auto* form = new QFormLayout(row);
+    form->setContentsMargins(0, 0, 0, 0);
+    m_amplitude = new QDoubleSpinBox(row);
+    m_amplitude->setObjectName("frfAmplitude");
+    m_amplitude->setRange(0.1, 100.0);  // above the drive's maximum: refused with a message, not clamped
+    m_amplitude->setDecimals(1);
+    m_amplitude->setSingleStep(0.5);
+    m_amplitude->setValue(5.0);
+    m_amplitude->setSuffix(tr(" % of rated torque"));
+    form->addRow(tr("Excitation amplitude:"), m_amplitude);
+    m_amplitudeText = new QLabel(row);
+    m_amplitudeText->setObjectName("frfAmplitudeText");
+    m_amplitudeText->setWordWrap(true);
+    form->addRow(QString(), m_amplitudeText);
+    // Above the confirmation, so that the confirmation covers the amplitude.
+    if (auto* lay = qobject_cast<QVBoxLayout*>(layout()))
+        lay->insertWidget(lay->count() - 1, row);
+    registerField("amplitudePct", m_amplitude, "value", SIGNAL(valueChanged(double)));
+    connect(m_amplitude, &QDoubleSpinBox::valueChanged, this, [this] {
+        confirmation()->setChecked(false);  // a new amplitude needs a new confirmation
+        showAmplitude();
+        emit completeChanged();
+    });
+    if (auto* axisBox = findChild<QComboBox*>())
+        connect(axisBox, &QComboBox::currentTextChanged, this, [this] { readInfo(); });
+    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+        if (r.id != m_request)
+            return;
+        m_info.axis = r.axis;
+        m_info.values = r.ok ? r.values : model::ParameterValues{};
+        showAmplitude();
+    });
+    showAmplitude();
+}
+
+void FrfSafetyPage::initializePage()
+{
+    SafetyPage::initializePage();
+    readInfo();
+}
+
+void FrfSafetyPage::readInfo()
+{
+    m_info = {};
+    showAmplitude();
+    if (m_ctx.drive().isConnected() && !axis().isEmpty())
+        m_request = m_ctx.drive().readParameters(axis());
+}
+
+void FrfSafetyPage::showAmplitude()
+{
+    const double pct = m_amplitude->value();
+    if (pct > device::kMaxFrfAmplitudePct) {
+        m_amplitudeText->setText(tr("<span style='color:#b00000'>Refused: the drive allows at most %1 % of rated "
+                                    "torque.</span>")
+                                     .arg(device::kMaxFrfAmplitudePct));
+        return;
+    }
+    const double rated = m_info.ratedTorqueNm();
+    if (!std::isfinite(rated)) {
+        m_amplitudeText->setText(tr("%1 % of rated torque (at most %2 %).").arg(pct).arg(device::kMaxFrfAmplitudePct));
+        return;
+    }
+    m_amplitudeText->setText(tr("%1 % of the rated torque %2 N·m = %3 N·m peak of the injected torque (at most %4 %).")
+                                 .arg(pct)
+                                 .arg(rated, 0, 'g', 4)
+                                 .arg(pct / 100.0 * rated, 0, 'g', 4)
+                                 .arg(device::kMaxFrfAmplitudePct));
+}
+
+bool FrfSafetyPage::isComplete() const
+{
+    return SafetyPage::isComplete() && m_amplitude->value() <= device::kMaxFrfAmplitudePct;
+}
+
+// ---------------------------------------------------------------------------------------------
+// FrfConfigPage
+
+FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_safety(safety)
+{
+    setObjectName("frfConfigPage");
+    setTitle(tr("Method and band"));
+    setSubTitle(tr("How the axis is excited and which frequencies are measured."));
+    auto* lay = new QVBoxLayout(this);
+    auto* form = new QFormLayout;
+    m_method = new QComboBox(this);
+    m_method->setObjectName("frfMethod");
+    m_method->addItem(tr("Multi-sweep sine stream (valid up to the trace rate)"), int(device::FrfMethod::MultiSweep));
+    m_method->addItem(tr("Conventional sine stream (valid up to half the trace rate)"), int(device::FrfMethod::Conventional));
+    m_method->addItem(tr("PRBS with Welch averaging and coherence (up to half the trace rate)"), int(device::FrfMethod::Prbs));
+    form->addRow(tr("Method:"), m_method);
+    m_fmin = new QDoubleSpinBox(this);
+    m_fmin->setObjectName("frfFmin");
+    m_fmin->setRange(0.1, 100000.0);
+    m_fmin->setDecimals(1);
+    m_fmin->setValue(10.0);
+    m_fmin->setSuffix(tr(" Hz"));
+    form->addRow(tr("Lowest frequency:"), m_fmin);
+    m_fmax = new QDoubleSpinBox(this);
+    m_fmax->setObjectName("frfFmax");
+    m_fmax->setRange(0.1, 100000.0);
+    m_fmax->setDecimals(1);
+    m_fmax->setValue(3900.0);
+    m_fmax->setSuffix(tr(" Hz"));
+    form->addRow(tr("Highest frequency:"), m_fmax);
+    m_points = new QSpinBox(this);
+    m_points->setObjectName("frfPoints");
+    m_points->setRange(1, 5000);
+    m_points->setValue(60);
+    form->addRow(tr("Frequencies (log-spaced):"), m_points);
+    lay->addLayout(form);
+    m_validity = new QLabel(this);
+    m_validity->setWordWrap(true);
+    lay->addWidget(m_validity);
+    m_estimate = new QLabel(this);
+    m_estimate->setObjectName("frfEstimate");
+    m_estimate->setWordWrap(true);
+    lay->addWidget(m_estimate);
+    lay->addStretch(1);
+    registerField("method", m_method);
+    registerField("fminHz", m_fmin, "value", SIGNAL(valueChanged(double)));
+    registerField("fmaxHz", m_fmax, "value", SIGNAL(valueChanged(double)));
+    registerField("points", m_points);
+    m_watcher = new QFutureWatcher<std::pair<double, QString>>(this);
+    connect(m_watcher, &QFutureWatcherBase::finished, this, [this] {
+        const auto [motion, why] = m_watcher->result();
+        const bool stale = m_pendingGeneration != m_generation;
+        m_pendingGeneration = -1;
+        if (stale) {  // the settings changed meanwhile
+            updateEstimate();
+            return;
+        }
+        m_planOk = why.isEmpty();
+        m_motionS = m_planOk ? motion : kNaN;
+        m_estimate->setText(m_planOk ? tr("Estimated motion time: %1 s (settling included).").arg(motion, 0, 'f', 1)
+                                     : tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>")
+                                           .arg(why.toHtmlEscaped()));
+        emit completeChanged();
+    });
+    auto changed = [this] {
+        ++m_generation;
+        m_planOk = false;
+        emit completeChanged();
+        updateEstimate();
+    };
+    connect(m_method, &QComboBox::currentIndexChanged, this, changed);
+    connect(m_fmin, &QDoubleSpinBox::valueChanged, this, changed);
+    connect(m_fmax, &QDoubleSpinBox::valueChanged, this, changed);
+    connect(m_points, &QSpinBox::valueChanged, this, changed);
+}
+
+device::FrfMethod FrfConfigPage::selectedMethod() const
+{
+    return static_cast<device::FrfMethod>(m_method->currentData().toInt());
+}
+
+void FrfConfigPage::initializePage()
+{
+    // The multisine is offered only where the drive runs it (the simulated drive; the Modbus register
+    // map has no multisine method yet).
+    const int ms = m_method->findData(int(device::FrfMethod::Multisine));
+    const bool simulated = m_ctx.drive().uri().startsWith("sim:");
+    if (simulated && ms < 0)
+        m_method->addItem(tr("Multisine, all lines at once (valid up to the trace rate)"), int(device::FrfMethod::Multisine));
+    else if (!simulated && ms >= 0)
+        m_method->removeItem(ms);
+    const double fs = m_safety.driveInfo().traceRateHz();
+    if (std::isfinite(fs)) {
+        m_validity->setText(tr("Trace rate fs = %1 Hz. The multi-sweep and multisine methods measure up to fs; the "
+                               "conventional sine stream and PRBS only up to fs/2 = %2 Hz (points above are marked "
+                               "not valid).")
+                                .arg(fs, 0, 'f', 0)
+                                .arg(fs / 2.0, 0, 'f', 0));
+        if (m_fmax->value() >= fs)
+            m_fmax->setValue(std::floor(0.975 * fs));
+    } else {
+        m_validity->setText(tr("The trace rate of the drive is unknown."));
+    }
+    ++m_generation;
+    m_planOk = false;
+    updateEstimate();
+}
+
+void FrfConfigPage::updateEstimate()
+{
+    if (m_pendingGeneration >= 0)
+        return;  // one computation at a time; the finished handler starts the next
+    auto* w = qobject_cast<FrfWizard*>(wizard());
+    if (!w)
+        return;
+    m_estimate->setText(tr("Estimating the motion time…"));
+    m_pendingGeneration = m_generation;
+    const auto values = m_safety.driveInfo().values;
+    const auto request = w->request();
+    m_watcher->setFuture(QtConcurrent::run([values, request] { return planMotionTime(values, request); }));
+}
+
+bool FrfConfigPage::isComplete() const { return m_planOk && m_pendingGeneration < 0; }
+
+// ---------------------------------------------------------------------------------------------
+// FrfResultPage
+
+FrfResultPage::FrfResultPage(QWidget* parent) : QWizardPage(parent)
+{
+    setObjectName("frfResultPage");
+    setTitle(tr("Frequency response"));
+    setSubTitle(tr("The measured closed velocity loop, where it is valid, and the resonances found."));
+    auto* lay = new QVBoxLayout(this);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    m_plot = new widgets::BodePlot(split);
+    m_plot->setObjectName("frfBodePlot");
+    m_plot->setMinimumHeight(300);
+    auto* bottom = new QWidget(split);
+    auto* bl = new QVBoxLayout(bottom);
+    bl->setContentsMargins(0, 0, 0, 0);
+    m_summary = new QLabel(bottom);
+    m_summary->setObjectName("frfSummary");
+    m_summary->setWordWrap(true);
+    bl->addWidget(m_summary);
+    m_table = new QTableWidget(bottom);
+    m_table->setObjectName("resonanceTable");
+    m_table->setColumnCount(4);
+    m_table->setHorizontalHeaderLabels({tr("Frequency [Hz]"), tr("Peak [dB]"), tr("Width (−3 dB) [Hz]"),
+                                        tr("Open-loop gain [dB]")});
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->verticalHeader()->hide();
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    bl->addWidget(m_table);
+    split->addWidget(m_plot);
+    split->addWidget(bottom);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    lay->addWidget(split);
+    m_watcher = new QFutureWatcher<FrfAnalysis>(this);
+    connect(m_watcher, &QFutureWatcherBase::finished, this, [this] {
+        m_analysis = m_watcher->result();
+        m_done = true;
+        showAnalysis();
+        emit completeChanged();
+    });
+}
+
+void FrfResultPage::setMeasurement(const dsp::FrequencyResponse& frf, device::FrfMethod method)
+{
+    m_frf = frf;
+    m_method = method;
+    m_done = false;
+    m_analysis = {};
+    const auto it = frf.metadata.find("fs_Hz");
+    m_fsHz = it == frf.metadata.end() ? 0.0 : std::atof(it->second.c_str());
+}
+
+void FrfResultPage::initializePage()
+{
+    m_plot->clearResponses();
+    m_plot->clearBands();
+    m_plot->clearMarkers();
+    m_table->setRowCount(0);
+    if (m_frf.empty()) {
+        m_summary->setText(tr("No frequency response was measured."));
+        return;
+    }
+    m_plot->addResponse(m_frf, tr("Measured"));
+    addBands();
+    m_plot->setFrequencyRange(m_frf.freqHz.front() / 1.15, m_frf.freqHz.back() * 1.15);
+    m_summary->setText(tr("Analysing…"));
+    if (m_done) {
+        showAnalysis();
+        return;
+    }
+    const dsp::FrequencyResponse frf = m_frf;
+    m_watcher->setFuture(QtConcurrent::run([frf] {
+        FrfAnalysis a;
+        const auto m = frf.metadata.find("measurement");
+        const bool complementary = m != frf.metadata.end() && m->second == "complementary";
+        const auto form = complementary ? dsp::openLoopFromClosedLoop(frf, dsp::LoopMeasurement::Complementary) : frf;
+        a.analysedForm = complementary
+                             ? QCoreApplication::translate("FrfResultPage", "the open loop L = T/(1−T) of the measured T")
+                             : QCoreApplication::translate("FrfResultPage", "the measured response");
+        tuning::ResonanceOptions o;
+        o.fminHz = frf.freqHz.front();
+        o.fmaxHz = frf.freqHz.back();
+        auto r = tuning::findResonances(form, o);
+        if (r)
+            a.resonances = *r;
+        else
+            a.error = QString::fromStdString(r.error().detail);
+        return a;
+    }));
+}
+
+bool FrfResultPage::isComplete() const { return m_done; }
+
+void FrfResultPage::addBands()
+{
+    const auto& f = m_frf.freqHz;
+    const double top = f.back() * 1.15;
+    if (m_fsHz > 0.0) {
+        if (top > m_fsHz / 2.0)
+            m_plot->addBand(m_fsHz / 2.0, m_fsHz, widgets::BodePlot::BandKind::MultiSweepOnly);
+        if (top > m_fsHz)
+            m_plot->addBand(m_fsHz, std::max(top, 2.0 * m_fsHz), widgets::BodePlot::BandKind::NotMeasurable);
+    }
+    // Runs of points the method could not measure (voltage limit, above fs/2 for the single-sweep
+    // methods). Above fs/2 the single-sweep methods are already explained by the multi-sweep band.
+    const bool halfBand = m_method == device::FrfMethod::Conventional || m_method == device::FrfMethod::Prbs;
+    const std::size_t n = f.size();
+    for (std::size_t i = 0; i < n;) {
+        if (m_frf.valid[i]) {
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        while (j + 1 < n && !m_frf.valid[j + 1])
+            ++j;
+        const double from = i > 0 ? std::sqrt(f[i - 1] * f[i]) : f[i] / 1.05;
+        const double to = j + 1 < n ? std::sqrt(f[j] * f[j + 1]) : f[j] * 1.05;
+        if (!(halfBand && m_fsHz > 0.0 && f[i] >= m_fsHz / 2.0))
+            m_plot->addBand(from, to, widgets::BodePlot::BandKind::NotMeasurable);
+        i = j + 1;
+    }
+}
+
+void FrfResultPage::showAnalysis()
+{
+    m_plot->clearMarkers();
+    m_table->setRowCount(0);
+    std::size_t valid = 0;
+    for (bool v : m_frf.valid)
+        valid += v ? 1 : 0;
+    QString text = tr("%1 of %2 points valid.").arg(valid).arg(m_frf.size());
+    if (m_fsHz > 0.0)
+        text += QLatin1Char(' ') + tr("Trace rate fs = %1 Hz.").arg(m_fsHz, 0, 'f', 0);
+    if (!m_analysis.error.isEmpty()) {
+        text += QLatin1Char(' ') + tr("No resonance list: %1").arg(m_analysis.error);
+    } else if (m_analysis.resonances.empty()) {
+        text += QLatin1Char(' ') + tr("No resonance found in %1.").arg(m_analysis.analysedForm);
+    } else {
+        text += QLatin1Char(' ') + tr("%n resonance(s) found in %1:", nullptr, static_cast<int>(m_analysis.resonances.size()))
+                                       .arg(m_analysis.analysedForm);
+    }
+    m_summary->setText(text);
+    for (const auto& r : m_analysis.resonances) {
+        const int row = m_table->rowCount();
+        m_table->insertRow(row);
+        m_table->setItem(row, 0, new QTableWidgetItem(QString::number(r.freqHz, 'f', 1)));
+        m_table->setItem(row, 1, new QTableWidgetItem(QString::number(r.peakDb, 'f', 1)));
+        auto* w = new QTableWidgetItem(QString::number(r.widthHz, 'f', 1));
+        if (r.widthOneSided)
+            w->setToolTip(tr("Only one −3 dB crossing inside the band: twice the half width."));
+        m_table->setItem(row, 2, w);
+        m_table->setItem(row, 3, new QTableWidgetItem(QString::number(r.levelDb, 'f', 1)));
+        m_plot->addMarker(r.freqHz, widgets::BodePlot::MarkerKind::Resonance, hz(r.freqHz));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// FrfSavePage
+
+FrfSavePage::FrfSavePage(QWidget* parent) : QWizardPage(parent)
+{
+    setObjectName("frfSavePage");
+    setTitle(tr("Save"));
+    setSubTitle(tr("Finish stores the measurement as a session of this machine."));
+    auto* lay = new QVBoxLayout(this);
+    auto* form = new QFormLayout;
+    m_note = new QLineEdit(this);
+    m_note->setObjectName("frfNote");
+    m_note->setPlaceholderText(tr("e.g. before notch tuning, table empty"));
+    form->addRow(tr("Note:"), m_note);
+    lay->addLayout(form);
+    m_status = new QLabel(this);
+    m_status->setObjectName("frfSaveStatus");
+    m_status->setWordWrap(true);
+    lay->addWidget(m_status);
+    lay->addStretch(1);
+}
+
+void FrfSavePage::showSaved(const QString& text) { m_status->setText(text); }
+
+}  // namespace gui
+}  // namespace axistune

@@ -1,0 +1,370 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The frequency-response wizard end to end (issue 8 "What must be true", docs/wizards/frf.md):
+// every page driven on the simulated dd-table, in process and over Modbus against axistune-simdrive;
+// a killed simdrive during the run; Abort during the run.
+//
+// The machine is the dd-table preset with its encoder quantization, Coulomb friction and current
+// noise switched off ("dd-table-linear", written by this test from resources/machines/dd-table.json
+// into a temporary resource directory, AXISTUNE_RESOURCE_DIR): the preset's 3.6e6 counts/rev
+// encoder cannot resolve the nanoradian motion at kilohertz, so the 3.3 kHz mode is invisible to any
+// measurement with the preset as it is (docs/frequency-response-sim.md, docs/notch.md; the core test
+// of issue 3 switches quantization off the same way). The 3.3 kHz expected here is read from the
+// preset's "modes" list, not from the code under test.
+#include "app/gui/AppContext.h"
+#include "app/gui/FrfWizard.h"
+#include "app/gui/WizardRegistry.h"
+
+#include "core/device/FrfTest.h"
+#include "core/store/FrfCapture.h"
+#include "tests/app/cli/SimDriveProcess.h"
+#include "tests/gui/GuiTestUtil.h"
+#include "widgets/BodePlot.h"
+
+#include <QAbstractButton>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QtTest>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+
+using namespace axistune;
+using axistune::gui::FrfWizard;
+using axistune::testing::maybeScreenshot;
+using axistune::testing::waitUntil;
+
+namespace {
+
+const std::string kResources = std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources";
+
+struct Band {
+    double fmin, fmax;
+    int points;
+    double amplitudePct;
+};
+
+// 2–3.9 kHz with 40 points (about 1.1 % spacing near 3.3 kHz) and 3 % amplitude: at 5 % the current
+// loop reaches its voltage limit near 2.1–2.9 kHz on dd-table (docs/frequency-response-sim.md).
+constexpr Band kResonanceBand{2000.0, 3900.0, 40, 3.0};
+
+bool connectTo(gui::AppContext& ctx, const QString& uri)
+{
+    ctx.drive().connectTo(uri);
+    return waitUntil([&] { return ctx.drive().isConnected(); }, 20000);
+}
+
+/// Sets the pages of a shown wizard up to the run page and presses Next into the run.
+void configureAndStart(FrfWizard& w, const Band& b, bool screenshots)
+{
+    auto* safety = w.safetyPage();
+    QCOMPARE(w.currentId(), int(FrfWizard::SafetyId));
+    // The rated torque read from the drive appears in the amplitude text (N·m).
+    QVERIFY(waitUntil([&] { return safety->findChild<QLabel*>("frfAmplitudeText")->text().contains("N·m"); }, 20000));
+    safety->amplitude()->setValue(b.amplitudePct);
+    QVERIFY(!w.button(QWizard::NextButton)->isEnabled());  // the confirmation is required first
+    safety->confirmation()->setChecked(true);
+    QVERIFY(w.button(QWizard::NextButton)->isEnabled());
+    if (screenshots)
+        maybeScreenshot(&w, "frf-01-safety");
+    w.next();
+    QCOMPARE(w.currentId(), int(FrfWizard::ConfigId));
+    auto* cfg = w.configPage();
+    QCOMPARE(cfg->method()->currentIndex(), 0);  // multi-sweep is the default
+    QCOMPARE(cfg->selectedMethod(), device::FrfMethod::MultiSweep);
+    cfg->fmin()->setValue(b.fmin);
+    cfg->fmax()->setValue(b.fmax);
+    cfg->points()->setValue(b.points);
+    QVERIFY2(waitUntil([&] { return cfg->isComplete(); }, 20000),
+             qPrintable(cfg->findChild<QLabel*>("frfEstimate")->text()));
+    QVERIFY(std::isfinite(cfg->estimatedMotionS()) && cfg->estimatedMotionS() > 0.0);
+    if (screenshots)
+        maybeScreenshot(&w, "frf-02-method");
+    w.next();
+    QCOMPARE(w.currentId(), int(FrfWizard::RunId));
+}
+
+/// The 3.3 kHz mode of the preset (independent source of the expected value).
+double presetModeNear3300()
+{
+    std::ifstream f(kResources + "/machines/dd-table.json");
+    const auto j = nlohmann::json::parse(f);
+    for (const auto& m : j["axes"][0]["modes"])
+        if (m["frequency_Hz"].get<double>() > 3000.0)
+            return m["frequency_Hz"].get<double>();
+    return NAN;
+}
+
+/// Drives a complete wizard run and checks plot, resonances and the stored session.
+void runCompleteWizard(gui::AppContext& ctx, bool screenshots)
+{
+    FrfWizard w(ctx);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    configureAndStart(w, kResonanceBand, screenshots);
+    if (QTest::currentTestFailed())
+        return;
+    auto* run = w.runPage();
+    QVERIFY(waitUntil([&] { return !run->isRunning(); }, 60000));
+    QVERIFY2(run->succeeded(), qPrintable(run->failure()));
+    if (screenshots)
+        maybeScreenshot(&w, "frf-03-run");
+    w.next();
+    QCOMPARE(w.currentId(), int(FrfWizard::ResultId));
+    auto* res = w.resultPage();
+    QVERIFY(waitUntil([&] { return res->analysed(); }, 30000));
+    if (screenshots)
+        maybeScreenshot(&w, "frf-04-result");
+
+    // The 3.3 kHz resonance within 2 % (issue 3/8), in the list and as a marker.
+    const double mode = presetModeNear3300();
+    QCOMPARE(mode, 3300.0);
+    const auto& list = res->analysis().resonances;
+    bool found = false;
+    for (const auto& r : list)
+        found = found || std::abs(r.freqHz - mode) <= 0.02 * mode;
+    QVERIFY2(found, qPrintable(QString("resonances: %1, error '%2'").arg(list.size()).arg(res->analysis().error)));
+    QCOMPARE(res->resonanceTable()->rowCount(), int(list.size()));
+    auto* plot = res->bodePlot();
+    QCOMPARE(plot->markerCount(), int(list.size()));
+    // fs = 4 kHz (trace.divider 1 × 250 µs): the band fs/2..fs is shaded "valid only by multi-sweep".
+    QCOMPARE(res->traceRateHz(), 4000.0);
+    QVERIFY(plot->bandCount() >= 1);
+    QCOMPARE(plot->responseCount(), 1);
+
+    // The plotted response is the measured one, point by point.
+    const auto& measured = res->measured();
+    QCOMPARE(int(measured.size()), kResonanceBand.points);
+    int compared = 0;
+    for (std::size_t i = 0; i < measured.size(); ++i) {
+        if (!measured.valid[i])
+            continue;
+        QVERIFY(std::abs(plot->magnitudeDbAt(0, measured.freqHz[i]) - dsp::magnitudeDb(measured.h[i])) < 1e-6);
+        ++compared;
+    }
+    QVERIFY(compared >= kResonanceBand.points - 5);
+
+    w.next();
+    QCOMPARE(w.currentId(), int(FrfWizard::SaveId));
+    if (screenshots)
+        maybeScreenshot(&w, "frf-05-save");
+    w.button(QWizard::FinishButton)->click();
+    QVERIFY(w.savedSessionId() > 0);
+
+    auto loaded = ctx.database()->loadSession(w.savedSessionId());
+    QVERIFY(loaded.ok());
+    QCOMPARE(loaded->info.kind, std::string("frf"));
+    QCOMPARE(loaded->info.status, store::SessionStatus::Completed);
+    QCOMPARE(loaded->info.axis, std::string("C"));
+    QCOMPARE(loaded->inputs.at("method").get<std::string>(), std::string("multisweep"));
+    QCOMPARE(loaded->inputs.at("points").get<int>(), kResonanceBand.points);
+    QCOMPARE(loaded->inputs.at("amplitude_pct").get<double>(), kResonanceBand.amplitudePct);
+    const store::NamedCapture* cap = nullptr;
+    for (const auto& c : loaded->captures)
+        if (c.name == "measured")
+            cap = &c;
+    QVERIFY(cap);
+    auto back = store::frfFromCapture(cap->capture);
+    QVERIFY(back.ok());
+    QCOMPARE(back->freqHz, measured.freqHz);
+    QCOMPARE(back->valid, measured.valid);
+    for (std::size_t i = 0; i < measured.size(); ++i)
+        QVERIFY(std::abs(back->h[i] - measured.h[i]) <= 1e-12 * std::abs(measured.h[i]));
+    bool stored3300 = false;
+    for (const auto& r : loaded->results)
+        if (r.name == "resonances")
+            for (const auto& x : r.data.at("resonances"))
+                stored3300 = stored3300 || std::abs(x.at("frequency_Hz").get<double>() - mode) <= 0.02 * mode;
+    QVERIFY(stored3300);
+}
+
+}  // namespace
+
+class TestFrfWizard : public QObject {
+    Q_OBJECT
+private:
+    QTemporaryDir m_resources;
+    QTemporaryDir m_tmp;
+
+private slots:
+    void initTestCase()
+    {
+        axistune::testing::installLanguageFromEnv();
+        QVERIFY(m_resources.isValid() && m_tmp.isValid());
+        namespace fs = std::filesystem;
+        const fs::path dst = m_resources.path().toStdString();
+        for (const auto& e : fs::directory_iterator(kResources))
+            if (e.path().filename() != "machines")
+                fs::create_directory_symlink(fs::canonical(e.path()), dst / e.path().filename());
+        fs::create_directory(dst / "machines");
+        for (const auto& e : fs::directory_iterator(fs::path(kResources) / "machines"))
+            fs::create_symlink(fs::canonical(e.path()), dst / "machines" / e.path().filename());
+        std::ifstream in(kResources + "/machines/dd-table.json");
+        auto j = nlohmann::json::parse(in);
+        j["name"] = "dd-table-linear";
+        j["description"] = "dd-table without encoder quantization, Coulomb friction and current noise (tst_frfwizard)";
+        auto& p = j["axes"][0]["parameters"];
+        p["plant.encoder_motor"]["value"] = 0;
+        p["plant.encoder_load"]["value"] = 0;
+        p["plant.coulomb_motor"]["value"] = 0;
+        p["plant.noise_current"]["value"] = 0;
+        std::ofstream(dst / "machines" / "dd-table-linear.json") << j.dump(2);
+        qputenv("AXISTUNE_RESOURCE_DIR", m_resources.path().toUtf8());  // also seen by the simdrive child
+    }
+
+    void isRegistered()
+    {
+        const auto* e = gui::findWizard("frf");
+        QVERIFY(e);
+        QCOMPARE(e->order, 10);
+    }
+
+    void amplitudeAboveTheDriveMaximumIsRefused()
+    {
+        gui::AppContext ctx;
+        QVERIFY(connectTo(ctx, "sim:dd-table-linear"));
+        FrfWizard w(ctx);
+        w.show();
+        auto* s = w.safetyPage();
+        s->confirmation()->setChecked(true);
+        QVERIFY(w.button(QWizard::NextButton)->isEnabled());
+        s->amplitude()->setValue(device::kMaxFrfAmplitudePct + 1.0);
+        QCOMPARE(s->amplitude()->value(), device::kMaxFrfAmplitudePct + 1.0);  // not clamped ...
+        s->confirmation()->setChecked(true);
+        QVERIFY(!w.button(QWizard::NextButton)->isEnabled());  // ... but refused
+        QVERIFY(s->findChild<QLabel*>("frfAmplitudeText")->text().contains("Refused"));
+    }
+
+    void ddTableSimulatedEndToEnd()
+    {
+        QElapsedTimer t;
+        t.start();
+        gui::AppContext ctx;
+        QVERIFY(ctx.openDatabase(m_tmp.filePath("sim.db")));
+        QVERIFY(connectTo(ctx, "sim:dd-table-linear"));
+        runCompleteWizard(ctx, true);
+        qInfo("simulated end to end: %lld ms wall", static_cast<long long>(t.elapsed()));
+    }
+
+    void ddTableOverModbusEndToEnd()
+    {
+        QElapsedTimer t;
+        t.start();
+        axistune::testing::SimDrive sd("--preset dd-table-linear");
+        QVERIFY(sd.port() > 0);
+        gui::AppContext ctx;
+        QVERIFY(ctx.openDatabase(m_tmp.filePath("modbus.db")));
+        QVERIFY(connectTo(ctx, QString("modbus://127.0.0.1:%1").arg(sd.port())));
+        runCompleteWizard(ctx, false);
+        qInfo("Modbus end to end: %lld ms wall", static_cast<long long>(t.elapsed()));
+    }
+
+    void killedSimdriveShowsTheLostConnectionAndStoresAborted()
+    {
+        // Paced to 10 machine seconds per wall second, so that the run lasts about 1.4 s of wall time.
+        axistune::testing::SimDrive sd("--preset dd-table-linear --pace 10");
+        QVERIFY(sd.port() > 0);
+        gui::AppContext ctx;
+        QVERIFY(ctx.openDatabase(m_tmp.filePath("kill.db")));
+        QVERIFY(connectTo(ctx, QString("modbus://127.0.0.1:%1").arg(sd.port())));
+        double progress = 0.0;
+        connect(&ctx.drive(), &gui::DriveController::progress, this, [&](int, double f, const QString&) { progress = f; });
+        FrfWizard w(ctx);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        configureAndStart(w, {10.0, 3900.0, 60, 3.0}, false);
+        auto* run = w.runPage();
+        QVERIFY(run->isRunning());
+        // The event loop keeps serving a timer during the run and after the kill.
+        QElapsedTimer gap;
+        gap.start();
+        qint64 worstGapMs = 0;
+        int ticks = 0;
+        QTimer timer;
+        connect(&timer, &QTimer::timeout, this, [&] {
+            worstGapMs = std::max(worstGapMs, gap.restart());
+            ++ticks;
+        });
+        timer.start(20);
+        QVERIFY(waitUntil([&] { return progress > 0.05 || !run->isRunning(); }, 30000));
+        QVERIFY(run->isRunning());
+        sd.stop(SIGKILL);
+        QVERIFY(waitUntil([&] { return !run->isRunning(); }, 20000));
+        timer.stop();
+        QVERIFY(!run->succeeded());
+        QVERIFY2(run->failure().contains("Connection lost"), qPrintable(run->failure()));
+        QVERIFY(ticks > 10);
+        QVERIFY2(worstGapMs < 500, qPrintable(QString::number(worstGapMs)));
+        QVERIFY(!ctx.drive().isConnected());
+        QVERIFY(w.savedSessionId() > 0);
+        auto s = ctx.database()->loadSession(w.savedSessionId());
+        QVERIFY(s.ok());
+        QCOMPARE(s->info.status, store::SessionStatus::Aborted);
+        QCOMPARE(s->info.kind, std::string("frf"));
+        QVERIFY(QString::fromStdString(s->info.note).contains("Connection lost"));
+    }
+
+    void abortEndsWithinOneSecondAndRestoresTheParameters()
+    {
+        gui::AppContext ctx;
+        QVERIFY(ctx.openDatabase(m_tmp.filePath("abort.db")));
+        QVERIFY(connectTo(ctx, "sim:dd-table-linear"));
+        auto readAll = [&] {
+            model::ParameterValues v;
+            bool done = false;
+            const int id = ctx.drive().readParameters("C");
+            auto c = connect(&ctx.drive(), &gui::DriveController::replied, this, [&](const gui::DriveReply& r) {
+                if (r.id == id) {
+                    v = r.values;
+                    done = true;
+                }
+            });
+            waitUntil([&] { return done; }, 10000);
+            disconnect(c);
+            return v;
+        };
+        const auto before = readAll();
+        QVERIFY(before.size() > 20);
+        double progress = 0.0;
+        connect(&ctx.drive(), &gui::DriveController::progress, this, [&](int, double f, const QString&) { progress = f; });
+        FrfWizard w(ctx);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        // A long plan (low frequencies settle and measure for seconds of machine time) so that the
+        // run is surely still going when Abort is pressed.
+        configureAndStart(w, {0.5, 3900.0, 120, 3.0}, false);
+        auto* run = w.runPage();
+        QVERIFY(waitUntil([&] { return progress > 0.0 || !run->isRunning(); }, 30000));
+        QVERIFY(run->isRunning());
+        QElapsedTimer t;
+        t.start();
+        run->abortButton()->click();
+        QVERIFY(waitUntil([&] { return !run->isRunning(); }, 5000));
+        QVERIFY2(t.elapsed() < 1000, qPrintable(QString::number(t.elapsed())));
+        QCOMPARE(run->failureCode(), ErrorCode::Aborted);
+        QVERIFY(!w.button(QWizard::NextButton)->isEnabled());
+        const auto after = readAll();
+        QCOMPARE(after.size(), before.size());
+        for (const auto& [k, v] : before)
+            QVERIFY2(after.at(k) == v, k.c_str());
+        auto s = ctx.database()->loadSession(w.savedSessionId());
+        QVERIFY(s.ok());
+        QCOMPARE(s->info.status, store::SessionStatus::Aborted);
+        QVERIFY(!s->info.note.empty());
+    }
+};
+
+QTEST_MAIN(TestFrfWizard)
+#include "tst_frfwizard.moc"
