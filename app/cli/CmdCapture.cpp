@@ -4,12 +4,15 @@
 #include "app/cli/CircleCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/device/Drive.h"
+#include "core/device/MultisineTest.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
 #include "core/io/SweepCsv.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -39,6 +42,13 @@ struct CaptureOptions {
     double minMeasure = 0.0;
     std::string sweepOut;
     std::string traceOut;
+    // --method multisine (docs/multisine.md)
+    double spacing = 0.0;
+    std::vector<std::string> bands;
+    int periods = 0;
+    std::string phases = "clipping";
+    std::string shapeFrom;
+    double shapeRangeDb = 20.0;
     // Parameters written before the test, and the simulator's linear switch (test/diagnostic).
     std::vector<std::string> set;
     bool linear = false;
@@ -94,6 +104,62 @@ Status prepareDrive(device::Drive& drive, const CaptureOptions& o)
     return {};
 }
 
+bool parseDouble(const std::string& s, double& x)
+{
+    const auto r = std::from_chars(s.data(), s.data() + s.size(), x);
+    return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(x);
+}
+
+/// The multisine fields of the request from --band, --spacing-hz, --periods, --phases, --shape-from.
+/// The shape from a previous FRF: relative amplitude ∝ 1/|H| (more excitation where the loop answers
+/// less), limited to a range of shapeRangeDb below the largest weight.
+Status multisineRequest(const CaptureOptions& o, device::TestRequest& req)
+{
+    const bool multisine = o.method == "multisine";
+    if (!multisine) {
+        if (!o.bands.empty() || o.spacing != 0.0 || o.periods != 0 || !o.shapeFrom.empty() || o.phases != "clipping")
+            return makeError(ErrorCode::BadInput, "--band, --spacing-hz, --periods, --phases and --shape-from are only for --method multisine");
+        return Status::success();
+    }
+    for (const auto& b : o.bands) {
+        dsp::MultisineBand band;
+        const auto c1 = b.find(':'), c2 = c1 == std::string::npos ? c1 : b.find(':', c1 + 1);
+        if (c2 == std::string::npos || !parseDouble(b.substr(0, c1), band.fminHz)
+            || !parseDouble(b.substr(c1 + 1, c2 - c1 - 1), band.fmaxHz) || !parseDouble(b.substr(c2 + 1), band.spacingHz))
+            return makeError(ErrorCode::BadInput, "--band '" + b + "': expected FMIN:FMAX:SPACING in Hz");
+        req.multisineBands.push_back(band);
+    }
+    if (!(o.spacing >= 0.0))
+        return makeError(ErrorCode::BadInput, "--spacing-hz must not be negative");
+    if (o.periods < 0 || o.periods > device::kMaxMultisinePeriods)
+        return makeError(ErrorCode::BadInput, "--periods must lie in [1, " + std::to_string(device::kMaxMultisinePeriods) + "] (0: from the loop)");
+    if (o.phases != "clipping" && o.phases != "schroeder")
+        return makeError(ErrorCode::BadInput, "--phases must be clipping or schroeder (got '" + o.phases + "')");
+    req.multisineSpacingHz = o.spacing;
+    req.multisinePeriods = o.periods;
+    req.multisinePhases = o.phases == "schroeder" ? dsp::MultisinePhases::Schroeder : dsp::MultisinePhases::Clipping;
+    if (!o.shapeFrom.empty()) {
+        if (!(o.shapeRangeDb > 0.0))
+            return makeError(ErrorCode::BadInput, "--shape-range-db must be positive");
+        auto frf = io::readFrfCsvFile(o.shapeFrom);
+        if (!frf)
+            return makeError(ErrorCode::BadInput, "--shape-from: " + frf.error().detail);
+        double top = 0.0;
+        for (std::size_t i = 0; i < frf->size(); ++i) {
+            if (frf->valid[i] && std::abs(frf->h[i]) > 0.0) {
+                req.multisineShape.emplace_back(frf->freqHz[i], 1.0 / std::abs(frf->h[i]));
+                top = std::max(top, req.multisineShape.back().second);
+            }
+        }
+        if (req.multisineShape.empty())
+            return makeError(ErrorCode::BadInput, "--shape-from " + o.shapeFrom + ": no valid point with a nonzero response");
+        const double floor = top * std::pow(10.0, -o.shapeRangeDb / 20.0);
+        for (auto& [f, w] : req.multisineShape)
+            w = std::max(w, floor) / top;
+    }
+    return Status::success();
+}
+
 /// Writes the FRF (and the sine-stream recording) of a completed FRF test; prints a JSON summary.
 int writeFrfResult(const std::string& cmd, device::Drive& drive, const CaptureOptions& o)
 {
@@ -115,7 +181,13 @@ int writeFrfResult(const std::string& cmd, device::Drive& drive, const CaptureOp
         valid += v ? 1 : 0;
     std::cout << "{\"out\": \"" << o.out << "\", \"method\": \"" << o.method << "\", \"points\": " << m->frf.size()
               << ", \"valid_points\": " << valid << ", \"motion_time_s\": " << m->motionTimeS
-              << ", \"amplitude_Nm\": " << m->frf.metadata["amplitude_Nm"] << ", \"fs_Hz\": " << m->frf.metadata["fs_Hz"] << "}\n";
+              << ", \"amplitude_Nm\": " << m->frf.metadata["amplitude_Nm"] << ", \"fs_Hz\": " << m->frf.metadata["fs_Hz"];
+    if (o.method == "multisine") {
+        std::cout << ", \"crest_factor\": " << m->frf.metadata["crest_factor"] << ", \"rms_Nm\": " << m->frf.metadata["rms_Nm"]
+                  << ", \"spacing_Hz\": " << m->frf.metadata["spacing_Hz"] << ", \"periods\": " << m->frf.metadata["periods"]
+                  << ", \"settle_s\": " << m->frf.metadata["settle_s"];
+    }
+    std::cout << "}\n";
     return 0;
 }
 
@@ -160,8 +232,13 @@ int runCapture(const CaptureOptions& o)
             req.frfMethod = device::FrfMethod::Conventional;
         else if (o.method == "prbs")
             req.frfMethod = device::FrfMethod::Prbs;
+        else if (o.method == "multisine")
+            req.frfMethod = device::FrfMethod::Multisine;
         else
-            return reportError(cmd, makeError(ErrorCode::BadInput, "--method must be multisweep, conventional or prbs (got '" + o.method + "')"));
+            return reportError(cmd, makeError(ErrorCode::BadInput, "--method must be multisweep, conventional, prbs or multisine (got '"
+                                                                       + o.method + "')"));
+        if (auto st = multisineRequest(o, req); !st)
+            return reportError(cmd, st.error());
         req.fminHz = o.fmin;
         req.fmaxHz = o.fmax;
         req.points = o.points;
@@ -225,12 +302,18 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
             ->capture_default_str();
         sub.add_option("--trace-divider", o->divider, "trace every N velocity periods (0: drive setting)");
         sub.add_option("--seed", o->seed, "noise seed of the simulated machine")->capture_default_str();
-        sub.add_option("--method", o->method, "frf: multisweep | conventional | prbs")->capture_default_str();
+        sub.add_option("--method", o->method, "frf: multisweep | conventional | prbs | multisine")->capture_default_str();
         sub.add_option("--fmin", o->fmin, "frf: lowest frequency [Hz]")->capture_default_str();
         sub.add_option("--fmax", o->fmax, "frf: highest frequency [Hz] (below fs; prbs: at most fs/2)")->capture_default_str();
         sub.add_option("--points", o->points, "frf: log-spaced frequencies")->capture_default_str();
-        sub.add_option("--amplitude-pct", o->amplitudePct, "frf: excitation amplitude, % of rated torque (at most 50)")
+        sub.add_option("--amplitude-pct", o->amplitudePct, "frf: excitation amplitude (multisine: its peak), % of rated torque (at most 50)")
             ->capture_default_str();
+        sub.add_option("--spacing-hz", o->spacing, "multisine: line spacing from --fmin to --fmax [Hz] (0: fmin/2)");
+        sub.add_option("--band", o->bands, "multisine: FMIN:FMAX:SPACING [Hz], repeatable (replaces --fmin/--fmax/--spacing-hz)");
+        sub.add_option("--periods", o->periods, "multisine: averaged periods (0: from the loop dynamics, at least 2)");
+        sub.add_option("--phases", o->phases, "multisine: clipping | schroeder")->capture_default_str();
+        sub.add_option("--shape-from", o->shapeFrom, "multisine: amplitude shaped by 1/|H| of a previous FRF CSV");
+        sub.add_option("--shape-range-db", o->shapeRangeDb, "multisine: range of the shaped amplitudes [dB]")->capture_default_str();
         sub.add_option("--settle-s", o->settle, "frf: settle time per frequency [s] (0: from the loop dynamics)");
         sub.add_option("--min-measure-s", o->minMeasure, "frf: measured time per frequency at least [s] (0: from the loop dynamics)");
         sub.add_option("--sweep-out", o->sweepOut, "frf: sine-stream CSV of the excitation and response");

@@ -35,7 +35,7 @@ struct MultisinePlanOptions {
     LoopTiming timing;
     int periods = 0;               ///< 0: max(kMinMultisinePeriods, ⌈minMeasureS / period⌉)
     double voltageLimitV = 0.0;    ///< a record that reaches it is not a linear measurement (0: no check)
-    double maxRelativeNoise = 0.1; ///< lines noisier than this (σ_H/|H|) are invalid
+    double maxRelativeNoise = 0.03; ///< lines noisier than this (σ_H/|H|, ≈ 0.26 dB / 1.7°) are invalid
 };
 
 struct MultisinePlan {
@@ -47,7 +47,7 @@ struct MultisinePlan {
     double currentPeriodS = 0.0;
     int ticksPerVelocity = 1;
     double voltageLimitV = 0.0;
-    double maxRelativeNoise = 0.1;
+    double maxRelativeNoise = 0.03;
     double durationS() const { return static_cast<double>(totalSamples) / design.fsHz; }
 };
 

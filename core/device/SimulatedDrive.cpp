@@ -227,6 +227,14 @@ Result<TestStatus> SimulatedDrive::pollTest()
                 return m_status;
             }
             FrfMeasurement m = std::move(frf).value();
+            if (m_multisinePlan) {
+                // The traced voltage shows clamps at trace samples only; the simulator counts them at
+                // every current tick. A multisine spreads a clamp over every line: none is linear then.
+                const std::uint64_t clamps = m_request ? simulator(m_request->axis)->voltageClampCount() - m_clampsAtStart : 0;
+                m.frf.metadata["voltage_clamped_ticks"] = std::to_string(clamps);
+                if (clamps > 0)
+                    std::fill(m.frf.valid.begin(), m.frf.valid.end(), false);
+            }
             m.frf.metadata["machine"] = m_machine.name;
             m.frf.metadata["axis"] = m_request->axis;
             m_frf = std::move(m);
@@ -338,6 +346,7 @@ Result<double> SimulatedDrive::startMultisine(sim::AxisSimulator& sim, const Tes
     const double t0 = static_cast<double>(first) * h;
     sim.setTorqueInjection([shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
     m_multisinePlan = shared;
+    m_clampsAtStart = sim.voltageClampCount();
     return shared->durationS();
 }
 

@@ -54,6 +54,7 @@ private:
     std::optional<model::Capture> m_trace;
     std::shared_ptr<const FrfPlan> m_frfPlan;
     std::shared_ptr<const MultisinePlan> m_multisinePlan;
+    std::uint64_t m_clampsAtStart = 0;  ///< voltage clamps of the current loop before a multisine test
     std::optional<FrfMeasurement> m_frf;
 };
 

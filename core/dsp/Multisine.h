@@ -90,7 +90,7 @@ struct MultisineAnalysisOptions {
     bool threePhase = true;
     /// A line whose relative standard error of the mean (σ_H/|H|) exceeds this is marked invalid
     /// (needs ≥ 2 periods; 0 disables the check).
-    double maxRelativeNoise = 0.1;
+    double maxRelativeNoise = 0.03;
 };
 
 /// Per-line result besides the FRF.
