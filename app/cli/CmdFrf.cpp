@@ -3,6 +3,7 @@
 // sine-stream recording (conventional or three-phase multi-sweep demodulation); docs/frequency-response.md.
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/dsp/InjectionHold.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/dsp/SineDemodulation.h"
 #include "core/dsp/Welch.h"
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -174,6 +176,19 @@ int runFrf(const FrfOptions& o)
         frf = dsp::sineStreamFrf(rec.value());
         if (!frf)
             return reportError(cmd, makeError(frf.error().code, o.sweepPath + ": " + frf.error().detail));
+        // A drive's sweep (capture --sweep-out) names its injection hold: the same correction as the drive's FRF.
+        const auto& md = rec->metadata;
+        if (md.count("injection_hold_period_s") && md.count("injection_hold_ticks")) {
+            char* e1 = nullptr;
+            char* e2 = nullptr;
+            const double h = std::strtod(md.at("injection_hold_period_s").c_str(), &e1);
+            const long n = std::strtol(md.at("injection_hold_ticks").c_str(), &e2, 10);
+            Status st = (*e1 || *e2) ? Status(makeError(ErrorCode::BadInput, "not a number"))
+                                     : dsp::correctInjectionHold(frf.value(), h, static_cast<int>(n));
+            if (!st)
+                return reportError(cmd, makeError(ErrorCode::BadInput, o.sweepPath + ": metadata injection_hold_period_s / "
+                                                                       "injection_hold_ticks: " + st.error().detail));
+        }
     } else {
         frf = frfFromCapture(o);
         if (!frf)

@@ -3,6 +3,7 @@
 // velocity PI and position-gain limit on the fitted model, predicted load error (docs/tuning.md).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/dsp/InjectionHold.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/io/FrfCsv.h"
 #include "core/tuning/TwoInertia.h"
@@ -35,14 +36,14 @@ struct TwoInertiaOptions {
     tuning::MotionProfile profile;
     std::vector<double> loopPi;      ///< KP,KI: the FRF is T = PC/(1+PC) of this velocity PI; fit P
     double loopPeriodS = 250e-6;     ///< velocity-loop period of C(z)
-    double injectionPeriodS = 0.0;   ///< period the injection d is applied at (0: the loop period)
+    double injectionPeriodS = 0.0;   ///< period d was applied at, for an uncorrected FRF (0: none)
 };
 
 /// P = L / C with L = T/(1−T) and C(z) = K_P + K_I·T_v/(1 − z⁻¹), z = e^{jωT_v} (the simulated
 /// drive's velocity PI, integral divider 1, docs/frequency-response-sim.md). Points where T = 1 stay invalid.
-/// An injection applied every h = T_v/N (the simulated drive: the current-loop period) while the trace
-/// holds its value at the velocity tick reaches the plant as G·d, G = N / Σ_{m<N} e^{−jωmh} (the
-/// fundamental of the N-tap hold relative to the fine staircase), so T = T_meas / G first (docs/tuning.md).
+/// The drive's FRF is already T (metadata injection_hold_corrected=true). --injection-period-s h is only
+/// for a −T_c/d measured with an injection applied every h = T_v/N and not corrected at the source:
+/// T = (−T_c/d) / G, G = dsp::injectionHoldFactor(f, h, N); refused for a file that says corrected.
 Result<dsp::FrequencyResponse> plantFromComplementary(const dsp::FrequencyResponse& t, const TwoInertiaOptions& o,
                                                       const std::string& path)
 {
@@ -52,17 +53,19 @@ Result<dsp::FrequencyResponse> plantFromComplementary(const dsp::FrequencyRespon
     if (auto it = t.metadata.find("measurement"); it != t.metadata.end() && it->second != "complementary")
         return makeError(ErrorCode::BadInput, path + ": --loop-pi needs a complementary FRF (T = PC/(1+PC)), the file says "
                                                   "measurement=" + it->second);
-    const double h = o.injectionPeriodS > 0.0 ? o.injectionPeriodS : o.loopPeriodS;
-    const double ratio = o.loopPeriodS / h;
-    const long n = std::lround(ratio);
-    if (n < 1 || std::abs(ratio - static_cast<double>(n)) > 1e-6 * ratio)
-        return makeError(ErrorCode::BadInput, "--loop-period-s must be an integer multiple of --injection-period-s");
+    if (!(o.injectionPeriodS >= 0.0))
+        return makeError(ErrorCode::BadInput, "--injection-period-s must not be negative");
     dsp::FrequencyResponse corrected = t;
-    for (std::size_t i = 0; i < corrected.size(); ++i) {
-        std::complex<double> sum = 0.0;
-        for (long m = 0; m < n; ++m)
-            sum += std::polar(1.0, -kTwoPi * corrected.freqHz[i] * static_cast<double>(m) * h);
-        corrected.h[i] *= sum / static_cast<double>(n);
+    if (o.injectionPeriodS > 0.0) {
+        const double ratio = o.loopPeriodS / o.injectionPeriodS;
+        const long n = std::lround(ratio);
+        if (n < 1 || std::abs(ratio - static_cast<double>(n)) > 1e-6 * ratio)
+            return makeError(ErrorCode::BadInput, "--loop-period-s must be an integer multiple of --injection-period-s");
+        if (dsp::isInjectionHoldCorrected(t))
+            return makeError(ErrorCode::BadInput, path + ": --injection-period-s: the FRF is already corrected for the "
+                                                      "injection hold (injection_hold_corrected=true); leave the option out");
+        if (auto st = dsp::correctInjectionHold(corrected, o.injectionPeriodS, static_cast<int>(n)); !st)
+            return st.error();
     }
     auto p = dsp::openLoopFromClosedLoop(corrected, dsp::LoopMeasurement::Complementary);
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -173,8 +176,8 @@ const CliRegistrar kRegistrar{CliCommand{
             ->expected(2);
         sub.add_option("--loop-period-s", o->loopPeriodS, "velocity-loop period of the PI for --loop-pi (default 250e-6)");
         sub.add_option("--injection-period-s", o->injectionPeriodS,
-                       "for --loop-pi: period the injection is applied at, e.g. the current loop's 62.5e-6 on the "
-                       "simulated drive (default: the loop period)");
+                       "for --loop-pi and an FRF not corrected at the source (no injection_hold_corrected=true): "
+                       "period the injection was applied at, e.g. 62.5e-6 (default 0: taken as is)");
         sub.add_option("--out", o->outPath, "write the JSON to this file instead of stdout");
         return recordSessions(sub, [o] { return runTwoInertia(*o); });
     }}};

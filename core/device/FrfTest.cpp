@@ -2,14 +2,18 @@
 // FRF test planning and evaluation: velocity-loop FRF from a torque disturbance injected at the
 // current-loop rate, spec/current-loop-and-multisweep-frf.md §3.2 (eq. 3.1), §3.5 (three-phase
 // multi-sweep, implementation form), §3.6 (alias-free ranges, excitation at the current-loop rate),
-// §4.3 (wizard C). Settle and window from the closed velocity loop's slowest pole (docs/frequency-response-sim.md).
+// §4.3 (wizard C). Settle and window from the closed velocity loop's slowest pole; the injection-hold
+// correction G = N / Σ_{m<N} e^{−jωmh} (dsp::injectionHoldFactor) turns −T_c/d into T = PC/(1+PC)
+// (docs/frequency-response-sim.md, "Injection hold").
 #include "core/device/FrfTest.h"
 
 #include "core/dsp/Excitation.h"
+#include "core/dsp/InjectionHold.h"
 #include "core/dsp/Welch.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <sstream>
 
@@ -61,6 +65,64 @@ std::vector<double> logSpaced(double f0, double f1, int n)
     for (int i = 0; i < n; ++i)
         out.push_back(f0 * std::pow(f1 / f0, static_cast<double>(i) / (n - 1)));
     return out;
+}
+
+/// Current and velocity period: the plan's, else the trace metadata's.
+struct HoldPeriods {
+    double currentS = 0.0, velocityS = 0.0;
+    int ticksPerVelocity = 1;   ///< N: current ticks per velocity period
+    int velocityPerSample = 1;  ///< D: velocity periods per trace sample
+};
+Result<HoldPeriods> holdPeriods(const FrfPlan& plan, const model::Capture& trace)
+{
+    auto meta = [&trace](const char* key) {
+        auto it = trace.metadata.find(key);
+        if (it == trace.metadata.end())
+            return 0.0;
+        char* end = nullptr;
+        const double v = std::strtod(it->second.c_str(), &end);
+        return end && *end == '\0' && std::isfinite(v) ? v : 0.0;
+    };
+    HoldPeriods p;
+    p.currentS = plan.currentPeriodS > 0.0 ? plan.currentPeriodS : meta("current_period_s");
+    p.velocityS = plan.velocityPeriodS > 0.0 ? plan.velocityPeriodS : meta("velocity_period_s");
+    if (!(p.currentS > 0.0) || !(p.velocityS > 0.0))
+        return makeError(ErrorCode::BadInput, "FRF trace: the injection-hold correction needs the current and velocity "
+                                              "periods (trace metadata current_period_s, velocity_period_s)");
+    const double n = p.velocityS / p.currentS, d = 1.0 / (plan.fsHz * p.velocityS);
+    p.ticksPerVelocity = static_cast<int>(std::lround(n));
+    p.velocityPerSample = static_cast<int>(std::lround(d));
+    if (p.ticksPerVelocity < 1 || std::abs(n - p.ticksPerVelocity) > 1e-6 * n || p.velocityPerSample < 1
+        || std::abs(d - p.velocityPerSample) > 1e-6 * d)
+        return makeError(ErrorCode::BadInput, "FRF trace: velocity period " + num(p.velocityS) + " s and trace period "
+                                                  + num(1.0 / plan.fsHz) + " s must be integer multiples of the current period "
+                                                  + num(p.currentS) + " s and of the velocity period");
+    return p;
+}
+
+/// Sine streams: −T_c/d = G·T, G = injectionHoldFactor(f, h, N). PRBS: d is held over the trace
+/// sample like a D-tap hold at the velocity rate, −T_c/d ≈ T/G(f, T_v, D) (exact T for D = 1).
+Status correctHold(FrfMeasurement& out, const FrfPlan& plan, const HoldPeriods& p)
+{
+    auto& md = out.frf.metadata;
+    if (plan.method != FrfMethod::Prbs) {
+        if (auto st = dsp::correctInjectionHold(out.frf, p.currentS, p.ticksPerVelocity); !st)
+            return st;
+        out.sweep.metadata["injection_hold_period_s"] = md.at("injection_hold_period_s");
+        out.sweep.metadata["injection_hold_ticks"] = md.at("injection_hold_ticks");
+        return Status::success();
+    }
+    for (std::size_t i = 0; i < out.frf.size() && p.velocityPerSample > 1; ++i) {
+        const auto g = dsp::injectionHoldFactor(out.frf.freqHz[i], p.velocityS, p.velocityPerSample);
+        if (std::isfinite(g.real()) && std::isfinite(g.imag()))
+            out.frf.h[i] *= g;
+        else
+            out.frf.valid[i] = false;
+    }
+    md["injection_hold_corrected"] = "true";
+    md["injection_hold"] = "prbs-held-per-trace-sample";
+    md["injection_hold_velocity_periods"] = std::to_string(p.velocityPerSample);
+    return Status::success();
 }
 
 }  // namespace
@@ -215,6 +277,9 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
     if (d->data.size() < plan.totalSamples)
         return makeError(ErrorCode::BadInput, "FRF trace: " + std::to_string(d->data.size()) + " samples, the plan needs "
                                                   + std::to_string(plan.totalSamples));
+    auto periods = holdPeriods(plan, trace);
+    if (!periods)
+        return periods.error();
     FrfMeasurement out;
     out.motionTimeS = plan.durationS();
     if (plan.method == FrfMethod::Prbs) {
@@ -286,6 +351,8 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
         }
         out.frf.metadata["voltage_clamped_points"] = std::to_string(clamped);
     }
+    if (auto st = correctHold(out, plan, *periods); !st)
+        return st.error();
     auto& md = out.frf.metadata;
     md["input"] = "injection_Nm";
     md["output"] = "-torque_cmd_Nm";
@@ -297,7 +364,8 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
     md["loop_time_constant_s"] = num(plan.timing.timeConstantS);
     md["motion_time_s"] = num(out.motionTimeS);
     for (const auto& [k, v] : md) {
-        if (k != "method" && k != "fs_Hz")
+        // The sweep keeps the raw −T_c and d: the correction is redone by whoever re-analyses it.
+        if (k != "method" && k != "fs_Hz" && k != "injection_hold_corrected")
             out.sweep.metadata[k] = v;
     }
     return out;

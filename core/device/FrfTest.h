@@ -3,7 +3,9 @@
 // The frequency-response test of a drive (spec/current-loop-and-multisweep-frf.md §3.2, §3.5, §4.3):
 // a torque disturbance d is added to the velocity-controller output inside the closed velocity loop
 // (at the current-loop rate), the velocity-controller output T_c and the motor velocity are traced at
-// the trace rate, and the FRF is the closed loop T = −T_c/d = PC/(1+PC) (eq. 3.1 with ω* = 0).
+// the trace rate, and the FRF is the closed loop T = PC/(1+PC) (eq. 3.1 with ω* = 0): −T_c/d divided
+// by the injection-hold factor G of dsp::injectionHoldFactor (d changes every current tick, T_c is held
+// over the velocity period), metadata injection_hold_corrected=true; docs/frequency-response-sim.md.
 //
 // Sine streams are planned with a *continuous* excitation per frequency: one settle time, then three
 // windows of M samples each spanning p + 1/3 periods (f = (p + 1/3)·fs/M exactly), so that the
@@ -68,6 +70,10 @@ struct FrfPlan {
     double voltageLimitV = 0.0;  ///< points whose traced voltage reaches it are marked invalid (0: no check)
     double fminHz = 0.0, fmaxHz = 0.0;  ///< requested range (PRBS output is thinned to it)
     int points = 0;
+    /// Current-loop period h (the injection's tick) and velocity-loop period (T_c's hold) for the
+    /// injection-hold correction; 0: taken from the trace metadata current_period_s, velocity_period_s.
+    double currentPeriodS = 0.0;
+    double velocityPeriodS = 0.0;
     double durationS() const { return static_cast<double>(totalSamples) / fsHz; }
 };
 
@@ -94,6 +100,12 @@ double frfExcitation(const FrfPlan& plan, double s);
 
 /// The sine-stream recording of a completed trace (channels injection_Nm and torque_cmd_Nm, the
 /// response is −torque_cmd_Nm), and the FRF: sine streams by dsp::sineStreamFrf, PRBS by Welch H1.
+/// The FRF is corrected for the injection hold (metadata injection_hold_corrected=true): sine streams
+/// (d sampled every current tick h, T_c held N = velocity/current ticks) are divided by
+/// dsp::injectionHoldFactor(f, h, N); PRBS (d held over one trace sample of D velocity periods) is
+/// multiplied by dsp::injectionHoldFactor(f, T_v, D), i.e. left as it is for D = 1. The sweep recording
+/// keeps the raw −T_c and d and carries injection_hold_period_s / injection_hold_ticks for a re-analysis.
+/// BadInput when the periods are neither in the plan nor in the trace metadata, or not in integer ratio.
 Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace);
 
 }  // namespace axistune::device

@@ -3,7 +3,8 @@
 // resonances (600 Hz, 1 kHz, 3.3 kHz, resources/machines/dd-table.json) are found and notched, and the
 // predicted FRF (`notch --out-frf`) agrees within 1 dB with the FRF re-measured with the notches
 // written into the drive (`capture --set filter.notchN.*=...`). See docs/notch.md "End to end on the
-// simulated drive" for the choices (--linear, the injection-hold correction, the −50 dB floor).
+// simulated drive" for the choices (--linear, the −50 dB floor); the drive's FRF is already corrected
+// for the injection hold (docs/frequency-response-sim.md).
 #include "tests/app/cli/CliRunner.h"
 
 #include "core/dsp/FrequencyResponse.h"
@@ -15,7 +16,6 @@
 #include <cmath>
 #include <complex>
 #include <filesystem>
-#include <numbers>
 #include <string>
 
 using axistune::testing::makeTempDir;
@@ -23,25 +23,7 @@ using axistune::testing::runCli;
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kCurrentPeriodS = 62.5e-6;  // dd-table current.period: the injection is applied at this rate
-constexpr int kTicksPerVelocity = 4;         // velocity.period 250 µs / 62.5 µs
-constexpr double kFloorDb = -50.0;           // points where both FRFs lie below this are not compared
-
-/// The simulated drive applies the injection d at every current tick but traces it at the velocity
-/// tick, while the torque command is held over the velocity period; the plant therefore sees G·d
-/// relative to the held command, G = N / Σ_{m<N} e^{−jωmh} (fundamental of the N-tap hold), and the
-/// file's T is G·L/(1+L). Dividing by G gives the L/(1+L) that `notch --loop complementary` assumes.
-axistune::dsp::FrequencyResponse withoutInjectionHold(axistune::dsp::FrequencyResponse frf)
-{
-    for (std::size_t i = 0; i < frf.size(); ++i) {
-        std::complex<double> sum = 0.0;
-        for (int m = 0; m < kTicksPerVelocity; ++m)
-            sum += std::polar(1.0, -kTwoPi * frf.freqHz[i] * m * kCurrentPeriodS);
-        frf.h[i] *= sum / static_cast<double>(kTicksPerVelocity);
-    }
-    return frf;
-}
+constexpr double kFloorDb = -50.0;  // points where both FRFs lie below this are not compared
 
 double db(std::complex<double> h) { return 20.0 * std::log10(std::abs(h)); }
 
@@ -58,12 +40,12 @@ TEST(NotchE2e, DdTableResonancesNotchedAndPredictionMatchesRemeasurementWithin1D
     ASSERT_EQ(cap.exitCode, 0) << cap.err;
     auto measured = axistune::io::readFrfCsvFile(raw);
     ASSERT_TRUE(measured.ok());
-    const auto before = withoutInjectionHold(*measured);
-    const auto corrected = (dir / "frf-corrected.csv").string();
-    ASSERT_TRUE(axistune::io::writeFrfCsvFile(corrected, before).ok());
+    // The drive's file is the closed loop T = L/(1+L) that `notch` assumes: no correction here.
+    EXPECT_EQ(measured->metadata.at("injection_hold_corrected"), "true");
+    const auto& before = *measured;
 
     const auto predictedPath = (dir / "predicted.csv").string();
-    const auto n = runCli("notch --frf " + corrected + " --out-frf " + predictedPath);
+    const auto n = runCli("notch --frf " + raw + " --out-frf " + predictedPath);
     ASSERT_EQ(n.exitCode, 0) << n.err;
     const auto j = nlohmann::json::parse(n.out);
     ASSERT_EQ(j["resonances"].size(), 3u) << n.out;
@@ -83,9 +65,9 @@ TEST(NotchE2e, DdTableResonancesNotchedAndPredictionMatchesRemeasurementWithin1D
     const auto again = (dir / "remeasured.csv").string();
     const auto cap2 = runCli(kCapture + sets + "--out " + again);
     ASSERT_EQ(cap2.exitCode, 0) << cap2.err;
-    auto remeasuredRaw = axistune::io::readFrfCsvFile(again);
-    ASSERT_TRUE(remeasuredRaw.ok());
-    const auto after = withoutInjectionHold(*remeasuredRaw);
+    auto remeasured = axistune::io::readFrfCsvFile(again);
+    ASSERT_TRUE(remeasured.ok());
+    const auto& after = *remeasured;
     auto predicted = axistune::io::readFrfCsvFile(predictedPath);
     ASSERT_TRUE(predicted.ok());
     ASSERT_EQ(predicted->size(), after.size());
