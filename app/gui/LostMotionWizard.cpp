@@ -19,22 +19,25 @@ namespace {
 
 nlohmann::json optJson(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
+/// Full precision, independent of the locale.
+std::string exact(double v) { return QString::number(v, 'g', 17).toStdString(); }
+
 model::Capture traceCapture(const io::BallBarTrace& t)
 {
     model::Capture c;
     c.metadata = t.metadata;
     c.metadata["content"] = "ballbar";
     c.metadata["source"] = t.source;
-    c.metadata["radius_m"] = std::to_string(t.radiusM);
-    c.metadata["feed_m_per_s"] = std::to_string(t.feedMPerS);
+    c.metadata["radius_m"] = exact(t.radiusM);
+    c.metadata["feed_m_per_s"] = exact(t.feedMPerS);
     c.metadata["direction"] = t.direction == io::CircleDirection::Ccw ? "ccw" : "cw";
     c.metadata["plane"] = t.plane;
-    c.metadata["center_x_m"] = std::to_string(t.centerXM);
-    c.metadata["center_y_m"] = std::to_string(t.centerYM);
+    c.metadata["center_x_m"] = exact(t.centerXM);
+    c.metadata["center_y_m"] = exact(t.centerYM);
     if (t.dTxNm)
-        c.metadata["dT_x_Nm"] = std::to_string(*t.dTxNm);
+        c.metadata["dT_x_Nm"] = exact(*t.dTxNm);
     if (t.dTyNm)
-        c.metadata["dT_y_Nm"] = std::to_string(*t.dTyNm);
+        c.metadata["dT_y_Nm"] = exact(*t.dTyNm);
     c.channels.push_back({"angle_rad", t.angleRad});
     c.channels.push_back({"deviation_m", t.deviationM});
     return c;

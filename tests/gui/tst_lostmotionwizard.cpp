@@ -143,6 +143,9 @@ private slots:
         QVERIFY(fit && diag && verify);
         const double aY = presetY("plant.lost_motion_A"), bY = presetY("plant.lost_motion_B");
         const double a = (*fit)["A_m_per_Nm"].get<double>(), b = (*fit)["B_per_Nm"].get<double>();
+        qInfo("A %.4f um/Nm (preset %.2f), B %.3f um/(Nm m) (preset %.1f), step %.3f -> %.3f um", a * 1e6, aY * 1e6,
+              b * 1e6, bY * 1e6, (*verify)["step_before_m"].get<double>() * 1e6,
+              (*verify)["step_after_m"].get<double>() * 1e6);
         QVERIFY2(std::abs(a - aY) <= 0.10 * aY, qPrintable(QString("A %1 preset %2").arg(a).arg(aY)));
         QVERIFY2(std::abs(b - bY) <= 0.10 * bY, qPrintable(QString("B %1 preset %2").arg(b).arg(bY)));
         QVERIFY((*diag)["findings"].size() >= 5);

@@ -1,0 +1,581 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Pages of the two-inertia wizard (TwoInertiaWizard.h; docs/wizards/two-inertia.md): source, fit,
+// filter and prediction, verification. Method: spec/lost-motion-and-two-inertia.md §2.2–2.10, TI-1..TI-6.
+#include "app/gui/TwoInertiaWizard.h"
+
+#include "app/gui/AppContext.h"
+#include "app/gui/WizardPages.h"
+#include "core/store/FrfCapture.h"
+#include "widgets/BodePlot.h"
+#include "widgets/CurvePlot.h"
+
+#include <QButtonGroup>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QRadioButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <QtConcurrent>
+
+#include <cmath>
+#include <numbers>
+
+namespace axistune {
+namespace gui {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+QTableWidget* makeTable(QWidget* parent, const QStringList& headers)
+{
+    auto* t = new QTableWidget(0, headers.size(), parent);
+    t->setHorizontalHeaderLabels(headers);
+    t->verticalHeader()->setVisible(false);
+    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->horizontalHeader()->setStretchLastSection(true);
+    return t;
+}
+
+void addRow(QTableWidget* t, const QStringList& cells)
+{
+    const int r = t->rowCount();
+    t->insertRow(r);
+    for (int c = 0; c < cells.size(); ++c)
+        t->setItem(r, c, new QTableWidgetItem(cells[c]));
+}
+
+QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double v, int decimals, const QString& suffix)
+{
+    auto* s = new QDoubleSpinBox(parent);
+    s->setRange(lo, hi);
+    s->setDecimals(decimals);
+    s->setValue(v);
+    s->setSuffix(suffix);
+    return s;
+}
+
+/// Full precision, independent of the locale.
+std::string exact(double v) { return QString::number(v, 'g', 17).toStdString(); }
+
+bool isFrfSessionKind(const std::string& k)
+{
+    return k == "frf" || k == "two-inertia" || k == "notch" || k == "velocity-loop";
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Source
+
+TwoInertiaSourcePage::TwoInertiaSourcePage(AppContext& ctx, TwoInertiaData& shared, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared)
+{
+    setTitle(tr("Two-inertia: low-frequency response"));
+    setSubTitle(tr("Measure the response of the velocity loop in the low band (torque injection, multi-sweep) or take "
+                   "a response from a saved session. The fit needs the anti-resonance and the resonance inside the "
+                   "band (thesis: 5–300 Hz)."));
+    auto* lay = new QVBoxLayout(this);
+    auto* group = new QButtonGroup(this);
+    m_measure = new QRadioButton(tr("Measure on the machine"), this);
+    m_measure->setObjectName("tiMeasure");
+    m_session = new QRadioButton(tr("From a saved session"), this);
+    m_session->setObjectName("tiFromSession");
+    group->addButton(m_measure);
+    group->addButton(m_session);
+    m_measure->setChecked(true);
+    lay->addWidget(m_measure);
+    auto* mf = new QFormLayout;
+    m_fmin = spin(this, 0.5, 1000, 5, 1, " Hz");
+    m_fmax = spin(this, 10, 2000, 300, 1, " Hz");
+    m_points = new QSpinBox(this);
+    m_points->setRange(10, 400);
+    m_points->setValue(60);
+    m_amplitude = spin(this, 0.5, 20, 5, 1, " %");
+    mf->addRow(tr("Band from:"), m_fmin);
+    mf->addRow(tr("to:"), m_fmax);
+    mf->addRow(tr("Frequencies (log-spaced):"), m_points);
+    mf->addRow(tr("Injection amplitude (of rated torque):"), m_amplitude);
+    lay->addLayout(mf);
+    lay->addWidget(m_session);
+    m_sessions = new QComboBox(this);
+    m_sessions->setObjectName("tiSessions");
+    lay->addWidget(m_sessions);
+    auto* pi = new QGroupBox(tr("Velocity loop of the measurement (read from the drive when connected)"), this);
+    auto* pf = new QFormLayout(pi);
+    m_kp = spin(pi, 0, 1e5, 11.24, 4, QString::fromUtf8(" N·m·s/rad"));
+    m_ki = spin(pi, 0, 1e8, 1198, 2, QString::fromUtf8(" N·m/rad"));
+    pf->addRow(tr("K_P:"), m_kp);
+    pf->addRow(tr("K_I:"), m_ki);
+    lay->addWidget(pi);
+    m_note = new QLabel(this);
+    m_note->setWordWrap(true);
+    lay->addWidget(m_note);
+    lay->addStretch(1);
+    connect(m_measure, &QRadioButton::toggled, this, &QWizardPage::completeChanged);
+    connect(m_sessions, &QComboBox::currentIndexChanged, this, &QWizardPage::completeChanged);
+}
+
+void TwoInertiaSourcePage::initializePage()
+{
+    m_sessions->clear();
+    if (auto* db = m_ctx.database()) {
+        if (auto list = db->listSessions()) {
+            for (auto it = list->rbegin(); it != list->rend(); ++it) {
+                if (!isFrfSessionKind(it->kind) || it->captureCount == 0)
+                    continue;
+                m_sessions->addItem(tr("Session %1: %2, %3 axis %4, %5")
+                                        .arg(it->id)
+                                        .arg(qs(it->kind), qs(it->machine), qs(it->axis), qs(it->started)),
+                                    QVariant::fromValue<qint64>(it->id));
+            }
+        }
+    }
+    m_measure->setEnabled(m_ctx.drive().isConnected());
+    if (!m_ctx.drive().isConnected())
+        m_session->setChecked(true);
+    m_note->setText(m_ctx.drive().isConnected() ? QString()
+                                                : tr("Not connected: only saved responses can be used; apply and "
+                                                     "verify need a connection."));
+}
+
+bool TwoInertiaSourcePage::isComplete() const
+{
+    return m_measure->isChecked() ? m_ctx.drive().isConnected() : m_sessions->currentIndex() >= 0;
+}
+
+bool TwoInertiaSourcePage::validatePage()
+{
+    m_d.fromSession = m_session->isChecked();
+    m_d.fminHz = m_fmin->value();
+    m_d.fmaxHz = m_fmax->value();
+    m_d.points = m_points->value();
+    m_d.amplitudePct = m_amplitude->value();
+    m_d.fitOptions.fminHz = m_fmin->value();
+    m_d.fitOptions.fmaxHz = m_fmax->value();
+    m_d.loopPi = {m_kp->value(), m_ki->value()};
+    m_d.measured.reset();
+    if (!m_d.fromSession)
+        return true;
+    m_d.sourceSession = m_sessions->currentData().value<qint64>();
+    auto rec = m_ctx.database() ? m_ctx.database()->loadSession(m_d.sourceSession)
+                                : Result<store::SessionRecord>(makeError(ErrorCode::NotFound, "no store"));
+    if (!rec) {
+        m_note->setText(tr("Loading session %1 failed: %2").arg(m_d.sourceSession).arg(qs(rec.error().detail)));
+        return false;
+    }
+    // The measured response: the capture named "measured", else the first FRF.
+    const store::NamedCapture* pick = nullptr;
+    for (const auto& c : rec->captures)
+        if (store::isFrfCapture(c.capture) && (!pick || c.name == "measured"))
+            pick = &c;
+    if (!pick) {
+        m_note->setText(tr("Session %1 holds no frequency response.").arg(m_d.sourceSession));
+        return false;
+    }
+    auto frf = store::frfFromCapture(pick->capture);
+    if (!frf) {
+        m_note->setText(tr("Session %1, capture %2: %3").arg(m_d.sourceSession).arg(qs(pick->name), qs(frf.error().detail)));
+        return false;
+    }
+    m_d.measured = std::move(frf).value();
+    m_d.axis = qs(rec->info.axis);
+    return true;
+}
+
+int TwoInertiaSourcePage::nextId() const
+{
+    return m_session->isChecked() ? TwoInertiaWizard::Fit : TwoInertiaWizard::Safety;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fit
+
+TwoInertiaFitPage::TwoInertiaFitPage(AppContext& ctx, TwoInertiaData& shared, TestRunPage* run, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_run(run)
+{
+    setTitle(tr("Two-inertia model"));
+    setSubTitle(tr("Torque → motor velocity P_m with the fitted model (5.1) over it: anti-resonance f₀ = √(K/J_L)/2π "
+                   "(zero), resonance f_p = √(K(1/J_m + 1/J_L))/2π (pole), and the residual model/measured."));
+    auto* lay = new QVBoxLayout(this);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    auto* left = new QSplitter(Qt::Vertical, split);
+    m_bode = new widgets::BodePlot(left);
+    m_bode->setObjectName("tiBode");
+    m_residual = new widgets::CurvePlot(left);
+    m_residual->setObjectName("tiResidual");
+    m_residual->setAxes(tr("Frequency"), "Hz", tr("Residual model/measured"), tr("dB, °"), true, false);
+    left->addWidget(m_bode);
+    left->addWidget(m_residual);
+    left->setStretchFactor(0, 3);
+    left->setStretchFactor(1, 1);
+    m_table = makeTable(split, {tr("Quantity"), tr("Value")});
+    m_table->setObjectName("tiModelTable");
+    split->addWidget(left);
+    split->addWidget(m_table);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    lay->addWidget(split, 1);
+    m_status = new QLabel(this);
+    m_status->setWordWrap(true);
+    lay->addWidget(m_status);
+    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+        if (r.id != m_readRequest)
+            return;
+        m_readRequest = 0;
+        if (r.ok) {
+            auto get = [&](const char* k, double fallback) {
+                auto it = r.values.find(k);
+                return it == r.values.end() ? fallback : it->second;
+            };
+            m_d.loopPi = {get("velocity.kp", m_d.loopPi.kpNmsPerRad), get("velocity.ki", m_d.loopPi.kiNmPerRad)};
+            m_d.velocityPeriodS = get("velocity.period", m_d.velocityPeriodS);
+            m_d.currentPeriodS = get("current.period", m_d.currentPeriodS);
+            if (!m_d.fromSession && m_d.measured) {
+                auto& md = m_d.measured->metadata;
+                md["loop_kp_Nms_per_rad"] = exact(m_d.loopPi.kpNmsPerRad);
+                md["loop_ki_Nm_per_rad"] = exact(m_d.loopPi.kiNmPerRad);
+                md["velocity_period_s"] = exact(m_d.velocityPeriodS);
+                md["current_period_s"] = exact(m_d.currentPeriodS);
+            }
+        }
+        analyse();
+    });
+}
+
+void TwoInertiaFitPage::initializePage()
+{
+    m_bode->clearResponses();
+    m_bode->clearMarkers();
+    m_residual->clear();
+    m_table->setRowCount(0);
+    m_d.fit.reset();
+    m_d.plant.reset();
+    m_d.error.clear();
+    if (!m_d.fromSession && m_run->succeeded() && !m_run->replies().empty() && m_run->replies().front().frf) {
+        m_d.measured = m_run->replies().front().frf->frf;
+        m_d.axis = m_run->replies().front().axis;
+    }
+    if (!m_d.measured) {
+        m_status->setText(tr("No response to fit."));
+        return;
+    }
+    m_busy = true;
+    emit completeChanged();
+    m_status->setText(tr("Fitting…"));
+    // The loop the response was measured in: recorded with the response (a wizard measurement), else
+    // from the drive when it has this axis (its values may have changed since), else as entered.
+    const auto& md = m_d.measured->metadata;
+    auto num = [&](const char* key, double& out) {
+        auto it = md.find(key);
+        if (it == md.end())
+            return false;
+        bool ok = false;
+        out = QString::fromStdString(it->second).toDouble(&ok);
+        return ok;
+    };
+    double kp = 0, ki = 0, tv = 0, h = 0;
+    if (num("loop_kp_Nms_per_rad", kp) && num("loop_ki_Nm_per_rad", ki) && num("velocity_period_s", tv) &&
+        num("current_period_s", h)) {
+        m_d.loopPi = {kp, ki};
+        m_d.velocityPeriodS = tv;
+        m_d.currentPeriodS = h;
+        analyse();
+    } else if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis))
+        m_readRequest = m_ctx.drive().readParameters(
+            m_d.axis, {"velocity.kp", "velocity.ki", "velocity.period", "current.period"});
+    else
+        analyse();
+}
+
+void TwoInertiaFitPage::analyse()
+{
+    struct Out {
+        std::optional<dsp::FrequencyResponse> plant;
+        std::optional<tuning::TwoInertiaFit> fit;
+        QString error;
+    };
+    const auto measured = *m_d.measured;
+    const auto pi = m_d.loopPi;
+    const double tv = m_d.velocityPeriodS, h = m_d.currentPeriodS;
+    const auto opts = m_d.fitOptions;
+    auto* watcher = new QFutureWatcher<Out>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+        const Out out = watcher->result();
+        watcher->deleteLater();
+        m_d.plant = out.plant;
+        m_d.fit = out.fit;
+        m_d.error = out.error;
+        m_busy = false;
+        showResults();
+        emit completeChanged();
+    });
+    watcher->setFuture(QtConcurrent::run([measured, pi, tv, h, opts]() {
+        Out out;
+        dsp::FrequencyResponse plant = measured;
+        auto it = measured.metadata.find("measurement");
+        if (it != measured.metadata.end() && it->second == "complementary") {
+            auto p = tuning::plantFromVelocityLoop(measured, pi, tv, h);
+            if (!p) {
+                out.error = qs(p.error().detail);
+                return out;
+            }
+            plant = std::move(p).value();
+        }
+        out.plant = plant;
+        auto fit = tuning::fitTwoInertia(plant, opts);
+        if (!fit)
+            out.error = qs(fit.error().detail);
+        else
+            out.fit = *fit;
+        return out;
+    }));
+}
+
+void TwoInertiaFitPage::showResults()
+{
+    if (m_d.plant)
+        m_bode->addResponse(*m_d.plant, tr("measured P_m"), QColor(0, 90, 200));
+    if (!m_d.fit) {
+        m_status->setText(tr("Fit failed: %1").arg(m_d.error));
+        return;
+    }
+    const auto& p = m_d.fit->params;
+    dsp::FrequencyResponse model;
+    std::vector<double> rf, rMag, rPh;
+    for (std::size_t i = 0; i < m_d.plant->size(); ++i) {
+        const double f = m_d.plant->freqHz[i];
+        const auto hm = tuning::motorVelocityResponse(p, f);
+        model.push(f, hm, std::nan(""), true);
+        if (m_d.plant->valid[i] && f >= m_d.fitOptions.fminHz && f <= m_d.fitOptions.fmaxHz) {
+            const auto ratio = hm / m_d.plant->h[i];
+            rf.push_back(f);
+            rMag.push_back(20.0 * std::log10(std::abs(ratio)));
+            rPh.push_back(std::arg(ratio) * kRadToDeg);
+        }
+    }
+    m_bode->addResponse(model, tr("two-inertia model"), QColor(200, 60, 0), Qt::DashLine);
+    const double f0 = tuning::antiresonanceRadS(p) / kTwoPi, fp = tuning::resonanceRadS(p) / kTwoPi;
+    const double z0 = tuning::zetaZero(p), zp = tuning::zetaPole(p);
+    m_bode->addMarker(f0, widgets::BodePlot::MarkerKind::AntiResonance,
+                      tr("f₀ %1 Hz, ζ₀ %2").arg(f0, 0, 'f', 2).arg(z0, 0, 'f', 3));
+    m_bode->addMarker(fp, widgets::BodePlot::MarkerKind::Resonance,
+                      tr("f_p %1 Hz, ζ_p %2").arg(fp, 0, 'f', 2).arg(zp, 0, 'f', 3));
+    m_bode->rescale();
+    m_residual->addCurve(tr("magnitude [dB]"), rf, rMag, QColor(0, 90, 200));
+    m_residual->addCurve(tr("phase [°]"), rf, rPh, QColor(200, 60, 0));
+    m_residual->rescale();
+    addRow(m_table, {tr("Anti-resonance f₀"), tr("%1 Hz").arg(f0, 0, 'f', 3)});
+    addRow(m_table, {tr("Zero damping ζ₀"), QString::number(z0, 'f', 4)});
+    addRow(m_table, {tr("Resonance f_p"), tr("%1 Hz").arg(fp, 0, 'f', 3)});
+    addRow(m_table, {tr("Pole damping ζ_p"), QString::number(zp, 'f', 4)});
+    addRow(m_table, {tr("Motor inertia J_m"), QString::fromUtf8("%1 kg·m²").arg(p.jmKgm2, 0, 'g', 5)});
+    addRow(m_table, {tr("Load inertia J_L"), QString::fromUtf8("%1 kg·m²").arg(p.jlKgm2, 0, 'g', 5)});
+    addRow(m_table, {tr("Stiffness K"), QString::fromUtf8("%1 N·m/rad").arg(p.kNmPerRad, 0, 'g', 5)});
+    addRow(m_table, {tr("Damping C"), QString::fromUtf8("%1 N·m·s/rad").arg(p.cNmsPerRad, 0, 'g', 4)});
+    addRow(m_table, {tr("Delay"), QString::fromUtf8("%1 µs").arg(p.delayS * 1e6, 0, 'f', 0)});
+    addRow(m_table, {tr("Fit error (rms relative)"), QString::number(m_d.fit->fitError, 'f', 4)});
+    addRow(m_table, {tr("Check f_p/f₀ = √(1 + J_L/J_m)"),
+                     tr("%1 = %2").arg(fp / f0, 0, 'f', 3).arg(std::sqrt(1.0 + p.jlKgm2 / p.jmKgm2), 0, 'f', 3)});
+    m_table->resizeColumnsToContents();
+    m_status->setText(tr("Fit over %1–%2 Hz, %3 points, %4 iterations. The response was converted from the closed "
+                         "velocity loop with K_P %5 N·m·s/rad, K_I %6 N·m/rad when it was one.")
+                          .arg(m_d.fitOptions.fminHz)
+                          .arg(m_d.fitOptions.fmaxHz)
+                          .arg(m_d.fit->pointsUsed)
+                          .arg(m_d.fit->iterations)
+                          .arg(m_d.loopPi.kpNmsPerRad)
+                          .arg(m_d.loopPi.kiNmPerRad));
+}
+
+bool TwoInertiaFitPage::isComplete() const { return !m_busy && m_d.fit.has_value(); }
+
+// ---------------------------------------------------------------------------------------------
+// Filter and prediction
+
+TwoInertiaFilterPage::TwoInertiaFilterPage(AppContext& ctx, TwoInertiaData& shared, ApplyPage* apply, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
+{
+    setTitle(tr("Suppression filter and predicted load error"));
+    setSubTitle(tr("Semi-closed: F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) on the position command (5.7). Full-closed: "
+                   "F_L = F_m/(τs + 1) on the velocity command (5.9). Start values from the model: f₀ and the zero "
+                   "damping ζ₀ (not ζ_p)."));
+    auto* lay = new QHBoxLayout(this);
+    auto* left = new QVBoxLayout;
+    auto* form = new QFormLayout;
+    m_mode = new QComboBox(this);
+    m_mode->setObjectName("tiMode");
+    m_mode->addItems({tr("Semi-closed (F_m)"), tr("Full-closed (F_L)")});
+    m_tau = spin(this, 0, 1000, 0, 2, " ms");
+    m_tau->setToolTip(tr("0: high-frequency gain 1/(2ζω₀τ) = 2.5"));
+    m_vmax = spin(this, 0.1, 1000, 10, 2, " rev/s");
+    m_accel = spin(this, 1, 1e5, 200, 1, QString::fromUtf8(" rev/s²"));
+    m_jerk = spin(this, 10, 1e8, 20000, 0, QString::fromUtf8(" rev/s³"));
+    form->addRow(tr("Feedback:"), m_mode);
+    form->addRow(tr("F_L time constant τ:"), m_tau);
+    form->addRow(tr("Profile speed:"), m_vmax);
+    form->addRow(tr("Acceleration:"), m_accel);
+    form->addRow(tr("Jerk:"), m_jerk);
+    left->addLayout(form);
+    m_table = makeTable(this, {tr("Setting"), tr("Value")});
+    m_table->setObjectName("tiFilterTable");
+    left->addWidget(m_table, 1);
+    lay->addLayout(left, 2);
+    auto* right = new QVBoxLayout;
+    m_plot = new widgets::CurvePlot(this);
+    m_plot->setObjectName("tiLoadError");
+    m_plot->setAxes(tr("Time"), "s", tr("Load error y_L − y*"), QString::fromUtf8("°"));
+    right->addWidget(m_plot, 1);
+    m_result = new QLabel(this);
+    m_result->setObjectName("tiPrediction");
+    m_result->setWordWrap(true);
+    right->addWidget(m_result);
+    lay->addLayout(right, 3);
+    for (auto* s : {m_tau, m_vmax, m_accel, m_jerk})
+        connect(s, &QDoubleSpinBox::valueChanged, this, &TwoInertiaFilterPage::update);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &TwoInertiaFilterPage::update);
+}
+
+void TwoInertiaFilterPage::initializePage() { update(); }
+
+void TwoInertiaFilterPage::update()
+{
+    if (!m_d.fit)
+        return;
+    const auto& p = m_d.fit->params;
+    const auto mode = m_mode->currentIndex() == 1 ? tuning::SuppressionMode::Full : tuning::SuppressionMode::Semi;
+    m_d.tauS = m_tau->value() * 1e-3;
+    m_d.filter = tuning::suppressionFilterFromModel(p, mode, m_d.tauS);
+    m_d.profile.vMax = m_vmax->value() * kTwoPi;
+    m_d.profile.aMax = m_accel->value() * kTwoPi;
+    m_d.profile.jerk = m_jerk->value() * kTwoPi;
+    // The load error under ideal motor tracking with F_m (the full-closed F_L acts inside the loop).
+    const auto semi = tuning::suppressionFilterFromModel(p, tuning::SuppressionMode::Semi, 0.0);
+    m_d.loadError = tuning::loadErrorTraces(p, semi, m_d.profile, 1e-3);
+    double maxWithout = 0.0, maxWith = 0.0;
+    std::vector<double> a, b;
+    for (std::size_t i = 0; i < m_d.loadError.tS.size(); ++i) {
+        a.push_back(m_d.loadError.withoutFilter[i] * kRadToDeg);
+        b.push_back(m_d.loadError.withFilter[i] * kRadToDeg);
+        maxWithout = std::max(maxWithout, std::abs(a.back()));
+        maxWith = std::max(maxWith, std::abs(b.back()));
+    }
+    m_plot->clear();
+    m_plot->addCurve(tr("without filter"), m_d.loadError.tS, a, QColor(200, 60, 0));
+    m_plot->addCurve(tr("with F_m"), m_d.loadError.tS, b, QColor(0, 150, 60));
+    m_plot->rescale();
+    m_d.proposedPi = tuning::velocityPiFromInertia(p.jmKgm2, kTwoPi * 24.0, 10.0);
+    m_table->setRowCount(0);
+    addRow(m_table, {tr("Filter frequency f₀"), tr("%1 Hz").arg(m_d.filter.f0Hz, 0, 'f', 3)});
+    addRow(m_table, {tr("Filter damping ζ"), QString::number(m_d.filter.zeta, 'f', 4)});
+    if (mode == tuning::SuppressionMode::Full)
+        addRow(m_table, {tr("Time constant τ"), tr("%1 ms").arg(m_d.filter.tauS * 1e3, 0, 'f', 2)});
+    addRow(m_table, {tr("First-order lag T₁ = 2ζ/ω₀"), tr("%1 ms").arg(2.0 * m_d.filter.zeta / (kTwoPi * m_d.filter.f0Hz) * 1e3, 0, 'f', 3)});
+    addRow(m_table, {tr("Velocity K_P (TI-5, ω_l 24 Hz, k 10)"),
+                     QString::fromUtf8("%1 N·m·s/rad").arg(m_d.proposedPi.kpNmsPerRad, 0, 'f', 3)});
+    addRow(m_table, {tr("Velocity K_I (TI-5)"), QString::fromUtf8("%1 N·m/rad").arg(m_d.proposedPi.kiNmPerRad, 0, 'f', 1)});
+    m_table->resizeColumnsToContents();
+    m_result->setText(tr("Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, "
+                         "load through (5.6)). The drive has no F_m/F_L parameter: enter f₀, ζ (and τ) in the NC. "
+                         "The proposal applies the velocity PI of the thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m "
+                         "on the fitted J_m.")
+                          .arg(maxWithout, 0, 'f', 3)
+                          .arg(maxWith, 0, 'f', 3));
+    if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis)) {
+        const model::ParameterValues proposal{{"velocity.kp", m_d.proposedPi.kpNmsPerRad},
+                                              {"velocity.ki", m_d.proposedPi.kiNmPerRad}};
+        m_apply->setProposal(m_d.axis, proposal);
+        m_ctx.setProposed(m_d.axis, proposal);
+    }
+}
+
+int TwoInertiaFilterPage::nextId() const
+{
+    return m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis) ? TwoInertiaWizard::Apply
+                                                                          : TwoInertiaWizard::Save;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Verify
+
+TwoInertiaVerifyPage::TwoInertiaVerifyPage(TwoInertiaData& shared, TestRunPage* run, QWidget* parent)
+    : QWizardPage(parent), m_d(shared), m_run(run)
+{
+    setTitle(tr("Verify with the profile"));
+    setSubTitle(tr("A jog with the profile's speed and acceleration: the measured load − motor angle against the "
+                   "model's prediction from the measured motor motion (5.6)."));
+    auto* lay = new QVBoxLayout(this);
+    m_plot = new widgets::CurvePlot(this);
+    m_plot->setObjectName("tiVerifyPlot");
+    m_plot->setAxes(tr("Time"), "s", tr("Load − motor"), QString::fromUtf8("°"));
+    lay->addWidget(m_plot, 1);
+    m_result = new QLabel(this);
+    m_result->setObjectName("tiVerifyResult");
+    m_result->setWordWrap(true);
+    lay->addWidget(m_result);
+}
+
+void TwoInertiaVerifyPage::initializePage()
+{
+    m_plot->clear();
+    m_d.jog.reset();
+    m_d.verifyT.clear();
+    m_d.measuredTwist.clear();
+    m_d.predictedTwist.clear();
+    if (!m_run->succeeded() || m_run->replies().empty() || !m_run->replies().front().capture || !m_d.fit) {
+        m_result->setText(tr("No verification run."));
+        return;
+    }
+    m_d.jog = m_run->replies().front().capture;
+    const auto* t = m_d.jog->channel("t_s");
+    const auto* ym = m_d.jog->channel("motor_pos_rad");
+    const auto* vm = m_d.jog->channel("motor_vel_rad_s");
+    const auto* yl = m_d.jog->channel("table_pos_rad");
+    if (!t || !ym || !vm || !yl) {
+        m_result->setText(tr("The trace lacks t_s, motor_pos_rad, motor_vel_rad_s or table_pos_rad (a rotary axis "
+                             "with a load encoder is needed)."));
+        return;
+    }
+    auto params = m_d.fit->params;
+    params.delayS = 0.0;
+    const auto pred = tuning::predictLoadFromMotor(params, t->data, ym->data, vm->data);
+    const double off = yl->data.front() - ym->data.front();
+    std::vector<double> meas, pr;
+    for (std::size_t i = 0; i < t->data.size(); ++i) {
+        m_d.verifyT.push_back(t->data[i]);
+        m_d.measuredTwist.push_back(yl->data[i] - ym->data[i] - off);
+        m_d.predictedTwist.push_back(pred.empty() ? 0.0 : pred[i] - ym->data[i]);
+        meas.push_back(m_d.measuredTwist.back() * kRadToDeg);
+        pr.push_back(m_d.predictedTwist.back() * kRadToDeg);
+        m_d.measuredMaxTwist = std::max(m_d.measuredMaxTwist, std::abs(m_d.measuredTwist.back()));
+        m_d.predictedMaxTwist = std::max(m_d.predictedMaxTwist, std::abs(m_d.predictedTwist.back()));
+    }
+    // The jog is a trapezoid: the S-curve with an (almost) infinite jerk, under ideal motor tracking.
+    tuning::MotionProfile trap = m_d.profile;
+    trap.jerk = 1e9;
+    const auto semi = tuning::suppressionFilterFromModel(params, tuning::SuppressionMode::Semi, 0.0);
+    m_d.idealMaxTwist = tuning::predictLoadError(params, semi, trap).maxErrorWithoutFilter;
+    m_plot->addCurve(tr("measured"), m_d.verifyT, meas, QColor(0, 90, 200));
+    m_plot->addCurve(tr("predicted from the motor motion"), m_d.verifyT, pr, QColor(200, 60, 0), Qt::DashLine);
+    m_plot->rescale();
+    m_result->setText(tr("Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°, "
+                         "predicted for ideal motor tracking of the trapezoid %3°. Without an F_m/F_L parameter in the "
+                         "drive this is the unfiltered case; the filtered case needs the filter in the NC.")
+                          .arg(m_d.measuredMaxTwist * kRadToDeg, 0, 'f', 3)
+                          .arg(m_d.predictedMaxTwist * kRadToDeg, 0, 'f', 3)
+                          .arg(m_d.idealMaxTwist * kRadToDeg, 0, 'f', 3));
+}
+
+}  // namespace gui
+}  // namespace axistune

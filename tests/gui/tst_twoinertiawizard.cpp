@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Two-inertia wizard end to end on the simulated two-inertia bench (issue 9): the low-band response
+// measured through the wizard (multi-sweep, 5–300 Hz), the fit, filter and prediction, apply, the
+// verification jog, and the stored session. f_0 is the anti-resonance ω_0/2π = √(K/J_L)/2π (spec
+// §2.2 eq. 5.4 and §4.9 "f_0 = ω_0/2π"); it must lie within 0.5 Hz of the value computed here from
+// the preset's J_L and K (resources/machines/two-inertia.json). The resonance √(K(1/J_m + 1/J_L))/2π is
+// checked with the same tolerance. A second wizard takes the response from the saved session.
+#include "app/gui/AppContext.h"
+#include "app/gui/TwoInertiaWizard.h"
+#include "app/gui/WizardPages.h"
+#include "app/gui/WizardRegistry.h"
+#include "core/sim/MachineDefinition.h"
+#include "core/store/FrfCapture.h"
+#include "tests/gui/GuiTestUtil.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace axistune;
+using namespace axistune::gui;
+using axistune::testing::maybeScreenshot;
+using axistune::testing::waitUntil;
+
+namespace {
+double preset(const std::string& key)
+{
+    auto m = sim::loadPreset("two-inertia");
+    return m->axis("A")->values.at(key);
+}
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+}  // namespace
+
+class TestTwoInertiaWizard : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { axistune::testing::installLanguageFromEnv(); }
+
+    void registeredAndWorksOffline()
+    {
+        const WizardEntry* e = findWizard("two-inertia");
+        QVERIFY(e);
+        QCOMPARE(e->order, 60);
+        QVERIFY(!e->needsDrive);
+    }
+
+    void measuredOnTheBenchGivesTheAntiResonance()
+    {
+        const double jm = preset("plant.inertia_motor"), jl = preset("plant.inertia_load");
+        const double k = preset("plant.coupling_stiffness");
+        const double f0 = std::sqrt(k / jl) / kTwoPi;                     // 21.97 Hz
+        const double fp = std::sqrt(k * (1.0 / jm + 1.0 / jl)) / kTwoPi;  // 38.00 Hz
+
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        ctx.drive().connectTo("sim:two-inertia");
+        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
+
+        qint64 sessionId = 0;
+        {
+            TwoInertiaWizard w(ctx);
+            w.resize(1000, 700);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.sourcePage()->isComplete());
+            maybeScreenshot(&w, "two-inertia-01-source");
+            w.next();
+            QCOMPARE(w.currentId(), int(TwoInertiaWizard::Safety));
+            w.safetyPage()->confirmation()->setChecked(true);
+            QVERIFY(waitUntil([&] { return w.safetyPage()->isComplete(); }, 5000));
+            QCOMPARE(w.safetyPage()->axis(), QString("A"));
+            maybeScreenshot(&w, "two-inertia-02-safety");
+            w.next();
+            QCOMPARE(w.currentId(), int(TwoInertiaWizard::Run));
+            QVERIFY(waitUntil([&] { return w.runPage()->isComplete(); }, 120000));
+            maybeScreenshot(&w, "two-inertia-03-run");
+            w.next();
+            QCOMPARE(w.currentId(), int(TwoInertiaWizard::Fit));
+            QVERIFY(waitUntil([&] { return w.fitPage()->isComplete(); }, 30000));
+            QVERIFY(w.fitPage()->table()->rowCount() >= 8);
+            maybeScreenshot(&w, "two-inertia-04-fit");
+            w.next();
+            QCOMPARE(w.currentId(), int(TwoInertiaWizard::Filter));
+            QVERIFY(!w.data().loadError.tS.empty());
+            maybeScreenshot(&w, "two-inertia-05-filter");
+            w.next();
+            QCOMPARE(w.currentId(), int(TwoInertiaWizard::Apply));
+            ApplyPage* apply = w.applyPage();
+            apply->confirmation()->setChecked(true);
+            QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); }, 10000));
+            maybeScreenshot(&w, "two-inertia-06-apply");
+            apply->applyButton()->click();
+            QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
+            w.next();
+            QCOMPARE(w.currentId(), int(TwoInertiaWizard::VerifyRun));
+            QVERIFY(waitUntil([&] { return w.verifyRunPage()->isComplete(); }, 60000));
+            w.next();
+            QCOMPARE(w.currentId(), int(TwoInertiaWizard::Verify));
+            maybeScreenshot(&w, "two-inertia-07-verify");
+            // The jog's load − motor angle: measured against the model's prediction from the motor motion.
+            const auto& d = w.data();
+            QVERIFY(d.measuredMaxTwist > 0.0);
+            qInfo("jog twist: measured %.5f rad, predicted from the motor %.5f rad, ideal tracking %.5f rad",
+                  d.measuredMaxTwist, d.predictedMaxTwist, d.idealMaxTwist);
+            QVERIFY2(std::abs(d.predictedMaxTwist - d.measuredMaxTwist) <= 0.2 * d.measuredMaxTwist,
+                     qPrintable(QString("twist measured %1 predicted %2").arg(d.measuredMaxTwist).arg(d.predictedMaxTwist)));
+            w.next();
+            QCOMPARE(w.currentId(), int(TwoInertiaWizard::Save));
+            maybeScreenshot(&w, "two-inertia-08-save");
+            sessionId = w.savedSessionId();
+            QVERIFY(sessionId > 0);
+        }
+
+        auto rec = ctx.database()->loadSession(sessionId);
+        QVERIFY(rec.ok());
+        QCOMPARE(QString::fromStdString(rec->info.kind), QString("two-inertia"));
+        QCOMPARE(QString::fromStdString(rec->info.axis), QString("A"));
+        const nlohmann::json* fit = nullptr;
+        for (const auto& r : rec->results)
+            if (r.name == "fit")
+                fit = &r.data;
+        QVERIFY(fit);
+        const double gotF0 = (*fit)["f0_Hz"].get<double>(), gotFp = (*fit)["resonance_Hz"].get<double>();
+        qInfo("f0 %.4f Hz (analytic %.4f), fp %.4f Hz (analytic %.4f)", gotF0, f0, gotFp, fp);
+        QVERIFY2(std::abs(gotF0 - f0) <= 0.5, qPrintable(QString("f0 %1 want %2").arg(gotF0).arg(f0)));
+        QVERIFY2(std::abs(gotFp - fp) <= 0.5, qPrintable(QString("fp %1 want %2").arg(gotFp).arg(fp)));
+        bool measured = false, model = false;
+        for (const auto& c : rec->captures) {
+            if (c.name == "measured")
+                measured = store::frfFromCapture(c.capture).ok() && store::frfFromCapture(c.capture)->size() == 60;
+            if (c.name == "model")
+                model = store::frfFromCapture(c.capture).ok();
+        }
+        QVERIFY(measured && model);
+        bool modelRecord = false;
+        for (const auto& m : rec->models)
+            modelRecord = modelRecord || (m.kind == "two_inertia" &&
+                                          std::abs(m.data["antiresonance_Hz"].get<double>() - gotF0) < 1e-9);
+        QVERIFY(modelRecord);
+        QVERIFY(!rec->journal.empty());
+
+        // The same response from the saved session gives the same fit.
+        TwoInertiaWizard w2(ctx);
+        w2.show();
+        w2.findChild<QRadioButton*>("tiFromSession")->setChecked(true);
+        QComboBox* sessions = w2.sourcePage()->sessions();
+        const int idx = sessions->findData(QVariant::fromValue<qint64>(sessionId));
+        QVERIFY(idx >= 0);
+        sessions->setCurrentIndex(idx);
+        w2.next();
+        QCOMPARE(w2.currentId(), int(TwoInertiaWizard::Fit));
+        QVERIFY(waitUntil([&] { return w2.fitPage()->isComplete(); }, 30000));
+        const double f0Again = tuning::antiresonanceRadS(w2.data().fit->params) / kTwoPi;
+        QVERIFY2(std::abs(f0Again - gotF0) < 1e-6, qPrintable(QString("%1 vs %2").arg(f0Again).arg(gotF0)));
+    }
+};
+
+QTEST_MAIN(TestTwoInertiaWizard)
+#include "tst_twoinertiawizard.moc"
