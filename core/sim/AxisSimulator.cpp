@@ -353,7 +353,8 @@ void AxisSimulator::runTicks(std::int64_t ticks)
             m_delayLine.pop_front();
         }
         m_voltage = applied;
-        m_plant->step(m_x, applied, -frictionMotor(), -frictionLoad(), m_nl.inductanceDrop);
+        const double load = m_loadTorque ? m_loadTorque(t) : 0.0;
+        m_plant->step(m_x, applied, -frictionMotor(), load - frictionLoad(), m_nl.inductanceDrop);
         ++m_tick;
     }
 }

@@ -66,6 +66,9 @@ public:
     void setPositionCommand(std::function<MotionState(double)> fn);
     /// Torque added to the torque command [N·m] before the filters, sampled at the current-loop rate.
     void setTorqueInjection(std::function<double(double)> fn) { m_injection = std::move(fn); }
+    /// External torque on the load side [N·m] (e.g. a cutting force on the table times the lead R; positive
+    /// drives the load in +), sampled at the start of each current-loop period and held over it.
+    void setLoadTorque(std::function<double(double)> fn) { m_loadTorque = std::move(fn); }
 
     /// Runs whole current-loop periods for `seconds` of machine time.
     void run(double seconds);
@@ -139,6 +142,7 @@ private:
     ControlMode m_mode = ControlMode::Velocity;
     std::function<double(double)> m_velocityCommand;
     std::function<double(double)> m_injection;
+    std::function<double(double)> m_loadTorque;
     MotionProfile m_profile;
     std::function<MotionState(double)> m_positionCommand;
     double m_profileStart = 0.0;
