@@ -149,9 +149,9 @@ void BodePlot::setupAxes()
     m_cohRect = new QCPAxisRect(m_plot);
     m_plot->plotLayout()->addElement(1, 0, m_phaseRect);
     m_plot->plotLayout()->addElement(2, 0, m_cohRect);
-    auto* margins = new QCPMarginGroup(m_plot);
+    m_margins = new QCPMarginGroup(m_plot);
     for (QCPAxisRect* r : {m_magRect, m_phaseRect, m_cohRect}) {
-        r->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
+        r->setMarginGroup(QCP::msLeft | QCP::msRight, m_margins);
         r->setRangeDrag(Qt::Horizontal);
         r->setRangeZoom(Qt::Horizontal);
         detail::makeLogAxis(*r->axis(QCPAxis::atBottom));
@@ -267,6 +267,13 @@ void BodePlot::clearResponses()
     m_colorIndex = 0;
 }
 
+void BodePlot::clear()
+{
+    clearMarkers();
+    clearBands();
+    clearResponses();
+}
+
 int BodePlot::responseCount() const
 {
     return static_cast<int>(m_responses.size());
@@ -307,7 +314,7 @@ void BodePlot::addBand(double fromHz, double toHz, BandKind kind)
     }
     m_bands.push_back(std::move(b));
     updateBandLegend();
-    updateCoherenceStrip();
+    updateCoherenceStrip();  // also the legend's visibility
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -319,6 +326,7 @@ void BodePlot::clearBands()
     }
     m_bands.clear();
     updateBandLegend();
+    updateCoherenceStrip();
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -456,10 +464,14 @@ void BodePlot::updateCoherenceStrip()
         layout->insertRow(2);
         layout->addElement(2, 0, m_cohRect);
         layout->setRowStretchFactor(2, 0.9);
+        m_cohRect->setMarginGroup(QCP::msLeft | QCP::msRight, m_margins);
     } else if (!show && shown) {
         layout->take(m_cohRect);
         layout->simplify();
+        // Its never-updated margins would otherwise squeeze the other strips.
+        m_cohRect->setMarginGroup(QCP::msLeft | QCP::msRight, nullptr);
     }
+    detail::updateLegendVisibility(*m_plot);
     // A rect outside the layout keeps stale geometry: hide it and its bands.
     m_cohRect->setVisible(show);
     for (auto& b : m_bands)

@@ -17,6 +17,7 @@
 class QCustomPlot;
 class QCPAxisRect;
 class QCPGraph;
+class QCPMarginGroup;
 
 namespace axistune {
 namespace widgets {
@@ -39,6 +40,8 @@ public:
     void removeResponse(int id);
     void clearResponses();
     int responseCount() const;
+    /// Removes responses, bands and markers.
+    void clear();
     QStringList responseNames() const;
 
     /// Shades [fromHz, toHz] in all three strips; each kind gets one legend entry.
@@ -94,6 +97,7 @@ private:
     QCPAxisRect* m_magRect = nullptr;
     QCPAxisRect* m_phaseRect = nullptr;
     QCPAxisRect* m_cohRect = nullptr;
+    QCPMarginGroup* m_margins = nullptr;
     std::vector<Response> m_responses;
     std::vector<Band> m_bands;
     std::vector<Marker> m_markers;

@@ -23,7 +23,6 @@ CurvePlot::CurvePlot(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
     layout->addWidget(m_plot);
     detail::applyBaseStyle(*m_plot);
     detail::placeLegendBelow(*m_plot, 3);
-    m_plot->legend->setVisible(false);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     setAxes(tr("x"), QString(), tr("y"), QString());
 }
@@ -88,7 +87,7 @@ int CurvePlot::addCurve(const QString& name, const std::vector<double>& x, const
     }
     flush();
     m_curves.push_back(std::move(curve));
-    m_plot->legend->setVisible(true);
+    detail::updateLegendVisibility(*m_plot);
     rescale();
     return static_cast<int>(m_curves.size()) - 1;
 }
@@ -143,7 +142,7 @@ void CurvePlot::clear()
     m_curves.clear();
     m_points.clear();
     m_lineCount = 0;
-    m_plot->legend->setVisible(false);
+    detail::updateLegendVisibility(*m_plot);
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 

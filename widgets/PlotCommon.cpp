@@ -14,6 +14,8 @@ namespace detail {
 
 namespace {
 
+constexpr const char* kLegendHolder = "axistuneLegendHolder";
+
 // Decade ticks labelled 1, 10, 100, 1k, 10k (no "1·10³" in a frequency axis); when less than about
 // two decades are visible, 1-2-5 ticks so that a zoomed-in axis still has labels.
 class FriendlyLogTicker : public QCPAxisTickerLog {
@@ -105,7 +107,31 @@ QCPLegend* placeLegendBelow(QCustomPlot& plot, int columns)
     legend->setColumnSpacing(12);
     plot.plotLayout()->setRowStretchFactor(plot.plotLayout()->rowCount() - 1, 0.001);
     plot.plotLayout()->simplify();
+    plot.setProperty(kLegendHolder, QVariant::fromValue<QObject*>(row));
+    updateLegendVisibility(plot);
     return legend;
+}
+
+void updateLegendVisibility(QCustomPlot& plot)
+{
+    QCPLegend* legend = plot.legend;
+    const bool wanted = legend->itemCount() > 0;
+    legend->setVisible(wanted);
+    // An empty legend (a grid without columns) reports a maximum width of zero, which squeezes the
+    // whole plot column: its row leaves the layout while the legend is empty.
+    auto* holder = qobject_cast<QCPLayoutGrid*>(plot.property(kLegendHolder).value<QObject*>());
+    if (!holder)
+        return;
+    QCPLayoutGrid* layout = plot.plotLayout();
+    const bool inside = holder->layout() == layout;
+    if (wanted && !inside) {
+        const int row = layout->elementCount() == 0 ? 0 : layout->rowCount();
+        layout->addElement(row, 0, holder);
+        layout->setRowStretchFactor(row, 0.001);
+    } else if (!wanted && inside) {
+        layout->take(holder);
+        layout->simplify();
+    }
 }
 
 void makeLogAxis(QCPAxis& axis)

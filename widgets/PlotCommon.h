@@ -23,6 +23,8 @@ void applyBaseStyle(QCustomPlot& plot);
 /// Moves the plot's legend into its own row below the axis rects (it never covers data); columns
 /// fill first and wrap after `columns` entries. Returns the legend.
 QCPLegend* placeLegendBelow(QCustomPlot& plot, int columns = 4);
+/// Shows the legend only when it has entries (an empty legend row upsets the layout's widths).
+void updateLegendVisibility(QCustomPlot& plot);
 /// Turns an axis logarithmic with decade ticks (labels 1, 10, 100, 1k, ...).
 void makeLogAxis(QCPAxis& axis);
 

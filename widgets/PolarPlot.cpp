@@ -229,7 +229,7 @@ void PolarPlot::rebuild()
     scale->setTextAlignment(Qt::AlignLeft);
     scale->setText(scaleText());
     scale->setPadding(QMargins(4, 2, 4, 2));
-    m_plot->legend->setVisible(!m_traces.empty());
+    detail::updateLegendVisibility(*m_plot);
     keepEqualAspect();
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }

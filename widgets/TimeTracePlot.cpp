@@ -338,6 +338,7 @@ void TimeTracePlot::rebuild()
                 rescaleValues(s);
         }
     }
+    detail::updateLegendVisibility(*m_plot);
     updateCursorItems();
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }

@@ -136,9 +136,7 @@ private slots:
         QCOMPARE(plot.frequencyRange().second, 3000.0);
         plot.setPhaseUnwrapped(true);
         QVERIFY(plot.phaseUnwrapped());
-        plot.clearBands();
-        plot.clearMarkers();
-        plot.clearResponses();
+        plot.clear();
         QCOMPARE(plot.bandCount(), 0);
         QCOMPARE(plot.markerCount(), 0);
         QCOMPARE(plot.responseCount(), 0);
