@@ -9,6 +9,7 @@
 #include "widgets/TimeTracePlot.h"
 
 #include <QFile>
+#include <QImage>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -75,6 +76,19 @@ std::shared_ptr<model::Capture> millionSampleCapture(double fs)
     }
     c->channels = {vel, torque};
     return c;
+}
+
+// Non-white pixels in the columns [x0, x1) of an image.
+int inkInColumns(const QImage& img, int x0, int x1)
+{
+    int n = 0;
+    for (int y = 0; y < img.height(); ++y) {
+        for (int x = x0; x < x1; ++x) {
+            if (qGray(img.pixel(x, y)) < 200)
+                ++n;
+        }
+    }
+    return n;
 }
 
 }  // namespace
@@ -296,6 +310,48 @@ private slots:
         QCOMPARE(head(dir.filePath("polar.pdf"), 4), QByteArray("%PDF"));
         plot.clear();
         QCOMPARE(plot.traceCount(), 0);
+    }
+
+    void emptyPlotsFillTheirWidth()
+    {
+        // An empty plot once drew its axes in a narrow strip at the left (an empty legend row).
+        QTemporaryDir dir;
+        BodePlot bode;
+        widgets::TimeTracePlot trace;
+        widgets::CurvePlot curve;
+        const QString a = dir.filePath("a.png"), b = dir.filePath("b.png"), c = dir.filePath("c.png");
+        QVERIFY(bode.exportImage(a, 600, 400));
+        QVERIFY(trace.exportImage(b, 600, 400));
+        QVERIFY(curve.exportImage(c, 600, 400));
+        for (const QString& path : {a, b, c}) {
+            const QImage img(path);
+            QCOMPARE(img.width(), 600);
+            QVERIFY2(inkInColumns(img, 400, 580) > 100, qPrintable(path));  // axis, ticks, labels
+        }
+    }
+
+    void polarCircleIsRoundInAWideExport()
+    {
+        // Only the nominal circle (and the scale text at the top) is drawn darker than grey 80.
+        widgets::PolarPlot plot;
+        QTemporaryDir dir;
+        const QString path = dir.filePath("wide.png");
+        QVERIFY(plot.exportImage(path, 1000, 500));
+        const QImage img(path);
+        int left = img.width(), right = -1, top = img.height(), bottom = -1;
+        for (int y = 40; y < img.height(); ++y) {
+            for (int x = 0; x < img.width(); ++x) {
+                if (qGray(img.pixel(x, y)) < 80) {
+                    left = std::min(left, x);
+                    right = std::max(right, x);
+                    top = std::min(top, y);
+                    bottom = std::max(bottom, y);
+                }
+            }
+        }
+        QVERIFY(right > left && bottom > top);
+        const double w = right - left, h = bottom - top;
+        QVERIFY2(std::abs(w / h - 1.0) < 0.03, qPrintable(QString("%1 x %2 px").arg(w).arg(h)));
     }
 };
 
