@@ -3,7 +3,8 @@
 // resonances (600 Hz, 1 kHz, 3.3 kHz, resources/machines/dd-table.json) are found and notched, and the
 // predicted FRF (`notch --out-frf`) agrees within 1 dB with the FRF re-measured with the notches
 // written into the drive (`capture --set filter.notchN.*=...`). See docs/notch.md "End to end on the
-// simulated drive" for the choices (--linear, the −50 dB floor); the drive's FRF is already corrected
+// simulated drive" for the choices (the −50 dB floor). The preset runs with all its nonlinearities
+// (friction, current noise, its 29-bit encoder), no --linear; the drive's FRF is already corrected
 // for the injection hold (docs/frequency-response-sim.md).
 #include "tests/app/cli/CliRunner.h"
 
@@ -28,7 +29,7 @@ constexpr double kFloorDb = -50.0;  // points where both FRFs lie below this are
 double db(std::complex<double> h) { return 20.0 * std::log10(std::abs(h)); }
 
 const std::string kCapture =
-    "capture --connect sim:dd-table --axis C --test frf --method multisweep --linear --fmin 100 --fmax 3900 --points 300 ";
+    "capture --connect sim:dd-table --axis C --test frf --method multisweep --fmin 100 --fmax 3900 --points 300 ";
 
 }  // namespace
 
