@@ -2,6 +2,8 @@
 // Modbus TCP client of the Drive seam; protocol and register map in docs/modbus.md.
 #include "core/device/ModbusDrive.h"
 
+#include "core/device/MultisineTest.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -369,6 +371,31 @@ Status ModbusDrive::writeParameters(const std::string& axis, const model::Parame
     return Status::success();
 }
 
+Status ModbusDrive::encodeMultisine(const TestRequest& request, const std::function<std::uint16_t*(const std::string&)>& at) const
+{
+    const char* phases = request.multisinePhases == dsp::MultisinePhases::Schroeder ? "schroeder" : "clipping";
+    if (!m_map.fields.count("test.multisine_band4_spacing") || !m_map.fields.count("test.multisine_periods")
+        || m_map.code("multisine_phases", phases) < 0)
+        return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no multisine test fields");
+    if (!request.multisineShape.empty())
+        return makeError(ErrorCode::BadInput, "a shaped multisine cannot be sent over Modbus: the test block carries no spectrum");
+    const auto bands = multisineBandsOf(request);
+    if (bands.size() > 4)
+        return makeError(ErrorCode::OutOfRange, "at most 4 multisine bands over Modbus (got " + std::to_string(bands.size()) + ")");
+    if (request.multisinePeriods < 0 || request.multisinePeriods > 65535)
+        return makeError(ErrorCode::OutOfRange, "multisine periods must lie in 0..65535");
+    *at("test.multisine_periods") = static_cast<std::uint16_t>(request.multisinePeriods);
+    *at("test.multisine_phases") = static_cast<std::uint16_t>(m_map.code("multisine_phases", phases));
+    *at("test.multisine_band_count") = static_cast<std::uint16_t>(bands.size());
+    for (std::size_t b = 0; b < bands.size(); ++b) {
+        const std::string p = "test.multisine_band" + std::to_string(b + 1);
+        encodeF64(bands[b].fminHz, m_map.wordOrder, at(p + "_fmin"));
+        encodeF64(bands[b].fmaxHz, m_map.wordOrder, at(p + "_fmax"));
+        encodeF64(bands[b].spacingHz, m_map.wordOrder, at(p + "_spacing"));
+    }
+    return Status::success();
+}
+
 Status ModbusDrive::startTest(const TestRequest& request)
 {
     auto a = axisInfo(request.axis);
@@ -410,6 +437,7 @@ Status ModbusDrive::startTest(const TestRequest& request)
     if (request.type == TestType::Frf) {
         const char* method = request.frfMethod == FrfMethod::Prbs           ? "prbs"
                              : request.frfMethod == FrfMethod::Conventional ? "conventional"
+                             : request.frfMethod == FrfMethod::Multisine    ? "multisine"
                                                                             : "multisweep";
         if (!m_map.fields.count("test.frf_method") || m_map.code("frf_method", method) < 0)
             return makeError(ErrorCode::BadInput,
@@ -423,6 +451,10 @@ Status ModbusDrive::startTest(const TestRequest& request)
         encodeF64(request.fmaxHz, o, at("test.freq_end"));
         encodeF64(request.settleS, o, at("test.settle"));
         encodeF64(request.minMeasureS, o, at("test.min_measure"));
+        if (request.frfMethod == FrfMethod::Multisine) {
+            if (auto st = encodeMultisine(request, [&](const std::string& f) { return at(f); }); !st)
+                return st;
+        }
     }
     if (auto st =
             writeRegs(a->unit, first.address, w.data(), static_cast<int>(w.size()), "writing the test configuration");

@@ -78,6 +78,8 @@ private:
     Status readRegs(int unit, int address, int count, std::uint16_t* out, const std::string& what);
     Status writeRegs(int unit, int address, const std::uint16_t* values, int count, const std::string& what);
     Status command(int unit, const std::string& name);
+    /// The multisine fields of the test block (periods, phases, up to 4 bands); a shape is refused.
+    Status encodeMultisine(const TestRequest& request, const std::function<std::uint16_t*(const std::string&)>& at) const;
     Status loadAxes();
     Result<AxisInfo> axisInfo(const std::string& axis);
     Result<std::string> readText(int unit, std::uint16_t channel);

@@ -12,6 +12,7 @@
 #include "core/device/SimulatedDrive.h"
 
 #include <atomic>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -71,6 +72,9 @@ private:
         std::uint32_t channelMask = 0;
         double amplitude = 0, distance = 0, velocity = 0, acceleration = 0, duration = 0.1, offset = 0, freqStart = 0,
                freqEnd = 0, settle = 0, minMeasure = 0;
+        // FRF multisine (docs/modbus.md): periods, phases, bands in use and fmin/fmax/spacing per band.
+        std::uint16_t msPeriods = 0, msPhases = 0, msBandCount = 0;
+        std::array<double, 12> msBands{};
     };
     using Clock = std::chrono::steady_clock;
 

@@ -9,6 +9,21 @@
 #include <modbus/modbus.h>
 
 namespace axistune::device {
+namespace {
+
+/// Index 0..11 of "test.multisine_bandB_{fmin,fmax,spacing}" in TestConfig::msBands, else -1.
+int multisineBandSlot(const std::string& n)
+{
+    const std::string prefix = "test.multisine_band";
+    if (n.rfind(prefix, 0) != 0 || n.size() < prefix.size() + 2 || n[prefix.size()] < '1' || n[prefix.size()] > '4')
+        return -1;
+    const int band = n[prefix.size()] - '1';
+    const std::string what = n.substr(prefix.size() + 1);
+    const int k = what == "_fmin" ? 0 : what == "_fmax" ? 1 : what == "_spacing" ? 2 : -1;
+    return k < 0 ? -1 : 3 * band + k;
+}
+
+}  // namespace
 
 int SimDriveServer::refuse(int exception, const std::string& message)
 {
@@ -136,6 +151,16 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
         return u16(c.frfMethod);
     if (n == "test.trace_channel_mask")
         return encodeU32(c.channelMask, o, buf);
+    if (n == "test.multisine_periods")
+        return u16(c.msPeriods);
+    if (n == "test.multisine_phases")
+        return u16(c.msPhases);
+    if (n == "test.multisine_band_count")
+        return u16(c.msBandCount);
+    if (n == "test.multisine_reserved")
+        return u16(0);
+    if (const int b = multisineBandSlot(n); b >= 0)
+        return encodeF64(c.msBands[static_cast<std::size_t>(b)], o, buf);
     const std::pair<const char*, double> f64s[] = {
         {"test.amplitude", c.amplitude},       {"test.distance", c.distance}, {"test.velocity", c.velocity},
         {"test.acceleration", c.acceleration}, {"test.duration", c.duration}, {"test.offset", c.offset},
@@ -228,6 +253,8 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
                          : n == "test.settle"       ? &c.settle
                          : n == "test.min_measure"  ? &c.minMeasure
                                                     : nullptr;
+        if (const int b = multisineBandSlot(n); b >= 0)
+            target = &c.msBands[static_cast<std::size_t>(b)];
         if (target)
             *target = v;
         return 0;
@@ -247,6 +274,16 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
         if (m_map.name("frf_method", w[0]).empty())
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "unknown FRF method " + std::to_string(w[0]));
         c.frfMethod = w[0];
+    } else if (n == "test.multisine_periods") {
+        c.msPeriods = w[0];
+    } else if (n == "test.multisine_phases") {
+        if (m_map.name("multisine_phases", w[0]).empty())
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "unknown multisine phases " + std::to_string(w[0]));
+        c.msPhases = w[0];
+    } else if (n == "test.multisine_band_count") {
+        if (w[0] > 4)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "multisine band count " + std::to_string(w[0]) + " outside 0..4");
+        c.msBandCount = w[0];
     } else if (n == "test.freq_count") {
         c.freqCount = w[0];
     } else if (n == "test.trace_channel_mask") {

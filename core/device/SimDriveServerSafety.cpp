@@ -61,7 +61,15 @@ int SimDriveServer::startTest(int ui)
         const std::string method = m_map.name("frf_method", c.frfMethod);
         req.frfMethod = method == "prbs"           ? FrfMethod::Prbs
                         : method == "conventional" ? FrfMethod::Conventional
+                        : method == "multisine"    ? FrfMethod::Multisine
                                                    : FrfMethod::MultiSweep;
+        if (req.frfMethod == FrfMethod::Multisine) {
+            req.multisinePeriods = c.msPeriods;
+            req.multisinePhases = m_map.name("multisine_phases", c.msPhases) == "schroeder" ? dsp::MultisinePhases::Schroeder
+                                                                                             : dsp::MultisinePhases::Clipping;
+            for (std::size_t b = 0; b < c.msBandCount; ++b)
+                req.multisineBands.push_back({c.msBands[3 * b], c.msBands[3 * b + 1], c.msBands[3 * b + 2]});
+        }
         req.fminHz = c.freqStart;
         req.fmaxHz = c.freqEnd;
         req.points = c.freqCount;

@@ -3,7 +3,9 @@
 // multi-sweep FRF of the same drive and with the independent lifted model of
 // tests/core/sim/LiftedModel.h within 0.5 dB / 3° from 20 Hz to 3.9 kHz and shows the 3.3 kHz mode
 // within 2 %; settle and periods from the loop's dynamics; the peak limit; abort.
+#include "core/device/ModbusDrive.h"
 #include "core/device/MultisineTest.h"
+#include "core/device/SimDriveServer.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/dsp/FrequencyResponse.h"
 #include "core/dsp/InjectionHold.h"
@@ -11,9 +13,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <thread>
 
 using namespace axistune;
 using namespace axistune::device;
@@ -214,4 +218,61 @@ TEST(SimulatedDriveMultisine, TracedInjectionPeakIsTheRequestedPeak)
     EXPECT_NEAR(std::stod(m.frf.metadata.at("peak_Nm")), limit, 1e-9 * limit);
     EXPECT_LT(std::stod(m.frf.metadata.at("crest_factor")), 2.0);
     EXPECT_EQ(m.relativeNoise.size(), m.frf.size());
+}
+
+// Over Modbus the multisine travels in the test block (method 3, periods, phases, bands) and the
+// server's simulated drive runs it: the FRF equals the embedded drive's with the same seed. The
+// server runs in-process on a thread over a loopback socket (as tests/core/device/test_modbus.cpp).
+TEST(ModbusMultisine, FrfOverModbusIsTheEmbeddedFrf)
+{
+    SimDriveServerOptions so;
+    so.preset = "dd-table";
+    so.seed = 7;
+    auto server = SimDriveServer::create(so);
+    ASSERT_TRUE(server.ok()) << server.error().detail;
+    std::thread serving([&] { (void)(*server)->serve(); });
+    const std::string uri = "modbus://127.0.0.1:" + std::to_string((*server)->port()) + "?timeout_ms=2000";
+    auto remote = connectAny({uri, 7});
+    auto local = connectAny({"sim:dd-table", 7});
+    ASSERT_TRUE(remote.ok() && local.ok());
+    TestRequest r = multisineRequest();
+    r.multisineBands = {{40.0, 400.0, 20.0}, {400.0, 3900.0, 100.0}};
+    r.multisinePeriods = 3;
+    r.multisinePhases = dsp::MultisinePhases::Schroeder;
+    r.amplitudePct = 4.0;
+    std::vector<FrfMeasurement> m;
+    for (Drive* d : {remote->get(), local->get()}) {
+        auto st = d->startTest(r);
+        ASSERT_TRUE(st.ok()) << st.error().detail;
+        const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        Result<TestStatus> s = d->pollTest();
+        while (s.ok() && s->state == TestState::Running && std::chrono::steady_clock::now() < end)
+            s = d->pollTest();
+        ASSERT_TRUE(s.ok()) << s.error().detail;
+        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
+        auto f = d->readFrequencyResponse();
+        ASSERT_TRUE(f.ok()) << f.error().detail;
+        m.push_back(std::move(f).value());
+    }
+    const auto& a = m[0].frf;
+    const auto& b = m[1].frf;
+    ASSERT_EQ(b.size(), 18u + 35u);  // 20 Hz lines 46.7 … 386.7 Hz, 100 Hz lines 406.7 … 3806.7 Hz
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        EXPECT_EQ(a.freqHz[i], b.freqHz[i]);
+        EXPECT_LE(std::abs(a.h[i] - b.h[i]), 1e-9 * std::abs(b.h[i])) << b.freqHz[i];
+        EXPECT_EQ(a.valid[i], b.valid[i]);
+    }
+    EXPECT_EQ(a.metadata.at("method"), "multisine");
+    EXPECT_EQ(a.metadata.at("phases"), "schroeder");
+    EXPECT_EQ(a.metadata.at("periods"), "3");
+    EXPECT_EQ(m[0].motionTimeS, m[1].motionTimeS);
+    // A shape is not carried by the test block: refused by the client before anything moves.
+    r.multisineShape = {{100.0, 1.0}, {1000.0, 0.5}};
+    auto refused = (*remote)->startTest(r);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().code, ErrorCode::BadInput);
+    EXPECT_NE(refused.error().detail.find("cannot be sent over Modbus"), std::string::npos);
+    (*server)->requestStop();
+    serving.join();
 }
