@@ -225,11 +225,14 @@ int BodePlot::addResponse(const dsp::FrequencyResponse& frf, const QString& name
     r.mag->setName(name);
     r.mag->addToLegend();
     rebuildResponse(r);
-    const bool first = m_responses.empty();
     m_responses.push_back(std::move(r));
     updateCoherenceStrip();
-    if (first)
-        rescale();
+    // Every response is in view, except that a frequency range set by the caller stays.
+    const auto range = frequencyRange();
+    const bool keep = m_userRange;
+    rescale();
+    if (keep)
+        setFrequencyRange(range.first, range.second);
     m_plot->replot(QCustomPlot::rpQueuedReplot);
     return m_responses.back().id;
 }
@@ -495,6 +498,7 @@ void BodePlot::setFrequencyRange(double fminHz, double fmaxHz)
     if (!(fminHz > 0) || !(fmaxHz > fminHz))
         return;
     m_magRect->axis(QCPAxis::atBottom)->setRange(fminHz, fmaxHz);
+    m_userRange = true;
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -506,6 +510,7 @@ std::pair<double, double> BodePlot::frequencyRange() const
 
 void BodePlot::rescale()
 {
+    m_userRange = false;
     double fLo = std::numeric_limits<double>::infinity();
     double fHi = 0.0;
     double mLo = fLo, mHi = -fLo, pLo = fLo, pHi = -fLo;

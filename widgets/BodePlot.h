@@ -58,10 +58,11 @@ public:
     void setPhaseUnwrapped(bool unwrapped);
     bool phaseUnwrapped() const { return m_unwrapped; }
 
+    /// Shows [fminHz, fmaxHz]; responses added later keep this range (until rescale()).
     void setFrequencyRange(double fminHz, double fmaxHz);
     /// Frequency range currently shown [Hz].
     std::pair<double, double> frequencyRange() const;
-    /// Fits all axes to the data.
+    /// Fits all axes to the data (also done when a response is added).
     void rescale();
     /// True when the coherence strip is shown (some response has a finite coherence).
     bool coherenceVisible() const;
@@ -105,6 +106,7 @@ private:
     int m_nextId = 0;
     int m_colorIndex = 0;
     bool m_unwrapped = false;
+    bool m_userRange = false;
     QString m_lastError;
 };
 

@@ -154,6 +154,7 @@ struct TimeTracePlot::Strip {
     QCPAxisRect* rect = nullptr;
     QStringList names;
     QCPItemStraightLine* cursor[2] = {nullptr, nullptr};
+    QCPItemText* cursorLabel[2] = {nullptr, nullptr};  // "1", "2" at the top of the first strip
 };
 
 TimeTracePlot::TimeTracePlot(QWidget* parent)
@@ -326,6 +327,19 @@ void TimeTracePlot::rebuild()
             line->setPen(QPen(QColor(40, 40, 40), 1.0, c == 0 ? Qt::SolidLine : Qt::DashLine));
             line->setSelectable(false);
             s.cursor[c] = line;
+            if (i == 0) {
+                auto* label = new QCPItemText(m_plot);
+                label->setClipAxisRect(s.rect);
+                label->position->setAxes(x, s.rect->axis(QCPAxis::atLeft));
+                label->position->setAxisRect(s.rect);
+                label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+                label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+                label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+                label->setText(QString::number(c + 1));
+                label->setPadding(QMargins(3, 1, 3, 1));
+                label->setBrush(QColor(255, 255, 255, 210));
+                s.cursorLabel[c] = label;
+            }
         }
     }
     if (hadTraces) {
@@ -463,9 +477,13 @@ void TimeTracePlot::updateCursorItems()
     for (auto& s : m_strips) {
         for (int c = 0; c < 2; ++c) {
             s.cursor[c]->setVisible(m_cursorsShown);
+            if (s.cursorLabel[c])
+                s.cursorLabel[c]->setVisible(m_cursorsShown);
             if (m_cursorsShown) {
                 s.cursor[c]->point1->setCoords(m_cursorT[c], 0.0);
                 s.cursor[c]->point2->setCoords(m_cursorT[c], 1.0);
+                if (s.cursorLabel[c])
+                    s.cursorLabel[c]->position->setCoords(m_cursorT[c], 0.0);
             }
         }
     }

@@ -146,8 +146,12 @@ private slots:
         plot.removeResponse(a);
         QCOMPARE(plot.responseNames(), QStringList{"after"});
         plot.setFrequencyRange(100.0, 3000.0);
+        plot.addResponse(secondOrderFrf(700.0, 0.1, 1.0), "third");  // keeps the range set
         QCOMPARE(plot.frequencyRange().first, 100.0);
         QCOMPARE(plot.frequencyRange().second, 3000.0);
+        plot.rescale();  // the grid of secondOrderFrf: 10 Hz .. 10 kHz
+        QVERIFY(std::abs(plot.frequencyRange().first - 10.0) < 1e-9);
+        QVERIFY(std::abs(plot.frequencyRange().second - 10000.0) < 1e-6);
         plot.setPhaseUnwrapped(true);
         QVERIFY(plot.phaseUnwrapped());
         plot.clear();
