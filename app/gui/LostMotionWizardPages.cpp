@@ -202,6 +202,11 @@ void CircleRunner::runAll()
             if (!r)
                 return std::make_pair(qs(r.error().detail), out);
             out.push_back(r->ballbar);
+            const bool alongX = circles[i].centerYM == 0.0 && circles[i].centerXM != 0.0;
+            out.back().source = QString("circle %1 = %2 mm")
+                                    .arg(QString::fromStdString(alongX ? circles[i].axisX : circles[i].axisY))
+                                    .arg((alongX ? circles[i].centerXM : circles[i].centerYM) * 1e3)
+                                    .toStdString();
         }
         return std::make_pair(QString(), out);
     }));
@@ -586,6 +591,8 @@ void LostMotionDiagnosticsPage::showResults()
         for (const auto& r : m_d.report->refused)
             addRow(m_table, {tr("not computed"), QString(), qs(r)});
     }
+    m_table->setColumnWidth(0, 150);
+    m_table->setColumnWidth(1, 90);
     m_table->resizeRowsToContents();
     m_status->setText(m_d.analysisError.isEmpty() ? tr("%1 traces, %2 reversal events of axis %3.")
                                                          .arg(m_d.traces.size())
@@ -684,6 +691,8 @@ void LostMotionFitPage::initializePage()
                              tr("%1 / %2 / %3 µm").arg(um(p.measuredCutInM, 2), um(p.proposedCutInM, 2),
                                                        um(p.conventionalCutInM, 2))});
     }
+    m_predTable->setColumnWidth(0, 220);
+    m_predTable->setColumnWidth(1, 360);
     // The proposal: torque-synchronous compensation (mode 2) with A, B and x₀ on the identified axis.
     const model::ParameterValues proposal{{"lostmotion.mode", 2.0},
                                           {"lostmotion.A", fit.aMPerNm},

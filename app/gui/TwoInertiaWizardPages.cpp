@@ -224,8 +224,7 @@ TwoInertiaFitPage::TwoInertiaFitPage(AppContext& ctx, TwoInertiaData& shared, Te
     m_table->setObjectName("tiModelTable");
     split->addWidget(left);
     split->addWidget(m_table);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 1);
+    split->setSizes({620, 360});
     lay->addWidget(split, 1);
     m_status = new QLabel(this);
     m_status->setWordWrap(true);
@@ -553,7 +552,7 @@ void TwoInertiaVerifyPage::initializePage()
     const double off = yl->data.front() - ym->data.front();
     std::vector<double> meas, pr;
     for (std::size_t i = 0; i < t->data.size(); ++i) {
-        m_d.verifyT.push_back(t->data[i]);
+        m_d.verifyT.push_back(t->data[i] - t->data.front());
         m_d.measuredTwist.push_back(yl->data[i] - ym->data[i] - off);
         m_d.predictedTwist.push_back(pred.empty() ? 0.0 : pred[i] - ym->data[i]);
         meas.push_back(m_d.measuredTwist.back() * kRadToDeg);
