@@ -5,6 +5,7 @@
 #include "app/gui/FrfWizard.h"
 
 #include "app/gui/AppContext.h"
+#include "app/gui/NotchWizard.h"
 #include "app/gui/WizardRegistry.h"
 
 #include "core/device/FrfTest.h"
@@ -16,6 +17,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSpinBox>
 
 #include <cmath>
@@ -54,6 +56,7 @@ FrfWizard::FrfWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_ctx(
     });
     connect(m_run, &TestRunPage::runFinished, this, &FrfWizard::onRunFinished);
     connect(this, &QWizard::currentIdChanged, this, &FrfWizard::onPageChanged);
+    connect(m_save->openNotchButton(), &QPushButton::clicked, this, &FrfWizard::openInNotchWizard);
 }
 
 device::TestRequest FrfWizard::request() const
@@ -180,6 +183,22 @@ void FrfWizard::accept()
 {
     if (currentId() == SaveId)
         saveCompleted();
+    QWizard::accept();
+}
+
+void FrfWizard::openInNotchWizard()
+{
+    if (!m_measurement || m_result->measured().empty())
+        return;
+    saveCompleted();
+    auto* notch = new NotchWizard(m_ctx, parentWidget());
+    notch->setAttribute(Qt::WA_DeleteOnClose);
+    // The origin is data of the notch session, not a user-visible text.
+    const QString origin = m_sessionId > 0 ? QStringLiteral("frf wizard, session %1").arg(m_sessionId)
+                                           : QStringLiteral("frf wizard");
+    notch->setSourceFrf(m_result->measured(), QString::fromStdString(m_lastRequest.axis), origin);
+    emit notchWizardOpened(notch);
+    notch->show();
     QWizard::accept();
 }
 

@@ -147,10 +147,12 @@ public:
     explicit FrfSavePage(QWidget* parent = nullptr);
     QLineEdit* note() const { return m_note; }
     QLabel* status() const { return m_status; }
+    QPushButton* openNotchButton() const { return m_openNotch; }
     void showSaved(const QString& text);
 
 private:
     QLineEdit* m_note = nullptr;
+    QPushButton* m_openNotch = nullptr;
     QLabel* m_status = nullptr;
 };
 
@@ -176,8 +178,14 @@ public:
     void accept() override;
     void reject() override;
 
+    /// Saves the session (as Finish) and hands the measured FRF to a new notch wizard, which opens at
+    /// its proposal; this wizard closes.
+    void openInNotchWizard();
+
 signals:
     void sessionSaved(qint64 id);
+    /// The notch wizard opened by openInNotchWizard() (deletes itself on close).
+    void notchWizardOpened(QWizard* wizard);
 
 private:
     void onRunFinished(bool ok);

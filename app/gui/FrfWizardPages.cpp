@@ -18,9 +18,11 @@
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
@@ -487,6 +489,14 @@ FrfSavePage::FrfSavePage(QWidget* parent) : QWizardPage(parent)
     m_status->setObjectName("frfSaveStatus");
     m_status->setWordWrap(true);
     lay->addWidget(m_status);
+    m_openNotch = new QPushButton(tr("Save and open in the notch wizard"), this);
+    m_openNotch->setObjectName("frfOpenNotch");
+    m_openNotch->setToolTip(tr("Stores the session, then proposes notch filters for the resonances of this "
+                               "measurement."));
+    auto* row = new QHBoxLayout;
+    row->addWidget(m_openNotch);
+    row->addStretch(1);
+    lay->addLayout(row);
     lay->addStretch(1);
 }
 

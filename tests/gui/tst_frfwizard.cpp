@@ -12,6 +12,7 @@
 // preset's "modes" list, not from the code under test.
 #include "app/gui/AppContext.h"
 #include "app/gui/FrfWizard.h"
+#include "app/gui/NotchWizard.h"
 #include "app/gui/WizardRegistry.h"
 
 #include "core/device/FrfTest.h"
@@ -27,6 +28,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
+#include <QPointer>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -272,6 +274,37 @@ private slots:
         QVERIFY(connectTo(ctx, QString("modbus://127.0.0.1:%1").arg(sd.port())));
         runCompleteWizard(ctx, kResonanceBand, false);
         qInfo("Modbus end to end: %lld ms wall", static_cast<long long>(t.elapsed()));
+    }
+
+    void openInNotchWizardHandsOverTheSavedFrf()
+    {
+        gui::AppContext ctx;
+        QVERIFY(ctx.openDatabase(m_tmp.filePath("handoff.db")));
+        QVERIFY(connectTo(ctx, "sim:dd-table-linear"));
+        FrfWizard w(ctx);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        configureAndStart(w, kResonanceBand, false);
+        QVERIFY(waitUntil([&] { return !w.runPage()->isRunning(); }, 60000));
+        QVERIFY(w.runPage()->succeeded());
+        w.next();
+        QVERIFY(waitUntil([&] { return w.resultPage()->analysed(); }, 30000));
+        w.next();
+        QCOMPARE(w.currentId(), int(FrfWizard::SaveId));
+        QPointer<QWizard> opened;
+        connect(&w, &FrfWizard::notchWizardOpened, this, [&](QWizard* n) { opened = n; });
+        w.savePage()->openNotchButton()->click();
+        QVERIFY(w.savedSessionId() > 0);  // saved first
+        QVERIFY(!w.isVisible());
+        auto* notch = qobject_cast<gui::NotchWizard*>(opened.data());
+        QVERIFY(notch);
+        QCOMPARE(notch->measured().freqHz, w.resultPage()->measured().freqHz);
+        QCOMPARE(notch->axis(), QString("C"));
+        auto s = ctx.database()->loadSession(w.savedSessionId());
+        QVERIFY(s.ok());
+        QCOMPARE(s->info.status, store::SessionStatus::Completed);
+        notch->close();
+        QVERIFY(waitUntil([&] { return opened.isNull(); }, 5000));
     }
 
     void killedSimdriveShowsTheLostConnectionAndStoresAborted()
