@@ -163,6 +163,30 @@ private slots:
         QVERIFY(model);
         QCOMPARE(rec->parameterSets.size(), std::size_t(2));
         QVERIFY(!rec->journal.empty());
+
+        // The same traces as ball-bar files, imported offline: same A and B, apply and verify skipped.
+        QStringList files;
+        for (std::size_t i = 0; i < w.data().traces.size(); ++i) {
+            files << dir.filePath(QString("c%1.csv").arg(i));
+            QVERIFY(io::writeBallBarCsvFile(files.back().toStdString(), w.data().traces[i]).ok());
+        }
+        AppContext offline;
+        QVERIFY(offline.openDatabase(dir.filePath("offline.sqlite")));
+        LostMotionWizard w2(offline);
+        w2.show();
+        QVERIFY(!w2.findChild<QRadioButton*>("lmMachine")->isEnabled());
+        QVERIFY(w2.sourcePage()->addFiles(files));
+        w2.next();
+        QCOMPARE(w2.currentId(), int(LostMotionWizard::Diagnostics));
+        QVERIFY(waitUntil([&] { return w2.diagnosticsPage()->isComplete(); }, 60000));
+        w2.next();
+        QCOMPARE(w2.currentId(), int(LostMotionWizard::Fit));
+        w2.next();
+        QCOMPARE(w2.currentId(), int(LostMotionWizard::Save));
+        QVERIFY(w2.savedSessionId() > 0);
+        QVERIFY(w2.findChild<QLabel*>("lmSummary")->text().contains("need a connection"));
+        QVERIFY(std::abs(w2.data().fit->aMPerNm - a) < 1e-3 * a);
+        QVERIFY(std::abs(w2.data().fit->bPerNm - b) < 1e-3 * b);
     }
 };
 
