@@ -281,14 +281,11 @@ TEST(SimulatedDriveFrf, LiftedInjectionModelTendsToOneAtLowFrequency)
 
 // Issue 3: on sim:dd-table the multi-sweep FRF shows the 3.3 kHz resonance within 2 % of its
 // frequency, and the conventional FRF marks everything above 2 kHz (fs/2 at 4 kHz tracing) invalid.
-// Encoder quantization is switched off: the preset's 3.6e6 counts/rev (1.7 µrad) cannot resolve the
-// nanoradian motion of the table at kilohertz (docs/frequency-response-sim.md).
+// The preset as it is, all nonlinearities on: its 2^29 counts/rev encoder resolves the nanoradian
+// motion of the table at kilohertz (the former 3.6e6 counts/rev did not; docs/frequency-response-sim.md).
 TEST(SimulatedDriveFrf, DdTableMultiSweepShowsThe3300HzModeAndConventionalIsInvalidAboveNyquist)
 {
     auto drive = makeDrive("dd-table");
-    auto nl = drive->simulator("C")->nonlinearities();
-    nl.quantization = false;
-    drive->simulator("C")->setNonlinearities(nl);
     TestRequest r;
     r.axis = "C";
     r.type = TestType::Frf;
