@@ -72,7 +72,8 @@ bool connectTo(gui::AppContext& ctx, const QString& uri)
 }
 
 /// Sets the pages of a shown wizard up to the run page and presses Next into the run.
-void configureAndStart(FrfWizard& w, const Band& b, bool screenshots)
+void configureAndStart(FrfWizard& w, const Band& b, bool screenshots,
+                       device::FrfMethod method = device::FrfMethod::MultiSweep)
 {
     auto* safety = w.safetyPage();
     QCOMPARE(w.currentId(), int(FrfWizard::SafetyId));
@@ -89,6 +90,8 @@ void configureAndStart(FrfWizard& w, const Band& b, bool screenshots)
     auto* cfg = w.configPage();
     QCOMPARE(cfg->method()->currentIndex(), 0);  // multi-sweep is the default
     QCOMPARE(cfg->selectedMethod(), device::FrfMethod::MultiSweep);
+    cfg->method()->setCurrentIndex(cfg->method()->findData(int(method)));
+    QCOMPARE(cfg->selectedMethod(), method);
     cfg->fmin()->setValue(b.fmin);
     cfg->fmax()->setValue(b.fmax);
     cfg->points()->setValue(b.points);
@@ -260,7 +263,61 @@ private slots:
         QVERIFY(ctx.openDatabase(m_tmp.filePath("sim.db")));
         QVERIFY(connectTo(ctx, "sim:dd-table-linear"));
         runCompleteWizard(ctx, kWideBand, true);
+        // The multisine is offered on the simulated drive (4 methods), not over Modbus (below).
         qInfo("simulated end to end: %lld ms wall", static_cast<long long>(t.elapsed()));
+    }
+
+    void singleSweepMethodsAreValidBelowHalfTheTraceRateOnly()
+    {
+        gui::AppContext ctx;
+        QVERIFY(connectTo(ctx, "sim:dd-table-linear"));
+        {
+            // Conventional up to 3.9 kHz: points at and above fs/2 = 2 kHz not valid (the drive's
+            // rule); they lie in the shaded "valid only by multi-sweep" band and get no band of their own.
+            FrfWizard w(ctx);
+            w.show();
+            configureAndStart(w, {1000.0, 3900.0, 12, 3.0}, false, device::FrfMethod::Conventional);
+            QCOMPARE(w.configPage()->method()->count(), 4);  // multisine offered on the simulated drive
+            QVERIFY(waitUntil([&] { return !w.runPage()->isRunning(); }, 60000));
+            QVERIFY2(w.runPage()->succeeded(), qPrintable(w.runPage()->failure()));
+            w.next();
+            QVERIFY(waitUntil([&] { return w.resultPage()->analysed(); }, 30000));
+            const auto& m = w.resultPage()->measured();
+            int above = 0;
+            for (std::size_t i = 0; i < m.size(); ++i) {
+                QCOMPARE(bool(m.valid[i]), m.freqHz[i] < 2000.0);
+                above += m.freqHz[i] >= 2000.0 ? 1 : 0;
+            }
+            QVERIFY(above >= 3);
+            // fs/2..fs "valid only by multi-sweep" and above fs "not measurable" (the plot reaches 1.15 fmax).
+            QCOMPARE(w.resultPage()->bodePlot()->bandCount(), 2);
+            QVERIFY(!w.resultPage()->bodePlot()->coherenceVisible());  // sine streams: no coherence
+        }
+        {
+            // PRBS: Welch coherence shown; fmax at or above fs/2 refused before anything moves.
+            FrfWizard w(ctx);
+            w.show();
+            auto* cfg = w.configPage();
+            w.safetyPage()->confirmation()->setChecked(true);
+            QVERIFY(waitUntil([&] { return w.safetyPage()->isComplete(); }, 10000));
+            w.next();
+            cfg->method()->setCurrentIndex(cfg->method()->findData(int(device::FrfMethod::Prbs)));
+            cfg->fmin()->setValue(100.0);
+            cfg->fmax()->setValue(2500.0);
+            QVERIFY(waitUntil([&] { return cfg->findChild<QLabel*>("frfEstimate")->text().contains("refuse"); }, 20000));
+            QVERIFY(!cfg->isComplete());
+            QVERIFY(!w.button(QWizard::NextButton)->isEnabled());
+            cfg->fmax()->setValue(1900.0);
+            cfg->points()->setValue(30);
+            QVERIFY(waitUntil([&] { return cfg->isComplete(); }, 20000));
+            w.next();
+            QVERIFY(waitUntil([&] { return !w.runPage()->isRunning(); }, 60000));
+            QVERIFY2(w.runPage()->succeeded(), qPrintable(w.runPage()->failure()));
+            w.next();
+            QVERIFY(waitUntil([&] { return w.resultPage()->analysed(); }, 30000));
+            QVERIFY(w.resultPage()->bodePlot()->coherenceVisible());
+            QCOMPARE(w.resultPage()->measured().metadata.at("method"), std::string("prbs"));
+        }
     }
 
     void ddTableOverModbusEndToEnd()
@@ -273,6 +330,12 @@ private slots:
         QVERIFY(ctx.openDatabase(m_tmp.filePath("modbus.db")));
         QVERIFY(connectTo(ctx, QString("modbus://127.0.0.1:%1").arg(sd.port())));
         runCompleteWizard(ctx, kResonanceBand, false);
+        FrfWizard w(ctx);
+        w.show();
+        w.safetyPage()->confirmation()->setChecked(true);
+        QVERIFY(waitUntil([&] { return w.safetyPage()->isComplete(); }, 10000));
+        w.next();
+        QCOMPARE(w.configPage()->method()->count(), 3);  // no multisine over the Modbus register map
         qInfo("Modbus end to end: %lld ms wall", static_cast<long long>(t.elapsed()));
     }
 
