@@ -59,4 +59,4 @@ Status correctInjectionHold(FrequencyResponse& frf, double currentPeriodS, int t
     return Status::success();
 }
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

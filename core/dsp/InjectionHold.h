@@ -30,4 +30,4 @@ Status correctInjectionHold(FrequencyResponse& frf, double currentPeriodS, int t
 /// True when the FRF's metadata says injection_hold_corrected=true.
 bool isInjectionHoldCorrected(const FrequencyResponse& frf);
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

@@ -2,10 +2,9 @@
 // Injection-hold factor G = N / Σ_{m<N} e^{−jωmh}, checked against an independent DFT of a held sine.
 #include "core/dsp/InjectionHold.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
+#include <gtest/gtest.h>
 #include <numbers>
 
 using namespace axistune::dsp;
@@ -30,7 +29,7 @@ std::complex<double> heldFundamental(double fHz, double h, int n, int cycles)
     return held / fine;
 }
 
-}  // namespace
+} // namespace
 
 TEST(InjectionHold, InverseIsTheFundamentalOfTheHeldSine)
 {
@@ -55,10 +54,11 @@ TEST(InjectionHold, DdTableValuesAndLimits)
     EXPECT_NEAR(std::arg(injectionHoldFactor(1000.0, h, 4)) * 180.0 / std::numbers::pi, 33.75, 1e-9);
     EXPECT_NEAR(std::arg(injectionHoldFactor(300.0, h, 4)) * 180.0 / std::numbers::pi, 10.125, 1e-9);
     // |Σ| = |sin(Nθ/2)/sin(θ/2)|: at 1 kHz θ = 2π/16, |G| = 4 sin(π/16)/sin(π/4).
-    EXPECT_NEAR(std::abs(injectionHoldFactor(1000.0, h, 4)), 4.0 * std::sin(std::numbers::pi / 16) / std::sin(std::numbers::pi / 4), 1e-12);
+    EXPECT_NEAR(std::abs(injectionHoldFactor(1000.0, h, 4)),
+                4.0 * std::sin(std::numbers::pi / 16) / std::sin(std::numbers::pi / 4), 1e-12);
     EXPECT_EQ(injectionHoldFactor(1234.0, h, 1), std::complex<double>(1.0, 0.0));
     EXPECT_EQ(injectionHoldFactor(0.0, h, 4), std::complex<double>(1.0, 0.0));
-    EXPECT_TRUE(std::isnan(injectionHoldFactor(4000.0, h, 4).real()));  // the sum vanishes at 1/(N h)
+    EXPECT_TRUE(std::isnan(injectionHoldFactor(4000.0, h, 4).real())); // the sum vanishes at 1/(N h)
     EXPECT_TRUE(std::isnan(injectionHoldFactor(100.0, h, 0).real()));
     EXPECT_TRUE(std::isnan(injectionHoldFactor(100.0, 0.0, 4).real()));
 }
@@ -74,7 +74,7 @@ TEST(InjectionHold, CorrectsOnceAndRecordsIt)
     EXPECT_FALSE(frf.valid[1]);
     EXPECT_TRUE(isInjectionHoldCorrected(frf));
     EXPECT_EQ(frf.metadata.at("injection_hold_ticks"), "4");
-    EXPECT_FALSE(correctInjectionHold(frf, 62.5e-6, 4).ok());  // never twice
+    EXPECT_FALSE(correctInjectionHold(frf, 62.5e-6, 4).ok()); // never twice
     FrequencyResponse other;
     EXPECT_FALSE(correctInjectionHold(other, 0.0, 4).ok());
     EXPECT_FALSE(correctInjectionHold(other, 62.5e-6, 0).ok());
