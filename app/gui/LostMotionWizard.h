@@ -183,7 +183,7 @@ private:
     widgets::PolarPlot* m_plot = nullptr;
     QTableWidget* m_table = nullptr;
     QLabel* m_status = nullptr;
-    QFutureWatcher<void>* m_watcher = nullptr;
+    QFutureWatcher<LostMotionData>* m_watcher = nullptr;
     bool m_done = false;
 };
 

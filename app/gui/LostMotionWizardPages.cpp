@@ -515,8 +515,16 @@ LostMotionDiagnosticsPage::LostMotionDiagnosticsPage(LostMotionData& shared, QWi
     m_status = new QLabel(this);
     m_status->setWordWrap(true);
     lay->addWidget(m_status);
-    m_watcher = new QFutureWatcher<void>(this);
+    m_watcher = new QFutureWatcher<LostMotionData>(this);
     connect(m_watcher, &QFutureWatcherBase::finished, this, [this] {
+        // Only the analysis results are taken over (the inputs are the page's own copy).
+        const LostMotionData r = m_watcher->result();
+        m_d.report = r.report;
+        m_d.points = r.points;
+        m_d.fit = r.fit;
+        m_d.conventionalBacklashM = r.conventionalBacklashM;
+        m_d.predictions = r.predictions;
+        m_d.analysisError = r.analysisError;
         m_done = true;
         showResults();
         emit completeChanged();
@@ -528,16 +536,16 @@ void LostMotionDiagnosticsPage::initializePage()
     m_done = false;
     m_plot->clear();
     m_table->setRowCount(0);
+    m_d.report.reset();
+    m_d.fit.reset();
+    m_d.points.clear();
+    m_d.predictions.clear();
+    m_d.analysisError.clear();
     m_status->setText(tr("Analysing %1 traces…").arg(m_d.traces.size()));
     emit completeChanged();
-    LostMotionData* d = &m_d;
-    // The analysis writes into the shared data only from this future; the pages wait for it.
-    m_watcher->setFuture(QtConcurrent::run([d] {
-        d->report.reset();
-        d->fit.reset();
-        d->points.clear();
-        d->predictions.clear();
-        d->analysisError.clear();
+    // The analysis works on a copy: the wizard may go back or close while it runs.
+    m_watcher->setFuture(QtConcurrent::run([in = m_d]() mutable {
+        LostMotionData* d = &in;
         auto rep = tuning::analyzeBallBar(d->traces, d->options);
         if (rep)
             d->report = std::move(rep).value();
@@ -548,14 +556,14 @@ void LostMotionDiagnosticsPage::initializePage()
             auto pts = tuning::extractLostMotionPoints(t, setup, d->options);
             if (!pts) {
                 d->analysisError = qs(pts.error().detail);
-                return;
+                return in;
             }
             d->points.insert(d->points.end(), pts->begin(), pts->end());
         }
         auto fit = tuning::fitLostMotion(d->points);
         if (!fit) {
             d->analysisError = qs(fit.error().detail);
-            return;
+            return in;
         }
         d->fit = *fit;
         double xbl = 0.0;
@@ -566,10 +574,11 @@ void LostMotionDiagnosticsPage::initializePage()
             auto p = tuning::predictCompensation(t, setup, *fit, xbl, d->options);
             if (!p) {
                 d->analysisError = qs(p.error().detail);
-                return;
+                return in;
             }
             d->predictions.push_back(std::move(p).value());
         }
+        return in;
     }));
 }
 
