@@ -13,14 +13,14 @@
 // AXISTUNE_BENCH_DUMP=1 prints every line to stderr: f, dB error, phase error, valid, σ_H/|H|, |T| [dB].
 #include "core/device/SimulatedDrive.h"
 #include "core/dsp/InjectionHold.h"
-#include "tests/core/sim/LiftedModel.h"
 
 #include <benchmark/benchmark.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+
+#include "tests/core/sim/LiftedModel.h"
 
 using namespace axistune;
 using namespace axistune::device;
@@ -50,12 +50,15 @@ Errors compare(const FrfMeasurement& m, const simtest::LiftedInjectionLoop& mode
             continue;
         std::complex<double> ref = model.closedLoop(f);
         if (corrected)
-            ref /= dsp::injectionHoldFactor(f, model.currentPeriodS, static_cast<int>(std::lround(model.periodS / model.currentPeriodS)));
+            ref /= dsp::injectionHoldFactor(f, model.currentPeriodS,
+                                            static_cast<int>(std::lround(model.periodS / model.currentPeriodS)));
         const std::complex<double> r = m.frf.h[i] / ref;
         if (std::getenv("AXISTUNE_BENCH_DUMP"))
-            std::fprintf(stderr, "%g %g %g %d %g %g\n", f, 20.0 * std::log10(std::abs(r)), std::arg(r) * 180.0 / std::numbers::pi,
-                         int(m.frf.valid[i]), m.relativeNoise.empty() ? -1.0 : m.relativeNoise[i], 20 * std::log10(std::abs(ref)));
-        const double db = std::abs(20.0 * std::log10(std::abs(r))), deg = std::abs(std::arg(r)) * 180.0 / std::numbers::pi;
+            std::fprintf(stderr, "%g %g %g %d %g %g\n", f, 20.0 * std::log10(std::abs(r)),
+                         std::arg(r) * 180.0 / std::numbers::pi, int(m.frf.valid[i]),
+                         m.relativeNoise.empty() ? -1.0 : m.relativeNoise[i], 20 * std::log10(std::abs(ref)));
+        const double db = std::abs(20.0 * std::log10(std::abs(r))),
+                     deg = std::abs(std::arg(r)) * 180.0 / std::numbers::pi;
         ++e.lines;
         e.valid += m.frf.valid[i] ? 1 : 0;
         e.within += db <= 0.5 && deg <= 3.0 ? 1 : 0;
@@ -67,8 +70,8 @@ Errors compare(const FrfMeasurement& m, const simtest::LiftedInjectionLoop& mode
 }
 
 /// Runs one FRF test on a fresh dd-table drive; `previous` (when not null) shapes a multisine by 1/|H|.
-void runFrf(benchmark::State& state, const std::string& kind, const TestRequest& request, const TestRequest* first = nullptr,
-            double rangeDb = 0.0)
+void runFrf(benchmark::State& state, const std::string& kind, const TestRequest& request,
+            const TestRequest* first = nullptr, double rangeDb = 0.0)
 {
     auto def = sim::loadPreset("dd-table");
     if (!def) {
@@ -165,24 +168,57 @@ void BM_MultiSweep(benchmark::State& state, std::string kind, double amplitudePc
     runFrf(state, kind, r);
 }
 
-}  // namespace
+} // namespace
 
 // Linear loop: both exact; the motion time is the methods' structure (settle + windows).
-BENCHMARK_CAPTURE(BM_Multisine, linear_5pct_10Hz, std::string("linear"), 5.0, 10.0)->Arg(2)->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_MultiSweep, linear_5pct, std::string("linear"), 5.0)->Arg(60)->Arg(388)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Multisine, linear_5pct_10Hz, std::string("linear"), 5.0, 10.0)
+    ->Arg(2)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MultiSweep, linear_5pct, std::string("linear"), 5.0)
+    ->Arg(60)
+    ->Arg(388)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 // Current-detection noise: periods averaged by the multisine against the sine stream.
 BENCHMARK_CAPTURE(BM_Multisine, noise_5pct_10Hz, std::string("noise"), 5.0, 10.0)
-    ->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Iterations(1)->Unit(benchmark::kMillisecond);
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Multisine, noise_10pct_10Hz, std::string("noise"), 10.0, 10.0)
-    ->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Iterations(1)->Unit(benchmark::kMillisecond);
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_MultisineShaped, noise_5pct_20dB, std::string("noise"), 5.0, 20.0)
-    ->Arg(2)->Arg(4)->Arg(8)->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_MultiSweep, noise_5pct, std::string("noise"), 5.0)->Arg(60)->Iterations(1)->Unit(benchmark::kMillisecond);
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MultiSweep, noise_5pct, std::string("noise"), 5.0)
+    ->Arg(60)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 // Noise and Coulomb friction (0.5 N·m against the excitation).
 BENCHMARK_CAPTURE(BM_Multisine, noise_friction_5pct_10Hz, std::string("noise_friction"), 5.0, 10.0)
-    ->Arg(2)->Arg(8)->Iterations(1)->Unit(benchmark::kMillisecond);
+    ->Arg(2)
+    ->Arg(8)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Multisine, noise_friction_10pct_10Hz, std::string("noise_friction"), 10.0, 10.0)
-    ->Arg(2)->Arg(8)->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_MultiSweep, noise_friction_5pct, std::string("noise_friction"), 5.0)->Arg(60)->Iterations(1)->Unit(benchmark::kMillisecond);
+    ->Arg(2)
+    ->Arg(8)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MultiSweep, noise_friction_5pct, std::string("noise_friction"), 5.0)
+    ->Arg(60)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -22,7 +22,7 @@ std::string num(double v)
     return s.str();
 }
 
-}  // namespace
+} // namespace
 
 std::vector<dsp::MultisineBand> multisineBandsOf(const TestRequest& r)
 {
@@ -37,9 +37,11 @@ Result<MultisinePlan> planMultisineTest(const MultisinePlanOptions& o)
     if (!std::isfinite(o.peakNm) || !(o.peakNm > 0.0))
         return makeError(ErrorCode::OutOfRange, "multisine test: the peak amplitude must be positive");
     if (o.periods < 0 || o.periods > kMaxMultisinePeriods)
-        return makeError(ErrorCode::OutOfRange, "multisine test: periods must lie in [1, " + std::to_string(kMaxMultisinePeriods)
-                                                    + "] (0: from the loop's dynamics)");
-    if (!(o.timing.settleS >= 0.0) || o.timing.settleS > 10.0 || !(o.timing.minMeasureS >= 0.0) || o.timing.minMeasureS > 100.0)
+        return makeError(ErrorCode::OutOfRange, "multisine test: periods must lie in [1, " +
+                                                    std::to_string(kMaxMultisinePeriods) +
+                                                    "] (0: from the loop's dynamics)");
+    if (!(o.timing.settleS >= 0.0) || o.timing.settleS > 10.0 || !(o.timing.minMeasureS >= 0.0) ||
+        o.timing.minMeasureS > 100.0)
         return makeError(ErrorCode::OutOfRange, "multisine test: settle time must lie in [0, 10] s");
     dsp::MultisineDesignOptions d;
     d.fsHz = o.fsHz;
@@ -63,7 +65,8 @@ Result<MultisinePlan> planMultisineTest(const MultisinePlanOptions& o)
     plan.settleSamples = static_cast<std::size_t>(std::ceil(settle * o.fsHz - 1e-9));
     const double periodS = static_cast<double>(plan.design.periodSamples()) / o.fsHz;
     plan.periods = o.periods > 0 ? static_cast<std::size_t>(o.periods)
-                                 : static_cast<std::size_t>(std::max<double>(kMinMultisinePeriods, std::ceil(o.timing.minMeasureS / periodS - 1e-9)));
+                                 : static_cast<std::size_t>(std::max<double>(
+                                       kMinMultisinePeriods, std::ceil(o.timing.minMeasureS / periodS - 1e-9)));
     plan.totalSamples = plan.settleSamples + plan.periods * plan.design.periodSamples();
     return plan;
 }
@@ -83,8 +86,8 @@ Result<FrfMeasurement> evaluateMultisineTrace(const MultisinePlan& plan, const m
     if (!d || !tc)
         return makeError(ErrorCode::BadInput, "multisine trace: channels injection_Nm and torque_cmd_Nm are required");
     if (d->data.size() < plan.totalSamples || tc->data.size() < plan.totalSamples)
-        return makeError(ErrorCode::BadInput, "multisine trace: " + std::to_string(d->data.size()) + " samples, the plan needs "
-                                                  + std::to_string(plan.totalSamples));
+        return makeError(ErrorCode::BadInput, "multisine trace: " + std::to_string(d->data.size()) +
+                                                  " samples, the plan needs " + std::to_string(plan.totalSamples));
     const std::size_t first = plan.settleSamples, n = plan.totalSamples - first;
     const std::span<const double> x(d->data.data() + first, n);
     std::vector<double> y(n);
@@ -117,7 +120,7 @@ Result<FrfMeasurement> evaluateMultisineTrace(const MultisinePlan& plan, const m
     md["voltage_clamped_samples"] = std::to_string(clamped);
     md["input"] = "injection_Nm";
     md["output"] = "-torque_cmd_Nm";
-    md["measurement"] = "complementary";  // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
+    md["measurement"] = "complementary"; // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
     md["amplitude_Nm"] = num(plan.design.peak);
     md["peak_Nm"] = num(plan.design.peak);
     md["rms_Nm"] = num(plan.design.rms);
@@ -128,4 +131,4 @@ Result<FrfMeasurement> evaluateMultisineTrace(const MultisinePlan& plan, const m
     return out;
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

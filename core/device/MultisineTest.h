@@ -24,17 +24,17 @@ inline constexpr int kMinMultisinePeriods = 2;
 inline constexpr int kMaxMultisinePeriods = 1000;
 
 struct MultisinePlanOptions {
-    double fsHz = 4000.0;          ///< trace rate
-    int ticksPerSample = 1;        ///< current-loop ticks per trace sample
-    double currentPeriodS = 0.0;   ///< h, for the injection-hold correction (0: no correction)
-    int ticksPerVelocity = 1;      ///< N current ticks per velocity tick
+    double fsHz = 4000.0;        ///< trace rate
+    int ticksPerSample = 1;      ///< current-loop ticks per trace sample
+    double currentPeriodS = 0.0; ///< h, for the injection-hold correction (0: no correction)
+    int ticksPerVelocity = 1;    ///< N current ticks per velocity tick
     std::vector<dsp::MultisineBand> bands;
     std::vector<std::pair<double, double>> shape;
     dsp::MultisinePhases phases = dsp::MultisinePhases::Clipping;
-    double peakNm = 0.0;           ///< peak of the injected torque
+    double peakNm = 0.0; ///< peak of the injected torque
     LoopTiming timing;
-    int periods = 0;               ///< 0: max(kMinMultisinePeriods, ⌈minMeasureS / period⌉)
-    double voltageLimitV = 0.0;    ///< a record that reaches it is not a linear measurement (0: no check)
+    int periods = 0;                ///< 0: max(kMinMultisinePeriods, ⌈minMeasureS / period⌉)
+    double voltageLimitV = 0.0;     ///< a record that reaches it is not a linear measurement (0: no check)
     double maxRelativeNoise = 0.03; ///< lines noisier than this (σ_H/|H|, ≈ 0.26 dB / 1.7°) are invalid
 };
 
@@ -42,7 +42,7 @@ struct MultisinePlan {
     dsp::MultisineDesign design;
     std::size_t settleSamples = 0;
     std::size_t periods = 0;
-    std::size_t totalSamples = 0;  ///< settle + periods·3M
+    std::size_t totalSamples = 0; ///< settle + periods·3M
     LoopTiming timing;
     double currentPeriodS = 0.0;
     int ticksPerVelocity = 1;
@@ -67,4 +67,4 @@ double multisineExcitation(const MultisinePlan& plan, std::int64_t tick);
 /// traced voltage reached the limit during the record.
 Result<FrfMeasurement> evaluateMultisineTrace(const MultisinePlan& plan, const model::Capture& trace);
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -122,23 +122,26 @@ Status checkOptions(const MultisineDesignOptions& o)
         if (!std::isfinite(band.fmaxHz) || band.fmaxHz < band.fminHz)
             return makeError(ErrorCode::OutOfRange, name + "fmax must not be below fmin");
         if (!(band.fmaxHz < o.fsHz))
-            return makeError(ErrorCode::OutOfRange, name + "fmax " + num(band.fmaxHz) + " Hz must lie below the trace rate "
-                                                        + num(o.fsHz) + " Hz");
+            return makeError(ErrorCode::OutOfRange, name + "fmax " + num(band.fmaxHz) +
+                                                        " Hz must lie below the trace rate " + num(o.fsHz) + " Hz");
         if (!(band.spacingHz > 0.0) || !(o.fsHz / band.spacingHz <= static_cast<double>(kMaxWindow)))
-            return makeError(ErrorCode::OutOfRange, name + "spacing " + num(band.spacingHz) + " Hz must be positive and at least fs/2^20");
+            return makeError(ErrorCode::OutOfRange,
+                             name + "spacing " + num(band.spacingHz) + " Hz must be positive and at least fs/2^20");
     }
     for (std::size_t i = 0; i < o.shape.size(); ++i) {
         const auto& [f, w] = o.shape[i];
-        if (!(f > 0.0) || !(w > 0.0) || !std::isfinite(f) || !std::isfinite(w) || (i > 0 && !(f > o.shape[i - 1].first)))
-            return makeError(ErrorCode::OutOfRange, "multisine shape: point " + std::to_string(i + 1)
-                                                        + " needs a positive frequency above the previous one and a positive weight");
+        if (!(f > 0.0) || !(w > 0.0) || !std::isfinite(f) || !std::isfinite(w) ||
+            (i > 0 && !(f > o.shape[i - 1].first)))
+            return makeError(ErrorCode::OutOfRange,
+                             "multisine shape: point " + std::to_string(i + 1) +
+                                 " needs a positive frequency above the previous one and a positive weight");
     }
     if (o.clippingIterations < 0 || o.clippingIterations > 100000)
         return makeError(ErrorCode::OutOfRange, "multisine: clipping iterations must lie in [0, 100000]");
     return Status::success();
 }
 
-}  // namespace
+} // namespace
 
 const char* multisinePhasesName(MultisinePhases p)
 {
@@ -196,17 +199,18 @@ Result<MultisineDesign> designMultisine(const MultisineDesignOptions& o)
         const auto q = static_cast<std::size_t>(std::max(1.0, std::round(band.spacingHz / d.spacingHz)));
         const double m0 = std::max(0.0, std::ceil(band.fminHz / d.spacingHz - 1.0 / 3.0 - 1e-9));
         std::size_t added = 0;
-        for (auto k = static_cast<std::size_t>(m0); k < m && (static_cast<double>(k) + 1.0 / 3.0) * d.spacingHz <= band.fmaxHz * (1.0 + 1e-12);
-             k += q) {
+        for (auto k = static_cast<std::size_t>(m0);
+             k < m && (static_cast<double>(k) + 1.0 / 3.0) * d.spacingHz <= band.fmaxHz * (1.0 + 1e-12); k += q) {
             bins.insert(k);
             if (bins.size() > kMaxLines)
                 return makeError(ErrorCode::OutOfRange, "multisine: more than " + std::to_string(kMaxLines) + " lines");
             ++added;
         }
         if (added == 0)
-            return makeError(ErrorCode::OutOfRange, "multisine band " + std::to_string(b + 1) + ": no line of the grid (m + 1/3)·"
-                                                        + num(d.spacingHz) + " Hz lies in [" + num(band.fminHz) + ", "
-                                                        + num(band.fmaxHz) + "] Hz");
+            return makeError(ErrorCode::OutOfRange, "multisine band " + std::to_string(b + 1) +
+                                                        ": no line of the grid (m + 1/3)·" + num(d.spacingHz) +
+                                                        " Hz lies in [" + num(band.fminHz) + ", " + num(band.fmaxHz) +
+                                                        "] Hz");
     }
     d.bins.assign(bins.begin(), bins.end());
     const std::size_t lines = d.bins.size();
@@ -221,7 +225,7 @@ Result<MultisineDesign> designMultisine(const MultisineDesignOptions& o)
     }
     // Schroeder: φ_i = −2π Σ_{l<i} (i − l) p_l with p_l the power share (−π i(i−1)/L for a flat spectrum).
     std::vector<double> phase(lines, 0.0);
-    double cum = 0.0, cumWeighted = 0.0;  // Σ_{l<i} p_l and Σ_{l<i} l·p_l
+    double cum = 0.0, cumWeighted = 0.0; // Σ_{l<i} p_l and Σ_{l<i} l·p_l
     for (std::size_t i = 0; i < lines; ++i) {
         phase[i] = std::remainder(-kTwoPi * (static_cast<double>(i) * cum - cumWeighted), kTwoPi);
         const double p = weight[i] * weight[i] / power;
@@ -272,7 +276,8 @@ std::vector<std::complex<double>> demodulateThreePhase(const MultisineDesign& d,
     const std::complex<double> r1 = std::polar(1.0, -kTwoPi / 3.0), r2 = std::conj(r1);
     std::vector<std::complex<double>> z(m);
     for (std::size_t k = 0; k < m; ++k)
-        z[k] = (w0[k] + w1[k] * r1 + w2[k] * r2) * std::polar(1.0, -kTwoPi * static_cast<double>(k) / (3.0 * static_cast<double>(m)));
+        z[k] = (w0[k] + w1[k] * r1 + w2[k] * r2) *
+               std::polar(1.0, -kTwoPi * static_cast<double>(k) / (3.0 * static_cast<double>(m)));
     const auto zf = complexDft(z);
     const std::complex<double> norm(0.0, 2.0 / (3.0 * static_cast<double>(m)));
     std::vector<std::complex<double>> out;
@@ -296,8 +301,9 @@ std::vector<std::complex<double>> demodulateSinglePhase(const MultisineDesign& d
     return out;
 }
 
-Result<MultisineAnalysis> analyzeMultisine(const MultisineDesign& d, std::span<const double> x, std::span<const double> y,
-                                           std::size_t periods, const MultisineAnalysisOptions& o)
+Result<MultisineAnalysis> analyzeMultisine(const MultisineDesign& d, std::span<const double> x,
+                                           std::span<const double> y, std::size_t periods,
+                                           const MultisineAnalysisOptions& o)
 {
     const std::size_t m = d.windowSamples, per = 3 * m;
     if (periods < 1)
@@ -305,17 +311,20 @@ Result<MultisineAnalysis> analyzeMultisine(const MultisineDesign& d, std::span<c
     if (m == 0 || d.bins.empty())
         return makeError(ErrorCode::BadInput, "multisine analysis: empty design");
     if (x.size() != y.size() || x.size() < periods * per)
-        return makeError(ErrorCode::BadInput, "multisine analysis: " + std::to_string(periods) + " periods need "
-                                                  + std::to_string(periods * per) + " samples of excitation and response (got "
-                                                  + std::to_string(x.size()) + " and " + std::to_string(y.size()) + ")");
+        return makeError(ErrorCode::BadInput, "multisine analysis: " + std::to_string(periods) + " periods need " +
+                                                  std::to_string(periods * per) +
+                                                  " samples of excitation and response (got " +
+                                                  std::to_string(x.size()) + " and " + std::to_string(y.size()) + ")");
     const std::size_t lines = d.bins.size();
     std::vector<std::complex<double>> sx(lines), sy(lines), sxy(lines);
     std::vector<double> sxx(lines), syy(lines);
     std::vector<std::vector<std::complex<double>>> px, py;
     for (std::size_t p = 0; p < periods; ++p) {
         auto win = [&](std::span<const double> s, std::size_t n) { return s.subspan(p * per + n * m, m); };
-        auto xp = o.threePhase ? demodulateThreePhase(d, win(x, 0), win(x, 1), win(x, 2)) : demodulateSinglePhase(d, win(x, 0));
-        auto yp = o.threePhase ? demodulateThreePhase(d, win(y, 0), win(y, 1), win(y, 2)) : demodulateSinglePhase(d, win(y, 0));
+        auto xp = o.threePhase ? demodulateThreePhase(d, win(x, 0), win(x, 1), win(x, 2))
+                               : demodulateSinglePhase(d, win(x, 0));
+        auto yp = o.threePhase ? demodulateThreePhase(d, win(y, 0), win(y, 1), win(y, 2))
+                               : demodulateSinglePhase(d, win(y, 0));
         for (std::size_t i = 0; i < lines; ++i) {
             sx[i] += xp[i];
             sy[i] += yp[i];
@@ -371,4 +380,4 @@ Result<MultisineAnalysis> analyzeMultisine(const MultisineDesign& d, std::span<c
     return out;
 }
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

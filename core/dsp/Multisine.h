@@ -34,37 +34,37 @@ struct MultisineBand {
 
 /// Phases that keep the crest factor low.
 enum class MultisinePhases {
-    Clipping,   ///< Schroeder start, then iterative clipping on the generation grid (lower crest factor)
-    Schroeder,  ///< φ_i = −π·i·(i−1)/L (flat spectrum; weighted by the power for a shaped one)
+    Clipping,  ///< Schroeder start, then iterative clipping on the generation grid (lower crest factor)
+    Schroeder, ///< φ_i = −π·i·(i−1)/L (flat spectrum; weighted by the power for a shaped one)
 };
 
 const char* multisinePhasesName(MultisinePhases p);
 
 struct MultisineDesignOptions {
-    double fsHz = 4000.0;           ///< trace (observation) rate
-    int ticksPerSample = 1;         ///< generation ticks per trace sample (current-loop rate = fs·ticksPerSample)
+    double fsHz = 4000.0;   ///< trace (observation) rate
+    int ticksPerSample = 1; ///< generation ticks per trace sample (current-loop rate = fs·ticksPerSample)
     std::vector<MultisineBand> bands;
     /// Relative amplitude over frequency as (f [Hz], weight > 0) points, interpolated linearly in
     /// log f (held beyond the ends); empty: flat.
     std::vector<std::pair<double, double>> shape;
     MultisinePhases phases = MultisinePhases::Clipping;
     int clippingIterations = 300;
-    double peak = 1.0;              ///< peak of the generated samples (e.g. N·m): never exceeded
+    double peak = 1.0; ///< peak of the generated samples (e.g. N·m): never exceeded
 };
 
 struct MultisineDesign {
     double fsHz = 0.0;
     int ticksPerSample = 1;
-    std::size_t windowSamples = 0;   ///< M: trace samples per window (one phase)
-    double spacingHz = 0.0;          ///< Δf = fs/M
-    std::vector<std::size_t> bins;   ///< m_i: f_i = (m_i + 1/3)·Δf, increasing
+    std::size_t windowSamples = 0; ///< M: trace samples per window (one phase)
+    double spacingHz = 0.0;        ///< Δf = fs/M
+    std::vector<std::size_t> bins; ///< m_i: f_i = (m_i + 1/3)·Δf, increasing
     std::vector<double> freqHz;
-    std::vector<double> amplitude;   ///< A_i
-    std::vector<double> phaseRad;    ///< φ_i
-    std::vector<double> table;       ///< one period (3·M·ticksPerSample generation ticks)
-    double peak = 0.0;               ///< max |x| over the generation grid (= options.peak)
-    double rms = 0.0;                ///< over one period
-    double crestFactor = 0.0;        ///< peak / rms
+    std::vector<double> amplitude; ///< A_i
+    std::vector<double> phaseRad;  ///< φ_i
+    std::vector<double> table;     ///< one period (3·M·ticksPerSample generation ticks)
+    double peak = 0.0;             ///< max |x| over the generation grid (= options.peak)
+    double rms = 0.0;              ///< over one period
+    double crestFactor = 0.0;      ///< peak / rms
     MultisinePhases phases = MultisinePhases::Clipping;
 
     std::size_t periodTicks() const { return table.size(); }
@@ -95,14 +95,14 @@ struct MultisineAnalysisOptions {
 
 /// Per-line result besides the FRF.
 struct MultisineLineStats {
-    std::vector<double> relativeNoise;     ///< σ_H/|H| of the mean over the periods (NaN for one period)
-    std::vector<double> excitationPhasor;  ///< |X| of the mean excitation phasor
+    std::vector<double> relativeNoise;    ///< σ_H/|H| of the mean over the periods (NaN for one period)
+    std::vector<double> excitationPhasor; ///< |X| of the mean excitation phasor
     std::size_t periods = 0;
-    std::size_t invalidNoise = 0;          ///< lines invalid by maxRelativeNoise
+    std::size_t invalidNoise = 0; ///< lines invalid by maxRelativeNoise
 };
 
 struct MultisineAnalysis {
-    FrequencyResponse frf;  ///< H = ΣY/ΣX per line; coherence = |ΣX*Y|²/(Σ|X|²Σ|Y|²) over the periods (NaN for one)
+    FrequencyResponse frf; ///< H = ΣY/ΣX per line; coherence = |ΣX*Y|²/(Σ|X|²Σ|Y|²) over the periods (NaN for one)
     MultisineLineStats stats;
 };
 
@@ -120,4 +120,4 @@ Result<MultisineAnalysis> analyzeMultisine(const MultisineDesign& design, std::s
                                            std::span<const double> response, std::size_t periods,
                                            const MultisineAnalysisOptions& options = {});
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

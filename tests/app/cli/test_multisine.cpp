@@ -4,13 +4,13 @@
 // Nyquist frequency, the same FRF over Modbus TCP through axistune-simdrive (test block with periods,
 // phases and bands), and the option errors (exit 2).
 #include "core/io/FrfCsv.h"
-#include "tests/app/cli/CliRunner.h"
-#include "tests/app/cli/SimDriveProcess.h"
-
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
+
+#include "tests/app/cli/CliRunner.h"
+#include "tests/app/cli/SimDriveProcess.h"
 
 using namespace axistune;
 using axistune::testing::makeTempDir;
@@ -25,14 +25,15 @@ double jsonNumber(const std::string& json, const std::string& key)
     return p == std::string::npos ? std::nan("") : std::stod(json.substr(p + key.size() + 4));
 }
 
-}  // namespace
+} // namespace
 
 TEST(CliMultisine, DdTableLinearShowsThe3300HzModeWithACrestFactorBelowTwo)
 {
     const auto dir = makeTempDir("multisine");
     const auto out = (dir / "frf.csv").string();
     auto r = runCli("capture --connect sim:dd-table --axis C --test frf --method multisine --fmin 20 --fmax 3900 "
-                    "--spacing-hz 10 --linear --out " + out);
+                    "--spacing-hz 10 --linear --out " +
+                    out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("\"method\": \"multisine\""), std::string::npos) << r.out;
     EXPECT_EQ(jsonNumber(r.out, "points"), 388.0);
@@ -49,7 +50,7 @@ TEST(CliMultisine, DdTableLinearShowsThe3300HzModeWithACrestFactorBelowTwo)
             peak = i;
     }
     EXPECT_NEAR(frf->freqHz[peak], 3300.0, 0.02 * 3300.0);
-    EXPECT_LT(peak + 1, frf->size());  // a peak, not the end of the band
+    EXPECT_LT(peak + 1, frf->size()); // a peak, not the end of the band
     std::filesystem::remove_all(dir);
 }
 
@@ -72,7 +73,7 @@ TEST(CliMultisine, ModbusEqualsTheEmbeddedDriveWithTheSameSeed)
     auto b = io::readFrfCsvFile(local);
     ASSERT_TRUE(a.ok() && b.ok());
     ASSERT_EQ(a->size(), b->size());
-    ASSERT_EQ(b->size(), 18u + 35u);  // 20 Hz lines 46.7 … 386.7 Hz, 100 Hz lines 406.7 … 3806.7 Hz
+    ASSERT_EQ(b->size(), 18u + 35u); // 20 Hz lines 46.7 … 386.7 Hz, 100 Hz lines 406.7 … 3806.7 Hz
     for (std::size_t i = 0; i < b->size(); ++i) {
         EXPECT_EQ(a->freqHz[i], b->freqHz[i]);
         EXPECT_LE(std::abs(a->h[i] - b->h[i]), 1e-9 * std::abs(b->h[i])) << b->freqHz[i] << " Hz";
@@ -101,7 +102,8 @@ TEST(CliMultisine, ShapedFromAPreviousFrfRuns)
         s << "f_Hz,mag_dB,phase_deg\n100,0,0\n1000,-20,0\n3000,-60,0\n";
     }
     auto r = runCli("capture --connect sim:dd-table --axis C --test frf --method multisine --fmin 100 --fmax 3000 "
-                    "--spacing-hz 50 --linear --shape-from " + shape + " --shape-range-db 30 --out " + out);
+                    "--spacing-hz 50 --linear --shape-from " +
+                    shape + " --shape-range-db 30 --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_GT(jsonNumber(r.out, "valid_points"), 50.0);
     std::filesystem::remove_all(dir);

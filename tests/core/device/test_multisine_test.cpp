@@ -9,15 +9,15 @@
 #include "core/device/SimulatedDrive.h"
 #include "core/dsp/FrequencyResponse.h"
 #include "core/dsp/InjectionHold.h"
-#include "tests/core/sim/LiftedModel.h"
-
-#include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <iostream>
 #include <numbers>
 #include <thread>
+
+#include "tests/core/sim/LiftedModel.h"
 
 using namespace axistune;
 using namespace axistune::device;
@@ -80,7 +80,7 @@ TestRequest multisineRequest()
     return r;
 }
 
-}  // namespace
+} // namespace
 
 TEST(MultisineTest, PlanTakesSettleAndPeriodsFromTheLoopDynamics)
 {
@@ -105,7 +105,8 @@ TEST(MultisineTest, PlanTakesSettleAndPeriodsFromTheLoopDynamics)
     const auto endTick = static_cast<std::int64_t>(p->totalSamples) * 4;
     EXPECT_EQ(multisineExcitation(*p, endTick), 0.0);
     EXPECT_EQ(multisineExcitation(*p, -1), 0.0);
-    EXPECT_DOUBLE_EQ(multisineExcitation(*p, 17), multisineExcitation(*p, 17 + static_cast<std::int64_t>(d.periodTicks())));
+    EXPECT_DOUBLE_EQ(multisineExcitation(*p, 17),
+                     multisineExcitation(*p, 17 + static_cast<std::int64_t>(d.periodTicks())));
     o.periods = -1;
     EXPECT_FALSE(planMultisineTest(o).ok());
 }
@@ -178,7 +179,7 @@ TEST(SimulatedDriveMultisine, PeakAboveTheLimitIsRefusedAndAbortRestores)
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
     r.amplitudePct = 5.0;
-    r.fmaxHz = 4000.0;  // not below the trace rate
+    r.fmaxHz = 4000.0; // not below the trace rate
     st = drive->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().detail.find("below the trace rate"), std::string::npos);
@@ -256,7 +257,7 @@ TEST(ModbusMultisine, FrfOverModbusIsTheEmbeddedFrf)
     }
     const auto& a = m[0].frf;
     const auto& b = m[1].frf;
-    ASSERT_EQ(b.size(), 18u + 35u);  // 20 Hz lines 46.7 … 386.7 Hz, 100 Hz lines 406.7 … 3806.7 Hz
+    ASSERT_EQ(b.size(), 18u + 35u); // 20 Hz lines 46.7 … 386.7 Hz, 100 Hz lines 406.7 … 3806.7 Hz
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t i = 0; i < b.size(); ++i) {
         EXPECT_EQ(a.freqHz[i], b.freqHz[i]);

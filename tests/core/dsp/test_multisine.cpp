@@ -7,10 +7,9 @@
 #include "core/dsp/Multisine.h"
 #include "core/dsp/SineDemodulation.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <random>
 
@@ -58,14 +57,15 @@ std::vector<double> steadyState(const MultisineDesign& d, std::size_t s0, std::s
         for (std::size_t k = 0; k < n; ++k) {
             // Phase reduced over the period 3/Δf (k_i = 3 m_i + 1 cycles per period) to keep 1e-12 accuracy.
             const std::size_t t = (s0 + k) % d.periodSamples();
-            const double cycles = static_cast<double>((3 * d.bins[i] + 1) * t % d.periodSamples()) / static_cast<double>(d.periodSamples());
+            const double cycles = static_cast<double>((3 * d.bins[i] + 1) * t % d.periodSamples()) /
+                                  static_cast<double>(d.periodSamples());
             y[k] += d.amplitude[i] * std::abs(h) * std::sin(2.0 * kPi * cycles + d.phaseRad[i] + std::arg(h));
         }
     }
     return y;
 }
 
-}  // namespace
+} // namespace
 
 // Issue 11: crest factor of the designed multisine reported and below 2.0 for a flat spectrum of
 // 200 lines; the peak over the generation grid equals the requested peak; the table is the sum of
@@ -155,7 +155,7 @@ TEST(Multisine, ThreePhaseIsExactThroughModesAboveNyquistAndSinglePhaseIsInvalid
             const auto ref = plant(s->frf.freqHz[i]);
             wrong += std::abs(s->frf.h[i] - ref) / std::abs(ref) > 0.01 ? 1 : 0;
         }
-        EXPECT_GT(wrong, 9 * s->frf.size() / 10);  // wrong nearly everywhere
+        EXPECT_GT(wrong, 9 * s->frf.size() / 10); // wrong nearly everywhere
         EXPECT_EQ(s->frf.metadata.at("method"), "multisine-single-phase");
     }
 }
@@ -208,7 +208,7 @@ TEST(Multisine, DigitalResonanceRunAtTheGenerationRateIsRecoveredFromTheTrace)
             EXPECT_NEAR(step, 10.0, 1e-9);
         }
     }
-    EXPECT_EQ(low2 + 1, 90u);  // 90 lines from 20.67 Hz to 198.67 Hz
+    EXPECT_EQ(low2 + 1, 90u); // 90 lines from 20.67 Hz to 198.67 Hz
 }
 
 // The FFT demodulation equals the per-line three-phase sums of dsp::demodulate (spec §3.5 form).
@@ -224,7 +224,8 @@ TEST(Multisine, FftDemodulationEqualsThePerLineThreePhaseSums)
     const auto m = d.windowSamples;
     const auto fft = demodulateThreePhase(d, all.subspan(0, m), all.subspan(m, m), all.subspan(2 * m, m));
     for (std::size_t i = 0; i < d.freqHz.size(); ++i) {
-        const SweepSamples sw[3] = {{0.0, 0, all.subspan(0, m)}, {120.0, 0, all.subspan(m, m)}, {-120.0, 0, all.subspan(2 * m, m)}};
+        const SweepSamples sw[3] = {
+            {0.0, 0, all.subspan(0, m)}, {120.0, 0, all.subspan(m, m)}, {-120.0, 0, all.subspan(2 * m, m)}};
         auto r = demodulate(sw, d.freqHz[i], d.fsHz);
         ASSERT_TRUE(r.ok());
         EXPECT_NEAR(std::abs(fft[i] - r->phasor()), 0.0, 1e-12 * (1.0 + std::abs(r->phasor()))) << d.freqHz[i];
@@ -261,12 +262,12 @@ TEST(Multisine, NoiseEstimateMatchesWhiteNoiseOfKnownSigma)
     ASSERT_TRUE(a.ok());
     double ratio = 0.0;
     for (std::size_t i = 0; i < a->frf.size(); ++i) {
-        const double expected = std::sqrt(4.0 * sigma * sigma / (3.0 * d.windowSamples * periods))
-                                / (d.amplitude[i] * std::abs(plant(d.freqHz[i])));
+        const double expected = std::sqrt(4.0 * sigma * sigma / (3.0 * d.windowSamples * periods)) /
+                                (d.amplitude[i] * std::abs(plant(d.freqHz[i])));
         ratio += std::pow(a->stats.relativeNoise[i] / expected, 2);
     }
     ratio /= static_cast<double>(a->frf.size());
-    EXPECT_NEAR(ratio, 1.0, 0.1);  // 195 lines × 14 degrees of freedom: about ±2.5 % (1σ)
+    EXPECT_NEAR(ratio, 1.0, 0.1); // 195 lines × 14 degrees of freedom: about ±2.5 % (1σ)
     // Noise alone: coherence about 1/P.
     auto z = analyzeMultisine(d, x, pure, periods, o);
     ASSERT_TRUE(z.ok());
@@ -314,7 +315,7 @@ TEST(Multisine, BadDesignsAreRefused)
     EXPECT_FALSE(designMultisine(o).ok());
     o.bands = {{10.0, 100.0, -1.0}};
     EXPECT_FALSE(designMultisine(o).ok());
-    o.bands = {{101.0, 102.0, 10.0}};  // no line of the grid inside
+    o.bands = {{101.0, 102.0, 10.0}}; // no line of the grid inside
     EXPECT_FALSE(designMultisine(o).ok());
     o.bands = {{10.0, 100.0, 10.0}};
     o.shape = {{100.0, 1.0}, {50.0, 1.0}};
