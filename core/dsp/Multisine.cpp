@@ -238,7 +238,11 @@ Result<MultisineDesign> designMultisine(const MultisineDesignOptions& o)
     if (o.phases == MultisinePhases::Clipping && lines > 1) {
         std::vector<double> trial = phase;
         std::vector<double> y = x;
-        for (int it = 0; it < o.clippingIterations; ++it) {
+        // Long periods (fine spacing): at most about 1.5e7 table samples of work, at least 10 iterations,
+        // so that a 0.01 Hz grid designs in seconds, not minutes.
+        const int iterations =
+            std::min(o.clippingIterations, std::max(10, static_cast<int>(1.5e7 / static_cast<double>(length))));
+        for (int it = 0; it < iterations; ++it) {
             // Clip the peaks a little below the present peak, keep the phases the clipping produces,
             // restore the amplitudes; keep the best crest factor found.
             const double level = 0.9 * peakOf(y);

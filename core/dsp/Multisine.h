@@ -48,7 +48,7 @@ struct MultisineDesignOptions {
     /// log f (held beyond the ends); empty: flat.
     std::vector<std::pair<double, double>> shape;
     MultisinePhases phases = MultisinePhases::Clipping;
-    int clippingIterations = 300;
+    int clippingIterations = 300; ///< at most; fewer (≥ 10) when one period exceeds 50000 generation ticks
     double peak = 1.0; ///< peak of the generated samples (e.g. N·m): never exceeded
 };
 
