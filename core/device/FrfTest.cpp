@@ -133,6 +133,7 @@ const char* frfMethodName(FrfMethod m)
     case FrfMethod::MultiSweep: return "multisweep";
     case FrfMethod::Conventional: return "conventional";
     case FrfMethod::Prbs: return "prbs";
+    case FrfMethod::Multisine: return "multisine";
     }
     return "?";
 }
