@@ -59,7 +59,12 @@ public:
     QDoubleSpinBox* amplitude() const { return m_amplitude; }
     const FrfDriveInfo& driveInfo() const { return m_info; }
     void initializePage() override;
+    /// Also waits for the drive values (the amplitude in N·m is shown before the confirmation counts).
     bool isComplete() const override;
+
+signals:
+    /// The drive values of the axis were read (or the read failed).
+    void driveInfoChanged();
 
 private:
     void readInfo();
@@ -67,6 +72,7 @@ private:
     AppContext& m_ctx;
     FrfDriveInfo m_info;
     int m_request = 0;
+    bool m_infoPending = false;
     QDoubleSpinBox* m_amplitude = nullptr;
     QLabel* m_amplitudeText = nullptr;
 };

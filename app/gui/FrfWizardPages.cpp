@@ -143,7 +143,10 @@ FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx,
             return;
         m_info.axis = r.axis;
         m_info.values = r.ok ? r.values : model::ParameterValues{};
+        m_infoPending = false;
         showAmplitude();
+        emit driveInfoChanged();
+        emit completeChanged();
     });
     showAmplitude();
 }
@@ -158,8 +161,10 @@ void FrfSafetyPage::readInfo()
 {
     m_info = {};
     showAmplitude();
-    if (m_ctx.drive().isConnected() && !axis().isEmpty())
+    m_infoPending = m_ctx.drive().isConnected() && !axis().isEmpty();
+    if (m_infoPending)
         m_request = m_ctx.drive().readParameters(axis());
+    emit completeChanged();
 }
 
 void FrfSafetyPage::showAmplitude()
@@ -185,7 +190,7 @@ void FrfSafetyPage::showAmplitude()
 
 bool FrfSafetyPage::isComplete() const
 {
-    return SafetyPage::isComplete() && m_amplitude->value() <= device::kMaxFrfAmplitudePct;
+    return SafetyPage::isComplete() && !m_infoPending && m_amplitude->value() <= device::kMaxFrfAmplitudePct;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -263,6 +268,10 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
     connect(m_fmin, &QDoubleSpinBox::valueChanged, this, changed);
     connect(m_fmax, &QDoubleSpinBox::valueChanged, this, changed);
     connect(m_points, &QSpinBox::valueChanged, this, changed);
+    connect(&m_safety, &FrfSafetyPage::driveInfoChanged, this, [this, changed] {
+        if (wizard() && wizard()->currentPage() == this)
+            changed();
+    });
 }
 
 device::FrfMethod FrfConfigPage::selectedMethod() const

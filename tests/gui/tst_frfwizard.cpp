@@ -247,7 +247,7 @@ private slots:
         w.show();
         auto* s = w.safetyPage();
         s->confirmation()->setChecked(true);
-        QVERIFY(w.button(QWizard::NextButton)->isEnabled());
+        QVERIFY(waitUntil([&] { return w.button(QWizard::NextButton)->isEnabled(); }, 10000));
         s->amplitude()->setValue(device::kMaxFrfAmplitudePct + 1.0);
         QCOMPARE(s->amplitude()->value(), device::kMaxFrfAmplitudePct + 1.0);  // not clamped ...
         s->confirmation()->setChecked(true);
