@@ -316,10 +316,11 @@ void NotchWizard::onRunFailed(TestRunPage* page, bool verification)
     finishAbort(page->failure(), false);
 }
 
-void NotchWizard::finishAbort(const QString& reason, bool closeAfter)
+void NotchWizard::finishAbort(const QString& why0, bool closeAfter)
 {
     if (m_restoring)
         return;
+    const QString reason = why0.endsWith(QLatin1Char('.')) ? why0 : why0 + QLatin1Char('.');
     if (m_apply->applied() && m_ctx.drive().isConnected()) {
         m_restoring = true;
         m_pendingReason = reason;

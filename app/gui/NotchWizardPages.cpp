@@ -43,7 +43,9 @@ QTableWidget* table(QWidget* parent, const QStringList& headers, const QString& 
     t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     t->horizontalHeader()->setStretchLastSection(true);
     t->verticalHeader()->hide();
+    t->verticalHeader()->setDefaultSectionSize(22);
     t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->setWordWrap(false);
     return t;
 }
 
@@ -315,7 +317,9 @@ NotchProposePage::NotchProposePage(NotchWizard& wizard, AppContext& ctx) : QWiza
     setTitle(tr("Resonances and proposed notches"));
     setSubTitle(tr("One notch per resonance, within the execution rate's limits; existing filters stay as they are. "
                    "Edit centre, width or depth: the prediction and the margins follow."));
-    auto* lay = new QHBoxLayout(this);
+    auto* lay = new QVBoxLayout(this);
+    auto* top = new QHBoxLayout;
+    auto* bottom = new QHBoxLayout;
     auto* left = new QVBoxLayout;
     auto* opts = new QFormLayout;
     m_minHeight = new QDoubleSpinBox(this);
@@ -331,10 +335,12 @@ NotchProposePage::NotchProposePage(NotchWizard& wizard, AppContext& ctx) : QWiza
     m_status->setWordWrap(true);
     left->addWidget(m_status);
     m_resonances = table(this, {tr("Resonance [Hz]"), tr("Height [dB]"), tr("Width [Hz]"), tr("Open loop [dB]")}, "resonanceTable");
+    m_resonances->setFixedHeight(125);
     left->addWidget(m_resonances, 1);
     m_table = table(this, {tr("Slot"), tr("Centre [Hz]"), tr("Width [Hz]"), tr("Depth")}, "notchTable");
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                              QAbstractItemView::AnyKeyPressed);
+    m_table->setFixedHeight(125);
     left->addWidget(m_table, 1);
     auto* buttons = new QHBoxLayout;
     m_remove = new QPushButton(tr("Remove notch"), this);
@@ -345,18 +351,21 @@ NotchProposePage::NotchProposePage(NotchWizard& wizard, AppContext& ctx) : QWiza
     buttons->addWidget(m_reset);
     buttons->addStretch(1);
     left->addLayout(buttons);
-    m_margins = table(this, {tr("Margin"), tr("Measured"), tr("With the notches (predicted)")}, "notchMarginsTable");
-    left->addWidget(m_margins);
-    auto* right = new QVBoxLayout;
     m_plot = new widgets::BodePlot(this);
     m_plot->setObjectName("notchPlot");
-    m_plot->setMinimumSize(420, 300);
-    right->addWidget(m_plot, 3);
+    m_plot->setMinimumSize(480, 300);
+    top->addLayout(left, 2);
+    top->addWidget(m_plot, 3);
+    m_margins = table(this, {tr("Margin"), tr("Measured"), tr("Predicted")}, "notchMarginsTable");
     m_rules = new QTextBrowser(this);
     m_rules->setObjectName("notchRules");
-    right->addWidget(m_rules, 1);
-    lay->addLayout(left, 2);
-    lay->addLayout(right, 3);
+    m_margins->setFixedHeight(100);
+    m_rules->setFixedHeight(160);
+    bottom->addWidget(m_margins, 2, Qt::AlignTop);
+    bottom->addWidget(m_rules, 3);
+    left->addStretch(1);
+    lay->addLayout(top, 1);
+    lay->addLayout(bottom, 0);
 
     connect(&m_ctx.drive(), &DriveController::replied, this, &NotchProposePage::onParameters);
     connect(&m_watcher, &QFutureWatcher<NotchAnalysis>::finished, this, [this] {
@@ -532,12 +541,17 @@ void NotchProposePage::updatePrediction()
         m_plot->removeResponse(m_predictedId);
     m_predictedId = -1;
     m_plot->clearMarkers();
-    for (const auto& r : m_wizard.resonances())
-        m_plot->addMarker(r.freqHz, widgets::BodePlot::MarkerKind::Resonance, tr("%1 Hz").arg(num(r.freqHz, 0)));
+    for (const auto& r : m_wizard.resonances()) {
+        bool notched = false;
+        for (const auto& n : m_wizard.rows())
+            notched |= std::abs(n.spec.centerHz - r.freqHz) < 0.02 * r.freqHz;
+        if (!notched)
+            m_plot->addMarker(r.freqHz, widgets::BodePlot::MarkerKind::Resonance, tr("%1 Hz").arg(num(r.freqHz, 0)));
+    }
     for (const auto& r : m_wizard.rows())
-        m_plot->addMarker(r.spec.centerHz, widgets::BodePlot::MarkerKind::Notch, tr("N%1").arg(r.slot));
+        m_plot->addMarker(r.spec.centerHz, widgets::BodePlot::MarkerKind::Notch, tr("N%1 %2 Hz").arg(r.slot).arg(num(r.spec.centerHz, 0)));
     if (!m_wizard.rows().empty())
-        m_predictedId = m_plot->addResponse(m_wizard.predicted(), tr("Predicted with the notches"), QColor(230, 120, 0), Qt::DashLine);
+        m_predictedId = m_plot->addResponse(m_wizard.predicted(), tr("Predicted"), QColor(230, 120, 0), Qt::DashLine);
     m_plot->rescale();
     fillMargins(m_margins, {m_wizard.marginsBefore(), m_wizard.marginsPredicted()});
     showRules();
@@ -587,21 +601,21 @@ NotchVerifyPage::NotchVerifyPage(NotchWizard& wizard) : QWizardPage(&wizard), m_
     setObjectName("notchVerifyPage");
     setTitle(tr("Verification"));
     setSubTitle(tr("The new measurement with the notches, overlaid on the prediction and on the first measurement."));
-    auto* lay = new QHBoxLayout(this);
-    auto* left = new QVBoxLayout;
+    auto* lay = new QVBoxLayout(this);
     m_deviation = new QLabel(this);
     m_deviation->setObjectName("notchDeviation");
     m_deviation->setWordWrap(true);
-    left->addWidget(m_deviation);
-    m_peaks = table(this, {tr("Notch [Hz]"), tr("Before [dB]"), tr("Predicted [dB]"), tr("Measured [dB]")}, "notchPeaksTable");
-    left->addWidget(m_peaks, 1);
-    m_margins = table(this, {tr("Margin"), tr("Before"), tr("Predicted"), tr("Measured")}, "verifyMarginsTable");
-    left->addWidget(m_margins, 1);
+    lay->addWidget(m_deviation);
     m_plot = new widgets::BodePlot(this);
     m_plot->setObjectName("notchVerifyPlot");
-    m_plot->setMinimumSize(420, 300);
-    lay->addLayout(left, 2);
+    m_plot->setMinimumSize(480, 300);
     lay->addWidget(m_plot, 3);
+    auto* bottom = new QHBoxLayout;
+    m_peaks = table(this, {tr("Notch [Hz]"), tr("Before [dB]"), tr("Predicted [dB]"), tr("Measured [dB]")}, "notchPeaksTable");
+    bottom->addWidget(m_peaks, 1);
+    m_margins = table(this, {tr("Margin"), tr("Before"), tr("Predicted"), tr("Measured")}, "verifyMarginsTable");
+    bottom->addWidget(m_margins, 1);
+    lay->addLayout(bottom, 1);
 }
 
 void NotchVerifyPage::initializePage()
@@ -611,7 +625,7 @@ void NotchVerifyPage::initializePage()
     m_plot->clearBands();
     m_ids[0] = m_plot->addResponse(m_wizard.measured(), tr("Before"), QColor(0, 90, 200));
     m_ids[1] = m_plot->addResponse(m_wizard.predicted(), tr("Predicted"), QColor(230, 120, 0), Qt::DashLine);
-    m_ids[2] = m_plot->addResponse(m_wizard.verification(), tr("Measured with the notches"), QColor(0, 150, 60));
+    m_ids[2] = m_plot->addResponse(m_wizard.verification(), tr("After"), QColor(0, 150, 60));
     addValidityBand(m_plot, m_wizard.verification());
     for (const auto& r : m_wizard.rows())
         m_plot->addMarker(r.spec.centerHz, widgets::BodePlot::MarkerKind::Notch, tr("N%1").arg(r.slot));

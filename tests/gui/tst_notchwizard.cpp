@@ -31,6 +31,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QListWidget>
 #include <QLabel>
 #include <QPushButton>
 #include <QRadioButton>
@@ -94,6 +95,7 @@ private:
 private slots:
     void initTestCase();
     void embeddedEndToEnd();
+    void savedSessionSourceAndAbortRestores();
     void modbusEndToEnd();
     void simdriveKilledDuringVerification();
 };
@@ -139,6 +141,10 @@ void TestNotchWizard::initTestCase()
 
 bool TestNotchWizard::measureAndPropose(NotchWizard& w, const QString& shot)
 {
+    const auto maybeScreenshot = [&shot](QWidget* wid, const QString& name) {
+        if (!shot.isEmpty())
+            axistune::testing::maybeScreenshot(wid, name);
+    };
     w.show();
     if (!waitUntil([&] { return w.currentId() == NotchWizard::kSource; }, 5000))
         return false;
@@ -175,6 +181,10 @@ bool TestNotchWizard::measureAndPropose(NotchWizard& w, const QString& shot)
 
 bool TestNotchWizard::applyNotches(NotchWizard& w, const QString& shot)
 {
+    const auto maybeScreenshot = [&shot](QWidget* wid, const QString& name) {
+        if (!shot.isEmpty())
+            axistune::testing::maybeScreenshot(wid, name);
+    };
     next(w);
     if (w.currentId() != NotchWizard::kApply)
         return false;
@@ -330,6 +340,54 @@ void TestNotchWizard::embeddedEndToEnd()
         QVERIFY2(results.count(n), n);
 }
 
+void TestNotchWizard::savedSessionSourceAndAbortRestores()
+{
+    // The FRF of the first test's session as the source; the operator aborts the verification:
+    // the applied notches are restored (read back 0 = off) and the session is stored as aborted.
+    AppContext ctx;
+    QVERIFY(ctx.openDatabase(m_dir.filePath("embedded.sqlite")));
+    QVERIFY(connectTo(ctx, "sim:dd-table"));
+    NotchWizard w(ctx);
+    w.proposePage()->minHeight()->setValue(10.0);
+    w.show();
+    w.sourcePage()->sessionButton()->setChecked(true);
+    auto* list = w.sourcePage()->sessionList();
+    int row = -1;
+    for (int i = 0; i < list->count(); ++i)
+        if (list->item(i)->text().contains("notch") && list->item(i)->text().endsWith(": measured"))
+            row = i;
+    QVERIFY2(row >= 0, qPrintable(QString::number(list->count())));
+    list->setCurrentRow(row);
+    next(w);
+    QCOMPARE(w.currentId(), static_cast<int>(NotchWizard::kPropose));
+    QVERIFY(waitUntil([&] { return w.proposePage()->isComplete(); }, 60000));
+    QCOMPARE(static_cast<int>(w.rows().size()), 3);
+    QCOMPARE(w.axis(), QString("C"));
+    QVERIFY(applyNotches(w, QString()));
+    next(w);
+    QCOMPARE(w.currentId(), static_cast<int>(NotchWizard::kSafety));  // not confirmed yet in this run
+    w.safetyPage()->confirmation()->setChecked(true);
+    next(w);
+    QCOMPARE(w.currentId(), static_cast<int>(NotchWizard::kVerifyRun));
+    w.verifyRunPage()->abortButton()->click();
+    QVERIFY(waitUntil([&] { return w.saved(); }, 30000));
+    QVERIFY(w.savedAborted());
+    QVERIFY2(w.abortReason().contains("restored"), qPrintable(w.abortReason()));
+    QStringList keys;
+    for (const auto& r : w.rows())
+        keys << QString("filter.notch%1.center").arg(r.slot);
+    const auto back = readParams(ctx, "C", keys);
+    QCOMPARE(static_cast<int>(back.size()), 3);
+    for (const auto& [k, v] : back)
+        QCOMPARE(v, 0.0);
+    auto db = axistune::store::Database::open(m_dir.filePath("embedded.sqlite").toStdString());
+    auto rec = db->loadSession(w.savedSessionId());
+    QVERIFY(static_cast<bool>(rec));
+    QCOMPARE(rec->info.status, axistune::store::SessionStatus::Aborted);
+    QCOMPARE(static_cast<int>(rec->journal.size()), 18);  // 9 written, 9 restored
+    QVERIFY(rec->inputs.value("source_session", 0) > 0);
+}
+
 void TestNotchWizard::modbusEndToEnd()
 {
     axistune::testing::SimDrive sd("--preset dd-table");
@@ -341,7 +399,7 @@ void TestNotchWizard::modbusEndToEnd()
     NotchWizard w(ctx);
     QElapsedTimer t;
     t.start();
-    QVERIFY(measureAndPropose(w, "modbus"));
+    QVERIFY(measureAndPropose(w, QString()));
     QCOMPARE(static_cast<int>(w.rows().size()), 3);
     for (double f : kModesHz) {
         bool near = false;
@@ -349,7 +407,7 @@ void TestNotchWizard::modbusEndToEnd()
             near |= std::abs(r.spec.centerHz - f) < 0.03 * f;
         QVERIFY(near);
     }
-    QVERIFY(applyNotches(w, "modbus"));
+    QVERIFY(applyNotches(w, QString()));
     next(w);
     QCOMPARE(w.currentId(), static_cast<int>(NotchWizard::kVerifyRun));
     QVERIFY(waitUntil([&] { return !w.verifyRunPage()->isRunning(); }, 120000));
@@ -387,7 +445,7 @@ void TestNotchWizard::simdriveKilledDuringVerification()
     QCOMPARE(w.currentId(), static_cast<int>(NotchWizard::kPropose));
     QVERIFY(waitUntil([&] { return w.proposePage()->isComplete(); }, 60000));
     QCOMPARE(static_cast<int>(w.rows().size()), 3);
-    QVERIFY(applyNotches(w, "kill"));
+    QVERIFY(applyNotches(w, QString()));
     next(w);  // → safety (not confirmed yet in this run)
     QCOMPARE(w.currentId(), static_cast<int>(NotchWizard::kSafety));
     w.safetyPage()->confirmation()->setChecked(true);
