@@ -127,10 +127,10 @@ Status readRls(const json& o, const std::string& w, SwitchingRlsOptions& r)
 
 Status readChatter(const json& o, const std::string& w, ChatterDetectOptions& c)
 {
-    AXT_TRY(onlyKeys(
-        o,
-        {"lowpass_Hz", "highpass_Hz", "window_s", "inertial_scale_w", "energy_floor", "min_duration_s", "merge_gap_s"},
-        w));
+    AXT_TRY(onlyKeys(o,
+                     {"lowpass_Hz", "highpass_Hz", "window_s", "inertial_scale_w", "energy_floor", "min_duration_s",
+                      "merge_gap_s", "baseline_s", "baseline_factor"},
+                     w));
     AXT_TRY(num(o, "lowpass_Hz", w, c.lowPassHz, false, 0.0, INFINITY, true));
     AXT_TRY(num(o, "highpass_Hz", w, c.highPassHz, false, 0.0, INFINITY, true));
     AXT_TRY(num(o, "window_s", w, c.windowS, false, 0.0, INFINITY, true));
@@ -138,6 +138,8 @@ Status readChatter(const json& o, const std::string& w, ChatterDetectOptions& c)
     AXT_TRY(num(o, "energy_floor", w, c.energyFloor, false, 0.0));
     AXT_TRY(num(o, "min_duration_s", w, c.minDurationS, false, 0.0));
     AXT_TRY(num(o, "merge_gap_s", w, c.mergeGapS, false, 0.0));
+    AXT_TRY(num(o, "baseline_s", w, c.baselineS, false, 0.0));
+    AXT_TRY(num(o, "baseline_factor", w, c.baselineFactor, false, 0.0, INFINITY, true));
     return Status::success();
 }
 

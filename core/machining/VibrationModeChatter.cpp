@@ -42,40 +42,54 @@ Result<dsp::FilterCascade> butterworth(int order, double fc, double ts, bool hig
     return c;
 }
 
-/// Dominant frequency of x[i0, i1) (mean removed, Hann window, FFT peak with parabolic interpolation).
-double dominantFrequency(const std::vector<double>& x, std::size_t i0, std::size_t i1, double fs, double fMin)
+/// The frequency that drives r_Fa up: the peak of Re{F_load(f) A*(f)} (cross spectrum of the load −F_vib and
+/// a_vib over [i0, i1), means removed, Hann window), i.e. the line with the largest positive contribution
+/// to S_FA. Tooth-passing lines below the vibration mode contribute negatively and are never chosen.
+double chatterFrequency(const std::vector<double>& f, const std::vector<double>& a, std::size_t i0, std::size_t i1,
+                        double fs, double fMin)
 {
     const std::size_t n = i1 - i0;
     if (n < 16)
         return 0.0;
-    double mean = 0.0;
-    for (std::size_t i = i0; i < i1; ++i)
-        mean += x[i];
-    mean /= static_cast<double>(n);
-    dsp::RealFft fft(n);
-    auto in = fft.input();
-    for (std::size_t i = 0; i < n; ++i)
-        in[i] =
-            (x[i0 + i] - mean) * (0.5 - 0.5 * std::cos(2.0 * kPi * static_cast<double>(i) / static_cast<double>(n)));
-    fft.execute();
-    const auto out = fft.output();
+    double mf = 0.0, ma = 0.0;
+    for (std::size_t i = i0; i < i1; ++i) {
+        mf += f[i];
+        ma += a[i];
+    }
+    mf /= static_cast<double>(n);
+    ma /= static_cast<double>(n);
+    dsp::RealFft ff(n), fa(n);
+    auto inF = ff.input();
+    auto inA = fa.input();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double w = 0.5 - 0.5 * std::cos(2.0 * kPi * static_cast<double>(i) / static_cast<double>(n));
+        inF[i] = -(f[i0 + i] - mf) * w;
+        inA[i] = (a[i0 + i] - ma) * w;
+    }
+    ff.execute();
+    fa.execute();
+    const auto F = ff.output();
+    const auto A = fa.output();
     const std::size_t kMin = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(fMin * n / fs)));
     std::size_t best = 0;
-    double bestMag = -1.0;
-    for (std::size_t k = kMin; k + 1 < out.size(); ++k) {
-        const double m = std::abs(out[k]);
-        if (m > bestMag) {
-            bestMag = m;
+    double bestVal = 0.0;
+    std::vector<double> c(F.size(), 0.0);
+    for (std::size_t k = kMin; k + 1 < F.size(); ++k) {
+        c[k] = std::real(F[k] * std::conj(A[k]));
+        if (c[k] > bestVal) {
+            bestVal = c[k];
             best = k;
         }
     }
     if (best == 0)
         return 0.0;
-    const double a = std::log(std::abs(out[best - 1]) + 1e-300), b = std::log(bestMag + 1e-300),
-                 c = std::log(std::abs(out[best + 1]) + 1e-300);
-    const double den = a - 2.0 * b + c;
-    const double delta = den != 0.0 ? 0.5 * (a - c) / den : 0.0;
-    return (static_cast<double>(best) + std::clamp(delta, -0.5, 0.5)) * fs / static_cast<double>(n);
+    double delta = 0.0;
+    if (best > kMin && c[best - 1] > 0.0 && c[best + 1] > 0.0) {
+        const double l = std::log(c[best - 1]), m = std::log(bestVal), r = std::log(c[best + 1]);
+        const double den = l - 2.0 * m + r;
+        delta = den != 0.0 ? std::clamp(0.5 * (l - r) / den, -0.5, 0.5) : 0.0;
+    }
+    return (static_cast<double>(best) + delta) * fs / static_cast<double>(n);
 }
 
 } // namespace
@@ -161,8 +175,13 @@ Result<ChatterAnalysis> detectChatter(const std::vector<double>& timeS, const st
         const double xt = lT.process(fT.process(tablePositionM[i]));
         x[i] = share * (xm - xt);
     }
+    if (!(o.baselineS >= 0.0) || !(o.baselineFactor > 0.0))
+        return makeError(ErrorCode::OutOfRange, "baseline must be >= 0 s and its factor > 0");
     // Central differences, aligned at sample i; eq. (4); correlations of F_load = −F_vib with x and a.
     CorrelationChatterDetector det(window, o.energyFloor);
+    std::vector<double> accel(n, 0.0), forceSq(window, 0.0);
+    double sumSq = 0.0, floor = 0.0, baselineMax = 0.0;
+    const double t0 = timeS.front();
     out.timeS.reserve(n);
     std::size_t validCount = 0, flagCount = 0;
     out.forceVibN.assign(n, 0.0);
@@ -172,7 +191,23 @@ Result<ChatterAnalysis> detectChatter(const std::vector<double>& timeS, const st
         const double fv = mode.alpha * (f[i] - o.inertialScale * mode.massKg * a - mode.dampingNsPerM * v -
                                         mode.stiffnessNPerM * x[i]);
         out.forceVibN[i] = fv;
-        const auto s = det.step(-fv, x[i], a);
+        accel[i] = a;
+        auto s = det.step(-fv, x[i], a);
+        // Moving mean square of the force over the same window (the baseline gate).
+        const std::size_t slot = i % window;
+        sumSq += fv * fv - forceSq[slot];
+        forceSq[slot] = fv * fv;
+        const double meanSq = std::max(0.0, sumSq) / static_cast<double>(window);
+        if (o.baselineS > 0.0 && s.valid) {
+            if (timeS[i] - t0 <= o.baselineS) {
+                baselineMax = std::max(baselineMax, meanSq);
+                floor = o.baselineFactor * baselineMax;
+                s.valid = false; // the baseline itself is not judged
+            } else if (meanSq < floor) {
+                s.valid = false;
+            }
+            s.chatter = s.chatter && s.valid;
+        }
         out.timeS.push_back(timeS[i]);
         out.rFx.push_back(s.rFx);
         out.rFa.push_back(s.rFa);
@@ -181,6 +216,11 @@ Result<ChatterAnalysis> detectChatter(const std::vector<double>& timeS, const st
         validCount += s.valid;
         flagCount += s.chatter;
     }
+    if (o.baselineS > 0.0 && baselineMax <= 0.0)
+        return makeError(ErrorCode::BadInput, "baseline " + std::to_string(o.baselineS) +
+                                                  " s holds no full correlation window (window " +
+                                                  std::to_string(o.windowS) + " s)");
+    out.forceFloorN2 = floor;
     out.flaggedFraction = validCount ? static_cast<double>(flagCount) / static_cast<double>(validCount) : 0.0;
     out.vibrationModeHz = mode.frequencyHz();
 
@@ -213,7 +253,7 @@ Result<ChatterAnalysis> detectChatter(const std::vector<double>& timeS, const st
             sum += out.rFa[k] - out.rFx[k];
         iv.score = sum / static_cast<double>(b - a + 1);
         // Frequency over the interval's samples (+1: index arrays start at sample 1).
-        iv.frequencyHz = dominantFrequency(out.forceVibN, a + 1, b + 2, fs, o.highPassHz);
+        iv.frequencyHz = chatterFrequency(out.forceVibN, accel, a + 1, b + 2, fs, o.highPassHz);
         out.intervals.push_back(iv);
     }
     return out;

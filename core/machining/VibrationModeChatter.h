@@ -50,12 +50,17 @@ struct ChatterDetectOptions {
     double energyFloor = 0.0;   ///< minimum mean square of each correlated signal (CD-2 guard)
     double minDurationS = 0.0;  ///< debounce: shorter flagged runs are dropped (not in the paper)
     double mergeGapS = 0.0;     ///< flagged runs closer than this are merged (not in the paper)
+    /// Validity gate of spec §3.6 CD-2 from an air-cut baseline: when > 0, the windows that end within
+    /// [T, baselineS] (the tool not yet cutting) give the floor = baselineFactor × their largest mean square of
+    /// the force; windows with less force energy are invalid (idle, air cut). 0: no gate.
+    double baselineS = 0.0;
+    double baselineFactor = 4.0;
 };
 
 struct ChatterInterval {
     double startS = 0.0;
     double endS = 0.0;
-    double frequencyHz = 0.0; ///< dominant frequency of F_vib inside the interval (Hann, FFT peak)
+    double frequencyHz = 0.0; ///< peak of Re{F_load A*} in the interval (the line that makes r_Fa > r_Fx)
     double score = 0.0;       ///< mean of r_Fa − r_Fx over the interval, in (0, 2]
 };
 
@@ -66,6 +71,7 @@ struct ChatterAnalysis {
     bool lowPassApplied = false;
     double vibrationModeHz = 0.0;
     double flaggedFraction = 0.0; ///< chatter samples / valid samples
+    double forceFloorN2 = 0.0;    ///< the force mean-square floor of the baseline gate (0: none)
 };
 
 /// Runs CD-1…CD-3 over equal-length signals sampled at fs. Errors: lengths differ, too short for one
