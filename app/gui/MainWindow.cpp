@@ -108,7 +108,7 @@ void MainWindow::buildUi()
     m_logDock->setWidget(m_logPanel);
     m_logDock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(Qt::BottomDockWidgetArea, m_logDock);
-    resizeDocks({m_treeDock, m_inspectorDock}, {210, 640}, Qt::Horizontal);
+    resizeDocks({m_treeDock, m_inspectorDock}, {190, 600}, Qt::Horizontal);
     resizeDocks({m_logDock}, {150}, Qt::Vertical);
 
     m_connection = new QLabel(this);
@@ -131,7 +131,7 @@ void MainWindow::buildUi()
     statusBar()->addPermanentWidget(m_axisState);
     statusBar()->addPermanentWidget(m_progress);
     statusBar()->addPermanentWidget(m_abort);
-    resize(1200, 760);
+    resize(1240, 760);
 }
 
 void MainWindow::buildMenus()

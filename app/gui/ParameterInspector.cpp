@@ -53,8 +53,12 @@ ParameterInspector::ParameterInspector(AppContext& ctx, QWidget* parent) : QWidg
     m_table = new QTableWidget(0, ColumnCount, this);
     m_table->setObjectName("parameterTable");
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setSectionResizeMode(ColParameter, QHeaderView::Stretch);
+    // Names get a fixed, adjustable width (full text in the tooltip); the limits take the rest.
+    m_table->horizontalHeader()->setSectionResizeMode(ColParameter, QHeaderView::Interactive);
+    m_table->horizontalHeader()->resizeSection(ColParameter, 200);
+    m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setWordWrap(false);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->verticalHeader()->hide();
@@ -196,7 +200,8 @@ void ParameterInspector::rebuild()
         const QString qkey = QString::fromStdString(key);
         auto* name = new QTableWidgetItem(meta ? parameterLabel(meta->label) : qkey);
         name->setData(kKeyRole, qkey);
-        name->setToolTip(meta && !meta->description.empty() ? qkey + "\n" + QString::fromStdString(meta->description) : qkey);
+        name->setToolTip((meta ? parameterLabel(meta->label) + "\n" : QString()) + qkey +
+                         (meta && !meta->description.empty() ? "\n" + QString::fromStdString(meta->description) : QString()));
         m_table->setItem(row, ColParameter, name);
         const auto dev = valueOf(m_device, key);
         const auto prof = valueOf(m_profile, key);
