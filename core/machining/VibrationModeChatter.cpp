@@ -92,6 +92,43 @@ double chatterFrequency(const std::vector<double>& f, const std::vector<double>&
     return (static_cast<double>(best) + delta) * fs / static_cast<double>(n);
 }
 
+/// Runs of flagged samples, merged across short gaps, debounced, with score and frequency.
+void buildIntervals(ChatterAnalysis& out, const std::vector<double>& accel, double fs, const ChatterDetectOptions& o)
+{
+    const double ts = 1.0 / fs;
+    const std::size_t m = out.timeS.size();
+    std::vector<std::pair<std::size_t, std::size_t>> runs; // [first, last] indices into the index arrays
+    for (std::size_t i = 0; i < m;) {
+        if (!out.chatter[i]) {
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        while (j + 1 < m && out.chatter[j + 1])
+            ++j;
+        if (!runs.empty() && out.timeS[i] - out.timeS[runs.back().second] <= o.mergeGapS + 0.5 * ts)
+            runs.back().second = j;
+        else
+            runs.emplace_back(i, j);
+        i = j + 1;
+    }
+    for (const auto& [a, b] : runs) {
+        const double start = out.timeS[a], end = out.timeS[b] + ts;
+        if (end - start < o.minDurationS)
+            continue;
+        ChatterInterval iv;
+        iv.startS = start;
+        iv.endS = end;
+        double sum = 0.0;
+        for (std::size_t k = a; k <= b; ++k)
+            sum += out.rFa[k] - out.rFx[k];
+        iv.score = sum / static_cast<double>(b - a + 1);
+        // Frequency over the interval's samples (+1: index arrays start at sample 1).
+        iv.frequencyHz = chatterFrequency(out.forceVibN, accel, a + 1, b + 2, fs, o.highPassHz);
+        out.intervals.push_back(iv);
+    }
+}
+
 } // namespace
 
 double VibrationMode::frequencyHz() const
@@ -224,38 +261,7 @@ Result<ChatterAnalysis> detectChatter(const std::vector<double>& timeS, const st
     out.flaggedFraction = validCount ? static_cast<double>(flagCount) / static_cast<double>(validCount) : 0.0;
     out.vibrationModeHz = mode.frequencyHz();
 
-    // Intervals: runs of flagged samples, merged across short gaps, debounced.
-    const std::size_t m = out.timeS.size();
-    std::vector<std::pair<std::size_t, std::size_t>> runs; // [first, last] indices into the index arrays
-    for (std::size_t i = 0; i < m;) {
-        if (!out.chatter[i]) {
-            ++i;
-            continue;
-        }
-        std::size_t j = i;
-        while (j + 1 < m && out.chatter[j + 1])
-            ++j;
-        if (!runs.empty() && out.timeS[i] - out.timeS[runs.back().second] <= o.mergeGapS + 0.5 * ts)
-            runs.back().second = j;
-        else
-            runs.emplace_back(i, j);
-        i = j + 1;
-    }
-    for (const auto& [a, b] : runs) {
-        const double start = out.timeS[a], end = out.timeS[b] + ts;
-        if (end - start < o.minDurationS)
-            continue;
-        ChatterInterval iv;
-        iv.startS = start;
-        iv.endS = end;
-        double sum = 0.0;
-        for (std::size_t k = a; k <= b; ++k)
-            sum += out.rFa[k] - out.rFx[k];
-        iv.score = sum / static_cast<double>(b - a + 1);
-        // Frequency over the interval's samples (+1: index arrays start at sample 1).
-        iv.frequencyHz = chatterFrequency(out.forceVibN, accel, a + 1, b + 2, fs, o.highPassHz);
-        out.intervals.push_back(iv);
-    }
+    buildIntervals(out, accel, fs, o);
     return out;
 }
 
