@@ -14,7 +14,7 @@
 #include <numbers>
 #include <vector>
 
-#include "SimTestUtil.h"
+#include "tests/core/sim/SimTestUtil.h"
 
 using namespace axistune::sim;
 
