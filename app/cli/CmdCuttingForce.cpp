@@ -44,6 +44,32 @@ Result<double> samplePeriod(const model::Capture& cap, const std::string& src)
                      src + ": neither a column 't_s' nor a metadata line 'fs_Hz' gives the sample rate");
 }
 
+struct InputColumns {
+    const model::Channel *current, *torque, *motorVel, *tablePos, *loadVel;
+};
+
+/// T_M: K_t × current_A if traced, else torque_Nm, else torque_cmd_Nm; ω_M; the load side from the scale
+/// (table_pos_m) or load_vel_rad_s.
+Result<InputColumns> inputColumns(const model::Capture& cap, const std::string& src)
+{
+    InputColumns c{};
+    c.current = cap.channel("current_A");
+    c.torque = c.current ? nullptr : cap.channel("torque_Nm");
+    if (!c.current && !c.torque)
+        c.torque = cap.channel("torque_cmd_Nm");
+    c.motorVel = cap.channel("motor_vel_rad_s");
+    c.tablePos = cap.channel("table_pos_m");
+    c.loadVel = c.tablePos ? nullptr : cap.channel("load_vel_rad_s");
+    if (!c.current && !c.torque)
+        return makeError(ErrorCode::BadInput, src + ": needs a column 'current_A', 'torque_Nm' or 'torque_cmd_Nm'");
+    if (!c.motorVel)
+        return makeError(ErrorCode::BadInput, src + ": missing column 'motor_vel_rad_s'");
+    if (!c.tablePos && !c.loadVel)
+        return makeError(ErrorCode::BadInput,
+                         src + ": needs the load side: column 'table_pos_m' (linear scale) or 'load_vel_rad_s'");
+    return c;
+}
+
 int runCuttingForce(const CuttingForceArgs& a)
 {
     const std::string cmd = "cutting-force";
@@ -59,23 +85,10 @@ int runCuttingForce(const CuttingForceArgs& a)
     const std::size_t n = cap->size();
     if (n < 3)
         return reportError(cmd, makeError(ErrorCode::BadInput, a.in + ": fewer than 3 samples"));
-    // Motor torque T_M: K_t × current if the current is traced, else the torque (command).
-    const auto* current = cap->channel("current_A");
-    const auto* torque = current ? nullptr : cap->channel("torque_Nm");
-    if (!current && !torque)
-        torque = cap->channel("torque_cmd_Nm");
-    const auto* wm = cap->channel("motor_vel_rad_s");
-    const auto* xt = cap->channel("table_pos_m");
-    const auto* wl = xt ? nullptr : cap->channel("load_vel_rad_s");
-    if (!current && !torque)
-        return reportError(
-            cmd, makeError(ErrorCode::BadInput, a.in + ": needs a column 'current_A', 'torque_Nm' or 'torque_cmd_Nm'"));
-    if (!wm)
-        return reportError(cmd, makeError(ErrorCode::BadInput, a.in + ": missing column 'motor_vel_rad_s'"));
-    if (!xt && !wl)
-        return reportError(
-            cmd, makeError(ErrorCode::BadInput,
-                           a.in + ": needs the load side: column 'table_pos_m' (linear scale) or 'load_vel_rad_s'"));
+    auto cols = inputColumns(*cap, a.in);
+    if (!cols)
+        return reportError(cmd, cols.error());
+    const auto [current, torque, wm, xt, wl] = *cols;
 
     const double r = stage->leadMPerRad();
     auto obs = machining::CuttingForceObserver::create(stage->motor, stage->load, stage->observer, *ts);
