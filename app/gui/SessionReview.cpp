@@ -4,6 +4,13 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/SessionReviewView.h"
 
+// The report of a session comes from the "reports" part (ReportDialog.h: showSessionReport); the
+// Report… button exists only where that part is built.
+#if __has_include("app/gui/ReportDialog.h")
+#include "app/gui/ReportDialog.h"
+#define AXISTUNE_HAS_SESSION_REPORT 1
+#endif
+
 #include <QComboBox>
 #include <QEvent>
 #include <QHBoxLayout>
@@ -55,6 +62,16 @@ SessionReview::SessionReview(AppContext& ctx, QWidget* parent) : QWidget(parent)
     m_overlay->setObjectName("overlayButton");
     buttons->addWidget(m_open);
     buttons->addWidget(m_overlay);
+#ifdef AXISTUNE_HAS_SESSION_REPORT
+    m_report = new QPushButton(this);
+    m_report->setObjectName("reportButton");
+    buttons->addWidget(m_report);
+    connect(m_report, &QPushButton::clicked, this, [this] {
+        const auto ids = selectedIds();
+        if (!ids.isEmpty())
+            showSessionReport(m_ctx, ids.front(), this);
+    });
+#endif
     buttons->addStretch(1);
     lay->addLayout(buttons);
 
@@ -91,6 +108,8 @@ void SessionReview::retranslateUi()
     m_open->setToolTip(tr("Shows the selected session read-only with all its plots"));
     m_overlay->setText(tr("Overlay responses"));
     m_overlay->setToolTip(tr("One Bode plot with the frequency responses of every selected session"));
+    if (m_report)
+        m_report->setText(tr("Report…"));
     m_list->setHeaderLabels({tr("Id"), tr("Kind"), tr("Status"), tr("Started (UTC)"), tr("Operator"), tr("Note"),
                              tr("Captures"), tr("Results")});
     reload();

@@ -62,6 +62,7 @@ private:
     QPushButton* m_open = nullptr;
     QPushButton* m_overlay = nullptr;
     QPushButton* m_reload = nullptr;
+    QPushButton* m_report = nullptr;  ///< only when ReportDialog.h is part of the build
     QString m_wantedMachine;
 };
 
