@@ -328,7 +328,9 @@ ApplyPage::ApplyPage(AppContext& ctx, QWidget* parent) : QWizardPage(parent), m_
     lay->addLayout(buttons);
     m_apply->setEnabled(false);
     m_restore->setEnabled(false);
-    connect(m_confirm, &QCheckBox::toggled, this, [this](bool on) { m_apply->setEnabled(on && !m_applied); });
+    // Apply only once the device values are known (they are the diff's left side and the restore).
+    connect(m_confirm, &QCheckBox::toggled, this,
+            [this](bool on) { m_apply->setEnabled(on && !m_applied && !m_previous.empty()); });
     connect(m_skip, &QCheckBox::toggled, this, [this](bool on) {
         m_confirm->setEnabled(!on && !m_applied);
         emit completeChanged();
@@ -394,8 +396,12 @@ void ApplyPage::fillTable()
 
 void ApplyPage::apply()
 {
-    if (m_applied || !m_confirm->isChecked() || m_previous.empty())
+    if (m_applied || !m_confirm->isChecked())
         return;
+    if (m_previous.empty()) {
+        m_status->setText(tr("The device values are not read yet: wait, then Apply."));
+        return;
+    }
     m_apply->setEnabled(false);
     m_status->setText(tr("Writing…"));
     m_writeRequest = m_ctx.drive().writeParameters(m_axis, m_proposed);
