@@ -20,6 +20,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 
+#include <algorithm>
 #include <cmath>
 
 namespace axistune {
@@ -69,6 +70,10 @@ device::TestRequest FrfWizard::request() const
     r.fmaxHz = field("fmaxHz").toDouble();
     r.points = field("points").toInt();
     r.amplitudePct = field("amplitudePct").toDouble();
+    if (r.frfMethod == device::FrfMethod::Multisine && r.points > 0)
+        // Lines on a linear grid: at least `points` of them in the band, never coarser than the
+        // drive's default fmin/2 (docs/wizards/frf.md).
+        r.multisineSpacingHz = std::min(r.fminHz / 2.0, (r.fmaxHz - r.fminHz) / r.points);
     return r;
 }
 

@@ -4,7 +4,7 @@
 //   1. safety   — axis, the limits that matter for a torque injection, the excitation amplitude in %
 //                 of rated torque (refused above device::kMaxFrfAmplitudePct), confirmation;
 //   2. method   — multi-sweep sine stream (default), conventional sine stream, PRBS with Welch,
-//                 multisine (simulated drives), band fmin..fmax and points, estimated motion time
+//                 multisine, band fmin..fmax and points, estimated motion time
 //                 (device::planFrfTest / planMultisineTest from the drive's own parameters);
 //   3. run      — one device::TestRequest of type Frf on the shared TestRunPage (progress, Abort);
 //   4. result   — Bode plot of the measured closed loop with coherence, the validity bands

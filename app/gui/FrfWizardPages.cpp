@@ -209,6 +209,7 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
     m_method->addItem(tr("Multi-sweep sine stream (valid up to the trace rate)"), int(device::FrfMethod::MultiSweep));
     m_method->addItem(tr("Conventional sine stream (valid up to half the trace rate)"), int(device::FrfMethod::Conventional));
     m_method->addItem(tr("PRBS with Welch averaging and coherence (up to half the trace rate)"), int(device::FrfMethod::Prbs));
+    m_method->addItem(tr("Multisine, all lines at once (valid up to the trace rate)"), int(device::FrfMethod::Multisine));
     form->addRow(tr("Method:"), m_method);
     m_fmin = new QDoubleSpinBox(this);
     m_fmin->setObjectName("frfFmin");
@@ -281,14 +282,6 @@ device::FrfMethod FrfConfigPage::selectedMethod() const
 
 void FrfConfigPage::initializePage()
 {
-    // The multisine is offered only where the drive runs it (the simulated drive; the Modbus register
-    // map has no multisine method yet).
-    const int ms = m_method->findData(int(device::FrfMethod::Multisine));
-    const bool simulated = m_ctx.drive().uri().startsWith("sim:");
-    if (simulated && ms < 0)
-        m_method->addItem(tr("Multisine, all lines at once (valid up to the trace rate)"), int(device::FrfMethod::Multisine));
-    else if (!simulated && ms >= 0)
-        m_method->removeItem(ms);
     const double fs = m_safety.driveInfo().traceRateHz();
     if (std::isfinite(fs)) {
         m_validity->setText(tr("Trace rate fs = %1 Hz. The multi-sweep and multisine methods measure up to fs; the "

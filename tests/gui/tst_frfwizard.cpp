@@ -263,7 +263,7 @@ private slots:
         QVERIFY(ctx.openDatabase(m_tmp.filePath("sim.db")));
         QVERIFY(connectTo(ctx, "sim:dd-table-linear"));
         runCompleteWizard(ctx, kWideBand, true);
-        // The multisine is offered on the simulated drive (4 methods), not over Modbus (below).
+
         qInfo("simulated end to end: %lld ms wall", static_cast<long long>(t.elapsed()));
     }
 
@@ -277,7 +277,7 @@ private slots:
             FrfWizard w(ctx);
             w.show();
             configureAndStart(w, {1000.0, 3900.0, 12, 3.0}, false, device::FrfMethod::Conventional);
-            QCOMPARE(w.configPage()->method()->count(), 4);  // multisine offered on the simulated drive
+            QCOMPARE(w.configPage()->method()->count(), 4);
             QVERIFY(waitUntil([&] { return !w.runPage()->isRunning(); }, 60000));
             QVERIFY2(w.runPage()->succeeded(), qPrintable(w.runPage()->failure()));
             w.next();
@@ -330,12 +330,16 @@ private slots:
         QVERIFY(ctx.openDatabase(m_tmp.filePath("modbus.db")));
         QVERIFY(connectTo(ctx, QString("modbus://127.0.0.1:%1").arg(sd.port())));
         runCompleteWizard(ctx, kResonanceBand, false);
+        // The multisine over Modbus as well (all lines at once, 2–3.9 kHz).
         FrfWizard w(ctx);
         w.show();
-        w.safetyPage()->confirmation()->setChecked(true);
-        QVERIFY(waitUntil([&] { return w.safetyPage()->isComplete(); }, 10000));
+        configureAndStart(w, {2000.0, 3900.0, 40, 3.0}, false, device::FrfMethod::Multisine);
+        QVERIFY(waitUntil([&] { return !w.runPage()->isRunning(); }, 60000));
+        QVERIFY2(w.runPage()->succeeded(), qPrintable(w.runPage()->failure()));
         w.next();
-        QCOMPARE(w.configPage()->method()->count(), 3);  // no multisine over the Modbus register map
+        QVERIFY(waitUntil([&] { return w.resultPage()->analysed(); }, 30000));
+        QCOMPARE(w.resultPage()->measured().metadata.at("method"), std::string("multisine"));
+        QVERIFY(w.resultPage()->measured().size() >= 40);  // at least `points` lines
         qInfo("Modbus end to end: %lld ms wall", static_cast<long long>(t.elapsed()));
     }
 
