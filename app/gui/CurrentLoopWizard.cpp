@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Current-loop wizard: page order, the save page and the session record (CurrentLoopWizard.h,
+// docs/wizards/current-loop.md). Method: spec/current-loop-and-multisweep-frf.md chapter 2.
+#include "app/gui/CurrentLoopWizard.h"
+
+#include "app/gui/AppContext.h"
+#include "app/gui/WizardPages.h"
+#include "app/gui/WizardRegistry.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include <nlohmann/json.hpp>
+
+namespace axistune {
+namespace gui {
+
+namespace {
+
+const WizardRegistrar kRegistrar{"current-loop", QT_TRANSLATE_NOOP("Wizards", "Current loop…"), 30,
+                                 [](AppContext& ctx, QWidget* parent) -> QWizard* {
+                                     return new CurrentLoopWizard(ctx, parent);
+                                 },
+                                 false};
+
+nlohmann::json gainsJson(const tuning::PiGains& g)
+{
+    return {{"kp_V_per_A", g.kpVPerA}, {"ki_V_per_As", g.kiVPerAs}};
+}
+
+}  // namespace
+
+CurrentLoopSavePage::CurrentLoopSavePage(AppContext& ctx, CurrentLoopData& shared, ApplyPage* apply, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
+{
+    setTitle(tr("Save"));
+    setSubTitle(tr("The session holds the motor data and settings, the α table, the chosen α and gains with the rise "
+                   "time, the gain schedule, the step responses, what was applied with its journal, and the read-back."));
+    auto* lay = new QVBoxLayout(this);
+    m_text = new QLabel(this);
+    m_text->setObjectName("clSummary");
+    m_text->setWordWrap(true);
+    m_text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    lay->addWidget(m_text);
+    lay->addStretch(1);
+    setFinalPage(true);
+}
+
+void CurrentLoopSavePage::initializePage()
+{
+    auto* w = qobject_cast<CurrentLoopWizard*>(wizard());
+    if (w && w->savedSessionId() == 0)
+        w->saveSession();
+    QString text;
+    if (const auto* c = m_d.chosen())
+        text += tr("α = %1, k_p = %2 V/A, k_i = %3 V/(A·s), rise time %4 µs (delay-free design).")
+                    .arg(c->alpha, 0, 'f', 2)
+                    .arg(c->gains.kpVPerA, 0, 'f', 3)
+                    .arg(c->gains.kiVPerAs, 0, 'g', 6)
+                    .arg(c->riseTimeS * 1e6, 0, 'f', 1);
+    if (!m_ctx.drive().isConnected())
+        text += "\n" + tr("Not connected: the gains were not applied.");
+    else if (!m_apply->applied())
+        text += "\n" + tr("Not applied: the proposal is kept in the session.");
+    else
+        text += "\n" + tr("Applied to axis %1 and read back.").arg(m_d.axis);
+    text += "\n" + (w && w->savedSessionId() > 0 ? tr("Saved as session %1.").arg(w->savedSessionId())
+                                                 : tr("The session was not saved (no store open)."));
+    m_text->setText(text);
+}
+
+CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_ctx(ctx)
+{
+    setWindowTitle(tr("Current loop"));
+    setObjectName("currentLoopWizard");
+    setWizardStyle(QWizard::ClassicStyle);
+    setOption(QWizard::NoBackButtonOnLastPage, true);
+    m_motor = new CurrentLoopMotorPage(ctx, m_data, this);
+    m_design = new CurrentLoopDesignPage(ctx, m_data, this);
+    m_apply = new ApplyPage(ctx, this);
+    m_apply->setObjectName("clApply");
+    auto* step = new CurrentLoopStepPage(ctx, m_data, m_apply, this);
+    auto* verify = new CurrentLoopVerifyPage(ctx, m_data, m_apply, this);
+    auto* save = new CurrentLoopSavePage(ctx, m_data, m_apply, this);
+    setPage(Motor, m_motor);
+    setPage(Design, m_design);
+    setPage(Step, step);
+    setPage(Apply, m_apply);
+    setPage(Verify, verify);
+    setPage(Save, save);
+    setStartId(Motor);
+    resize(1000, 700);
+}
+
+void CurrentLoopWizard::saveSession()
+{
+    const auto& d = m_data;
+    store::SessionRecord rec;
+    rec.info.kind = "current-loop";
+    rec.info.axis = d.axis.toStdString();
+    rec.info.status = store::SessionStatus::Completed;
+    const auto& m = d.motor;
+    rec.inputs = {{"source", d.fromDrive ? "drive" : "entered"},
+                  {"motor",
+                   {{"resistance_ohm", m.resistanceOhm},
+                    {"inductance_q_H", m.inductanceQH},
+                    {"max_current_A", m.maxCurrentA},
+                    {"max_voltage_V", m.maxVoltageV},
+                    {"inductance_drop_at_max", m.inductanceDropAtMax},
+                    {"rated_current_A", m.ratedCurrentA},
+                    {"back_emf_V_per_krpm", m.backEmfVPerKrpm},
+                    {"contouring_speed_rpm", m.contouringSpeedRpm}}},
+                  {"settings",
+                   {{"tau_s", d.settings.deadTimeS},
+                    {"gain_margin_dB", d.settings.gainMarginDb},
+                    {"overshoot", d.settings.overshootMax},
+                    {"ripple", d.settings.rippleFraction},
+                    {"alpha_step", d.settings.alphaStep}}},
+                  {"drive_period_s", d.drivePeriodS},
+                  {"drive_dead_time_s", d.driveDeadTimeS},
+                  {"back_emf_check", d.backEmfText.toStdString()}};
+    const auto* c = d.chosen();
+    if (d.design && c) {
+        nlohmann::json table = nlohmann::json::array();
+        for (const auto& row : d.design->table) {
+            nlohmann::json r{{"alpha", row.alpha}, {"feasible", row.feasible}, {"active_constraints", row.activeConstraints}};
+            if (row.feasible) {
+                r.update(gainsJson(row.gains));
+                r["rise_time_s"] = row.riseTimeS;
+                r["overshoot"] = row.overshoot;
+            }
+            table.push_back(r);
+        }
+        nlohmann::json schedule = nlohmann::json::array();
+        for (const auto& p : d.design->schedule) {
+            const double f = tuning::scheduleFactor(m, p.currentA);
+            schedule.push_back({{"current_A", p.currentA},
+                                {"factor", f},
+                                {"kp_V_per_A", f * c->gains.kpVPerA},
+                                {"ki_V_per_As", f * c->gains.kiVPerAs}});
+        }
+        nlohmann::json result{{"alpha", c->alpha},
+                              {"kp_V_per_A", c->gains.kpVPerA},
+                              {"ki_V_per_As", c->gains.kiVPerAs},
+                              {"rise_time_s", c->riseTimeS},
+                              {"overshoot", c->overshoot},
+                              {"optimum_alpha", d.design->alpha},
+                              {"optimum", gainsJson(d.design->gains)},
+                              {"table", table},
+                              {"schedule", schedule}};
+        rec.results.push_back({"design", result, {}});
+        if (!d.step.timeS.empty())
+            rec.results.push_back({"step_prediction",
+                                   {{"period_s", d.drivePeriodS}, {"dead_time_s", d.driveDeadTimeS}},
+                                   {{"t_s", d.step.timeS},
+                                    {"delay_free", d.step.delayFree},
+                                    {"delay_inclusive", d.step.discrete}}});
+        if (!d.axis.isEmpty() && !m_ctx.machine().isEmpty())
+            rec.parameterSets.push_back({0, rec.info.axis, store::ParameterSource::Proposed, {}, "current-loop wizard",
+                                         {{"current.kp", c->gains.kpVPerA},
+                                          {"current.ki", c->gains.kiVPerAs},
+                                          {"current.alpha", c->alpha}}});
+    }
+    if (d.verified)
+        rec.results.push_back({"verification",
+                               {{"kp_V_per_A", d.readKp},
+                                {"ki_V_per_As", d.readKi},
+                                {"alpha", d.readAlpha},
+                                {"predicted_overshoot", d.verifyOvershoot},
+                                {"predicted_rise_time_s", d.verifyRiseS},
+                                {"measured", nullptr},
+                                {"note", "the drive offers no current-step test"}},
+                               {{"t_s", d.verifyStep.timeS}, {"delay_inclusive", d.verifyStep.discrete}}});
+    if (m_apply->applied())
+        rec.parameterSets.push_back(
+            {0, rec.info.axis, store::ParameterSource::Applied, {}, "current-loop wizard", m_apply->readBack()});
+    rec.journal = m_apply->journal();
+    auto id = m_ctx.saveSession(rec);
+    if (id)
+        m_sessionId = *id;
+}
+
+}  // namespace gui
+}  // namespace axistune

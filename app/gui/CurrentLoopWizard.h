@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Current-loop wizard (issue 9 item 1; spec/current-loop-and-multisweep-frf.md chapter 2;
+// docs/wizards/current-loop.md): motor data entered or read from the drive's read-only motor
+// parameters, with the back-EMF check at the contouring speed → the design of core/tuning CurrentLoop
+// (α sweep; per α the optimum under dead-time stability, voltage envelope and overshoot limit) shown
+// in the k_p–k_i plane, rise time against α, the gain schedule over current → step responses
+// (delay-free design, delay-inclusive prediction at the drive's period and dead time; the drive offers
+// no current-step test, so there is no measured current step) → apply current.kp / current.ki /
+// current.alpha → verify (read back, prediction with the read-back gains) → save (session kind
+// "current-loop").
+
+#include "core/tuning/CurrentLoop.h"
+
+#include <QWizard>
+#include <QWizardPage>
+
+#include <optional>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace axistune {
+namespace widgets {
+class CurvePlot;
+}  // namespace widgets
+namespace gui {
+
+class AppContext;
+class ApplyPage;
+
+struct CurrentLoopData {
+    QString axis;
+    bool fromDrive = false;
+    tuning::MotorData motor;
+    tuning::CurrentLoopSettings settings;
+    double drivePeriodS = 62.5e-6;    ///< current.period of the drive (discrete prediction)
+    double driveDeadTimeS = 62.5e-6;  ///< current.dead_time of the drive (delay-inclusive prediction)
+    QString backEmfText;              ///< the back-EMF check in words with the numbers
+    bool backEmfOk = true;
+    // Design (computed off the GUI thread).
+    std::optional<tuning::CurrentLoopDesign> design;
+    QString error;
+    tuning::BoundaryCurve stability;
+    std::vector<tuning::BoundaryCurve> voltage;    ///< per design.table row
+    std::vector<tuning::BoundaryCurve> overshoot;  ///< per design.table row
+    int chosenRow = -1;                            ///< row of design.table chosen (default: the optimum)
+    tuning::StepResponse step;                     ///< for the chosen row
+    // Verification (read back after apply).
+    bool verified = false;
+    double readKp = 0.0, readKi = 0.0, readAlpha = 0.0;
+    tuning::StepResponse verifyStep;
+    double verifyOvershoot = 0.0, verifyRiseS = 0.0;
+
+    const tuning::AlphaOptimum* chosen() const
+    {
+        return design && chosenRow >= 0 && chosenRow < int(design->table.size()) ? &design->table[chosenRow] : nullptr;
+    }
+};
+
+/// Motor data and design settings; "Read from drive" fills them from the axis's parameters.
+class CurrentLoopMotorPage : public QWizardPage {
+    Q_OBJECT
+public:
+    CurrentLoopMotorPage(AppContext& ctx, CurrentLoopData& data, QWidget* parent = nullptr);
+    void initializePage() override;
+    bool isComplete() const override;
+    bool validatePage() override;
+    QPushButton* readButton() const { return m_read; }
+    QComboBox* axisBox() const { return m_axis; }
+    bool isReading() const { return m_readRequest != 0; }
+    void setMotor(const tuning::MotorData& m);
+
+public slots:
+    void readFromDrive();
+
+private:
+    void updateCheck();
+    tuning::MotorData motorFromFields() const;
+    AppContext& m_ctx;
+    CurrentLoopData& m_d;
+    QComboBox* m_axis = nullptr;
+    QPushButton* m_read = nullptr;
+    QDoubleSpinBox* m_r = nullptr;
+    QDoubleSpinBox* m_l = nullptr;
+    QDoubleSpinBox* m_imax = nullptr;
+    QDoubleSpinBox* m_vmax = nullptr;
+    QDoubleSpinBox* m_delta = nullptr;
+    QDoubleSpinBox* m_rated = nullptr;
+    QDoubleSpinBox* m_emf = nullptr;
+    QDoubleSpinBox* m_speed = nullptr;
+    QDoubleSpinBox* m_tau = nullptr;
+    QDoubleSpinBox* m_gm = nullptr;
+    QDoubleSpinBox* m_os = nullptr;
+    QDoubleSpinBox* m_ripple = nullptr;
+    QLabel* m_check = nullptr;
+    QLabel* m_source = nullptr;
+    int m_readRequest = 0;
+};
+
+/// The k_p–k_i plane, rise time against α, the α table and the gain schedule.
+class CurrentLoopDesignPage : public QWizardPage {
+    Q_OBJECT
+public:
+    CurrentLoopDesignPage(AppContext& ctx, CurrentLoopData& data, QWidget* parent = nullptr);
+    void initializePage() override;
+    bool isComplete() const override;
+    bool validatePage() override;
+    QComboBox* alphaBox() const { return m_alpha; }
+    QCheckBox* allAlphas() const { return m_all; }
+    widgets::CurvePlot* planePlot() const { return m_plane; }
+    QTableWidget* table() const { return m_table; }
+    bool isBusy() const { return m_busy; }
+
+private:
+    void showDesign();
+    void drawPlane();
+    AppContext& m_ctx;
+    CurrentLoopData& m_d;
+    widgets::CurvePlot* m_plane = nullptr;
+    widgets::CurvePlot* m_rise = nullptr;
+    widgets::CurvePlot* m_schedule = nullptr;
+    QTableWidget* m_table = nullptr;
+    QTableWidget* m_scheduleTable = nullptr;
+    QComboBox* m_alpha = nullptr;
+    QCheckBox* m_all = nullptr;
+    QLabel* m_status = nullptr;
+    bool m_busy = false;
+};
+
+/// Step responses: delay-free design against the delay-inclusive prediction.
+class CurrentLoopStepPage : public QWizardPage {
+    Q_OBJECT
+public:
+    CurrentLoopStepPage(AppContext& ctx, CurrentLoopData& data, ApplyPage* apply, QWidget* parent = nullptr);
+    void initializePage() override;
+    int nextId() const override;
+    widgets::CurvePlot* plot() const { return m_plot; }
+
+private:
+    AppContext& m_ctx;
+    CurrentLoopData& m_d;
+    ApplyPage* m_apply;
+    widgets::CurvePlot* m_plot = nullptr;
+    QLabel* m_text = nullptr;
+};
+
+/// Read back after apply and the prediction with the read-back gains.
+class CurrentLoopVerifyPage : public QWizardPage {
+    Q_OBJECT
+public:
+    CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& data, ApplyPage* apply, QWidget* parent = nullptr);
+    void initializePage() override;
+    bool isComplete() const override;
+
+private:
+    void showResult();
+    AppContext& m_ctx;
+    CurrentLoopData& m_d;
+    ApplyPage* m_apply;
+    widgets::CurvePlot* m_plot = nullptr;
+    QLabel* m_text = nullptr;
+    int m_readRequest = 0;
+};
+
+class CurrentLoopSavePage : public QWizardPage {
+    Q_OBJECT
+public:
+    CurrentLoopSavePage(AppContext& ctx, CurrentLoopData& data, ApplyPage* apply, QWidget* parent = nullptr);
+    void initializePage() override;
+
+private:
+    AppContext& m_ctx;
+    CurrentLoopData& m_d;
+    ApplyPage* m_apply;
+    QLabel* m_text = nullptr;
+};
+
+class CurrentLoopWizard : public QWizard {
+    Q_OBJECT
+public:
+    enum PageId { Motor, Design, Step, Apply, Verify, Save };
+
+    explicit CurrentLoopWizard(AppContext& ctx, QWidget* parent = nullptr);
+
+    CurrentLoopData& data() { return m_data; }
+    CurrentLoopMotorPage* motorPage() const { return m_motor; }
+    CurrentLoopDesignPage* designPage() const { return m_design; }
+    ApplyPage* applyPage() const { return m_apply; }
+    qint64 savedSessionId() const { return m_sessionId; }
+
+    void saveSession();
+
+private:
+    AppContext& m_ctx;
+    CurrentLoopData m_data;
+    CurrentLoopMotorPage* m_motor = nullptr;
+    CurrentLoopDesignPage* m_design = nullptr;
+    ApplyPage* m_apply = nullptr;
+    qint64 m_sessionId = 0;
+};
+
+}  // namespace gui
+}  // namespace axistune
