@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The machining wizard (issue 10 item 5, docs/wizards/machining.md), offline:
+//  - the Table 1 tool of seed 000 (0.40 kg, 83.0 N·s/m, 30.1 MN/m in x and y; 4 teeth, K_t 0.980 GPa,
+//    K_r 0.294 GPa; a_e = 7 of D = 12 mm, down milling — the reference case of
+//    tests/core/machining/test_StabilityLobes.cpp): the lobe curve at 2800 min⁻¹ is 0.958 mm ± 3 % with 80
+//    steps per tooth period (spec §2.8 / §6.1 check 8, the tolerance of that core test);
+//  - the advice for a chatter frequency equals the stable-pocket rule computed here independently;
+//  - bad tool or cut data block the page with the core validation's message;
+//  - the captured-cut analysis: 1500 min⁻¹ (SDM limit 1.07 mm, tests/app/cli/test_machining_cut.cpp) at
+//    0.5 mm (stable, from `axistune-cli simulate-cut`) shows no chatter interval, at 2.0 mm (chatter,
+//    simulated by the wizard itself) at least one;
+//  - the session (kind "machining") is stored with inputs, lobes, advice, intervals and the cut.
+#include "app/gui/AppContext.h"
+#include "app/gui/MachiningWizard.h"
+#include "app/gui/WizardRegistry.h"
+
+#include "core/machining/ToolModel.h"
+#include "tests/app/cli/CliRunner.h"
+#include "tests/gui/GuiTestUtil.h"
+#include "widgets/CurvePlot.h"
+
+#include <QAbstractButton>
+#include <QComboBox>
+#include <QPushButton>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace axistune;
+using axistune::gui::AppContext;
+using axistune::gui::MachiningWizard;
+using axistune::testing::maybeScreenshot;
+using axistune::testing::waitUntil;
+
+namespace {
+
+const std::string kSamples = std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/samples/";
+
+void setCell(QTableWidget* t, int row, int col, const QString& text) { t->item(row, col)->setText(text); }
+
+}  // namespace
+
+class TestMachiningWizard : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { axistune::testing::installLanguageFromEnv(); }
+
+    void registeredAndWorksOffline()
+    {
+        const auto* e = gui::findWizard("machining");
+        QVERIFY(e);
+        QCOMPARE(e->order, 70);
+        QVERIFY(!e->needsDrive);
+    }
+
+    void badDataBlocksNextWithTheCoreMessage()
+    {
+        AppContext ctx;
+        MachiningWizard w(ctx);
+        w.show();
+        auto* tool = w.toolPage();
+        QVERIFY(tool->isComplete());
+        auto* table = w.findChild<QTableWidget*>("machToolTable");
+        QVERIFY(table);
+        QCOMPARE(table->rowCount(), 2);  // x and y of Table 1
+        // Zero mass in x: the message of machining::validateTool for the same tool.
+        setCell(table, 0, 1, "0");
+        QVERIFY(!tool->isComplete());
+        machining::ToolModes bad{{{0.0, 83.0, 30.1e6}}, {{0.40, 83.0, 30.1e6}}};
+        const QString expected = QString::fromStdString(machining::validateTool(bad).error().detail);
+        QVERIFY(!expected.isEmpty());
+        auto* err = w.findChild<QLabel*>("machToolError");
+        QCOMPARE(err->text(), expected);
+        QVERIFY(!w.button(QWizard::NextButton)->isEnabled());
+        // Negative stiffness in y.
+        setCell(table, 0, 1, "0.40");
+        QVERIFY(tool->isComplete());
+        setCell(table, 1, 3, "-30.1e6");
+        QVERIFY(!tool->isComplete());
+        bad = {{{0.40, 83.0, 30.1e6}}, {{0.40, 83.0, -30.1e6}}};
+        QCOMPARE(err->text(), QString::fromStdString(machining::validateTool(bad).error().detail));
+        // Not a number: the row and the column are named.
+        setCell(table, 1, 3, "abc");
+        QVERIFY(err->text().contains("row 2"));
+        setCell(table, 1, 3, "30.1e6");
+        QVERIFY(tool->isComplete());
+        w.next();
+        QCOMPARE(w.currentId(), int(MachiningWizard::CutId));
+
+        // Immersion outside (0, 1].
+        auto* cut = w.cutPage();
+        QVERIFY(cut->isComplete());
+        cut->immersion()->setText("1.5");
+        QVERIFY(!cut->isComplete());
+        machining::CuttingConditions c;
+        c.teeth = 4;
+        c.ktNPerM2 = 0.980e9;
+        c.krNPerM2 = 0.294e9;
+        c.radialImmersion = 1.5;
+        QCOMPARE(w.findChild<QLabel*>("machCutError")->text(),
+                 QString::fromStdString(machining::validateCut(c).error().detail));
+        QVERIFY(!w.button(QWizard::NextButton)->isEnabled());
+        cut->immersion()->setText("0.5833");
+        QVERIFY(cut->isComplete());
+        // A bad tool.json: the file and the key are named.
+        QTemporaryDir dir;
+        const QString path = dir.filePath("tool.json");
+        {
+            QFile fl(path);
+            QVERIFY(fl.open(QIODevice::WriteOnly));
+            fl.write(R"({"modes_x": [{"mass_kg": 0.4, "damping_Ns_per_m": 83.0}], "modes_y": []})");
+        }
+        QVERIFY(!tool->loadToolFile(path));
+        QVERIFY2(err->text().contains("tool.json") && err->text().contains("stiffness_N_per_m"),
+                 qPrintable(err->text()));
+    }
+
+    void lobesAdviceAnalysisAndSession()
+    {
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        MachiningWizard w(ctx);
+        w.resize(1000, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        // Step 1: the Table 1 tool, loaded from the sample tool.json.
+        QVERIFY(w.toolPage()->loadToolFile(QString::fromStdString(kSamples + "tool-table1.json")));
+        QVERIFY(w.toolPage()->isComplete());
+        maybeScreenshot(&w, "machining-01-tool");
+        w.next();
+        // Step 2: the Table 1/2 cut; a short speed range around 2800 min⁻¹ keeps the test fast.
+        auto* cut = w.cutPage();
+        QVERIFY(cut->loadCutFile(QString::fromStdString(kSamples + "cut-table1.json")));
+        cut->rpm()->setText("2800");
+        cut->depthMm()->setText("1.5");
+        cut->rpmMin()->setText("2400");
+        cut->rpmMax()->setText("3400");
+        cut->rpmStep()->setText("50");
+        cut->stepsPerPeriod()->setValue(80);
+        QVERIFY(cut->isComplete());
+        maybeScreenshot(&w, "machining-02-cut");
+        w.next();
+        // Step 3: lobes off the GUI thread.
+        QCOMPARE(w.currentId(), int(MachiningWizard::LobesId));
+        auto* lobes = w.lobesPage();
+        QVERIFY(waitUntil([&] { return lobes->isComplete(); }, 60000));
+        const double at2800 = lobes->limitAt(2800.0) * 1e3;
+        QVERIFY2(std::abs(at2800 - 0.958) <= 0.03 * 0.958, qPrintable(QString::number(at2800)));
+        QVERIFY(std::abs(lobes->result().limitAtCurrentM * 1e3 - at2800) < 1e-3 * at2800);  // bracket 1e-4
+        QCOMPARE(lobes->plot()->curveCount(), 1);
+        QCOMPARE(lobes->plot()->pointCount(), 1);
+        // 1.5 mm is above the limit: unstable (spec §5.1).
+        QVERIFY2(lobes->status()->text().contains("UNSTABLE"), qPrintable(lobes->status()->text()));
+        maybeScreenshot(&w, "machining-03-lobes");
+        w.next();
+        // Step 4: advice for 1450 Hz at 2800 min⁻¹, 4 teeth, computed here by the rule.
+        QCOMPARE(w.currentId(), int(MachiningWizard::AdviceId));
+        auto* advice = w.advicePage();
+        advice->chatterHz()->setText("1450");
+        QVERIFY(advice->advice().has_value());
+        const double fTooth = 4.0 * 2800.0 / 60.0;
+        const int rho = static_cast<int>(std::floor(1450.0 / fTooth + 0.5));
+        const double pocket = 60.0 * 1450.0 / (rho * 4.0);
+        QCOMPARE(rho, 8);
+        QCOMPARE(advice->advice()->lobe, rho);
+        QVERIFY(std::abs(advice->advice()->rpm - pocket) < 1e-6);
+        QVERIFY2(advice->adviceText()->text().contains(QLocale().toString(pocket, 'f', 0)),
+                 qPrintable(advice->adviceText()->text()));
+        QCOMPARE(advice->plot()->verticalLineCount(), 1);
+        maybeScreenshot(&w, "machining-04-advice");
+        w.next();
+        // Step 5: a stable cut captured by the CLI (1500 min⁻¹, 0.5 mm): no chatter interval.
+        QCOMPARE(w.currentId(), int(MachiningWizard::AnalysisId));
+        auto* analysis = w.analysisPage();
+        const QString stable = dir.filePath("stable.csv");
+        auto r = axistune::testing::runCli("simulate-cut --machine vmc --axis X --tool " + kSamples +
+                                           "tool-table1.json --cut " + kSamples +
+                                           "cut-table1.json --rpm 1500 --depth-m 0.5e-3 --duration-s 1.2 --seed 3 "
+                                           "--out " + stable.toStdString());
+        QVERIFY2(r.exitCode == 0, r.err.c_str());
+        analysis->loadCapture(stable);
+        QVERIFY(waitUntil([&] { return !analysis->busy(); }, 60000));
+        QVERIFY2(analysis->analysed(), qPrintable(analysis->summary()->text()));
+        QVERIFY(analysis->analysis().chatter.has_value());
+        QCOMPARE(analysis->intervalTable()->rowCount(), 0);
+        QVERIFY(analysis->analysis().chatter->intervals.empty());
+        // The observer's force: the static mean force on the table of this cut is +6.26 N
+        // (tests/app/cli/test_machining_cut.cpp); the estimate's mean over the last half within 10 %.
+        const auto& fe = analysis->analysis().forceEstimateN;
+        double mean = 0.0;
+        for (std::size_t i = fe.size() / 2; i < fe.size(); ++i)
+            mean += fe[i];
+        mean /= static_cast<double>(fe.size() - fe.size() / 2);
+        QVERIFY2(std::abs(mean - 6.26) < 0.1 * 6.26, qPrintable(QString::number(mean)));
+        // A chattering cut simulated by the wizard with this tool and cut at 1500 min⁻¹, 2.0 mm.
+        cut->rpm()->setText("1500");
+        cut->depthMm()->setText("2.0");
+        analysis->simulateCut();
+        QVERIFY(analysis->busy());
+        QVERIFY(waitUntil([&] { return !analysis->busy(); }, 60000));
+        QVERIFY2(analysis->analysed(), qPrintable(analysis->summary()->text()));
+        QVERIFY(!analysis->analysis().chatter->intervals.empty());
+        QVERIFY(analysis->intervalTable()->rowCount() >= 1);
+        QVERIFY(analysis->summary()->text().contains("CHATTER"));
+        maybeScreenshot(&w, "machining-05-analysis");
+        w.next();
+        // Step 6: the session.
+        QCOMPARE(w.currentId(), int(MachiningWizard::SaveId));
+        QVERIFY(w.savedSessionId() > 0);
+        maybeScreenshot(&w, "machining-06-save");
+        auto rec = ctx.database()->loadSession(w.savedSessionId());
+        QVERIFY(rec.ok());
+        QCOMPARE(QString::fromStdString(rec->info.kind), QString("machining"));
+        QCOMPARE(rec->inputs["cut"]["teeth"].get<int>(), 4);
+        QCOMPARE(rec->inputs["tool"]["modes_x"][0]["mass_kg"].get<double>(), 0.40);
+        bool haveLobes = false, haveAdvice = false, haveDetection = false;
+        for (const auto& res : rec->results) {
+            if (res.name == "lobes") {
+                haveLobes = true;
+                QCOMPARE(res.arrays.size(), std::size_t(2));
+                QCOMPARE(res.arrays[0].data.size(), std::size_t(21));
+            }
+            if (res.name == "advice") {
+                haveAdvice = true;
+                QVERIFY(std::abs(res.data["pocket_rpm"].get<double>() - pocket) < 1e-6);
+            }
+            if (res.name == "chatter-detection") {
+                haveDetection = true;
+                QVERIFY(res.data["chatter"].get<bool>());
+                QVERIFY(!res.data["intervals"].empty());
+            }
+        }
+        QVERIFY(haveLobes && haveAdvice && haveDetection);
+        QCOMPARE(rec->captures.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(rec->captures[0].name), QString("cut"));
+        QVERIFY(rec->captures[0].capture.channel("cutting_force_estimate_N"));
+    }
+
+    void cancelStopsTheLobeComputation()
+    {
+        AppContext ctx;
+        MachiningWizard w(ctx);
+        w.show();
+        w.next();
+        w.cutPage()->rpmMin()->setText("1000");
+        w.cutPage()->rpmMax()->setText("20000");
+        w.cutPage()->rpmStep()->setText("10");
+        w.next();
+        auto* lobes = w.lobesPage();
+        QVERIFY(lobes->cancelButton()->isEnabled());
+        lobes->cancelButton()->click();
+        QVERIFY(waitUntil([&] { return lobes->cancelButton()->isEnabled() == false; }, 30000));
+        QVERIFY(!lobes->isComplete());
+        QVERIFY(lobes->status()->text().contains("Cancelled"));
+    }
+};
+
+QTEST_MAIN(TestMachiningWizard)
+#include "tst_machiningwizard.moc"
