@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Velocity/position-loop wizard end to end on the simulated two-inertia bench (issue 9 item 2). The
+// fitted model comes from a saved two-inertia session (written here with the preset's J_m, J_L, K, C,
+// resources/machines/two-inertia.json); the wizard proposes the chapter 5 rule, which the test computes
+// itself: K_P = k·√2·ω_l·J_m, K_I = k·ω_l²·J_m with k = 10, ω_l = 2π·24 rad/s (spec
+// lost-motion-and-two-inertia.md §2.8, corrected 5.13). Then: velocity step before, apply, read back,
+// step after, the stored session.
+#include "app/gui/AppContext.h"
+#include "app/gui/VelocityLoopWizard.h"
+#include "app/gui/WizardPages.h"
+#include "app/gui/WizardRegistry.h"
+#include "core/sim/MachineDefinition.h"
+#include "tests/gui/GuiTestUtil.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace axistune;
+using namespace axistune::gui;
+using axistune::testing::maybeScreenshot;
+using axistune::testing::waitUntil;
+
+namespace {
+double preset(const std::string& key)
+{
+    auto m = sim::loadPreset("two-inertia");
+    return m->axis("A")->values.at(key);
+}
+
+const nlohmann::json* result(const store::SessionRecord& rec, const std::string& name)
+{
+    for (const auto& r : rec.results)
+        if (r.name == name)
+            return &r.data;
+    return nullptr;
+}
+}  // namespace
+
+class TestVelocityLoopWizard : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { axistune::testing::installLanguageFromEnv(); }
+
+    void registered()
+    {
+        const WizardEntry* e = findWizard("velocity-loop");
+        QVERIFY(e);
+        QCOMPARE(e->order, 40);
+    }
+
+    void inertiaRuleOnTheTwoInertiaBench()
+    {
+        const double jm = preset("plant.inertia_motor");
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        ctx.drive().connectTo("sim:two-inertia");
+        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
+        // A two-inertia session with the fitted model (here: the preset's values).
+        store::SessionRecord fit;
+        fit.info.kind = "two-inertia";
+        fit.info.axis = "A";
+        fit.results.push_back({"fit",
+                               {{"Jm_kgm2", jm},
+                                {"JL_kgm2", preset("plant.inertia_load")},
+                                {"K_Nm_per_rad", preset("plant.coupling_stiffness")},
+                                {"C_Nms_per_rad", preset("plant.coupling_damping")},
+                                {"delay_s", 0.0}},
+                               {}});
+        auto fitId = ctx.saveSession(fit);
+        QVERIFY(fitId.ok());
+
+        const double k = 10.0, wl = 2.0 * std::numbers::pi * 24.0;
+        const double wantKp = k * std::sqrt(2.0) * wl * jm, wantKi = k * wl * wl * jm;
+
+        qint64 sessionId = 0;
+        {
+            VelocityLoopWizard w(ctx);
+            w.resize(1000, 700);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            auto* src = w.sourcePage();
+            QCOMPARE(src->modelSessions()->currentData().value<qint64>(), *fitId);
+            QCOMPARE(src->inertia()->value(), jm);
+            src->bandwidth()->setValue(24.0);
+            src->gainFactor()->setValue(k);
+            maybeScreenshot(&w, "velocity-loop-01-source");
+            w.next();
+            QCOMPARE(w.currentId(), int(VelocityLoopWizard::Safety));
+            w.safetyPage()->confirmation()->setChecked(true);
+            QVERIFY(waitUntil([&] { return w.safetyPage()->isComplete(); }, 5000));
+            maybeScreenshot(&w, "velocity-loop-02-safety");
+            w.next();
+            QCOMPARE(w.currentId(), int(VelocityLoopWizard::Run));
+            QVERIFY(waitUntil([&] { return w.runPage()->isComplete(); }, 60000));
+            QVERIFY(w.runPage()->succeeded());
+            w.next();
+            QCOMPARE(w.currentId(), int(VelocityLoopWizard::Design));
+            QVERIFY(waitUntil([&] { return w.designPage()->isComplete(); }, 20000));
+            const auto& d = w.data();
+            qInfo("proposed K_P %.6g (want %.6g), K_I %.6g (want %.6g); crossover %.2f Hz, PM %.1f deg, position "
+                  "gain %.3g 1/s (limit %.3g)",
+                  d.proposed.kpNmsPerRad, wantKp, d.proposed.kiNmPerRad, wantKi, d.marginsAfter.crossoverHz,
+                  d.marginsAfter.phaseMarginDeg, d.position.recommendedPerS, d.position.limitPerS);
+            QVERIFY(std::abs(d.proposed.kpNmsPerRad - wantKp) <= 1e-9 * wantKp);
+            QVERIFY(std::abs(d.proposed.kiNmPerRad - wantKi) <= 1e-9 * wantKi);
+            QVERIFY(d.stepBefore);
+            QVERIFY(d.predictedAfter.has_value());
+            QVERIFY(w.designPage()->table()->rowCount() >= 8);
+            maybeScreenshot(&w, "velocity-loop-03-design");
+            w.next();
+            QCOMPARE(w.currentId(), int(VelocityLoopWizard::Apply));
+            ApplyPage* apply = w.applyPage();
+            apply->confirmation()->setChecked(true);
+            QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); }, 10000));
+            maybeScreenshot(&w, "velocity-loop-04-apply");
+            apply->applyButton()->click();
+            QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
+            QVERIFY(std::abs(apply->readBack().at("velocity.kp") - wantKp) <= 1e-9 * wantKp);
+            QVERIFY(std::abs(apply->readBack().at("velocity.ki") - wantKi) <= 1e-9 * wantKi);
+            w.next();
+            QCOMPARE(w.currentId(), int(VelocityLoopWizard::VerifyRun));
+            QVERIFY(waitUntil([&] { return w.verifyRunPage()->isComplete(); }, 60000));
+            w.next();
+            QCOMPARE(w.currentId(), int(VelocityLoopWizard::Verify));
+            QVERIFY(w.data().stepAfter);
+            maybeScreenshot(&w, "velocity-loop-05-verify");
+            w.next();
+            QCOMPARE(w.currentId(), int(VelocityLoopWizard::Save));
+            maybeScreenshot(&w, "velocity-loop-06-save");
+            sessionId = w.savedSessionId();
+            QVERIFY(sessionId > 0);
+        }
+
+        auto rec = ctx.database()->loadSession(sessionId);
+        QVERIFY(rec.ok());
+        QCOMPARE(QString::fromStdString(rec->info.kind), QString("velocity-loop"));
+        QCOMPARE(QString::fromStdString(rec->info.axis), QString("A"));
+        const auto* prop = result(*rec, "proposal");
+        QVERIFY(prop);
+        QVERIFY(std::abs((*prop)["velocity_kp_Nms_per_rad"].get<double>() - wantKp) <= 1e-9 * wantKp);
+        QVERIFY(std::abs((*prop)["velocity_ki_Nm_per_rad"].get<double>() - wantKi) <= 1e-9 * wantKi);
+        bool applied = false, before = false, after = false;
+        for (const auto& ps : rec->parameterSets)
+            if (ps.source == store::ParameterSource::Applied) {
+                applied = true;
+                QVERIFY(std::abs(ps.values.at("velocity.kp") - wantKp) <= 1e-9 * wantKp);
+            }
+        for (const auto& c : rec->captures) {
+            before = before || c.name == "step_before";
+            after = after || c.name == "step_after";
+        }
+        QVERIFY(applied && before && after);
+        QVERIFY(!rec->journal.empty());
+    }
+};
+
+QTEST_MAIN(TestVelocityLoopWizard)
+#include "tst_velocityloopwizard.moc"
