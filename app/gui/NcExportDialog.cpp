@@ -5,6 +5,7 @@
 #include "app/gui/AppContext.h"
 
 #include "core/model/Parameter.h"
+#include "core/model/Units.h"
 #include "core/sim/AxisParameters.h"
 
 #include <QComboBox>
@@ -221,10 +222,15 @@ void NcExportDialog::fillTable()
             const int row = m_table->rowCount();
             m_table->insertRow(row);
             auto nc = io::formatNcValue(entry, value);
-            const QString ncText = nc ? QStringLiteral("%1 (%2 × %3)")
-                                            .arg(QString::fromStdString(*nc), QString::fromStdString(entry.unit))
-                                            .arg(1.0 / entry.scale, 0, 'g', 6)
-                                      : tr("error: %1").arg(QString::fromStdString(nc.error().detail));
+            // The NC number as written, and what one count of it means: "3000 × 0.01 s⁻¹".
+            const QString unit = QString::fromStdString(model::unitLabel(entry.unit));
+            QString ncText = tr("error: %1").arg(nc ? QString() : QString::fromStdString(nc.error().detail));
+            if (nc)
+                ncText = entry.scale == 1.0 ? QStringLiteral("%1 %2").arg(QString::fromStdString(*nc), unit)
+                                            : QStringLiteral("%1 × %2 %3")
+                                                  .arg(QString::fromStdString(*nc))
+                                                  .arg(1.0 / entry.scale, 0, 'g', 6)
+                                                  .arg(unit);
             const QStringList cells{axisName,
                                     QString::fromStdString(key),
                                     QString::fromStdString(entry.number),
@@ -242,6 +248,7 @@ void NcExportDialog::fillTable()
         }
     }
     m_table->resizeColumnsToContents();
+    m_table->resizeRowsToContents();
 }
 
 QString NcExportDialog::exportText() const
