@@ -336,6 +336,7 @@ CurrentLoopDesignPage::CurrentLoopDesignPage(AppContext& ctx, CurrentLoopData& s
     auto* bar = new QHBoxLayout;
     m_alpha = new QComboBox(this);
     m_alpha->setObjectName("clAlpha");
+    m_alpha->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_all = new QCheckBox(tr("Show the boundaries of every α"), this);
     m_all->setObjectName("clAllAlphas");
     bar->addWidget(new QLabel(tr("Chosen α:"), this));

@@ -60,13 +60,17 @@ void addRow(QTableWidget* t, const QString& a, const QString& b, const QString& 
     t->setItem(r, 2, new QTableWidgetItem(c));
 }
 
-/// The model used for the prediction: the two-inertia model of a session, else a rigid J_m with a
-/// delay of 1.5 velocity periods (sample and hold) for the position-gain limit.
+/// The model used for the prediction: the two-inertia model of a session, else a rigid J_m; both with
+/// a delay of 1.5 velocity periods (sample and hold) for the margins and the position-gain limit.
 tuning::TwoInertiaParams predictionModel(const VelocityLoopData& d, bool& rigid)
 {
     rigid = !d.model;
-    if (d.model)
-        return *d.model;
+    if (d.model) {
+        // The fitted delay is a measurement delay (§2.7); the loop's own is the sample and hold.
+        tuning::TwoInertiaParams p = *d.model;
+        p.delayS = 1.5 * d.velocityPeriodS;
+        return p;
+    }
     // J_L tiny and K = C = 0: P_m = 1/(J_m s) (motorVelocityResponse), rigid in predictVelocityStep.
     return {d.jmKgm2, 1e-9 * d.jmKgm2, 0.0, 0.0, 1.5 * d.velocityPeriodS};
 }
@@ -478,7 +482,7 @@ void VelocityLoopDesignPage::analyse()
                           tr("crossover %1 Hz").arg(d.marginsAfter.crossoverHz, 0, 'f', 1));
     m_bode->rescale();
     // Position gain on the model (with the proposed PI).
-    d.position = tuning::positionGain(model, d.proposed, tuning::FeedbackMode::Semi, std::nullopt, rigid,
+    d.position = tuning::positionGain(model, d.proposed, tuning::FeedbackMode::Semi, std::nullopt, true,
                                       kPositionGainMarginDb);
     // Step predictions before and after, on the model.
     const double t0 = 0.01 * d.stepDurationS;
@@ -529,7 +533,8 @@ void VelocityLoopDesignPage::analyse()
                          .arg(kPositionGainMarginDb, 0, 'f', 0)
                          .arg(rigid ? tr("rigid model J_m with a delay of 1.5 velocity periods — fit a two-inertia "
                                          "model for the resonance")
-                                    : tr("two-inertia model of session %1").arg(d.modelSession));
+                                    : tr("two-inertia model of session %1 with a delay of 1.5 velocity periods")
+                                          .arg(d.modelSession));
     m_status->setText(status);
     model::ParameterValues v{{"velocity.kp", d.proposed.kpNmsPerRad}, {"velocity.ki", d.proposed.kiNmPerRad}};
     if (std::isfinite(d.position.recommendedPerS) && d.position.recommendedPerS > 0.0)
