@@ -306,7 +306,17 @@ bool MachiningAdvicePage::estimateFromCapture(const QString& path)
     }
     // The last half of the record (after the tool entered the material).
     std::vector<double> sig(ch->data.begin() + static_cast<std::ptrdiff_t>(ch->data.size() / 2), ch->data.end());
-    auto fr = machining::estimateChatterFrequencies(sig, ts, machining::KalmanAROptions{});
+    // Unit RMS: the estimator's noise covariances (R_w = 0.3) are set for a signal of order one.
+    double mean = 0.0, ms = 0.0;
+    for (double v : sig)
+        mean += v / static_cast<double>(sig.size());
+    for (double v : sig)
+        ms += (v - mean) * (v - mean) / static_cast<double>(sig.size());
+    if (ms > 0.0)
+        for (double& v : sig)
+            v = (v - mean) / std::sqrt(ms);
+    // Table 4(a) of seed 000 (spec §3.0.1): R_v = 1e-6, R_w = 0.3, P[0] = 1e3 — a fast start from θ = 0.
+    auto fr = machining::estimateChatterFrequencies(sig, ts, machining::KalmanAROptions{2, 1e-6, 0.3, 1e3});
     if (!fr || fr->empty() || !(fr->front() > 0.0)) {
         m_estimate->setText(tr("%1: no chatter frequency estimated%2")
                                 .arg(path, fr ? QString() : ": " + QString::fromStdString(fr.error().detail)));
@@ -366,6 +376,13 @@ void MachiningAdvicePage::update()
         }
     }
     m_plot->rescale();
+    if (m_lobesPage.done()) {
+        double ymax = in ? in->depthM * 1e3 : 0.0;
+        for (const auto& p : lobes)
+            if (std::isfinite(p.limitDepthM))
+                ymax = std::max(ymax, p.limitDepthM * 1e3);
+        m_plot->setYRange(0.0, ymax * 1.15 + 0.1);
+    }
     m_plot->replotNow();
 }
 
@@ -710,12 +727,14 @@ void MachiningAnalysisPage::show()
         return;
     }
     const auto& a = m_analysis;
-    m_plot->addSeries(tr("cutting force (observer)"), a.timeS, a.forceEstimateN, "N", QColor(0, 90, 180));
     if (const auto* truth = a.capture->channel("cutting_force_N"))
-        m_plot->addSeries(tr("cutting force (simulated)"), a.timeS, truth->data, "N", QColor(150, 150, 150),
-                          Qt::DashLine);
-    if (const auto* tool = a.capture->channel("tool_x_m"))
-        m_plot->addSeries(tr("tool vibration x"), a.timeS, tool->data, "m", QColor(120, 60, 0));
+        m_plot->addSeries(tr("cutting force (in the capture)"), a.timeS, truth->data, "N", QColor(170, 170, 170));
+    m_plot->addSeries(tr("cutting force (observer)"), a.timeS, a.forceEstimateN, "N", QColor(0, 90, 180));
+    if (const auto* tool = a.capture->channel("tool_x_m")) {
+        std::vector<double> um(tool->data.size());
+        std::transform(tool->data.begin(), tool->data.end(), um.begin(), [](double v) { return v * 1e6; });
+        m_plot->addSeries(tr("tool vibration x"), a.timeS, um, QString::fromUtf8("µm"), QColor(120, 60, 0));
+    }
     int count = 0;
     if (a.chatter) {
         // The chatter intervals as a marker strip: 1 inside an interval, 0 outside.
