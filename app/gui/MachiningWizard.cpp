@@ -28,13 +28,14 @@ namespace gui {
 
 namespace {
 
-const WizardRegistrar kRegistrar{"machining", QT_TRANSLATE_NOOP("Wizards", "Machining (chatter)…"), 70,
-                                 [](AppContext& ctx, QWidget* parent) -> QWizard* {
-                                     return new MachiningWizard(ctx, parent);
-                                 },
-                                 false};
+const WizardRegistrar kRegistrar{
+    "machining", QT_TRANSLATE_NOOP("Wizards", "Machining (chatter)…"), 70,
+    [](AppContext& ctx, QWidget* parent) -> QWizard* { return new MachiningWizard(ctx, parent); }, false};
 
-QString g(double v, int digits = 6) { return QLocale().toString(v, 'g', digits); }
+QString g(double v, int digits = 6)
+{
+    return QLocale().toString(v, 'g', digits);
+}
 
 void setErrorText(QLabel* label, const QString& text)
 {
@@ -42,7 +43,7 @@ void setErrorText(QLabel* label, const QString& text)
     label->setVisible(!text.isEmpty());
 }
 
-}  // namespace
+} // namespace
 
 std::optional<double> machiningNumber(const QString& text)
 {
@@ -174,9 +175,9 @@ Result<machining::ToolModes> MachiningToolPage::tool() const
             auto n = machiningNumber(item ? item->text() : QString());
             if (!n)
                 return makeError(ErrorCode::BadInput, tr("row %1, %2: not a number")
-                                                          .arg(r + 1)
-                                                          .arg(m_table->horizontalHeaderItem(c)->text())
-                                                          .toStdString() +
+                                                              .arg(r + 1)
+                                                              .arg(m_table->horizontalHeaderItem(c)->text())
+                                                              .toStdString() +
                                                           " (" + keys[c] + ")");
             v[c] = *n;
         }
@@ -208,7 +209,10 @@ void MachiningToolPage::revalidate()
     emit completeChanged();
 }
 
-bool MachiningToolPage::isComplete() const { return tool().ok(); }
+bool MachiningToolPage::isComplete() const
+{
+    return tool().ok();
+}
 
 // ----------------------------------------------------------------------------------------------- cut page
 
@@ -322,11 +326,13 @@ Result<MachiningCutInputs> MachiningCutPage::inputs() const
     for (const auto& f : fields) {
         auto v = machiningNumber(f.edit->text());
         if (!v)
-            return makeError(ErrorCode::BadInput, tr("%1: '%2' is not a number").arg(f.name, f.edit->text()).toStdString());
+            return makeError(ErrorCode::BadInput,
+                             tr("%1: '%2' is not a number").arg(f.name, f.edit->text()).toStdString());
         *f.out = *v * f.scale;
     }
     in.cut.teeth = m_teeth->value();
-    in.cut.milling = m_milling->currentIndex() == 1 ? machining::MillingDirection::Up : machining::MillingDirection::Down;
+    in.cut.milling =
+        m_milling->currentIndex() == 1 ? machining::MillingDirection::Up : machining::MillingDirection::Down;
     in.stepsPerPeriod = m_steps->value();
     if (auto st = machining::validateCut(in.cut); !st)
         return st.error();
@@ -338,8 +344,9 @@ Result<MachiningCutInputs> MachiningCutPage::inputs() const
     if (!grid)
         return makeError(grid.error().code, tr("lobe diagram speeds: ").toStdString() + grid.error().detail);
     if (grid->size() > 2000)
-        return makeError(ErrorCode::OutOfRange,
-                         tr("lobe diagram speeds: %1 speeds; at most 2000 (a larger step)").arg(grid->size()).toStdString());
+        return makeError(
+            ErrorCode::OutOfRange,
+            tr("lobe diagram speeds: %1 speeds; at most 2000 (a larger step)").arg(grid->size()).toStdString());
     return in;
 }
 
@@ -350,7 +357,10 @@ void MachiningCutPage::revalidate()
     emit completeChanged();
 }
 
-bool MachiningCutPage::isComplete() const { return inputs().ok(); }
+bool MachiningCutPage::isComplete() const
+{
+    return inputs().ok();
+}
 
 // ---------------------------------------------------------------------------------------------- save page
 
@@ -367,7 +377,10 @@ MachiningSavePage::MachiningSavePage(QWidget* parent) : QWizardPage(parent)
     lay->addStretch();
 }
 
-void MachiningSavePage::showSaved(const QString& text) { m_status->setText(text); }
+void MachiningSavePage::showSaved(const QString& text)
+{
+    m_status->setText(text);
+}
 
 // -------------------------------------------------------------------------------------------------- wizard
 
@@ -411,7 +424,8 @@ void MachiningWizard::save()
     for (const auto& [key, list] : {std::pair{"modes_x", &tool->modesX}, std::pair{"modes_y", &tool->modesY}}) {
         auto& a = modes[key] = nlohmann::json::array();
         for (const auto& m : *list)
-            a.push_back({{"mass_kg", m.massKg}, {"damping_Ns_per_m", m.dampingNsPerM},
+            a.push_back({{"mass_kg", m.massKg},
+                         {"damping_Ns_per_m", m.dampingNsPerM},
                          {"stiffness_N_per_m", m.stiffnessNPerM}});
     }
     const auto& c = in->cut;
@@ -425,14 +439,17 @@ void MachiningWizard::save()
                     {"milling", c.milling == machining::MillingDirection::Up ? "up" : "down"}}},
                   {"spindle_rpm", in->rpm},
                   {"axial_depth_m", in->depthM},
-                  {"lobes", {{"rpm_min", in->rpmMin}, {"rpm_max", in->rpmMax}, {"rpm_step", in->rpmStep},
-                             {"steps_per_period", in->stepsPerPeriod}}}};
+                  {"lobes",
+                   {{"rpm_min", in->rpmMin},
+                    {"rpm_max", in->rpmMax},
+                    {"rpm_step", in->rpmStep},
+                    {"steps_per_period", in->stepsPerPeriod}}}};
     if (m_lobes->done()) {
         const auto& r = m_lobes->result();
         model::Channel rpm{"rpm", {}}, depth{"limit_depth_m", {}};
         for (const auto& p : r.lobes) {
             rpm.data.push_back(p.rpm);
-            depth.data.push_back(p.limitDepthM);  // +inf: stable up to the search limit
+            depth.data.push_back(p.limitDepthM); // +inf: stable up to the search limit
         }
         const bool stable = in->depthM < r.limitAtCurrentM;
         rec.results.push_back({"lobes",
@@ -460,7 +477,9 @@ void MachiningWizard::save()
         nlohmann::json ivs = nlohmann::json::array();
         if (an.chatter)
             for (const auto& iv : an.chatter->intervals)
-                ivs.push_back({{"start_s", iv.startS}, {"end_s", iv.endS}, {"frequency_Hz", iv.frequencyHz},
+                ivs.push_back({{"start_s", iv.startS},
+                               {"end_s", iv.endS},
+                               {"frequency_Hz", iv.frequencyHz},
                                {"score", iv.score}});
         rec.results.push_back({"chatter-detection",
                                {{"source", an.source.toStdString()},
@@ -487,5 +506,5 @@ void MachiningWizard::save()
     emit sessionSaved(*id);
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

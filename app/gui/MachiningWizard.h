@@ -22,11 +22,10 @@
 #include <QWizard>
 #include <QWizardPage>
 
-#include <nlohmann/json.hpp>
-
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <vector>
 
@@ -42,7 +41,7 @@ namespace axistune {
 namespace widgets {
 class CurvePlot;
 class TimeTracePlot;
-}
+} // namespace widgets
 namespace gui {
 
 class AppContext;
@@ -273,5 +272,5 @@ private:
 /// Unit helpers shared by the pages: a number typed in the user's locale or with a '.'.
 std::optional<double> machiningNumber(const QString& text);
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -6,7 +6,6 @@
 // core/machining; the cut simulation is core/sim/Milling on the vmc X axis, coupled as in
 // `axistune-cli simulate-cut`.
 #include "app/gui/MachiningWizard.h"
-
 #include "core/io/CaptureCsv.h"
 #include "core/machining/ChatterFrequencyEstimator.h"
 #include "core/machining/StageJson.h"
@@ -41,8 +40,14 @@ namespace gui {
 
 namespace {
 
-QString g(double v, int digits = 4) { return QLocale().toString(v, 'g', digits); }
-QString f(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
+QString g(double v, int digits = 4)
+{
+    return QLocale().toString(v, 'g', digits);
+}
+QString f(double v, int decimals)
+{
+    return QLocale().toString(v, 'f', decimals);
+}
 
 /// Lobe curve for the plot in mm (speeds stable up to the search limit are shown at the limit).
 void addLobeCurve(widgets::CurvePlot* plot, const std::vector<machining::LobePoint>& lobes, double depthMaxM)
@@ -57,7 +62,7 @@ void addLobeCurve(widgets::CurvePlot* plot, const std::vector<machining::LobePoi
 
 constexpr double kDepthMaxM = 0.05;
 
-}  // namespace
+} // namespace
 
 // ---------------------------------------------------------------------------------------------- lobe page
 
@@ -104,7 +109,10 @@ MachiningLobesPage::~MachiningLobesPage()
     m_watcher->waitForFinished();
 }
 
-void MachiningLobesPage::initializePage() { start(); }
+void MachiningLobesPage::initializePage()
+{
+    start();
+}
 
 void MachiningLobesPage::cleanupPage()
 {
@@ -115,7 +123,7 @@ void MachiningLobesPage::cleanupPage()
 void MachiningLobesPage::start()
 {
     if (m_watcher->isRunning())
-        return;  // finished() restarts nothing; the user presses Compute again after a cancel
+        return; // finished() restarts nothing; the user presses Compute again after a cancel
     auto tool = m_toolPage.tool();
     auto in = m_cutPage.inputs();
     m_done = false;
@@ -133,9 +141,8 @@ void MachiningLobesPage::start()
         emit completeChanged();
         return;
     }
-    m_status->setText(tr("Computing %1 spindle speeds (%2 steps per tooth period)…")
-                          .arg(grid->size())
-                          .arg(in->stepsPerPeriod));
+    m_status->setText(
+        tr("Computing %1 spindle speeds (%2 steps per tooth period)…").arg(grid->size()).arg(in->stepsPerPeriod));
     m_cancel->setEnabled(true);
     m_again->setEnabled(false);
     m_progress->setRange(0, static_cast<int>(grid->size()) + 1);
@@ -156,7 +163,8 @@ void MachiningLobesPage::start()
             if (promise.isCanceled())
                 return;
             const std::vector<double> part(speeds.begin() + static_cast<std::ptrdiff_t>(i),
-                                           speeds.begin() + static_cast<std::ptrdiff_t>(std::min(speeds.size(), i + kChunk)));
+                                           speeds.begin() +
+                                               static_cast<std::ptrdiff_t>(std::min(speeds.size(), i + kChunk)));
             auto lobes = machining::stabilityLobes(t, c.cut, part, opt);
             if (!lobes) {
                 r.error = QString::fromStdString(lobes.error().detail);
@@ -205,8 +213,7 @@ void MachiningLobesPage::finished()
     const QString limit = std::isinf(m_result.limitAtCurrentM)
                               ? tr("stable up to the search limit %1 mm").arg(g(kDepthMaxM * 1e3))
                               : tr("limit %1 mm").arg(f(m_result.limitAtCurrentM * 1e3, 3));
-    m_plot->addPoint(in->rpm, in->depthM * 1e3,
-                     stable ? tr("current: stable") : tr("current: unstable"));
+    m_plot->addPoint(in->rpm, in->depthM * 1e3, stable ? tr("current: stable") : tr("current: unstable"));
     m_plot->rescale();
     double ymax = 0.0;
     for (const auto& p : m_result.lobes)
@@ -234,7 +241,10 @@ double MachiningLobesPage::limitAt(double rpm) const
     return l.back().limitDepthM;
 }
 
-bool MachiningLobesPage::isComplete() const { return m_done && !m_watcher->isRunning(); }
+bool MachiningLobesPage::isComplete() const
+{
+    return m_done && !m_watcher->isRunning();
+}
 
 // -------------------------------------------------------------------------------------------- advice page
 
@@ -279,7 +289,10 @@ MachiningAdvicePage::MachiningAdvicePage(const MachiningCutPage& cut, const Mach
     });
 }
 
-void MachiningAdvicePage::initializePage() { update(); }
+void MachiningAdvicePage::initializePage()
+{
+    update();
+}
 
 bool MachiningAdvicePage::estimateFromCapture(const QString& path)
 {
@@ -371,8 +384,7 @@ void MachiningAdvicePage::update()
             m_plot->addVerticalLine(a->rpm, tr("advised %1 min⁻¹").arg(f(a->rpm, 0)));
             const double lim = m_lobesPage.limitAt(a->rpm);
             if (std::isfinite(lim))
-                m_text->setText(m_text->text() + " " +
-                                tr("The lobe diagram gives %1 mm there.").arg(f(lim * 1e3, 3)));
+                m_text->setText(m_text->text() + " " + tr("The lobe diagram gives %1 mm there.").arg(f(lim * 1e3, 3)));
         }
     }
     m_plot->rescale();
@@ -455,7 +467,7 @@ Result<model::Capture> simulateVmcCut(const machining::ToolModes& tool, const Ma
     sim::MotionProfile profile(0.0);
     profile.move(feed * (durationS + 1.0), std::max(feed, 1e-9), std::max(feed / (0.5 * engage + 1e-6), 1e-6));
     sim::Nonlinearities nl = axis.nonlinearities();
-    nl.lostMotion = false;  // as simulate-cut: the quasi-static lost motion swamps the vibration-mode force
+    nl.lostMotion = false; // as simulate-cut: the quasi-static lost motion swamps the vibration-mode force
     axis.setNonlinearities(nl);
     axis.reset(0.0);
     axis.setControlMode(sim::ControlMode::Position);
@@ -530,8 +542,7 @@ CutAnalysis analyseCut(model::Capture cap, const QString& source, const QString&
     const auto* xt = cap.channel("table_pos_m");
     const auto* xm = cap.channel("motor_pos_m");
     const auto* iref = cap.channel("current_cmd_A");
-    if (!t || t->data.size() < 3 || !(t->data.back() > t->data.front()) || (!current && !torque) || !wm || !xt ||
-        !xm) {
+    if (!t || t->data.size() < 3 || !(t->data.back() > t->data.front()) || (!current && !torque) || !wm || !xt || !xm) {
         out.error = QObject::tr("%1: needs the columns t_s, current_A (or torque_Nm), motor_vel_rad_s, motor_pos_m, "
                                 "table_pos_m")
                         .arg(source);
@@ -584,7 +595,7 @@ CutAnalysis analyseCut(model::Capture cap, const QString& source, const QString&
     return out;
 }
 
-}  // namespace
+} // namespace
 
 MachiningAnalysisPage::MachiningAnalysisPage(const MachiningToolPage& tool, const MachiningCutPage& cut,
                                              QWidget* parent)
@@ -643,8 +654,8 @@ MachiningAnalysisPage::MachiningAnalysisPage(const MachiningToolPage& tool, cons
         show();
     });
     connect(m_load, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Captured cut"), QString(),
-                                                          tr("Capture CSV (*.csv);;All files (*)"));
+        const QString path =
+            QFileDialog::getOpenFileName(this, tr("Captured cut"), QString(), tr("Capture CSV (*.csv);;All files (*)"));
         if (!path.isEmpty())
             loadCapture(path);
     });
@@ -657,9 +668,15 @@ MachiningAnalysisPage::MachiningAnalysisPage(const MachiningToolPage& tool, cons
     });
 }
 
-MachiningAnalysisPage::~MachiningAnalysisPage() { m_watcher->waitForFinished(); }
+MachiningAnalysisPage::~MachiningAnalysisPage()
+{
+    m_watcher->waitForFinished();
+}
 
-bool MachiningAnalysisPage::busy() const { return m_running; }
+bool MachiningAnalysisPage::busy() const
+{
+    return m_running;
+}
 
 void MachiningAnalysisPage::run(std::function<CutAnalysis()> job)
 {
@@ -768,7 +785,10 @@ void MachiningAnalysisPage::show()
     emit completeChanged();
 }
 
-bool MachiningAnalysisPage::isComplete() const { return !busy(); }
+bool MachiningAnalysisPage::isComplete() const
+{
+    return !busy();
+}
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

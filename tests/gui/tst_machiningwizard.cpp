@@ -13,23 +13,23 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/MachiningWizard.h"
 #include "app/gui/WizardRegistry.h"
-
 #include "core/machining/ToolModel.h"
-#include "tests/app/cli/CliRunner.h"
-#include "tests/gui/GuiTestUtil.h"
 #include "widgets/CurvePlot.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
-#include <QPushButton>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
+
+#include "tests/app/cli/CliRunner.h"
+#include "tests/gui/GuiTestUtil.h"
 
 using namespace axistune;
 using axistune::gui::AppContext;
@@ -41,11 +41,17 @@ namespace {
 
 const std::string kSamples = std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/samples/";
 
-double machiningNumberOrNan(const QString& t) { return gui::machiningNumber(t).value_or(std::nan("")); }
+double machiningNumberOrNan(const QString& t)
+{
+    return gui::machiningNumber(t).value_or(std::nan(""));
+}
 
-void setCell(QTableWidget* t, int row, int col, const QString& text) { t->item(row, col)->setText(text); }
+void setCell(QTableWidget* t, int row, int col, const QString& text)
+{
+    t->item(row, col)->setText(text);
+}
 
-}  // namespace
+} // namespace
 
 class TestMachiningWizard : public QObject {
     Q_OBJECT
@@ -69,7 +75,7 @@ private slots:
         QVERIFY(tool->isComplete());
         auto* table = w.findChild<QTableWidget*>("machToolTable");
         QVERIFY(table);
-        QCOMPARE(table->rowCount(), 2);  // x and y of Table 1
+        QCOMPARE(table->rowCount(), 2); // x and y of Table 1
         // Zero mass in x: the message of machining::validateTool for the same tool.
         setCell(table, 0, 1, "0");
         QVERIFY(!tool->isComplete());
@@ -120,6 +126,21 @@ private slots:
         QVERIFY(!tool->loadToolFile(path));
         QVERIFY2(err->text().contains("tool.json") && err->text().contains("stiffness_N_per_m"),
                  qPrintable(err->text()));
+        // A stage.json with a misspelt key: the analysis names the file and the key and stores nothing.
+        const QString stage = dir.filePath("stage.json");
+        {
+            QFile fl(stage);
+            QVERIFY(fl.open(QIODevice::WriteOnly));
+            fl.write(R"({"screw_lead_m_per_rev": 0.012, "torque_constant_Nm_per_A": 0.5,
+                        "motor": {"inertia_kgm2": 0.001}, "load": {"inertia_kgm2": 0.001, "inertia_kg": 1}})");
+        }
+        auto* analysis = w.analysisPage();
+        analysis->stagePath()->setText(stage);
+        analysis->loadCapture(QString::fromStdString(kSamples + "capture-step-vmc-x.csv"));
+        QVERIFY(waitUntil([&] { return !analysis->busy(); }, 30000));
+        QVERIFY(!analysis->analysed());
+        QVERIFY2(analysis->summary()->text().contains("stage.json") && analysis->summary()->text().contains("inertia_kg"),
+                 qPrintable(analysis->summary()->text()));
     }
 
     void lobesAdviceAnalysisAndSession()
@@ -154,7 +175,7 @@ private slots:
         QVERIFY(waitUntil([&] { return lobes->isComplete(); }, 60000));
         const double at2800 = lobes->limitAt(2800.0) * 1e3;
         QVERIFY2(std::abs(at2800 - 0.958) <= 0.03 * 0.958, qPrintable(QString::number(at2800)));
-        QVERIFY(std::abs(lobes->result().limitAtCurrentM * 1e3 - at2800) < 1e-3 * at2800);  // bracket 1e-4
+        QVERIFY(std::abs(lobes->result().limitAtCurrentM * 1e3 - at2800) < 1e-3 * at2800); // bracket 1e-4
         QCOMPARE(lobes->plot()->curveCount(), 1);
         QCOMPARE(lobes->plot()->pointCount(), 1);
         // 1.5 mm is above the limit: unstable (spec §5.1).
@@ -173,7 +194,8 @@ private slots:
         auto rc = axistune::testing::runCli("simulate-cut --machine vmc --axis X --tool " + kSamples +
                                             "tool-table1.json --cut " + kSamples +
                                             "cut-table1.json --rpm 2800 --depth-m 1.5e-3 --duration-s 1.0 --seed 3 "
-                                            "--out " + chatter.toStdString());
+                                            "--out " +
+                                            chatter.toStdString());
         QVERIFY2(rc.exitCode == 0, rc.err.c_str());
         QVERIFY(advice->estimateFromCapture(chatter));
         const double estimated = machiningNumberOrNan(advice->chatterHz()->text());
@@ -199,7 +221,8 @@ private slots:
         auto r = axistune::testing::runCli("simulate-cut --machine vmc --axis X --tool " + kSamples +
                                            "tool-table1.json --cut " + kSamples +
                                            "cut-table1.json --rpm 1500 --depth-m 0.5e-3 --duration-s 1.2 --seed 3 "
-                                           "--out " + stable.toStdString());
+                                           "--out " +
+                                           stable.toStdString());
         QVERIFY2(r.exitCode == 0, r.err.c_str());
         analysis->loadCapture(stable);
         QVERIFY(waitUntil([&] { return !analysis->busy(); }, 60000));
