@@ -11,17 +11,20 @@
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/sim/MachineDefinition.h"
+#include "core/store/FrfCapture.h"
 #include "tests/gui/GuiTestUtil.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 using namespace axistune;
@@ -161,6 +164,58 @@ private slots:
         }
         QVERIFY(applied && before && after);
         QVERIFY(!rec->journal.empty());
+    }
+
+    void marginsOnASavedPlantResponseOffline()
+    {
+        // An FRF session holding the plant 1/(jωJ) (no "measurement" tag: taken as the plant). For a
+        // crossover ω_c with phase margin PM the PI must give |C| = ω_c J and arg C = −90° + PM:
+        // K_P = ω_c J cos(90° − PM), K_I = ω_c² J sin(90° − PM) (independent of the core's solver).
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        const double j = 2e-3, fc = 40.0, pm = 50.0;
+        dsp::FrequencyResponse plant;
+        for (int i = 0; i < 200; ++i) {
+            const double f = std::pow(10.0, 3.0 * i / 199.0);
+            plant.push(f, 1.0 / std::complex<double>(0.0, 2.0 * std::numbers::pi * f * j), std::nan(""), true);
+        }
+        store::SessionRecord frf;
+        frf.info.kind = "frf";
+        frf.info.axis = "X";
+        frf.captures.push_back({"measured", store::frfAsCapture(plant)});
+        auto frfId = ctx.saveSession(frf);
+        QVERIFY(frfId.ok());
+
+        VelocityLoopWizard w(ctx);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.findChild<QRadioButton*>("vlFrfMethod")->setChecked(true);
+        QVERIFY(w.findChild<QRadioButton*>("vlFromSession")->isChecked());  // offline: no measurement
+        QComboBox* sessions = w.sourcePage()->frfSessions();
+        const int idx = sessions->findData(QVariant::fromValue<qint64>(*frfId));
+        QVERIFY(idx >= 0);
+        sessions->setCurrentIndex(idx);
+        w.findChild<QDoubleSpinBox*>("vlCrossover")->setValue(fc);
+        w.findChild<QDoubleSpinBox*>("vlPhaseMargin")->setValue(pm);
+        w.next();
+        QCOMPARE(w.currentId(), int(VelocityLoopWizard::Design));
+        QVERIFY(waitUntil([&] { return w.designPage()->isComplete(); }, 10000));
+        const double wc = 2.0 * std::numbers::pi * fc, lag = (90.0 - pm) * std::numbers::pi / 180.0;
+        const double wantKp = wc * j * std::cos(lag), wantKi = wc * wc * j * std::sin(lag);
+        const auto& d = w.data();
+        qInfo("margins: K_P %.6g (want %.6g), K_I %.6g (want %.6g), crossover %.3f Hz, PM %.2f deg",
+              d.proposed.kpNmsPerRad, wantKp, d.proposed.kiNmPerRad, wantKi, d.marginsAfter.crossoverHz,
+              d.marginsAfter.phaseMarginDeg);
+        QVERIFY(std::abs(d.proposed.kpNmsPerRad - wantKp) <= 1e-3 * wantKp);
+        QVERIFY(std::abs(d.proposed.kiNmPerRad - wantKi) <= 1e-3 * wantKi);
+        QVERIFY(std::abs(d.marginsAfter.crossoverHz - fc) <= 0.01 * fc);
+        w.next();
+        QCOMPARE(w.currentId(), int(VelocityLoopWizard::Save));
+        auto rec = ctx.database()->loadSession(w.savedSessionId());
+        QVERIFY(rec.ok());
+        QCOMPARE(rec->inputs["method"].get<std::string>(), std::string("margins"));
+        QVERIFY(std::abs((*result(*rec, "proposal"))["velocity_kp_Nms_per_rad"].get<double>() - wantKp) <= 1e-3 * wantKp);
     }
 };
 
