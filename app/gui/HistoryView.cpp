@@ -4,7 +4,6 @@
 #include "app/gui/HistoryView.h"
 
 #include "app/gui/AppContext.h"
-
 #include "core/model/Units.h"
 #include "widgets/CurvePlot.h"
 
@@ -103,12 +102,12 @@ void resonances(const store::SessionRecord& rec, HistoryPoint p, Series& out)
             p.value = f[i];
             out[QCoreApplication::translate("HistoryView", "Resonance %1").arg(i + 1)].push_back(p);
         }
-        return;  // one resonance list per session
+        return; // one resonance list per session
     }
 }
 
-void appliedSets(const store::SessionRecord& rec, const std::string& axis, HistoryPoint p, Series& notch,
-                 Series& a, Series& b)
+void appliedSets(const store::SessionRecord& rec, const std::string& axis, HistoryPoint p, Series& notch, Series& a,
+                 Series& b)
 {
     for (const auto& s : rec.parameterSets) {
         if (s.source != store::ParameterSource::Applied || (!s.axis.empty() && s.axis != axis))
@@ -116,7 +115,7 @@ void appliedSets(const store::SessionRecord& rec, const std::string& axis, Histo
         for (const auto& [key, v] : s.values) {
             if (key.rfind("filter.notch", 0) == 0 && key.size() > 7 && key.substr(key.size() - 7) == ".center") {
                 if (v <= 0 || !std::isfinite(v))
-                    continue;  // centre 0: notch off
+                    continue; // centre 0: notch off
                 p.value = v;
                 const auto n = QString::fromStdString(key.substr(12, key.size() - 12 - 7));
                 notch[QCoreApplication::translate("HistoryView", "Notch %1 centre").arg(n)].push_back(p);
@@ -191,7 +190,7 @@ std::vector<HistorySeries> toSeries(const Series& s)
     return out;
 }
 
-}  // namespace
+} // namespace
 
 HistoryData collectHistory(const std::vector<store::SessionRecord>& sessions, const std::string& axis)
 {
@@ -392,8 +391,8 @@ void HistoryView::reload()
     auto* db = m_ctx.database();
     if (db && !m_machine->currentText().isEmpty() && !m_axis->currentText().isEmpty()) {
         QString error;
-        m_data = collectHistory(*db, m_machine->currentText().toStdString(), m_axis->currentText().toStdString(),
-                                &error);
+        m_data =
+            collectHistory(*db, m_machine->currentText().toStdString(), m_axis->currentText().toStdString(), &error);
         if (!error.isEmpty())
             m_ctx.log(tr("History: %1").arg(error));
     }
@@ -436,5 +435,5 @@ HistoryView* showHistory(AppContext& ctx, QWidget* parent)
     return view;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

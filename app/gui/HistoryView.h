@@ -29,12 +29,12 @@ class AppContext;
 
 struct HistoryPoint {
     qint64 sessionId = 0;
-    double days = 0.0;   ///< time since the first session of the axis (days)
-    double value = 0.0;  ///< in the series' display unit
+    double days = 0.0;  ///< time since the first session of the axis (days)
+    double value = 0.0; ///< in the series' display unit
 };
 
 struct HistorySeries {
-    QString name;  ///< "Resonance 1", "Notch 2 centre", "A applied", ...
+    QString name; ///< "Resonance 1", "Notch 2 centre", "A applied", ...
     std::vector<HistoryPoint> points;
 };
 
@@ -42,7 +42,7 @@ enum class HistoryQuantity { Resonance = 0, Notch, LostMotionA, LostMotionB, Cir
 
 struct HistoryData {
     std::array<std::vector<HistorySeries>, static_cast<int>(HistoryQuantity::Count)> series;
-    int sessions = 0;  ///< sessions of the axis looked at
+    int sessions = 0; ///< sessions of the axis looked at
     const std::vector<HistorySeries>& of(HistoryQuantity q) const { return series[static_cast<int>(q)]; }
 };
 
@@ -89,5 +89,5 @@ private:
 /// Opens the history of the context's machine in a window (deleted on close).
 HistoryView* showHistory(AppContext& ctx, QWidget* parent);
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

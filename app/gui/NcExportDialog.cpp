@@ -3,7 +3,6 @@
 #include "app/gui/NcExportDialog.h"
 
 #include "app/gui/AppContext.h"
-
 #include "core/model/Parameter.h"
 #include "core/model/Units.h"
 #include "core/sim/AxisParameters.h"
@@ -40,7 +39,7 @@ QString siValueText(const std::string& key, double v)
     return QString::number(v, 'g', 8);
 }
 
-}  // namespace
+} // namespace
 
 NcExportDialog::NcExportDialog(AppContext& ctx, QWidget* parent) : QDialog(parent), m_ctx(ctx)
 {
@@ -56,8 +55,8 @@ NcExportDialog::NcExportDialog(AppContext& ctx, QWidget* parent) : QDialog(paren
     m_axis->setObjectName(QStringLiteral("ncAxis"));
     m_table = new QTableWidget(0, ColumnCount, this);
     m_table->setObjectName(QStringLiteral("ncTable"));
-    m_table->setHorizontalHeaderLabels({tr("Axis"), tr("Parameter"), tr("NC number"), tr("NC value"),
-                                        tr("AxisTune value"), tr("Description")});
+    m_table->setHorizontalHeaderLabels(
+        {tr("Axis"), tr("Parameter"), tr("NC number"), tr("NC value"), tr("AxisTune value"), tr("Description")});
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
@@ -231,12 +230,8 @@ void NcExportDialog::fillTable()
                                                   .arg(QString::fromStdString(*nc))
                                                   .arg(1.0 / entry.scale, 0, 'g', 6)
                                                   .arg(unit);
-            const QStringList cells{axisName,
-                                    QString::fromStdString(key),
-                                    QString::fromStdString(entry.number),
-                                    ncText,
-                                    siValueText(key, value),
-                                    QString::fromStdString(entry.description)};
+            const QStringList cells{axisName, QString::fromStdString(key), QString::fromStdString(entry.number),
+                                    ncText,   siValueText(key, value),     QString::fromStdString(entry.description)};
             for (int c = 0; c < ColumnCount; ++c)
                 m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
         }
@@ -244,7 +239,8 @@ void NcExportDialog::fillTable()
             const bool mapped = std::any_of(m_map->entries.begin(), m_map->entries.end(),
                                             [&key](const io::NcMapEntry& e) { return e.key == key; });
             if (!mapped)
-                m_unmapped->addItem(tr("%1  %2 = %3").arg(axisName, QString::fromStdString(key), siValueText(key, value)));
+                m_unmapped->addItem(
+                    tr("%1  %2 = %3").arg(axisName, QString::fromStdString(key), siValueText(key, value)));
         }
     }
     m_table->resizeColumnsToContents();
@@ -275,8 +271,7 @@ bool NcExportDialog::saveTo(const QString& path, QString* error) const
 void NcExportDialog::saveInteractive()
 {
     const QString family = m_family->currentData().toString();
-    const QString suggested = QDir::home().filePath(
-        QStringLiteral("%1-%2.txt").arg(m_machine->currentText(), family));
+    const QString suggested = QDir::home().filePath(QStringLiteral("%1-%2.txt").arg(m_machine->currentText(), family));
     const QString path = QFileDialog::getSaveFileName(this, tr("Save NC parameter file"), suggested,
                                                       tr("Text files (*.txt *.nc *.mpf *.mp);;All files (*)"));
     if (path.isEmpty())
@@ -302,5 +297,5 @@ NcExportDialog* showNcExportDialog(AppContext& ctx, QWidget* parent)
     return dlg;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -73,5 +73,5 @@ private:
 /// Opens the NC export dialog for the context's machine (non-modal, deleted on close).
 NcExportDialog* showNcExportDialog(AppContext& ctx, QWidget* parent);
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

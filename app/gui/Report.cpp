@@ -8,6 +8,7 @@
 #include "core/store/FrfCapture.h"
 #include "widgets/BodePlot.h"
 #include "widgets/CurvePlot.h"
+#include "widgets/PolarPlot.h"
 #include "widgets/TimeTracePlot.h"
 
 #include <QBuffer>
@@ -142,9 +143,18 @@ QString sourceText(store::ParameterSource s)
     return {};
 }
 
+/// A ball-bar trace (the lost-motion wizard's layout): metadata content=ballbar or the channels
+/// angle_rad and deviation_m.
+bool isBallBarCapture(const model::Capture& c)
+{
+    const auto it = c.metadata.find("content");
+    if (it != c.metadata.end() && it->second == "ballbar")
+        return c.channel("angle_rad") && c.channel("deviation_m");
+    return c.channel("angle_rad") && c.channel("deviation_m") && c.channels.size() == 2;
+}
+
 /// Renders a plot widget offscreen through its exportImage (PNG in a temporary directory).
-template <class Plot>
-QImage renderPlot(Plot& plot, const QTemporaryDir& dir, int index)
+template <class Plot> QImage renderPlot(Plot& plot, const QTemporaryDir& dir, int index)
 {
     plot.resize(kPlotWidth, kPlotHeight);
     plot.replotNow();
@@ -154,7 +164,7 @@ QImage renderPlot(Plot& plot, const QTemporaryDir& dir, int index)
     return QImage(path);
 }
 
-}  // namespace
+} // namespace
 
 QString jsonToHtml(const nlohmann::json& j, int depth)
 {
@@ -205,8 +215,8 @@ struct Builder {
             return;
         }
         ReportImage ri{QStringLiteral("plot%1.png").arg(images.size() + 1), title, image};
-        html += QStringLiteral("<p><b>%1</b><br><img src=\"%2\" width=\"640\"></p>")
-                    .arg(title.toHtmlEscaped(), ri.name);
+        html +=
+            QStringLiteral("<p><b>%1</b><br><img src=\"%2\" width=\"640\"></p>").arg(title.toHtmlEscaped(), ri.name);
         images.push_back(ri);
     }
 
@@ -217,9 +227,7 @@ struct Builder {
             html += QStringLiteral("<tr><th align=\"left\">%1</th><td>%2</td></tr>").arg(k, v);
         };
         html += QStringLiteral("<h1>%1</h1>")
-                    .arg(QCoreApplication::translate("SessionReport", "Session %1: %2")
-                             .arg(i.id)
-                             .arg(esc(i.kind)));
+                    .arg(QCoreApplication::translate("SessionReport", "Session %1: %2").arg(i.id).arg(esc(i.kind)));
         const bool bad = i.status != store::SessionStatus::Completed;
         if (bad)
             html += QStringLiteral("<p style=\"color:#b00000\"><b>%1</b></p>")
@@ -269,8 +277,9 @@ struct Builder {
             addImage(renderPlot(bode, tmp, images.size() + 1),
                      QCoreApplication::translate("SessionReport", "Frequency response: %1").arg(frfNames.join(", ")));
         }
+        ballBars();
         for (const auto& c : rec.captures) {
-            if (store::isFrfCapture(c.capture) || c.capture.size() == 0)
+            if (store::isFrfCapture(c.capture) || isBallBarCapture(c.capture) || c.capture.size() == 0)
                 continue;
             widgets::TimeTracePlot trace;
             trace.setCapture(std::make_shared<const model::Capture>(c.capture));
@@ -282,6 +291,33 @@ struct Builder {
             resultArrays(r);
         if (images.size() == before)
             html += QStringLiteral("<p>%1</p>").arg(QCoreApplication::translate("SessionReport", "No plots recorded."));
+    }
+
+    /// Every ball-bar trace in one polar plot (nominal circle, magnified deviation).
+    void ballBars()
+    {
+        widgets::PolarPlot polar;
+        QStringList names;
+        for (const auto& c : rec.captures) {
+            if (!isBallBarCapture(c.capture))
+                continue;
+            const auto* a = c.capture.channel("angle_rad");
+            const auto* d = c.capture.channel("deviation_m");
+            if (a->data.size() != d->data.size() || a->data.empty())
+                continue;
+            if (auto it = c.capture.metadata.find("radius_m"); it != c.capture.metadata.end() && names.isEmpty()) {
+                bool ok = false;
+                const double r = QString::fromStdString(it->second).toDouble(&ok);
+                if (ok && r > 0)
+                    polar.setNominalRadius(r);
+            }
+            polar.addTrace(QString::fromStdString(c.name), a->data, d->data);
+            names << QString::fromStdString(c.name);
+        }
+        if (names.isEmpty())
+            return;
+        addImage(renderPlot(polar, tmp, images.size() + 1),
+                 QCoreApplication::translate("SessionReport", "Ball-bar traces: %1").arg(names.join(", ")));
     }
 
     /// Arrays of a result: the first is the x axis, the others of the same length are curves.
@@ -364,7 +400,8 @@ struct Builder {
             oneResult(r);
         }
         if (!rec.models.empty()) {
-            html += QStringLiteral("<h2>%1</h2>").arg(QCoreApplication::translate("SessionReport", "Identified models"));
+            html +=
+                QStringLiteral("<h2>%1</h2>").arg(QCoreApplication::translate("SessionReport", "Identified models"));
             for (const auto& m : rec.models)
                 html += QStringLiteral("<h3>%1 (%2)</h3>%3")
                             .arg(esc(m.kind), QCoreApplication::translate("SessionReport", "axis %1").arg(esc(m.axis)),
@@ -393,7 +430,7 @@ struct Builder {
     }
 };
 
-}  // namespace
+} // namespace
 
 SessionReport SessionReport::build(const store::SessionRecord& record)
 {
@@ -473,5 +510,5 @@ bool SessionReport::savePdf(const QString& path, QString* error) const
     return true;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -21,8 +21,8 @@ namespace axistune {
 namespace gui {
 
 struct ReportImage {
-    QString name;   ///< resource name used in the HTML, "plot1.png"
-    QString title;  ///< caption
+    QString name;  ///< resource name used in the HTML, "plot1.png"
+    QString title; ///< caption
     QImage image;
 };
 
@@ -56,5 +56,5 @@ private:
 /// per element; arrays of numbers: a list, long ones shortened).
 QString jsonToHtml(const nlohmann::json& j, int depth = 0);
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

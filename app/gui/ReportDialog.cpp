@@ -88,5 +88,5 @@ ReportDialog* showSessionReport(AppContext& ctx, qint64 sessionId, QWidget* pare
     return nullptr;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

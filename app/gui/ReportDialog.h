@@ -41,5 +41,5 @@ private:
 /// box says why and the error is logged).
 ReportDialog* showSessionReport(AppContext& ctx, qint64 sessionId, QWidget* parent);
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -12,8 +12,6 @@
 #include "app/gui/NcExportDialog.h"
 #include "app/gui/Report.h"
 #include "app/gui/ReportDialog.h"
-#include "tests/gui/GuiTestUtil.h"
-
 #include "core/io/NcExport.h"
 #include "core/io/Profile.h"
 #include "core/store/FrfCapture.h"
@@ -32,6 +30,8 @@
 #include <complex>
 #include <memory>
 #include <numbers>
+
+#include "tests/gui/GuiTestUtil.h"
 
 using namespace axistune;
 
@@ -95,7 +95,7 @@ double inkFraction(const QImage& im)
     return ink / double((im.width() / 2) * (im.height() / 2));
 }
 
-}  // namespace
+} // namespace
 
 class TestReports : public QObject {
     Q_OBJECT
@@ -123,15 +123,34 @@ private slots:
         frf.captures.push_back({"predicted", store::frfAsCapture(analyticFrf(430.0, 0.08))});
         frf.results.push_back({"resonances", {{"resonances", {{{"frequency_Hz", 412.0}, {"peak_dB", 20.0}}}}}, {}});
         frf.results.push_back({"verification", {{"max_abs_deviation_dB", 0.8}}, {}});
-        frf.parameterSets.push_back({0, "X", store::ParameterSource::Proposed, {}, "notch wizard",
+        frf.parameterSets.push_back({0,
+                                     "X",
+                                     store::ParameterSource::Proposed,
+                                     {},
+                                     "notch wizard",
                                      {{"filter.notch1.center", 412.0}, {"filter.notch1.width", 80.0}}});
-        frf.parameterSets.push_back({0, "X", store::ParameterSource::Applied, {}, "notch wizard",
+        frf.parameterSets.push_back({0,
+                                     "X",
+                                     store::ParameterSource::Applied,
+                                     {},
+                                     "notch wizard",
                                      {{"filter.notch1.center", 412.0}, {"filter.notch1.width", 80.0}}});
         frf.journal.push_back({0, {}, "X", "filter.notch1.center", 0.0, 412.0, {}, {}});
         m_frf = *db().recordSession(frf);
 
         auto lost = session("mill", "X", "lost-motion");
-        lost.captures.push_back({"trace-1", circleTrace()});
+        lost.captures.push_back({"circle", circleTrace()});
+        for (const char* name : {"trace-1", "verification"}) {
+            model::Capture bb; // the lost-motion wizard's ball-bar layout
+            bb.metadata = {{"content", "ballbar"}, {"radius_m", "0.05"}};
+            model::Channel a{"angle_rad", {}}, d{"deviation_m", {}};
+            for (int i = 0; i < 720; ++i) {
+                a.data.push_back(2 * std::numbers::pi * i / 720.0);
+                d.data.push_back(3e-6 * std::cos(2 * a.data.back()) + (i % 180 == 0 ? 4e-6 : 0.0));
+            }
+            bb.channels = {a, d};
+            lost.captures.push_back({name, bb});
+        }
         lost.results.push_back({"fit", {{"A_m_per_Nm", 2.0e-6}, {"B_per_Nm", 3.0e-6}, {"method", "ols"}}, {}});
         lost.results.push_back({"prediction",
                                 {{"measured_circularity_m", 6.0e-6}},
@@ -157,9 +176,9 @@ private slots:
     {
         struct Case {
             std::int64_t id;
-            int plots;  // Bode of both FRFs; circle trace + prediction arrays; none
+            int plots; // Bode of both FRFs; ball-bar polar, time trace, prediction arrays; none
         };
-        std::vector<Case> cases{{m_frf, 1}, {m_lost, 2}, {m_aborted, 0}};
+        std::vector<Case> cases{{m_frf, 1}, {m_lost, 3}, {m_aborted, 0}};
         for (auto id : m_others)
             cases.push_back({id, 0});
         qint64 emptySize = 0, frfSize = 0;
@@ -195,7 +214,7 @@ private slots:
             QVERIFY2(report.saveHtml(html, &error), qPrintable(error));
             QVERIFY(QFileInfo(html).size() > 0);
         }
-        QVERIFY(frfSize > emptySize + 10000);  // the Bode image is in the file
+        QVERIFY(frfSize > emptySize + 10000); // the Bode image is in the file
     }
 
     void frfReportShowsParametersWithUnitsAndVerification()
@@ -204,11 +223,11 @@ private slots:
         QVERIFY(rec.ok());
         std::unique_ptr<QTextDocument> doc(gui::SessionReport::build(*rec).createDocument());
         const QString text = doc->toPlainText();
-        QVERIFY(text.contains("table clamped, spindle at rest"));     // operator's note
+        QVERIFY(text.contains("table clamped, spindle at rest")); // operator's note
         QVERIFY(text.contains("filter.notch1.center"));
-        QVERIFY(text.contains("412 Hz"));                            // value with its unit from the metadata
+        QVERIFY(text.contains("412 Hz")); // value with its unit from the metadata
         QVERIFY(text.contains("Proposed") && text.contains("Applied"));
-        QVERIFY(text.contains("max_abs_deviation_dB"));              // verification section
+        QVERIFY(text.contains("max_abs_deviation_dB")); // verification section
         QVERIFY(!text.contains("ABORTED"));
     }
 
@@ -255,13 +274,13 @@ private slots:
             auto direct = io::exportNc(*profile, *map);
             QVERIFY(direct.ok());
             QCOMPARE(written, QByteArray::fromStdString(direct->text));
-            auto expected = io::readTextFile(std::string(AXISTUNE_TEST_DATA_DIR) + "/nc/vmc." + family.toStdString() +
-                                             ".expected");
+            auto expected =
+                io::readTextFile(std::string(AXISTUNE_TEST_DATA_DIR) + "/nc/vmc." + family.toStdString() + ".expected");
             QVERIFY(expected.ok());
             QCOMPARE(written, QByteArray::fromStdString(*expected));
 
             // The table lists each mapped parameter of every axis, the list the unmapped ones.
-            int mapped = 0, unmapped = 0;  // rows: one per map entry and axis; unmapped: per key and axis
+            int mapped = 0, unmapped = 0; // rows: one per map entry and axis; unmapped: per key and axis
             for (const auto& a : profile->axes)
                 for (const auto& [key, v] : a.parameters) {
                     int n = 0;
@@ -295,11 +314,11 @@ private slots:
     void historyShowsOnePointPerSession()
     {
         const double f[3] = {402.5, 398.0, 405.25};
-        const double notch[3] = {400.0, 0.0, 404.0};  // second session: no applied notch
+        const double notch[3] = {400.0, 0.0, 404.0}; // second session: no applied notch
         for (int i = 0; i < 3; ++i) {
             auto s = session("lathe", "Z", i == 1 ? "notch" : "frf");
             s.info.started = QStringLiteral("2026-11-%1T08:00:00.000Z").arg(10 + 3 * i).toStdString();
-            if (i == 1)  // the notch wizard's layout: a bare array with f_Hz
+            if (i == 1) // the notch wizard's layout: a bare array with f_Hz
                 s.results.push_back({"resonances", {{{"f_Hz", f[i]}, {"peak_dB", 12.0}}}, {}});
             else
                 s.results.push_back({"resonances", {{"resonances", {{{"frequency_Hz", f[i]}}}}}, {}});
@@ -341,12 +360,12 @@ private slots:
         QCOMPARE(a.size(), std::size_t(1));
         QCOMPARE(a[0].points.size(), std::size_t(1));
         QCOMPARE(a[0].points[0].sessionId, lmId);
-        QVERIFY(std::abs(a[0].points[0].value - 2.0) < 1e-12);  // µm/(N·m)
+        QVERIFY(std::abs(a[0].points[0].value - 2.0) < 1e-12); // µm/(N·m)
         const auto& circ = view.data().of(gui::HistoryQuantity::Circularity);
         QCOMPARE(circ.size(), std::size_t(2));
         for (const auto& s : circ) {
             QCOMPARE(s.points.size(), std::size_t(1));
-            QVERIFY(std::abs(s.points[0].value - 6.0) < 1e-9 || std::abs(s.points[0].value - 2.5) < 1e-9);  // µm
+            QVERIFY(std::abs(s.points[0].value - 6.0) < 1e-9 || std::abs(s.points[0].value - 2.5) < 1e-9); // µm
         }
         view.setTimeAxis(true);
         view.resize(1000, 700);
