@@ -5,12 +5,12 @@
 // the same over Modbus against axistune-simdrive; a simdrive killed during the verification leaves an
 // aborted session and a responsive GUI.
 //
-// The machine: resources/machines/dd-table.json with its encoders made ideal (0 counts/rev, the
-// simulator's "no quantization"), everything else as in the preset. With the preset's 3.6e6 counts/rev
-// encoder a 5 % multi-sweep cannot see the kilohertz modes at all (the 3.3 kHz motion is ~4e-9 rad,
-// far below one count; docs/notch.md "With the preset's nonlinearities on"), and no notch wizard can
-// treat what the measurement does not show. AXISTUNE_RESOURCE_DIR points the embedded drive and the
-// simdrive process at that copy.
+// The machine: the dd-table preset as it is (sim:dd-table, simdrive --preset dd-table) with all its
+// nonlinearities: Coulomb friction, current noise, current-dependent inductance and the 2^29 counts/rev
+// encoder (docs/notch.md "End to end on the simulated drive"; the CLI test NotchE2e runs the same
+// preset). The wizard's defaults (multi-sweep, 10 Hz … 0.975 × 4 kHz, 240 points, 5 %) are used
+// unchanged: with seeds 1, 7 and 42 the three notches land within 0.6 % of the modes and prediction
+// and verification agree within 0.61 dB on the 224 points above the wizard's −50 dB floor.
 #include "app/gui/AppContext.h"
 #include "app/gui/NotchWizard.h"
 #include "app/gui/WizardRegistry.h"
@@ -24,13 +24,8 @@
 
 #include <QAbstractButton>
 #include <QCheckBox>
-#include <QDir>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
-#include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QListWidget>
 #include <QLabel>
 #include <QPushButton>
@@ -104,37 +99,6 @@ void TestNotchWizard::initTestCase()
 {
     axistune::testing::installLanguageFromEnv();
     QVERIFY(m_dir.isValid());
-    // A resource directory: everything links to resources/, machines/dd-table.json has ideal encoders.
-    const QDir src(QStringLiteral(AXISTUNE_TEST_DATA_DIR "/../../resources"));
-    QVERIFY(src.exists("machines/dd-table.json"));
-    const QString res = m_dir.filePath("resources");
-    QVERIFY(QDir().mkpath(res + "/machines"));
-    for (const auto& e : src.entryInfoList(QDir::Dirs | QDir::Files | QDir::NoDotAndDotDot))
-        if (e.fileName() != "machines")
-            QVERIFY(QFile::link(e.absoluteFilePath(), res + "/" + e.fileName()));
-    for (const auto& e : QDir(src.filePath("machines")).entryInfoList(QDir::Files))
-        if (e.fileName() != "dd-table.json")
-            QVERIFY(QFile::link(e.absoluteFilePath(), res + "/machines/" + e.fileName()));
-    QFile in(src.filePath("machines/dd-table.json"));
-    QVERIFY(in.open(QIODevice::ReadOnly));
-    auto doc = QJsonDocument::fromJson(in.readAll()).object();
-    auto axes = doc["axes"].toArray();
-    auto axis = axes[0].toObject();
-    auto params = axis["parameters"].toObject();
-    for (const char* k : {"plant.encoder_motor", "plant.encoder_load"}) {
-        auto p = params[k].toObject();
-        QVERIFY(!p.isEmpty());
-        p["value"] = 0;  // 0 = ideal (AxisParameters.cpp)
-        params[k] = p;
-    }
-    axis["parameters"] = params;
-    axes[0] = axis;
-    doc["axes"] = axes;
-    QFile out(res + "/machines/dd-table.json");
-    QVERIFY(out.open(QIODevice::WriteOnly));
-    out.write(QJsonDocument(doc).toJson());
-    out.close();
-    qputenv("AXISTUNE_RESOURCE_DIR", res.toLocal8Bit());
     QVERIFY(axistune::gui::findWizard("notch") != nullptr);
     QCOMPARE(axistune::gui::findWizard("notch")->order, 20);
 }
@@ -285,6 +249,11 @@ void TestNotchWizard::embeddedEndToEnd()
                  qPrintable(QString("%1 Hz: before %2, predicted %3, verified %4 dB").arg(f).arg(before).arg(pred).arg(after)));
         QVERIFY(after < before);
     }
+    // Prediction vs verification within 1 dB (issue 6) on the points the wizard compares: those where
+    // the prediction or the re-measurement is above −50 dB (NotchWizard, tuning::compareMagnitudes
+    // floor, as NotchE2e); below it, around the notched 3.3 kHz mode, the held torque command's images
+    // (not in the prediction) and the preset's noise make up to 3.2 dB (docs/notch.md). 224 of the 240
+    // points are compared on the preset; more than 100 must be.
     QVERIFY(w.deviation().points > 100);
     QVERIFY2(w.deviation().maxAbsDb < 1.0, qPrintable(QString::number(w.deviation().maxAbsDb)));
     qInfo() << "prediction vs verification: max" << w.deviation().maxAbsDb << "dB at" << w.deviation().maxAtHz << "Hz, rms"
