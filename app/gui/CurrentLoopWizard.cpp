@@ -155,6 +155,9 @@ void CurrentLoopWizard::saveSession()
                                    {{"t_s", d.step.timeS},
                                     {"delay_free", d.step.delayFree},
                                     {"delay_inclusive", d.step.discrete}}});
+        if (!d.fineTimeS.empty())
+            rec.results.push_back({"step_design", {{"points", d.fineTimeS.size()}},
+                                   {{"t_s", d.fineTimeS}, {"delay_free", d.fineDelayFree}}});
         if (!d.axis.isEmpty() && !m_ctx.machine().isEmpty())
             rec.parameterSets.push_back({0, rec.info.axis, store::ParameterSource::Proposed, {}, "current-loop wizard",
                                          {{"current.kp", c->gains.kpVPerA},

@@ -50,7 +50,8 @@ struct CurrentLoopData {
     std::vector<tuning::BoundaryCurve> voltage;    ///< per design.table row
     std::vector<tuning::BoundaryCurve> overshoot;  ///< per design.table row
     int chosenRow = -1;                            ///< row of design.table chosen (default: the optimum)
-    tuning::StepResponse step;                     ///< for the chosen row
+    tuning::StepResponse step;                     ///< for the chosen row, at the drive's period
+    std::vector<double> fineTimeS, fineDelayFree;  ///< delay-free step on a fine grid (400 points)
     // Verification (read back after apply).
     bool verified = false;
     double readKp = 0.0, readKi = 0.0, readAlpha = 0.0;

@@ -532,6 +532,13 @@ bool CurrentLoopDesignPage::validatePage()
         return false;
     const double dur = std::max(20.0 * c->riseTimeS, 40.0 * m_d.drivePeriodS);
     m_d.step = tuning::stepResponses(m_d.motor, c->alpha, c->gains, m_d.driveDeadTimeS, m_d.drivePeriodS, dur);
+    m_d.fineTimeS.clear();
+    m_d.fineDelayFree.clear();
+    for (int k = 0; k <= 400; ++k) {
+        const double t = dur * k / 400.0;
+        m_d.fineTimeS.push_back(t);
+        m_d.fineDelayFree.push_back(tuning::delayFreeStep(m_d.motor, c->alpha, c->gains, t));
+    }
     return true;
 }
 
@@ -563,7 +570,7 @@ void CurrentLoopStepPage::initializePage()
         return;
     const auto& s = m_d.step;
     const auto tUs = scaled(s.timeS, 1e6);
-    m_plot->addCurve(tr("Delay-free design"), tUs, s.delayFree, QColor(0, 90, 180));
+    m_plot->addCurve(tr("Delay-free design"), scaled(m_d.fineTimeS, 1e6), m_d.fineDelayFree, QColor(0, 90, 180));
     m_plot->addCurve(tr("Prediction: period %1 µs + dead time %2 µs")
                          .arg(m_d.drivePeriodS * 1e6, 0, 'f', 1)
                          .arg(m_d.driveDeadTimeS * 1e6, 0, 'f', 1),
@@ -573,7 +580,7 @@ void CurrentLoopStepPage::initializePage()
                        "test (its tests are velocity step, jog, hold and frequency response). A velocity step is not "
                        "a measurement of the current loop — the current settles within about one velocity-loop period "
                        "of the trace — so none is shown here.")
-                        .arg(stepSummary(s.timeS, s.delayFree), stepSummary(s.timeS, s.discrete)));
+                        .arg(stepSummary(m_d.fineTimeS, m_d.fineDelayFree), stepSummary(s.timeS, s.discrete)));
     if (m_ctx.drive().isConnected() && !m_d.axis.isEmpty()) {
         model::ParameterValues v{{"current.kp", c->gains.kpVPerA},
                                  {"current.ki", c->gains.kiVPerAs},
@@ -653,7 +660,7 @@ void CurrentLoopVerifyPage::showResult()
                                            m_d.drivePeriodS, dur);
     const auto& s = m_d.verifyStep;
     const auto tUs = scaled(s.timeS, 1e6);
-    m_plot->addCurve(tr("Design (delay-free, proposed gains)"), scaled(m_d.step.timeS, 1e6), m_d.step.delayFree,
+    m_plot->addCurve(tr("Design (delay-free, proposed gains)"), scaled(m_d.fineTimeS, 1e6), m_d.fineDelayFree,
                      QColor(0, 90, 180));
     m_plot->addCurve(tr("Prediction with the read-back gains"), tUs, s.discrete, QColor(200, 90, 0));
     m_plot->rescale();
