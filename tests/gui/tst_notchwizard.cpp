@@ -191,6 +191,13 @@ void TestNotchWizard::embeddedEndToEnd()
     QCOMPARE(table->rowCount(), 3);
     QCOMPARE(w.proposePage()->marginsTable()->rowCount(), 3);
     QVERIFY(w.marginsBefore() && w.marginsPredicted());
+    for (const auto& r : w.resonances())
+        qInfo() << "resonance" << r.freqHz << "Hz," << r.peakDb << "dB";
+    for (const auto& r : rows)
+        qInfo() << "notch centre" << r.spec.centerHz << "Hz width" << r.spec.widthHz << "Hz depth" << r.spec.depth;
+    qInfo() << "gain margin" << w.marginsBefore()->gainMarginDb << "->" << w.marginsPredicted()->gainMarginDb
+            << "dB, peak sensitivity" << w.marginsBefore()->peakSensitivityDb << "->" << w.marginsPredicted()->peakSensitivityDb
+            << "dB, phase margin" << w.marginsBefore()->phaseMarginDeg << "->" << w.marginsPredicted()->phaseMarginDeg << "deg";
     // The prediction lowers the peak sensitivity and raises the gain margin (docs/notch.md).
     QVERIFY(w.marginsPredicted()->peakSensitivityDb < w.marginsBefore()->peakSensitivityDb);
     maybeScreenshot(&w, "notch-04-propose");
