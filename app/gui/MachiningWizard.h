@@ -148,6 +148,7 @@ private:
     QFutureWatcher<LobeResult>* m_watcher = nullptr;
     LobeResult m_result;
     bool m_done = false;
+    bool m_restart = false;
 };
 
 /// Step 4: the stable-pocket advice from a chatter frequency.

@@ -80,6 +80,7 @@ MachiningLobesPage::MachiningLobesPage(const MachiningToolPage& tool, const Mach
     m_cancel = new QPushButton(tr("Cancel"), this);
     m_cancel->setObjectName("machLobeCancel");
     m_again = new QPushButton(tr("Compute again"), this);
+    m_again->setObjectName("machLobeAgain");
     m_status = new QLabel(this);
     m_status->setObjectName("machLobeStatus");
     m_status->setWordWrap(true);
@@ -116,14 +117,19 @@ void MachiningLobesPage::initializePage()
 
 void MachiningLobesPage::cleanupPage()
 {
+    m_restart = false;
     if (m_watcher->isRunning())
         m_watcher->cancel();
 }
 
 void MachiningLobesPage::start()
 {
-    if (m_watcher->isRunning())
-        return; // finished() restarts nothing; the user presses Compute again after a cancel
+    if (m_watcher->isRunning()) {
+        // Back and Next again while the previous data are still computed: restart when that run has stopped.
+        m_restart = true;
+        m_watcher->cancel();
+        return;
+    }
     auto tool = m_toolPage.tool();
     auto in = m_cutPage.inputs();
     m_done = false;
@@ -189,6 +195,11 @@ void MachiningLobesPage::start()
 
 void MachiningLobesPage::finished()
 {
+    if (m_restart) {
+        m_restart = false;
+        start();
+        return;
+    }
     m_cancel->setEnabled(false);
     m_again->setEnabled(true);
     if (m_watcher->isCanceled() || m_watcher->future().resultCount() == 0) {

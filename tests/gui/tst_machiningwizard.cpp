@@ -139,7 +139,8 @@ private slots:
         analysis->loadCapture(QString::fromStdString(kSamples + "capture-step-vmc-x.csv"));
         QVERIFY(waitUntil([&] { return !analysis->busy(); }, 30000));
         QVERIFY(!analysis->analysed());
-        QVERIFY2(analysis->summary()->text().contains("stage.json") && analysis->summary()->text().contains("inertia_kg"),
+        QVERIFY2(analysis->summary()->text().contains("stage.json") &&
+                     analysis->summary()->text().contains("inertia_kg"),
                  qPrintable(analysis->summary()->text()));
     }
 
@@ -298,6 +299,17 @@ private slots:
         QVERIFY(waitUntil([&] { return lobes->cancelButton()->isEnabled() == false; }, 30000));
         QVERIFY(!lobes->isComplete());
         QVERIFY(lobes->status()->text().contains("Cancelled"));
+        // Compute again, then Back (cancels) and Next with a short range: the lobes of the new range follow.
+        lobes->findChild<QPushButton*>("machLobeAgain")->click();
+        w.back();
+        QCOMPARE(w.currentId(), int(MachiningWizard::CutId));
+        w.cutPage()->rpmMin()->setText("2700");
+        w.cutPage()->rpmMax()->setText("2900");
+        w.cutPage()->rpmStep()->setText("100");
+        w.next();
+        QVERIFY(waitUntil([&] { return lobes->isComplete(); }, 30000));
+        QCOMPARE(lobes->result().lobes.size(), std::size_t(3));
+        QCOMPARE(lobes->result().lobes.front().rpm, 2700.0);
     }
 };
 
