@@ -355,15 +355,18 @@ void HistoryView::reloadMachines()
 
 void HistoryView::reloadAxes()
 {
-    const QString was = m_axis->currentText();
+    const QVariant was = m_axis->currentData();
     {
         const QSignalBlocker block(m_axis);
         m_axis->clear();
         if (auto* db = m_ctx.database(); db && !m_machine->currentText().isEmpty())
             if (auto p = db->loadProfile(m_machine->currentText().toStdString()))
                 for (const auto& a : p->axes)
-                    m_axis->addItem(QString::fromStdString(a.name));
-        m_axis->setCurrentIndex(std::max(0, m_axis->findText(was)));
+                    m_axis->addItem(QString::fromStdString(a.name), QString::fromStdString(a.name));
+        // Sessions without an axis (ball-bar runs of a plane, CLI analyses): a pseudo-axis of their own.
+        if (!m_machine->currentText().isEmpty())
+            m_axis->addItem(tr("(no axis)"), QString(""));
+        m_axis->setCurrentIndex(was.isValid() ? std::max(0, m_axis->findData(was)) : 0);
     }
     reload();
 }
@@ -377,7 +380,7 @@ void HistoryView::setMachine(const QString& machine)
 
 void HistoryView::setAxis(const QString& axis)
 {
-    m_axis->setCurrentIndex(m_axis->findText(axis));
+    m_axis->setCurrentIndex(m_axis->findData(axis));
 }
 
 void HistoryView::setTimeAxis(bool days)
@@ -389,10 +392,10 @@ void HistoryView::reload()
 {
     m_data = {};
     auto* db = m_ctx.database();
-    if (db && !m_machine->currentText().isEmpty() && !m_axis->currentText().isEmpty()) {
+    if (db && !m_machine->currentText().isEmpty() && m_axis->currentIndex() >= 0) {
         QString error;
-        m_data =
-            collectHistory(*db, m_machine->currentText().toStdString(), m_axis->currentText().toStdString(), &error);
+        m_data = collectHistory(*db, m_machine->currentText().toStdString(),
+                                m_axis->currentData().toString().toStdString(), &error);
         if (!error.isEmpty())
             m_ctx.log(tr("History: %1").arg(error));
     }

@@ -63,6 +63,7 @@ public:
     explicit HistoryView(AppContext& ctx, QWidget* parent = nullptr);
 
     void setMachine(const QString& machine);
+    /// An axis of the machine, or "" for the sessions without an axis (ball-bar, CLI analyses).
     void setAxis(const QString& axis);
     /// x = session number (false) or days since the first session (true).
     void setTimeAxis(bool days);

@@ -6,6 +6,7 @@
 //   HTML one <img> per plot, the rendered plots are not blank, an aborted report says so with its reason;
 // - the NC export dialog writes byte for byte what core/io exportNc writes for the store's profile
 //   (and, for the vmc sample, the committed tests/data/nc/vmc.<family>.expected files);
+// - a real CLI session (axistune-cli ballbar --db) has a report and its circularity in the history;
 // - the history shows one point per session for a resonance stored in three sessions, with the values.
 #include "app/gui/AppContext.h"
 #include "app/gui/HistoryView.h"
@@ -20,6 +21,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QListWidget>
+#include <QProcess>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
@@ -309,6 +311,49 @@ private slots:
         QVERIFY(!error.isEmpty());
         dlg.resize(1000, 700);
         testing::maybeScreenshot(&dlg, "nc-export");
+    }
+
+    void cliSessionReportAndHistory()
+    {
+        // A real CLI session: axistune-cli ballbar --db on the sample trace (machine vmc, no axis).
+        QVERIFY(!m_vmc.empty());
+        const QDir nc = QFileInfo(QString::fromStdString(io::defaultNcMapPath("fanuc"))).dir();
+        QProcess cli;
+        cli.start(AXISTUNE_CLI, {"ballbar", "--in", nc.filePath("../samples/ballbar-cw.csv"), "--db",
+                                 QString::fromStdString(db().path()), "--machine", QString::fromStdString(m_vmc),
+                                 "--operator", "cli-op"});
+        QVERIFY(cli.waitForFinished(60000));
+        QCOMPARE(cli.exitCode(), 0);
+        const auto out = nlohmann::json::parse(cli.readAllStandardOutput().toStdString(), nullptr, false);
+        QVERIFY(out.is_object() && out["circularity_um"].is_number());
+        const double circUm = out["circularity_um"].get<double>();
+
+        auto list = db().listSessions(m_vmc);
+        QVERIFY(list.ok());
+        std::int64_t id = 0;
+        for (const auto& s : *list)
+            if (s.kind == "ballbar")
+                id = s.id;
+        QVERIFY(id > 0);
+        auto rec = db().loadSession(id);
+        QVERIFY(rec.ok());
+        const auto report = gui::SessionReport::build(*rec);
+        QVERIFY(report.html().contains("cli-op"));
+        QVERIFY(report.html().contains("circularity_um"));
+        QString error;
+        const QString pdf = m_dir.filePath("cli.pdf");
+        QVERIFY2(report.savePdf(pdf, &error), qPrintable(error));
+        QFile f(pdf);
+        QVERIFY(f.open(QIODevice::ReadOnly) && f.read(4) == "%PDF");
+
+        gui::HistoryView view(*m_ctx);
+        view.setMachine(QString::fromStdString(m_vmc));
+        view.setAxis(""); // sessions without an axis
+        const auto& circ = view.data().of(gui::HistoryQuantity::Circularity);
+        QCOMPARE(circ.size(), std::size_t(1));
+        QCOMPARE(circ[0].points.size(), std::size_t(1));
+        QCOMPARE(circ[0].points[0].sessionId, id);
+        QVERIFY(std::abs(circ[0].points[0].value - circUm) <= 1e-9 * std::abs(circUm));
     }
 
     void historyShowsOnePointPerSession()
