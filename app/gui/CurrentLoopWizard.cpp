@@ -17,25 +17,24 @@ namespace gui {
 
 namespace {
 
-const WizardRegistrar kRegistrar{"current-loop", QT_TRANSLATE_NOOP("Wizards", "Current loop…"), 30,
-                                 [](AppContext& ctx, QWidget* parent) -> QWizard* {
-                                     return new CurrentLoopWizard(ctx, parent);
-                                 },
-                                 false};
+const WizardRegistrar kRegistrar{
+    "current-loop", QT_TRANSLATE_NOOP("Wizards", "Current loop…"), 30,
+    [](AppContext& ctx, QWidget* parent) -> QWizard* { return new CurrentLoopWizard(ctx, parent); }, false};
 
 nlohmann::json gainsJson(const tuning::PiGains& g)
 {
     return {{"kp_V_per_A", g.kpVPerA}, {"ki_V_per_As", g.kiVPerAs}};
 }
 
-}  // namespace
+} // namespace
 
 CurrentLoopSavePage::CurrentLoopSavePage(AppContext& ctx, CurrentLoopData& shared, ApplyPage* apply, QWidget* parent)
     : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
 {
     setTitle(tr("Save"));
-    setSubTitle(tr("The session holds the motor data and settings, the α table, the chosen α and gains with the rise "
-                   "time, the gain schedule, the step responses, what was applied with its journal, and the read-back."));
+    setSubTitle(
+        tr("The session holds the motor data and settings, the α table, the chosen α and gains with the rise "
+           "time, the gain schedule, the step responses, what was applied with its journal, and the read-back."));
     auto* lay = new QVBoxLayout(this);
     m_text = new QLabel(this);
     m_text->setObjectName("clSummary");
@@ -123,7 +122,8 @@ void CurrentLoopWizard::saveSession()
     if (d.design && c) {
         nlohmann::json table = nlohmann::json::array();
         for (const auto& row : d.design->table) {
-            nlohmann::json r{{"alpha", row.alpha}, {"feasible", row.feasible}, {"active_constraints", row.activeConstraints}};
+            nlohmann::json r{
+                {"alpha", row.alpha}, {"feasible", row.feasible}, {"active_constraints", row.activeConstraints}};
             if (row.feasible) {
                 r.update(gainsJson(row.gains));
                 r["rise_time_s"] = row.riseTimeS;
@@ -150,19 +150,22 @@ void CurrentLoopWizard::saveSession()
                               {"schedule", schedule}};
         rec.results.push_back({"design", result, {}});
         if (!d.step.timeS.empty())
-            rec.results.push_back({"step_prediction",
-                                   {{"period_s", d.drivePeriodS}, {"dead_time_s", d.driveDeadTimeS}},
-                                   {{"t_s", d.step.timeS},
-                                    {"delay_free", d.step.delayFree},
-                                    {"delay_inclusive", d.step.discrete}}});
+            rec.results.push_back(
+                {"step_prediction",
+                 {{"period_s", d.drivePeriodS}, {"dead_time_s", d.driveDeadTimeS}},
+                 {{"t_s", d.step.timeS}, {"delay_free", d.step.delayFree}, {"delay_inclusive", d.step.discrete}}});
         if (!d.fineTimeS.empty())
-            rec.results.push_back({"step_design", {{"points", d.fineTimeS.size()}},
+            rec.results.push_back({"step_design",
+                                   {{"points", d.fineTimeS.size()}},
                                    {{"t_s", d.fineTimeS}, {"delay_free", d.fineDelayFree}}});
         if (!d.axis.isEmpty() && !m_ctx.machine().isEmpty())
-            rec.parameterSets.push_back({0, rec.info.axis, store::ParameterSource::Proposed, {}, "current-loop wizard",
-                                         {{"current.kp", c->gains.kpVPerA},
-                                          {"current.ki", c->gains.kiVPerAs},
-                                          {"current.alpha", c->alpha}}});
+            rec.parameterSets.push_back(
+                {0,
+                 rec.info.axis,
+                 store::ParameterSource::Proposed,
+                 {},
+                 "current-loop wizard",
+                 {{"current.kp", c->gains.kpVPerA}, {"current.ki", c->gains.kiVPerAs}, {"current.alpha", c->alpha}}});
     }
     if (d.verified)
         rec.results.push_back({"verification",
@@ -183,5 +186,5 @@ void CurrentLoopWizard::saveSession()
         m_sessionId = *id;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -28,7 +28,7 @@ class QTableWidget;
 namespace axistune {
 namespace widgets {
 class CurvePlot;
-}  // namespace widgets
+} // namespace widgets
 namespace gui {
 
 class AppContext;
@@ -39,19 +39,19 @@ struct CurrentLoopData {
     bool fromDrive = false;
     tuning::MotorData motor;
     tuning::CurrentLoopSettings settings;
-    double drivePeriodS = 62.5e-6;    ///< current.period of the drive (discrete prediction)
-    double driveDeadTimeS = 62.5e-6;  ///< current.dead_time of the drive (delay-inclusive prediction)
-    QString backEmfText;              ///< the back-EMF check in words with the numbers
+    double drivePeriodS = 62.5e-6;   ///< current.period of the drive (discrete prediction)
+    double driveDeadTimeS = 62.5e-6; ///< current.dead_time of the drive (delay-inclusive prediction)
+    QString backEmfText;             ///< the back-EMF check in words with the numbers
     bool backEmfOk = true;
     // Design (computed off the GUI thread).
     std::optional<tuning::CurrentLoopDesign> design;
     QString error;
     tuning::BoundaryCurve stability;
-    std::vector<tuning::BoundaryCurve> voltage;    ///< per design.table row
-    std::vector<tuning::BoundaryCurve> overshoot;  ///< per design.table row
-    int chosenRow = -1;                            ///< row of design.table chosen (default: the optimum)
-    tuning::StepResponse step;                     ///< for the chosen row, at the drive's period
-    std::vector<double> fineTimeS, fineDelayFree;  ///< delay-free step on a fine grid (400 points)
+    std::vector<tuning::BoundaryCurve> voltage;   ///< per design.table row
+    std::vector<tuning::BoundaryCurve> overshoot; ///< per design.table row
+    int chosenRow = -1;                           ///< row of design.table chosen (default: the optimum)
+    tuning::StepResponse step;                    ///< for the chosen row, at the drive's period
+    std::vector<double> fineTimeS, fineDelayFree; ///< delay-free step on a fine grid (400 points)
     // Verification (read back after apply).
     bool verified = false;
     double readKp = 0.0, readKi = 0.0, readAlpha = 0.0;
@@ -206,5 +206,5 @@ private:
     qint64 m_sessionId = 0;
 };
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -2,15 +2,14 @@
 // Pages of the current-loop wizard (CurrentLoopWizard.h; docs/wizards/current-loop.md): motor data,
 // design (k_p–k_i plane, rise time against α, schedule), step responses, verification.
 // Method: spec/current-loop-and-multisweep-frf.md chapter 2 (core/tuning/CurrentLoop.h).
-#include "app/gui/CurrentLoopWizard.h"
-
 #include "app/gui/AppContext.h"
+#include "app/gui/CurrentLoopWizard.h"
 #include "app/gui/WizardPages.h"
 #include "widgets/CurvePlot.h"
 
 #include <QCheckBox>
-#include <QCoreApplication>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QFutureWatcher>
@@ -112,7 +111,7 @@ QString stepSummary(const std::vector<double>& t, const std::vector<double>& y)
         .arg(rise * 1e6, 0, 'f', 1);
 }
 
-}  // namespace
+} // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Motor data
@@ -213,13 +212,14 @@ CurrentLoopMotorPage::CurrentLoopMotorPage(AppContext& ctx, CurrentLoopData& sha
         // The paper designs with τ = the current-control period.
         m_tau->setValue(m_d.drivePeriodS * 1e6);
         m_d.fromDrive = true;
-        m_source->setText(tr("Read from axis %1 of the drive (peak values): maximum current, maximum voltage, rated "
-                             "current, current-loop period %2 µs, dead time %3 µs; the back-EMF constant from the torque "
-                             "constant (k_e = k_t/1.5, amplitude-invariant dq). The drive does not offer R_a, L_q and δ: "
-                             "enter them from the motor data sheet.")
-                              .arg(r.axis)
-                              .arg(m_d.drivePeriodS * 1e6, 0, 'f', 3)
-                              .arg(m_d.driveDeadTimeS * 1e6, 0, 'f', 3));
+        m_source->setText(
+            tr("Read from axis %1 of the drive (peak values): maximum current, maximum voltage, rated "
+               "current, current-loop period %2 µs, dead time %3 µs; the back-EMF constant from the torque "
+               "constant (k_e = k_t/1.5, amplitude-invariant dq). The drive does not offer R_a, L_q and δ: "
+               "enter them from the motor data sheet.")
+                .arg(r.axis)
+                .arg(m_d.drivePeriodS * 1e6, 0, 'f', 3)
+                .arg(m_d.driveDeadTimeS * 1e6, 0, 'f', 3));
         emit completeChanged();
     });
     updateCheck();
@@ -243,10 +243,9 @@ void CurrentLoopMotorPage::readFromDrive()
     if (m_axis->currentText().isEmpty() || !m_ctx.drive().isConnected())
         return;
     m_read->setEnabled(false);
-    m_readRequest = m_ctx.drive().readParameters(
-        m_axis->currentText(),
-        {"motor.max_current", "drive.max_voltage", "motor.rated_current", "motor.torque_constant", "current.period",
-         "current.dead_time"});
+    m_readRequest = m_ctx.drive().readParameters(m_axis->currentText(),
+                                                 {"motor.max_current", "drive.max_voltage", "motor.rated_current",
+                                                  "motor.torque_constant", "current.period", "current.dead_time"});
     emit completeChanged();
 }
 
@@ -330,8 +329,9 @@ CurrentLoopDesignPage::CurrentLoopDesignPage(AppContext& ctx, CurrentLoopData& s
     : QWizardPage(parent), m_ctx(ctx), m_d(shared)
 {
     setTitle(tr("Current loop: design"));
-    setSubTitle(tr("For each PI ratio α the gains with the shortest rise time inside the dead-time stability boundary "
-                   "(gain margin), the voltage envelope and the overshoot limit; α* has the shortest rise time of all."));
+    setSubTitle(
+        tr("For each PI ratio α the gains with the shortest rise time inside the dead-time stability boundary "
+           "(gain margin), the voltage envelope and the overshoot limit; α* has the shortest rise time of all."));
     auto* lay = new QVBoxLayout(this);
     auto* bar = new QHBoxLayout;
     m_alpha = new QComboBox(this);
@@ -352,16 +352,17 @@ CurrentLoopDesignPage::CurrentLoopDesignPage(AppContext& ctx, CurrentLoopData& s
     m_rise = new widgets::CurvePlot(tabs);
     m_rise->setObjectName("clRise");
     m_rise->setAxes(tr("α"), "1", tr("Rise time 10–90 %"), QString::fromUtf8("µs"));
-    m_table = makeTable(tabs, {tr("α"), tr("k_p [V/A]"), tr("k_i [V/(A·s)]"), tr("Rise time [µs]"), tr("Overshoot [%]"),
-                               tr("Active constraints")},
+    m_table = makeTable(tabs,
+                        {tr("α"), tr("k_p [V/A]"), tr("k_i [V/(A·s)]"), tr("Rise time [µs]"), tr("Overshoot [%]"),
+                         tr("Active constraints")},
                         "clTable");
     auto* sched = new QWidget(tabs);
     auto* sl = new QVBoxLayout(sched);
     m_schedule = new widgets::CurvePlot(sched);
     m_schedule->setObjectName("clSchedule");
     m_schedule->setAxes(tr("Current |i|"), "A", tr("k_p"), tr("V/A"));
-    m_scheduleTable = makeTable(sched, {tr("Current [A]"), tr("Factor"), tr("k_p [V/A]"), tr("k_i [V/(A·s)]")},
-                                "clScheduleTable");
+    m_scheduleTable =
+        makeTable(sched, {tr("Current [A]"), tr("Factor"), tr("k_p [V/A]"), tr("k_i [V/(A·s)]")}, "clScheduleTable");
     sl->addWidget(m_schedule, 3);
     sl->addWidget(m_scheduleTable, 2);
     tabs->addTab(m_rise, tr("Rise time against α"));
@@ -482,8 +483,8 @@ void CurrentLoopDesignPage::drawPlane()
     if (!c)
         return;
     const auto& st = m_d.stability;
-    m_plane->addCurve(tr("Stability boundary (gain margin %1 dB)").arg(m_d.settings.gainMarginDb, 0, 'f', 2), st.kpVPerA,
-                      gapsAtZero(st.kiVPerAs), QColor(200, 0, 0));
+    m_plane->addCurve(tr("Stability boundary (gain margin %1 dB)").arg(m_d.settings.gainMarginDb, 0, 'f', 2),
+                      st.kpVPerA, gapsAtZero(st.kiVPerAs), QColor(200, 0, 0));
     const auto& table = m_d.design->table;
     for (int i = 0; i < int(table.size()); ++i) {
         const bool isChosen = i == m_d.chosenRow;
@@ -511,9 +512,9 @@ void CurrentLoopDesignPage::drawPlane()
         const double f = tuning::scheduleFactor(m_d.motor, p.currentA);
         i.push_back(p.currentA);
         kp.push_back(f * c->gains.kpVPerA);
-        addRow(m_scheduleTable, {QString::number(p.currentA, 'f', 2), QString::number(f, 'f', 3),
-                                 QString::number(f * c->gains.kpVPerA, 'f', 2),
-                                 QString::number(f * c->gains.kiVPerAs, 'g', 4)});
+        addRow(m_scheduleTable,
+               {QString::number(p.currentA, 'f', 2), QString::number(f, 'f', 3),
+                QString::number(f * c->gains.kpVPerA, 'f', 2), QString::number(f * c->gains.kiVPerAs, 'g', 4)});
     }
     m_schedule->addCurve(tr("k_p over current (k_i in the same ratio)"), i, kp, QColor(0, 90, 180));
     m_schedule->rescale();
@@ -576,15 +577,15 @@ void CurrentLoopStepPage::initializePage()
                          .arg(m_d.driveDeadTimeS * 1e6, 0, 'f', 1),
                      tUs, s.discrete, QColor(200, 90, 0));
     m_plot->rescale();
-    m_text->setText(tr("Delay-free: %1. With the delay: %2.\nNo measured current step: the drive offers no current-step "
-                       "test (its tests are velocity step, jog, hold and frequency response). A velocity step is not "
-                       "a measurement of the current loop — the current settles within about one velocity-loop period "
-                       "of the trace — so none is shown here.")
-                        .arg(stepSummary(m_d.fineTimeS, m_d.fineDelayFree), stepSummary(s.timeS, s.discrete)));
+    m_text->setText(
+        tr("Delay-free: %1. With the delay: %2.\nNo measured current step: the drive offers no current-step "
+           "test (its tests are velocity step, jog, hold and frequency response). A velocity step is not "
+           "a measurement of the current loop — the current settles within about one velocity-loop period "
+           "of the trace — so none is shown here.")
+            .arg(stepSummary(m_d.fineTimeS, m_d.fineDelayFree), stepSummary(s.timeS, s.discrete)));
     if (m_ctx.drive().isConnected() && !m_d.axis.isEmpty()) {
-        model::ParameterValues v{{"current.kp", c->gains.kpVPerA},
-                                 {"current.ki", c->gains.kiVPerAs},
-                                 {"current.alpha", c->alpha}};
+        model::ParameterValues v{
+            {"current.kp", c->gains.kpVPerA}, {"current.ki", c->gains.kiVPerAs}, {"current.alpha", c->alpha}};
         m_apply->setProposal(m_d.axis, v);
         m_ctx.setProposed(m_d.axis, v);
     }
@@ -598,7 +599,8 @@ int CurrentLoopStepPage::nextId() const
 // ---------------------------------------------------------------------------------------------
 // Verify
 
-CurrentLoopVerifyPage::CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& shared, ApplyPage* apply, QWidget* parent)
+CurrentLoopVerifyPage::CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& shared, ApplyPage* apply,
+                                             QWidget* parent)
     : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
 {
     setTitle(tr("Current loop: verification"));
@@ -683,5 +685,5 @@ bool CurrentLoopVerifyPage::isComplete() const
     return m_readRequest == 0;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

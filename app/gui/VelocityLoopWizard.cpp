@@ -12,20 +12,17 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {
 
 namespace {
 
-const WizardRegistrar kRegistrar{"velocity-loop", QT_TRANSLATE_NOOP("Wizards", "Velocity and position loop…"), 40,
-                                 [](AppContext& ctx, QWidget* parent) -> QWizard* {
-                                     return new VelocityLoopWizard(ctx, parent);
-                                 },
-                                 false};
+const WizardRegistrar kRegistrar{
+    "velocity-loop", QT_TRANSLATE_NOOP("Wizards", "Velocity and position loop…"), 40,
+    [](AppContext& ctx, QWidget* parent) -> QWizard* { return new VelocityLoopWizard(ctx, parent); }, false};
 
 nlohmann::json marginsJson(const tuning::LoopMargins& m)
 {
@@ -37,7 +34,7 @@ nlohmann::json marginsJson(const tuning::LoopMargins& m)
             {"peak_sensitivity_dB", fin(m.peakSensitivityDb)}};
 }
 
-}  // namespace
+} // namespace
 
 VelocityLoopSavePage::VelocityLoopSavePage(AppContext& ctx, VelocityLoopData& shared, ApplyPage* apply, QWidget* parent)
     : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
@@ -167,7 +164,10 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
                   {"frf_session", d.frfSession},
                   {"step_rad_s", d.stepRadS},
                   {"step_duration_s", d.stepDurationS},
-                  {"before", {{"velocity_kp", d.before.kpNmsPerRad}, {"velocity_ki", d.before.kiNmPerRad}, {"position_kp", d.positionKpBefore}}},
+                  {"before",
+                   {{"velocity_kp", d.before.kpNmsPerRad},
+                    {"velocity_ki", d.before.kiNmPerRad},
+                    {"position_kp", d.positionKpBefore}}},
                   {"velocity_period_s", d.velocityPeriodS},
                   {"current_period_s", d.currentPeriodS}};
     if (d.model)
@@ -205,12 +205,12 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
                                 {"position_gain_per_s", fin(d.position.recommendedPerS)}},
                                {}});
         if (d.predictedAfter)
-            rec.results.push_back({"step_prediction",
-                                   {{"step_rad_s", d.stepRadS}},
-                                   {{"t_s", d.predictedAfter->tS},
-                                    {"after_rad_s", d.predictedAfter->motorVelRadS},
-                                    {"before_rad_s", d.predictedBefore ? d.predictedBefore->motorVelRadS
-                                                                       : std::vector<double>{}}}});
+            rec.results.push_back(
+                {"step_prediction",
+                 {{"step_rad_s", d.stepRadS}},
+                 {{"t_s", d.predictedAfter->tS},
+                  {"after_rad_s", d.predictedAfter->motorVelRadS},
+                  {"before_rad_s", d.predictedBefore ? d.predictedBefore->motorVelRadS : std::vector<double>{}}}});
         if (!m_ctx.machine().isEmpty() && !rec.info.axis.empty()) {
             model::ParameterValues v{{"velocity.kp", d.proposed.kpNmsPerRad}, {"velocity.ki", d.proposed.kiNmPerRad}};
             if (std::isfinite(d.position.recommendedPerS) && d.position.recommendedPerS > 0.0)
@@ -228,5 +228,5 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
         m_sessionId = *id;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

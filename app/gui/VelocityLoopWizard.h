@@ -30,7 +30,7 @@ namespace axistune {
 namespace widgets {
 class BodePlot;
 class CurvePlot;
-}  // namespace widgets
+} // namespace widgets
 namespace gui {
 
 class AppContext;
@@ -46,7 +46,7 @@ struct VelocityLoopData {
     QString axis;
     // Inertia rule.
     double jmKgm2 = 1e-3;
-    double omegaLHz = 24.0;  ///< ω_l/2π
+    double omegaLHz = 24.0; ///< ω_l/2π
     double k = 10.0;
     qint64 modelSession = 0;                       ///< two-inertia session the model came from (0: entered)
     std::optional<tuning::TwoInertiaParams> model; ///< the fitted model of that session
@@ -56,8 +56,8 @@ struct VelocityLoopData {
     double fminHz = 5.0, fmaxHz = 500.0, amplitudePct = 5.0;
     int points = 50;
     qint64 frfSession = 0;
-    std::optional<dsp::FrequencyResponse> measured;  ///< as measured (closed loop when "complementary")
-    std::optional<dsp::FrequencyResponse> plant;     ///< torque → motor velocity
+    std::optional<dsp::FrequencyResponse> measured; ///< as measured (closed loop when "complementary")
+    std::optional<dsp::FrequencyResponse> plant;    ///< torque → motor velocity
     // Loop as found on the drive.
     tuning::VelocityPi before{1.0, 50.0};
     double positionKpBefore = 0.0;
@@ -194,5 +194,5 @@ private:
     qint64 m_sessionId = 0;
 };
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

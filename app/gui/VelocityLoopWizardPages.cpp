@@ -2,9 +2,8 @@
 // Pages of the velocity/position-loop wizard (VelocityLoopWizard.h; docs/wizards/velocity-loop.md):
 // source and rule, design with prediction, verification. Method: spec/lost-motion-and-two-inertia.md
 // §2.8 (corrected 5.13), TI-5 §4.12 (margins), §4.11 (position gain).
-#include "app/gui/VelocityLoopWizard.h"
-
 #include "app/gui/AppContext.h"
+#include "app/gui/VelocityLoopWizard.h"
 #include "app/gui/WizardPages.h"
 #include "core/store/FrfCapture.h"
 #include "core/tuning/TwoInertiaPrediction.h"
@@ -37,7 +36,10 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kPositionGainMarginDb = 6.0;
 
-QString qs(const std::string& s) { return QString::fromStdString(s); }
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
 
 QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double v, int decimals, const QString& suffix,
                      const char* name)
@@ -126,7 +128,7 @@ QString overshootText(const StepTrace& s)
                        : QString::number(overshootPct(s), 'f', 1) + " %";
 }
 
-}  // namespace
+} // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Source
@@ -281,10 +283,11 @@ bool VelocityLoopSourcePage::validatePage()
 {
     m_d.axis = m_axis->currentText();
     m_d.method = m_frfMethod->isChecked() ? VelocityLoopData::Method::Frf : VelocityLoopData::Method::Inertia;
-    m_d.frfSource = m_session->isChecked() ? VelocityLoopData::FrfSource::Session : VelocityLoopData::FrfSource::Measure;
+    m_d.frfSource =
+        m_session->isChecked() ? VelocityLoopData::FrfSource::Session : VelocityLoopData::FrfSource::Measure;
     m_d.jmKgm2 = m_jm->value();
     if (m_d.model && std::abs(m_d.model->jmKgm2 - m_d.jmKgm2) > 1e-12 * m_d.jmKgm2)
-        m_d.model->jmKgm2 = m_d.jmKgm2;  // edited: the rule and the model use the entered J_m
+        m_d.model->jmKgm2 = m_d.jmKgm2; // edited: the rule and the model use the entered J_m
     m_d.omegaLHz = m_wl->value();
     m_d.k = m_k->value();
     m_d.crossoverHz = m_crossover->value();
@@ -310,7 +313,8 @@ bool VelocityLoopSourcePage::validatePage()
     }
     auto frf = store::frfFromCapture(pick->capture);
     if (!frf) {
-        m_note->setText(tr("Session %1, capture %2: %3").arg(m_d.frfSession).arg(qs(pick->name), qs(frf.error().detail)));
+        m_note->setText(
+            tr("Session %1, capture %2: %3").arg(m_d.frfSession).arg(qs(pick->name), qs(frf.error().detail)));
         return false;
     }
     m_d.measured = std::move(frf).value();
@@ -482,8 +486,8 @@ void VelocityLoopDesignPage::analyse()
                           tr("crossover %1 Hz").arg(d.marginsAfter.crossoverHz, 0, 'f', 1));
     m_bode->rescale();
     // Position gain on the model (with the proposed PI).
-    d.position = tuning::positionGain(model, d.proposed, tuning::FeedbackMode::Semi, std::nullopt, true,
-                                      kPositionGainMarginDb);
+    d.position =
+        tuning::positionGain(model, d.proposed, tuning::FeedbackMode::Semi, std::nullopt, true, kPositionGainMarginDb);
     // Step predictions before and after, on the model.
     const double t0 = 0.01 * d.stepDurationS;
     auto pb = tuning::predictVelocityStep(model, d.before, d.velocityPeriodS, d.stepRadS, t0, d.stepDurationS);
@@ -513,8 +517,10 @@ void VelocityLoopDesignPage::analyse()
     };
     const auto& mb = d.marginsBefore;
     const auto& ma = d.marginsAfter;
-    addRow(m_table, tr("K_P"), num(d.before.kpNmsPerRad, 5, tr("N·m·s/rad")), num(d.proposed.kpNmsPerRad, 5, tr("N·m·s/rad")));
-    addRow(m_table, tr("K_I"), num(d.before.kiNmPerRad, 5, tr("N·m/rad")), num(d.proposed.kiNmPerRad, 5, tr("N·m/rad")));
+    addRow(m_table, tr("K_P"), num(d.before.kpNmsPerRad, 5, tr("N·m·s/rad")),
+           num(d.proposed.kpNmsPerRad, 5, tr("N·m·s/rad")));
+    addRow(m_table, tr("K_I"), num(d.before.kiNmPerRad, 5, tr("N·m/rad")),
+           num(d.proposed.kiNmPerRad, 5, tr("N·m/rad")));
     addRow(m_table, tr("Gain crossover"), num(mb.crossoverHz, 4, "Hz"), num(ma.crossoverHz, 4, "Hz"));
     addRow(m_table, tr("Phase margin"), num(mb.phaseMarginDeg, 3, "°"), num(ma.phaseMarginDeg, 3, "°"));
     addRow(m_table, tr("Gain margin"), num(mb.gainMarginDb, 3, "dB"), num(ma.gainMarginDb, 3, "dB"));
@@ -522,19 +528,21 @@ void VelocityLoopDesignPage::analyse()
     addRow(m_table, tr("Step overshoot (predicted)"), overshootText(sb), overshootText(sa));
     if (!before.y.empty())
         addRow(m_table, tr("Step overshoot (measured)"), overshootText(before), tr("after applying"));
-    addRow(m_table, tr("Position gain K_p"), num(d.positionKpBefore, 4, "1/s"), num(d.position.recommendedPerS, 4, "1/s"));
+    addRow(m_table, tr("Position gain K_p"), num(d.positionKpBefore, 4, "1/s"),
+           num(d.position.recommendedPerS, 4, "1/s"));
     addRow(m_table, tr("Position gain stability limit"), QString(),
            std::isfinite(d.position.limitPerS)
                ? tr("%1 1/s at %2 Hz").arg(d.position.limitPerS, 0, 'g', 4).arg(d.position.limitFrequencyHz, 0, 'f', 1)
                : tr("none on the model"));
     m_table->resizeColumnsToContents();
-    QString status = d.rule + "\n" +
-                     tr("Position gain: recommended min(limit·10^(−%1/20), crossover·2π/5); %2.")
-                         .arg(kPositionGainMarginDb, 0, 'f', 0)
-                         .arg(rigid ? tr("rigid model J_m with a delay of 1.5 velocity periods — fit a two-inertia "
-                                         "model for the resonance")
-                                    : tr("two-inertia model of session %1 with a delay of 1.5 velocity periods")
-                                          .arg(d.modelSession));
+    QString status =
+        d.rule + "\n" +
+        tr("Position gain: recommended min(limit·10^(−%1/20), crossover·2π/5); %2.")
+            .arg(kPositionGainMarginDb, 0, 'f', 0)
+            .arg(rigid
+                     ? tr("rigid model J_m with a delay of 1.5 velocity periods — fit a two-inertia "
+                          "model for the resonance")
+                     : tr("two-inertia model of session %1 with a delay of 1.5 velocity periods").arg(d.modelSession));
     m_status->setText(status);
     model::ParameterValues v{{"velocity.kp", d.proposed.kpNmsPerRad}, {"velocity.ki", d.proposed.kiNmPerRad}};
     if (std::isfinite(d.position.recommendedPerS) && d.position.recommendedPerS > 0.0)
@@ -603,5 +611,5 @@ void VelocityLoopVerifyPage::initializePage()
                                   : tr("No step after applying: %1").arg(m_run->failure()));
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

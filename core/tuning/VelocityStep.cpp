@@ -10,7 +10,7 @@ namespace axistune::tuning {
 
 namespace {
 
-using State = std::array<double, 4>;  // θ_m, ω_m, θ_L, ω_L
+using State = std::array<double, 4>; // θ_m, ω_m, θ_L, ω_L
 
 State derivative(const TwoInertiaParams& p, bool rigid, double torque, const State& x)
 {
@@ -35,7 +35,7 @@ State rk4(const TwoInertiaParams& p, bool rigid, double torque, const State& x, 
     return y;
 }
 
-}  // namespace
+} // namespace
 
 Result<VelocityStepPrediction> predictVelocityStep(const TwoInertiaParams& p, const VelocityPi& pi, double periodS,
                                                    double stepRadS, double stepTimeS, double durationS)
@@ -76,4 +76,4 @@ Result<VelocityStepPrediction> predictVelocityStep(const TwoInertiaParams& p, co
     return out;
 }
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

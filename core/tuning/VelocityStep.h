@@ -16,11 +16,11 @@
 namespace axistune::tuning {
 
 struct VelocityStepPrediction {
-    std::vector<double> tS;            ///< one sample per velocity period, from 0
-    std::vector<double> commandRadS;   ///< the step command (0 before stepTimeS)
-    std::vector<double> motorVelRadS;  ///< motor velocity
-    std::vector<double> loadVelRadS;   ///< load velocity (= motor velocity when rigid)
-    std::vector<double> torqueNm;      ///< torque command
+    std::vector<double> tS;           ///< one sample per velocity period, from 0
+    std::vector<double> commandRadS;  ///< the step command (0 before stepTimeS)
+    std::vector<double> motorVelRadS; ///< motor velocity
+    std::vector<double> loadVelRadS;  ///< load velocity (= motor velocity when rigid)
+    std::vector<double> torqueNm;     ///< torque command
 };
 
 /// Step of `stepRadS` at `stepTimeS` over `durationS`. BadInput for non-positive inertia or period,
@@ -28,4 +28,4 @@ struct VelocityStepPrediction {
 Result<VelocityStepPrediction> predictVelocityStep(const TwoInertiaParams& p, const VelocityPi& pi, double periodS,
                                                    double stepRadS, double stepTimeS, double durationS);
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

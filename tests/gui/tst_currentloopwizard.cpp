@@ -12,7 +12,6 @@
 #include "app/gui/CurrentLoopWizard.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
-#include "tests/gui/GuiTestUtil.h"
 #include "widgets/CurvePlot.h"
 
 #include <QCheckBox>
@@ -26,15 +25,17 @@
 
 #include <cmath>
 
+#include "tests/gui/GuiTestUtil.h"
+
 using namespace axistune;
 using namespace axistune::gui;
 using axistune::testing::maybeScreenshot;
 using axistune::testing::waitUntil;
 
 namespace {
-constexpr double kKp = 35.75, kKpTol = 0.3;       // C-A5: 35.7–35.8 V/A
-constexpr double kKi = 1.025e5, kKiTol = 0.03;    // C-A5: 1.02–1.03e5 V/(A·s)
-constexpr double kRise = 98e-6, kRiseTol = 5e-6;  // C-A5: ≈ 98 µs
+constexpr double kKp = 35.75, kKpTol = 0.3;      // C-A5: 35.7–35.8 V/A
+constexpr double kKi = 1.025e5, kKiTol = 0.03;   // C-A5: 1.02–1.03e5 V/(A·s)
+constexpr double kRise = 98e-6, kRiseTol = 5e-6; // C-A5: ≈ 98 µs
 
 const nlohmann::json* result(const store::SessionRecord& rec, const std::string& name)
 {
@@ -43,7 +44,7 @@ const nlohmann::json* result(const store::SessionRecord& rec, const std::string&
             return &r.data;
     return nullptr;
 }
-}  // namespace
+} // namespace
 
 class TestCurrentLoopWizard : public QObject {
     Q_OBJECT
@@ -82,7 +83,8 @@ private slots:
             // Read from the drive: the preset's peak values.
             QCOMPARE(w.findChild<QDoubleSpinBox*>("clImax")->value(), 80.0);
             QCOMPARE(w.findChild<QDoubleSpinBox*>("clVmax")->value(), 282.8);
-            // Back-EMF at 300 min⁻¹ from the drive's k_t 0.50911 N·m/A = 1.5·0.33941 V·s/rad: 43.53 V(rms)/krpm → 13.06 V (C-A1).
+            // Back-EMF at 300 min⁻¹ from the drive's k_t 0.50911 N·m/A = 1.5·0.33941 V·s/rad: 43.53 V(rms)/krpm → 13.06
+            // V (C-A1).
             QVERIFY2(w.findChild<QLabel*>("clBackEmf")->text().contains("13.06"),
                      qPrintable(w.findChild<QLabel*>("clBackEmf")->text()));
             maybeScreenshot(&w, "current-loop-01-motor");
@@ -106,7 +108,8 @@ private slots:
             QCOMPARE(w.currentId(), int(CurrentLoopWizard::Apply));
             ApplyPage* apply = w.applyPage();
             apply->confirmation()->setChecked(true);
-            QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); }, 10000));
+            QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); },
+                              10000));
             maybeScreenshot(&w, "current-loop-05-apply");
             apply->applyButton()->click();
             QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
@@ -198,7 +201,7 @@ private slots:
         QVERIFY(atMax);
         w.next();
         QCOMPARE(w.currentId(), int(CurrentLoopWizard::Step));
-        w.next();  // not connected: straight to save
+        w.next(); // not connected: straight to save
         QCOMPARE(w.currentId(), int(CurrentLoopWizard::Save));
         auto rec = ctx.database()->loadSession(w.savedSessionId());
         QVERIFY(rec.ok());

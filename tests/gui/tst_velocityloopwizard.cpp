@@ -12,7 +12,6 @@
 #include "app/gui/WizardRegistry.h"
 #include "core/sim/MachineDefinition.h"
 #include "core/store/FrfCapture.h"
-#include "tests/gui/GuiTestUtil.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -26,6 +25,8 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+
+#include "tests/gui/GuiTestUtil.h"
 
 using namespace axistune;
 using namespace axistune::gui;
@@ -46,7 +47,7 @@ const nlohmann::json* result(const store::SessionRecord& rec, const std::string&
             return &r.data;
     return nullptr;
 }
-}  // namespace
+} // namespace
 
 class TestVelocityLoopWizard : public QObject {
     Q_OBJECT
@@ -124,7 +125,8 @@ private slots:
             QCOMPARE(w.currentId(), int(VelocityLoopWizard::Apply));
             ApplyPage* apply = w.applyPage();
             apply->confirmation()->setChecked(true);
-            QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); }, 10000));
+            QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); },
+                              10000));
             maybeScreenshot(&w, "velocity-loop-04-apply");
             apply->applyButton()->click();
             QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
@@ -191,7 +193,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         w.findChild<QRadioButton*>("vlFrfMethod")->setChecked(true);
-        QVERIFY(w.findChild<QRadioButton*>("vlFromSession")->isChecked());  // offline: no measurement
+        QVERIFY(w.findChild<QRadioButton*>("vlFromSession")->isChecked()); // offline: no measurement
         QComboBox* sessions = w.sourcePage()->frfSessions();
         const int idx = sessions->findData(QVariant::fromValue<qint64>(*frfId));
         QVERIFY(idx >= 0);
@@ -215,7 +217,8 @@ private slots:
         auto rec = ctx.database()->loadSession(w.savedSessionId());
         QVERIFY(rec.ok());
         QCOMPARE(rec->inputs["method"].get<std::string>(), std::string("margins"));
-        QVERIFY(std::abs((*result(*rec, "proposal"))["velocity_kp_Nms_per_rad"].get<double>() - wantKp) <= 1e-3 * wantKp);
+        QVERIFY(std::abs((*result(*rec, "proposal"))["velocity_kp_Nms_per_rad"].get<double>() - wantKp) <=
+                1e-3 * wantKp);
     }
 };
 

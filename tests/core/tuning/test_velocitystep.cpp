@@ -5,9 +5,8 @@
 // over-damped with cosh/sinh and λ = √(σ² − c). A short period approaches the continuous loop.
 #include "core/tuning/VelocityStep.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 using namespace axistune::tuning;
 
@@ -27,7 +26,7 @@ double analytic(double b, double c, double t)
 void compareRigid(double j, VelocityPi pi, double tol)
 {
     TwoInertiaParams p;
-    p.jmKgm2 = j;  // K = 0: rigid
+    p.jmKgm2 = j; // K = 0: rigid
     const double period = 2e-6;
     auto r = predictVelocityStep(p, pi, period, 1.0, 0.0, 0.1);
     ASSERT_TRUE(r.ok()) << r.error().detail;
@@ -39,7 +38,7 @@ void compareRigid(double j, VelocityPi pi, double tol)
     EXPECT_LT(worst, tol);
 }
 
-}  // namespace
+} // namespace
 
 TEST(VelocityStep, RigidUnderDampedMatchesAnalytic)
 {
@@ -63,13 +62,13 @@ TEST(VelocityStep, TwoInertiaSettlesToTheCommandOnBothSides)
     EXPECT_EQ(r->tS.size(), 4001U);
     EXPECT_NEAR(r->motorVelRadS.back(), 2.0, 1e-3);
     EXPECT_NEAR(r->loadVelRadS.back(), 2.0, 1e-3);
-    EXPECT_DOUBLE_EQ(r->motorVelRadS[39], 0.0);  // before the step at 10 ms
+    EXPECT_DOUBLE_EQ(r->motorVelRadS[39], 0.0); // before the step at 10 ms
 }
 
 TEST(VelocityStep, RefusesBadInput)
 {
     TwoInertiaParams p;
-    EXPECT_FALSE(predictVelocityStep(p, {1.0, 1.0}, 1e-3, 1.0, 0.0, 0.1).ok());  // J_m = 0
+    EXPECT_FALSE(predictVelocityStep(p, {1.0, 1.0}, 1e-3, 1.0, 0.0, 0.1).ok()); // J_m = 0
     p.jmKgm2 = 1e-3;
     EXPECT_FALSE(predictVelocityStep(p, {1.0, 1.0}, 0.0, 1.0, 0.0, 0.1).ok());
     EXPECT_FALSE(predictVelocityStep(p, {NAN, 1.0}, 1e-3, 1.0, 0.0, 0.1).ok());
