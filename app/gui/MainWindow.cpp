@@ -3,7 +3,9 @@
 
 #include "app/gui/AppContext.h"
 #include "app/gui/ConnectDialog.h"
+#include "app/gui/HistoryView.h"
 #include "app/gui/LogPanel.h"
+#include "app/gui/NcExportDialog.h"
 #include "app/gui/ParameterInspector.h"
 #include "app/gui/SessionReview.h"
 #include "app/gui/SettingsDialog.h"
@@ -147,6 +149,8 @@ void MainWindow::buildMenus()
     m_wizardsMenu->setObjectName("wizardsMenu");
     m_sessionsMenu = menuBar()->addMenu(QString());
     m_reviewAction = m_sessionsMenu->addAction(QString(), this, [this] { showSessionReview(); });
+    m_historyAction = m_sessionsMenu->addAction(QString(), this, [this] { showHistory(*m_ctx, this); });
+    m_ncExportAction = m_sessionsMenu->addAction(QString(), this, [this] { showNcExportDialog(*m_ctx, this); });
     m_settingsMenu = menuBar()->addMenu(QString());
     m_prefsAction = m_settingsMenu->addAction(QString(), this, &MainWindow::showSettings);
     m_helpMenu = menuBar()->addMenu(QString());
@@ -180,6 +184,8 @@ void MainWindow::retranslateUi()
     m_wizardsMenu->setTitle(tr("&Wizards"));
     m_sessionsMenu->setTitle(tr("&Sessions"));
     m_reviewAction->setText(tr("&Review…"));
+    m_historyAction->setText(tr("&History…"));
+    m_ncExportAction->setText(tr("Export NC &parameters…"));
     m_settingsMenu->setTitle(tr("Se&ttings"));
     m_prefsAction->setText(tr("&Preferences…"));
     m_helpMenu->setTitle(tr("&Help"));

@@ -113,6 +113,8 @@ private:
     QAction* m_disconnectAction = nullptr;
     QAction* m_quitAction = nullptr;
     QAction* m_reviewAction = nullptr;
+    QAction* m_historyAction = nullptr;
+    QAction* m_ncExportAction = nullptr;
     QAction* m_prefsAction = nullptr;
     QAction* m_aboutAction = nullptr;
     std::vector<QAction*> m_wizardActions;

@@ -4,12 +4,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/SessionReviewView.h"
 
-// The report of a session comes from the "reports" part (ReportDialog.h: showSessionReport); the
-// Report… button exists only where that part is built.
-#if __has_include("app/gui/ReportDialog.h")
 #include "app/gui/ReportDialog.h"
-#define AXISTUNE_HAS_SESSION_REPORT 1
-#endif
 
 #include <QComboBox>
 #include <QEvent>
@@ -62,7 +57,6 @@ SessionReview::SessionReview(AppContext& ctx, QWidget* parent) : QWidget(parent)
     m_overlay->setObjectName("overlayButton");
     buttons->addWidget(m_open);
     buttons->addWidget(m_overlay);
-#ifdef AXISTUNE_HAS_SESSION_REPORT
     m_report = new QPushButton(this);
     m_report->setObjectName("reportButton");
     buttons->addWidget(m_report);
@@ -71,7 +65,6 @@ SessionReview::SessionReview(AppContext& ctx, QWidget* parent) : QWidget(parent)
         if (!ids.isEmpty())
             showSessionReport(m_ctx, ids.front(), this);
     });
-#endif
     buttons->addStretch(1);
     lay->addLayout(buttons);
 
