@@ -8,8 +8,8 @@
 //
 // Simulations: "linear" (sim::Nonlinearities all off), "noise" (current-detection noise of the
 // preset only: quantization, friction, inductance drop, lost motion off), "noise_friction"
-// (noise and Coulomb friction). The preset's encoder quantization hides the kilohertz modes for
-// either method (docs/frequency-response-sim.md) and is off in every case.
+// (noise and Coulomb friction). Encoder quantization is off in every case (the figures date from the
+// former 3.6e6 counts/rev encoder, which hid the kilohertz modes; the preset now has 2^29).
 // AXISTUNE_BENCH_DUMP=1 prints every line to stderr: f, dB error, phase error, valid, σ_H/|H|, |T| [dB].
 #include "core/device/SimulatedDrive.h"
 #include "core/dsp/InjectionHold.h"
