@@ -1,6 +1,186 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="ja">
 <context>
+    <name>CurrentLoopWizard</name>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="109" />
+        <source>overshoot %1 %, 10–90 % rise time %2 µs</source>
+        <translation>オーバーシュート %1 %、10–90 % 立ち上がり時間 %2 µs</translation>
+    </message>
+</context>
+<context>
+    <name>DriveController</name>
+    <message>
+        <location filename="../app/gui/DriveController.cpp" line="79" />
+        <location filename="../app/gui/DriveController.cpp" line="95" />
+        <location filename="../app/gui/DriveController.cpp" line="114" />
+        <location filename="../app/gui/DriveController.cpp" line="150" />
+        <source>Not connected</source>
+        <translation>未接続</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DriveController.cpp" line="132" />
+        <source>Read-back of %1 on axis %2 gave %3 instead of %4</source>
+        <translation>軸 %2 の %1 の読み出し値が %4 ではなく %3 でした</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DriveController.cpp" line="159" />
+        <source>Aborted by the user</source>
+        <translation>ユーザーにより中止されました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DriveController.cpp" line="180" />
+        <source>The test ended: %1</source>
+        <translation>テストが終了しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>FrfConfigPage</name>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="54" />
+        <source>The drive's ratings or trace rate are unknown.</source>
+        <translation>サーボアンプの定格またはトレース周期が不明です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="61" />
+        <source>The current-loop period is unknown.</source>
+        <translation>電流ループ周期が不明です。</translation>
+    </message>
+</context>
+<context>
+    <name>FrfResultPage</name>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="90" />
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="396" />
+        <source>the open loop L = T/(1−T) of the measured T</source>
+        <translation>測定した T の開ループ L = T/(1−T)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="397" />
+        <source>the measured response</source>
+        <translation>測定した応答</translation>
+    </message>
+</context>
+<context>
+    <name>HistoryView</name>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="103" />
+        <source>Resonance %1</source>
+        <translation>共振 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="121" />
+        <source>Notch %1 centre</source>
+        <translation>ノッチ %1 中心周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="124" />
+        <source>A applied</source>
+        <translation>A 適用値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="127" />
+        <source>B applied</source>
+        <translation>B 適用値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="150" />
+        <source>A identified</source>
+        <translation>A 同定値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="154" />
+        <source>B identified</source>
+        <translation>B 同定値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="177" />
+        <source>Circularity measured</source>
+        <translation>真円度 測定値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="181" />
+        <source>Circularity after compensation</source>
+        <translation>補正後の真円度</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="258" />
+        <source>Resonance frequency</source>
+        <translation>共振周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="260" />
+        <source>Notch centre (applied)</source>
+        <translation>ノッチ中心周波数 (適用値)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="262" />
+        <source>Lost motion A</source>
+        <translation>ロストモーション A</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="264" />
+        <source>Lost motion B</source>
+        <translation>ロストモーション B</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="266" />
+        <source>Circularity</source>
+        <translation>真円度</translation>
+    </message>
+</context>
+<context>
+    <name>NotchProposePage</name>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="63" />
+        <source>Slot %1 at %2 Hz: resonance %3 dB above its baseline, −3 dB width %4 Hz, open-loop gain %5 dB. Depth %6 = the smaller of %7 (peak back to its baseline) and %8 (open-loop gain down to %9 dB). Digital −3 dB width %10 Hz = resonance width / depth (the notch zeros on the mode's poles), kept between %4 Hz and %11 Hz; drive width parameter %12 Hz (pre-warped at %13 Hz).</source>
+        <translation>スロット %1、%2 Hz: 共振はベースラインより %3 dB 高く、−3 dB 帯域幅 %4 Hz、開ループゲイン %5 dB。深さ %6 = %7 (ピークをベースラインまで下げる) と %8 (開ループゲインを %9 dB まで下げる) の小さい方。ディジタルの −3 dB 帯域幅 %10 Hz = 共振の帯域幅 / 深さ (ノッチの零点をモードの極に置く)、%4 Hz から %11 Hz の範囲に制限; サーボアンプの帯域幅パラメータ %12 Hz (%13 Hz でプリワープ)。</translation>
+    </message>
+</context>
+<context>
+    <name>NotchWizard</name>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="84" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="91" />
+        <source>%1 dB at %2 Hz</source>
+        <translation>%1 dB (%2 Hz)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="85" />
+        <source>no phase crossover in the band</source>
+        <translation>帯域内に位相交差なし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="88" />
+        <source>%1° at %2 Hz</source>
+        <translation>%1° (%2 Hz)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="89" />
+        <source>no gain crossover in the band</source>
+        <translation>帯域内にゲイン交差なし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="97" />
+        <source>Gain margin</source>
+        <translation>ゲイン余裕</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="98" />
+        <source>Phase margin</source>
+        <translation>位相余裕</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="99" />
+        <source>Peak sensitivity</source>
+        <translation>感度関数のピーク</translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <location filename="../app/gui/ParameterText.cpp" line="14" />
@@ -194,127 +374,5121 @@
     </message>
 </context>
 <context>
-    <name>axistune::gui::MainWindow</name>
+    <name>PlotExport</name>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="39" />
-        <source>AxisTune</source>
-        <translation>AxisTune</translation>
+        <location filename="../widgets/PlotExport.cpp" line="54" />
+        <source>%1: unknown image type '%2' (use .png, .svg or .pdf)</source>
+        <translation>%1: 不明な画像形式 '%2' (.png、.svg または .pdf を使用してください)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="40" />
-        <source>&amp;Machine</source>
-        <translation>機械(&amp;M)</translation>
+        <location filename="../widgets/PlotExport.cpp" line="56" />
+        <source>%1: the folder %2 does not exist</source>
+        <translation>%1: フォルダ %2 が存在しません</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="41" />
-        <source>&amp;Connect…</source>
-        <translation>接続(&amp;C)…</translation>
+        <location filename="../widgets/PlotExport.cpp" line="58" />
+        <source>%1: negative image size %2×%3</source>
+        <translation>%1: 画像サイズ %2×%3 が負です</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="43" />
-        <source>&amp;Quit</source>
-        <translation>終了(&amp;Q)</translation>
+        <location filename="../widgets/PlotExport.cpp" line="73" />
+        <source>%1: the existing file cannot be replaced</source>
+        <translation>%1: 既存のファイルを置き換えられません</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="47" />
-        <source>Machine / axis</source>
-        <translation>機械 / 軸</translation>
+        <location filename="../widgets/PlotExport.cpp" line="84" />
+        <source>%1: could not write the image (is the folder writable and the disk not full?)</source>
+        <translation>%1: 画像を書き込めませんでした (フォルダの書き込み権限とディスクの空き容量を確認してください)</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="164" />
+        <source>%1: no stage.json given and the capture names no simulated machine/axis (metadata 'machine=' and 'axis=')</source>
+        <translation>%1: stage.json の指定がなく、計測データにもシミュレーション機と軸の記載がありません (メタデータ 'machine=' と 'axis=')</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="51" />
-        <source>Parameter</source>
-        <translation>パラメータ</translation>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="170" />
+        <source>axis parameters of %1 %2</source>
+        <translation>%1 %2 の軸パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="51" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="187" />
+        <source>%1: needs the columns t_s, current_A (or torque_Nm), motor_vel_rad_s, motor_pos_m, table_pos_m</source>
+        <translation>%1: 列 t_s、current_A (または torque_Nm)、motor_vel_rad_s、motor_pos_m、table_pos_m が必要です</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="51" />
+        <source>limit depth</source>
+        <translation>限界切込み深さ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="47" />
+        <source>[%1 values] %2 … %3</source>
+        <translation>[%1 個の値] %2 … %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="63" />
         <source>Key</source>
         <translation>キー</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="51" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="63" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="51" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="516" />
+        <source>none</source>
+        <translation>なし</translation>
+    </message>
+</context>
+<context>
+    <name>SessionReport</name>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="53" />
+        <source>yes</source>
+        <translation>はい</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="54" />
+        <source>no</source>
+        <translation>いいえ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="122" />
+        <source>completed</source>
+        <translation>完了</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="124" />
+        <source>ABORTED</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="126" />
+        <source>FAILED</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="135" />
+        <source>Read from the drive</source>
+        <translation>サーボアンプから読み出し</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="137" />
+        <source>Proposed</source>
+        <translation>提案値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="139" />
+        <source>Applied</source>
+        <translation>適用値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="141" />
+        <source>Imported</source>
+        <translation>読み込み</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="213" />
+        <source>Plot "%1" could not be rendered.</source>
+        <translation>プロット "%1" を描画できませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="230" />
+        <source>Session %1: %2</source>
+        <translation>セッション %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="234" />
+        <source>This session was %1. Reason: %2</source>
+        <translation>このセッションは %1 でした。理由: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="236" />
+        <source>not recorded</source>
+        <translation>記録なし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="239" />
+        <source>(none)</source>
+        <translation>(なし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="240" />
+        <source>Machine</source>
+        <translation>機械</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="241" />
+        <location filename="../app/gui/Report.cpp" line="374" />
+        <source>Axis</source>
+        <translation>軸</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="242" />
+        <source>Kind</source>
+        <translation>種類</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="243" />
+        <source>Status</source>
+        <translation>状態</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="246" />
+        <source>Started</source>
+        <translation>開始</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="247" />
+        <source>Finished</source>
+        <translation>終了</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="248" />
+        <source>Operator</source>
+        <translation>作業者</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="250" />
+        <source>Notes</source>
+        <translation>メモ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="252" />
+        <source>AxisTune version</source>
+        <translation>AxisTune バージョン</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="258" />
+        <source>Plots</source>
+        <translation>プロット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="268" />
+        <source>FRF "%1" is unreadable: %2</source>
+        <translation>周波数応答 "%1" を読み取れません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="278" />
+        <source>Frequency response: %1</source>
+        <translation>周波数応答: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="288" />
+        <source>Capture: %1</source>
+        <translation>計測データ: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="293" />
+        <source>No plots recorded.</source>
+        <translation>記録されたプロットはありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="320" />
+        <source>Ball-bar traces: %1</source>
+        <translation>ボールバーの軌跡: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="338" />
+        <source>Result: %1</source>
+        <translation>結果: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="345" />
+        <source>Parameter sets</source>
+        <translation>パラメータセット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="349" />
+        <source>axis %1, %2</source>
+        <translation>軸 %1、%2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="354" />
+        <location filename="../app/gui/Report.cpp" line="375" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="355" />
+        <source>Description</source>
+        <translation>説明</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="356" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="370" />
+        <source>Journal of writes</source>
+        <translation>書き込み履歴</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="373" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="376" />
+        <source>Old value</source>
+        <translation>旧値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="377" />
+        <source>New value</source>
+        <translation>新値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="383" />
+        <source>unknown</source>
+        <translation>不明</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="398" />
+        <source>Results</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="404" />
+        <source>Identified models</source>
+        <translation>同定したモデル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="407" />
+        <source>axis %1</source>
+        <translation>軸 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="410" />
+        <source>Verification</source>
+        <translation>検証</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="415" />
+        <source>No verification was recorded.</source>
+        <translation>検証は記録されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="428" />
+        <source>Arrays (values): %1</source>
+        <translation>配列 (値の数): %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="439" />
+        <location filename="../app/gui/Report.cpp" line="501" />
+        <source>AxisTune session %1</source>
+        <translation>AxisTune セッション %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="441" />
+        <source>Inputs</source>
+        <translation>入力</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="447" />
+        <source>Report made by AxisTune from session %1 of the store.</source>
+        <translation>データベースのセッション %1 から AxisTune が作成したレポートです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="483" />
+        <location filename="../app/gui/Report.cpp" line="489" />
+        <source>Cannot write %1: %2</source>
+        <translation>%1 を書き込めません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="507" />
+        <source>Cannot write %1</source>
+        <translation>%1 を書き込めません</translation>
+    </message>
+</context>
+<context>
+    <name>TestRunPage</name>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="53" />
+        <source>velocity step</source>
+        <translation>速度ステップ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="55" />
+        <source>jog</source>
+        <translation>ジョグ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="57" />
+        <source>position hold</source>
+        <translation>位置保持</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="59" />
+        <source>frequency response (%1)</source>
+        <translation>周波数応答 (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>VelocityLoopWizard</name>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="127" />
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+</context>
+<context>
+    <name>Wizards</name>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="21" />
+        <source>Current loop…</source>
+        <translation>電流ループ…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizard.cpp" line="30" />
+        <source>Frequency response…</source>
+        <translation>周波数応答…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="46" />
+        <source>Lost motion…</source>
+        <translation>ロストモーション…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="32" />
+        <source>Machining (chatter)…</source>
+        <translation>加工 (びびり振動)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="26" />
+        <source>Notch filters…</source>
+        <translation>ノッチフィルタ…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="26" />
+        <source>Two-inertia vibration suppression…</source>
+        <translation>2慣性系の振動抑制…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="24" />
+        <source>Velocity and position loop…</source>
+        <translation>速度ループと位置ループ…</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::AppContext</name>
+    <message>
+        <location filename="../app/gui/AppContext.cpp" line="18" />
+        <source>Could not open the store %1: %2</source>
+        <translation>データベース %1 を開けませんでした: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AppContext.cpp" line="24" />
+        <source>Store: %1</source>
+        <translation>データベース: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AppContext.cpp" line="60" />
+        <source>The session was not saved: no store is open</source>
+        <translation>セッションは保存されませんでした: データベースが開かれていません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AppContext.cpp" line="71" />
+        <source>Saving the session failed: %1</source>
+        <translation>セッションの保存に失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AppContext.cpp" line="74" />
+        <source>Session %1 saved (%2, %3)</source>
+        <translation>セッション %1 を保存しました (%2、%3)</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::ApplyPage</name>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="310" />
+        <location filename="../app/gui/WizardPages.cpp" line="323" />
+        <source>Apply</source>
+        <translation>適用</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="311" />
+        <source>The parameters below change on the drive. Every value is read back after the write.</source>
+        <translation>以下のパラメータをサーボアンプで変更します。書き込み後にすべての値を読み出して確認します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <source>Key</source>
+        <translation>キー</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <source>Device</source>
+        <translation>サーボアンプ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <source>Proposed</source>
+        <translation>提案値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <source>Read back</source>
+        <translation>読み出し値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="313" />
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="51" />
-        <source>Limits</source>
-        <translation>範囲</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="318" />
+        <source>Write these values to the drive</source>
+        <translation>これらの値をサーボアンプに書き込む</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="59" />
-        <source>Not connected</source>
-        <translation>未接続</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="319" />
+        <source>Do not apply now (keep the proposal in the session only)</source>
+        <translation>今は適用しない (提案はセッションにのみ保存)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="73" />
-        <source>Connection failed</source>
-        <translation>接続に失敗しました</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="324" />
+        <source>Restore previous values</source>
+        <translation>以前の値に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="74" />
-        <source>Could not start the simulated machine: %1</source>
-        <translation>シミュレーション機を起動できませんでした: %1</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="363" />
+        <source>Not connected: the proposal can only be kept in the session.</source>
+        <translation>未接続: 提案はセッションに保存するだけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="79" />
-        <source>Connected: simulated machine %1</source>
-        <translation>接続中: シミュレーション機 %1</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="366" />
+        <source>Reading the device values…</source>
+        <translation>サーボアンプの値を読み出し中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="106" />
-        <source>Reading the parameters of axis %1 failed</source>
-        <translation>軸 %1 のパラメータの読み出しに失敗しました</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="388" />
+        <source>Changed</source>
+        <translation>変更あり</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="120" />
-        <source>%1 … %2%3</source>
-        <translation>%1 … %2%3</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="402" />
+        <source>The device values are not read yet: wait, then Apply.</source>
+        <translation>サーボアンプの値をまだ読み出していません。少し待ってから適用してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="122" />
-        <source> (read-only)</source>
-        <translation> (読み出し専用)</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="406" />
+        <source>Writing…</source>
+        <translation>書き込み中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="125" />
-        <source>Axis %1: %2 parameters read from the drive</source>
-        <translation>軸 %1: サーボアンプから %2 個のパラメータを読み出しました</translation>
+        <location filename="../app/gui/WizardPages.cpp" line="415" />
+        <source>Restoring the previous values…</source>
+        <translation>以前の値に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="135" />
+        <location filename="../app/gui/WizardPages.cpp" line="438" />
+        <location filename="../app/gui/WizardPages.cpp" line="448" />
+        <source>Reading the parameters failed: %1</source>
+        <translation>パラメータの読み出しに失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="452" />
+        <source>Changed values are highlighted. Confirm, then Apply.</source>
+        <translation>変更される値は強調表示されています。確認してから適用してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="457" />
+        <source>The write failed; the drive keeps its values: %1</source>
+        <translation>書き込みに失敗しました。サーボアンプの値は変わっていません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="464" />
+        <source>Applied and read back.</source>
+        <translation>適用し、読み出して確認しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="468" />
+        <source>Axis %1: %2 parameters applied and read back</source>
+        <translation>軸 %1: %2 個のパラメータを適用し、読み出して確認しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="474" />
+        <source>Restoring failed: %1</source>
+        <translation>元に戻せませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="481" />
+        <source>The previous values are back on the drive.</source>
+        <translation>サーボアンプの値を以前の値に戻しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="485" />
+        <source>Axis %1: previous parameters restored</source>
+        <translation>軸 %1: 以前のパラメータに戻しました</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::CircleRunner</name>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="109" />
+        <source>Reading the parameters of axis %1 failed: %2</source>
+        <translation>軸 %1 のパラメータの読み出しに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="119" />
+        <source>Not connected: circle tests need a connection to a machine.</source>
+        <translation>未接続: 円弧補間テストには機械との接続が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="121" />
+        <source>Machine %1 is not a simulated machine: the drive link has no circle test (two axes together). Measure with a ball bar and import the files.</source>
+        <translation>機械 %1 はシミュレーション機ではありません: サーボアンプとの通信には (2 軸同時の) 円弧補間テストがありません。ボールバーで測定してファイルを読み込んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="142" />
+        <source>Reading the parameters of both plane axes</source>
+        <translation>平面の 2 軸のパラメータを読み出し中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="183" />
+        <source>Aborted by the operator after %1 of %2 circles.</source>
+        <translation>%2 回中 %1 回の円弧の後、作業者により中止されました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="198" />
+        <source>Circle %1 of %2</source>
+        <translation>円弧 %1 / %2</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::ConnectDialog</name>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="109" />
+        <location filename="../app/gui/ConnectDialog.cpp" line="120" />
         <source>Connect</source>
         <translation>接続</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="135" />
-        <source>Built-in simulated machine:</source>
-        <translation>内蔵シミュレーション機:</translation>
+        <location filename="../app/gui/ConnectDialog.cpp" line="110" />
+        <source>Built-in simulated machine</source>
+        <translation>内蔵シミュレーション機</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="111" />
+        <source>Drive over Modbus TCP</source>
+        <translation>Modbus TCP 経由のサーボアンプ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="112" />
+        <source>Machine preset:</source>
+        <translation>機械のプリセット:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="113" />
+        <source>Noise seed:</source>
+        <translation>ノイズのシード:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="114" />
+        <source>Host:</source>
+        <translation>ホスト:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="115" />
+        <source>Port:</source>
+        <translation>ポート:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="116" />
+        <source>Response timeout:</source>
+        <translation>応答タイムアウト:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="117" />
+        <source>Register map:</source>
+        <translation>レジスタマップ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="118" />
+        <source>Unit ids: one per axis, from the register map (axis i answers on unit id base + i; see docs/modbus.md).</source>
+        <translation>ユニット ID: 軸ごとに 1 つ、レジスタマップによる (軸 i はユニット ID 基準値 + i で応答; docs/modbus.md 参照)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="170" />
+        <source>Enter the host name or address of the drive.</source>
+        <translation>サーボアンプのホスト名またはアドレスを入力してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="175" />
+        <source>Connecting to %1 …</source>
+        <translation>%1 に接続中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ConnectDialog.cpp" line="189" />
+        <source>The connection failed: %1</source>
+        <translation>接続に失敗しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::CurrentLoopDesignPage</name>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="331" />
+        <source>Current loop: design</source>
+        <translation>電流ループ: 設計</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="333" />
+        <source>For each PI ratio α the gains with the shortest rise time inside the dead-time stability boundary (gain margin), the voltage envelope and the overshoot limit; α* has the shortest rise time of all.</source>
+        <translation>各 PI率 α について、むだ時間の安定限界 (ゲイン余裕)、電圧の包絡線、オーバーシュート制限の内側で立ち上がり時間が最短となるゲイン; α* はその中で最も立ち上がり時間が短い α です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="340" />
+        <source>Show the boundaries of every α</source>
+        <translation>すべての α の境界を表示</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="342" />
+        <source>Chosen α:</source>
+        <translation>選択した α:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="350" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="363" />
+        <source>k_p</source>
+        <translation>k_p</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="350" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="363" />
+        <source>V/A</source>
+        <translation>V/A</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="350" />
+        <source>k_i</source>
+        <translation>k_i</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="350" />
+        <source>V/(A·s)</source>
+        <translation>V/(A·s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="354" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
+        <source>α</source>
+        <translation>α</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="354" />
+        <source>Rise time 10–90 %</source>
+        <translation>立ち上がり時間 10–90 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="365" />
+        <source>k_p [V/A]</source>
+        <translation>k_p [V/A]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="365" />
+        <source>k_i [V/(A·s)]</source>
+        <translation>k_i [V/(A·s)]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
+        <source>Rise time [µs]</source>
+        <translation>立ち上がり時間 [µs]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
+        <source>Overshoot [%]</source>
+        <translation>オーバーシュート [%]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="357" />
+        <source>Active constraints</source>
+        <translation>有効な制約</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="363" />
+        <source>Current |i|</source>
+        <translation>電流 |i|</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="365" />
+        <source>Current [A]</source>
+        <translation>電流 [A]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="365" />
+        <source>Factor</source>
+        <translation>係数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="368" />
+        <source>Rise time against α</source>
+        <translation>α に対する立ち上がり時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="369" />
+        <source>α table</source>
+        <translation>α の表</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="370" />
+        <source>Gain schedule</source>
+        <translation>ゲインスケジュール</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="398" />
+        <source>Designing…</source>
+        <translation>設計中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="439" />
+        <source>The design failed: %1</source>
+        <translation>設計に失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="456" />
+        <source> (optimum α*)</source>
+        <translation> (最適 α*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="463" />
+        <source>infeasible</source>
+        <translation>実現不可</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="466" />
+        <source>Rise time of the optimum per α</source>
+        <translation>α ごとの最適点の立ち上がり時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="467" />
+        <source>α* = %1</source>
+        <translation>α* = %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="469" />
+        <source>Optimum α* = %1: k_p = %2 V/A, k_i = %3 V/(A·s), rise time %4 µs (delay-free design model).</source>
+        <translation>最適 α* = %1: k_p = %2 V/A、k_i = %3 V/(A·s)、立ち上がり時間 %4 µs (むだ時間なしの設計モデル)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="486" />
+        <source>Stability boundary (gain margin %1 dB)</source>
+        <translation>安定限界 (ゲイン余裕 %1 dB)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="496" />
+        <source>Voltage envelope α = %1</source>
+        <translation>電圧の包絡線 α = %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="498" />
+        <source>Overshoot %1 % α = %2</source>
+        <translation>オーバーシュート %1 % α = %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="503" />
+        <source>α = %1: k_p %2 V/A, k_i %3 V/(A·s)</source>
+        <translation>α = %1: k_p %2 V/A、k_i %3 V/(A·s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="519" />
+        <source>k_p over current (k_i in the same ratio)</source>
+        <translation>電流に対する k_p (k_i も同じ比率)</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::CurrentLoopMotorPage</name>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="122" />
+        <source>Current loop: motor data</source>
+        <translation>電流ループ: モータデータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="123" />
+        <source>Enter the motor data or read them from the drive's motor parameters. Maximum current and maximum voltage must use the same convention (both peak or both rms): only their ratio enters the voltage constraint.</source>
+        <translation>モータデータを入力するか、サーボアンプのモータパラメータから読み出してください。最大電流と最大電圧は同じ表し方 (両方ピーク値または両方実効値) にしてください: 電圧制約にはその比だけが入ります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="130" />
+        <source>Read from drive</source>
+        <translation>サーボアンプから読み出し</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="132" />
+        <source>Axis:</source>
+        <translation>軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="142" />
+        <source>Motor</source>
+        <translation>モータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="151" />
+        <source> V(rms)/1000 min⁻¹</source>
+        <translation> V(rms)/1000 min⁻¹</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="152" />
+        <source> min⁻¹</source>
+        <translation> min⁻¹</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="153" />
+        <source>Armature resistance R_a:</source>
+        <translation>電機子抵抗 R_a:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="154" />
+        <source>q-axis inductance L_q:</source>
+        <translation>q 軸インダクタンス L_q:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="155" />
+        <source>Maximum current I_max:</source>
+        <translation>最大電流 I_max:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="156" />
+        <source>Maximum voltage V_max:</source>
+        <translation>最大電圧 V_max:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="157" />
+        <source>Inductance drop at I_max δ:</source>
+        <translation>I_max でのインダクタンス低下 δ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="158" />
+        <source>Rated current (0: not given):</source>
+        <translation>定格電流 (0: 指定なし):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="159" />
+        <source>Back-EMF constant, line-to-line (0: not given):</source>
+        <translation>誘起電圧定数、線間 (0: 指定なし):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="160" />
+        <source>Contouring speed:</source>
+        <translation>輪郭加工速度:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="162" />
+        <source>Design</source>
+        <translation>設計</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="168" />
+        <source>Dead time τ of the design:</source>
+        <translation>設計のむだ時間 τ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="169" />
+        <source>Gain margin:</source>
+        <translation>ゲイン余裕:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="170" />
+        <source>Step overshoot limit:</source>
+        <translation>ステップ応答のオーバーシュート制限:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="171" />
+        <source>Current ripple of the voltage check (of I_max):</source>
+        <translation>電圧チェックの電流リプル (I_max に対する比):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="192" />
+        <source>Reading the motor parameters failed: %1</source>
+        <translation>モータパラメータの読み出しに失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="216" />
+        <source>Read from axis %1 of the drive (peak values): maximum current, maximum voltage, rated current, current-loop period %2 µs, dead time %3 µs; the back-EMF constant from the torque constant (k_e = k_t/1.5, amplitude-invariant dq). The drive does not offer R_a, L_q and δ: enter them from the motor data sheet.</source>
+        <translation>サーボアンプの軸 %1 から読み出しました (ピーク値): 最大電流、最大電圧、定格電流、電流ループ周期 %2 µs、むだ時間 %3 µs; 誘起電圧定数はトルク定数から (k_e = k_t/1.5、振幅不変の dq 変換)。サーボアンプは R_a、L_q、δ を提供しないため、モータのデータシートから入力してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="237" />
+        <source>Not connected: enter the motor data (defaults: the rotary motor of Table 2.2, rms values). Apply needs a connection.</source>
+        <translation>未接続: モータデータを入力してください (初期値: 表 2.2 の回転形モータ、実効値)。適用には接続が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="288" />
+        <source>Back-EMF check at the contouring speed %1 min⁻¹: %2 V(rms, line-to-line) = %3 V peak per phase, %4 % of V_max = %5 V (peak comparison; with rms values %6 %). The design neglects the back-EMF, which holds when it is small against V_max.</source>
+        <translation>輪郭加工速度 %1 min⁻¹ での誘起電圧の確認: %2 V (実効値、線間) = 相あたりピーク %3 V、V_max = %5 V の %4 % (ピーク値で比較; 実効値では %6 %)。設計は誘起電圧を無視しており、これは V_max に比べて小さいときに成り立ちます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="298" />
+        <source>No back-EMF constant given: the back-EMF at the contouring speed is not checked.</source>
+        <translation>誘起電圧定数の指定なし: 輪郭加工速度での誘起電圧は確認しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="301" />
+        <source>Not usable: %1</source>
+        <translation>使用できません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::CurrentLoopSavePage</name>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="34" />
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="36" />
+        <source>The session holds the motor data and settings, the α table, the chosen α and gains with the rise time, the gain schedule, the step responses, what was applied with its journal, and the read-back.</source>
+        <translation>セッションには、モータデータと設定、α の表、選択した α とゲインおよび立ち上がり時間、ゲインスケジュール、ステップ応答、適用した内容とその履歴、読み出し値が保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="55" />
+        <source>α = %1, k_p = %2 V/A, k_i = %3 V/(A·s), rise time %4 µs (delay-free design).</source>
+        <translation>α = %1、k_p = %2 V/A、k_i = %3 V/(A·s)、立ち上がり時間 %4 µs (むだ時間なしの設計)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="61" />
+        <source>Not connected: the gains were not applied.</source>
+        <translation>未接続: ゲインは適用されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="63" />
+        <source>Not applied: the proposal is kept in the session.</source>
+        <translation>未適用: 提案はセッションに保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="65" />
+        <source>Applied to axis %1 and read back.</source>
+        <translation>軸 %1 に適用し、読み出して確認しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="66" />
+        <source>Saved as session %1.</source>
+        <translation>セッション %1 として保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="67" />
+        <source>The session was not saved (no store open).</source>
+        <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::CurrentLoopStepPage</name>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="552" />
+        <source>Current loop: step responses</source>
+        <translation>電流ループ: ステップ応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="553" />
+        <source>The delay-free design model against the prediction with the drive's current-loop period (zero-order hold) and dead time.</source>
+        <translation>むだ時間なしの設計モデルと、サーボアンプの電流ループ周期 (0 次ホールド) とむだ時間を含めた予測の比較。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="558" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="558" />
+        <source>Current / command</source>
+        <translation>電流 / 指令</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="574" />
+        <source>Delay-free design</source>
+        <translation>むだ時間なしの設計</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="575" />
+        <source>Prediction: period %1 µs + dead time %2 µs</source>
+        <translation>予測: 周期 %1 µs + むだ時間 %2 µs</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="581" />
+        <source>Delay-free: %1. With the delay: %2.
+No measured current step: the drive offers no current-step test (its tests are velocity step, jog, hold and frequency response). A velocity step is not a measurement of the current loop — the current settles within about one velocity-loop period of the trace — so none is shown here.</source>
+        <translation>むだ時間なし: %1。むだ時間あり: %2。
+電流ステップの実測なし: サーボアンプに電流ステップのテストがありません (テストは速度ステップ、ジョグ、位置保持、周波数応答)。速度ステップは電流ループの測定になりません — 電流はトレースの速度ループ周期 1 回程度で整定するため — ここには表示しません。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::CurrentLoopVerifyPage</name>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="606" />
+        <source>Current loop: verification</source>
+        <translation>電流ループ: 検証</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="607" />
+        <source>The gains read back from the drive and the step predicted with them (period and dead time of the drive), against the design.</source>
+        <translation>サーボアンプから読み出したゲインと、そのゲインで予測したステップ応答 (サーボアンプの周期とむだ時間) を設計と比較します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="612" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="612" />
+        <source>Current / command</source>
+        <translation>電流 / 指令</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="623" />
+        <source>Reading back failed: %1</source>
+        <translation>読み出しに失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="647" />
+        <source>Not applied: nothing to verify.</source>
+        <translation>未適用: 検証するものはありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="650" />
+        <source>Reading back…</source>
+        <translation>読み出し中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="665" />
+        <source>Design (delay-free, proposed gains)</source>
+        <translation>設計 (むだ時間なし、提案ゲイン)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="667" />
+        <source>Prediction with the read-back gains</source>
+        <translation>読み出したゲインでの予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="674" />
+        <source>Read back: k_p %1 V/A, k_i %2 V/(A·s), α %3 — %4.
+Predicted step with them: %5.
+No measured current step: the drive offers no current-step test.</source>
+        <translation>読み出し値: k_p %1 V/A、k_i %2 V/(A·s)、α %3 — %4。
+そのゲインで予測したステップ応答: %5。
+電流ステップの実測なし: サーボアンプに電流ステップのテストがありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="679" />
+        <source>as proposed</source>
+        <translation>提案どおり</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="679" />
+        <source>NOT as proposed</source>
+        <translation>提案と異なる</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::CurrentLoopWizard</name>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="73" />
+        <source>Current loop</source>
+        <translation>電流ループ</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::DriveController</name>
+    <message>
+        <location filename="../app/gui/DriveController.cpp" line="223" />
+        <source>Connection lost: %1</source>
+        <translation>接続が切れました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DriveController.cpp" line="264" />
+        <source>Connected: %1</source>
+        <translation>接続中: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DriveController.cpp" line="265" />
+        <source>Connection to %1 failed: %2</source>
+        <translation>%1 への接続に失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DriveController.cpp" line="269" />
+        <source>Not connected</source>
+        <translation>未接続</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::FrfConfigPage</name>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="203" />
+        <source>Method and band</source>
+        <translation>方式と帯域</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="204" />
+        <source>How the axis is excited and which frequencies are measured.</source>
+        <translation>軸の加振方法と測定する周波数。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="209" />
+        <source>Multi-sweep sine stream (valid up to the trace rate)</source>
+        <translation>複数回掃引の正弦波ストリーム (トレース周波数まで有効)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="210" />
+        <source>Conventional sine stream (valid up to half the trace rate)</source>
+        <translation>従来の正弦波ストリーム (トレース周波数の半分まで有効)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="211" />
+        <source>PRBS with Welch averaging and coherence (up to half the trace rate)</source>
+        <translation>PRBS、Welch 平均とコヒーレンス (トレース周波数の半分まで)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="212" />
+        <source>Multisine, all lines at once (valid up to the trace rate)</source>
+        <translation>マルチサイン、全周波数を同時に (トレース周波数まで有効)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="213" />
+        <source>Method:</source>
+        <translation>方式:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="219" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="226" />
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="220" />
+        <source>Lowest frequency:</source>
+        <translation>最低周波数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="227" />
+        <source>Highest frequency:</source>
+        <translation>最高周波数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="232" />
+        <source>Frequencies (log-spaced):</source>
+        <translation>周波数点数 (対数間隔):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="257" />
+        <source>Estimated motion time: %1 s (settling included).</source>
+        <translation>推定動作時間: %1 s (整定時間を含む)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="258" />
+        <source>&lt;span style='color:#b00000'&gt;The drive would refuse this test: %1&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;サーボアンプはこのテストを拒否します: %1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="287" />
+        <source>Trace rate fs = %1 Hz. The multi-sweep and multisine methods measure up to fs; the conventional sine stream and PRBS only up to fs/2 = %2 Hz (points above are marked not valid).</source>
+        <translation>トレース周波数 fs = %1 Hz。複数回掃引とマルチサインは fs まで測定できます。従来の正弦波ストリームと PRBS は fs/2 = %2 Hz までです (それより上の点は無効と表示)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="295" />
+        <source>The trace rate of the drive is unknown.</source>
+        <translation>サーボアンプのトレース周波数が不明です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="309" />
+        <source>Estimating the motion time…</source>
+        <translation>動作時間を推定中…</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::FrfResultPage</name>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="324" />
+        <source>Frequency response</source>
+        <translation>周波数応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="325" />
+        <source>The measured closed velocity loop, where it is valid, and the resonances found.</source>
+        <translation>測定した速度閉ループ (有効な範囲) と、見つかった共振。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="341" />
+        <source>Frequency [Hz]</source>
+        <translation>周波数 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="341" />
+        <source>Peak [dB]</source>
+        <translation>ピーク [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="341" />
+        <source>Width (−3 dB) [Hz]</source>
+        <translation>帯域幅 (−3 dB) [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="342" />
+        <source>Open-loop gain [dB]</source>
+        <translation>開ループゲイン [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="378" />
+        <source>No frequency response was measured.</source>
+        <translation>周波数応答は測定されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="381" />
+        <source>Measured</source>
+        <translation>測定値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="384" />
+        <source>Analysing…</source>
+        <translation>解析中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="449" />
+        <source>%1 of %2 points valid.</source>
+        <translation>%2 点中 %1 点が有効。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="451" />
+        <source>Trace rate fs = %1 Hz.</source>
+        <translation>トレース周波数 fs = %1 Hz。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="453" />
+        <source>No resonance list: %1</source>
+        <translation>共振リストなし: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="455" />
+        <source>No resonance found in %1.</source>
+        <translation>%1 に共振は見つかりませんでした。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/FrfWizardPages.cpp" line="457" />
+        <source>%n resonance(s) found in %1:</source>
+        <translation>
+            <numerusform>%1 に %n 個の共振が見つかりました:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="468" />
+        <source>Only one −3 dB crossing inside the band: twice the half width.</source>
+        <translation>帯域内の −3 dB 交差が 1 つだけ: 半値幅の 2 倍。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::FrfSafetyPage</name>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="112" />
+        <source>The axis holds velocity 0 in velocity mode while a small torque disturbance is added to the velocity-controller output. The axis vibrates with small amplitude at each test frequency; it does not travel. Abort stops the excitation at once and restores the parameters.</source>
+        <translation>軸は速度制御モードで速度 0 を保持し、速度制御器の出力に小さなトルク外乱を加えます。軸は各試験周波数で小さな振幅で振動しますが、移動はしません。中止すると加振は直ちに止まり、パラメータは元に戻ります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="124" />
+        <source> % of rated torque</source>
+        <translation> % (定格トルク比)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="125" />
+        <source>Excitation amplitude:</source>
+        <translation>加振振幅:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="174" />
+        <source>&lt;span style='color:#b00000'&gt;Refused: the drive allows at most %1 % of rated torque.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;拒否: サーボアンプが許すのは定格トルクの %1 % までです。&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="181" />
+        <source>%1 % of rated torque (at most %2 %).</source>
+        <translation>定格トルクの %1 % (最大 %2 %)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="184" />
+        <source>%1 % of the rated torque %2 N·m = %3 N·m peak of the injected torque (at most %4 %).</source>
+        <translation>定格トルク %2 N·m の %1 % = 注入トルクのピーク %3 N·m (最大 %4 %)。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::FrfSavePage</name>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="481" />
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="482" />
+        <source>Finish stores the measurement as a session of this machine.</source>
+        <translation>完了すると、測定をこの機械のセッションとして保存します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="487" />
+        <source>e.g. before notch tuning, table empty</source>
+        <translation>例: ノッチ調整前、テーブル上は空</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="488" />
+        <source>Note:</source>
+        <translation>メモ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="494" />
+        <source>Save and open in the notch wizard</source>
+        <translation>保存してノッチフィルタのウィザードで開く</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="496" />
+        <source>Stores the session, then proposes notch filters for the resonances of this measurement.</source>
+        <translation>セッションを保存し、この測定の共振に対するノッチフィルタを提案します。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::FrfWizard</name>
+    <message>
+        <location filename="../app/gui/FrfWizard.cpp" line="37" />
+        <source>Frequency response</source>
+        <translation>周波数応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizard.cpp" line="89" />
+        <source>The drive returned no frequency response.</source>
+        <translation>サーボアンプから周波数応答が返されませんでした。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/FrfWizard.cpp" line="101" />
+        <source>Finish stores: the settings (axis %1, %2, %3–%4 Hz, %5 points, %6 % of rated torque), the measured frequency response (%7 points) and the %n resonance(s) found.</source>
+        <translation>
+            <numerusform>完了で保存する内容: 設定 (軸 %1、%2、%3–%4 Hz、%5 点、定格トルクの %6 %)、測定した周波数応答 (%7 点)、見つかった %n 個の共振。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizard.cpp" line="215" />
+        <source>The wizard was closed during the run.</source>
+        <translation>実行中にウィザードが閉じられました。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::HistoryView</name>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="294" />
+        <source>History</source>
+        <translation>履歴</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="301" />
+        <source>Session number</source>
+        <translation>セッション番号</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="302" />
+        <source>Days since the first session</source>
+        <translation>最初のセッションからの日数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="303" />
+        <source>Reload</source>
+        <translation>再読み込み</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="305" />
+        <source>Machine:</source>
+        <translation>機械:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="307" />
+        <source>Axis:</source>
+        <translation>軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="309" />
+        <source>x axis:</source>
+        <translation>横軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="323" />
+        <source>Quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="323" />
+        <location filename="../app/gui/HistoryView.cpp" line="413" />
+        <source>Session</source>
+        <translation>セッション</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="323" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="368" />
+        <source>(no axis)</source>
+        <translation>(軸なし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="400" />
+        <source>History: %1</source>
+        <translation>履歴: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="413" />
+        <source>Time since the first session</source>
+        <translation>最初のセッションからの時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/HistoryView.cpp" line="413" />
+        <source>d</source>
+        <translation>日</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::LogPanel</name>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="37" />
+        <source>Log</source>
+        <translation>ログ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="38" />
+        <source>Parameter journal</source>
+        <translation>パラメータ変更履歴</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="39" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="39" />
+        <source>Axis</source>
+        <translation>軸</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="39" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="39" />
+        <source>Old (SI)</source>
+        <translation>旧値 (SI)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="39" />
+        <source>New (SI)</source>
+        <translation>新値 (SI)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="39" />
+        <source>Session</source>
+        <translation>セッション</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="63" />
+        <source>Reading the journal of %1 failed: %2</source>
+        <translation>%1 の変更履歴の読み出しに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LogPanel.cpp" line="74" />
+        <source>unknown</source>
+        <translation>不明</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::LostMotionCirclePage</name>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="221" />
+        <source>Circle tests</source>
+        <translation>円弧補間テスト</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="222" />
+        <source>Both plane axes move on circles at the table positions chosen. Abort stops after the circle that is running.</source>
+        <translation>平面の 2 軸が、選んだテーブル位置で円弧を描いて動きます。中止すると実行中の円弧の後で停止します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="232" />
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="235" />
+        <source>Run again</source>
+        <translation>再実行</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="255" />
+        <source>Completed: %1 circles.</source>
+        <translation>完了: 円弧 %1 回。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="256" />
+        <source>Aborted: %1</source>
+        <translation>中止: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="256" />
+        <source>Failed: %1</source>
+        <translation>失敗: %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::LostMotionDiagnosticsPage</name>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="275" />
+        <source>Ball-bar diagnostics</source>
+        <translation>ボールバー診断</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="276" />
+        <source>Measured traces over the nominal circle (deviation magnified), reversal markers, and every finding with the rule that decided it.</source>
+        <translation>基準円上の測定軌跡 (偏差を拡大)、反転位置の印、各診断結果とその判定ルール。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="282" />
+        <source>Finding</source>
+        <translation>診断結果</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="282" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="282" />
+        <source>Rule</source>
+        <translation>ルール</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="318" />
+        <source>Analysing %1 traces…</source>
+        <translation>%1 本の軌跡を解析中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="364" />
+        <source>%1 = %2 mm</source>
+        <translation>%1 = %2 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="366" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="367" />
+        <source>X rev.</source>
+        <translation>X 反転</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="368" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="369" />
+        <source>Y rev.</source>
+        <translation>Y 反転</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="375" />
+        <source>not computed</source>
+        <translation>未計算</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="380" />
+        <source>%1 traces, %2 reversal events of axis %3.</source>
+        <translation>軌跡 %1 本、軸 %3 の反転 %2 回。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="384" />
+        <source>Analysis failed: %1</source>
+        <translation>解析に失敗しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::LostMotionFitPage</name>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="395" />
+        <source>A/B fit and predicted compensation</source>
+        <translation>A/B の同定と補正の予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="396" />
+        <source>Δx = (A + B·x)·ΔT (spec eq. 4.12): each reversal gives a point Δx/ΔT at its spring length x; the line is A + B·x. The torque-synchronous compensation (A + B·x)·T_m is predicted on the measured trace, next to the conventional step of the mean lost motion.</source>
+        <translation>Δx = (A + B·x)·ΔT (仕様 式 4.12): 各反転がばね長 x での点 Δx/ΔT を与え、直線が A + B·x です。トルク同期補正 (A + B·x)·T_m を測定軌跡上で予測し、平均ロストモーションの従来のステップ補正と並べて示します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="407" />
+        <source>Spring length x</source>
+        <translation>ばね長 x</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="407" />
+        <source>Δx/ΔT</source>
+        <translation>Δx/ΔT</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="413" />
+        <source>Trace</source>
+        <translation>軌跡</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="413" />
+        <source>Circularity measured / proposed / conventional</source>
+        <translation>真円度 測定 / 提案法 / 従来法</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="414" />
+        <source>Cut-in measured / proposed / conventional</source>
+        <translation>食い込み 測定 / 提案法 / 従来法</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="436" />
+        <source>reversals</source>
+        <translation>反転</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="438" />
+        <source>A + B·x</source>
+        <translation>A + B·x</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="442" />
+        <source>A = %1 µm/(N·m), B = %2 µm/(N·m·m) (%3, %4 points, residual rms %5 µm).</source>
+        <translation>A = %1 µm/(N·m)、B = %2 µm/(N·m·m) (%3、%4 点、残差 rms %5 µm)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="449" />
+        <source>Standard errors: A ±%1, B ±%2.</source>
+        <translation>標準誤差: A ±%1、B ±%2。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="451" />
+        <source>Warning: %1</source>
+        <translation>警告: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="452" />
+        <source>Rule: least squares on the regressors [ΔT, x·ΔT] over all reversals (two points: the general two-point form); conventional step for comparison x_bl = %1 µm (mean measured lost motion).</source>
+        <translation>ルール: すべての反転について回帰変数 [ΔT, x·ΔT] の最小二乗法 (2 点のときは一般的な 2 点式); 比較用の従来のステップ補正 x_bl = %1 µm (測定したロストモーションの平均)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="461" />
+        <source>measured</source>
+        <translation>測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="462" />
+        <source>predicted, proposed</source>
+        <translation>予測、提案法</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="463" />
+        <source>predicted, conventional</source>
+        <translation>予測、従来法</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="465" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="466" />
+        <source>%1 rev.</source>
+        <translation>%1 反転</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="472" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="474" />
+        <source>%1 / %2 / %3 µm</source>
+        <translation>%1 / %2 / %3 µm</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::LostMotionSavePage</name>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="57" />
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="58" />
+        <source>The session holds the traces, the diagnostics, A and B with their points, the proposal, what was applied with its journal, and the verification.</source>
+        <translation>セッションには、軌跡、診断、A と B およびその点、提案、適用した内容とその履歴、検証が保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="77" />
+        <source>Axis %1: A = %2 µm/(N·m), B = %3 µm/(N·m·m), x₀ = %4 mm.</source>
+        <translation>軸 %1: A = %2 µm/(N·m)、B = %3 µm/(N·m·m)、x₀ = %4 mm。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="83" />
+        <source>Not connected: applying the compensation and verifying it with a new circle need a connection to the machine.</source>
+        <translation>未接続: 補正の適用と新しい円弧での検証には機械との接続が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="86" />
+        <source>Not applied: the proposal is kept in the session.</source>
+        <translation>未適用: 提案はセッションに保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="88" />
+        <source>Applied; reversal step %1 µm before, %2 µm after.</source>
+        <translation>適用しました。反転時の段差 前 %1 µm、後 %2 µm。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="91" />
+        <source>Saved as session %1.</source>
+        <translation>セッション %1 として保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="92" />
+        <source>The session was not saved (no store open).</source>
+        <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::LostMotionSourcePage</name>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="75" />
+        <source>Lost motion: ball-bar traces</source>
+        <translation>ロストモーション: ボールバーの軌跡</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="76" />
+        <source>Import ball-bar files or run circle tests at two or more table positions. The spring length x of each reversal is x₀ + s·(circle centre ± R) along the identified axis.</source>
+        <translation>ボールバーのファイルを読み込むか、2 か所以上のテーブル位置で円弧補間テストを実行してください。各反転のばね長 x は、同定する軸方向の x₀ + s·(円の中心 ± R) です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="80" />
+        <source>Import ball-bar files (CSV)</source>
+        <translation>ボールバーのファイルを読み込む (CSV)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="81" />
+        <source>Run circle tests on the machine</source>
+        <translation>機械で円弧補間テストを実行</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="98" />
+        <source>Add files…</source>
+        <translation>ファイルを追加…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="99" />
+        <source>Clear</source>
+        <translation>クリア</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="124" />
+        <source>Circle radius R:</source>
+        <translation>円の半径 R:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="125" />
+        <source>Feed:</source>
+        <translation>送り速度:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="126" />
+        <source>Circle centres along the identified axis [mm]:</source>
+        <translation>同定する軸方向の円の中心 [mm]:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="132" />
+        <source>Model of the axis</source>
+        <translation>軸のモデル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="136" />
+        <source>First plane axis (X)</source>
+        <translation>平面の第 1 軸 (X)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="136" />
+        <source>Second plane axis (Y)</source>
+        <translation>平面の第 2 軸 (Y)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="150" />
+        <source>Half-width of the zone around each reversal left out of the step fit: the friction spike must not count as lost motion (±8° at 1000 mm/min, R 50 mm).</source>
+        <translation>段差の同定から除外する各反転周りの範囲の半幅: 摩擦による突起をロストモーションに数えないため (1000 mm/min、R 50 mm で ±8°)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="152" />
+        <source>Axis to identify:</source>
+        <translation>同定する軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="153" />
+        <source>Screw length offset x₀ (coupling to load point at table 0):</source>
+        <translation>ねじ長さのオフセット x₀ (テーブル位置 0 でのカップリングから負荷点まで):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="154" />
+        <source>Sign s (spring length grows with the coordinate: +1):</source>
+        <translation>符号 s (座標とともにばね長が増える: +1):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="155" />
+        <source>Reversal zone ±:</source>
+        <translation>反転範囲 ±:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="161" />
+        <source>Ball-bar files</source>
+        <translation>ボールバーのファイル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="161" />
+        <source>Ball-bar CSV (*.csv);;All files (*)</source>
+        <translation>ボールバー CSV (*.csv);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="186" />
+        <source>%1 — R %2 mm, centre (%3, %4) mm, %5 samples</source>
+        <translation>%1 — R %2 mm、中心 (%3, %4) mm、%5 サンプル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="203" />
+        <source>Circle tests run on %1 with the drive's current parameters; both plane axes move.</source>
+        <translation>円弧補間テストは %1 で現在のサーボアンプのパラメータのまま実行します。平面の 2 軸が動きます。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::LostMotionVerifyPage</name>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="301" />
+        <source>Verify with a new circle</source>
+        <translation>新しい円弧で検証</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="302" />
+        <source>A circle at the last table position with the compensation applied: measured against the prediction and against the trace before.</source>
+        <translation>補正を適用して最後のテーブル位置で円弧を描き、予測および適用前の軌跡と比較します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="311" />
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="319" />
+        <source>Quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="319" />
+        <source>Before</source>
+        <translation>適用前</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="319" />
+        <source>Predicted</source>
+        <translation>予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="319" />
+        <source>Measured</source>
+        <translation>測定値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="332" />
+        <source>Aborted: %1</source>
+        <translation>中止: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="332" />
+        <source>Failed: %1</source>
+        <translation>失敗: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="351" />
+        <source>The compensation was not applied: nothing to verify.</source>
+        <translation>補正は適用されていません: 検証するものはありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="357" />
+        <source>Verify with a new ball-bar measurement and compare it in the session review.</source>
+        <translation>新しいボールバー測定で検証し、セッションの確認画面で比較してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="391" />
+        <source>before</source>
+        <translation>適用前</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="392" />
+        <source>predicted</source>
+        <translation>予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="393" />
+        <source>measured after</source>
+        <translation>適用後の測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="395" />
+        <source>Reversal step of %1</source>
+        <translation>%1 の反転時の段差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="397" />
+        <source>Circularity</source>
+        <translation>真円度</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="400" />
+        <source>The reversal step fell from %1 to %2. If the result is worse than predicted, restore the previous values on the apply page (Back).</source>
+        <translation>反転時の段差は %1 から %2 に減りました。予測より悪い場合は、適用ページ (戻る) で以前の値に戻してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="403" />
+        <source>The reversal step did not fall (%1 → %2): check x₀ and the sign, or restore the previous values on the apply page (Back).</source>
+        <translation>反転時の段差は減りませんでした (%1 → %2): x₀ と符号を確認するか、適用ページ (戻る) で以前の値に戻してください。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::LostMotionWizard</name>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="98" />
+        <source>Lost motion</source>
+        <translation>ロストモーション</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="105" />
+        <source>Circle tests: both axes of the plane move together on circles (radius and centres as set on the first page) at the programmed feed, one circle per table position, and once more for the verification.</source>
+        <translation>円弧補間テスト: 平面の 2 軸が一緒に、指定した送り速度で円弧を描きます (半径と中心は最初のページの設定)。テーブル位置ごとに 1 回、検証でもう 1 回。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::MachiningAdvicePage</name>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="256" />
+        <source>Spindle speed advice</source>
+        <translation>主軸回転数の提案</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="257" />
+        <source>From the chatter frequency heard or measured at the current speed: the stable pocket where the tooth passing frequency divides the chatter frequency by a whole number.</source>
+        <translation>現在の回転数で聞こえた、または測定したびびり振動周波数から: 刃通過周波数がびびり振動周波数を整数で割り切る安定ポケット。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="261" />
+        <source>e.g. 1450</source>
+        <translation>例: 1450</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="262" />
+        <source>Estimate from a capture…</source>
+        <translation>計測データから推定…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="272" />
+        <source>Spindle speed</source>
+        <translation>主軸回転数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="272" />
+        <source>min⁻¹</source>
+        <translation>min⁻¹</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="272" />
+        <source>Limit depth</source>
+        <translation>限界切込み深さ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="272" />
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="274" />
+        <source>Chatter frequency [Hz]</source>
+        <translation>びびり振動周波数 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="283" />
+        <source>entered</source>
+        <translation>入力値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="287" />
+        <source>Capture with chatter</source>
+        <translation>びびり振動を含む計測データ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="288" />
+        <source>Capture CSV (*.csv);;All files (*)</source>
+        <translation>計測データ CSV (*.csv);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="319" />
+        <source>%1: no signal channel or no sample rate (t_s or fs_Hz)</source>
+        <translation>%1: 信号の列またはサンプリング周波数 (t_s または fs_Hz) がありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="336" />
+        <source>%1: no chatter frequency estimated%2</source>
+        <translation>%1: びびり振動周波数を推定できませんでした%2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="345" />
+        <source>Estimated %1 Hz from channel %2 of %3 (Kalman AR model, last half of the record).</source>
+        <translation>%3 の列 %2 から %1 Hz と推定しました (カルマン AR モデル、記録の後半)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="360" />
+        <source>current</source>
+        <translation>現在</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="363" />
+        <source>Enter the chatter frequency (or estimate it from a capture) for the advice; this step is optional.</source>
+        <translation>提案のためにびびり振動周波数を入力してください (または計測データから推定)。この手順は省略できます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="366" />
+        <source>Chatter frequency: '%1' is not a number</source>
+        <translation>びびり振動周波数: '%1' は数値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="376" />
+        <source>lobe %1: %2 min⁻¹</source>
+        <translation>ローブ %1: %2 min⁻¹</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="378" />
+        <source>Rule: the tooth passing frequency f_TPE = N_t·n/60 = %1 × %2 / 60 = %3 Hz; the chatter frequency is %4 × f_TPE. Rounded, lobe number ρ = %5. The stable pocket puts a whole number of chatter waves in one tooth period: n = 60·f_chat/(ρ·N_t) = 60 × %6 / (%5 × %1) = %7 min⁻¹.%8</source>
+        <translation>ルール: 刃通過周波数 f_TPE = N_t·n/60 = %1 × %2 / 60 = %3 Hz; びびり振動周波数は %4 × f_TPE。丸めてローブ番号 ρ = %5。安定ポケットでは 1 刃周期に整数個のびびり波が入ります: n = 60·f_chat/(ρ·N_t) = 60 × %6 / (%5 × %1) = %7 min⁻¹。%8</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="385" />
+        <source> Neighbouring pockets: %1.</source>
+        <translation> 隣の安定ポケット: %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="386" />
+        <source>advised %1 min⁻¹</source>
+        <translation>推奨 %1 min⁻¹</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="389" />
+        <source>The lobe diagram gives %1 mm there.</source>
+        <translation>安定限界線図ではそこで %1 mm です。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::MachiningAnalysisPage</name>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="245" />
+        <source>Analysis of a cut</source>
+        <translation>切削の解析</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="246" />
+        <source>Load a captured cut or simulate this cut on the vmc X axis: the cutting force estimated by the observer and the chatter intervals found by the correlation detector.</source>
+        <translation>計測した切削を読み込むか、vmc の X 軸でこの切削をシミュレーションします: 切削力オブザーバで推定した切削力と、相関検出で見つかったびびり振動の区間。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="248" />
+        <source>Load capture CSV…</source>
+        <translation>計測データ CSV を読み込む…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="250" />
+        <source>Simulate this cut (vmc X)</source>
+        <translation>この切削をシミュレーション (vmc X)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="257" />
+        <source>empty: the axis parameters of the simulated machine named in the capture</source>
+        <translation>空欄: 計測データに記載のシミュレーション機の軸パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="258" />
+        <source>stage.json…</source>
+        <translation>stage.json…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
+        <source>Start [s]</source>
+        <translation>開始 [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
+        <source>End [s]</source>
+        <translation>終了 [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
+        <source>Frequency [Hz]</source>
+        <translation>周波数 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
+        <source>Score</source>
+        <translation>スコア</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="277" />
+        <source>duration [s]</source>
+        <translation>時間 [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="281" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="306" />
+        <source>Stage</source>
+        <translation>ステージ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="299" />
+        <source>Captured cut</source>
+        <translation>計測した切削</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="299" />
+        <source>Capture CSV (*.csv);;All files (*)</source>
+        <translation>計測データ CSV (*.csv);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="306" />
+        <source>Stage JSON (*.json);;All files (*)</source>
+        <translation>ステージ JSON (*.json);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="329" />
+        <source>Working…</source>
+        <translation>処理中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="356" />
+        <source>The tool or cut data are not valid.</source>
+        <translation>工具または切削のデータが正しくありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="357" />
+        <source>duration: a number of seconds in (0.3, 10]</source>
+        <translation>時間: (0.3, 10] の秒数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="361" />
+        <source>simulated cut on vmc X, %1 min⁻¹, %2 mm</source>
+        <translation>vmc X でのシミュレーション切削、%1 min⁻¹、%2 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="383" />
+        <source>Not analysed: %1</source>
+        <translation>未解析: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="389" />
+        <source>cutting force (in the capture)</source>
+        <translation>切削力 (計測データ内)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="390" />
+        <source>cutting force (observer)</source>
+        <translation>切削力 (切削力オブザーバ)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="394" />
+        <source>tool vibration x</source>
+        <translation>工具振動 x</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="412" />
+        <source>chatter detected</source>
+        <translation>びびり振動検出</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="412" />
+        <source>flag</source>
+        <translation>フラグ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="416" />
+        <source>%1 (stage: %2). </source>
+        <translation>%1 (ステージ: %2)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="418" />
+        <source>No chatter detection: the stage has no coupling stiffness.</source>
+        <translation>びびり振動検出なし: ステージに結合剛性がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="420" />
+        <source>No chatter detected (vibration mode %1 Hz, %2 % of the valid windows flagged).</source>
+        <translation>びびり振動は検出されませんでした (振動モード %1 Hz、有効な窓の %2 % でフラグ)。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="423" />
+        <source>CHATTER: %n interval(s) detected (vibration mode %1 Hz).</source>
+        <translation>
+            <numerusform>びびり振動: %n 区間を検出 (振動モード %1 Hz)。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::MachiningCutPage</name>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="221" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="262" />
+        <source>Cutting data</source>
+        <translation>切削条件</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="222" />
+        <source>The cutter, the material's specific cutting forces, the engagement and the current operating point.</source>
+        <translation>工具、材料の比切削抵抗、切込み、現在の加工条件。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="241" />
+        <source>Down milling (climb)</source>
+        <translation>ダウンカット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="242" />
+        <source>Up milling (conventional)</source>
+        <translation>アップカット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="253" />
+        <source>Time steps per tooth period of the semi-discretization: 40 gives the limit depth within ~8 %, 80 within ~3 %, 160 within ~1 % (docs/machining.md).</source>
+        <translation>半離散化の 1 刃周期あたりの時間ステップ数: 40 で限界切込み深さは約 8 % 以内、80 で約 3 % 以内、160 で約 1 % 以内 (docs/machining.md)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="259" />
+        <source>Load cut.json…</source>
+        <translation>cut.json を読み込む…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="262" />
+        <source>Cut JSON (*.json);;All files (*)</source>
+        <translation>切削 JSON (*.json);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="268" />
+        <source>Teeth</source>
+        <translation>刃数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="269" />
+        <source>Tangential specific cutting force K_t [GPa = kN/mm²]</source>
+        <translation>接線方向の比切削抵抗 K_t [GPa = kN/mm²]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="270" />
+        <source>Radial specific cutting force K_r [GPa = kN/mm²]</source>
+        <translation>半径方向の比切削抵抗 K_r [GPa = kN/mm²]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="271" />
+        <source>Radial immersion a_e/D (0–1]</source>
+        <translation>半径方向切込み比 a_e/D (0–1]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="272" />
+        <source>Milling</source>
+        <translation>切削方向</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="273" />
+        <source>Spindle speed [min⁻¹]</source>
+        <translation>主軸回転数 [min⁻¹]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="274" />
+        <source>Axial depth of cut [mm]</source>
+        <translation>軸方向切込み深さ [mm]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="277" />
+        <source>to</source>
+        <translation>〜</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="279" />
+        <source>step</source>
+        <translation>刻み</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="281" />
+        <source>Lobe diagram speeds [min⁻¹]</source>
+        <translation>安定限界線図の回転数 [min⁻¹]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="282" />
+        <source>Steps per tooth period</source>
+        <translation>1 刃周期あたりのステップ数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="317" />
+        <source>K_t</source>
+        <translation>K_t</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="318" />
+        <source>K_r</source>
+        <translation>K_r</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="319" />
+        <source>radial immersion</source>
+        <translation>半径方向切込み比</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="320" />
+        <source>spindle speed</source>
+        <translation>主軸回転数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="321" />
+        <source>axial depth</source>
+        <translation>軸方向切込み深さ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="322" />
+        <source>lowest speed</source>
+        <translation>最低回転数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="323" />
+        <source>highest speed</source>
+        <translation>最高回転数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="324" />
+        <source>speed step</source>
+        <translation>回転数の刻み</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="330" />
+        <source>%1: '%2' is not a number</source>
+        <translation>%1: '%2' は数値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="340" />
+        <source>spindle speed must be &gt; 0 min⁻¹</source>
+        <translation>主軸回転数は 0 min⁻¹ より大きくしてください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="342" />
+        <source>axial depth must be ≥ 0 mm</source>
+        <translation>軸方向切込み深さは 0 mm 以上にしてください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="345" />
+        <source>lobe diagram speeds: </source>
+        <translation>安定限界線図の回転数: </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="349" />
+        <source>lobe diagram speeds: %1 speeds; at most 2000 (a larger step)</source>
+        <translation>安定限界線図の回転数: %1 点; 最大 2000 点です (刻みを大きくしてください)</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::MachiningLobesPage</name>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="63" />
+        <source>Stability lobes</source>
+        <translation>安定限界線図</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="64" />
+        <source>Limit axial depth against spindle speed by semi-discretization: below the curve the cut is stable, above it chatters.</source>
+        <translation>半離散化法による主軸回転数に対する限界軸方向切込み深さ: 曲線より下では安定、上ではびびり振動が発生します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="68" />
+        <source>Spindle speed</source>
+        <translation>主軸回転数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="68" />
+        <source>min⁻¹</source>
+        <translation>min⁻¹</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="68" />
+        <source>Limit depth</source>
+        <translation>限界切込み深さ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="68" />
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="71" />
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="73" />
+        <source>Compute again</source>
+        <translation>再計算</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="131" />
+        <source>The tool or cut data are not valid.</source>
+        <translation>工具または切削のデータが正しくありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="142" />
+        <source>Computing %1 spindle speeds (%2 steps per tooth period)…</source>
+        <translation>%1 点の主軸回転数を計算中 (1 刃周期あたり %2 ステップ)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="197" />
+        <source>Cancelled: no lobe diagram. Press Compute again.</source>
+        <translation>キャンセルしました: 安定限界線図はありません。再計算を押してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="203" />
+        <source>The lobes could not be computed: %1</source>
+        <translation>安定限界線図を計算できませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="216" />
+        <source>stable up to the search limit %1 mm</source>
+        <translation>探索上限 %1 mm まで安定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="217" />
+        <source>limit %1 mm</source>
+        <translation>限界 %1 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="218" />
+        <source>current: stable</source>
+        <translation>現在: 安定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="218" />
+        <source>current: unstable</source>
+        <translation>現在: 不安定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="226" />
+        <source>Current point %1 min⁻¹, %2 mm: %3 (%4 at this speed).</source>
+        <translation>現在の加工点 %1 min⁻¹、%2 mm: %3 (この回転数で %4)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="228" />
+        <source>STABLE</source>
+        <translation>安定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizardPages.cpp" line="228" />
+        <source>UNSTABLE (chatter expected)</source>
+        <translation>不安定 (びびり振動の発生が予想されます)</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::MachiningSavePage</name>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="369" />
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="370" />
+        <source>The session (kind "machining") stores the tool and cut data, the lobes, the advice, the chatter intervals and the analysed cut.</source>
+        <translation>セッション (種類 "machining") には、工具と切削のデータ、安定限界線図、提案、びびり振動の区間、解析した切削が保存されます。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::MachiningToolPage</name>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="64" />
+        <source>Tool</source>
+        <translation>工具</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="65" />
+        <source>Modal parameters of the tool tip per direction (x = feed direction). Modes of one direction add their compliances.</source>
+        <translation>方向ごとの工具先端のモードパラメータ (x = 送り方向)。同じ方向のモードはコンプライアンスが加算されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="70" />
+        <source>Direction</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="70" />
+        <source>Mass [kg]</source>
+        <translation>質量 [kg]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="70" />
+        <source>Damping [N·s/m]</source>
+        <translation>減衰 [N·s/m]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="70" />
+        <source>Stiffness [N/m]</source>
+        <translation>剛性 [N/m]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="73" />
+        <source>Load tool.json…</source>
+        <translation>tool.json を読み込む…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="75" />
+        <source>Add x mode</source>
+        <translation>x モードを追加</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="76" />
+        <source>Add y mode</source>
+        <translation>y モードを追加</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="77" />
+        <source>Remove mode</source>
+        <translation>モードを削除</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="101" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="104" />
+        <source>entered</source>
+        <translation>入力値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="109" />
+        <source>Tool data</source>
+        <translation>工具データ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="109" />
+        <source>Tool JSON (*.json);;All files (*)</source>
+        <translation>工具 JSON (*.json);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="177" />
+        <source>row %1, %2: not a number</source>
+        <translation>%1 行目、%2: 数値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="203" />
+        <source>%1: natural frequency %2 Hz, damping ratio %3 %</source>
+        <translation>%1: 固有振動数 %2 Hz、減衰比 %3 %</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::MachiningWizard</name>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="389" />
+        <source>Machining: stability lobes and chatter</source>
+        <translation>加工: 安定限界線図とびびり振動</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="417" />
+        <source>Nothing saved: the tool or cut data are not valid.</source>
+        <translation>保存していません: 工具または切削のデータが正しくありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="498" />
+        <source>Not saved: %1</source>
+        <translation>保存されませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="502" />
+        <source>Saved as session %1: inputs, %2 results, %3 capture(s).</source>
+        <translation>セッション %1 として保存しました: 入力、結果 %2 件、計測データ %3 件。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::MainWindow</name>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="130" />
+        <source>Abort requested</source>
+        <translation>中止を要求しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="173" />
+        <source>(no wizards)</source>
+        <translation>(ウィザードなし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="179" />
+        <source>AxisTune</source>
+        <translation>AxisTune</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="180" />
+        <source>&amp;Machine</source>
+        <translation>機械(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="181" />
+        <source>&amp;Connect…</source>
+        <translation>接続(&amp;C)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="182" />
+        <source>&amp;Disconnect</source>
+        <translation>切断(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="183" />
+        <source>&amp;Quit</source>
+        <translation>終了(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="184" />
+        <source>&amp;Wizards</source>
+        <translation>ウィザード(&amp;W)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="185" />
+        <source>&amp;Sessions</source>
+        <translation>セッション(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="186" />
+        <source>&amp;Review…</source>
+        <translation>確認(&amp;R)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="187" />
+        <source>&amp;History…</source>
+        <translation>履歴(&amp;H)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="188" />
+        <source>Export NC &amp;parameters…</source>
+        <translation>NC パラメータの書き出し(&amp;P)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="189" />
+        <source>Se&amp;ttings</source>
+        <translation>設定(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="190" />
+        <source>&amp;Preferences…</source>
+        <translation>環境設定(&amp;P)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="191" />
+        <source>&amp;Help</source>
+        <translation>ヘルプ(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="192" />
+        <source>&amp;About AxisTune</source>
+        <translation>AxisTune について(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="193" />
+        <source>Machine / axis</source>
+        <translation>機械 / 軸</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="193" />
+        <source>State</source>
+        <translation>状態</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="194" />
+        <source>Machines</source>
+        <translation>機械</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="195" />
+        <source>Parameters</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="196" />
+        <source>Log and journal</source>
+        <translation>ログと変更履歴</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="197" />
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="198" />
+        <source>Stops the running test at once; the drive restores the parameters from before the test</source>
+        <translation>実行中のテストを直ちに止めます。サーボアンプはテスト前のパラメータに戻します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="201" />
+        <location filename="../app/gui/MainWindow.cpp" line="317" />
+        <source>Test running</source>
+        <translation>テスト実行中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="201" />
+        <location filename="../app/gui/MainWindow.cpp" line="281" />
+        <location filename="../app/gui/MainWindow.cpp" line="305" />
+        <source>Idle</source>
+        <translation>待機中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="227" />
+        <source>Connected: %1 (machine %2)</source>
+        <translation>接続中: %1 (機械 %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="229" />
+        <source>Connecting to %1 …</source>
+        <translation>%1 に接続中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="231" />
+        <source>CONNECTION LOST: %1</source>
+        <translation>接続が切れました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="234" />
+        <source>Connection failed: %1</source>
+        <translation>接続に失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="251" />
+        <source>Connecting to %1</source>
+        <translation>%1 に接続中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="265" />
+        <source>Connected to %1: machine %2, axes %3</source>
+        <translation>%1 に接続しました: 機械 %2、軸 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="277" />
+        <source>Connection lost: %1</source>
+        <translation>接続が切れました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="292" />
+        <source>Connection to %1 failed: %2</source>
+        <translation>%1 への接続に失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="298" />
+        <source>Disconnected</source>
+        <translation>切断しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="306" />
+        <source>Test on axis %1 completed</source>
+        <translation>軸 %1 のテストが完了しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="307" />
+        <source>Test on axis %1 ended: %2</source>
+        <translation>軸 %1 のテストが終了しました: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/MainWindow.cpp" line="371" />
+        <source>%n session(s)</source>
+        <translation>
+            <numerusform>%n セッション</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="373" />
+        <source>connected, %1</source>
+        <translation>接続中、%1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="462" />
+        <source>Sessions</source>
+        <translation>セッション</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="482" />
+        <source>About AxisTune</source>
+        <translation>AxisTune について</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="483" />
+        <source>&lt;b&gt;AxisTune&lt;/b&gt; %1&lt;br&gt;Commissioning and tuning of NC feed axes.&lt;br&gt;GPL-3.0-or-later.</source>
+        <translation>&lt;b&gt;AxisTune&lt;/b&gt; %1&lt;br&gt;NC工作機械送り軸の立上げと調整。&lt;br&gt;GPL-3.0-or-later。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="237" />
+        <source>Not connected</source>
+        <translation>未接続</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::NcExportDialog</name>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="47" />
+        <source>Export NC parameters</source>
+        <translation>NC パラメータの書き出し</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="59" />
+        <source>Axis</source>
+        <translation>軸</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="59" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="59" />
+        <source>NC number</source>
+        <translation>NC 番号</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="59" />
+        <source>NC value</source>
+        <translation>NC の値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="59" />
+        <source>AxisTune value</source>
+        <translation>AxisTune の値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="59" />
+        <source>Description</source>
+        <translation>説明</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="72" />
+        <source>Save file…</source>
+        <translation>ファイルに保存…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="74" />
+        <source>Close</source>
+        <translation>閉じる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="77" />
+        <source>Machine:</source>
+        <translation>機械:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="78" />
+        <source>NC family:</source>
+        <translation>NC の種類:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="79" />
+        <source>Show axis:</source>
+        <translation>表示する軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="81" />
+        <source>Parameters without a mapping (written as comments)</source>
+        <translation>対応のないパラメータ (コメントとして書き出し)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="83" />
+        <source>File</source>
+        <translation>ファイル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="157" />
+        <source>No store is open.</source>
+        <translation>データベースが開かれていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="159" />
+        <source>The store holds no machine.</source>
+        <translation>データベースに機械がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="161" />
+        <source>The profile of %1 cannot be loaded: %2</source>
+        <translation>%1 のプロファイルを読み込めません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="168" />
+        <source>All axes</source>
+        <translation>すべての軸</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="186" />
+        <source>NC map %1: %2</source>
+        <translation>NC 対応表 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="191" />
+        <source>Export to %1 failed: %2</source>
+        <translation>%1 への書き出しに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="226" />
+        <source>error: %1</source>
+        <translation>エラー: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="243" />
+        <source>%1  %2 = %3</source>
+        <translation>%1  %2 = %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="259" />
+        <source>Nothing to export.</source>
+        <translation>書き出すものがありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="275" />
+        <source>Save NC parameter file</source>
+        <translation>NC パラメータファイルの保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="276" />
+        <source>Text files (*.txt *.nc *.mpf *.mp);;All files (*)</source>
+        <translation>テキストファイル (*.txt *.nc *.mpf *.mp);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="283" />
+        <source>NC file not saved</source>
+        <translation>NC ファイルは保存されませんでした</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="287" />
+        <source>Saved %1. Verify every number against the NC's parameter manual before loading it.</source>
+        <translation>%1 を保存しました。読み込む前に、すべての番号を NC のパラメータ説明書で確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcExportDialog.cpp" line="289" />
+        <source>NC parameters of %1 exported for %2 to %3</source>
+        <translation>%1 の NC パラメータを %2 用に %3 へ書き出しました</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::NotchProposePage</name>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="317" />
+        <source>Resonances and proposed notches</source>
+        <translation>共振と提案するノッチフィルタ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="318" />
+        <source>One notch per resonance, within the execution rate's limits; existing filters stay as they are. Edit centre, width or depth: the prediction and the margins follow.</source>
+        <translation>共振ごとに 1 つのノッチ (実行周期の制限内)。既存のフィルタはそのまま残します。中心周波数、帯域幅、深さを編集すると、予測と余裕が更新されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="331" />
+        <source>Smallest resonance height:</source>
+        <translation>共振の最小の高さ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="337" />
+        <source>Resonance [Hz]</source>
+        <translation>共振 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="337" />
+        <source>Height [dB]</source>
+        <translation>高さ [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="337" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="340" />
+        <source>Width [Hz]</source>
+        <translation>帯域幅 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="337" />
+        <source>Open loop [dB]</source>
+        <translation>開ループ [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="340" />
+        <source>Slot</source>
+        <translation>スロット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="340" />
+        <source>Centre [Hz]</source>
+        <translation>中心周波数 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="340" />
+        <source>Depth</source>
+        <translation>深さ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="346" />
+        <source>Remove notch</source>
+        <translation>ノッチを削除</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="348" />
+        <source>Back to the proposal</source>
+        <translation>提案に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="359" />
+        <source>Margin</source>
+        <translation>余裕</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="359" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="487" />
+        <source>Measured</source>
+        <translation>測定値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="359" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="554" />
+        <source>Predicted</source>
+        <translation>予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="414" />
+        <source>No frequency response to analyse.</source>
+        <translation>解析する周波数応答がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="420" />
+        <source>Reading the existing filters and the execution rate of axis %1…</source>
+        <translation>軸 %1 の既存フィルタと実行周期を読み出し中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="426" />
+        <source>Not connected to axis %1: execution rate %2 Hz assumed, existing filters unknown.</source>
+        <translation>軸 %1 に未接続: 実行周波数を %2 Hz と仮定、既存のフィルタは不明。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="439" />
+        <source>Reading the parameters failed: %1</source>
+        <translation>パラメータの読み出しに失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="465" />
+        <source>Analysing…</source>
+        <translation>解析中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="518" />
+        <source>Row %1: not a number.</source>
+        <translation>%1 行目: 数値ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="523" />
+        <source>Slot %1: edited by the operator (centre %2 Hz, width %3 Hz, depth %4).</source>
+        <translation>スロット %1: 作業者が編集 (中心周波数 %2 Hz、帯域幅 %3 Hz、深さ %4)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="530" />
+        <source>Not realisable at %1 Hz: %2</source>
+        <translation>%1 Hz では実現できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="549" />
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="552" />
+        <source>N%1 %2 Hz</source>
+        <translation>N%1 %2 Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="559" />
+        <source>%1 resonances found, %2 notches proposed for axis %3 (execution rate %4 Hz, %5 of %6 slots free).</source>
+        <translation>共振 %1 個、軸 %3 にノッチ %2 個を提案 (実行周波数 %4 Hz、空きスロット %5 / %6)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="574" />
+        <source>Slot %1 keeps its filter (centre %2 Hz, width %3 Hz, depth %4): existing filters are never removed.</source>
+        <translation>スロット %1 はフィルタを維持 (中心周波数 %2 Hz、帯域幅 %3 Hz、深さ %4): 既存のフィルタは削除しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="580" />
+        <source>No notch at %1 Hz: %2</source>
+        <translation>%1 Hz にはノッチなし: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="582" />
+        <source>Analysis failed: %1</source>
+        <translation>解析に失敗しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::NotchSavePage</name>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="660" />
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="661" />
+        <source>The session keeps the measured, predicted and verification responses, the resonances, the notches with their rules, the margins, the parameter sets and the journal.</source>
+        <translation>セッションには、測定・予測・検証の応答、共振、ノッチとそのルール、余裕、パラメータセット、変更履歴が保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="674" />
+        <source>Session %1 saved (kind “notch”).</source>
+        <translation>セッション %1 を保存しました (種類 “notch”)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="675" />
+        <source>The session could not be saved (see the log).</source>
+        <translation>セッションを保存できませんでした (ログを参照)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="677" />
+        <source>%1 notches applied to axis %2 and read back.</source>
+        <translation>軸 %2 にノッチ %1 個を適用し、読み出して確認しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="678" />
+        <source>The notches were not applied; the proposal is kept in the session.</source>
+        <translation>ノッチは適用されていません。提案はセッションに保存されます。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::NotchSourcePage</name>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="180" />
+        <source>Frequency response</source>
+        <translation>周波数応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="181" />
+        <source>The notches are placed on a measured velocity-loop frequency response: measure a new one, or take one from a saved session of this machine.</source>
+        <translation>ノッチは測定した速度ループの周波数応答をもとに配置します: 新しく測定するか、この機械の保存済みセッションから選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="184" />
+        <source>New measurement (multi-sweep, up to just below the trace rate)</source>
+        <translation>新しい測定 (複数回掃引、トレース周波数の直下まで)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="186" />
+        <source>Frequency response from a saved session</source>
+        <translation>保存済みセッションの周波数応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="190" />
+        <source>Measurement</source>
+        <translation>測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="202" />
+        <source>0.975 × trace rate</source>
+        <translation>0.975 × トレース周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="211" />
+        <source> % of rated torque</source>
+        <translation> % (定格トルク比)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="212" />
+        <source>Lowest frequency:</source>
+        <translation>最低周波数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="213" />
+        <source>Highest frequency:</source>
+        <translation>最高周波数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="214" />
+        <source>Frequencies (log-spaced):</source>
+        <translation>周波数点数 (対数間隔):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="215" />
+        <source>Amplitude:</source>
+        <translation>振幅:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="240" />
+        <source>No store is open: only a new measurement is possible.</source>
+        <translation>データベースが開かれていません: 新しい測定のみ可能です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="245" />
+        <source>Reading the sessions failed: %1</source>
+        <translation>セッションの読み出しに失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="257" />
+        <source>Session %1 (%2, axis %3, %4): %5</source>
+        <translation>セッション %1 (%2、軸 %3、%4): %5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="267" />
+        <source>No saved session of this machine holds a frequency response.</source>
+        <translation>この機械の保存済みセッションに周波数応答はありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="291" />
+        <source>Reading session %1 failed: %2</source>
+        <translation>セッション %1 の読み出しに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="299" />
+        <source>Session %1, %2: %3</source>
+        <translation>セッション %1、%2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::NotchVerifyPage</name>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="602" />
+        <source>Verification</source>
+        <translation>検証</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="603" />
+        <source>The new measurement with the notches, overlaid on the prediction and on the first measurement.</source>
+        <translation>ノッチを入れた新しい測定を、予測および最初の測定に重ねて表示します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="614" />
+        <source>Notch [Hz]</source>
+        <translation>ノッチ [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="614" />
+        <source>Before [dB]</source>
+        <translation>適用前 [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="614" />
+        <source>Predicted [dB]</source>
+        <translation>予測 [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="614" />
+        <source>Measured [dB]</source>
+        <translation>測定 [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="616" />
+        <source>Margin</source>
+        <translation>余裕</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="616" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="626" />
+        <source>Before</source>
+        <translation>適用前</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="616" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="627" />
+        <source>Predicted</source>
+        <translation>予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="616" />
+        <source>Measured</source>
+        <translation>測定値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="628" />
+        <source>After</source>
+        <translation>適用後</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="631" />
+        <source>N%1</source>
+        <translation>N%1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="635" />
+        <source>No point of the verification could be compared with the prediction.</source>
+        <translation>検証の点のうち、予測と比較できるものがありませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" line="636" />
+        <source>Prediction against measurement: largest deviation %1 dB at %2 Hz, rms %3 dB, over %4 valid points from %5 Hz to %6 Hz (points where both lie below −50 dB are left out).</source>
+        <translation>予測と測定の比較: 最大偏差 %1 dB (%2 Hz)、rms %3 dB、%5 Hz から %6 Hz の有効な %4 点 (両方が −50 dB 未満の点は除外)。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::NotchWizard</name>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="59" />
+        <source>Notch filters</source>
+        <translation>ノッチフィルタ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="70" />
+        <source>A multi-sweep frequency-response test: a sinusoidal torque of the chosen amplitude (in % of the rated torque) is added to the velocity controller's output at each frequency of the band, three times with phase offsets of 0°, +120° and −120°, while the velocity loop holds the axis. The axis vibrates a little around its position; it does not travel.</source>
+        <translation>複数回掃引の周波数応答テスト: 速度ループが軸を保持した状態で、帯域の各周波数で、選んだ振幅 (定格トルク比 %) の正弦波トルクを速度制御器の出力に、位相オフセット 0°、+120°、−120° で 3 回加えます。軸は現在位置の周りでわずかに振動しますが、移動はしません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="78" />
+        <source>Measure the frequency response</source>
+        <translation>周波数応答を測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="83" />
+        <source>Apply the notch filters</source>
+        <translation>ノッチフィルタを適用</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="86" />
+        <source>Verify: measure again with the notches</source>
+        <translation>検証: ノッチを入れて再測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="126" />
+        <source>The previous filter values were restored on the drive.</source>
+        <translation>サーボアンプのフィルタを以前の値に戻しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="127" />
+        <source>Notch wizard: previous filter values of axis %1 restored</source>
+        <translation>ノッチフィルタのウィザード: 軸 %1 のフィルタを以前の値に戻しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="137" />
+        <source>Restoring the previous filter values failed (%1): the applied notches may still be active on the drive.</source>
+        <translation>フィルタを以前の値に戻せませんでした (%1): 適用したノッチがサーボアンプで有効なままの可能性があります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="328" />
+        <source>Notch wizard: restoring the previous filter values of axis %1</source>
+        <translation>ノッチフィルタのウィザード: 軸 %1 のフィルタを以前の値に戻しています</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="334" />
+        <source>The applied notches could not be restored: the connection to the drive is lost. Check filter.notch* on the drive before the axis runs again.</source>
+        <translation>適用したノッチを元に戻せませんでした: サーボアンプとの接続が切れています。軸を再び動かす前に、サーボアンプの filter.notch* を確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="350" />
+        <source>Cancelled by the operator.</source>
+        <translation>作業者によりキャンセルされました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="455" />
+        <source>The session could not be saved: %1</source>
+        <translation>セッションを保存できませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="456" />
+        <source>Stopped: %1 Session %2 saved as aborted.</source>
+        <translation>停止: %1 セッション %2 を中止として保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizard.cpp" line="457" />
+        <source>Session %1 saved.</source>
+        <translation>セッション %1 を保存しました。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::ParameterInspector</name>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="93" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="93" />
+        <source>Device</source>
+        <translation>サーボアンプ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="93" />
+        <source>Profile</source>
+        <translation>プロファイル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="93" />
+        <source>Proposed</source>
+        <translation>提案値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="93" />
+        <source>Unit</source>
+        <translation>単位</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="93" />
+        <source>Limits</source>
+        <translation>範囲</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="94" />
+        <source>No axis selected</source>
+        <translation>軸が選択されていません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="95" />
+        <source>Machine %1, axis %2</source>
+        <translation>機械 %1、軸 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="95" />
+        <source>(none)</source>
+        <translation>(なし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="96" />
+        <source>Current parameters of the profile in the store</source>
+        <translation>データベースにあるプロファイルの現在のパラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="97" />
+        <source>Values proposed by a wizard, not yet applied</source>
+        <translation>ウィザードが提案した未適用の値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="161" />
+        <source>Reading the parameter list of axis %1 failed: %2</source>
+        <translation>軸 %1 のパラメータ一覧の読み出しに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="168" />
+        <source>Reading the parameters of axis %1 failed: %2</source>
+        <translation>軸 %1 のパラメータの読み出しに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="218" />
+        <source>Differs from the device value</source>
+        <translation>サーボアンプの値と異なります</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="229" />
+        <source>%1 … %2%3</source>
+        <translation>%1 … %2%3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterInspector.cpp" line="230" />
+        <source> (read-only)</source>
+        <translation> (読み出し専用)</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::ReportDialog</name>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="24" />
+        <source>Report of session %1</source>
+        <translation>セッション %1 のレポート</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="30" />
+        <source>Save as HTML…</source>
+        <translation>HTML で保存…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="32" />
+        <source>Save as PDF…</source>
+        <translation>PDF で保存…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="34" />
+        <source>Close</source>
+        <translation>閉じる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="56" />
+        <source>Save report as PDF</source>
+        <translation>レポートを PDF で保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="56" />
+        <source>Save report as HTML</source>
+        <translation>レポートを HTML で保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="57" />
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="57" />
+        <source>HTML (*.html *.htm)</source>
+        <translation>HTML (*.html *.htm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="64" />
+        <source>Report not saved</source>
+        <translation>レポートは保存されませんでした</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="67" />
+        <source>Saved %1</source>
+        <translation>%1 を保存しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="75" />
+        <source>No store is open.</source>
+        <translation>データベースが開かれていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="77" />
+        <source>Session %1 cannot be loaded: %2</source>
+        <translation>セッション %1 を読み込めません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportDialog.cpp" line="87" />
+        <source>No report</source>
+        <translation>レポートなし</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::SafetyPage</name>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="76" />
+        <source>Safety</source>
+        <translation>安全確認</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="77" />
+        <source>Check the axis and its limits before anything moves.</source>
+        <translation>動かす前に、軸とその制限を確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="81" />
+        <source>Axis:</source>
+        <translation>軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="86" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="86" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="86" />
+        <source>Limits</source>
+        <translation>範囲</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="86" />
+        <source>Unit</source>
+        <translation>単位</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="91" />
+        <source>The axis is free to move over the whole test, nobody is inside the machine, and the emergency stop is within reach.</source>
+        <translation>テスト全体を通じて軸は自由に動くことができ、機械の中には誰もおらず、非常停止ボタンに手が届きます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="117" />
+        <source>%1 … %2</source>
+        <translation>%1 … %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="122" />
+        <source>Reading the limits failed: %1</source>
+        <translation>制限値の読み出しに失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="143" />
+        <source>Not connected: connect to a machine first (Machine ▸ Connect).</source>
+        <translation>未接続: 先に機械に接続してください (機械 ▸ 接続)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="145" />
+        <source>Machine %1, connected through %2.</source>
+        <translation>機械 %1、%2 で接続中。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::SessionOverlay</name>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="317" />
+        <source>session %1: %2</source>
+        <translation>セッション %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::SessionReview</name>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="96" />
+        <source>Machine:</source>
+        <translation>機械:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="98" />
+        <location filename="../app/gui/SessionReview.cpp" line="123" />
+        <source>(all machines)</source>
+        <translation>(すべての機械)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="99" />
+        <source>Reload</source>
+        <translation>再読み込み</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="100" />
+        <source>Open</source>
+        <translation>開く</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="101" />
+        <source>Shows the selected session read-only with all its plots</source>
+        <translation>選択したセッションをすべてのプロットとともに読み取り専用で表示します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="102" />
+        <source>Overlay responses</source>
+        <translation>応答を重ねて表示</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="103" />
+        <source>One Bode plot with the frequency responses of every selected session</source>
+        <translation>選択したすべてのセッションの周波数応答を 1 つのボード線図に表示します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="105" />
+        <source>Report…</source>
+        <translation>レポート…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="106" />
+        <source>Id</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="106" />
+        <source>Kind</source>
+        <translation>種類</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="106" />
+        <source>Status</source>
+        <translation>状態</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="106" />
+        <source>Started (UTC)</source>
+        <translation>開始 (UTC)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="106" />
+        <source>Operator</source>
+        <translation>作業者</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="106" />
+        <source>Note</source>
+        <translation>メモ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="107" />
+        <source>Captures</source>
+        <translation>計測データ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="107" />
+        <source>Results</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="150" />
+        <source>Listing the sessions failed: %1</source>
+        <translation>セッションの一覧の取得に失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="157" />
+        <source>completed</source>
+        <translation>完了</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="158" />
+        <source>ABORTED</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="159" />
+        <source>FAILED</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="236" />
+        <location filename="../app/gui/SessionReview.cpp" line="255" />
+        <source>Session %1 could not be loaded: %2</source>
+        <translation>セッション %1 を読み込めませんでした: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="241" />
+        <source>Session %1 (%2)</source>
+        <translation>セッション %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReview.cpp" line="264" />
+        <source>Sessions %1</source>
+        <translation>セッション %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::SessionView</name>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="128" />
+        <source>&lt;b&gt;Session %1&lt;/b&gt; — %2, machine %3, axis %4, %5 … %6, operator %7, status %8%9</source>
+        <translation>&lt;b&gt;セッション %1&lt;/b&gt; — %2、機械 %3、軸 %4、%5 … %6、作業者 %7、状態 %8%9</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="131" />
+        <source>(none)</source>
+        <translation>(なし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="135" />
+        <source>&lt;br&gt;Note: %1</source>
+        <translation>&lt;br&gt;メモ: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="141" />
+        <source>Export captures as CSV…</source>
+        <translation>計測データを CSV で書き出し…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="142" />
+        <source>Export plots…</source>
+        <translation>プロットを書き出し…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="164" />
+        <source>Frequency response</source>
+        <translation>周波数応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="176" />
+        <source>Trace: %1</source>
+        <translation>トレース: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="186" />
+        <source>Key</source>
+        <translation>キー</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="186" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="188" />
+        <source>inputs</source>
+        <translation>入力</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="190" />
+        <source>result: %1</source>
+        <translation>結果: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="194" />
+        <source>[%1 values]</source>
+        <translation>[%1 個の値]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="198" />
+        <source>Inputs and results</source>
+        <translation>入力と結果</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="200" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="208" />
+        <source>Axis</source>
+        <translation>軸</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="200" />
+        <source>Source</source>
+        <translation>出所</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="200" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="208" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="200" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="208" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="200" />
+        <source>Value (SI)</source>
+        <translation>値 (SI)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="200" />
+        <source>Note</source>
+        <translation>メモ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="206" />
+        <source>Parameter sets</source>
+        <translation>パラメータセット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="208" />
+        <source>Old (SI)</source>
+        <translation>旧値 (SI)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="208" />
+        <source>New (SI)</source>
+        <translation>新値 (SI)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="211" />
+        <source>unknown</source>
+        <translation>不明</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="213" />
+        <source>Journal</source>
+        <translation>変更履歴</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="277" />
+        <source>Export captures to</source>
+        <translation>計測データの書き出し先</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="283" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="300" />
+        <source>Export failed</source>
+        <translation>書き出しに失敗しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="285" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="302" />
+        <source>Export</source>
+        <translation>書き出し</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/SessionReviewView.cpp" line="285" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="302" />
+        <source>%n file(s) written to %1</source>
+        <translation>
+            <numerusform>%1 に %n 個のファイルを書き出しました</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="290" />
+        <source>Export plots to</source>
+        <translation>プロットの書き出し先</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="294" />
+        <source>Image format</source>
+        <translation>画像形式</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SessionReviewView.cpp" line="294" />
+        <source>Format:</source>
+        <translation>形式:</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::SettingsDialog</name>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="106" />
+        <source>Preferences</source>
+        <translation>環境設定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="107" />
+        <source>Language:</source>
+        <translation>言語:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="108" />
+        <source>Store file:</source>
+        <translation>データベースファイル:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="109" />
+        <source>Browse…</source>
+        <translation>参照…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="110" />
+        <source>Operator name:</source>
+        <translation>作業者名:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="111" />
+        <source>The SQLite file holding machines, profiles, sessions and the journal</source>
+        <translation>機械、プロファイル、セッション、変更履歴を保存する SQLite ファイル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="125" />
+        <source>Store file</source>
+        <translation>データベースファイル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="125" />
+        <source>AxisTune store (*.sqlite)</source>
+        <translation>AxisTune データベース (*.sqlite)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/SettingsDialog.cpp" line="136" />
+        <source>The Japanese translation could not be loaded</source>
+        <translation>日本語の翻訳を読み込めませんでした</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::TestRunPage</name>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="167" />
+        <source>Run</source>
+        <translation>実行</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="168" />
+        <source>The axis moves now. Abort stops the motion at once and restores the parameters.</source>
+        <translation>軸が動きます。中止すると動作は直ちに止まり、パラメータは元に戻ります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="178" />
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="180" />
+        <source>Run again</source>
+        <translation>再実行</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="198" />
+        <location filename="../app/gui/WizardPages.cpp" line="200" />
+        <source>Connection lost: %1</source>
+        <translation>接続が切れました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="232" />
+        <source>Nothing to run.</source>
+        <translation>実行するものがありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="236" />
+        <source>Not connected.</source>
+        <translation>未接続です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="251" />
+        <source>Test %1 of %2 on axis %3: %4</source>
+        <translation>テスト %1 / %2、軸 %3: %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="265" />
+        <source>Abort requested</source>
+        <translation>中止を要求しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="296" />
+        <source>Completed.</source>
+        <translation>完了しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="296" />
+        <source>Aborted: %1</source>
+        <translation>中止: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="297" />
+        <source>Failed: %1</source>
+        <translation>失敗: %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::TwoInertiaFilterPage</name>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="409" />
+        <source>Suppression filter and predicted load error</source>
+        <translation>振動抑制フィルタと負荷側誤差の予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="410" />
+        <source>Semi-closed: F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) on the position command (5.7). Full-closed: F_L = F_m/(τs + 1) on the velocity command (5.9). Start values from the model: f₀ and the zero damping ζ₀ (not ζ_p).</source>
+        <translation>セミクローズド: 位置指令に F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) (5.7)。フルクローズド: 速度指令に F_L = F_m/(τs + 1) (5.9)。初期値はモデルから: f₀ と零点の減衰 ζ₀ (ζ_p ではない)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="418" />
+        <source>Semi-closed (F_m)</source>
+        <translation>セミクローズド (F_m)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="418" />
+        <source>Full-closed (F_L)</source>
+        <translation>フルクローズド (F_L)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="420" />
+        <source>0: high-frequency gain 1/(2ζω₀τ) = 2.5</source>
+        <translation>0: 高周波ゲイン 1/(2ζω₀τ) = 2.5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="424" />
+        <source>Feedback:</source>
+        <translation>フィードバック:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="425" />
+        <source>F_L time constant τ:</source>
+        <translation>F_L の時定数 τ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="426" />
+        <source>Profile speed:</source>
+        <translation>プロファイルの速度:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="427" />
+        <source>Acceleration:</source>
+        <translation>加速度:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="428" />
+        <source>Jerk:</source>
+        <translation>加加速度:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="430" />
+        <source>Setting</source>
+        <translation>設定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="430" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="437" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="437" />
+        <source>Load error y_L − y*</source>
+        <translation>負荷側誤差 y_L − y*</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="474" />
+        <source>without filter</source>
+        <translation>フィルタなし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="475" />
+        <source>with F_m</source>
+        <translation>F_m あり</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="479" />
+        <source>Filter frequency f₀</source>
+        <translation>フィルタ周波数 f₀</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="479" />
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="480" />
+        <source>Filter damping ζ</source>
+        <translation>フィルタの減衰 ζ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="482" />
+        <source>Time constant τ</source>
+        <translation>時定数 τ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="482" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="483" />
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="483" />
+        <source>First-order lag T₁ = 2ζ/ω₀</source>
+        <translation>1 次遅れ T₁ = 2ζ/ω₀</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="484" />
+        <source>Velocity K_P (TI-5, ω_l 24 Hz, k 10)</source>
+        <translation>速度 K_P (TI-5、ω_l 24 Hz、k 10)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="486" />
+        <source>Velocity K_I (TI-5)</source>
+        <translation>速度 K_I (TI-5)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="488" />
+        <source>Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, load through (5.6)). The drive has no F_m/F_L parameter: enter f₀, ζ (and τ) in the NC. The proposal applies the velocity PI of the thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m on the fitted J_m.</source>
+        <translation>負荷側誤差の最大値の予測: フィルタなし %1°、F_m あり %2° (モータは理想追従、負荷は (5.6) で計算)。サーボアンプには F_m/F_L のパラメータがないため、f₀、ζ (と τ) は NC に入力してください。提案では、同定した J_m に論文の規則 K_P = k√2·ω_l·J_m、K_I = k·ω_l²·J_m による速度 PI を適用します。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::TwoInertiaFitPage</name>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="208" />
+        <source>Two-inertia model</source>
+        <translation>2慣性系モデル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="209" />
+        <source>Torque → motor velocity P_m with the fitted model (5.1) over it: anti-resonance f₀ = √(K/J_L)/2π (zero), resonance f_p = √(K(1/J_m + 1/J_L))/2π (pole), and the residual model/measured.</source>
+        <translation>トルク → モータ速度 P_m と、それに重ねた同定モデル (5.1): 反共振 f₀ = √(K/J_L)/2π (零点)、共振 f_p = √(K(1/J_m + 1/J_L))/2π (極)、およびモデル/測定の残差。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="218" />
+        <source>Frequency</source>
+        <translation>周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="218" />
+        <source>Residual model/measured</source>
+        <translation>残差 モデル/測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="218" />
+        <source>dB, °</source>
+        <translation>dB, °</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="223" />
+        <source>Quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="223" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="270" />
+        <source>No response to fit.</source>
+        <translation>同定する応答がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="275" />
+        <source>Fitting…</source>
+        <translation>同定中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="348" />
+        <source>measured P_m</source>
+        <translation>測定した P_m</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="350" />
+        <source>Fit failed: %1</source>
+        <translation>同定に失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="367" />
+        <source>two-inertia model</source>
+        <translation>2慣性系モデル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="371" />
+        <source>f₀ %1 Hz, ζ₀ %2</source>
+        <translation>f₀ %1 Hz、ζ₀ %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="373" />
+        <source>f_p %1 Hz, ζ_p %2</source>
+        <translation>f_p %1 Hz、ζ_p %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="375" />
+        <source>magnitude [dB]</source>
+        <translation>ゲイン [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="376" />
+        <source>phase [°]</source>
+        <translation>位相 [°]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="378" />
+        <source>Anti-resonance f₀</source>
+        <translation>反共振 f₀</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="378" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="380" />
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="379" />
+        <source>Zero damping ζ₀</source>
+        <translation>零点の減衰 ζ₀</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="380" />
+        <source>Resonance f_p</source>
+        <translation>共振 f_p</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="381" />
+        <source>Pole damping ζ_p</source>
+        <translation>極の減衰 ζ_p</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="382" />
+        <source>Motor inertia J_m</source>
+        <translation>モータ側イナーシャ J_m</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="383" />
+        <source>Load inertia J_L</source>
+        <translation>負荷側イナーシャ J_L</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="384" />
+        <source>Stiffness K</source>
+        <translation>剛性 K</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="385" />
+        <source>Damping C</source>
+        <translation>減衰 C</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="386" />
+        <source>Delay</source>
+        <translation>遅れ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="387" />
+        <source>Fit error (rms relative)</source>
+        <translation>同定誤差 (相対 rms)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="388" />
+        <source>Check f_p/f₀ = √(1 + J_L/J_m)</source>
+        <translation>確認 f_p/f₀ = √(1 + J_L/J_m)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="389" />
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="391" />
+        <source>Fit over %1–%2 Hz, %3 points, %4 iterations. The response was converted from the closed velocity loop with K_P %5 N·m·s/rad, K_I %6 N·m/rad when it was one.</source>
+        <translation>%1–%2 Hz で同定、%3 点、反復 %4 回。速度閉ループの応答の場合は K_P %5 N·m·s/rad、K_I %6 N·m/rad で変換しました。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::TwoInertiaSavePage</name>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="37" />
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="38" />
+        <source>The session holds the measured response, the plant, the fitted model, the filter settings, the predicted load error, what was applied with its journal, and the verification.</source>
+        <translation>セッションには、測定した応答、プラント、同定モデル、フィルタ設定、負荷側誤差の予測、適用した内容とその履歴、検証が保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="58" />
+        <source>Axis %1: anti-resonance f₀ %2 Hz, resonance f_p %3 Hz; filter %4: f₀ %5 Hz, ζ %6%7.</source>
+        <translation>軸 %1: 反共振 f₀ %2 Hz、共振 f_p %3 Hz; フィルタ %4: f₀ %5 Hz、ζ %6%7。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="62" />
+        <source>F_L (full-closed)</source>
+        <translation>F_L (フルクローズド)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="62" />
+        <source>F_m (semi-closed)</source>
+        <translation>F_m (セミクローズド)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="66" />
+        <source>, τ %1 ms</source>
+        <translation>、τ %1 ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="70" />
+        <source>Not connected: applying the velocity PI and verifying with the profile need a connection.</source>
+        <translation>未接続: 速度 PI の適用とプロファイルによる検証には接続が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="72" />
+        <source>Not applied: the proposal is kept in the session.</source>
+        <translation>未適用: 提案はセッションに保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="73" />
+        <source>Saved as session %1.</source>
+        <translation>セッション %1 として保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="74" />
+        <source>The session was not saved (no store open).</source>
+        <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::TwoInertiaSourcePage</name>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="85" />
+        <source>Two-inertia: low-frequency response</source>
+        <translation>2慣性系: 低周波の応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="86" />
+        <source>Measure the response of the velocity loop in the low band (torque injection, multi-sweep) or take a response from a saved session. The fit needs the anti-resonance and the resonance inside the band (thesis: 5–300 Hz).</source>
+        <translation>低い帯域で速度ループの応答を測定するか (トルク注入、複数回掃引)、保存済みセッションの応答を使ってください。同定には帯域内に反共振と共振が必要です (論文: 5–300 Hz)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="91" />
+        <source>Measure on the machine</source>
+        <translation>機械で測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="93" />
+        <source>From a saved session</source>
+        <translation>保存済みセッションから</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="106" />
+        <source>Band from:</source>
+        <translation>帯域 下限:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="107" />
+        <source>to:</source>
+        <translation>上限:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="108" />
+        <source>Frequencies (log-spaced):</source>
+        <translation>周波数点数 (対数間隔):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="109" />
+        <source>Injection amplitude (of rated torque):</source>
+        <translation>注入振幅 (定格トルク比):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="115" />
+        <source>Velocity loop of the measurement (read from the drive when connected)</source>
+        <translation>測定時の速度ループ (接続中はサーボアンプから読み出し)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="119" />
+        <source>K_P:</source>
+        <translation>K_P:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="120" />
+        <source>K_I:</source>
+        <translation>K_I:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="138" />
+        <source>Session %1: %2, %3 axis %4, %5</source>
+        <translation>セッション %1: %2、%3 軸 %4、%5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="149" />
+        <source>Not connected: only saved responses can be used; apply and verify need a connection.</source>
+        <translation>未接続: 保存済みの応答のみ使用できます。適用と検証には接続が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="175" />
+        <source>Loading session %1 failed: %2</source>
+        <translation>セッション %1 の読み込みに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="184" />
+        <source>Session %1 holds no frequency response.</source>
+        <translation>セッション %1 に周波数応答はありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="189" />
+        <source>Session %1, capture %2: %3</source>
+        <translation>セッション %1、計測データ %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::TwoInertiaVerifyPage</name>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="514" />
+        <source>Verify with the profile</source>
+        <translation>プロファイルで検証</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="515" />
+        <source>A jog with the profile's speed and acceleration: the measured load − motor angle against the model's prediction from the measured motor motion (5.6).</source>
+        <translation>プロファイルの速度と加速度でジョグ: 測定した負荷 − モータの角度を、測定したモータの動きからのモデルの予測 (5.6) と比較します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="520" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="520" />
+        <source>Load − motor</source>
+        <translation>負荷 − モータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="536" />
+        <source>No verification run.</source>
+        <translation>検証は実行されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="545" />
+        <source>The trace lacks t_s, motor_pos_rad, motor_vel_rad_s or table_pos_rad (a rotary axis with a load encoder is needed).</source>
+        <translation>トレースに t_s、motor_pos_rad、motor_vel_rad_s または table_pos_rad がありません (負荷側エンコーダ付きの回転軸が必要です)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="568" />
+        <source>measured</source>
+        <translation>測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="569" />
+        <source>predicted from the motor motion</source>
+        <translation>モータの動きからの予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="571" />
+        <source>Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°, predicted for ideal motor tracking of the trapezoid %3°. Without an F_m/F_L parameter in the drive this is the unfiltered case; the filtered case needs the filter in the NC.</source>
+        <translation>負荷 − モータの角度の最大値: 測定 %1°、測定したモータの動きからの予測 %2°、台形へのモータの理想追従での予測 %3°。サーボアンプに F_m/F_L のパラメータがないため、これはフィルタなしの場合です。フィルタありの場合は NC にフィルタが必要です。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::TwoInertiaWizard</name>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="80" />
+        <source>Two-inertia vibration suppression</source>
+        <translation>2慣性系の振動抑制</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="87" />
+        <source>Frequency response: a torque sine stream at the set amplitude is injected into the closed velocity loop (the axis oscillates about its position). Verification: a jog with the profile's speed and acceleration, and back to the start.</source>
+        <translation>周波数応答: 設定した振幅の正弦波トルクを速度閉ループに注入します (軸は現在位置の周りで振動します)。検証: プロファイルの速度と加速度でジョグし、開始位置に戻ります。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::VelocityLoopDesignPage</name>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="338" />
+        <source>Velocity loop: proposal and prediction</source>
+        <translation>速度ループ: 提案と予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="339" />
+        <source>Predicted open loop L = C·P and closed loop T = L/(1 + L) with the proposed PI, the margins before and after, the position gain with its stability limit, and the predicted velocity step.</source>
+        <translation>提案した PI での開ループ L = C·P と閉ループ T = L/(1 + L) の予測、変更前後の余裕、安定限界付きの位置ゲイン、速度ステップ応答の予測。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="348" />
+        <source>Time from the step</source>
+        <translation>ステップからの時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="348" />
+        <source>Motor velocity / step</source>
+        <translation>モータ速度 / ステップ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="353" />
+        <source>Quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="353" />
+        <source>Before</source>
+        <translation>適用前</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="353" />
+        <source>Proposed</source>
+        <translation>提案値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="428" />
+        <source>Chapter 5 rule (corrected 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m², K_I = k·ω_l²·J_m.</source>
+        <translation>第 5 章の規則 (修正 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m²、K_I = k·ω_l²·J_m。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="436" />
+        <source>Margins on the measured plant: |C·P| = 1 and arg(C·P) = −180° + %1° at %2 Hz.</source>
+        <translation>測定したプラントでの余裕: %2 Hz で |C·P| = 1 かつ arg(C·P) = −180° + %1°。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="443" />
+        <source>No measured response.</source>
+        <translation>測定した応答がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="446" />
+        <source>No proposal: %1</source>
+        <translation>提案なし: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="480" />
+        <source>Open loop L (proposed)</source>
+        <translation>開ループ L (提案)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="481" />
+        <source>Closed loop T (proposed)</source>
+        <translation>閉ループ T (提案)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="482" />
+        <source>Plant P (measured)</source>
+        <translation>プラント P (測定)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="482" />
+        <source>Plant P (model)</source>
+        <translation>プラント P (モデル)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="486" />
+        <source>crossover %1 Hz</source>
+        <translation>交差周波数 %1 Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="504" />
+        <source>Measured before</source>
+        <translation>変更前の測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="508" />
+        <source>Predicted before</source>
+        <translation>変更前の予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="512" />
+        <source>Predicted with the proposal</source>
+        <translation>提案での予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="520" />
+        <source>K_P</source>
+        <translation>K_P</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="520" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="521" />
+        <source>N·m·s/rad</source>
+        <translation>N·m·s/rad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="522" />
+        <source>K_I</source>
+        <translation>K_I</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="522" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="523" />
+        <source>N·m/rad</source>
+        <translation>N·m/rad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="524" />
+        <source>Gain crossover</source>
+        <translation>ゲイン交差周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="525" />
+        <source>Phase margin</source>
+        <translation>位相余裕</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="526" />
+        <source>Gain margin</source>
+        <translation>ゲイン余裕</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="527" />
+        <source>Peak sensitivity</source>
+        <translation>感度関数のピーク</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="528" />
+        <source>Step overshoot (predicted)</source>
+        <translation>ステップ応答のオーバーシュート (予測)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="530" />
+        <source>Step overshoot (measured)</source>
+        <translation>ステップ応答のオーバーシュート (測定)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="530" />
+        <source>after applying</source>
+        <translation>適用後</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="531" />
+        <source>Position gain K_p</source>
+        <translation>位置ゲイン K_p</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="533" />
+        <source>Position gain stability limit</source>
+        <translation>位置ゲインの安定限界</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="535" />
+        <source>%1 1/s at %2 Hz</source>
+        <translation>%1 1/s (%2 Hz)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="536" />
+        <source>none on the model</source>
+        <translation>モデル上ではなし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="540" />
+        <source>Position gain: recommended min(limit·10^(−%1/20), crossover·2π/5); %2.</source>
+        <translation>位置ゲイン: 推奨値 min(限界·10^(−%1/20), 交差周波数·2π/5); %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="543" />
+        <source>rigid model J_m with a delay of 1.5 velocity periods — fit a two-inertia model for the resonance</source>
+        <translation>剛体モデル J_m と速度ループ周期 1.5 回分の遅れ — 共振を考慮するには 2慣性系モデルを同定してください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="545" />
+        <source>two-inertia model of session %1 with a delay of 1.5 velocity periods</source>
+        <translation>セッション %1 の 2慣性系モデル (速度ループ周期 1.5 回分の遅れ付き)</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::VelocityLoopSavePage</name>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="42" />
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="43" />
+        <source>The session holds the rule and its inputs, the proposed PI and position gain, the predicted loops with their margins, the steps before and after with the prediction, what was applied with its journal.</source>
+        <translation>セッションには、規則とその入力、提案した PI と位置ゲイン、予測したループとその余裕、変更前後のステップ応答と予測、適用した内容とその履歴が保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="61" />
+        <source>K_P = %1 N·m·s/rad, K_I = %2 N·m/rad; position gain %3 1/s.</source>
+        <translation>K_P = %1 N·m·s/rad、K_I = %2 N·m/rad; 位置ゲイン %3 1/s。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="66" />
+        <source>Not connected: nothing was applied.</source>
+        <translation>未接続: 何も適用されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="68" />
+        <source>Not applied: the proposal is kept in the session.</source>
+        <translation>未適用: 提案はセッションに保存されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="69" />
+        <source>Saved as session %1.</source>
+        <translation>セッション %1 として保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="70" />
+        <source>The session was not saved (no store open).</source>
+        <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::VelocityLoopSourcePage</name>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="139" />
+        <source>Velocity loop: rule and data</source>
+        <translation>速度ループ: 規則とデータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="140" />
+        <source>The velocity PI from the fitted motor-side inertia (chapter 5 rule) or from the margins on a measured response; the position gain follows with its stability limit.</source>
+        <translation>速度 PI を、同定したモータ側イナーシャ (第 5 章の規則) または測定した応答の余裕から決めます。位置ゲインは安定限界とともに決まります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="146" />
+        <source>Axis:</source>
+        <translation>軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="150" />
+        <source>From the fitted inertia: K_P = k·√2·ω_l·J_m, K_I = k·ω_l²·J_m</source>
+        <translation>同定したイナーシャから: K_P = k·√2·ω_l·J_m、K_I = k·ω_l²·J_m</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="152" />
+        <source>From margins on a measured response (crossover and phase margin)</source>
+        <translation>測定した応答の余裕から (交差周波数と位相余裕)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="167" />
+        <source>Fitted model from:</source>
+        <translation>同定モデルの出所:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="168" />
+        <source>Motor-side inertia J_m:</source>
+        <translation>モータ側イナーシャ J_m:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="169" />
+        <source>Bandwidth ω_l/2π (for k = 1):</source>
+        <translation>帯域 ω_l/2π (k = 1 のとき):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="170" />
+        <source>Gain factor k:</source>
+        <translation>ゲイン係数 k:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="177" />
+        <source>Measure on the machine (torque injection, multi-sweep)</source>
+        <translation>機械で測定 (トルク注入、複数回掃引)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="179" />
+        <source>From a saved session</source>
+        <translation>保存済みセッションから</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="192" />
+        <source>Crossover frequency:</source>
+        <translation>交差周波数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="193" />
+        <source>Phase margin:</source>
+        <translation>位相余裕:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="198" />
+        <source> rad/s</source>
+        <translation> rad/s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="199" />
+        <source>Velocity step before and after (motor):</source>
+        <translation>変更前後の速度ステップ (モータ):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="217" />
+        <source>entered below</source>
+        <translation>以下に入力</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="222" />
+        <source>Session %1: %2, %3 axis %4, %5</source>
+        <translation>セッション %1: %2、%3 軸 %4、%5</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="242" />
+        <source>Before and after applying, a velocity step of the set size is run on the drive.</source>
+        <translation>適用の前後に、設定した大きさの速度ステップをサーボアンプで実行します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="243" />
+        <source>Not connected: the proposal and prediction only; the steps, apply and verify need a connection.</source>
+        <translation>未接続: 提案と予測のみ。ステップ応答、適用、検証には接続が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="266" />
+        <source>Session %1: fitted J_m %2 kg·m², J_L %3 kg·m², K %4 N·m/rad; the prediction uses this two-inertia model.</source>
+        <translation>セッション %1: 同定値 J_m %2 kg·m²、J_L %3 kg·m²、K %4 N·m/rad; 予測にはこの 2慣性系モデルを使います。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="303" />
+        <source>Loading session %1 failed: %2</source>
+        <translation>セッション %1 の読み込みに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="311" />
+        <source>Session %1 holds no frequency response.</source>
+        <translation>セッション %1 に周波数応答はありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="317" />
+        <source>Session %1, capture %2: %3</source>
+        <translation>セッション %1、計測データ %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::VelocityLoopVerifyPage</name>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="575" />
+        <source>Velocity loop: verification</source>
+        <translation>速度ループ: 検証</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="576" />
+        <source>The velocity step measured before and after applying, with the prediction.</source>
+        <translation>適用前後に測定した速度ステップ応答と予測。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="580" />
+        <source>Time from the step</source>
+        <translation>ステップからの時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="580" />
+        <source>Motor velocity / step</source>
+        <translation>モータ速度 / ステップ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="598" />
+        <source>Measured before</source>
+        <translation>変更前の測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="602" />
+        <source>Measured after</source>
+        <translation>適用後の測定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="606" />
+        <source>Predicted after</source>
+        <translation>適用後の予測</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="609" />
+        <source>Overshoot: before %1 (measured), after %2 (measured), %3 predicted.</source>
+        <translation>オーバーシュート: 変更前 %1 (測定)、変更後 %2 (測定)、予測 %3。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="611" />
+        <source>No step after applying: %1</source>
+        <translation>適用後のステップ応答なし: %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::VelocityLoopWizard</name>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="76" />
+        <source>Velocity and position loop</source>
+        <translation>速度ループと位置ループ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="83" />
+        <source>A velocity step of the set size (motor side) in the velocity loop, before and after applying; with a measured response first a torque sine stream in the closed velocity loop.</source>
+        <translation>適用の前後に、速度ループで設定した大きさ (モータ側) の速度ステップ。測定した応答を使う場合は、最初に速度閉ループで正弦波トルクを注入します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="142" />
+        <source>Velocity loop: the step after applying failed: %1</source>
+        <translation>速度ループ: 適用後のステップ応答に失敗しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::widgets::BodePlot</name>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="167" />
+        <source>Magnitude</source>
+        <translation>ゲイン</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="167" />
+        <source>dB</source>
+        <translation>dB</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="168" />
+        <source>Phase</source>
+        <translation>位相</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="168" />
+        <source>deg</source>
+        <translation>deg</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="169" />
+        <source>Coherence</source>
+        <translation>コヒーレンス</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="169" />
+        <source>0–1</source>
+        <translation>0–1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="354" />
+        <source>above the observation Nyquist: valid only by multi-sweep</source>
+        <translation>観測ナイキスト周波数以上: 複数回掃引でのみ有効</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="355" />
+        <source>not measurable</source>
+        <translation>測定不可</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="487" />
+        <source>Frequency</source>
+        <translation>周波数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/BodePlot.cpp" line="487" />
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::widgets::CurvePlot</name>
+    <message>
+        <location filename="../widgets/CurvePlot.cpp" line="27" />
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <location filename="../widgets/CurvePlot.cpp" line="27" />
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::widgets::PolarPlot</name>
+    <message>
+        <location filename="../widgets/PolarPlot.cpp" line="159" />
+        <source>Scale: %1 µm/div, magnification ×%2, radius %3 mm</source>
+        <translation>スケール: %1 µm/目盛, 倍率 ×%2, 半径 %3 mm</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::widgets::TimeTracePlot</name>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="124" />
+        <source>Velocity</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="126" />
+        <source>Acceleration</source>
+        <translation>加速度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="128" />
+        <source>Torque</source>
+        <translation>トルク</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="130" />
+        <source>Force</source>
+        <translation>力</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="132" />
+        <source>Current</source>
+        <translation>電流</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="134" />
+        <source>Voltage</source>
+        <translation>電圧</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="136" />
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="138" />
+        <source>Angle</source>
+        <translation>角度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="139" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="307" />
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="307" />
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="510" />
+        <source>t1 = %1 s   t2 = %2 s   Δt = %3 s</source>
+        <translation>t1 = %1 s   t2 = %2 s   Δt = %3 s</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="513" />
+        <source>   1/Δt = %1 Hz</source>
+        <translation>   1/Δt = %1 Hz</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="519" />
+        <source>%1: %2%5 | %3%5 | Δ %4%5</source>
+        <translation>%1: %2%5 | %3%5 | Δ %4%5</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="566" />
+        <source>%1: the series have different time bases; export them one by one</source>
+        <translation>%1: 系列ごとに時間軸が異なります。1 つずつ書き出ししてください</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="572" />
+        <source>%1: nothing to export: the plot is empty</source>
+        <translation>%1: 書き出しするものがありません (プロットが空です)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/TimeTracePlot.cpp" line="601" />
+        <source>%1: cannot write the file (%2)</source>
+        <translation>%1: ファイルを書き込めません (%2)</translation>
     </message>
 </context>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="19" />
+        <location filename="../app/gui/main.cpp" line="26" />
         <source>Commissioning and tuning of NC feed axes</source>
         <translation>NC工作機械送り軸の立上げと調整</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="22" />
+        <location filename="../app/gui/main.cpp" line="29" />
         <source>Simulated machine preset (vmc, dd-table, two-inertia).</source>
         <translation>シミュレーション機のプリセット (vmc, dd-table, two-inertia)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="24" />
-        <source>Language: en or ja.</source>
-        <translation>言語: en または ja。</translation>
+        <location filename="../app/gui/main.cpp" line="31" />
+        <source>Connect to this drive: sim:PRESET or modbus://HOST:PORT.</source>
+        <translation>このサーボアンプに接続: sim:PRESET または modbus://HOST:PORT。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="25" />
+        <location filename="../app/gui/main.cpp" line="33" />
+        <source>Start without a connection.</source>
+        <translation>接続せずに起動します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="34" />
+        <source>Language: en or ja (overrides the settings).</source>
+        <translation>言語: en または ja (設定より優先)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="35" />
+        <source>Store file (default: the one of the settings).</source>
+        <translation>データベースファイル (既定: 設定のファイル)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="36" />
         <source>Save a screenshot of the main window and quit.</source>
         <translation>メインウィンドウのスクリーンショットを保存して終了します。</translation>
     </message>
