@@ -11,6 +11,7 @@ namespace axistune::machining {
 CorrelationChatterDetector::CorrelationChatterDetector(std::size_t windowSamples, double energyFloor)
     : m_n(std::max<std::size_t>(windowSamples, 2)), m_floor(energyFloor), m_ring(5 * m_n, 0.0)
 {
+    std::fill(std::begin(m_zeros), std::end(m_zeros), m_n);
 }
 
 void CorrelationChatterDetector::reset()
@@ -18,6 +19,7 @@ void CorrelationChatterDetector::reset()
     std::fill(m_ring.begin(), m_ring.end(), 0.0);
     m_head = m_count = m_sinceResum = 0;
     std::fill(std::begin(m_s), std::end(m_s), 0.0);
+    std::fill(std::begin(m_zeros), std::end(m_zeros), m_n);
 }
 
 void CorrelationChatterDetector::resum()
@@ -32,6 +34,8 @@ CorrelationSample CorrelationChatterDetector::step(double f, double x, double a)
 {
     const double p[5] = {f * f, x * x, a * a, f * x, f * a};
     double* slot = &m_ring[5 * m_head];
+    for (int c = 0; c < 3; ++c)
+        m_zeros[c] += static_cast<std::size_t>(p[c] == 0.0) - static_cast<std::size_t>(slot[c] == 0.0);
     for (int c = 0; c < 5; ++c) {
         m_s[c] += p[c] - slot[c];
         slot[c] = p[c];
@@ -45,7 +49,10 @@ CorrelationSample CorrelationChatterDetector::step(double f, double x, double a)
     CorrelationSample s;
     const double nf = static_cast<double>(m_n);
     const double floorSum = m_floor * nf;
-    if (m_count < m_n || !(m_s[0] > floorSum) || !(m_s[1] > floorSum) || !(m_s[2] > floorSum) || m_s[0] <= 0.0 ||
+    // A window of exact zeros is invalid even while the running sums still hold a rounding residue of data
+    // that has left the window (until the next re-summation), spec §3.9 V-004-03.
+    const bool zeroEnergy = m_zeros[0] == m_n || m_zeros[1] == m_n || m_zeros[2] == m_n;
+    if (m_count < m_n || zeroEnergy || !(m_s[0] > floorSum) || !(m_s[1] > floorSum) || !(m_s[2] > floorSum) || m_s[0] <= 0.0 ||
         m_s[1] <= 0.0 || m_s[2] <= 0.0)
         return s;
     s.rFx = std::clamp(m_s[3] / std::sqrt(m_s[0] * m_s[1]), -1.0, 1.0);

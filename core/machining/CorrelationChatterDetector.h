@@ -30,6 +30,7 @@ private:
     std::vector<double> m_ring;  // 5 products per sample: FF, XX, AA, FX, FA
     std::size_t m_head = 0, m_count = 0, m_sinceResum = 0;
     double m_s[5] = {0, 0, 0, 0, 0};
+    std::size_t m_zeros[3] = {0, 0, 0};  // slots of the window whose FF, XX, AA product is exactly 0
 };
 
 }  // namespace axistune::machining
