@@ -6,9 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
-#include <deque>
+#include <cstdio>
 #include <numbers>
 #include <random>
 #include <vector>
