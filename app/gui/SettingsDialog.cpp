@@ -17,6 +17,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QLibraryInfo>
 #include <QTranslator>
 #include <QVBoxLayout>
 
@@ -25,6 +26,11 @@ namespace gui {
 
 namespace {
 QTranslator*& translator()
+{
+    static QTranslator* t = nullptr;
+    return t;
+}
+QTranslator*& qtTranslator()
 {
     static QTranslator* t = nullptr;
     return t;
@@ -41,14 +47,25 @@ bool setApplicationLanguage(const QString& code)
             delete t;
             return false;
         }
+        // Qt's own texts (wizard buttons, standard dialogs) from Debian's qt6-translations-l10n;
+        // without that package they stay English, ours are still Japanese.
+        auto* qt = new QTranslator(qApp);
+        if (qt->load("qtbase_ja", QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+            qtTranslator() = qt;
+            QApplication::installTranslator(qt);
+        } else {
+            delete qt;
+        }
         translator() = t;
         QApplication::installTranslator(t);  // sends QEvent::LanguageChange to every widget
         return true;
     }
-    if (translator()) {
-        QApplication::removeTranslator(translator());
-        delete translator();
-        translator() = nullptr;
+    for (QTranslator** t : {&translator(), &qtTranslator()}) {
+        if (*t) {
+            QApplication::removeTranslator(*t);
+            delete *t;
+            *t = nullptr;
+        }
     }
     return true;
 }

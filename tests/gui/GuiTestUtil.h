@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QLibraryInfo>
 #include <QPixmap>
 #include <QString>
 #include <QTemporaryDir>
@@ -33,6 +34,9 @@ inline QString installLanguageFromEnv()
     const QString lang = qEnvironmentVariable("AXISTUNE_LANG", "en");
     if (lang == "ja") {
         static QTranslator tr;
+        static QTranslator qt;
+        if (qt.load("qtbase_ja", QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+            QApplication::installTranslator(&qt);
         if (tr.load(":/i18n/axistune_ja.qm"))
             QApplication::installTranslator(&tr);
     }

@@ -71,6 +71,7 @@ private:
 private slots:
     void initTestCase()
     {
+        axistune::testing::installLanguageFromEnv();
         QVERIFY(m_dir.isValid());
         const std::string path = m_dir.filePath("store.sqlite").toStdString();
         {
