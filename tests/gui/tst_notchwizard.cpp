@@ -436,9 +436,9 @@ void TestNotchWizard::simdriveKilledDuringVerification()
     QVERIFY(w.savedAborted());
     QVERIFY(!w.verifyRunPage()->succeeded());
     QVERIFY2(w.verifyRunPage()->failure().contains("onnection", Qt::CaseInsensitive), qPrintable(w.verifyRunPage()->failure()));
+    maybeScreenshot(&w, "notch-09-connection-lost");
     auto* note = w.findChild<QLabel*>("verifyAbortNote");
     QVERIFY(note && note->text().contains("aborted"));
-    maybeScreenshot(&w, "notch-09-connection-lost");
     // Responsive: a 10 ms timer fires within 500 ms, and the wizard still reacts to input.
     QElapsedTimer lat;
     lat.start();
