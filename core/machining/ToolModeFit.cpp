@@ -27,12 +27,15 @@ struct Points {
     std::vector<cd> h;       // m/N
 };
 
-// Largest interior local maximum of y (strictly greater than both neighbours, > 0); -1 if none.
-int largestPeak(const std::vector<double>& y)
+// Largest interior local maximum of y (strictly greater than the left neighbour, not less than the right,
+// at least `floor`, and not masked); -1 if none.
+int largestPeak(const std::vector<double>& y, const std::vector<bool>& masked, double floor)
 {
     int best = -1;
     for (std::size_t i = 1; i + 1 < y.size(); ++i) {
-        if (y[i] > 0.0 && y[i] > y[i - 1] && y[i] >= y[i + 1] && (best < 0 || y[i] > y[static_cast<std::size_t>(best)]))
+        if (masked[i] || !(y[i] > 0.0) || y[i] < floor || !(y[i] > y[i - 1]) || !(y[i] >= y[i + 1]))
+            continue;
+        if (best < 0 || y[i] > y[static_cast<std::size_t>(best)])
             best = static_cast<int>(i);
     }
     return best;
@@ -55,15 +58,30 @@ double halfPowerCrossing(const Points& p, const std::vector<cd>& r, int i0, int 
     return std::numeric_limits<double>::quiet_NaN();
 }
 
-Result<ModalParameters> pickMode(const Points& p, const std::vector<cd>& remainder, int index)
+// A further mode must peak at ≥ kMinPeakFraction of the first mode's −Im H and outside
+// ω_j·(1 ± kExclusionZetas·ζ_j) of every mode found so far (what remains there is the start-value error).
+constexpr double kMinPeakFraction = 0.05;
+constexpr double kExclusionZetas = 5.0;
+
+Result<ModalParameters> pickMode(const Points& p, const std::vector<cd>& remainder, const std::vector<ModalParameters>& found,
+                                 double firstPeak)
 {
     std::vector<double> negIm(remainder.size());
-    for (std::size_t i = 0; i < remainder.size(); ++i)
+    std::vector<bool> masked(remainder.size(), false);
+    for (std::size_t i = 0; i < remainder.size(); ++i) {
         negIm[i] = -remainder[i].imag();
-    const int ip = largestPeak(negIm);
+        for (const auto& m : found) {
+            const double wn = std::sqrt(m.stiffnessNPerM / m.massKg);
+            if (std::abs(p.w[i] - wn) <= kExclusionZetas * dampingRatio(m) * wn)
+                masked[i] = true;
+        }
+    }
+    const int ip = largestPeak(negIm, masked, kMinPeakFraction * firstPeak);
     if (ip < 0)
-        return makeError(ErrorCode::BadInput, "tool FRF: no resonance peak (local maximum of -Im H inside the band) for mode "
-                                                  + std::to_string(index + 1));
+        return makeError(ErrorCode::BadInput,
+                         "tool FRF: no resonance peak for mode " + std::to_string(found.size() + 1)
+                             + (found.empty() ? std::string(" (no local maximum of -Im H inside the band)")
+                                              : std::string(" (no further local maximum of -Im H above 5 % of the first peak)")));
     const auto i = static_cast<std::size_t>(ip);
     // Parabolic interpolation of the peak frequency on a log-frequency axis.
     double wn = p.w[i];
@@ -174,10 +192,13 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
     ToolModeFitResult out;
     out.points = p.w.size();
     std::vector<cd> remainder = p.h;
+    double firstPeak = 0.0;
     for (int j = 0; j < options.modes; ++j) {
-        auto m = pickMode(p, remainder, j);
+        auto m = pickMode(p, remainder, out.startModes, firstPeak);
         if (!m)
             return m.error();
+        if (j == 0)
+            firstPeak = 1.0 / (m->dampingNsPerM * std::sqrt(m->stiffnessNPerM / m->massKg));
         out.startModes.push_back(*m);
         for (std::size_t i = 0; i < remainder.size(); ++i)
             remainder[i] -= modeG(*m, p.w[i]);

@@ -32,7 +32,9 @@ struct ToolModeFitResult {
 
 /// Fits `options.modes` modes to the receptance `frf` (h in m/N; only points with valid = true and
 /// minHz ≤ f ≤ maxHz, f > 0, finite nonzero h). Errors: BadInput for fewer points than 3·modes + 1,
-/// no resonance peak (for each mode), or a non-finite / non-positive result; OutOfRange for modes < 1.
+/// no resonance peak for a mode (the first: no interior local maximum of −Im H; a further one: none above
+/// 5 % of the first peak outside ±5ζω_n of the modes already found), or a non-finite / non-positive
+/// result; OutOfRange for modes < 1.
 Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const ToolModeFitOptions& options = {});
 
 }  // namespace axistune::machining

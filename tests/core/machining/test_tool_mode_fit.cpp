@@ -135,6 +135,15 @@ TEST(ToolModeFit, PeakOutsideBandHasNoPeak)
     EXPECT_NE(fit.error().detail.find("no resonance peak"), std::string::npos) << fit.error().detail;
 }
 
+TEST(ToolModeFit, SecondModeOfASingleModeFrfIsNamedError)
+{
+    // What the first start value leaves behind near 1380 Hz is not a second mode.
+    auto fit = fitToolModes(analyticFrf({kTable1}), {.modes = 2});
+    ASSERT_FALSE(fit.ok());
+    EXPECT_EQ(fit.error().code, ErrorCode::BadInput);
+    EXPECT_NE(fit.error().detail.find("no resonance peak for mode 2"), std::string::npos) << fit.error().detail;
+}
+
 TEST(ToolModeFit, ZeroModesIsOutOfRange)
 {
     auto fit = fitToolModes(analyticFrf({kTable1}), {.modes = 0});

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// lobes --tool-frf-x/--tool-frf-y: tool modes fitted to a receptance FRF CSV give the same lobes as the
+// equivalent tool.json. The FRFs are written here analytically, H = Σ 1/(k − mω² + jcω) in m/N.
+#include "tests/app/cli/CliRunner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using axistune::testing::makeTempDir;
+using axistune::testing::readFileText;
+using axistune::testing::runCli;
+
+namespace {
+
+const std::string kSamples = std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/samples/";
+
+struct Mode {
+    double m, c, k;
+};
+
+void writeFrfCsv(const std::filesystem::path& p, const std::vector<Mode>& modes)
+{
+    std::ofstream f(p);
+    f << "f_Hz,re,im,mag_dB,phase_deg,coherence,valid\n";
+    char line[256];
+    for (int i = 0; i < 400; ++i) {
+        const double hz = 500.0 * std::pow(6.0, i / 399.0);
+        const double w = 2.0 * std::numbers::pi * hz;
+        std::complex<double> h = 0.0;
+        for (const auto& m : modes)
+            h += 1.0 / std::complex<double>(m.k - m.m * w * w, m.c * w);
+        std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,,1\n", hz, h.real(), h.imag(),
+                      20.0 * std::log10(std::abs(h)), std::arg(h) * 180.0 / std::numbers::pi);
+        f << line;
+    }
+}
+
+void writeFile(const std::filesystem::path& p, const std::string& text)
+{
+    std::ofstream f(p);
+    f << text;
+}
+
+// The limit depth at the first row of a lobes CSV.
+double firstLimit(const std::string& csvText)
+{
+    std::istringstream csv(csvText);
+    std::string line;
+    std::getline(csv, line);
+    std::getline(csv, line);
+    return std::stod(line.substr(line.find(',') + 1));
+}
+
+}  // namespace
+
+TEST(CliLobesToolFrf, FittedTable1ToolMatchesToolJsonAt2800Rpm)
+{
+    const auto dir = makeTempDir("lobesfrf");
+    writeFrfCsv(dir / "x.csv", {{0.40, 83.0, 30.1e6}});
+    writeFrfCsv(dir / "y.csv", {{0.40, 83.0, 30.1e6}});
+    const std::string common = " --cut " + kSamples + "cut-table1.json --rpm-min 2800 --rpm-max 2800 --rpm-step 10 --steps-per-period 40";
+    auto ref = runCli("lobes --tool " + kSamples + "tool-table1.json" + common + " --out " + (dir / "ref.csv").string());
+    ASSERT_EQ(ref.exitCode, 0) << ref.err;
+    auto fit = runCli("lobes --tool-frf-x " + (dir / "x.csv").string() + " --tool-frf-y " + (dir / "y.csv").string() + common +
+                      " --out " + (dir / "fit.csv").string());
+    ASSERT_EQ(fit.exitCode, 0) << fit.err;
+    const double a = firstLimit(readFileText(dir / "ref.csv"));
+    const double b = firstLimit(readFileText(dir / "fit.csv"));
+    EXPECT_GT(a, 0.5e-3);  // spec §5.1: 0.958 mm at k = 80
+    EXPECT_NEAR(b, a, 0.01 * a);
+    EXPECT_NE(fit.err.find("mass_kg="), std::string::npos) << fit.err;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CliLobesToolFrf, TwoModesMatchToolJson)
+{
+    const auto dir = makeTempDir("lobesfrf2");
+    writeFrfCsv(dir / "x.csv", {{0.40, 83.0, 30.1e6}, {0.15, 60.0, 50e6}});
+    writeFrfCsv(dir / "y.csv", {{0.40, 83.0, 30.1e6}, {0.15, 60.0, 50e6}});
+    writeFrfCsv(dir / "y1.csv", {{0.40, 83.0, 30.1e6}});
+    writeFile(dir / "tool.json", R"({"modes_x":[{"mass_kg":0.4,"damping_Ns_per_m":83,"stiffness_N_per_m":30.1e6},
+                                                {"mass_kg":0.15,"damping_Ns_per_m":60,"stiffness_N_per_m":50e6}],
+                                     "modes_y":[{"mass_kg":0.4,"damping_Ns_per_m":83,"stiffness_N_per_m":30.1e6},
+                                                {"mass_kg":0.15,"damping_Ns_per_m":60,"stiffness_N_per_m":50e6}]})");
+    const std::string common = " --cut " + kSamples + "cut-table1.json --rpm-min 2800 --rpm-max 2800 --rpm-step 10";
+    auto ref = runCli("lobes --tool " + (dir / "tool.json").string() + common + " --out " + (dir / "ref.csv").string());
+    ASSERT_EQ(ref.exitCode, 0) << ref.err;
+    auto fit = runCli("lobes --modes 2 --tool-frf-x " + (dir / "x.csv").string() + " --tool-frf-y " + (dir / "y.csv").string() +
+                      common + " --out " + (dir / "fit.csv").string());
+    ASSERT_EQ(fit.exitCode, 0) << fit.err;
+    const double a = firstLimit(readFileText(dir / "ref.csv"));
+    EXPECT_GT(a, 0.0);
+    EXPECT_NEAR(firstLimit(readFileText(dir / "fit.csv")), a, 0.01 * a);
+    // y1 has one mode only: with --modes 2 its fit must fail with a named error.
+    auto bad = runCli("lobes --modes 2 --tool-frf-x " + (dir / "x.csv").string() + " --tool-frf-y " + (dir / "y1.csv").string() +
+                      common);
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("y1.csv"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("no resonance peak"), std::string::npos) << bad.err;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CliLobesToolFrf, BadFilesExitWith2)
+{
+    const auto dir = makeTempDir("lobesfrfbad");
+    writeFrfCsv(dir / "x.csv", {{0.40, 83.0, 30.1e6}});
+    writeFile(dir / "broken.csv", "f_Hz,re,im\n100,abc,0\n");
+    const std::string common = " --cut " + kSamples + "cut-table1.json --rpm-min 2800 --rpm-max 2900 --rpm-step 100";
+    auto r = runCli("lobes --tool-frf-x " + (dir / "x.csv").string() + " --tool-frf-y " + (dir / "broken.csv").string() + common);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("broken.csv"), std::string::npos) << r.err;
+    r = runCli("lobes --tool-frf-x " + (dir / "x.csv").string() + " --tool-frf-y " + (dir / "missing.csv").string() + common);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("missing.csv"), std::string::npos) << r.err;
+    r = runCli("lobes --tool-frf-x " + (dir / "x.csv").string() + common);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--tool-frf-y"), std::string::npos) << r.err;
+    r = runCli("lobes --tool " + kSamples + "tool-table1.json --tool-frf-x " + (dir / "x.csv").string() + " --tool-frf-y " +
+               (dir / "x.csv").string() + common);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("alternatives"), std::string::npos) << r.err;
+    r = runCli("lobes" + common);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--tool"), std::string::npos) << r.err;
+    std::filesystem::remove_all(dir);
+}
