@@ -755,7 +755,7 @@
         <translation>ロストモーション…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="32" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="34" />
         <source>Machining (chatter)…</source>
         <translation>加工 (びびり振動)…</translation>
     </message>
@@ -2631,158 +2631,158 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::MachiningCutPage</name>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="221" />
-        <location filename="../app/gui/MachiningWizard.cpp" line="262" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="267" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="308" />
         <source>Cutting data</source>
         <translation>切削条件</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="222" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="268" />
         <source>The cutter, the material's specific cutting forces, the engagement and the current operating point.</source>
         <translation>工具、材料の比切削抵抗、切込み、現在の加工条件。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="241" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="287" />
         <source>Down milling (climb)</source>
         <translation>ダウンカット</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="242" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="288" />
         <source>Up milling (conventional)</source>
         <translation>アップカット</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="253" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="299" />
         <source>Time steps per tooth period of the semi-discretization: 40 gives the limit depth within ~8 %, 80 within ~3 %, 160 within ~1 % (docs/machining.md).</source>
         <translation>半離散化の 1 刃周期あたりの時間ステップ数: 40 で限界切込み深さは約 8 % 以内、80 で約 3 % 以内、160 で約 1 % 以内 (docs/machining.md)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="259" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="305" />
         <source>Load cut.json…</source>
         <translation>cut.json を読み込む…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="262" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="308" />
         <source>Cut JSON (*.json);;All files (*)</source>
         <translation>切削 JSON (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="268" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="314" />
         <source>Teeth</source>
         <translation>刃数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="269" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="315" />
         <source>Tangential specific cutting force K_t [GPa = kN/mm²]</source>
         <translation>接線方向の比切削抵抗 K_t [GPa = kN/mm²]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="270" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="316" />
         <source>Radial specific cutting force K_r [GPa = kN/mm²]</source>
         <translation>半径方向の比切削抵抗 K_r [GPa = kN/mm²]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="271" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="317" />
         <source>Radial immersion a_e/D (0–1]</source>
         <translation>半径方向切込み比 a_e/D (0–1]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="272" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="318" />
         <source>Milling</source>
         <translation>切削方向</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="273" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="319" />
         <source>Spindle speed [min⁻¹]</source>
         <translation>主軸回転数 [min⁻¹]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="274" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="320" />
         <source>Axial depth of cut [mm]</source>
         <translation>軸方向切込み深さ [mm]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="277" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="323" />
         <source>to</source>
         <translation>〜</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="279" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="325" />
         <source>step</source>
         <translation>刻み</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="281" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="327" />
         <source>Lobe diagram speeds [min⁻¹]</source>
         <translation>安定限界線図の回転数 [min⁻¹]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="282" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="328" />
         <source>Steps per tooth period</source>
         <translation>1 刃周期あたりのステップ数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="317" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="363" />
         <source>K_t</source>
         <translation>K_t</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="318" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="364" />
         <source>K_r</source>
         <translation>K_r</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="319" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="365" />
         <source>radial immersion</source>
         <translation>半径方向切込み比</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="320" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="366" />
         <source>spindle speed</source>
         <translation>主軸回転数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="321" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="367" />
         <source>axial depth</source>
         <translation>軸方向切込み深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="322" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="368" />
         <source>lowest speed</source>
         <translation>最低回転数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="323" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="369" />
         <source>highest speed</source>
         <translation>最高回転数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="324" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="370" />
         <source>speed step</source>
         <translation>回転数の刻み</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="330" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="376" />
         <source>%1: '%2' is not a number</source>
         <translation>%1: '%2' は数値ではありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="340" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="386" />
         <source>spindle speed must be &gt; 0 min⁻¹</source>
         <translation>主軸回転数は 0 min⁻¹ より大きくしてください</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="342" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="388" />
         <source>axial depth must be ≥ 0 mm</source>
         <translation>軸方向切込み深さは 0 mm 以上にしてください</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="345" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="391" />
         <source>lobe diagram speeds: </source>
         <translation>安定限界線図の回転数: </translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="349" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="395" />
         <source>lobe diagram speeds: %1 speeds; at most 2000 (a larger step)</source>
         <translation>安定限界線図の回転数: %1 点; 最大 2000 点です (刻みを大きくしてください)</translation>
     </message>
@@ -2888,12 +2888,12 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::MachiningSavePage</name>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="369" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="415" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="370" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="416" />
         <source>The session (kind "machining") stores the tool and cut data, the lobes, the advice, the chatter intervals and the analysed cut.</source>
         <translation>セッション (種類 "machining") には、工具と切削のデータ、安定限界線図、提案、びびり振動の区間、解析した切削が保存されます。</translation>
     </message>
@@ -2901,78 +2901,114 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::MachiningToolPage</name>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="64" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="66" />
         <source>Tool</source>
         <translation>工具</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="65" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="67" />
         <source>Modal parameters of the tool tip per direction (x = feed direction). Modes of one direction add their compliances.</source>
         <translation>方向ごとの工具先端のモードパラメータ (x = 送り方向)。同じ方向のモードはコンプライアンスが加算されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="70" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="72" />
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="70" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="72" />
         <source>Mass [kg]</source>
         <translation>質量 [kg]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="70" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="72" />
         <source>Damping [N·s/m]</source>
         <translation>減衰 [N·s/m]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="70" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="72" />
         <source>Stiffness [N/m]</source>
         <translation>剛性 [N/m]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="73" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="75" />
         <source>Load tool.json…</source>
         <translation>tool.json を読み込む…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="75" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="77" />
         <source>Add x mode</source>
         <translation>x モードを追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="76" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="78" />
         <source>Add y mode</source>
         <translation>y モードを追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="77" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="79" />
         <source>Remove mode</source>
         <translation>モードを削除</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="101" />
-        <location filename="../app/gui/MachiningWizard.cpp" line="104" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="88" />
+        <source>Fit to tool-tip FRFs…</source>
+        <translation>工具先端の周波数応答から同定…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="90" />
+        <source>Modes fitted to measured tool-tip receptances (FRF CSV, h in m/N) in x and y</source>
+        <translation>x と y で測定した工具先端のレセプタンス (周波数応答 CSV、h は m/N) からモードを同定します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="107" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="110" />
         <source>entered</source>
         <translation>入力値</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="109" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="115" />
         <source>Tool data</source>
         <translation>工具データ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="109" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="115" />
         <source>Tool JSON (*.json);;All files (*)</source>
         <translation>工具 JSON (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="177" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="120" />
+        <source>Tool-tip FRF in x (feed direction)</source>
+        <translation>x 方向 (送り方向) の工具先端の周波数応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="121" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="125" />
+        <source>FRF CSV (*.csv);;All files (*)</source>
+        <translation>周波数応答 CSV (*.csv);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="124" />
+        <source>Tool-tip FRF in y</source>
+        <translation>y 方向の工具先端の周波数応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="203" />
+        <source>%1: %2 points, rms relative error %3 %</source>
+        <translation>%1: %2 点、相対 rms 誤差 %3 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="209" />
+        <source>fitted to %1</source>
+        <translation>%1 から同定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="223" />
         <source>row %1, %2: not a number</source>
         <translation>%1 行目、%2: 数値ではありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="203" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="249" />
         <source>%1: natural frequency %2 Hz, damping ratio %3 %</source>
         <translation>%1: 固有振動数 %2 Hz、減衰比 %3 %</translation>
     </message>
@@ -2980,22 +3016,22 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::MachiningWizard</name>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="389" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="435" />
         <source>Machining: stability lobes and chatter</source>
         <translation>加工: 安定限界線図とびびり振動</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="417" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="463" />
         <source>Nothing saved: the tool or cut data are not valid.</source>
         <translation>保存していません: 工具または切削のデータが正しくありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="498" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="544" />
         <source>Not saved: %1</source>
         <translation>保存されませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="502" />
+        <location filename="../app/gui/MachiningWizard.cpp" line="548" />
         <source>Saved as session %1: inputs, %2 results, %3 capture(s).</source>
         <translation>セッション %1 として保存しました: 入力、結果 %2 件、計測データ %3 件。</translation>
     </message>
@@ -4292,47 +4328,47 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::SettingsDialog</name>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="106" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="123" />
         <source>Preferences</source>
         <translation>環境設定</translation>
     </message>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="107" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="124" />
         <source>Language:</source>
         <translation>言語:</translation>
     </message>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="108" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="125" />
         <source>Store file:</source>
         <translation>データベースファイル:</translation>
     </message>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="109" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="126" />
         <source>Browse…</source>
         <translation>参照…</translation>
     </message>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="110" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="127" />
         <source>Operator name:</source>
         <translation>作業者名:</translation>
     </message>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="111" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="128" />
         <source>The SQLite file holding machines, profiles, sessions and the journal</source>
         <translation>機械、プロファイル、セッション、変更履歴を保存する SQLite ファイル</translation>
     </message>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="125" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="142" />
         <source>Store file</source>
         <translation>データベースファイル</translation>
     </message>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="125" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="142" />
         <source>AxisTune store (*.sqlite)</source>
         <translation>AxisTune データベース (*.sqlite)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SettingsDialog.cpp" line="136" />
+        <location filename="../app/gui/SettingsDialog.cpp" line="153" />
         <source>The Japanese translation could not be loaded</source>
         <translation>日本語の翻訳を読み込めませんでした</translation>
     </message>

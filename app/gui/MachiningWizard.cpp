@@ -6,7 +6,9 @@
 
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/io/FrfCsv.h"
 #include "core/machining/MachiningJson.h"
+#include "core/machining/ToolModeFit.h"
 
 #include <QComboBox>
 #include <QFileDialog>
@@ -83,8 +85,12 @@ MachiningToolPage::MachiningToolPage(QWidget* parent) : QWizardPage(parent)
     m_derived->setObjectName("machToolDerived");
     m_derived->setWordWrap(true);
 
+    auto* fit = new QPushButton(tr("Fit to tool-tip FRFs…"), this);
+    fit->setObjectName("machiningFitFrf");
+    fit->setToolTip(tr("Modes fitted to measured tool-tip receptances (FRF CSV, h in m/N) in x and y"));
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(load);
+    buttons->addWidget(fit);
     buttons->addStretch();
     buttons->addWidget(addX);
     buttons->addWidget(addY);
@@ -109,6 +115,16 @@ MachiningToolPage::MachiningToolPage(QWidget* parent) : QWizardPage(parent)
             QFileDialog::getOpenFileName(this, tr("Tool data"), QString(), tr("Tool JSON (*.json);;All files (*)"));
         if (!path.isEmpty())
             loadToolFile(path);
+    });
+    connect(fit, &QPushButton::clicked, this, [this] {
+        const QString x = QFileDialog::getOpenFileName(this, tr("Tool-tip FRF in x (feed direction)"), QString(),
+                                                       tr("FRF CSV (*.csv);;All files (*)"));
+        if (x.isEmpty())
+            return;
+        const QString y = QFileDialog::getOpenFileName(this, tr("Tool-tip FRF in y"), QString(),
+                                                       tr("FRF CSV (*.csv);;All files (*)"));
+        if (!y.isEmpty())
+            fitToolFrfs(x, y, 1);
     });
     connect(addX, &QPushButton::clicked, this, [this] {
         addRow("x", {0.4, 80.0, 3.0e7});
@@ -161,6 +177,36 @@ bool MachiningToolPage::loadToolFile(const QString& path)
     }
     setTool(*tool);
     m_source = path;
+    return true;
+}
+
+bool MachiningToolPage::fitToolFrfs(const QString& xPath, const QString& yPath, int modesPerDirection)
+{
+    // Modes per direction fitted to the receptance (core/machining/ToolModeFit.h: peak picking, then
+    // Levenberg–Marquardt on the relative complex residuals).
+    machining::ToolModes tool;
+    QStringList quality;
+    for (const auto& [path, modes] : {std::pair{xPath, &tool.modesX}, std::pair{yPath, &tool.modesY}}) {
+        auto frf = io::readFrfCsvFile(path.toStdString());
+        if (!frf) {
+            setErrorText(m_error, QString::fromStdString(frf.error().detail));
+            return false;
+        }
+        machining::ToolModeFitOptions opt;
+        opt.modes = modesPerDirection;
+        auto fit = machining::fitToolModes(*frf, opt);
+        if (!fit) {
+            setErrorText(m_error, path + ": " + QString::fromStdString(fit.error().detail));
+            return false;
+        }
+        *modes = fit->modes;
+        quality << tr("%1: %2 points, rms relative error %3 %")
+                       .arg(path)
+                       .arg(fit->points)
+                       .arg(100.0 * fit->rmsRelativeError, 0, 'f', 2);
+    }
+    setTool(tool);
+    m_source = tr("fitted to %1").arg(quality.join("; "));
     return true;
 }
 

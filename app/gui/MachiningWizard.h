@@ -55,6 +55,9 @@ public:
     QLabel* errorLabel() const { return m_error; }
     /// Fills the table from a tool.json; false (and the message shown) on error.
     bool loadToolFile(const QString& path);
+    /// Fills the table with modes fitted to measured tool-tip receptance FRFs (FRF CSV, h in m/N) in x
+    /// and y; false (and the message, naming the file, shown) on error.
+    bool fitToolFrfs(const QString& xPath, const QString& yPath, int modesPerDirection);
     void setTool(const machining::ToolModes& tool);
     /// The tool in the table, validated (machining::validateTool); the error names the row and column.
     Result<machining::ToolModes> tool() const;

@@ -13,6 +13,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/MachiningWizard.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/io/FrfCsv.h"
 #include "core/machining/ToolModel.h"
 #include "widgets/CurvePlot.h"
 
@@ -28,6 +29,8 @@
 #include <QtTest>
 
 #include <cmath>
+#include <complex>
+#include <utility>
 
 #include "tests/app/cli/CliRunner.h"
 #include "tests/gui/GuiTestUtil.h"
@@ -79,6 +82,44 @@ private slots:
         QVERIFY(e);
         QCOMPARE(e->order, 70);
         QVERIFY(!e->needsDrive);
+    }
+
+    void toolModesFittedToTipFrfs()
+    {
+        // Receptances of known single-mode tools, computed here: H = 1/(k − mω² + jcω) [m/N]. The
+        // page's table must hold the same m, c, k (the core fit recovers them within 0.5 % on
+        // noise-free data, tests/core/machining/test_tool_mode_fit.cpp); a bad file is named.
+        QTemporaryDir dir;
+        const machining::ModalParameters x{0.40, 83.0, 30.1e6}, y{0.35, 70.0, 28.0e6};
+        auto write = [&](const machining::ModalParameters& m, const QString& name) {
+            dsp::FrequencyResponse frf;
+            for (int i = 0; i < 400; ++i) {
+                const double f = 500.0 * std::pow(6.0, i / 399.0);
+                const double w = 2.0 * M_PI * f;
+                frf.push(f, 1.0 / std::complex<double>(m.stiffnessNPerM - m.massKg * w * w, m.dampingNsPerM * w),
+                         std::nan(""), true);
+            }
+            const QString path = dir.filePath(name);
+            QVERIFY(io::writeFrfCsvFile(path.toStdString(), frf).ok());
+        };
+        write(x, "x.csv");
+        write(y, "y.csv");
+        AppContext ctx;
+        MachiningWizard w(ctx);
+        auto* tool = w.toolPage();
+        QVERIFY(tool->fitToolFrfs(dir.filePath("x.csv"), dir.filePath("y.csv"), 1));
+        auto t = tool->tool();
+        QVERIFY(t.ok());
+        QCOMPARE(t->modesX.size(), std::size_t(1));
+        QCOMPARE(t->modesY.size(), std::size_t(1));
+        for (const auto& [got, want] : {std::pair{t->modesX[0], x}, std::pair{t->modesY[0], y}}) {
+            QVERIFY(std::abs(got.massKg / want.massKg - 1.0) < 0.005);
+            QVERIFY(std::abs(got.dampingNsPerM / want.dampingNsPerM - 1.0) < 0.005);
+            QVERIFY(std::abs(got.stiffnessNPerM / want.stiffnessNPerM - 1.0) < 0.005);
+        }
+        QVERIFY(tool->isComplete());
+        QVERIFY(!tool->fitToolFrfs(dir.filePath("missing.csv"), dir.filePath("y.csv"), 1));
+        QVERIFY(tool->errorLabel()->text().contains("missing.csv"));
     }
 
     void badDataBlocksNextWithTheCoreMessage()
