@@ -439,9 +439,33 @@
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="516" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="501" />
         <source>none</source>
         <translation>なし</translation>
+    </message>
+</context>
+<context>
+    <name>SessionFrf</name>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="76" />
+        <location filename="../app/gui/WizardPages.cpp" line="81" />
+        <source>Loading session %1 failed: %2</source>
+        <translation>セッション %1 の読み込みに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="78" />
+        <source>no store is open</source>
+        <translation>データベースが開かれていません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="89" />
+        <source>Session %1 holds no frequency response.</source>
+        <translation>セッション %1 に周波数応答はありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="92" />
+        <source>Session %1, capture %2: %3</source>
+        <translation>セッション %1、計測データ %2: %3</translation>
     </message>
 </context>
 <context>
@@ -709,22 +733,22 @@
 <context>
     <name>TestRunPage</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="53" />
+        <location filename="../app/gui/WizardPages.cpp" line="54" />
         <source>velocity step</source>
         <translation>速度ステップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="55" />
+        <location filename="../app/gui/WizardPages.cpp" line="56" />
         <source>jog</source>
         <translation>ジョグ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="57" />
+        <location filename="../app/gui/WizardPages.cpp" line="58" />
         <source>position hold</source>
         <translation>位置保持</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="59" />
+        <location filename="../app/gui/WizardPages.cpp" line="60" />
         <source>frequency response (%1)</source>
         <translation>周波数応答 (%1)</translation>
     </message>
@@ -806,129 +830,129 @@
 <context>
     <name>axistune::gui::ApplyPage</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="310" />
-        <location filename="../app/gui/WizardPages.cpp" line="323" />
+        <location filename="../app/gui/WizardPages.cpp" line="337" />
+        <location filename="../app/gui/WizardPages.cpp" line="350" />
         <source>Apply</source>
         <translation>適用</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="311" />
+        <location filename="../app/gui/WizardPages.cpp" line="338" />
         <source>The parameters below change on the drive. Every value is read back after the write.</source>
         <translation>以下のパラメータをサーボアンプで変更します。書き込み後にすべての値を読み出して確認します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <location filename="../app/gui/WizardPages.cpp" line="340" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <location filename="../app/gui/WizardPages.cpp" line="340" />
         <source>Key</source>
         <translation>キー</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <location filename="../app/gui/WizardPages.cpp" line="340" />
         <source>Device</source>
         <translation>サーボアンプ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <location filename="../app/gui/WizardPages.cpp" line="340" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <location filename="../app/gui/WizardPages.cpp" line="340" />
         <source>Read back</source>
         <translation>読み出し値</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="313" />
+        <location filename="../app/gui/WizardPages.cpp" line="340" />
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="318" />
+        <location filename="../app/gui/WizardPages.cpp" line="345" />
         <source>Write these values to the drive</source>
         <translation>これらの値をサーボアンプに書き込む</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="319" />
+        <location filename="../app/gui/WizardPages.cpp" line="346" />
         <source>Do not apply now (keep the proposal in the session only)</source>
         <translation>今は適用しない (提案はセッションにのみ保存)</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="324" />
+        <location filename="../app/gui/WizardPages.cpp" line="351" />
         <source>Restore previous values</source>
         <translation>以前の値に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="363" />
+        <location filename="../app/gui/WizardPages.cpp" line="390" />
         <source>Not connected: the proposal can only be kept in the session.</source>
         <translation>未接続: 提案はセッションに保存するだけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="366" />
+        <location filename="../app/gui/WizardPages.cpp" line="393" />
         <source>Reading the device values…</source>
         <translation>サーボアンプの値を読み出し中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="388" />
+        <location filename="../app/gui/WizardPages.cpp" line="415" />
         <source>Changed</source>
         <translation>変更あり</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="402" />
+        <location filename="../app/gui/WizardPages.cpp" line="429" />
         <source>The device values are not read yet: wait, then Apply.</source>
         <translation>サーボアンプの値をまだ読み出していません。少し待ってから適用してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="406" />
+        <location filename="../app/gui/WizardPages.cpp" line="433" />
         <source>Writing…</source>
         <translation>書き込み中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="415" />
+        <location filename="../app/gui/WizardPages.cpp" line="442" />
         <source>Restoring the previous values…</source>
         <translation>以前の値に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="438" />
-        <location filename="../app/gui/WizardPages.cpp" line="448" />
+        <location filename="../app/gui/WizardPages.cpp" line="465" />
+        <location filename="../app/gui/WizardPages.cpp" line="475" />
         <source>Reading the parameters failed: %1</source>
         <translation>パラメータの読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="452" />
+        <location filename="../app/gui/WizardPages.cpp" line="479" />
         <source>Changed values are highlighted. Confirm, then Apply.</source>
         <translation>変更される値は強調表示されています。確認してから適用してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="457" />
+        <location filename="../app/gui/WizardPages.cpp" line="484" />
         <source>The write failed; the drive keeps its values: %1</source>
         <translation>書き込みに失敗しました。サーボアンプの値は変わっていません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="464" />
+        <location filename="../app/gui/WizardPages.cpp" line="491" />
         <source>Applied and read back.</source>
         <translation>適用し、読み出して確認しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="468" />
+        <location filename="../app/gui/WizardPages.cpp" line="495" />
         <source>Axis %1: %2 parameters applied and read back</source>
         <translation>軸 %1: %2 個のパラメータを適用し、読み出して確認しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="474" />
+        <location filename="../app/gui/WizardPages.cpp" line="501" />
         <source>Restoring failed: %1</source>
         <translation>元に戻せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="481" />
+        <location filename="../app/gui/WizardPages.cpp" line="508" />
         <source>The previous values are back on the drive.</source>
         <translation>サーボアンプの値を以前の値に戻しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="485" />
+        <location filename="../app/gui/WizardPages.cpp" line="512" />
         <source>Axis %1: previous parameters restored</source>
         <translation>軸 %1: 以前のパラメータに戻しました</translation>
     </message>
@@ -3971,62 +3995,62 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::SafetyPage</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="76" />
+        <location filename="../app/gui/WizardPages.cpp" line="103" />
         <source>Safety</source>
         <translation>安全確認</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="77" />
+        <location filename="../app/gui/WizardPages.cpp" line="104" />
         <source>Check the axis and its limits before anything moves.</source>
         <translation>動かす前に、軸とその制限を確認してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="81" />
+        <location filename="../app/gui/WizardPages.cpp" line="108" />
         <source>Axis:</source>
         <translation>軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="86" />
+        <location filename="../app/gui/WizardPages.cpp" line="113" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="86" />
+        <location filename="../app/gui/WizardPages.cpp" line="113" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="86" />
+        <location filename="../app/gui/WizardPages.cpp" line="113" />
         <source>Limits</source>
         <translation>範囲</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="86" />
+        <location filename="../app/gui/WizardPages.cpp" line="113" />
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="91" />
+        <location filename="../app/gui/WizardPages.cpp" line="118" />
         <source>The axis is free to move over the whole test, nobody is inside the machine, and the emergency stop is within reach.</source>
         <translation>テスト全体を通じて軸は自由に動くことができ、機械の中には誰もおらず、非常停止ボタンに手が届きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="117" />
+        <location filename="../app/gui/WizardPages.cpp" line="144" />
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="122" />
+        <location filename="../app/gui/WizardPages.cpp" line="149" />
         <source>Reading the limits failed: %1</source>
         <translation>制限値の読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="143" />
+        <location filename="../app/gui/WizardPages.cpp" line="170" />
         <source>Not connected: connect to a machine first (Machine ▸ Connect).</source>
         <translation>未接続: 先に機械に接続してください (機械 ▸ 接続)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="145" />
+        <location filename="../app/gui/WizardPages.cpp" line="172" />
         <source>Machine %1, connected through %2.</source>
         <translation>機械 %1、%2 で接続中。</translation>
     </message>
@@ -4376,63 +4400,63 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::TestRunPage</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="167" />
+        <location filename="../app/gui/WizardPages.cpp" line="194" />
         <source>Run</source>
         <translation>実行</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="168" />
+        <location filename="../app/gui/WizardPages.cpp" line="195" />
         <source>The axis moves now. Abort stops the motion at once and restores the parameters.</source>
         <translation>軸が動きます。中止すると動作は直ちに止まり、パラメータは元に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="178" />
+        <location filename="../app/gui/WizardPages.cpp" line="205" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="180" />
+        <location filename="../app/gui/WizardPages.cpp" line="207" />
         <source>Run again</source>
         <translation>再実行</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="198" />
-        <location filename="../app/gui/WizardPages.cpp" line="200" />
+        <location filename="../app/gui/WizardPages.cpp" line="225" />
+        <location filename="../app/gui/WizardPages.cpp" line="227" />
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="232" />
+        <location filename="../app/gui/WizardPages.cpp" line="259" />
         <source>Nothing to run.</source>
         <translation>実行するものがありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="236" />
+        <location filename="../app/gui/WizardPages.cpp" line="263" />
         <source>Not connected.</source>
         <translation>未接続です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="251" />
+        <location filename="../app/gui/WizardPages.cpp" line="278" />
         <source>Test %1 of %2 on axis %3: %4</source>
         <translation>テスト %1 / %2、軸 %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="265" />
+        <location filename="../app/gui/WizardPages.cpp" line="292" />
         <source>Abort requested</source>
         <translation>中止を要求しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="296" />
+        <location filename="../app/gui/WizardPages.cpp" line="323" />
         <source>Completed.</source>
         <translation>完了しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="296" />
+        <location filename="../app/gui/WizardPages.cpp" line="323" />
         <source>Aborted: %1</source>
         <translation>中止: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="297" />
+        <location filename="../app/gui/WizardPages.cpp" line="324" />
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -4440,128 +4464,128 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::TwoInertiaFilterPage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="409" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="394" />
         <source>Suppression filter and predicted load error</source>
         <translation>振動抑制フィルタと負荷側誤差の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="410" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="395" />
         <source>Semi-closed: F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) on the position command (5.7). Full-closed: F_L = F_m/(τs + 1) on the velocity command (5.9). Start values from the model: f₀ and the zero damping ζ₀ (not ζ_p).</source>
         <translation>セミクローズド: 位置指令に F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) (5.7)。フルクローズド: 速度指令に F_L = F_m/(τs + 1) (5.9)。初期値はモデルから: f₀ と零点の減衰 ζ₀ (ζ_p ではない)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="418" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="403" />
         <source>Semi-closed (F_m)</source>
         <translation>セミクローズド (F_m)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="418" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="403" />
         <source>Full-closed (F_L)</source>
         <translation>フルクローズド (F_L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="420" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="405" />
         <source>0: high-frequency gain 1/(2ζω₀τ) = 2.5</source>
         <translation>0: 高周波ゲイン 1/(2ζω₀τ) = 2.5</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="424" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="409" />
         <source>Feedback:</source>
         <translation>フィードバック:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="425" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="410" />
         <source>F_L time constant τ:</source>
         <translation>F_L の時定数 τ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="426" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="411" />
         <source>Profile speed:</source>
         <translation>プロファイルの速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="427" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="412" />
         <source>Acceleration:</source>
         <translation>加速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="428" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="413" />
         <source>Jerk:</source>
         <translation>加加速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="430" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="415" />
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="430" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="415" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="437" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="422" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="437" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="422" />
         <source>Load error y_L − y*</source>
         <translation>負荷側誤差 y_L − y*</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="474" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="459" />
         <source>without filter</source>
         <translation>フィルタなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="475" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="460" />
         <source>with F_m</source>
         <translation>F_m あり</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="479" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="464" />
         <source>Filter frequency f₀</source>
         <translation>フィルタ周波数 f₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="479" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="464" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="480" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="465" />
         <source>Filter damping ζ</source>
         <translation>フィルタの減衰 ζ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="482" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="467" />
         <source>Time constant τ</source>
         <translation>時定数 τ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="482" />
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="483" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="467" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="468" />
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="483" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="468" />
         <source>First-order lag T₁ = 2ζ/ω₀</source>
         <translation>1 次遅れ T₁ = 2ζ/ω₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="484" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="469" />
         <source>Velocity K_P (TI-5, ω_l 24 Hz, k 10)</source>
         <translation>速度 K_P (TI-5、ω_l 24 Hz、k 10)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="486" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="471" />
         <source>Velocity K_I (TI-5)</source>
         <translation>速度 K_I (TI-5)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="488" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="473" />
         <source>Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, load through (5.6)). The drive has no F_m/F_L parameter: enter f₀, ζ (and τ) in the NC. The proposal applies the velocity PI of the thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m on the fitted J_m.</source>
         <translation>負荷側誤差の最大値の予測: フィルタなし %1°、F_m あり %2° (モータは理想追従、負荷は (5.6) で計算)。サーボアンプには F_m/F_L のパラメータがないため、f₀、ζ (と τ) は NC に入力してください。提案では、同定した J_m に論文の規則 K_P = k√2·ω_l·J_m、K_I = k·ω_l²·J_m による速度 PI を適用します。</translation>
     </message>
@@ -4569,153 +4593,153 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::TwoInertiaFitPage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="208" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="193" />
         <source>Two-inertia model</source>
         <translation>2慣性系モデル</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="209" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="194" />
         <source>Torque → motor velocity P_m with the fitted model (5.1) over it: anti-resonance f₀ = √(K/J_L)/2π (zero), resonance f_p = √(K(1/J_m + 1/J_L))/2π (pole), and the residual model/measured.</source>
         <translation>トルク → モータ速度 P_m と、それに重ねた同定モデル (5.1): 反共振 f₀ = √(K/J_L)/2π (零点)、共振 f_p = √(K(1/J_m + 1/J_L))/2π (極)、およびモデル/測定の残差。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="218" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="203" />
         <source>Frequency</source>
         <translation>周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="218" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="203" />
         <source>Residual model/measured</source>
         <translation>残差 モデル/測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="218" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="203" />
         <source>dB, °</source>
         <translation>dB, °</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="223" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="208" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="223" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="208" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="270" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="255" />
         <source>No response to fit.</source>
         <translation>同定する応答がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="275" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="260" />
         <source>Fitting…</source>
         <translation>同定中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="348" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="333" />
         <source>measured P_m</source>
         <translation>測定した P_m</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="350" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="335" />
         <source>Fit failed: %1</source>
         <translation>同定に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="367" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="352" />
         <source>two-inertia model</source>
         <translation>2慣性系モデル</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="371" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="356" />
         <source>f₀ %1 Hz, ζ₀ %2</source>
         <translation>f₀ %1 Hz、ζ₀ %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="373" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="358" />
         <source>f_p %1 Hz, ζ_p %2</source>
         <translation>f_p %1 Hz、ζ_p %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="375" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="360" />
         <source>magnitude [dB]</source>
         <translation>ゲイン [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="376" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="361" />
         <source>phase [°]</source>
         <translation>位相 [°]</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="378" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="363" />
         <source>Anti-resonance f₀</source>
         <translation>反共振 f₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="378" />
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="380" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="363" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="365" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="379" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="364" />
         <source>Zero damping ζ₀</source>
         <translation>零点の減衰 ζ₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="380" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="365" />
         <source>Resonance f_p</source>
         <translation>共振 f_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="381" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="366" />
         <source>Pole damping ζ_p</source>
         <translation>極の減衰 ζ_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="382" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="367" />
         <source>Motor inertia J_m</source>
         <translation>モータ側イナーシャ J_m</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="383" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="368" />
         <source>Load inertia J_L</source>
         <translation>負荷側イナーシャ J_L</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="384" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="369" />
         <source>Stiffness K</source>
         <translation>剛性 K</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="385" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="370" />
         <source>Damping C</source>
         <translation>減衰 C</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="386" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="371" />
         <source>Delay</source>
         <translation>遅れ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="387" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="372" />
         <source>Fit error (rms relative)</source>
         <translation>同定誤差 (相対 rms)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="388" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="373" />
         <source>Check f_p/f₀ = √(1 + J_L/J_m)</source>
         <translation>確認 f_p/f₀ = √(1 + J_L/J_m)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="389" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="374" />
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="391" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="376" />
         <source>Fit over %1–%2 Hz, %3 points, %4 iterations. The response was converted from the closed velocity loop with K_P %5 N·m·s/rad, K_I %6 N·m/rad when it was one.</source>
         <translation>%1–%2 Hz で同定、%3 点、反復 %4 回。速度閉ループの応答の場合は K_P %5 N·m·s/rad、K_I %6 N·m/rad で変換しました。</translation>
     </message>
@@ -4840,66 +4864,51 @@ No measured current step: the drive offers no current-step test.</source>
         <source>Not connected: only saved responses can be used; apply and verify need a connection.</source>
         <translation>未接続: 保存済みの応答のみ使用できます。適用と検証には接続が必要です。</translation>
     </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="175" />
-        <source>Loading session %1 failed: %2</source>
-        <translation>セッション %1 の読み込みに失敗しました: %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="184" />
-        <source>Session %1 holds no frequency response.</source>
-        <translation>セッション %1 に周波数応答はありません。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="189" />
-        <source>Session %1, capture %2: %3</source>
-        <translation>セッション %1、計測データ %2: %3</translation>
-    </message>
 </context>
 <context>
     <name>axistune::gui::TwoInertiaVerifyPage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="514" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="499" />
         <source>Verify with the profile</source>
         <translation>プロファイルで検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="515" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="500" />
         <source>A jog with the profile's speed and acceleration: the measured load − motor angle against the model's prediction from the measured motor motion (5.6).</source>
         <translation>プロファイルの速度と加速度でジョグ: 測定した負荷 − モータの角度を、測定したモータの動きからのモデルの予測 (5.6) と比較します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="520" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="505" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="520" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="505" />
         <source>Load − motor</source>
         <translation>負荷 − モータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="536" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="521" />
         <source>No verification run.</source>
         <translation>検証は実行されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="545" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="530" />
         <source>The trace lacks t_s, motor_pos_rad, motor_vel_rad_s or table_pos_rad (a rotary axis with a load encoder is needed).</source>
         <translation>トレースに t_s、motor_pos_rad、motor_vel_rad_s または table_pos_rad がありません (負荷側エンコーダ付きの回転軸が必要です)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="568" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="553" />
         <source>measured</source>
         <translation>測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="569" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="554" />
         <source>predicted from the motor motion</source>
         <translation>モータの動きからの予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="571" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="556" />
         <source>Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°, predicted for ideal motor tracking of the trapezoid %3°. Without an F_m/F_L parameter in the drive this is the unfiltered case; the filtered case needs the filter in the NC.</source>
         <translation>負荷 − モータの角度の最大値: 測定 %1°、測定したモータの動きからの予測 %2°、台形へのモータの理想追従での予測 %3°。サーボアンプに F_m/F_L のパラメータがないため、これはフィルタなしの場合です。フィルタありの場合は NC にフィルタが必要です。</translation>
     </message>
@@ -4920,189 +4929,189 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::VelocityLoopDesignPage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="338" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="323" />
         <source>Velocity loop: proposal and prediction</source>
         <translation>速度ループ: 提案と予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="339" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="324" />
         <source>Predicted open loop L = C·P and closed loop T = L/(1 + L) with the proposed PI, the margins before and after, the position gain with its stability limit, and the predicted velocity step.</source>
         <translation>提案した PI での開ループ L = C·P と閉ループ T = L/(1 + L) の予測、変更前後の余裕、安定限界付きの位置ゲイン、速度ステップ応答の予測。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="348" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="333" />
         <source>Time from the step</source>
         <translation>ステップからの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="348" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="333" />
         <source>Motor velocity / step</source>
         <translation>モータ速度 / ステップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="353" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="338" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="353" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="338" />
         <source>Before</source>
         <translation>適用前</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="353" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="338" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="428" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="413" />
         <source>Chapter 5 rule (corrected 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m², K_I = k·ω_l²·J_m.</source>
         <translation>第 5 章の規則 (修正 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m²、K_I = k·ω_l²·J_m。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="436" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="421" />
         <source>Margins on the measured plant: |C·P| = 1 and arg(C·P) = −180° + %1° at %2 Hz.</source>
         <translation>測定したプラントでの余裕: %2 Hz で |C·P| = 1 かつ arg(C·P) = −180° + %1°。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="443" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="428" />
         <source>No measured response.</source>
         <translation>測定した応答がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="446" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="431" />
         <source>No proposal: %1</source>
         <translation>提案なし: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="480" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="465" />
         <source>Open loop L (proposed)</source>
         <translation>開ループ L (提案)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="481" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="466" />
         <source>Closed loop T (proposed)</source>
         <translation>閉ループ T (提案)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="482" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="467" />
         <source>Plant P (measured)</source>
         <translation>プラント P (測定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="482" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="467" />
         <source>Plant P (model)</source>
         <translation>プラント P (モデル)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="486" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="471" />
         <source>crossover %1 Hz</source>
         <translation>交差周波数 %1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="504" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="489" />
         <source>Measured before</source>
         <translation>変更前の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="508" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="493" />
         <source>Predicted before</source>
         <translation>変更前の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="512" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="497" />
         <source>Predicted with the proposal</source>
         <translation>提案での予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="520" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="505" />
         <source>K_P</source>
         <translation>K_P</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="520" />
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="521" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="505" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="506" />
         <source>N·m·s/rad</source>
         <translation>N·m·s/rad</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="522" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="507" />
         <source>K_I</source>
         <translation>K_I</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="522" />
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="523" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="507" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="508" />
         <source>N·m/rad</source>
         <translation>N·m/rad</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="524" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="509" />
         <source>Gain crossover</source>
         <translation>ゲイン交差周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="525" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="510" />
         <source>Phase margin</source>
         <translation>位相余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="526" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="511" />
         <source>Gain margin</source>
         <translation>ゲイン余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="527" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="512" />
         <source>Peak sensitivity</source>
         <translation>感度関数のピーク</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="528" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="513" />
         <source>Step overshoot (predicted)</source>
         <translation>ステップ応答のオーバーシュート (予測)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="530" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="515" />
         <source>Step overshoot (measured)</source>
         <translation>ステップ応答のオーバーシュート (測定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="530" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="515" />
         <source>after applying</source>
         <translation>適用後</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="531" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="516" />
         <source>Position gain K_p</source>
         <translation>位置ゲイン K_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="533" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="518" />
         <source>Position gain stability limit</source>
         <translation>位置ゲインの安定限界</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="535" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="520" />
         <source>%1 1/s at %2 Hz</source>
         <translation>%1 1/s (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="536" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="521" />
         <source>none on the model</source>
         <translation>モデル上ではなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="540" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="525" />
         <source>Position gain: recommended min(limit·10^(−%1/20), crossover·2π/5); %2.</source>
         <translation>位置ゲイン: 推奨値 min(限界·10^(−%1/20), 交差周波数·2π/5); %2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="543" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="528" />
         <source>rigid model J_m with a delay of 1.5 velocity periods — fit a two-inertia model for the resonance</source>
         <translation>剛体モデル J_m と速度ループ周期 1.5 回分の遅れ — 共振を考慮するには 2慣性系モデルを同定してください</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="545" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="530" />
         <source>two-inertia model of session %1 with a delay of 1.5 velocity periods</source>
         <translation>セッション %1 の 2慣性系モデル (速度ループ周期 1.5 回分の遅れ付き)</translation>
     </message>
@@ -5247,66 +5256,51 @@ No measured current step: the drive offers no current-step test.</source>
         <source>Session %1: fitted J_m %2 kg·m², J_L %3 kg·m², K %4 N·m/rad; the prediction uses this two-inertia model.</source>
         <translation>セッション %1: 同定値 J_m %2 kg·m²、J_L %3 kg·m²、K %4 N·m/rad; 予測にはこの 2慣性系モデルを使います。</translation>
     </message>
-    <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="303" />
-        <source>Loading session %1 failed: %2</source>
-        <translation>セッション %1 の読み込みに失敗しました: %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="311" />
-        <source>Session %1 holds no frequency response.</source>
-        <translation>セッション %1 に周波数応答はありません。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="317" />
-        <source>Session %1, capture %2: %3</source>
-        <translation>セッション %1、計測データ %2: %3</translation>
-    </message>
 </context>
 <context>
     <name>axistune::gui::VelocityLoopVerifyPage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="575" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="560" />
         <source>Velocity loop: verification</source>
         <translation>速度ループ: 検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="576" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="561" />
         <source>The velocity step measured before and after applying, with the prediction.</source>
         <translation>適用前後に測定した速度ステップ応答と予測。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="580" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="565" />
         <source>Time from the step</source>
         <translation>ステップからの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="580" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="565" />
         <source>Motor velocity / step</source>
         <translation>モータ速度 / ステップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="598" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="583" />
         <source>Measured before</source>
         <translation>変更前の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="602" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="587" />
         <source>Measured after</source>
         <translation>適用後の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="606" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="591" />
         <source>Predicted after</source>
         <translation>適用後の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="609" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="594" />
         <source>Overshoot: before %1 (measured), after %2 (measured), %3 predicted.</source>
         <translation>オーバーシュート: 変更前 %1 (測定)、変更後 %2 (測定)、予測 %3。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="611" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="596" />
         <source>No step after applying: %1</source>
         <translation>適用後のステップ応答なし: %1</translation>
     </message>

@@ -169,28 +169,13 @@ bool TwoInertiaSourcePage::validatePage()
     if (!m_d.fromSession)
         return true;
     m_d.sourceSession = m_sessions->currentData().value<qint64>();
-    auto rec = m_ctx.database() ? m_ctx.database()->loadSession(m_d.sourceSession)
-                                : Result<store::SessionRecord>(makeError(ErrorCode::NotFound, "no store"));
-    if (!rec) {
-        m_note->setText(tr("Loading session %1 failed: %2").arg(m_d.sourceSession).arg(qs(rec.error().detail)));
+    auto loaded = loadSessionFrf(m_ctx, m_d.sourceSession);
+    if (!loaded) {
+        m_note->setText(qs(loaded.error().detail));
         return false;
     }
-    // The measured response: the capture named "measured", else the first FRF.
-    const store::NamedCapture* pick = nullptr;
-    for (const auto& c : rec->captures)
-        if (store::isFrfCapture(c.capture) && (!pick || c.name == "measured"))
-            pick = &c;
-    if (!pick) {
-        m_note->setText(tr("Session %1 holds no frequency response.").arg(m_d.sourceSession));
-        return false;
-    }
-    auto frf = store::frfFromCapture(pick->capture);
-    if (!frf) {
-        m_note->setText(tr("Session %1, capture %2: %3").arg(m_d.sourceSession).arg(qs(pick->name), qs(frf.error().detail)));
-        return false;
-    }
-    m_d.measured = std::move(frf).value();
-    m_d.axis = qs(rec->info.axis);
+    m_d.measured = std::move(loaded->frf);
+    m_d.axis = loaded->axis;
     return true;
 }
 

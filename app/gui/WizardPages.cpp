@@ -5,6 +5,7 @@
 #include "app/gui/ParameterText.h"
 
 #include "core/model/Units.h"
+#include "core/store/FrfCapture.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -66,6 +67,32 @@ QString displayParameterValue(const model::ParameterMeta& meta, double si)
 {
     auto v = model::convertUnit(si, meta.siUnit, meta.displayUnit);
     return QString::number(v ? *v : si, 'g', 6);
+}
+
+Result<SessionFrf> loadSessionFrf(AppContext& ctx, qint64 sessionId)
+{
+    auto fail = [](const QString& text) { return makeError(ErrorCode::BadInput, text.toStdString()); };
+    if (!ctx.database())
+        return fail(QCoreApplication::translate("SessionFrf", "Loading session %1 failed: %2")
+                        .arg(sessionId)
+                        .arg(QCoreApplication::translate("SessionFrf", "no store is open")));
+    auto rec = ctx.database()->loadSession(sessionId);
+    if (!rec)
+        return fail(QCoreApplication::translate("SessionFrf", "Loading session %1 failed: %2")
+                        .arg(sessionId)
+                        .arg(qs(rec.error().detail)));
+    const store::NamedCapture* pick = nullptr;
+    for (const auto& c : rec->captures)
+        if (store::isFrfCapture(c.capture) && (!pick || c.name == "measured"))
+            pick = &c;
+    if (!pick)
+        return fail(QCoreApplication::translate("SessionFrf", "Session %1 holds no frequency response.").arg(sessionId));
+    auto frf = store::frfFromCapture(pick->capture);
+    if (!frf)
+        return fail(QCoreApplication::translate("SessionFrf", "Session %1, capture %2: %3")
+                        .arg(sessionId)
+                        .arg(qs(pick->name), qs(frf.error().detail)));
+    return SessionFrf{std::move(frf).value(), qs(rec->info.axis), qs(pick->name)};
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -34,6 +34,16 @@ class AppContext;
 /// SI value in the parameter's display unit, as text with 6 significant digits.
 QString displayParameterValue(const model::ParameterMeta& meta, double si);
 
+/// The measured frequency response of a saved session, for wizards that start from one.
+struct SessionFrf {
+    dsp::FrequencyResponse frf;
+    QString axis;         ///< the session's axis
+    QString captureName;  ///< the capture it came from
+};
+/// Loads a session and takes its FRF capture named "measured", else its first FRF capture. The error
+/// text (translated) names the session and, for an unreadable capture, the capture.
+Result<SessionFrf> loadSessionFrf(AppContext& ctx, qint64 sessionId);
+
 class SafetyPage : public QWizardPage {
     Q_OBJECT
 public:
