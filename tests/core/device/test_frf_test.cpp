@@ -16,39 +16,15 @@
 #include <cstdio>
 #include <numbers>
 
+#include "tests/core/device/DriveTestUtil.h"
+
 using namespace axistune;
 using namespace axistune::device;
 
 namespace {
 
-std::unique_ptr<SimulatedDrive> makeDrive(const std::string& preset)
-{
-    auto def = sim::loadPreset(preset);
-    EXPECT_TRUE(def.ok());
-    auto d = SimulatedDrive::create(*def, 3);
-    EXPECT_TRUE(d.ok());
-    return std::move(d).value();
-}
-
-FrfMeasurement runFrf(SimulatedDrive& drive, const TestRequest& r)
-{
-    auto st = drive.startTest(r);
-    EXPECT_TRUE(st.ok()) << st.error().detail;
-    double progress = 0.0;
-    while (true) {
-        auto s = drive.pollTest();
-        EXPECT_TRUE(s.ok());
-        EXPECT_GE(s->progress, progress);
-        progress = s->progress;
-        if (s->state != TestState::Running) {
-            EXPECT_EQ(s->state, TestState::Completed) << s->detail;
-            break;
-        }
-    }
-    auto m = drive.readFrequencyResponse();
-    EXPECT_TRUE(m.ok()) << (m.ok() ? "" : m.error().detail);
-    return std::move(m).value();
-}
+using devtest::makeDrive;
+using devtest::runFrf;
 
 /// The closed velocity loop T = PC/(1+PC) of the discrete loop: −T_c/d of the lifted model for a
 /// disturbance d that enters like T_c, held over the velocity period (every current tick of the

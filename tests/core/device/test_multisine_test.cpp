@@ -19,36 +19,15 @@
 
 #include "tests/core/sim/LiftedModel.h"
 
+#include "tests/core/device/DriveTestUtil.h"
+
 using namespace axistune;
 using namespace axistune::device;
 
 namespace {
 
-std::unique_ptr<SimulatedDrive> makeDrive(const std::string& preset)
-{
-    auto def = sim::loadPreset(preset);
-    EXPECT_TRUE(def.ok());
-    auto d = SimulatedDrive::create(*def, 3);
-    EXPECT_TRUE(d.ok());
-    return std::move(d).value();
-}
-
-FrfMeasurement run(SimulatedDrive& drive, const TestRequest& r)
-{
-    auto st = drive.startTest(r);
-    EXPECT_TRUE(st.ok()) << (st.ok() ? "" : st.error().detail);
-    while (true) {
-        auto s = drive.pollTest();
-        EXPECT_TRUE(s.ok());
-        if (s->state != TestState::Running) {
-            EXPECT_EQ(s->state, TestState::Completed) << s->detail;
-            break;
-        }
-    }
-    auto m = drive.readFrequencyResponse();
-    EXPECT_TRUE(m.ok()) << (m.ok() ? "" : m.error().detail);
-    return std::move(m).value();
-}
+using devtest::makeDrive;
+using devtest::runFrf;
 
 double phaseErrDeg(std::complex<double> a, std::complex<double> b)
 {
@@ -123,7 +102,7 @@ TEST(SimulatedDriveMultisine, DdTableAgreesWithMultiSweepAndTheAnalyticLoop)
     const auto model = simtest::buildLiftedInjectionLoop(def->axes.front());
     auto drive = makeDrive("dd-table");
     drive->simulator("C")->setNonlinearities({false, false, false, false, false});
-    const auto ms = run(*drive, multisineRequest());
+    const auto ms = runFrf(*drive, multisineRequest());
     EXPECT_EQ(ms.frf.metadata.at("method"), "multisine");
     EXPECT_LE(ms.motionTimeS, 5.0);
     std::cout << "multisine: " << ms.frf.size() << " lines, motion " << ms.motionTimeS << " s, crest factor "
@@ -152,7 +131,7 @@ TEST(SimulatedDriveMultisine, DdTableAgreesWithMultiSweepAndTheAnalyticLoop)
     TestRequest sw = multisineRequest();
     sw.frfMethod = FrfMethod::MultiSweep;
     sw.points = 30;
-    const auto ss = run(*drive, sw);
+    const auto ss = runFrf(*drive, sw);
     ASSERT_EQ(ss.frf.size(), 30u);
     std::cout << "multi-sweep: 30 points, motion " << ss.motionTimeS << " s\n";
     for (std::size_t j = 0; j < ss.frf.size(); ++j) {
@@ -204,7 +183,7 @@ TEST(SimulatedDriveMultisine, TracedInjectionPeakIsTheRequestedPeak)
     r.fminHz = 100.0;
     r.multisineSpacingHz = 50.0;
     r.multisinePeriods = 2;
-    const auto m = run(*drive, r);
+    const auto m = runFrf(*drive, r);
     auto trace = drive->readTrace();
     ASSERT_TRUE(trace.ok());
     const auto* d = trace->channel("injection_Nm");
