@@ -1,6 +1,149 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="ja">
 <context>
+    <name>BallBarText</name>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="29" />
+        <source>Circularity</source>
+        <translation>真円度</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="30" />
+        <source>Centre offset X</source>
+        <translation>中心ずれ X</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="31" />
+        <source>Centre offset Y</source>
+        <translation>中心ずれ Y</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="32" />
+        <source>Radius deviation</source>
+        <translation>半径偏差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="33" />
+        <source>Scale mismatch</source>
+        <translation>スケール誤差の差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="34" />
+        <source>Squareness</source>
+        <translation>直角度</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="35" />
+        <source>Servo mismatch</source>
+        <translation>サーボゲインの不一致</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="36" />
+        <source>Backlash X</source>
+        <translation>バックラッシ X</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="37" />
+        <source>Backlash Y</source>
+        <translation>バックラッシ Y</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="38" />
+        <source>Reversal spike X</source>
+        <translation>象限突起 X</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="39" />
+        <source>Reversal spike Y</source>
+        <translation>象限突起 Y</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="40" />
+        <source>Cyclic error X</source>
+        <translation>周期誤差 X</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="41" />
+        <source>Cyclic error Y</source>
+        <translation>周期誤差 Y</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="50" />
+        <source>sin2θ coefficient k of each run; k = γR/2 + σvΔτ/2 solved for γ over CW and CCW runs (the part that keeps its sign with direction); positive = angle between +X and +Y below 90°</source>
+        <translation>各測定の sin2θ 係数 k。k = γR/2 + σvΔτ/2 を CW と CCW の測定から γ について解く（方向で符号が変わらない成分）。正 = +X と +Y のなす角が 90° より小さい</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="54" />
+        <source>the sin2θ part that changes sign with travel direction, Δτ from k = γR/2 + σvΔτ/2; positive = X lags Y</source>
+        <translation>送り方向で符号が変わる sin2θ 成分。k = γR/2 + σvΔτ/2 から Δτ を求める。正 = X が Y より遅れる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="58" />
+        <source>γ = 2k/R from the sin2θ coefficient k of runs in one direction only: includes any servo mismatch (measure CW and CCW to separate them)</source>
+        <translation>一方向だけの測定の sin2θ 係数 k から γ = 2k/R。サーボゲインの不一致を含む（分離するには CW と CCW を測定する）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="62" />
+        <source>Servo mismatch: needs runs in both directions (CW and CCW); only %1 given</source>
+        <translation>サーボゲインの不一致: 両方向（CW と CCW）の測定が必要です。%1 だけが与えられました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="64" />
+        <source>largest least-squares sinusoid of the %1 coordinate (pitch scanned from the sampling limit to R/2, best pitch %2 mm) in the residual of the smooth fit, projected radially; detected against a noise threshold of %3 µm (false alarm ≈ 1e-3)</source>
+        <translation>滑らかな当てはめの残差に含まれる %1 座標の最大の最小二乗正弦波（ピッチはサンプリング限界から R/2 まで探索、最適ピッチ %2 mm）を半径方向に投影。ノイズしきい値 %3 µm に対して検出（誤検出確率 ≈ 1e-3）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="69" />
+        <source>largest least-squares sinusoid of the %1 coordinate (pitch scanned from the sampling limit to R/2, best pitch %2 mm) in the residual of the smooth fit, projected radially; not detected against a noise threshold of %3 µm (false alarm ≈ 1e-3)</source>
+        <translation>滑らかな当てはめの残差に含まれる %1 座標の最大の最小二乗正弦波（ピッチはサンプリング限界から R/2 まで探索、最適ピッチ %2 mm）を半径方向に投影。ノイズしきい値 %3 µm に対して検出されず（誤検出確率 ≈ 1e-3）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="74" />
+        <source>mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° each side of the reversal; positive = outward step (lost motion), negative = inward (over-compensation)</source>
+        <translation>%1 回の %2 反転（%3）での半径方向の段差の平均。反転の両側 %4–%5° で 3 次式と段差を同時に当てはめる。正 = 外向きの段差（ロストモーション）、負 = 内向き（補正過剰）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="79" />
+        <source>Backlash: no %1 reversal is covered by the trace(s)</source>
+        <translation>バックラッシ: トレースに %1 の反転が含まれていません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="81" />
+        <source>peak residual at %1°, within ±%2° of a %3 reversal (width %4° at half height) against the local step fit; reported when above 4× the fit-window noise and 0.3 µm</source>
+        <translation>%3 反転の ±%2° 以内、%1° での局所段差当てはめに対する残差のピーク（半値幅 %4°）。当てはめ窓のノイズの 4 倍かつ 0.3 µm を超えるとき報告</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="85" />
+        <source>max − min radial deviation after removing the least-squares circle (ISO 230-4), the largest over the runs</source>
+        <translation>最小二乗円を除いた半径偏差の最大 − 最小（ISO 230-4）、測定のうち最大のもの</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="89" />
+        <source>least-squares circle centre offset along X (mean of runs)</source>
+        <translation>最小二乗円の中心の X 方向ずれ（測定の平均）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="91" />
+        <source>least-squares circle centre offset along Y (mean of runs)</source>
+        <translation>最小二乗円の中心の Y 方向ずれ（測定の平均）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="93" />
+        <source>least-squares circle radius minus the nominal radius (includes mean scale error and ball-bar length error)</source>
+        <translation>最小二乗円の半径 − 呼び半径（平均スケール誤差とボールバー長さの誤差を含む）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="97" />
+        <source>εx − εy = 2c/R from the cos2θ coefficient c of the joint fit (circle, 2nd harmonics, lost motion) outside the reversal zones; positive = X travels further than Y</source>
+        <translation>反転域外での同時当てはめ（円、2 次高調波、ロストモーション）の cos2θ 係数 c から εx − εy = 2c/R。正 = X が Y より長く動く</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="101" />
+        <source>%1: centre, radius, circularity, scale mismatch, squareness, servo mismatch and cyclic error not computed: they need a full 360° circle, but the trace is a partial arc covering %2° (from %3° to %4° CCW; largest gap %5°, at most %6° allowed)</source>
+        <translation>%1: 中心、半径、真円度、スケール誤差の差、直角度、サーボゲインの不一致、周期誤差は計算しません。360° の全円が必要ですが、トレースは %2° の部分円弧です（CCW で %3° から %4° まで。最大の欠け %5°、許容 %6°）</translation>
+    </message>
+</context>
+<context>
     <name>CurrentLoopWizard</name>
     <message>
         <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="109" />
@@ -471,261 +614,261 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../app/gui/Report.cpp" line="53" />
+        <location filename="../app/gui/Report.cpp" line="54" />
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="54" />
+        <location filename="../app/gui/Report.cpp" line="55" />
         <source>no</source>
         <translation>いいえ</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="122" />
+        <location filename="../app/gui/Report.cpp" line="123" />
         <source>completed</source>
         <translation>完了</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="124" />
+        <location filename="../app/gui/Report.cpp" line="125" />
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="126" />
+        <location filename="../app/gui/Report.cpp" line="127" />
         <source>FAILED</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="135" />
+        <location filename="../app/gui/Report.cpp" line="136" />
         <source>Read from the drive</source>
         <translation>サーボアンプから読み出し</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="137" />
+        <location filename="../app/gui/Report.cpp" line="138" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="139" />
+        <location filename="../app/gui/Report.cpp" line="140" />
         <source>Applied</source>
         <translation>適用値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="141" />
+        <location filename="../app/gui/Report.cpp" line="142" />
         <source>Imported</source>
         <translation>読み込み</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="213" />
+        <location filename="../app/gui/Report.cpp" line="214" />
         <source>Plot "%1" could not be rendered.</source>
         <translation>プロット "%1" を描画できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="230" />
+        <location filename="../app/gui/Report.cpp" line="231" />
         <source>Session %1: %2</source>
         <translation>セッション %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="234" />
+        <location filename="../app/gui/Report.cpp" line="235" />
         <source>This session was %1. Reason: %2</source>
         <translation>このセッションは %1 でした。理由: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="236" />
+        <location filename="../app/gui/Report.cpp" line="237" />
         <source>not recorded</source>
         <translation>記録なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="239" />
+        <location filename="../app/gui/Report.cpp" line="240" />
         <source>(none)</source>
         <translation>(なし)</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="240" />
+        <location filename="../app/gui/Report.cpp" line="241" />
         <source>Machine</source>
         <translation>機械</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="241" />
-        <location filename="../app/gui/Report.cpp" line="374" />
+        <location filename="../app/gui/Report.cpp" line="242" />
+        <location filename="../app/gui/Report.cpp" line="375" />
         <source>Axis</source>
         <translation>軸</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="242" />
+        <location filename="../app/gui/Report.cpp" line="243" />
         <source>Kind</source>
         <translation>種類</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="243" />
+        <location filename="../app/gui/Report.cpp" line="244" />
         <source>Status</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="246" />
+        <location filename="../app/gui/Report.cpp" line="247" />
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="247" />
+        <location filename="../app/gui/Report.cpp" line="248" />
         <source>Finished</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="248" />
+        <location filename="../app/gui/Report.cpp" line="249" />
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="250" />
+        <location filename="../app/gui/Report.cpp" line="251" />
         <source>Notes</source>
         <translation>メモ</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="252" />
+        <location filename="../app/gui/Report.cpp" line="253" />
         <source>AxisTune version</source>
         <translation>AxisTune バージョン</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="258" />
+        <location filename="../app/gui/Report.cpp" line="259" />
         <source>Plots</source>
         <translation>プロット</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="268" />
+        <location filename="../app/gui/Report.cpp" line="269" />
         <source>FRF "%1" is unreadable: %2</source>
         <translation>周波数応答 "%1" を読み取れません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="278" />
+        <location filename="../app/gui/Report.cpp" line="279" />
         <source>Frequency response: %1</source>
         <translation>周波数応答: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="288" />
+        <location filename="../app/gui/Report.cpp" line="289" />
         <source>Capture: %1</source>
         <translation>計測データ: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="293" />
+        <location filename="../app/gui/Report.cpp" line="294" />
         <source>No plots recorded.</source>
         <translation>記録されたプロットはありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="320" />
+        <location filename="../app/gui/Report.cpp" line="321" />
         <source>Ball-bar traces: %1</source>
         <translation>ボールバーの軌跡: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="338" />
+        <location filename="../app/gui/Report.cpp" line="339" />
         <source>Result: %1</source>
         <translation>結果: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="345" />
+        <location filename="../app/gui/Report.cpp" line="346" />
         <source>Parameter sets</source>
         <translation>パラメータセット</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="349" />
+        <location filename="../app/gui/Report.cpp" line="350" />
         <source>axis %1, %2</source>
         <translation>軸 %1、%2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="354" />
-        <location filename="../app/gui/Report.cpp" line="375" />
+        <location filename="../app/gui/Report.cpp" line="355" />
+        <location filename="../app/gui/Report.cpp" line="376" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="355" />
+        <location filename="../app/gui/Report.cpp" line="356" />
         <source>Description</source>
         <translation>説明</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="356" />
+        <location filename="../app/gui/Report.cpp" line="357" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="370" />
+        <location filename="../app/gui/Report.cpp" line="371" />
         <source>Journal of writes</source>
         <translation>書き込み履歴</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="373" />
+        <location filename="../app/gui/Report.cpp" line="374" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="376" />
+        <location filename="../app/gui/Report.cpp" line="377" />
         <source>Old value</source>
         <translation>旧値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="377" />
+        <location filename="../app/gui/Report.cpp" line="378" />
         <source>New value</source>
         <translation>新値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="383" />
+        <location filename="../app/gui/Report.cpp" line="384" />
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="398" />
+        <location filename="../app/gui/Report.cpp" line="399" />
         <source>Results</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="404" />
+        <location filename="../app/gui/Report.cpp" line="405" />
         <source>Identified models</source>
         <translation>同定したモデル</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="407" />
+        <location filename="../app/gui/Report.cpp" line="408" />
         <source>axis %1</source>
         <translation>軸 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="410" />
+        <location filename="../app/gui/Report.cpp" line="411" />
         <source>Verification</source>
         <translation>検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="415" />
+        <location filename="../app/gui/Report.cpp" line="416" />
         <source>No verification was recorded.</source>
         <translation>検証は記録されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="428" />
+        <location filename="../app/gui/Report.cpp" line="430" />
         <source>Arrays (values): %1</source>
         <translation>配列 (値の数): %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="439" />
-        <location filename="../app/gui/Report.cpp" line="501" />
+        <location filename="../app/gui/Report.cpp" line="441" />
+        <location filename="../app/gui/Report.cpp" line="503" />
         <source>AxisTune session %1</source>
         <translation>AxisTune セッション %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="441" />
+        <location filename="../app/gui/Report.cpp" line="443" />
         <source>Inputs</source>
         <translation>入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="447" />
+        <location filename="../app/gui/Report.cpp" line="449" />
         <source>Report made by AxisTune from session %1 of the store.</source>
         <translation>データベースのセッション %1 から AxisTune が作成したレポートです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="483" />
-        <location filename="../app/gui/Report.cpp" line="489" />
+        <location filename="../app/gui/Report.cpp" line="485" />
+        <location filename="../app/gui/Report.cpp" line="491" />
         <source>Cannot write %1: %2</source>
         <translation>%1 を書き込めません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="507" />
+        <location filename="../app/gui/Report.cpp" line="509" />
         <source>Cannot write %1</source>
         <translation>%1 を書き込めません</translation>
     </message>
@@ -774,7 +917,7 @@
         <translation>周波数応答…</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="46" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="47" />
         <source>Lost motion…</source>
         <translation>ロストモーション…</translation>
     </message>
@@ -1969,64 +2112,64 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionDiagnosticsPage</name>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="275" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="276" />
         <source>Ball-bar diagnostics</source>
         <translation>ボールバー診断</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="276" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="277" />
         <source>Measured traces over the nominal circle (deviation magnified), reversal markers, and every finding with the rule that decided it.</source>
         <translation>基準円上の測定軌跡 (偏差を拡大)、反転位置の印、各診断結果とその判定ルール。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="282" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="283" />
         <source>Finding</source>
         <translation>診断結果</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="282" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="283" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="282" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="283" />
         <source>Rule</source>
         <translation>ルール</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="318" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="319" />
         <source>Analysing %1 traces…</source>
         <translation>%1 本の軌跡を解析中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="364" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="365" />
         <source>%1 = %2 mm</source>
         <translation>%1 = %2 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="366" />
         <location filename="../app/gui/LostMotionWizardPages.cpp" line="367" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="368" />
         <source>X rev.</source>
         <translation>X 反転</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="368" />
         <location filename="../app/gui/LostMotionWizardPages.cpp" line="369" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="370" />
         <source>Y rev.</source>
         <translation>Y 反転</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="375" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="377" />
         <source>not computed</source>
         <translation>未計算</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="380" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="382" />
         <source>%1 traces, %2 reversal events of axis %3.</source>
         <translation>軌跡 %1 本、軸 %3 の反転 %2 回。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="384" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="386" />
         <source>Analysis failed: %1</source>
         <translation>解析に失敗しました: %1</translation>
     </message>
@@ -2034,94 +2177,94 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionFitPage</name>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="395" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="397" />
         <source>A/B fit and predicted compensation</source>
         <translation>A/B の同定と補正の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="396" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="398" />
         <source>Δx = (A + B·x)·ΔT (spec eq. 4.12): each reversal gives a point Δx/ΔT at its spring length x; the line is A + B·x. The torque-synchronous compensation (A + B·x)·T_m is predicted on the measured trace, next to the conventional step of the mean lost motion.</source>
         <translation>Δx = (A + B·x)·ΔT (仕様 式 4.12): 各反転がばね長 x での点 Δx/ΔT を与え、直線が A + B·x です。トルク同期補正 (A + B·x)·T_m を測定軌跡上で予測し、平均ロストモーションの従来のステップ補正と並べて示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="407" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="409" />
         <source>Spring length x</source>
         <translation>ばね長 x</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="407" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="409" />
         <source>Δx/ΔT</source>
         <translation>Δx/ΔT</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="413" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="415" />
         <source>Trace</source>
         <translation>軌跡</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="413" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="415" />
         <source>Circularity measured / proposed / conventional</source>
         <translation>真円度 測定 / 提案法 / 従来法</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="414" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="416" />
         <source>Cut-in measured / proposed / conventional</source>
         <translation>食い込み 測定 / 提案法 / 従来法</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="436" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="438" />
         <source>reversals</source>
         <translation>反転</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="438" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="440" />
         <source>A + B·x</source>
         <translation>A + B·x</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="442" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="444" />
         <source>A = %1 µm/(N·m), B = %2 µm/(N·m·m) (%3, %4 points, residual rms %5 µm).</source>
         <translation>A = %1 µm/(N·m)、B = %2 µm/(N·m·m) (%3、%4 点、残差 rms %5 µm)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="449" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="451" />
         <source>Standard errors: A ±%1, B ±%2.</source>
         <translation>標準誤差: A ±%1、B ±%2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="451" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="453" />
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="452" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="454" />
         <source>Rule: least squares on the regressors [ΔT, x·ΔT] over all reversals (two points: the general two-point form); conventional step for comparison x_bl = %1 µm (mean measured lost motion).</source>
         <translation>ルール: すべての反転について回帰変数 [ΔT, x·ΔT] の最小二乗法 (2 点のときは一般的な 2 点式); 比較用の従来のステップ補正 x_bl = %1 µm (測定したロストモーションの平均)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="461" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="463" />
         <source>measured</source>
         <translation>測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="462" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="464" />
         <source>predicted, proposed</source>
         <translation>予測、提案法</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="463" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="465" />
         <source>predicted, conventional</source>
         <translation>予測、従来法</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="465" />
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="466" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="467" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="468" />
         <source>%1 rev.</source>
         <translation>%1 反転</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="472" />
         <location filename="../app/gui/LostMotionWizardPages.cpp" line="474" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="476" />
         <source>%1 / %2 / %3 µm</source>
         <translation>%1 / %2 / %3 µm</translation>
     </message>
@@ -2129,42 +2272,42 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionSavePage</name>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="57" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="58" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="58" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="59" />
         <source>The session holds the traces, the diagnostics, A and B with their points, the proposal, what was applied with its journal, and the verification.</source>
         <translation>セッションには、軌跡、診断、A と B およびその点、提案、適用した内容とその履歴、検証が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="77" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="78" />
         <source>Axis %1: A = %2 µm/(N·m), B = %3 µm/(N·m·m), x₀ = %4 mm.</source>
         <translation>軸 %1: A = %2 µm/(N·m)、B = %3 µm/(N·m·m)、x₀ = %4 mm。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="83" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="84" />
         <source>Not connected: applying the compensation and verifying it with a new circle need a connection to the machine.</source>
         <translation>未接続: 補正の適用と新しい円弧での検証には機械との接続が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="86" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="87" />
         <source>Not applied: the proposal is kept in the session.</source>
         <translation>未適用: 提案はセッションに保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="88" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="89" />
         <source>Applied; reversal step %1 µm before, %2 µm after.</source>
         <translation>適用しました。反転時の段差 前 %1 µm、後 %2 µm。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="91" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="92" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="92" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="93" />
         <source>The session was not saved (no store open).</source>
         <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
     </message>
@@ -2172,107 +2315,107 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionSourcePage</name>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="75" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="76" />
         <source>Lost motion: ball-bar traces</source>
         <translation>ロストモーション: ボールバーの軌跡</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="76" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="77" />
         <source>Import ball-bar files or run circle tests at two or more table positions. The spring length x of each reversal is x₀ + s·(circle centre ± R) along the identified axis.</source>
         <translation>ボールバーのファイルを読み込むか、2 か所以上のテーブル位置で円弧補間テストを実行してください。各反転のばね長 x は、同定する軸方向の x₀ + s·(円の中心 ± R) です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="80" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="81" />
         <source>Import ball-bar files (CSV)</source>
         <translation>ボールバーのファイルを読み込む (CSV)</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="81" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="82" />
         <source>Run circle tests on the machine</source>
         <translation>機械で円弧補間テストを実行</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="98" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="99" />
         <source>Add files…</source>
         <translation>ファイルを追加…</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="99" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="100" />
         <source>Clear</source>
         <translation>クリア</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="124" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="125" />
         <source>Circle radius R:</source>
         <translation>円の半径 R:</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="125" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="126" />
         <source>Feed:</source>
         <translation>送り速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="126" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="127" />
         <source>Circle centres along the identified axis [mm]:</source>
         <translation>同定する軸方向の円の中心 [mm]:</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="132" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="133" />
         <source>Model of the axis</source>
         <translation>軸のモデル</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="136" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="137" />
         <source>First plane axis (X)</source>
         <translation>平面の第 1 軸 (X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="136" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="137" />
         <source>Second plane axis (Y)</source>
         <translation>平面の第 2 軸 (Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="150" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="151" />
         <source>Half-width of the zone around each reversal left out of the step fit: the friction spike must not count as lost motion (±8° at 1000 mm/min, R 50 mm).</source>
         <translation>段差の同定から除外する各反転周りの範囲の半幅: 摩擦による突起をロストモーションに数えないため (1000 mm/min、R 50 mm で ±8°)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="152" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="153" />
         <source>Axis to identify:</source>
         <translation>同定する軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="153" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="154" />
         <source>Screw length offset x₀ (coupling to load point at table 0):</source>
         <translation>ねじ長さのオフセット x₀ (テーブル位置 0 でのカップリングから負荷点まで):</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="154" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="155" />
         <source>Sign s (spring length grows with the coordinate: +1):</source>
         <translation>符号 s (座標とともにばね長が増える: +1):</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="155" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="156" />
         <source>Reversal zone ±:</source>
         <translation>反転範囲 ±:</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="161" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="162" />
         <source>Ball-bar files</source>
         <translation>ボールバーのファイル</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="161" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="162" />
         <source>Ball-bar CSV (*.csv);;All files (*)</source>
         <translation>ボールバー CSV (*.csv);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="186" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="187" />
         <source>%1 — R %2 mm, centre (%3, %4) mm, %5 samples</source>
         <translation>%1 — R %2 mm、中心 (%3, %4) mm、%5 サンプル</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardPages.cpp" line="203" />
+        <location filename="../app/gui/LostMotionWizardPages.cpp" line="204" />
         <source>Circle tests run on %1 with the drive's current parameters; both plane axes move.</source>
         <translation>円弧補間テストは %1 で現在のサーボアンプのパラメータのまま実行します。平面の 2 軸が動きます。</translation>
     </message>
@@ -2373,12 +2516,12 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionWizard</name>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="98" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="99" />
         <source>Lost motion</source>
         <translation>ロストモーション</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="105" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="106" />
         <source>Circle tests: both axes of the plane move together on circles (radius and centres as set on the first page) at the programmed feed, one circle per table position, and once more for the verification.</source>
         <translation>円弧補間テスト: 平面の 2 軸が一緒に、指定した送り速度で円弧を描きます (半径と中心は最初のページの設定)。テーブル位置ごとに 1 回、検証でもう 1 回。</translation>
     </message>

@@ -100,9 +100,17 @@ nlohmann::json reportJson(const tuning::BallBarReport& rep)
     }
     nlohmann::json findings = nlohmann::json::array();
     for (const auto& f : rep.findings)
-        findings.push_back({{"name", f.name}, {"value", f.value}, {"unit", f.unit}, {"rule", f.rule}});
+        findings.push_back({{"name", f.name},
+                            {"value", f.value},
+                            {"unit", f.unit},
+                            {"rule", f.rule},
+                            {"rule_id", f.ruleId},
+                            {"rule_args", f.ruleArgs}});
     j["findings"] = findings;
-    j["refused"] = rep.refused;
+    nlohmann::json refused = nlohmann::json::array();
+    for (const auto& r : rep.refused)
+        refused.push_back(r.text);
+    j["refused"] = refused;
     nlohmann::json runs = nlohmann::json::array();
     for (const auto& r : rep.runs)
         runs.push_back(runJson(r));
@@ -130,7 +138,7 @@ int runBallBar(const BallBarCliOptions& o)
     if (!rep->circularityM && !rep->backlashM[0] && !rep->backlashM[1]) {
         std::string why;
         for (const auto& r : rep->refused)
-            why += (why.empty() ? "" : "; ") + r;
+            why += (why.empty() ? "" : "; ") + r.text;
         return reportError("ballbar", makeError(ErrorCode::BadInput, "no diagnostic could be computed: " + why));
     }
     return writeResult("ballbar", reportJson(*rep).dump(2) + "\n", o.outPath);

@@ -3,6 +3,7 @@
 // docs/wizards/lost-motion.md). Method: spec/lost-motion-and-two-inertia.md §1.7–1.10, §4.2–4.6.
 #include "app/gui/LostMotionWizard.h"
 
+#include "app/gui/BallBarText.h"
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
@@ -156,8 +157,11 @@ void LostMotionWizard::saveSession(bool aborted, const QString& reason)
     if (d.report) {
         nlohmann::json f = nlohmann::json::array();
         for (const auto& x : d.report->findings)
-            f.push_back({{"name", x.name}, {"value", x.value}, {"unit", x.unit}, {"rule", x.rule}});
-        rec.results.push_back({"diagnostics", {{"findings", f}, {"refused", d.report->refused}}, {}});
+            f.push_back(BallBarText::findingJson(x));
+        nlohmann::json refused = nlohmann::json::array();
+        for (const auto& r : d.report->refused)
+            refused.push_back(BallBarText::refusalJson(r));
+        rec.results.push_back({"diagnostics", {{"findings", f}, {"refused", refused}}, {}});
     }
     if (d.fit) {
         nlohmann::json pts = nlohmann::json::array();

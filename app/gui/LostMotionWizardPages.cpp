@@ -3,6 +3,7 @@
 // diagnostics, fit and prediction. The circle runs and the verification: LostMotionWizardRuns.cpp.
 #include "app/gui/LostMotionWizard.h"
 
+#include "app/gui/BallBarText.h"
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "core/model/Units.h"
@@ -369,10 +370,11 @@ void LostMotionDiagnosticsPage::showResults()
     m_plot->addMarker(3 * std::numbers::pi / 2, tr("Y rev."));
     if (m_d.report) {
         for (const auto& f : m_d.report->findings)
-            addRow(m_table, {qs(f.name), QString("%1 %2").arg(f.value, 0, 'g', 4).arg(qs(model::unitLabel(f.unit))),
-                             qs(f.rule)});
+            addRow(m_table, {BallBarText::findingName(f.name),
+                             QString("%1 %2").arg(f.value, 0, 'g', 4).arg(qs(model::unitLabel(f.unit))),
+                             BallBarText::rule(f)});
         for (const auto& r : m_d.report->refused)
-            addRow(m_table, {tr("not computed"), QString(), qs(r)});
+            addRow(m_table, {tr("not computed"), QString(), BallBarText::rule(r)});
     }
     m_table->setColumnWidth(0, 150);
     m_table->setColumnWidth(1, 90);

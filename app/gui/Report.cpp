@@ -3,6 +3,7 @@
 // widgets/ plots, PDF through QTextDocument::print (docs/reports.md).
 #include "app/gui/Report.h"
 
+#include "app/gui/BallBarText.h"
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
 #include "core/store/FrfCapture.h"
@@ -419,7 +420,8 @@ struct Builder {
     {
         if (withTitle)
             html += QStringLiteral("<h3>%1</h3>").arg(esc(r.name));
-        html += jsonToHtml(r.data);
+        // Ball-bar findings carry rule keys: worded in the user's language (BallBarText).
+        html += jsonToHtml(r.name == "diagnostics" ? BallBarText::translatedDiagnostics(r.data) : r.data);
         if (!r.arrays.empty()) {
             QStringList names;
             for (const auto& a : r.arrays)

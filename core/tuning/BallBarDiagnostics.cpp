@@ -139,7 +139,16 @@ double lostMotionBasis(int axis, double theta, double sigma)
     return -0.5 * sigma * sgn(std::cos(theta)) * std::sin(theta);    // −½ sgn(ẏ) sinθ, sgn(ẏ) = σ sgn(cosθ)
 }
 
-Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, const std::string& what)
+namespace {
+
+/// Angular coverage of a trace: the largest gap and where the covered arc starts and ends (rad, CCW).
+struct Coverage {
+    double maxGap = 2.0 * kPi;
+    double from = 0.0;
+    double to = 0.0;
+};
+
+Coverage coverageOf(const io::BallBarTrace& t)
 {
     std::vector<double> a;
     a.reserve(t.size());
@@ -147,6 +156,9 @@ Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, c
         double w = std::fmod(v, 2.0 * kPi);
         a.push_back(w < 0.0 ? w + 2.0 * kPi : w);
     }
+    Coverage c;
+    if (a.empty())
+        return c;
     std::sort(a.begin(), a.end());
     double maxGap = a.front() + 2.0 * kPi - a.back();
     double gapEnd = a.front();
@@ -156,15 +168,32 @@ Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, c
             gapEnd = a[i];
         }
     }
-    if (maxGap <= opt.maxGapDeg * kDeg)
+    c.maxGap = maxGap;
+    c.from = gapEnd;
+    c.to = std::fmod(gapEnd + 2.0 * kPi - maxGap, 2.0 * kPi);
+    return c;
+}
+
+/// Arguments of the "full_circle" refusal: source, covered °, from °, to °, largest gap °, allowed gap °.
+std::vector<std::string> coverageArgs(const io::BallBarTrace& t, const Coverage& c, const BallBarOptions& opt)
+{
+    return {t.source,          fmt((2.0 * kPi - c.maxGap) / kDeg, 1), fmt(c.from / kDeg, 1), fmt(c.to / kDeg, 1),
+            fmt(c.maxGap / kDeg, 1), fmt(opt.maxGapDeg, 1)};
+}
+
+} // namespace
+
+Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, const std::string& what)
+{
+    const Coverage c = coverageOf(t);
+    if (c.maxGap <= opt.maxGapDeg * kDeg)
         return Status::success();
-    const double from = gapEnd / kDeg;
-    const double to = std::fmod(gapEnd + 2.0 * kPi - maxGap, 2.0 * kPi) / kDeg;
-    return makeError(
-        ErrorCode::BadInput,
-        t.source + ": " + what + " refused: requires a full 360° circle, but the trace is a partial arc covering " +
-            fmt((2.0 * kPi - maxGap) / kDeg, 1) + "° (from " + fmt(from, 1) + "° to " + fmt(to, 1) +
-            "° CCW; largest gap " + fmt(maxGap / kDeg, 1) + "°, at most " + fmt(opt.maxGapDeg, 1) + "° allowed)");
+    const auto a = coverageArgs(t, c, opt);
+    return makeError(ErrorCode::BadInput, a[0] + ": " + what +
+                                              " refused: requires a full 360° circle, but the trace is a partial arc "
+                                              "covering " +
+                                              a[1] + "° (from " + a[2] + "° to " + a[3] + "° CCW; largest gap " + a[4] +
+                                              "°, at most " + a[5] + "° allowed)");
 }
 
 namespace {
@@ -471,6 +500,7 @@ Result<RunDiagnostics> analyzeRun(const io::BallBarTrace& t, const BallBarOption
     const char* what = "centre, radius, circularity, scale mismatch, squareness, servo mismatch and cyclic error";
     if (auto s = requireFullCircle(t, opt, what); !s) {
         run.refusal = s.error().detail;
+        run.refusalArgs = coverageArgs(t, coverageOf(t), opt);
         return run;
     }
     run.fullCircle = true;

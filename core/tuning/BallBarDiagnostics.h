@@ -62,6 +62,7 @@ struct RunDiagnostics {
     std::vector<ReversalEvent> events; ///< every reversal whose windows the trace covers
     bool fullCircle = false;
     std::string refusal; ///< why the full-circle diagnostics were refused (empty when fullCircle)
+    std::vector<std::string> refusalArgs; ///< arguments of the "full_circle" refusal key (see RuleText)
     // Full-circle diagnostics (valid when fullCircle):
     double radiusDeviationM = 0.0;
     double centerXM = 0.0; ///< machine circle centre relative to the ball-bar pivot
@@ -90,11 +91,22 @@ Result<double> circularityOf(std::span<const double> angleRad, std::span<const d
 /// Lost-motion basis lm_a(θ) for travel direction σ (see the header comment).
 double lostMotionBasis(int axis, double thetaRad, double sigma);
 
+/// The rule behind a finding or a refusal as a stable key with its arguments (numbers already formatted
+/// with '.' decimals), so a user interface can word it in its own language; `text` is the English wording.
+/// Keys and argument order are listed in docs/ballbar.md "Rule keys".
+struct RuleText {
+    std::string id;
+    std::vector<std::string> args;
+    std::string text;
+};
+
 struct Finding {
     std::string name;
     double value = 0.0;
     std::string unit; ///< display unit of `value`
-    std::string rule; ///< the rule that decided it, for people
+    std::string rule; ///< the rule that decided it, for people (English)
+    std::string ruleId;                ///< key of `rule` (RuleText::id)
+    std::vector<std::string> ruleArgs; ///< arguments of `rule` (RuleText::args)
 };
 
 struct ReversalSpike {
@@ -118,7 +130,7 @@ struct BallBarReport {
     std::optional<double> servoMismatchS; ///< τx − τy
     std::array<std::optional<CyclicFit>, 2> cyclic;
     std::vector<Finding> findings;
-    std::vector<std::string> refused; ///< diagnostics that could not be computed, with the reason
+    std::vector<RuleText> refused; ///< diagnostics that could not be computed, with the reason
 };
 
 Result<BallBarReport> analyzeBallBar(std::span<const io::BallBarTrace> traces, const BallBarOptions& opt = {});

@@ -47,10 +47,14 @@ void combineSin2(BallBarReport& rep, const std::vector<const RunDiagnostics*>& f
         rep.findings.push_back({"squareness", x(0) * 1e6, "um/m",
                                 "sin2θ coefficient k of each run; k = γR/2 + σvΔτ/2 solved for γ over CW and CCW runs "
                                 "(the part that keeps its sign with direction); positive = angle between +X and +Y "
-                                "below 90°"});
+                                "below 90°",
+                                "squareness.both_directions",
+                                {}});
         rep.findings.push_back({"servo_mismatch", x(1) * 1e3, "ms",
                                 "the sin2θ part that changes sign with travel direction, Δτ from k = γR/2 + σvΔτ/2; "
-                                "positive = X lags Y"});
+                                "positive = X lags Y",
+                                "servo_mismatch.both_directions",
+                                {}});
         return;
     }
     double g = 0.0;
@@ -59,9 +63,12 @@ void combineSin2(BallBarReport& rep, const std::vector<const RunDiagnostics*>& f
     rep.squarenessRad = g / static_cast<double>(full.size());
     rep.findings.push_back({"squareness", *rep.squarenessRad * 1e6, "um/m",
                             "γ = 2k/R from the sin2θ coefficient k of runs in one direction only: includes any servo "
-                            "mismatch (measure CW and CCW to separate them)"});
-    rep.refused.push_back(std::string("servo_mismatch: needs runs in both directions (CW and CCW); only ") +
-                          (ccw ? "CCW" : "CW") + " given");
+                            "mismatch (measure CW and CCW to separate them)",
+                            "squareness.one_direction",
+                            {}});
+    const std::string given = ccw ? "CCW" : "CW";
+    rep.refused.push_back({"servo_mismatch.one_direction", {given},
+                           "servo_mismatch: needs runs in both directions (CW and CCW); only " + given + " given"});
 }
 
 void combineCyclic(BallBarReport& rep, const std::vector<const RunDiagnostics*>& full)
@@ -80,13 +87,14 @@ void combineCyclic(BallBarReport& rep, const std::vector<const RunDiagnostics*>&
             }
         }
         rep.cyclic[axis] = c;
+        const std::vector<std::string> args{axisName(axis), fmt(c.pitchM * 1e3, 3), fmt(c.thresholdM * 1e6, 3)};
         rep.findings.push_back({std::string("cyclic_error_") + (axis == 0 ? "x" : "y"), c.amplitudeM * 1e6, "um",
-                                std::string("largest least-squares sinusoid of the ") + axisName(axis) +
-                                    " coordinate (pitch scanned from the sampling limit to R/2, best pitch " +
-                                    fmt(c.pitchM * 1e3, 3) +
+                                std::string("largest least-squares sinusoid of the ") + args[0] +
+                                    " coordinate (pitch scanned from the sampling limit to R/2, best pitch " + args[1] +
                                     " mm) in the residual of the smooth fit, projected radially; " +
                                     (c.detected ? "detected" : "not detected") + " against a noise threshold of " +
-                                    fmt(c.thresholdM * 1e6, 3) + " um (false alarm ≈ 1e-3)"});
+                                    args[2] + " um (false alarm ≈ 1e-3)",
+                                c.detected ? "cyclic_error.detected" : "cyclic_error.not_detected", args});
     }
 }
 
@@ -107,28 +115,32 @@ void combineReversals(BallBarReport& rep, const BallBarOptions& opt)
             }
         }
         if (n == 0) {
-            rep.refused.push_back(std::string("backlash_") + (axis == 0 ? "x" : "y") + ": no " + axisName(axis) +
-                                  " reversal is covered by the trace(s)");
+            rep.refused.push_back({"backlash.not_covered",
+                                   {axisName(axis)},
+                                   std::string("backlash_") + (axis == 0 ? "x" : "y") + ": no " + axisName(axis) +
+                                       " reversal is covered by the trace(s)"});
             continue;
         }
         rep.backlashM[axis] = sum / n;
-        rep.findings.push_back(
-            {std::string("backlash_") + (axis == 0 ? "x" : "y"), *rep.backlashM[axis] * 1e6, "um",
-             std::string("mean radial step across ") + std::to_string(n) + " " + axisName(axis) + " reversal(s) (" +
-                 (axis == 0 ? "0°/180°" : "90°/270°") +
-                 "): joint fit of a cubic plus a step "
-                 "over " +
-                 fmt(opt.excludeDeg, 1) + "–" + fmt(opt.excludeDeg + opt.fitWindowDeg, 1) +
-                 "° each side of the reversal; positive = outward step (lost motion), negative = inward "
-                 "(over-compensation)"});
+        const std::vector<std::string> args{std::to_string(n), axisName(axis), axis == 0 ? "0°/180°" : "90°/270°",
+                                            fmt(opt.excludeDeg, 1), fmt(opt.excludeDeg + opt.fitWindowDeg, 1)};
+        rep.findings.push_back({std::string("backlash_") + (axis == 0 ? "x" : "y"), *rep.backlashM[axis] * 1e6, "um",
+                                "mean radial step across " + args[0] + " " + args[1] + " reversal(s) (" + args[2] +
+                                    "): joint fit of a cubic plus a step over " + args[3] + "–" + args[4] +
+                                    "° each side of the reversal; positive = outward step (lost motion), negative = "
+                                    "inward (over-compensation)",
+                                "backlash", args});
     }
-    for (const auto& s : rep.spikes)
+    for (const auto& s : rep.spikes) {
+        const std::vector<std::string> args{fmt(s.angleRad / kDeg, 1), fmt(opt.excludeDeg, 1), axisName(s.axis),
+                                            fmt(s.widthRad / kDeg, 2)};
         rep.findings.push_back({std::string("reversal_spike_") + (s.axis == 0 ? "x" : "y"), s.heightM * 1e6, "um",
-                                "peak residual at " + fmt(s.angleRad / kDeg, 1) + "°, within ±" +
-                                    fmt(opt.excludeDeg, 1) + "° of a " + axisName(s.axis) + " reversal (width " +
-                                    fmt(s.widthRad / kDeg, 2) +
+                                "peak residual at " + args[0] + "°, within ±" + args[1] + "° of a " + args[2] +
+                                    " reversal (width " + args[3] +
                                     "° at half height) against the local step fit; reported when above 4× the "
-                                    "fit-window noise and 0.3 um"});
+                                    "fit-window noise and 0.3 um",
+                                "reversal_spike", args});
+    }
 }
 
 /// Centre, radius deviation, circularity and scale mismatch of the full-circle runs.
@@ -149,15 +161,23 @@ void combineCircle(BallBarReport& rep, const std::vector<const RunDiagnostics*>&
     rep.scaleMismatch = scale;
     rep.findings.push_back({"circularity", circ * 1e6, "um",
                             "max − min radial deviation after removing the least-squares circle (ISO 230-4), the "
-                            "largest over the runs"});
-    rep.findings.push_back({"center_x", cx * 1e6, "um", "least-squares circle centre offset along X (mean of runs)"});
-    rep.findings.push_back({"center_y", cy * 1e6, "um", "least-squares circle centre offset along Y (mean of runs)"});
+                            "largest over the runs",
+                            "circularity",
+                            {}});
+    rep.findings.push_back(
+        {"center_x", cx * 1e6, "um", "least-squares circle centre offset along X (mean of runs)", "center_x", {}});
+    rep.findings.push_back(
+        {"center_y", cy * 1e6, "um", "least-squares circle centre offset along Y (mean of runs)", "center_y", {}});
     rep.findings.push_back({"radius_deviation", r0 * 1e6, "um",
                             "least-squares circle radius minus the nominal radius (includes mean scale error and "
-                            "ball-bar length error)"});
+                            "ball-bar length error)",
+                            "radius_deviation",
+                            {}});
     rep.findings.push_back({"scale_mismatch", scale * 1e6, "ppm",
                             "εx − εy = 2c/R from the cos2θ coefficient c of the joint fit (circle, 2nd harmonics, "
-                            "lost motion) outside the reversal zones; positive = X travels further than Y"});
+                            "lost motion) outside the reversal zones; positive = X travels further than Y",
+                            "scale_mismatch",
+                            {}});
 }
 
 } // namespace
@@ -178,7 +198,7 @@ Result<BallBarReport> analyzeBallBar(std::span<const io::BallBarTrace> traces, c
         if (r.fullCircle)
             full.push_back(&r);
         else
-            rep.refused.push_back(r.refusal);
+            rep.refused.push_back({"full_circle", r.refusalArgs, r.refusal});
     }
     combineReversals(rep, opt);
     if (full.empty())

@@ -201,8 +201,10 @@ TEST(BallBarDiagnostics, RecoversInjectedErrorsFromCwAndCcw)
     expectWithin(*rep->circularityM * 1e6, expected * 1e6, 1.0, "circularity um");
     for (int axis = 0; axis < 2; ++axis)
         EXPECT_FALSE(rep->cyclic[axis]->detected) << axis;
-    for (const auto& f : rep->findings)
+    for (const auto& f : rep->findings) {
         EXPECT_FALSE(f.rule.empty()) << f.name;
+        EXPECT_FALSE(f.ruleId.empty()) << f.name; // the key a user interface words in its own language
+    }
 }
 
 TEST(BallBarDiagnostics, SingleDirectionReportsSquarenessWithServoMismatchRefused)
@@ -216,7 +218,9 @@ TEST(BallBarDiagnostics, SingleDirectionReportsSquarenessWithServoMismatchRefuse
     expectWithin(*rep->squarenessRad * 1e6, -50.0, 0.0, "squareness");
     EXPECT_FALSE(rep->servoMismatchS.has_value());
     ASSERT_FALSE(rep->refused.empty());
-    EXPECT_NE(rep->refused.front().find("both directions"), std::string::npos);
+    EXPECT_NE(rep->refused.front().text.find("both directions"), std::string::npos);
+    EXPECT_EQ(rep->refused.front().id, "servo_mismatch.one_direction");
+    EXPECT_EQ(rep->refused.front().args, std::vector<std::string>{"CCW"});
 }
 
 TEST(BallBarDiagnostics, ServoMismatchAloneIsNotMistakenForSquareness)
