@@ -582,7 +582,7 @@
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="501" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="511" />
         <source>none</source>
         <translation>なし</translation>
     </message>
@@ -899,7 +899,7 @@
 <context>
     <name>VelocityLoopWizard</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="127" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="128" />
         <source>–</source>
         <translation>–</translation>
     </message>
@@ -5072,189 +5072,194 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::VelocityLoopDesignPage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="323" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="324" />
         <source>Velocity loop: proposal and prediction</source>
         <translation>速度ループ: 提案と予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="324" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="325" />
         <source>Predicted open loop L = C·P and closed loop T = L/(1 + L) with the proposed PI, the margins before and after, the position gain with its stability limit, and the predicted velocity step.</source>
         <translation>提案した PI での開ループ L = C·P と閉ループ T = L/(1 + L) の予測、変更前後の余裕、安定限界付きの位置ゲイン、速度ステップ応答の予測。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="333" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="334" />
         <source>Time from the step</source>
         <translation>ステップからの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="333" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="334" />
         <source>Motor velocity / step</source>
         <translation>モータ速度 / ステップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="338" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="339" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="338" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="339" />
         <source>Before</source>
         <translation>適用前</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="338" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="339" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="413" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="351" />
+        <source>Also apply the recommended position gain K_p (the verification step tests the velocity loop only)</source>
+        <translation>推奨の位置ゲイン K_p も適用する（検証のステップは速度ループだけを試験します）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="423" />
         <source>Chapter 5 rule (corrected 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m², K_I = k·ω_l²·J_m.</source>
         <translation>第 5 章の規則 (修正 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m²、K_I = k·ω_l²·J_m。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="421" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="431" />
         <source>Margins on the measured plant: |C·P| = 1 and arg(C·P) = −180° + %1° at %2 Hz.</source>
         <translation>測定したプラントでの余裕: %2 Hz で |C·P| = 1 かつ arg(C·P) = −180° + %1°。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="428" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="438" />
         <source>No measured response.</source>
         <translation>測定した応答がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="431" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="441" />
         <source>No proposal: %1</source>
         <translation>提案なし: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="465" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="475" />
         <source>Open loop L (proposed)</source>
         <translation>開ループ L (提案)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="466" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="476" />
         <source>Closed loop T (proposed)</source>
         <translation>閉ループ T (提案)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="467" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="477" />
         <source>Plant P (measured)</source>
         <translation>プラント P (測定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="467" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="477" />
         <source>Plant P (model)</source>
         <translation>プラント P (モデル)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="471" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="481" />
         <source>crossover %1 Hz</source>
         <translation>交差周波数 %1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="489" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="499" />
         <source>Measured before</source>
         <translation>変更前の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="493" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="503" />
         <source>Predicted before</source>
         <translation>変更前の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="497" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="507" />
         <source>Predicted with the proposal</source>
         <translation>提案での予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="505" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="515" />
         <source>K_P</source>
         <translation>K_P</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="505" />
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="506" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="515" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="516" />
         <source>N·m·s/rad</source>
         <translation>N·m·s/rad</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="507" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="517" />
         <source>K_I</source>
         <translation>K_I</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="507" />
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="508" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="517" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="518" />
         <source>N·m/rad</source>
         <translation>N·m/rad</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="509" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="519" />
         <source>Gain crossover</source>
         <translation>ゲイン交差周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="510" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="520" />
         <source>Phase margin</source>
         <translation>位相余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="511" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="521" />
         <source>Gain margin</source>
         <translation>ゲイン余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="512" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="522" />
         <source>Peak sensitivity</source>
         <translation>感度関数のピーク</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="513" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="523" />
         <source>Step overshoot (predicted)</source>
         <translation>ステップ応答のオーバーシュート (予測)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="515" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="525" />
         <source>Step overshoot (measured)</source>
         <translation>ステップ応答のオーバーシュート (測定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="515" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="525" />
         <source>after applying</source>
         <translation>適用後</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="516" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="526" />
         <source>Position gain K_p</source>
         <translation>位置ゲイン K_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="518" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="528" />
         <source>Position gain stability limit</source>
         <translation>位置ゲインの安定限界</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="520" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="530" />
         <source>%1 1/s at %2 Hz</source>
         <translation>%1 1/s (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="521" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="531" />
         <source>none on the model</source>
         <translation>モデル上ではなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="525" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="535" />
         <source>Position gain: recommended min(limit·10^(−%1/20), crossover·2π/5); %2.</source>
         <translation>位置ゲイン: 推奨値 min(限界·10^(−%1/20), 交差周波数·2π/5); %2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="528" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="538" />
         <source>rigid model J_m with a delay of 1.5 velocity periods — fit a two-inertia model for the resonance</source>
         <translation>剛体モデル J_m と速度ループ周期 1.5 回分の遅れ — 共振を考慮するには 2慣性系モデルを同定してください</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="530" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="540" />
         <source>two-inertia model of session %1 with a delay of 1.5 velocity periods</source>
         <translation>セッション %1 の 2慣性系モデル (速度ループ周期 1.5 回分の遅れ付き)</translation>
     </message>
@@ -5300,102 +5305,102 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::VelocityLoopSourcePage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="139" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="140" />
         <source>Velocity loop: rule and data</source>
         <translation>速度ループ: 規則とデータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="140" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="141" />
         <source>The velocity PI from the fitted motor-side inertia (chapter 5 rule) or from the margins on a measured response; the position gain follows with its stability limit.</source>
         <translation>速度 PI を、同定したモータ側イナーシャ (第 5 章の規則) または測定した応答の余裕から決めます。位置ゲインは安定限界とともに決まります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="146" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="147" />
         <source>Axis:</source>
         <translation>軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="150" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="151" />
         <source>From the fitted inertia: K_P = k·√2·ω_l·J_m, K_I = k·ω_l²·J_m</source>
         <translation>同定したイナーシャから: K_P = k·√2·ω_l·J_m、K_I = k·ω_l²·J_m</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="152" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="153" />
         <source>From margins on a measured response (crossover and phase margin)</source>
         <translation>測定した応答の余裕から (交差周波数と位相余裕)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="167" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="168" />
         <source>Fitted model from:</source>
         <translation>同定モデルの出所:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="168" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="169" />
         <source>Motor-side inertia J_m:</source>
         <translation>モータ側イナーシャ J_m:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="169" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="170" />
         <source>Bandwidth ω_l/2π (for k = 1):</source>
         <translation>帯域 ω_l/2π (k = 1 のとき):</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="170" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="171" />
         <source>Gain factor k:</source>
         <translation>ゲイン係数 k:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="177" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="178" />
         <source>Measure on the machine (torque injection, multi-sweep)</source>
         <translation>機械で測定 (トルク注入、複数回掃引)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="179" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="180" />
         <source>From a saved session</source>
         <translation>保存済みセッションから</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="192" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="193" />
         <source>Crossover frequency:</source>
         <translation>交差周波数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="193" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="194" />
         <source>Phase margin:</source>
         <translation>位相余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="198" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="199" />
         <source> rad/s</source>
         <translation> rad/s</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="199" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="200" />
         <source>Velocity step before and after (motor):</source>
         <translation>変更前後の速度ステップ (モータ):</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="217" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="218" />
         <source>entered below</source>
         <translation>以下に入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="222" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="223" />
         <source>Session %1: %2, %3 axis %4, %5</source>
         <translation>セッション %1: %2、%3 軸 %4、%5</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="242" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="243" />
         <source>Before and after applying, a velocity step of the set size is run on the drive.</source>
         <translation>適用の前後に、設定した大きさの速度ステップをサーボアンプで実行します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="243" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="244" />
         <source>Not connected: the proposal and prediction only; the steps, apply and verify need a connection.</source>
         <translation>未接続: 提案と予測のみ。ステップ応答、適用、検証には接続が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="266" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="267" />
         <source>Session %1: fitted J_m %2 kg·m², J_L %3 kg·m², K %4 N·m/rad; the prediction uses this two-inertia model.</source>
         <translation>セッション %1: 同定値 J_m %2 kg·m²、J_L %3 kg·m²、K %4 N·m/rad; 予測にはこの 2慣性系モデルを使います。</translation>
     </message>
@@ -5403,47 +5408,47 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::VelocityLoopVerifyPage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="560" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="580" />
         <source>Velocity loop: verification</source>
         <translation>速度ループ: 検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="561" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="581" />
         <source>The velocity step measured before and after applying, with the prediction.</source>
         <translation>適用前後に測定した速度ステップ応答と予測。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="565" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="585" />
         <source>Time from the step</source>
         <translation>ステップからの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="565" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="585" />
         <source>Motor velocity / step</source>
         <translation>モータ速度 / ステップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="583" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="603" />
         <source>Measured before</source>
         <translation>変更前の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="587" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="607" />
         <source>Measured after</source>
         <translation>適用後の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="591" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="611" />
         <source>Predicted after</source>
         <translation>適用後の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="594" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="614" />
         <source>Overshoot: before %1 (measured), after %2 (measured), %3 predicted.</source>
         <translation>オーバーシュート: 変更前 %1 (測定)、変更後 %2 (測定)、予測 %3。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="596" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="616" />
         <source>No step after applying: %1</source>
         <translation>適用後のステップ応答なし: %1</translation>
     </message>

@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -43,6 +44,8 @@ struct VelocityLoopData {
     enum class FrfSource { Measure, Session };
     Method method = Method::Inertia;
     FrfSource frfSource = FrfSource::Measure;
+    /// The verification step tests the velocity loop only: the position gain is applied only on request.
+    bool applyPositionGain = false;
     QString axis;
     // Inertia rule.
     double jmKgm2 = 1e-3;
@@ -124,10 +127,13 @@ public:
 
 private:
     void analyse();
+    /// The proposal handed to the apply page: the PI, and the position gain when its box is ticked.
+    void updateProposal();
     AppContext& m_ctx;
     VelocityLoopData& m_d;
     TestRunPage* m_run;
     ApplyPage* m_apply;
+    QCheckBox* m_applyPositionGain = nullptr;
     widgets::BodePlot* m_bode = nullptr;
     widgets::CurvePlot* m_step = nullptr;
     QTableWidget* m_table = nullptr;

@@ -11,6 +11,7 @@
 #include "widgets/CurvePlot.h"
 
 #include <QButtonGroup>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -347,6 +348,15 @@ VelocityLoopDesignPage::VelocityLoopDesignPage(AppContext& ctx, VelocityLoopData
     m_status->setObjectName("vlStatus");
     m_status->setWordWrap(true);
     lay->addWidget(m_status);
+    m_applyPositionGain = new QCheckBox(tr("Also apply the recommended position gain K_p (the verification step "
+                                           "tests the velocity loop only)"),
+                                        this);
+    m_applyPositionGain->setObjectName("vlApplyPositionGain");
+    lay->addWidget(m_applyPositionGain);
+    connect(m_applyPositionGain, &QCheckBox::toggled, this, [this](bool on) {
+        m_d.applyPositionGain = on;
+        updateProposal();
+    });
     connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
         if (r.id != m_readRequest)
             return;
@@ -529,15 +539,25 @@ void VelocityLoopDesignPage::analyse()
                           "model for the resonance")
                      : tr("two-inertia model of session %1 with a delay of 1.5 velocity periods").arg(d.modelSession));
     m_status->setText(status);
+    const bool positionGain = std::isfinite(d.position.recommendedPerS) && d.position.recommendedPerS > 0.0;
+    m_applyPositionGain->setEnabled(positionGain);
+    if (!positionGain)
+        m_applyPositionGain->setChecked(false);
+    updateProposal();
+    m_done = true;
+    emit completeChanged();
+}
+
+void VelocityLoopDesignPage::updateProposal()
+{
+    auto& d = m_d;
     model::ParameterValues v{{"velocity.kp", d.proposed.kpNmsPerRad}, {"velocity.ki", d.proposed.kiNmPerRad}};
-    if (std::isfinite(d.position.recommendedPerS) && d.position.recommendedPerS > 0.0)
+    if (d.applyPositionGain && std::isfinite(d.position.recommendedPerS) && d.position.recommendedPerS > 0.0)
         v["position.kp"] = d.position.recommendedPerS;
     if (m_ctx.drive().isConnected() && !d.axis.isEmpty()) {
         m_apply->setProposal(d.axis, v);
         m_ctx.setProposed(d.axis, v);
     }
-    m_done = true;
-    emit completeChanged();
 }
 
 bool VelocityLoopDesignPage::isComplete() const

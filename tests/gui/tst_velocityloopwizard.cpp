@@ -120,6 +120,10 @@ private slots:
             QVERIFY(d.stepBefore);
             QVERIFY(d.predictedAfter.has_value());
             QVERIFY(w.designPage()->table()->rowCount() >= 8);
+            // The position gain is recommended but written only on request (the verification tests the velocity
+            // loop only).
+            auto* positionBox = w.designPage()->findChild<QCheckBox*>("vlApplyPositionGain");
+            QVERIFY(positionBox && positionBox->isEnabled() && !positionBox->isChecked());
             maybeScreenshot(&w, "velocity-loop-03-design");
             w.next();
             QCOMPARE(w.currentId(), int(VelocityLoopWizard::Apply));
@@ -127,9 +131,11 @@ private slots:
             apply->confirmation()->setChecked(true);
             QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); },
                               10000));
+            QCOMPARE(apply->diffTable()->rowCount(), 2); // K_P and K_I, no position gain
             maybeScreenshot(&w, "velocity-loop-04-apply");
             apply->applyButton()->click();
             QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
+            QVERIFY(!apply->readBack().count("position.kp"));
             QVERIFY(std::abs(apply->readBack().at("velocity.kp") - wantKp) <= 1e-9 * wantKp);
             QVERIFY(std::abs(apply->readBack().at("velocity.ki") - wantKi) <= 1e-9 * wantKi);
             w.next();
