@@ -146,7 +146,7 @@
 <context>
     <name>CurrentLoopWizard</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="109" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="108" />
         <source>overshoot %1 %, 10–90 % rise time %2 µs</source>
         <translation>オーバーシュート %1 %、10–90 % 立ち上がり時間 %2 µs</translation>
     </message>
@@ -1205,172 +1205,172 @@
 <context>
     <name>axistune::gui::CurrentLoopDesignPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="331" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="381" />
         <source>Current loop: design</source>
         <translation>電流ループ: 設計</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="333" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="383" />
         <source>For each PI ratio α the gains with the shortest rise time inside the dead-time stability boundary (gain margin), the voltage envelope and the overshoot limit; α* has the shortest rise time of all.</source>
         <translation>各 PI率 α について、むだ時間の安定限界 (ゲイン余裕)、電圧の包絡線、オーバーシュート制限の内側で立ち上がり時間が最短となるゲイン; α* はその中で最も立ち上がり時間が短い α です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="340" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="390" />
         <source>Show the boundaries of every α</source>
         <translation>すべての α の境界を表示</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="342" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="392" />
         <source>Chosen α:</source>
         <translation>選択した α:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="350" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="363" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="400" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="413" />
         <source>k_p</source>
         <translation>k_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="350" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="363" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="400" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="413" />
         <source>V/A</source>
         <translation>V/A</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="350" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="400" />
         <source>k_i</source>
         <translation>k_i</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="350" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="400" />
         <source>V/(A·s)</source>
         <translation>V/(A·s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="354" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="404" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
         <source>α</source>
         <translation>α</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="354" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="404" />
         <source>Rise time 10–90 %</source>
         <translation>立ち上がり時間 10–90 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="365" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="415" />
         <source>k_p [V/A]</source>
         <translation>k_p [V/A]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="365" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="415" />
         <source>k_i [V/(A·s)]</source>
         <translation>k_i [V/(A·s)]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
         <source>Rise time [µs]</source>
         <translation>立ち上がり時間 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="356" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
         <source>Overshoot [%]</source>
         <translation>オーバーシュート [%]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="357" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="407" />
         <source>Active constraints</source>
         <translation>有効な制約</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="363" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="413" />
         <source>Current |i|</source>
         <translation>電流 |i|</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="365" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="415" />
         <source>Current [A]</source>
         <translation>電流 [A]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="365" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="415" />
         <source>Factor</source>
         <translation>係数</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="368" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="418" />
         <source>Rise time against α</source>
         <translation>α に対する立ち上がり時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="369" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="419" />
         <source>α table</source>
         <translation>α の表</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="370" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="420" />
         <source>Gain schedule</source>
         <translation>ゲインスケジュール</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="398" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="448" />
         <source>Designing…</source>
         <translation>設計中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="439" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="489" />
         <source>The design failed: %1</source>
         <translation>設計に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="456" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="506" />
         <source> (optimum α*)</source>
         <translation> (最適 α*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="463" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="513" />
         <source>infeasible</source>
         <translation>実現不可</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="466" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="516" />
         <source>Rise time of the optimum per α</source>
         <translation>α ごとの最適点の立ち上がり時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="467" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="517" />
         <source>α* = %1</source>
         <translation>α* = %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="469" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="519" />
         <source>Optimum α* = %1: k_p = %2 V/A, k_i = %3 V/(A·s), rise time %4 µs (delay-free design model).</source>
         <translation>最適 α* = %1: k_p = %2 V/A、k_i = %3 V/(A·s)、立ち上がり時間 %4 µs (むだ時間なしの設計モデル)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="486" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="536" />
         <source>Stability boundary (gain margin %1 dB)</source>
         <translation>安定限界 (ゲイン余裕 %1 dB)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="496" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="546" />
         <source>Voltage envelope α = %1</source>
         <translation>電圧の包絡線 α = %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="498" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="548" />
         <source>Overshoot %1 % α = %2</source>
         <translation>オーバーシュート %1 % α = %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="503" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="553" />
         <source>α = %1: k_p %2 V/A, k_i %3 V/(A·s)</source>
         <translation>α = %1: k_p %2 V/A、k_i %3 V/(A·s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="519" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="569" />
         <source>k_p over current (k_i in the same ratio)</source>
         <translation>電流に対する k_p (k_i も同じ比率)</translation>
     </message>
@@ -1378,132 +1378,202 @@
 <context>
     <name>axistune::gui::CurrentLoopMotorPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="122" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="121" />
         <source>Current loop: motor data</source>
         <translation>電流ループ: モータデータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="123" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="122" />
         <source>Enter the motor data or read them from the drive's motor parameters. Maximum current and maximum voltage must use the same convention (both peak or both rms): only their ratio enters the voltage constraint.</source>
         <translation>モータデータを入力するか、サーボアンプのモータパラメータから読み出してください。最大電流と最大電圧は同じ表し方 (両方ピーク値または両方実効値) にしてください: 電圧制約にはその比だけが入ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="130" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="129" />
         <source>Read from drive</source>
         <translation>サーボアンプから読み出し</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="132" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="131" />
         <source>Axis:</source>
         <translation>軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="142" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="134" />
+        <source>From profile</source>
+        <translation>プロファイルから</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="136" />
+        <source>The motor model of this axis in the machine's profile (saved by an earlier current-loop session or imported)</source>
+        <translation>機械プロファイルにあるこの軸のモータモデル（以前の電流ループのセッションで保存したもの、またはインポートしたもの）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="146" />
         <source>Motor</source>
         <translation>モータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="151" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="155" />
         <source> V(rms)/1000 min⁻¹</source>
         <translation> V(rms)/1000 min⁻¹</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="152" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="156" />
         <source> min⁻¹</source>
         <translation> min⁻¹</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="153" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="157" />
         <source>Armature resistance R_a:</source>
         <translation>電機子抵抗 R_a:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="154" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="158" />
         <source>q-axis inductance L_q:</source>
         <translation>q 軸インダクタンス L_q:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="155" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="159" />
         <source>Maximum current I_max:</source>
         <translation>最大電流 I_max:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="156" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="160" />
         <source>Maximum voltage V_max:</source>
         <translation>最大電圧 V_max:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="157" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="161" />
         <source>Inductance drop at I_max δ:</source>
         <translation>I_max でのインダクタンス低下 δ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="158" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="162" />
         <source>Rated current (0: not given):</source>
         <translation>定格電流 (0: 指定なし):</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="159" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="163" />
         <source>Back-EMF constant, line-to-line (0: not given):</source>
         <translation>誘起電圧定数、線間 (0: 指定なし):</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="160" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="164" />
         <source>Contouring speed:</source>
         <translation>輪郭加工速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="162" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="166" />
         <source>Design</source>
         <translation>設計</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="168" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="172" />
         <source>Dead time τ of the design:</source>
         <translation>設計のむだ時間 τ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="169" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="173" />
         <source>Gain margin:</source>
         <translation>ゲイン余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="170" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="174" />
         <source>Step overshoot limit:</source>
         <translation>ステップ応答のオーバーシュート制限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="171" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="175" />
         <source>Current ripple of the voltage check (of I_max):</source>
         <translation>電圧チェックの電流リプル (I_max に対する比):</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="192" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="197" />
         <source>Reading the motor parameters failed: %1</source>
         <translation>モータパラメータの読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="216" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="221" />
         <source>Read from axis %1 of the drive (peak values): maximum current, maximum voltage, rated current, current-loop period %2 µs, dead time %3 µs; the back-EMF constant from the torque constant (k_e = k_t/1.5, amplitude-invariant dq). The drive does not offer R_a, L_q and δ: enter them from the motor data sheet.</source>
         <translation>サーボアンプの軸 %1 から読み出しました (ピーク値): 最大電流、最大電圧、定格電流、電流ループ周期 %2 µs、むだ時間 %3 µs; 誘起電圧定数はトルク定数から (k_e = k_t/1.5、振幅不変の dq 変換)。サーボアンプは R_a、L_q、δ を提供しないため、モータのデータシートから入力してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="237" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="243" />
         <source>Not connected: enter the motor data (defaults: the rotary motor of Table 2.2, rms values). Apply needs a connection.</source>
         <translation>未接続: モータデータを入力してください (初期値: 表 2.2 の回転形モータ、実効値)。適用には接続が必要です。</translation>
     </message>
     <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="262" />
+        <source>No machine profile: open a store and connect to (or choose) a machine first.</source>
+        <translation>機械プロファイルがありません。先にストアを開き、機械に接続して（または機械を選んで）ください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="269" />
+        <source>The profile of machine %1 has no motor model for axis %2: enter the data, or save a current-loop session first.</source>
+        <translation>機械 %1 のプロファイルに軸 %2 のモータモデルがありません。データを入力するか、先に電流ループのセッションを保存してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="272" />
+        <source>The profile of machine %1 could not be read: %2</source>
+        <translation>機械 %1 のプロファイルを読めませんでした: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="287" />
+        <source>R_a</source>
+        <translation>R_a</translation>
+    </message>
+    <message>
         <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="288" />
+        <source>L_q</source>
+        <translation>L_q</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="289" />
+        <source>δ</source>
+        <translation>δ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="290" />
+        <source>I_max</source>
+        <translation>I_max</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="291" />
+        <source>V_max</source>
+        <translation>V_max</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="292" />
+        <source>rated current</source>
+        <translation>定格電流</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="293" />
+        <source>back-EMF constant</source>
+        <translation>誘起電圧定数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="296" />
+        <source>Taken from the profile of machine %1, axis %2: %3.</source>
+        <translation>機械 %1、軸 %2 のプロファイルから取得: %3。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="298" />
+        <source>Not in the profile, kept as shown: %1.</source>
+        <translation>プロファイルにないため表示のまま: %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="338" />
         <source>Back-EMF check at the contouring speed %1 min⁻¹: %2 V(rms, line-to-line) = %3 V peak per phase, %4 % of V_max = %5 V (peak comparison; with rms values %6 %). The design neglects the back-EMF, which holds when it is small against V_max.</source>
         <translation>輪郭加工速度 %1 min⁻¹ での誘起電圧の確認: %2 V (実効値、線間) = 相あたりピーク %3 V、V_max = %5 V の %4 % (ピーク値で比較; 実効値では %6 %)。設計は誘起電圧を無視しており、これは V_max に比べて小さいときに成り立ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="298" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="348" />
         <source>No back-EMF constant given: the back-EMF at the contouring speed is not checked.</source>
         <translation>誘起電圧定数の指定なし: 輪郭加工速度での誘起電圧は確認しません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="301" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="351" />
         <source>Not usable: %1</source>
         <translation>使用できません: %1</translation>
     </message>
@@ -1554,37 +1624,37 @@
 <context>
     <name>axistune::gui::CurrentLoopStepPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="552" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="602" />
         <source>Current loop: step responses</source>
         <translation>電流ループ: ステップ応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="553" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="603" />
         <source>The delay-free design model against the prediction with the drive's current-loop period (zero-order hold) and dead time.</source>
         <translation>むだ時間なしの設計モデルと、サーボアンプの電流ループ周期 (0 次ホールド) とむだ時間を含めた予測の比較。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="558" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="608" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="558" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="608" />
         <source>Current / command</source>
         <translation>電流 / 指令</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="574" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="624" />
         <source>Delay-free design</source>
         <translation>むだ時間なしの設計</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="575" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="625" />
         <source>Prediction: period %1 µs + dead time %2 µs</source>
         <translation>予測: 周期 %1 µs + むだ時間 %2 µs</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="581" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="631" />
         <source>Delay-free: %1. With the delay: %2.
 No measured current step: the drive offers no current-step test (its tests are velocity step, jog, hold and frequency response). A velocity step is not a measurement of the current loop — the current settles within about one velocity-loop period of the trace — so none is shown here.</source>
         <translation>むだ時間なし: %1。むだ時間あり: %2。
@@ -1594,52 +1664,52 @@ No measured current step: the drive offers no current-step test (its tests are v
 <context>
     <name>axistune::gui::CurrentLoopVerifyPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="606" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="656" />
         <source>Current loop: verification</source>
         <translation>電流ループ: 検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="607" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="657" />
         <source>The gains read back from the drive and the step predicted with them (period and dead time of the drive), against the design.</source>
         <translation>サーボアンプから読み出したゲインと、そのゲインで予測したステップ応答 (サーボアンプの周期とむだ時間) を設計と比較します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="612" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="662" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="612" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="662" />
         <source>Current / command</source>
         <translation>電流 / 指令</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="623" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="673" />
         <source>Reading back failed: %1</source>
         <translation>読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="647" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="697" />
         <source>Not applied: nothing to verify.</source>
         <translation>未適用: 検証するものはありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="650" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="700" />
         <source>Reading back…</source>
         <translation>読み出し中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="665" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="715" />
         <source>Design (delay-free, proposed gains)</source>
         <translation>設計 (むだ時間なし、提案ゲイン)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="667" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="717" />
         <source>Prediction with the read-back gains</source>
         <translation>読み出したゲインでの予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="674" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="724" />
         <source>Read back: k_p %1 V/A, k_i %2 V/(A·s), α %3 — %4.
 Predicted step with them: %5.
 No measured current step: the drive offers no current-step test.</source>
@@ -1648,12 +1718,12 @@ No measured current step: the drive offers no current-step test.</source>
 電流ステップの実測なし: サーボアンプに電流ステップのテストがありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="679" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="729" />
         <source>as proposed</source>
         <translation>提案どおり</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="679" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="729" />
         <source>NOT as proposed</source>
         <translation>提案と異なる</translation>
     </message>

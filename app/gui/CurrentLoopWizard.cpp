@@ -99,7 +99,8 @@ void CurrentLoopWizard::saveSession()
     rec.info.axis = d.axis.toStdString();
     rec.info.status = store::SessionStatus::Completed;
     const auto& m = d.motor;
-    rec.inputs = {{"source", d.fromDrive ? "drive" : "entered"},
+    rec.inputs = {{"source", d.fromDrive ? (d.fromProfile ? "drive+profile" : "drive")
+                                         : (d.fromProfile ? "profile" : "entered")},
                   {"motor",
                    {{"resistance_ohm", m.resistanceOhm},
                     {"inductance_q_H", m.inductanceQH},
@@ -118,6 +119,20 @@ void CurrentLoopWizard::saveSession()
                   {"drive_period_s", d.drivePeriodS},
                   {"drive_dead_time_s", d.driveDeadTimeS},
                   {"back_emf_check", d.backEmfText.toStdString()}};
+    // The motor data become the axis's motor model in the profile (docs/formats-profile.md), for the next
+    // session's "From profile".
+    if (!d.axis.isEmpty() && !m_ctx.machine().isEmpty() && tuning::validateMotor(m, "motor data").ok()) {
+        nlohmann::json motor{{"resistance_ohm", m.resistanceOhm},
+                             {"inductance_q_H", m.inductanceQH},
+                             {"inductance_drop_at_max", m.inductanceDropAtMax},
+                             {"max_current_A", m.maxCurrentA},
+                             {"max_voltage_V", m.maxVoltageV}};
+        if (m.ratedCurrentA > 0.0)
+            motor["rated_current_A"] = m.ratedCurrentA;
+        if (m.backEmfVPerKrpm > 0.0)  // line-to-line rms per 1000 min⁻¹ → q-axis peak V·s/rad (k_e = k_t/1.5)
+            motor["back_emf_constant_V_s_per_rad"] = m.backEmfVPerKrpm / kKeToVPerKrpm;
+        rec.models.push_back({0, rec.info.axis, "motor", {}, motor});
+    }
     const auto* c = d.chosen();
     if (d.design && c) {
         nlohmann::json table = nlohmann::json::array();

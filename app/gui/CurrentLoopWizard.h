@@ -15,6 +15,7 @@
 #include <QWizard>
 #include <QWizardPage>
 
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -34,9 +35,13 @@ namespace gui {
 class AppContext;
 class ApplyPage;
 
+/// Line-to-line rms volts per 1000 min⁻¹ from the q-axis peak constant [V·s/rad] (amplitude-invariant dq).
+inline constexpr double kKeToVPerKrpm = 1.2247448713915890 * 1000.0 * 2.0 * std::numbers::pi / 60.0;
+
 struct CurrentLoopData {
     QString axis;
     bool fromDrive = false;
+    bool fromProfile = false;  ///< some motor data taken from the machine profile's motor model
     tuning::MotorData motor;
     tuning::CurrentLoopSettings settings;
     double drivePeriodS = 62.5e-6;   ///< current.period of the drive (discrete prediction)
@@ -73,12 +78,15 @@ public:
     bool isComplete() const override;
     bool validatePage() override;
     QPushButton* readButton() const { return m_read; }
+    QPushButton* profileButton() const { return m_fromProfile; }
     QComboBox* axisBox() const { return m_axis; }
     bool isReading() const { return m_readRequest != 0; }
     void setMotor(const tuning::MotorData& m);
 
 public slots:
     void readFromDrive();
+    /// Fills the fields the machine profile's "motor" model of the axis holds (docs/formats-profile.md).
+    void takeFromProfile();
 
 private:
     void updateCheck();
@@ -87,6 +95,7 @@ private:
     CurrentLoopData& m_d;
     QComboBox* m_axis = nullptr;
     QPushButton* m_read = nullptr;
+    QPushButton* m_fromProfile = nullptr;
     QDoubleSpinBox* m_r = nullptr;
     QDoubleSpinBox* m_l = nullptr;
     QDoubleSpinBox* m_imax = nullptr;

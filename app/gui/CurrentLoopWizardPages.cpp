@@ -5,6 +5,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/CurrentLoopWizard.h"
 #include "app/gui/WizardPages.h"
+#include "core/store/Database.h"
 #include "widgets/CurvePlot.h"
 
 #include <QCheckBox>
@@ -34,8 +35,6 @@ namespace gui {
 namespace {
 
 constexpr int kCurvePoints = 60;
-/// Line-to-line rms volts per 1000 min⁻¹ from the q-axis peak constant [V·s/rad] (amplitude-invariant dq).
-constexpr double kKeToVPerKrpm = 1.2247448713915890 * 1000.0 * 2.0 * std::numbers::pi / 60.0;
 
 QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double v, int decimals, const QString& suffix,
                      const char* name)
@@ -132,6 +131,11 @@ CurrentLoopMotorPage::CurrentLoopMotorPage(AppContext& ctx, CurrentLoopData& sha
     top->addWidget(new QLabel(tr("Axis:"), this));
     top->addWidget(m_axis, 1);
     top->addWidget(m_read);
+    m_fromProfile = new QPushButton(tr("From profile"), this);
+    m_fromProfile->setObjectName("clFromProfile");
+    m_fromProfile->setToolTip(tr("The motor model of this axis in the machine's profile (saved by an earlier "
+                                 "current-loop session or imported)"));
+    top->addWidget(m_fromProfile);
     lay->addLayout(top);
     m_source = new QLabel(this);
     m_source->setObjectName("clSource");
@@ -183,6 +187,7 @@ CurrentLoopMotorPage::CurrentLoopMotorPage(AppContext& ctx, CurrentLoopData& sha
             emit completeChanged();
         });
     connect(m_read, &QPushButton::clicked, this, &CurrentLoopMotorPage::readFromDrive);
+    connect(m_fromProfile, &QPushButton::clicked, this, &CurrentLoopMotorPage::takeFromProfile);
     connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
         if (r.id != m_readRequest)
             return;
@@ -231,6 +236,7 @@ void CurrentLoopMotorPage::initializePage()
     m_axis->addItems(m_ctx.axes());
     const bool connected = m_ctx.drive().isConnected() && m_axis->count() > 0;
     m_read->setEnabled(connected);
+    m_fromProfile->setEnabled(m_ctx.database() && !m_ctx.machine().isEmpty());
     if (connected)
         readFromDrive();
     else
@@ -246,6 +252,50 @@ void CurrentLoopMotorPage::readFromDrive()
     m_readRequest = m_ctx.drive().readParameters(m_axis->currentText(),
                                                  {"motor.max_current", "drive.max_voltage", "motor.rated_current",
                                                   "motor.torque_constant", "current.period", "current.dead_time"});
+    emit completeChanged();
+}
+
+void CurrentLoopMotorPage::takeFromProfile()
+{
+    const QString machine = m_ctx.machine(), axis = m_axis->currentText();
+    if (!m_ctx.database() || machine.isEmpty() || axis.isEmpty()) {
+        m_source->setText(tr("No machine profile: open a store and connect to (or choose) a machine first."));
+        return;
+    }
+    auto profile = m_ctx.database()->loadProfile(machine.toStdString());
+    const io::AxisProfile* ax = profile ? profile->axis(axis.toStdString()) : nullptr;
+    const auto model = ax ? ax->models.find("motor") : std::map<std::string, nlohmann::json>::const_iterator{};
+    if (!profile || !ax || model == ax->models.end() || !model->second.is_object()) {
+        m_source->setText(profile ? tr("The profile of machine %1 has no motor model for axis %2: enter the data, or "
+                                       "save a current-loop session first.")
+                                        .arg(machine, axis)
+                                  : tr("The profile of machine %1 could not be read: %2")
+                                        .arg(machine, QString::fromStdString(profile.error().detail)));
+        return;
+    }
+    const nlohmann::json& j = model->second;
+    tuning::MotorData m = motorFromFields();
+    QStringList used, missing;
+    auto take = [&](const char* key, const QString& label, double scale, double& field) {
+        if (auto it = j.find(key); it != j.end() && it->is_number() && std::isfinite(it->get<double>())) {
+            field = it->get<double>() * scale;
+            used << label;
+        } else {
+            missing << label;
+        }
+    };
+    take("resistance_ohm", tr("R_a"), 1.0, m.resistanceOhm);
+    take("inductance_q_H", tr("L_q"), 1.0, m.inductanceQH);
+    take("inductance_drop_at_max", tr("δ"), 1.0, m.inductanceDropAtMax);
+    take("max_current_A", tr("I_max"), 1.0, m.maxCurrentA);
+    take("max_voltage_V", tr("V_max"), 1.0, m.maxVoltageV);
+    take("rated_current_A", tr("rated current"), 1.0, m.ratedCurrentA);
+    take("back_emf_constant_V_s_per_rad", tr("back-EMF constant"), kKeToVPerKrpm, m.backEmfVPerKrpm);
+    setMotor(m);
+    m_d.fromProfile = true;
+    m_source->setText(tr("Taken from the profile of machine %1, axis %2: %3.").arg(machine, axis, used.join(", ")) +
+                      (missing.isEmpty() ? QString()
+                                         : " " + tr("Not in the profile, kept as shown: %1.").arg(missing.join(", "))));
     emit completeChanged();
 }
 

@@ -12,6 +12,9 @@
 #include "app/gui/CurrentLoopWizard.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/io/Profile.h"
+#include "core/sim/MachineDefinition.h"
+#include "core/store/Database.h"
 #include "widgets/CurvePlot.h"
 
 #include <QCheckBox>
@@ -207,6 +210,57 @@ private slots:
         QVERIFY(rec.ok());
         QCOMPARE((*result(*rec, "design"))["alpha"].get<double>(), 1.0);
         QCOMPARE(rec->inputs["source"].get<std::string>(), std::string("entered"));
+    }
+
+    void motorDataFromTheProfileAndSavedBack()
+    {
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        // The sample profile of vmc: axis X holds the Table 2.2 motor (peak values, docs/formats-profile.md).
+        auto sample = io::readProfileFile(sim::resourceDir() + "/samples/vmc-profile.json");
+        QVERIFY(sample.ok());
+        QVERIFY(ctx.database()->importProfile(*sample, "vmc-profile.json").ok());
+        ctx.drive().connectTo("sim:vmc");
+        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
+
+        CurrentLoopWizard w(ctx);
+        w.resize(1000, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* motor = w.motorPage();
+        QVERIFY(waitUntil([&] { return !motor->isReading() && motor->isComplete(); }, 10000));
+        w.findChild<QDoubleSpinBox*>("clR")->setValue(1.0);
+        w.findChild<QDoubleSpinBox*>("clL")->setValue(5.0);
+        QVERIFY(motor->profileButton()->isEnabled());
+        motor->profileButton()->click();
+        QCOMPARE(w.findChild<QDoubleSpinBox*>("clR")->value(), 0.32);
+        QCOMPARE(w.findChild<QDoubleSpinBox*>("clL")->value(), 2.19);
+        QCOMPARE(w.findChild<QDoubleSpinBox*>("clDelta")->value(), 0.24);
+        QCOMPARE(w.findChild<QDoubleSpinBox*>("clImax")->value(), 80.0);
+        QCOMPARE(w.findChild<QDoubleSpinBox*>("clRated")->value(), 15.3);
+        // k_e 0.33941 V·s/rad (q-axis peak) as line-to-line rms per 1000 min⁻¹: ·√3/√2 · 1000·2π/60 = 43.53.
+        const double emf = 0.33941 * std::sqrt(3.0) / std::sqrt(2.0) * 1000.0 * 2.0 * 3.14159265358979 / 60.0;
+        QVERIFY(std::abs(w.findChild<QDoubleSpinBox*>("clEmf")->value() - emf) <= 0.005);
+        QVERIFY2(w.findChild<QLabel*>("clSource")->text().contains("vmc"),
+                 qPrintable(w.findChild<QLabel*>("clSource")->text()));
+        // The operator corrects R_a; the session stores the data as the axis's motor model of the profile.
+        w.findChild<QDoubleSpinBox*>("clR")->setValue(0.35);
+        w.next();
+        QVERIFY(waitUntil([&] { return w.designPage()->isComplete(); }, 60000));
+        w.saveSession();
+        QVERIFY(w.savedSessionId() > 0);
+        auto rec = ctx.database()->loadSession(w.savedSessionId());
+        QVERIFY(rec.ok());
+        QCOMPARE(rec->inputs["source"].get<std::string>(), std::string("drive+profile"));
+        auto profile = ctx.database()->loadProfile("vmc");
+        QVERIFY(profile.ok());
+        const auto* x = profile->axis("X");
+        QVERIFY(x && x->models.count("motor"));
+        const auto& m = x->models.at("motor");
+        QCOMPARE(m["resistance_ohm"].get<double>(), 0.35);
+        QCOMPARE(m["inductance_q_H"].get<double>(), 2.19e-3);
+        QVERIFY(std::abs(m["back_emf_constant_V_s_per_rad"].get<double>() - 0.33941) <= 1e-4);
     }
 };
 
