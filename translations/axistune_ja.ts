@@ -937,9 +937,47 @@
         <translation>2慣性系の振動抑制…</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="24" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="25" />
         <source>Velocity and position loop…</source>
         <translation>速度ループと位置ループ…</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::AbortGuard</name>
+    <message>
+        <location filename="../app/gui/AbortGuard.cpp" line="21" />
+        <source>Restored %1 from before the write.</source>
+        <translation>%1 を書き込み前の値に戻しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AbortGuard.cpp" line="22" />
+        <source>The previous values of %1 were restored on the drive and read back.</source>
+        <translation>%1 の以前の値をサーボアンプに戻し、読み返しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AbortGuard.cpp" line="27" />
+        <source>Restoring %1 failed (%2): the applied values may still be active on the drive.</source>
+        <translation>%1 を戻せませんでした (%2)。適用した値がサーボアンプで有効なままの可能性があります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AbortGuard.cpp" line="36" />
+        <source>Connection lost: %1</source>
+        <translation>接続が切れました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AbortGuard.cpp" line="49" />
+        <source>Cancelled by the operator.</source>
+        <translation>作業者によりキャンセルされました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AbortGuard.cpp" line="63" />
+        <source>Restoring %1 from before the write…</source>
+        <translation>%1 を書き込み前の値に戻しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AbortGuard.cpp" line="67" />
+        <source>Could not restore %1: the connection to the drive is lost. Check them on the drive before the axis runs again.</source>
+        <translation>%1 を戻せません: サーボアンプとの接続が切れました。軸を再び動かす前にサーボアンプで確認してください。</translation>
     </message>
 </context>
 <context>
@@ -4009,47 +4047,22 @@ No measured current step: the drive offers no current-step test.</source>
         <translation>検証: ノッチを入れて再測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizard.cpp" line="126" />
-        <source>The previous filter values were restored on the drive.</source>
-        <translation>サーボアンプのフィルタを以前の値に戻しました。</translation>
-    </message>
-    <message>
         <location filename="../app/gui/NotchWizard.cpp" line="127" />
-        <source>Notch wizard: previous filter values of axis %1 restored</source>
-        <translation>ノッチフィルタのウィザード: 軸 %1 のフィルタを以前の値に戻しました</translation>
+        <source>the notch filters</source>
+        <translation>ノッチフィルタ</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizard.cpp" line="137" />
-        <source>Restoring the previous filter values failed (%1): the applied notches may still be active on the drive.</source>
-        <translation>フィルタを以前の値に戻せませんでした (%1): 適用したノッチがサーボアンプで有効なままの可能性があります。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/NotchWizard.cpp" line="328" />
-        <source>Notch wizard: restoring the previous filter values of axis %1</source>
-        <translation>ノッチフィルタのウィザード: 軸 %1 のフィルタを以前の値に戻しています</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/NotchWizard.cpp" line="334" />
-        <source>The applied notches could not be restored: the connection to the drive is lost. Check filter.notch* on the drive before the axis runs again.</source>
-        <translation>適用したノッチを元に戻せませんでした: サーボアンプとの接続が切れています。軸を再び動かす前に、サーボアンプの filter.notch* を確認してください。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/NotchWizard.cpp" line="350" />
-        <source>Cancelled by the operator.</source>
-        <translation>作業者によりキャンセルされました。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/NotchWizard.cpp" line="455" />
+        <location filename="../app/gui/NotchWizard.cpp" line="414" />
         <source>The session could not be saved: %1</source>
         <translation>セッションを保存できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizard.cpp" line="456" />
+        <location filename="../app/gui/NotchWizard.cpp" line="415" />
         <source>Stopped: %1 Session %2 saved as aborted.</source>
         <translation>停止: %1 セッション %2 を中止として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizard.cpp" line="457" />
+        <location filename="../app/gui/NotchWizard.cpp" line="416" />
         <source>Session %1 saved.</source>
         <translation>セッション %1 を保存しました。</translation>
     </message>
@@ -5337,37 +5350,37 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::VelocityLoopSavePage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="42" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="43" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="43" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="44" />
         <source>The session holds the rule and its inputs, the proposed PI and position gain, the predicted loops with their margins, the steps before and after with the prediction, what was applied with its journal.</source>
         <translation>セッションには、規則とその入力、提案した PI と位置ゲイン、予測したループとその余裕、変更前後のステップ応答と予測、適用した内容とその履歴が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="61" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="62" />
         <source>K_P = %1 N·m·s/rad, K_I = %2 N·m/rad; position gain %3 1/s.</source>
         <translation>K_P = %1 N·m·s/rad、K_I = %2 N·m/rad; 位置ゲイン %3 1/s。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="66" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="67" />
         <source>Not connected: nothing was applied.</source>
         <translation>未接続: 何も適用されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="68" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="69" />
         <source>Not applied: the proposal is kept in the session.</source>
         <translation>未適用: 提案はセッションに保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="69" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="70" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="70" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="71" />
         <source>The session was not saved (no store open).</source>
         <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
     </message>
@@ -5526,19 +5539,24 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::VelocityLoopWizard</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="76" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="77" />
         <source>Velocity and position loop</source>
         <translation>速度ループと位置ループ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="83" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="84" />
         <source>A velocity step of the set size (motor side) in the velocity loop, before and after applying; with a measured response first a torque sine stream in the closed velocity loop.</source>
         <translation>適用の前後に、速度ループで設定した大きさ (モータ側) の速度ステップ。測定した応答を使う場合は、最初に速度閉ループで正弦波トルクを注入します。</translation>
     </message>
     <message>
         <location filename="../app/gui/VelocityLoopWizard.cpp" line="142" />
-        <source>Velocity loop: the step after applying failed: %1</source>
-        <translation>速度ループ: 適用後のステップ応答に失敗しました: %1</translation>
+        <source>the velocity-loop gains</source>
+        <translation>速度ループゲイン</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="150" />
+        <source>The step after applying failed: %1</source>
+        <translation>適用後のステップ応答が失敗しました: %1</translation>
     </message>
 </context>
 <context>

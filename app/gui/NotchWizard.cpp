@@ -119,27 +119,14 @@ NotchWizard::NotchWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_
         if (!r.empty() && r.back().frf)
             setVerification(r.back().frf->frf);
     });
-    connect(m_apply, &ApplyPage::appliedChanged, this, [this](bool applied) {
-        if (applied || !m_restoring)
-            return;
-        m_restoring = false;
-        const QString why = m_pendingReason + QLatin1Char(' ') + tr("The previous filter values were restored on the drive.");
-        m_ctx.log(tr("Notch wizard: previous filter values of axis %1 restored").arg(m_axis));
-        saveSession(store::SessionStatus::Aborted, why);
-        if (m_closeAfterRestore)
-            QWizard::reject();
-    });
+    AbortGuard::Hooks hooks;
+    hooks.saved = [this] { return saved(); };
+    hooks.hasData = [this] { return hasMeasured(); };
+    hooks.saveAborted = [this](const QString& why) { saveSession(store::SessionStatus::Aborted, why); };
+    hooks.close = [this] { QWizard::reject(); };
+    m_guard = new AbortGuard(ctx, m_apply, {m_measureRun, m_verifyRun}, tr("the notch filters"), hooks, this);
     connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (m_restoring && r.kind == DriveReply::Kind::WriteParameters && !r.ok) {
-            m_restoring = false;
-            saveSession(store::SessionStatus::Aborted,
-                        m_pendingReason + QLatin1Char(' ') +
-                            tr("Restoring the previous filter values failed (%1): the applied notches may still be "
-                               "active on the drive.")
-                                .arg(r.error));
-            if (m_closeAfterRestore)
-                QWizard::reject();
-        } else if (r.id == m_traceRequest && r.ok) {
+        if (r.id == m_traceRequest && r.ok) {
             const auto vp = r.values.find("velocity.period");
             const auto div = r.values.find("trace.divider");
             if (vp != r.values.end() && div != r.values.end() && vp->second > 0.0)
@@ -313,41 +300,13 @@ void NotchWizard::onRunFailed(TestRunPage* page, bool verification)
 {
     if (verification)
         page->retryButton()->setEnabled(false);  // the notches may be restored now: a re-run verifies nothing
-    finishAbort(page->failure(), false);
-}
-
-void NotchWizard::finishAbort(const QString& why0, bool closeAfter)
-{
-    if (m_restoring)
-        return;
-    const QString reason = why0.endsWith(QLatin1Char('.')) ? why0 : why0 + QLatin1Char('.');
-    if (m_apply->applied() && m_ctx.drive().isConnected()) {
-        m_restoring = true;
-        m_pendingReason = reason;
-        m_closeAfterRestore = closeAfter;
-        m_ctx.log(tr("Notch wizard: restoring the previous filter values of axis %1").arg(m_axis));
-        m_apply->restore();
-        return;
-    }
-    QString why = reason;
-    if (m_apply->applied())
-        why += QLatin1Char(' ') + tr("The applied notches could not be restored: the connection to the drive is lost. "
-                                     "Check filter.notch* on the drive before the axis runs again.");
-    saveSession(store::SessionStatus::Aborted, why);
-    if (closeAfter)
-        QWizard::reject();
+    m_guard->runFailed(page->failure());
 }
 
 void NotchWizard::reject()
 {
-    if (m_measureRun->isRunning() || m_verifyRun->isRunning())
-        m_ctx.drive().abort();
-    if (saved() || m_restoring || (!hasMeasured() && !m_apply->applied())) {
-        if (!m_restoring)
-            QWizard::reject();
-        return;
-    }
-    finishAbort(tr("Cancelled by the operator."), true);
+    if (!m_guard->reject())
+        QWizard::reject();
 }
 
 void NotchWizard::saveCompleted()

@@ -6,6 +6,7 @@
 // → verify by a new measurement overlaid on the prediction → save as a session of kind "notch".
 // The analysis is core/tuning (Resonance.h, Notch.h, FrfComparison.h); the pages only show it.
 
+#include "app/gui/AbortGuard.h"
 #include "app/gui/WizardPages.h"
 
 #include "core/dsp/FrequencyResponse.h"
@@ -237,7 +238,6 @@ public:
 private:
     device::TestRequest frfRequest() const;
     void onRunFailed(TestRunPage* page, bool verification);
-    void finishAbort(const QString& reason, bool closeAfter);
     void saveSession(store::SessionStatus status, const QString& note);
     void readTraceRate(const QString& axis);
 
@@ -267,9 +267,7 @@ private:
     int m_slotCount = 4;
     std::map<int, dsp::NotchSpec> m_existing;
     bool m_safetyConfirmed = false;
-    bool m_restoring = false;
-    bool m_closeAfterRestore = false;
-    QString m_pendingReason;
+    AbortGuard* m_guard = nullptr;
     int m_traceRequest = 0;
     qint64 m_savedId = 0;
     bool m_savedAborted = false;

@@ -4,6 +4,7 @@
 // §2.8, §4.11–4.12.
 #include "app/gui/VelocityLoopWizard.h"
 
+#include "app/gui/AbortGuard.h"
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
@@ -133,13 +134,20 @@ VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : QWiza
     setPage(Verify, verify);
     setPage(Save, save);
     setStartId(Source);
+    AbortGuard::Hooks hooks;
+    hooks.saved = [this] { return m_sessionId > 0 || m_savedAborted; };
+    hooks.hasData = [this] { return !m_run->replies().empty() || m_run->isRunning(); };
+    hooks.saveAborted = [this](const QString& why) { saveSession(true, why); };
+    hooks.close = [this] { QWizard::reject(); };
+    m_guard = new AbortGuard(ctx, m_apply, {m_run, m_verifyRun}, tr("the velocity-loop gains"), hooks, this);
     connect(m_run, &TestRunPage::runFinished, this, [this](bool ok) {
         if (!ok)
-            saveSession(true, m_run->failure());
+            m_guard->runFailed(m_run->failure());
     });
+    // A failed step after applying restores the gains from before (nothing verified them).
     connect(m_verifyRun, &TestRunPage::runFinished, this, [this](bool ok) {
         if (!ok)
-            m_ctx.log(tr("Velocity loop: the step after applying failed: %1").arg(m_verifyRun->failure()));
+            m_guard->runFailed(tr("The step after applying failed: %1").arg(m_verifyRun->failure()));
     });
     resize(1000, 700);
 }
@@ -226,6 +234,14 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
     auto id = m_ctx.saveSession(rec);
     if (id && !aborted)
         m_sessionId = *id;
+    if (id && aborted)
+        m_savedAborted = true;
+}
+
+void VelocityLoopWizard::reject()
+{
+    if (!m_guard->reject())
+        QWizard::reject();
 }
 
 } // namespace gui

@@ -35,6 +35,7 @@ class CurvePlot;
 namespace gui {
 
 class AppContext;
+class AbortGuard;
 class ApplyPage;
 class SafetyPage;
 class TestRunPage;
@@ -187,10 +188,14 @@ public:
 
     /// Saves the session (Completed, or Aborted with the reason and whatever was measured).
     void saveSession(bool aborted, const QString& reason);
+    /// Cancel: aborts a running test, restores applied gains and records the session as aborted (AbortGuard).
+    void reject() override;
 
 private:
     AppContext& m_ctx;
     VelocityLoopData m_data;
+    AbortGuard* m_guard = nullptr;
+    bool m_savedAborted = false;
     VelocityLoopSourcePage* m_source = nullptr;
     SafetyPage* m_safety = nullptr;
     TestRunPage* m_run = nullptr;

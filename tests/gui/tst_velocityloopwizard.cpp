@@ -174,6 +174,61 @@ private slots:
         QVERIFY(!rec->journal.empty());
     }
 
+    void cancelAfterApplyRestoresTheGainsAndKeepsTheSessionAsAborted()
+    {
+        const double jm = preset("plant.inertia_motor");
+        const double kpBefore = preset("velocity.kp"), kiBefore = preset("velocity.ki");
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        ctx.drive().connectTo("sim:two-inertia");
+        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
+        VelocityLoopWizard w(ctx);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.sourcePage()->inertia()->setValue(jm);
+        w.sourcePage()->bandwidth()->setValue(18.0); // the preset's gains follow from 24 Hz
+        w.next();
+        w.safetyPage()->confirmation()->setChecked(true);
+        QVERIFY(waitUntil([&] { return w.safetyPage()->isComplete(); }, 5000));
+        w.next();
+        QVERIFY(waitUntil([&] { return w.runPage()->isComplete(); }, 60000));
+        w.next();
+        QVERIFY(waitUntil([&] { return w.designPage()->isComplete(); }, 20000));
+        const double kpNew = w.data().proposed.kpNmsPerRad;
+        QVERIFY(std::abs(kpNew - kpBefore) > 0.01 * kpBefore); // a real change to undo
+        w.next();
+        ApplyPage* apply = w.applyPage();
+        apply->confirmation()->setChecked(true);
+        QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); }, 10000));
+        apply->applyButton()->click();
+        QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
+        // Cancel instead of verifying: the gains from before come back and the session is kept as aborted.
+        w.reject();
+        QVERIFY(waitUntil([&] { return !w.isVisible(); }, 10000));
+        model::ParameterValues back;
+        const int id = ctx.drive().readParameters("A", {"velocity.kp", "velocity.ki"});
+        connect(&ctx.drive(), &DriveController::replied, this, [&](const DriveReply& r) {
+            if (r.id == id)
+                back = r.values;
+        });
+        QVERIFY(waitUntil([&] { return back.size() == 2; }, 10000));
+        QCOMPARE(back.at("velocity.kp"), kpBefore);
+        QCOMPARE(back.at("velocity.ki"), kiBefore);
+        auto sessions = ctx.database()->listSessions();
+        QVERIFY(sessions.ok());
+        QCOMPARE(sessions->size(), std::size_t(1));
+        const auto& s = sessions->front();
+        QCOMPARE(QString::fromStdString(s.kind), QString("velocity-loop"));
+        QCOMPARE(int(s.status), int(store::SessionStatus::Aborted));
+        QVERIFY2(QString::fromStdString(s.note).contains("Cancelled by the operator") &&
+                     QString::fromStdString(s.note).contains("restored"),
+                 s.note.c_str());
+        auto rec = ctx.database()->loadSession(s.id);
+        QVERIFY(rec.ok());
+        QVERIFY(rec->journal.size() >= 4); // the write and the restore of K_P and K_I
+    }
+
     void marginsOnASavedPlantResponseOffline()
     {
         // An FRF session holding the plant 1/(jωJ) (no "measurement" tag: taken as the plant). For a
