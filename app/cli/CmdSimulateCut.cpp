@@ -4,7 +4,7 @@
 #include "app/cli/CliCommand.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/MachiningJson.h"
-#include "core/sim/AxisSimulator.h"
+#include "core/sim/CutSimulation.h"
 #include "core/sim/MachineDefinition.h"
 #include "core/sim/Milling.h"
 
@@ -70,68 +70,23 @@ int runSimulateCut(const SimulateCutArgs& a)
     ms.spindleRpm = a.rpm;
     ms.axialDepthM = a.depthM;
     ms.feedPerToothM = a.feedPerToothM;
-    auto proc = sim::MillingProcess::create(ms);
-    if (!proc)
-        return reportError(cmd, makeError(proc.error().code, "--tool/--cut/--rpm/--depth-m: " + proc.error().detail));
-    auto created = sim::AxisSimulator::create(*axisDef, a.seed);
-    if (!created)
-        return reportError(cmd, created.error());
-    auto& axis = *created.value();
-    auto process = std::make_shared<sim::MillingProcess>(proc.value());
-
-    // Feed motion: accelerate to the feed rate f_z N n / 60 before the tool engages, then cut at constant feed.
-    const double feed = a.feedPerToothM * ms.teeth * a.rpm / 60.0;
-    sim::MotionProfile profile(0.0);
-    profile.move(feed * (a.durationS + 1.0), std::max(feed, 1e-9), std::max(feed / (0.5 * a.engageS + 1e-6), 1e-6));
-    // The simulator's lost motion is quasi-static (table deflection ∝ the instantaneous motor torque): it turns
-    // the current-loop noise into table accelerations of ~0.4 m/s² rms at kHz that a 280 kg table does not
-    // make and that swamp the vibration-mode force of seed 004. Off unless asked for (docs/machining.md).
-    sim::Nonlinearities nl = axis.nonlinearities();
-    nl.lostMotion = a.lostMotion;
-    axis.setNonlinearities(nl);
-    axis.reset(0.0);
-    axis.setControlMode(sim::ControlMode::Position);
-    axis.setPositionProfile(profile);
-    // Force on the table along +x = −(force on the tool); load torque = R · force (R = lead per radian).
-    const double lead = axis.parameter("plant.screw_lead");
-    const double h = axis.currentPeriod();
-    auto forces = std::make_shared<std::vector<double>>();
-    auto tools = std::make_shared<std::vector<double>>();
-    const double engage = a.engageS;
-    axis.setLoadTorque([process, forces, tools, lead, h, engage](double t) {
-        double tableForce = 0.0;
-        if (t + h > engage)
-            tableForce = -process->advanceTo(t + h - engage);
-        forces->push_back(tableForce);
-        tools->push_back(process->toolX());
-        return lead * tableForce;
-    });
-    axis.startTrace();
-    axis.run(a.durationS);
-    model::Capture cap = axis.takeTrace();
-    // The process signals at the trace instants (the hook ran once per current-loop period).
-    const auto* t = cap.channel("t_s");
-    if (!t)
-        return reportError(cmd, makeError(ErrorCode::Internal, "trace without t_s"));
-    model::Channel cf{"cutting_force_N", {}}, tv{"tool_x_m", {}};
-    for (double ti : t->data) {
-        const auto k = static_cast<std::size_t>(std::llround(ti / h));
-        cf.data.push_back(k < forces->size() ? (*forces)[k] : 0.0);
-        tv.data.push_back(k < tools->size() ? (*tools)[k] : 0.0);
-    }
-    cap.channels.push_back(std::move(cf));
-    cap.channels.push_back(std::move(tv));
+    sim::CutSimulationOptions opt;
+    opt.milling = ms;
+    opt.durationS = a.durationS;
+    opt.engageS = a.engageS;
+    opt.lostMotion = a.lostMotion;
+    opt.seed = a.seed;
+    auto simulated = sim::simulateCut(*axisDef, opt);
+    if (!simulated)
+        return reportError(cmd, makeError(simulated.error().code, "--tool/--cut/--rpm/--depth-m: " + simulated.error().detail));
+    model::Capture cap = std::move(simulated).value();
     cap.metadata["machine"] = def->name;
     cap.metadata["connection"] = "sim:" + def->name;
-    cap.metadata["test"] = "simulate-cut";
     cap.metadata["spindle_rpm"] = num(a.rpm);
     cap.metadata["axial_depth_m"] = num(a.depthM);
     cap.metadata["feed_per_tooth_m"] = num(a.feedPerToothM);
-    cap.metadata["teeth"] = std::to_string(ms.teeth);
     cap.metadata["tooth_frequency_Hz"] = num(a.rpm * ms.teeth / 60.0);
     cap.metadata["engage_s"] = num(a.engageS);
-    cap.metadata["lost_motion"] = a.lostMotion ? "on" : "off";
-    cap.metadata["cutting_force_sign"] = "force of the process on the table along +axis";
     if (auto st = io::writeCaptureCsvFile(a.out, cap); !st)
         return reportError(cmd, st.error());
     return 0;

@@ -6,10 +6,8 @@
 #include "app/gui/MachiningWizard.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageJson.h"
-#include "core/sim/AxisSimulator.h"
+#include "core/sim/CutSimulation.h"
 #include "core/sim/MachineDefinition.h"
-#include "core/sim/Milling.h"
-#include "core/sim/MotionProfile.h"
 #include "widgets/TimeTracePlot.h"
 
 #include <QFileDialog>
@@ -95,57 +93,21 @@ Result<model::Capture> simulateVmcCut(const machining::ToolModes& tool, const Ma
     ms.spindleRpm = in.rpm;
     ms.axialDepthM = in.depthM;
     ms.feedPerToothM = 0.1e-3;
-    auto proc = sim::MillingProcess::create(ms);
-    if (!proc)
-        return proc.error();
-    auto created = sim::AxisSimulator::create(*axisDef, 3);
-    if (!created)
-        return created.error();
-    auto& axis = *created.value();
-    auto process = std::make_shared<sim::MillingProcess>(proc.value());
-    const double engage = 0.2;
-    const double feed = ms.feedPerToothM * ms.teeth * in.rpm / 60.0;
-    sim::MotionProfile profile(0.0);
-    profile.move(feed * (durationS + 1.0), std::max(feed, 1e-9), std::max(feed / (0.5 * engage + 1e-6), 1e-6));
-    sim::Nonlinearities nl = axis.nonlinearities();
-    nl.lostMotion = false; // as simulate-cut: the quasi-static lost motion swamps the vibration-mode force
-    axis.setNonlinearities(nl);
-    axis.reset(0.0);
-    axis.setControlMode(sim::ControlMode::Position);
-    axis.setPositionProfile(profile);
-    const double lead = axis.parameter("plant.screw_lead");
-    const double h = axis.currentPeriod();
-    auto forces = std::make_shared<std::vector<double>>();
-    auto tools = std::make_shared<std::vector<double>>();
-    axis.setLoadTorque([process, forces, tools, lead, h, engage](double t) {
-        double tableForce = 0.0;
-        if (t + h > engage)
-            tableForce = -process->advanceTo(t + h - engage);
-        forces->push_back(tableForce);
-        tools->push_back(process->toolX());
-        return lead * tableForce;
-    });
-    axis.startTrace();
-    axis.run(durationS);
-    model::Capture cap = axis.takeTrace();
-    const auto* t = cap.channel("t_s");
-    if (!t)
-        return makeError(ErrorCode::Internal, "trace without t_s");
-    model::Channel cf{"cutting_force_N", {}}, tv{"tool_x_m", {}};
-    for (double ti : t->data) {
-        const auto k = static_cast<std::size_t>(std::llround(ti / h));
-        cf.data.push_back(k < forces->size() ? (*forces)[k] : 0.0);
-        tv.data.push_back(k < tools->size() ? (*tools)[k] : 0.0);
-    }
-    cap.channels.push_back(std::move(cf));
-    cap.channels.push_back(std::move(tv));
+    sim::CutSimulationOptions opt;
+    opt.milling = ms;
+    opt.durationS = durationS;
+    opt.engageS = 0.2;
+    opt.lostMotion = false;  // as simulate-cut: the quasi-static lost motion swamps the vibration-mode force
+    opt.seed = 3;
+    auto simulated = sim::simulateCut(*axisDef, opt);
+    if (!simulated)
+        return simulated.error();
+    model::Capture cap = std::move(simulated).value();
     cap.metadata["machine"] = "vmc";
     cap.metadata["axis"] = "X";
-    cap.metadata["test"] = "simulate-cut";
     cap.metadata["spindle_rpm"] = num(in.rpm);
     cap.metadata["axial_depth_m"] = num(in.depthM);
-    cap.metadata["teeth"] = std::to_string(ms.teeth);
-    cap.metadata["engage_s"] = num(engage);
+    cap.metadata["engage_s"] = num(opt.engageS);
     return cap;
 }
 
