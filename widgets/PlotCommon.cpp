@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/PlotCommon.h"
 
+#include <QEvent>
 #include <QLocale>
 #include <QVector>
 
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace axistune {
@@ -51,6 +53,48 @@ protected:
 private:
     bool m_fine = false;
 };
+
+/// Keeps the legend's column count to what the plot's width holds (at most the count asked for), so that
+/// entries wrap onto more rows instead of being cut at narrow widths.
+class LegendFitter : public QObject {
+public:
+    LegendFitter(QCustomPlot& plot, int maxColumns) : QObject(&plot), m_plot(plot), m_max(std::max(1, maxColumns))
+    {
+        plot.installEventFilter(this);
+    }
+    void fit()
+    {
+        QCPLegend* legend = m_plot.legend;
+        const int n = legend->itemCount();
+        if (n == 0)
+            return;
+        int widest = 0;
+        for (int i = 0; i < n; ++i)
+            if (QCPAbstractLegendItem* item = legend->item(i))
+                widest = std::max(widest, item->minimumOuterSizeHint().width());
+        const int available = m_plot.width() - 24;  // the holder's margins and some air
+        const int fits = widest > 0 ? (available + legend->columnSpacing()) / (widest + legend->columnSpacing()) : m_max;
+        const int columns = std::clamp(fits, 1, m_max);
+        if (columns != legend->wrap()) {
+            legend->setWrap(columns);
+            legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);  // re-flow the entries
+        }
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched == &m_plot && event->type() == QEvent::Resize)
+            fit();
+        return false;
+    }
+
+private:
+    QCustomPlot& m_plot;
+    int m_max;
+};
+
+constexpr const char* kLegendFitter = "axistuneLegendFitter";
 
 }  // namespace
 
@@ -108,6 +152,7 @@ QCPLegend* placeLegendBelow(QCustomPlot& plot, int columns)
     plot.plotLayout()->setRowStretchFactor(plot.plotLayout()->rowCount() - 1, 0.001);
     plot.plotLayout()->simplify();
     plot.setProperty(kLegendHolder, QVariant::fromValue<QObject*>(row));
+    plot.setProperty(kLegendFitter, QVariant::fromValue<QObject*>(new LegendFitter(plot, columns)));
     updateLegendVisibility(plot);
     return legend;
 }
@@ -117,6 +162,8 @@ void updateLegendVisibility(QCustomPlot& plot)
     QCPLegend* legend = plot.legend;
     const bool wanted = legend->itemCount() > 0;
     legend->setVisible(wanted);
+    if (auto* fitter = dynamic_cast<LegendFitter*>(plot.property(kLegendFitter).value<QObject*>()))
+        fitter->fit();
     // An empty legend (a grid without columns) reports a maximum width of zero, which squeezes the
     // whole plot column: its row leaves the layout while the legend is empty.
     auto* holder = qobject_cast<QCPLayoutGrid*>(plot.property(kLegendHolder).value<QObject*>());
