@@ -174,6 +174,8 @@ TimeTracePlot::TimeTracePlot(QWidget* parent)
     m_plot->plotLayout()->simplify();
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     connect(m_plot, &QCustomPlot::mousePress, this, &TimeTracePlot::onPlotMousePress);
+    connect(m_plot, &QCustomPlot::mouseMove, this, &TimeTracePlot::onPlotMouseMove);
+    connect(m_plot, &QCustomPlot::mouseRelease, this, &TimeTracePlot::onPlotMouseRelease);
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent* event) {
         if (event->button() == Qt::LeftButton)
             rescale();
@@ -530,12 +532,24 @@ void TimeTracePlot::updateReadout()
 
 void TimeTracePlot::onPlotMousePress(QMouseEvent* event)
 {
-    if (event->button() != Qt::RightButton)
-        return;
     QCPAxisRect* rect = m_plot->axisRectAt(event->position());
     if (!rect)
         return;
-    const double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(event->position().x());
+    QCPAxis* time = rect->axis(QCPAxis::atBottom);
+    if (event->button() == Qt::LeftButton && m_cursorsShown) {
+        // Grab a cursor within 6 px: drag it instead of panning.
+        constexpr double kGrabPx = 6.0;
+        for (int c = 0; c < 2; ++c) {
+            if (std::abs(time->coordToPixel(m_cursorT[c]) - event->position().x()) <= kGrabPx) {
+                m_dragCursor = c;
+                m_plot->setInteraction(QCP::iRangeDrag, false);
+                return;
+            }
+        }
+    }
+    if (event->button() != Qt::RightButton)
+        return;
+    const double t = time->pixelToCoord(event->position().x());
     if (!m_cursorsShown) {
         const auto [lo, hi] = visibleRange();
         setCursors(t, std::min(hi, t + 0.1 * (hi - lo)));
@@ -546,6 +560,27 @@ void TimeTracePlot::onPlotMousePress(QMouseEvent* event)
         setCursors(t, m_cursorT[1]);
     else
         setCursors(m_cursorT[0], t);
+}
+
+void TimeTracePlot::onPlotMouseMove(QMouseEvent* event)
+{
+    if (m_dragCursor < 0 || !(event->buttons() & Qt::LeftButton) || m_strips.empty())
+        return;
+    QCPAxisRect* rect = m_plot->axisRectAt(event->position());
+    QCPAxis* time = rect ? rect->axis(QCPAxis::atBottom) : m_plot->axisRect(0)->axis(QCPAxis::atBottom);
+    const double t = time->pixelToCoord(event->position().x());
+    if (m_dragCursor == 0)
+        setCursors(t, m_cursorT[1]);
+    else
+        setCursors(m_cursorT[0], t);
+}
+
+void TimeTracePlot::onPlotMouseRelease(QMouseEvent*)
+{
+    if (m_dragCursor < 0)
+        return;
+    m_dragCursor = -1;
+    m_plot->setInteraction(QCP::iRangeDrag, true);
 }
 
 bool TimeTracePlot::exportVisibleCsv(const QString& path) const

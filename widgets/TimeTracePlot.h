@@ -5,7 +5,8 @@
 // strip per unit (y label with the unit taken from the channel name suffix: _rad_s -> rad/s,
 // _Nm -> N·m, ...); all strips share the time axis [s]. Wheel zooms and drag pans in time only
 // (setZoomY(true) also in y); a double click fits all. Two vertical cursors (a right click moves the
-// nearer one) with a readout of Δt and the channel values at the cursors below the plot.
+// nearer one; the left button drags a cursor grabbed within a few pixels) with a readout of Δt and the
+// channel values at the cursors below the plot.
 
 #include "core/model/Capture.h"
 
@@ -90,6 +91,8 @@ private:
     void updateCursorItems();
     void updateReadout();
     void onPlotMousePress(QMouseEvent* event);
+    void onPlotMouseMove(QMouseEvent* event);
+    void onPlotMouseRelease(QMouseEvent* event);
     void syncTimeAxes(double lower, double upper);
     double traceTime(const Trace& t, std::size_t i) const;
 
@@ -101,6 +104,7 @@ private:
     std::vector<Strip> m_strips;
     double m_cursorT[2];
     bool m_cursorsShown = false;
+    int m_dragCursor = -1;  ///< the cursor being dragged with the left button, −1: none
     bool m_zoomY = false;
     bool m_syncing = false;
     mutable QString m_lastError;

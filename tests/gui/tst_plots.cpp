@@ -8,7 +8,9 @@
 #include "widgets/PolarPlot.h"
 #include "widgets/TimeTracePlot.h"
 
+#include <QApplication>
 #include <QFile>
+#include <QMouseEvent>
 #include <QImage>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -16,6 +18,8 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+
+#include <qcustomplot.h>
 
 using namespace axistune;
 using widgets::BodePlot;
@@ -239,6 +243,45 @@ private slots:
         const QString readout = plot.cursorReadout();
         QVERIFY2(readout.contains(QString::fromUtf8("Δt = 0.00995 s")), qPrintable(readout));
         QVERIFY(std::isnan(plot.cursorValue(0, "no_such_channel")));
+    }
+
+    void cursorIsDraggedWithTheLeftButton()
+    {
+        auto c = std::make_shared<model::Capture>();
+        c->channels = {{"t_s", {0.0, 0.5, 1.0, 1.5}}, {"pos_m", {0.0, 1.0, 4.0, 9.0}}};
+        widgets::TimeTracePlot plot;
+        plot.resize(800, 400);
+        plot.setCapture(c);
+        plot.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plot));
+        plot.setCursors(0.5, 1.0);
+        auto* cp = plot.findChild<QCustomPlot*>();
+        QVERIFY(cp);
+        cp->replot();
+        QCPAxis* time = cp->axisRect(0)->axis(QCPAxis::atBottom);
+        const QCPRange before = time->range();
+        const double y = cp->axisRect(0)->center().y();
+        auto send = [&](QEvent::Type type, double x, Qt::MouseButton button, Qt::MouseButtons buttons) {
+            QMouseEvent e(type, QPointF(x, y), cp->mapToGlobal(QPointF(x, y)), button, buttons, Qt::NoModifier);
+            QApplication::sendEvent(cp, &e);
+        };
+        // Grabbed 3 px beside cursor 1, dragged to where t = 0.75 is drawn.
+        const double x0 = time->coordToPixel(0.5) + 3.0, x1 = time->coordToPixel(0.75);
+        send(QEvent::MouseButtonPress, x0, Qt::LeftButton, Qt::LeftButton);
+        send(QEvent::MouseMove, x1, Qt::NoButton, Qt::LeftButton);
+        send(QEvent::MouseButtonRelease, x1, Qt::LeftButton, Qt::NoButton);
+        const double pixel = (before.upper - before.lower) / cp->axisRect(0)->width();
+        QVERIFY2(std::abs(plot.cursors().first - 0.75) <= pixel, qPrintable(QString::number(plot.cursors().first)));
+        QCOMPARE(plot.cursors().second, 1.0);
+        QCOMPARE(time->range().lower, before.lower);  // the drag moved the cursor, not the view
+        QCOMPARE(time->range().upper, before.upper);
+        // Away from the cursors the left button pans as before.
+        const double xa = time->coordToPixel(1.3), xb = xa - 100.0;
+        send(QEvent::MouseButtonPress, xa, Qt::LeftButton, Qt::LeftButton);
+        send(QEvent::MouseMove, xb, Qt::NoButton, Qt::LeftButton);
+        send(QEvent::MouseButtonRelease, xb, Qt::LeftButton, Qt::NoButton);
+        QVERIFY(time->range().lower > before.lower);
+        QCOMPARE(plot.cursors().second, 1.0);
     }
 
     void traceTimeChannelAndOverlays()
