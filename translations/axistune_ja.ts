@@ -547,17 +547,17 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="164" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="126" />
         <source>%1: no stage.json given and the capture names no simulated machine/axis (metadata 'machine=' and 'axis=')</source>
         <translation>%1: stage.json の指定がなく、計測データにもシミュレーション機と軸の記載がありません (メタデータ 'machine=' と 'axis=')</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="170" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="132" />
         <source>axis parameters of %1 %2</source>
         <translation>%1 %2 の軸パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="187" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="149" />
         <source>%1: needs the columns t_s, current_A (or torque_Nm), motor_vel_rad_s, motor_pos_m, table_pos_m</source>
         <translation>%1: 列 t_s、current_A (または torque_Nm)、motor_vel_rad_s、motor_pos_m、table_pos_m が必要です</translation>
     </message>
@@ -912,7 +912,7 @@
         <translation>電流ループ…</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="30" />
+        <location filename="../app/gui/FrfWizard.cpp" line="32" />
         <source>Frequency response…</source>
         <translation>周波数応答…</translation>
     </message>
@@ -2018,11 +2018,16 @@ No measured current step: the drive offers no current-step test.</source>
     </message>
     <message>
         <location filename="../app/gui/FrfWizardPages.cpp" line="494" />
+        <source>Show the saved session as a document (its Bode plot stays open after Finish)</source>
+        <translation>保存したセッションをドキュメントとして表示する（完了後もボード線図が開いたままになります）</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="499" />
         <source>Save and open in the notch wizard</source>
         <translation>保存してノッチフィルタのウィザードで開く</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="496" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="501" />
         <source>Stores the session, then proposes notch filters for the resonances of this measurement.</source>
         <translation>セッションを保存し、この測定の共振に対するノッチフィルタを提案します。</translation>
     </message>
@@ -2030,24 +2035,29 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::FrfWizard</name>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="37" />
+        <location filename="../app/gui/FrfWizard.cpp" line="39" />
         <source>Frequency response</source>
         <translation>周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="89" />
+        <location filename="../app/gui/FrfWizard.cpp" line="91" />
         <source>The drive returned no frequency response.</source>
         <translation>サーボアンプから周波数応答が返されませんでした。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/FrfWizard.cpp" line="101" />
+        <location filename="../app/gui/FrfWizard.cpp" line="103" />
         <source>Finish stores: the settings (axis %1, %2, %3–%4 Hz, %5 points, %6 % of rated torque), the measured frequency response (%7 points) and the %n resonance(s) found.</source>
         <translation>
             <numerusform>完了で保存する内容: 設定 (軸 %1、%2、%3–%4 Hz、%5 点、定格トルクの %6 %)、測定した周波数応答 (%7 点)、見つかった %n 個の共振。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="215" />
+        <location filename="../app/gui/FrfWizard.cpp" line="196" />
+        <source>Session %1 (%2)</source>
+        <translation>セッション %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizard.cpp" line="223" />
         <source>The wizard was closed during the run.</source>
         <translation>実行中にウィザードが閉じられました。</translation>
     </message>
@@ -2755,148 +2765,148 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::MachiningAnalysisPage</name>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="245" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="207" />
         <source>Analysis of a cut</source>
         <translation>切削の解析</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="246" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="208" />
         <source>Load a captured cut or simulate this cut on the vmc X axis: the cutting force estimated by the observer and the chatter intervals found by the correlation detector.</source>
         <translation>計測した切削を読み込むか、vmc の X 軸でこの切削をシミュレーションします: 切削力オブザーバで推定した切削力と、相関検出で見つかったびびり振動の区間。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="248" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="210" />
         <source>Load capture CSV…</source>
         <translation>計測データ CSV を読み込む…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="250" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="212" />
         <source>Simulate this cut (vmc X)</source>
         <translation>この切削をシミュレーション (vmc X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="257" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="219" />
         <source>empty: the axis parameters of the simulated machine named in the capture</source>
         <translation>空欄: 計測データに記載のシミュレーション機の軸パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="258" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="220" />
         <source>stage.json…</source>
         <translation>stage.json…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="228" />
         <source>Start [s]</source>
         <translation>開始 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="228" />
         <source>End [s]</source>
         <translation>終了 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="228" />
         <source>Frequency [Hz]</source>
         <translation>周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="228" />
         <source>Score</source>
         <translation>スコア</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="277" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="239" />
         <source>duration [s]</source>
         <translation>時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="281" />
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="306" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="243" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="268" />
         <source>Stage</source>
         <translation>ステージ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="299" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="261" />
         <source>Captured cut</source>
         <translation>計測した切削</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="299" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="261" />
         <source>Capture CSV (*.csv);;All files (*)</source>
         <translation>計測データ CSV (*.csv);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="306" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="268" />
         <source>Stage JSON (*.json);;All files (*)</source>
         <translation>ステージ JSON (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="329" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="291" />
         <source>Working…</source>
         <translation>処理中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="356" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="318" />
         <source>The tool or cut data are not valid.</source>
         <translation>工具または切削のデータが正しくありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="357" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="319" />
         <source>duration: a number of seconds in (0.3, 10]</source>
         <translation>時間: (0.3, 10] の秒数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="361" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="323" />
         <source>simulated cut on vmc X, %1 min⁻¹, %2 mm</source>
         <translation>vmc X でのシミュレーション切削、%1 min⁻¹、%2 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="383" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="345" />
         <source>Not analysed: %1</source>
         <translation>未解析: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="389" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="351" />
         <source>cutting force (in the capture)</source>
         <translation>切削力 (計測データ内)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="390" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="352" />
         <source>cutting force (observer)</source>
         <translation>切削力 (切削力オブザーバ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="394" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="356" />
         <source>tool vibration x</source>
         <translation>工具振動 x</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="412" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="374" />
         <source>chatter detected</source>
         <translation>びびり振動検出</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="412" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="374" />
         <source>flag</source>
         <translation>フラグ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="416" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="378" />
         <source>%1 (stage: %2). </source>
         <translation>%1 (ステージ: %2)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="418" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="380" />
         <source>No chatter detection: the stage has no coupling stiffness.</source>
         <translation>びびり振動検出なし: ステージに結合剛性がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="420" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="382" />
         <source>No chatter detected (vibration mode %1 Hz, %2 % of the valid windows flagged).</source>
         <translation>びびり振動は検出されませんでした (振動モード %1 Hz、有効な窓の %2 % でフラグ)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="423" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="385" />
         <source>CHATTER: %n interval(s) detected (vibration mode %1 Hz).</source>
         <translation>
             <numerusform>びびり振動: %n 区間を検出 (振動モード %1 Hz)。</numerusform>
@@ -5681,42 +5691,42 @@ No measured current step: the drive offers no current-step test.</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="307" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="309" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="307" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="309" />
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="510" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="512" />
         <source>t1 = %1 s   t2 = %2 s   Δt = %3 s</source>
         <translation>t1 = %1 s   t2 = %2 s   Δt = %3 s</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="513" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="515" />
         <source>   1/Δt = %1 Hz</source>
         <translation>   1/Δt = %1 Hz</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="519" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="521" />
         <source>%1: %2%5 | %3%5 | Δ %4%5</source>
         <translation>%1: %2%5 | %3%5 | Δ %4%5</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="566" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="601" />
         <source>%1: the series have different time bases; export them one by one</source>
         <translation>%1: 系列ごとに時間軸が異なります。1 つずつ書き出ししてください</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="572" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="607" />
         <source>%1: nothing to export: the plot is empty</source>
         <translation>%1: 書き出しするものがありません (プロットが空です)</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="601" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="636" />
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: ファイルを書き込めません (%2)</translation>
     </message>

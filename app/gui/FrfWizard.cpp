@@ -6,9 +6,11 @@
 
 #include "app/gui/AppContext.h"
 #include "app/gui/NotchWizard.h"
+#include "app/gui/SessionReviewView.h"
 #include "app/gui/WizardRegistry.h"
 
 #include "core/device/FrfTest.h"
+#include "core/store/Database.h"
 #include "core/store/FrfCapture.h"
 
 #include <QAbstractButton>
@@ -186,8 +188,14 @@ void FrfWizard::saveAborted(const QString& reason)
 
 void FrfWizard::accept()
 {
-    if (currentId() == SaveId)
+    if (currentId() == SaveId) {
         saveCompleted();
+        if (m_save->openDocumentBox()->isChecked() && m_sessionId > 0 && m_ctx.database()) {
+            if (auto rec = m_ctx.database()->loadSession(m_sessionId))
+                m_ctx.showDocument(new SessionView(std::move(rec).value()),
+                                   tr("Session %1 (%2)").arg(m_sessionId).arg(QStringLiteral("frf")));
+        }
+    }
     QWizard::accept();
 }
 

@@ -29,6 +29,7 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -154,11 +155,14 @@ public:
     QLineEdit* note() const { return m_note; }
     QLabel* status() const { return m_status; }
     QPushButton* openNotchButton() const { return m_openNotch; }
+    /// Checked (default): Finish also opens the saved session as a document of the main window.
+    QCheckBox* openDocumentBox() const { return m_openDocument; }
     void showSaved(const QString& text);
 
 private:
     QLineEdit* m_note = nullptr;
     QPushButton* m_openNotch = nullptr;
+    QCheckBox* m_openDocument = nullptr;
     QLabel* m_status = nullptr;
 };
 

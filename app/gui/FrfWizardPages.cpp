@@ -491,6 +491,11 @@ FrfSavePage::FrfSavePage(QWidget* parent) : QWizardPage(parent)
     m_status->setObjectName("frfSaveStatus");
     m_status->setWordWrap(true);
     lay->addWidget(m_status);
+    m_openDocument = new QCheckBox(tr("Show the saved session as a document (its Bode plot stays open after Finish)"),
+                                   this);
+    m_openDocument->setObjectName("frfOpenDocument");
+    m_openDocument->setChecked(true);
+    lay->addWidget(m_openDocument);
     m_openNotch = new QPushButton(tr("Save and open in the notch wizard"), this);
     m_openNotch->setObjectName("frfOpenNotch");
     m_openNotch->setToolTip(tr("Stores the session, then proposes notch filters for the resonances of this "

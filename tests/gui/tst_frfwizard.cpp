@@ -11,6 +11,7 @@
 // list, not from the code under test.
 #include "app/gui/AppContext.h"
 #include "app/gui/FrfWizard.h"
+#include "app/gui/SessionReviewView.h"
 #include "app/gui/NotchWizard.h"
 #include "app/gui/WizardRegistry.h"
 
@@ -32,6 +33,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QSignalSpy>
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
@@ -167,8 +169,16 @@ void runCompleteWizard(gui::AppContext& ctx, const Band& band, bool screenshots)
     QCOMPARE(w.currentId(), int(FrfWizard::SaveId));
     if (screenshots)
         maybeScreenshot(&w, "frf-05-save");
+    QVERIFY(w.savePage()->openDocumentBox()->isChecked());
+    QSignalSpy documents(&ctx, &gui::AppContext::documentRequested);
     w.button(QWizard::FinishButton)->click();
     QVERIFY(w.savedSessionId() > 0);
+    // Finish leaves the measurement open as a document: the saved session's view.
+    QCOMPARE(documents.count(), 1);
+    std::unique_ptr<QWidget> doc(documents.front().front().value<QWidget*>());
+    auto* view = qobject_cast<gui::SessionView*>(doc.get());
+    QVERIFY(view);
+    QCOMPARE(view->record().info.id, w.savedSessionId());
 
     auto loaded = ctx.database()->loadSession(w.savedSessionId());
     QVERIFY(loaded.ok());
