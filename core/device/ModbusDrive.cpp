@@ -121,6 +121,14 @@ Result<std::unique_ptr<ModbusDrive>> ModbusDrive::open(const ModbusUri& uri, Reg
         return st.error();
     if (auto st = d->loadAxes(); !st)
         return st.error();
+    // Continue the drive's command tokens: a new client starting again at 1 would repeat the token of
+    // an earlier client's last command, and the drive would answer it without executing it.
+    std::uint16_t echo = 0;
+    if (auto st = d->readRegs(d->m_map.unitIdBase, d->m_map.field("status.command_token_echo").address, 1, &echo,
+                              "reading the last command token");
+        !st)
+        return st.error();
+    d->m_token = echo;
     return d;
 }
 

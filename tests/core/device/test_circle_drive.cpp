@@ -282,3 +282,24 @@ TEST(CircleDrive, CircleOverModbusIsTheEmbeddedCircle)
     ASSERT_TRUE(s.ok());
     EXPECT_EQ(s->state, TestState::Aborted) << s->detail;
 }
+
+// A new client continues the drive's command tokens: its first start_test is executed, not taken for
+// a repeat of the previous client's last command (which had the same token before the fix).
+TEST(CircleDrive, ASecondClientsFirstTestIsExecuted)
+{
+    device::SimDriveServerOptions so;
+    so.preset = "vmc";
+    devtest::ServerThread srv(so);
+    for (double cy : {-0.1, 0.1}) {
+        auto client = connectAny({srv.uri(), 1});
+        ASSERT_TRUE(client.ok()) << client.error().detail;
+        auto trace = runToEnd(**client, circle("X", "Y", 0.0, cy));
+        auto bb = sim::ballBarFromCircleTrace(trace);
+        ASSERT_TRUE(bb.ok()) << bb.error().detail;
+        EXPECT_NEAR(bb->centerYM, cy, 1e-15);
+        const auto* y = trace.channel("Y.position_cmd_m");
+        ASSERT_TRUE(y && !y->data.empty());
+        // The path ends at 45° − 90° + 90° + 360° + 90° = 135° (lead-in, data arc, lead-out).
+        EXPECT_NEAR(y->data.back(), cy + 0.05 * std::sin(0.75 * std::numbers::pi), 1e-9);
+    }
+}
