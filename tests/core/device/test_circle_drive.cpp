@@ -303,3 +303,27 @@ TEST(CircleDrive, ASecondClientsFirstTestIsExecuted)
         EXPECT_NEAR(y->data.back(), cy + 0.05 * std::sin(0.75 * std::numbers::pi), 1e-9);
     }
 }
+
+// The server watches a running circle: with a following-error limit of 1 µm the first check, 50 ms
+// into the move to the start point (accelerating at 0.5 m/s²: about 19 µm of following error),
+// trips; the test faults with the server's message and leaves no trace.
+TEST(CircleDrive, ServerTripsARunningCircle)
+{
+    device::SimDriveServerOptions so;
+    so.preset = "vmc";
+    so.safety.followingErrorLimit = 1e-6;
+    devtest::ServerThread srv(so);
+    auto client = connectAny({srv.uri(), 1});
+    ASSERT_TRUE(client.ok()) << client.error().detail;
+    ASSERT_TRUE((*client)->startTest(circle("X", "Y", 0.0, 0.1)).ok());
+    Result<TestStatus> s = makeError(ErrorCode::Internal, "not polled");
+    for (int i = 0; i < 100000; ++i) {
+        s = (*client)->pollTest();
+        if (!s || s->state != TestState::Running)
+            break;
+    }
+    ASSERT_TRUE(s.ok()) << s.error().detail;
+    EXPECT_EQ(s->state, TestState::Faulted);
+    EXPECT_NE(s->detail.find("following error"), std::string::npos) << s->detail;
+    EXPECT_FALSE((*client)->readTrace().ok());
+}
