@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// axistune-cli circle: a ball-bar circle test on a simulated machine (core/sim/CircleTest.h), written as a
-// ball-bar CSV (docs/ballbar.md "Simulated circle tests"); also reachable as `capture --test circle`.
+// axistune-cli circle: a ball-bar circle test, written as a ball-bar CSV (docs/ballbar.md "Simulated
+// circle tests"); also reachable as `capture --test circle`. On sim:PRESET it runs core/sim/CircleTest
+// on the preset; on modbus://HOST:PORT it is a Circle test of the drive (docs/ballbar.md "Circle tests
+// through the drive"), the trace of both axes evaluated here.
 #include "app/cli/CliCommand.h"
 #include "app/cli/CircleCommand.h"
+#include "core/device/CircleDriveTest.h"
+#include "core/device/Drive.h"
 #include "core/io/BallBarCsv.h"
 #include "core/io/CaptureCsv.h"
 #include "core/model/Parameter.h"
@@ -18,30 +22,132 @@ namespace {
 
 
 
-/// "X:lostmotion.mode=2" (or "lostmotion.mode=2" for both plane axes), range-checked against the metadata.
-Status applySet(sim::MachineDefinition& m, const std::string& item, const std::string& plane)
+sim::CircleTestOptions circleOptions(const CircleCliOptions& o)
+{
+    sim::CircleTestOptions c;
+    c.axisX = o.plane.substr(0, 1);
+    c.axisY = o.plane.substr(1, 1);
+    c.radiusM = o.radiusMm * 1e-3;
+    c.feedMPerS = o.feedMmMin / 60000.0;
+    c.direction = o.direction == "cw" ? io::CircleDirection::Cw : io::CircleDirection::Ccw;
+    c.centerXM = o.centerXMm * 1e-3;
+    c.centerYM = o.centerYMm * 1e-3;
+    c.squarenessPerM = o.squarenessUmPerM * 1e-6;
+    c.scaleX = o.scaleXPpm * 1e-6;
+    c.scaleY = o.scaleYPpm * 1e-6;
+    c.leadArcDeg = o.leadArcDeg;
+    c.dataStartDeg = o.startDeg;
+    c.seed = o.seed;
+    return c;
+}
+
+struct SetItem {
+    std::vector<std::string> axes;
+    std::string key;
+    double value = 0.0;
+};
+
+/// "X:lostmotion.mode=2" (or "lostmotion.mode=2" for both plane axes).
+Result<SetItem> parseSet(const std::string& item, const std::string& plane)
 {
     const auto eq = item.find('=');
     if (eq == std::string::npos)
         return makeError(ErrorCode::BadInput, "--set '" + item + "': expected AXIS:KEY=VALUE");
-    std::string key = item.substr(0, eq);
-    std::vector<std::string> axes;
-    if (const auto colon = key.find(':'); colon != std::string::npos) {
-        axes.push_back(key.substr(0, colon));
-        key = key.substr(colon + 1);
+    SetItem out;
+    out.key = item.substr(0, eq);
+    if (const auto colon = out.key.find(':'); colon != std::string::npos) {
+        out.axes.push_back(out.key.substr(0, colon));
+        out.key = out.key.substr(colon + 1);
     } else {
-        axes = {plane.substr(0, 1), plane.substr(1, 1)};
+        out.axes = {plane.substr(0, 1), plane.substr(1, 1)};
     }
-    double value = 0.0;
     try {
         std::size_t used = 0;
-        value = std::stod(item.substr(eq + 1), &used);
+        out.value = std::stod(item.substr(eq + 1), &used);
         if (used != item.size() - eq - 1)
             throw std::invalid_argument("trailing");
     } catch (const std::exception&) {
         return makeError(ErrorCode::BadInput, "--set '" + item + "': value is not a number");
     }
-    for (const auto& name : axes) {
+    return out;
+}
+
+/// The circle through a drive (modbus://): --set written to the drive, one Circle test, the trace
+/// evaluated on this side. Injected geometric errors and the second servo trace are simulator-only.
+int runCircleOnDrive(const CircleCliOptions& o, const sim::CircleTestOptions& c)
+{
+    const std::string cmd = "circle";
+    if (c.squarenessPerM != 0.0 || c.scaleX != 0.0 || c.scaleY != 0.0 || !o.servoOutY.empty())
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--connect '" + o.connect +
+                                                                   "': injected geometric errors and --servo-out-y "
+                                                                   "are for sim: connections only"));
+    auto drive = device::connect({o.connect, o.seed});
+    if (!drive)
+        return reportError(cmd, drive.error());
+    for (const auto& item : o.sets) {
+        auto set = parseSet(item, o.plane);
+        if (!set)
+            return reportError(cmd, set.error());
+        for (const auto& axis : set->axes)
+            if (auto st = (*drive)->writeParameters(axis, {{set->key, set->value}}); !st)
+                return reportError(cmd, makeError(st.error().code, "--set '" + item + "': " + st.error().detail));
+    }
+    device::TestRequest r;
+    r.type = device::TestType::Circle;
+    r.axis = c.axisX;
+    r.secondAxis = c.axisY;
+    r.radiusM = c.radiusM;
+    r.feedMPerS = c.feedMPerS;
+    r.direction = c.direction;
+    r.centerXM = c.centerXM;
+    r.centerYM = c.centerYM;
+    r.dataStartDeg = c.dataStartDeg;
+    r.leadArcDeg = c.leadArcDeg;
+    r.durationS = c.dwellS;
+    if (auto st = (*drive)->startTest(r); !st)
+        return reportError(cmd, st.error());
+    for (;;) {
+        auto s = (*drive)->pollTest();
+        if (!s) {
+            (void)(*drive)->abortTest();
+            return reportError(cmd, s.error());
+        }
+        if (s->state == device::TestState::Running)
+            continue;
+        if (s->state != device::TestState::Completed)
+            return reportError(cmd, makeError(s->state == device::TestState::Faulted ? ErrorCode::Safety
+                                                                                   : ErrorCode::Aborted,
+                                              "circle test " + std::string(device::testStateName(s->state)) + ": " +
+                                                  s->detail));
+        break;
+    }
+    auto trace = (*drive)->readTrace();
+    if (!trace)
+        return reportError(cmd, trace.error());
+    auto res = sim::evaluateCircleTrace(*trace, c);
+    if (!res)
+        return reportError(cmd, res.error());
+    model::BallBarTrace bb = res.value().ballbar;
+    bb.metadata["connection"] = o.connect;
+    if (auto st = io::writeBallBarCsvFile(o.out, bb); !st)
+        return reportError(cmd, st.error());
+    if (!o.servoOutX.empty())
+        if (auto st = io::writeCaptureCsvFile(o.servoOutX, *trace); !st)
+            return reportError(cmd, st.error());
+    std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << bb.size() << ", \"dT_x_Nm\": " << res->dTxNm
+              << ", \"dT_y_Nm\": " << res->dTyNm << "}\n";
+    return 0;
+}
+
+/// "X:lostmotion.mode=2" (or "lostmotion.mode=2" for both plane axes), range-checked against the metadata.
+Status applySet(sim::MachineDefinition& m, const std::string& item, const std::string& plane)
+{
+    auto set = parseSet(item, plane);
+    if (!set)
+        return set.error();
+    const std::string& key = set->key;
+    const double value = set->value;
+    for (const auto& name : set->axes) {
         sim::AxisDefinition* axis = nullptr;
         for (auto& a : m.axes)
             if (a.name == name)
@@ -63,10 +169,15 @@ Status applySet(sim::MachineDefinition& m, const std::string& item, const std::s
 int runCircle(const CircleCliOptions& o)
 {
     const std::string cmd = "circle";
+    if (o.connect.rfind("modbus://", 0) == 0) {
+        if (o.plane.size() != 2)
+            return reportError(cmd, makeError(ErrorCode::BadInput, "--plane '" + o.plane + "': two axis letters, e.g. XY"));
+        return runCircleOnDrive(o, circleOptions(o));
+    }
     if (o.connect.rfind("sim:", 0) != 0)
         return reportError(
             cmd, makeError(ErrorCode::BadInput,
-                           "--connect '" + o.connect + "': circle tests run on simulated machines (sim:PRESET)"));
+                           "--connect '" + o.connect + "': expected sim:PRESET or modbus://HOST:PORT"));
     auto loaded = sim::loadPreset(o.connect.substr(4));
     if (!loaded)
         return reportError(cmd, makeError(ErrorCode::BadInput, loaded.error().detail));
@@ -76,20 +187,7 @@ int runCircle(const CircleCliOptions& o)
     for (const auto& s : o.sets)
         if (auto st = applySet(machine, s, o.plane); !st)
             return reportError(cmd, st.error());
-    sim::CircleTestOptions c;
-    c.axisX = o.plane.substr(0, 1);
-    c.axisY = o.plane.substr(1, 1);
-    c.radiusM = o.radiusMm * 1e-3;
-    c.feedMPerS = o.feedMmMin / 60000.0;
-    c.direction = o.direction == "cw" ? io::CircleDirection::Cw : io::CircleDirection::Ccw;
-    c.centerXM = o.centerXMm * 1e-3;
-    c.centerYM = o.centerYMm * 1e-3;
-    c.squarenessPerM = o.squarenessUmPerM * 1e-6;
-    c.scaleX = o.scaleXPpm * 1e-6;
-    c.scaleY = o.scaleYPpm * 1e-6;
-    c.leadArcDeg = o.leadArcDeg;
-    c.dataStartDeg = o.startDeg;
-    c.seed = o.seed;
+    const sim::CircleTestOptions c = circleOptions(o);
     auto ran = sim::runCircleTest(machine, c);
     if (!ran)
         return reportError(cmd, ran.error());
@@ -112,9 +210,10 @@ int runCircle(const CircleCliOptions& o)
 namespace {
 
 const CliRegistrar kRegistrar{
-    {"circle", "Ball-bar circle test on a simulated machine, written as a ball-bar CSV", [](CLI::App& sub) {
+    {"circle", "Ball-bar circle test (simulated machine or a drive), written as a ball-bar CSV", [](CLI::App& sub) {
          auto o = std::make_shared<CircleCliOptions>();
-         sub.add_option("--connect", o->connect, "sim:PRESET with two linear axes (vmc)")->capture_default_str();
+         sub.add_option("--connect", o->connect, "sim:PRESET with two linear axes (vmc), or modbus://HOST:PORT")
+             ->capture_default_str();
          sub.add_option("--plane", o->plane, "the two axes, first = x role")->capture_default_str();
          sub.add_option("--radius-mm", o->radiusMm, "circle radius [mm]")
              ->capture_default_str()

@@ -7,12 +7,13 @@
 // predicted over the measured one, with the conventional step's cut-in → apply (lostmotion.*) →
 // verify with a new circle → save (session kind "lost-motion", model kind "lost_motion").
 //
-// Circle tests: the drive seam (device::Drive) has no circle test (a circle moves two axes together),
-// so the wizard does what `axistune-cli circle` does: it runs core/sim CircleTest on the connected
-// simulated machine's preset with the drive's current parameter values of both plane axes (read
-// through the DriveController). That is possible on simulated connections only; on other machines the
-// wizard imports ball-bar files.
+// Circle tests: each circle is one TestType::Circle request through the DriveController on whatever
+// drive is connected (the embedded simulated drive, or a Modbus drive such as axistune-simdrive): the
+// drive moves both plane axes with its own parameters, and the trace of both axes becomes a ball-bar
+// trace on this side (sim::ballBarFromCircleTrace). Abort stops the running circle at once.
 
+#include "app/gui/DriveController.h"
+#include "core/device/Drive.h"
 #include "core/io/BallBarCsv.h"
 #include "core/sim/CircleTest.h"
 #include "core/tuning/BallBarDiagnostics.h"
@@ -78,8 +79,8 @@ struct LostMotionData {
     std::optional<double> circularityBeforeM, circularityAfterM, predictedCircularityM;
 };
 
-/// Runs circle tests on the simulated machine behind the drive link (see the header comment): reads
-/// the parameters of both plane axes, then runs the circles one after another off the GUI thread.
+/// Runs circle tests through the drive link (see the header comment): one Circle request after another,
+/// progress from the drive, Abort through DriveController::abort.
 class CircleRunner : public QObject {
     Q_OBJECT
 public:
@@ -87,23 +88,27 @@ public:
     /// Empty when circle tests can run on the current connection, else why not (translated).
     QString unavailableReason() const;
     void start(const QString& plane, std::vector<sim::CircleTestOptions> circles);
-    void abort() { m_abort->store(true); }
+    /// Stops the running circle at once (the drive restores both axes' parameters) and runs no further one.
+    void abort();
     bool isRunning() const { return m_running; }
     const std::vector<io::BallBarTrace>& traces() const { return m_traces; }
+    /// The drive request of a circle (dwellS becomes the request's durationS).
+    static device::TestRequest requestOf(const sim::CircleTestOptions& circle);
 
 signals:
+    /// Progress in units of 1/1000 circle.
     void progress(int done, int total, const QString& text);
     void finished(bool ok, const QString& error, bool aborted);
 
 private:
-    void onValues(const QString& axis, const model::ParameterValues& values);
-    void runAll();
+    void runNext();
+    void onCircle(const DriveReply& reply);
+    void finish(bool ok, const QString& error, bool aborted);
     AppContext& m_ctx;
     QString m_plane;
     std::vector<sim::CircleTestOptions> m_circles;
     std::vector<io::BallBarTrace> m_traces;
-    std::map<QString, model::ParameterValues> m_values;
-    std::map<int, QString> m_requests;
+    int m_currentId = 0;  ///< request id of the running circle, 0 when none
     std::shared_ptr<std::atomic<bool>> m_abort;
     bool m_running = false;
 };

@@ -4,6 +4,8 @@
 #include "app/gui/LostMotionWizard.h"
 
 #include "app/gui/AppContext.h"
+#include "app/gui/DriveController.h"
+#include "core/sim/CircleRun.h"
 #include "app/gui/WizardPages.h"
 #include "core/model/Units.h"
 #include "core/sim/MachineDefinition.h"
@@ -32,6 +34,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -41,6 +44,7 @@ namespace gui {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr int kProgressSteps = 1000;  ///< progress units per circle
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 QString um(double m, int prec = 3) { return QString::number(m * 1e6, 'f', prec); }
@@ -97,19 +101,19 @@ std::optional<double> meanStep(const io::BallBarTrace& t, int axis, const tuning
 CircleRunner::CircleRunner(AppContext& ctx, QObject* parent)
     : QObject(parent), m_ctx(ctx), m_abort(std::make_shared<std::atomic<bool>>(false))
 {
+    connect(&m_ctx.drive(), &DriveController::progress, this, [this](int id, double fraction, const QString&) {
+        if (!m_running || id != m_currentId)
+            return;
+        const int n = static_cast<int>(m_circles.size());
+        const int done = static_cast<int>(m_traces.size());
+        emit progress(done * kProgressSteps + static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * kProgressSteps)),
+                      n * kProgressSteps, tr("Circle %1 of %2").arg(done + 1).arg(n));
+    });
     connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        auto it = m_requests.find(r.id);
-        if (it == m_requests.end() || !m_running)
+        if (!m_running || r.id != m_currentId)
             return;
-        const QString axis = it->second;
-        m_requests.erase(it);
-        if (!r.ok) {
-            m_running = false;
-            m_requests.clear();
-            emit finished(false, tr("Reading the parameters of axis %1 failed: %2").arg(axis, r.error), false);
-            return;
-        }
-        onValues(axis, r.values);
+        m_currentId = 0;
+        onCircle(r);
     });
 }
 
@@ -117,11 +121,24 @@ QString CircleRunner::unavailableReason() const
 {
     if (!m_ctx.drive().isConnected())
         return tr("Not connected: circle tests need a connection to a machine.");
-    if (!sim::loadPreset(m_ctx.machine().toStdString()))
-        return tr("Machine %1 is not a simulated machine: the drive link has no circle test (two axes together). "
-                  "Measure with a ball bar and import the files.")
-            .arg(m_ctx.machine());
     return {};
+}
+
+device::TestRequest CircleRunner::requestOf(const sim::CircleTestOptions& o)
+{
+    device::TestRequest r;
+    r.type = device::TestType::Circle;
+    r.axis = o.axisX;
+    r.secondAxis = o.axisY;
+    r.radiusM = o.radiusM;
+    r.feedMPerS = o.feedMPerS;
+    r.direction = o.direction;
+    r.centerXM = o.centerXM;
+    r.centerYM = o.centerYM;
+    r.dataStartDeg = o.dataStartDeg;
+    r.leadArcDeg = o.leadArcDeg;
+    r.durationS = o.dwellS;
+    return r;
 }
 
 void CircleRunner::start(const QString& plane, std::vector<sim::CircleTestOptions> circles)
@@ -131,85 +148,70 @@ void CircleRunner::start(const QString& plane, std::vector<sim::CircleTestOption
     m_plane = plane;
     m_circles = std::move(circles);
     m_traces.clear();
-    m_values.clear();
-    m_requests.clear();
+    m_currentId = 0;
     m_abort->store(false);
     if (const QString why = unavailableReason(); !why.isEmpty()) {
         emit finished(false, why, false);
         return;
     }
     m_running = true;
-    emit progress(0, static_cast<int>(m_circles.size()), tr("Reading the parameters of both plane axes"));
-    for (int i = 0; i < plane.size(); ++i)
-        m_requests[m_ctx.drive().readParameters(plane.mid(i, 1))] = plane.mid(i, 1);
+    runNext();
 }
 
-void CircleRunner::onValues(const QString& axis, const model::ParameterValues& values)
+void CircleRunner::abort()
 {
-    m_values[axis] = values;
-    if (m_requests.empty())
-        runAll();
-}
-
-void CircleRunner::runAll()
-{
-    auto loaded = sim::loadPreset(m_ctx.machine().toStdString());
-    if (!loaded) {
-        m_running = false;
-        emit finished(false, qs(loaded.error().detail), false);
+    if (!m_running)
         return;
+    m_abort->store(true);
+    m_ctx.drive().abort();  // stops the running circle at once; the drive restores both axes' parameters
+    if (m_currentId == 0)
+        finish(false, {}, true);
+}
+
+void CircleRunner::runNext()
+{
+    const int n = static_cast<int>(m_circles.size());
+    const int i = static_cast<int>(m_traces.size());
+    if (m_abort->load())
+        return finish(false, {}, true);
+    if (i >= n)
+        return finish(true, {}, false);
+    emit progress(i * kProgressSteps, n * kProgressSteps, tr("Circle %1 of %2").arg(i + 1).arg(n));
+    m_currentId = m_ctx.drive().runTest(requestOf(m_circles[static_cast<std::size_t>(i)]));
+}
+
+void CircleRunner::onCircle(const DriveReply& r)
+{
+    if (!r.ok || !r.capture) {
+        const bool aborted = r.code == ErrorCode::Aborted || m_abort->load();
+        return finish(false, aborted ? QString() : tr("Circle %1 failed: %2").arg(m_traces.size() + 1).arg(r.error),
+                      aborted);
     }
-    sim::MachineDefinition machine = std::move(loaded).value();
-    // The drive's current values (gains, compensation) replace the preset's.
-    for (auto& a : machine.axes) {
-        auto it = m_values.find(qs(a.name));
-        if (it == m_values.end())
-            continue;
-        for (const auto& [k, v] : it->second)
-            if (a.values.count(k))
-                a.values[k] = v;
-    }
-    QPointer<CircleRunner> self(this);
-    auto abortFlag = m_abort;
-    auto circles = m_circles;
-    auto* watcher = new QFutureWatcher<std::pair<QString, std::vector<io::BallBarTrace>>>(this);
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
-        const auto [error, traces] = watcher->result();
-        watcher->deleteLater();
-        m_traces = traces;
-        m_running = false;
-        const bool aborted = m_abort->load();
-        if (aborted)
-            emit finished(false, tr("Aborted by the operator after %1 of %2 circles.").arg(traces.size()).arg(m_circles.size()),
-                          true);
-        else
-            emit finished(error.isEmpty(), error, false);
-    });
-    watcher->setFuture(QtConcurrent::run([self, abortFlag, circles, machine]() {
-        std::vector<io::BallBarTrace> out;
-        for (std::size_t i = 0; i < circles.size(); ++i) {
-            if (abortFlag->load())
-                break;
-            QMetaObject::invokeMethod(
-                qApp,
-                [self, i, n = circles.size()] {
-                    if (self)
-                        emit self->progress(static_cast<int>(i), static_cast<int>(n),
-                                            CircleRunner::tr("Circle %1 of %2").arg(i + 1).arg(n));
-                },
-                Qt::QueuedConnection);
-            auto r = sim::runCircleTest(machine, circles[i]);
-            if (!r)
-                return std::make_pair(qs(r.error().detail), out);
-            out.push_back(r->ballbar);
-            const bool alongX = circles[i].centerYM == 0.0 && circles[i].centerXM != 0.0;
-            out.back().source = QString("circle %1 = %2 mm")
-                                    .arg(QString::fromStdString(alongX ? circles[i].axisX : circles[i].axisY))
-                                    .arg((alongX ? circles[i].centerXM : circles[i].centerYM) * 1e3)
-                                    .toStdString();
-        }
-        return std::make_pair(QString(), out);
-    }));
+    auto evaluated = sim::ballBarFromCircleTrace(*r.capture);
+    if (!evaluated)
+        return finish(false,
+                      tr("Circle %1 could not be evaluated: %2").arg(m_traces.size() + 1).arg(qs(evaluated.error().detail)),
+                      false);
+    io::BallBarTrace bb = std::move(evaluated).value();
+    const auto& o = m_circles[m_traces.size()];
+    const bool alongX = o.centerYM == 0.0 && o.centerXM != 0.0;
+    bb.source = QString("circle %1 = %2 mm")
+                     .arg(qs(alongX ? o.axisX : o.axisY))
+                     .arg((alongX ? o.centerXM : o.centerYM) * 1e3)
+                     .toStdString();
+    m_traces.push_back(std::move(bb));
+    runNext();
+}
+
+void CircleRunner::finish(bool ok, const QString& error, bool aborted)
+{
+    m_running = false;
+    m_currentId = 0;
+    if (aborted)
+        emit finished(false, tr("Aborted by the operator after %1 of %2 circles.").arg(m_traces.size()).arg(m_circles.size()),
+                      true);
+    else
+        emit finished(ok, error, false);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -219,8 +221,8 @@ LostMotionCirclePage::LostMotionCirclePage(AppContext& ctx, LostMotionData& shar
     : QWizardPage(parent), m_ctx(ctx), m_d(shared)
 {
     setTitle(tr("Circle tests"));
-    setSubTitle(tr("Both plane axes move on circles at the table positions chosen. Abort stops after the circle "
-                   "that is running."));
+    setSubTitle(tr("Both plane axes move on circles at the table positions chosen. Abort stops the running "
+                   "circle at once; the drive restores the parameters of both axes."));
     auto* lay = new QVBoxLayout(this);
     m_label = new QLabel(this);
     m_label->setWordWrap(true);
@@ -251,7 +253,7 @@ LostMotionCirclePage::LostMotionCirclePage(AppContext& ctx, LostMotionData& shar
         m_d.traces = m_runner->traces();
         m_abort->setEnabled(false);
         m_retry->setEnabled(!ok);
-        m_bar->setValue(static_cast<int>(m_d.traces.size()));
+        m_bar->setValue(static_cast<int>(m_d.traces.size()) * kProgressSteps);
         m_label->setText(ok ? tr("Completed: %1 circles.").arg(m_d.traces.size())
                             : (aborted ? tr("Aborted: %1") : tr("Failed: %1")).arg(error));
         m_ctx.log(m_label->text());
@@ -323,7 +325,11 @@ LostMotionVerifyPage::LostMotionVerifyPage(AppContext& ctx, LostMotionData& shar
     lay->addWidget(split, 1);
     m_runner = new CircleRunner(ctx, this);
     connect(m_abort, &QPushButton::clicked, m_runner, &CircleRunner::abort);
-    connect(m_runner, &CircleRunner::progress, this, [this](int, int, const QString& text) { m_label->setText(text); });
+    connect(m_runner, &CircleRunner::progress, this, [this](int done, int total, const QString& text) {
+        m_bar->setRange(0, total);
+        m_bar->setValue(done);
+        m_label->setText(text);
+    });
     connect(m_runner, &CircleRunner::finished, this, [this](bool ok, const QString& error, bool aborted) {
         m_abort->setEnabled(false);
         m_bar->setRange(0, 1);

@@ -81,6 +81,15 @@ std::string simRegisterMapJson()
     add("command.token", 301, "u16", 1, "sequence token: a command repeated with the same token is not executed twice");
     add("heartbeat.counter", 310, "u16", 1,
         "written by the client while a test runs; the watchdog stops the test when it goes silent");
+    add("circle.second_axis", 340, "u16", 1,
+        "circle: axis index (unit id - unit_id_base) of the second plane axis; the first is the unit started");
+    add("circle.direction", 341, "u16", 1, "circle: enum circle_direction");
+    add("circle.radius", 342, "f64", 4, "circle: radius [m]");
+    add("circle.feed", 346, "f64", 4, "circle: feed along the path [m/s]");
+    add("circle.center_x", 350, "f64", 4, "circle: centre, position of the first axis [m]");
+    add("circle.center_y", 354, "f64", 4, "circle: centre, position of the second axis [m]");
+    add("circle.data_start_deg", 358, "f64", 4, "circle: angle at which the 360 deg data arc begins [deg]");
+    add("circle.lead_arc_deg", 362, "f64", 4, "circle: lead-in and lead-out arc [deg]");
     add("trace.select_offset", 400, "u32", 2, "first sample (or byte, for the text channels) of the window");
     add("trace.select_channel", 402, "u16", 1, "trace channel index, or enum trace_channel");
     add("trace.window", 410, "window", 124,
@@ -98,7 +107,8 @@ std::string simRegisterMapJson()
           {"drive_fault", 6},
           {"aborted", 7}}},
         {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}}},
-        {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}}},
+        {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}, {"circle", 5}}},
+        {"circle_direction", {{"ccw", 0}, {"cw", 1}}},
         {"frf_method", {{"multisweep", 0}, {"conventional", 1}, {"prbs", 2}}},
         {"test_flag", {{"return_to_start", 1}}},
         {"axis_kind", {{"linear", 0}, {"rotary", 1}}},

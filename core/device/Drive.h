@@ -6,6 +6,7 @@
 #include "core/dsp/FrequencyResponse.h"
 #include "core/dsp/Multisine.h"
 #include "core/dsp/SineDemodulation.h"
+#include "core/model/BallBarTrace.h"
 #include "core/model/Capture.h"
 #include "core/model/Parameter.h"
 #include "core/model/Result.h"
@@ -30,6 +31,7 @@ enum class TestType {
     Jog,   ///< position move: distance [axis units] at velocity [axis units/s], optional return
     Hold,  ///< position hold for duration [s]
     Frf,   ///< frequency response: torque injection in the closed velocity loop (FrfTest.h)
+    Circle, ///< ball-bar circle of two axes together (CircleDriveTest.h, docs/ballbar.md)
 };
 
 /// Excitation and analysis of an FRF test (docs/frequency-response-sim.md).
@@ -67,6 +69,18 @@ struct TestRequest {
     int multisinePeriods = 0;                       ///< averaged periods (three phases each); 0: from the loop's dynamics
     dsp::MultisinePhases multisinePhases = dsp::MultisinePhases::Clipping;
     std::vector<std::pair<double, double>> multisineShape;  ///< (f [Hz], relative amplitude); empty: flat
+    // Circle (CircleDriveTest.h; docs/ballbar.md "Circle tests through the drive"): `axis` is the first
+    // plane axis ("x" role), `secondAxis` the second. The drive first moves both axes to the start point
+    // (velocity [m/s] and acceleration [m/s²] of that move; 0: kCirclePositioning*), dwells durationS,
+    // then runs lead-in arc, 360° data arc and lead-out arc. The trace carries both axes (CircleRun.h).
+    std::string secondAxis;
+    double radiusM = 0.0;
+    double feedMPerS = 0.0;
+    model::CircleDirection direction = model::CircleDirection::Ccw;
+    double centerXM = 0.0;  ///< circle centre: position of the first axis [m]
+    double centerYM = 0.0;  ///< circle centre: position of the second axis [m]
+    double dataStartDeg = 45.0;  ///< angle at which the 360° data arc begins
+    double leadArcDeg = 90.0;    ///< lead-in and lead-out arcs
 };
 
 /// The result of an FRF test: the closed velocity loop T = −T_c/d (spec §3.2 eq. 3.1) with validity.

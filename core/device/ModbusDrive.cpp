@@ -121,6 +121,14 @@ Result<std::unique_ptr<ModbusDrive>> ModbusDrive::open(const ModbusUri& uri, Reg
         return st.error();
     if (auto st = d->loadAxes(); !st)
         return st.error();
+    // Continue the drive's command tokens: a new client starting again at 1 would repeat the token of
+    // an earlier client's last command, and the drive would answer it without executing it.
+    std::uint16_t echo = 0;
+    if (auto st = d->readRegs(d->m_map.unitIdBase, d->m_map.field("status.command_token_echo").address, 1, &echo,
+                              "reading the last command token");
+        !st)
+        return st.error();
+    d->m_token = echo;
     return d;
 }
 
@@ -404,6 +412,7 @@ Status ModbusDrive::startTest(const TestRequest& request)
     const char* type = request.type == TestType::Step   ? "step"
                        : request.type == TestType::Jog  ? "jog"
                        : request.type == TestType::Hold ? "hold"
+                       : request.type == TestType::Circle ? "circle"
                                                         : "frf";
     const int code = m_map.code("test_type", type);
     if (code < 0)
@@ -460,12 +469,50 @@ Status ModbusDrive::startTest(const TestRequest& request)
             writeRegs(a->unit, first.address, w.data(), static_cast<int>(w.size()), "writing the test configuration");
         !st)
         return st;
+    if (request.type == TestType::Circle) {
+        if (auto st = writeCircleBlock(request, a->unit); !st)
+            return st;
+    }
     if (auto st = command(a->unit, "start_test"); !st)
         return st;
     m_testRunning = true;
     m_testUnit = a->unit;
     m_lastHeartbeat = m_lastPoll = Clock::now();
     return Status::success();
+}
+
+Status ModbusDrive::writeCircleBlock(const TestRequest& request, int unit)
+{
+    // The circle block (docs/modbus.md "Circle test"): written after the test block, before start_test.
+    const std::string names[] = {"circle.second_axis", "circle.direction", "circle.radius",       "circle.feed",
+                                 "circle.center_x",    "circle.center_y",  "circle.data_start_deg", "circle.lead_arc_deg"};
+    int lo = 65536, hi = 0;
+    for (const auto& n : names) {
+        if (!m_map.fields.count(n))
+            return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no circle test field " + n);
+        lo = std::min(lo, m_map.field(n).address);
+        hi = std::max(hi, m_map.field(n).address + m_map.field(n).count);
+    }
+    if (hi - lo > 123)
+        return makeError(ErrorCode::Internal, "register map " + m_map.family + ": the circle block must fit one write");
+    auto second = axisInfo(request.secondAxis);
+    if (!second)
+        return makeError(second.error().code, "circle test: second plane axis: " + second.error().detail);
+    std::vector<std::uint16_t> w(static_cast<std::size_t>(hi - lo));
+    auto at = [&](const std::string& f) { return &w[static_cast<std::size_t>(m_map.field(f).address - lo)]; };
+    const WordOrder o = m_map.wordOrder;
+    *at("circle.second_axis") = static_cast<std::uint16_t>(second->unit - m_map.unitIdBase);
+    const int dir = m_map.code("circle_direction", request.direction == model::CircleDirection::Cw ? "cw" : "ccw");
+    if (dir < 0)
+        return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no enum circle_direction");
+    *at("circle.direction") = static_cast<std::uint16_t>(dir);
+    encodeF64(request.radiusM, o, at("circle.radius"));
+    encodeF64(request.feedMPerS, o, at("circle.feed"));
+    encodeF64(request.centerXM, o, at("circle.center_x"));
+    encodeF64(request.centerYM, o, at("circle.center_y"));
+    encodeF64(request.dataStartDeg, o, at("circle.data_start_deg"));
+    encodeF64(request.leadArcDeg, o, at("circle.lead_arc_deg"));
+    return writeRegs(unit, lo, w.data(), static_cast<int>(w.size()), "writing the circle configuration");
 }
 
 Status ModbusDrive::heartbeat()

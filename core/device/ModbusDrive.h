@@ -80,6 +80,8 @@ private:
     Status command(int unit, const std::string& name);
     /// The multisine fields of the test block (periods, phases, up to 4 bands); a shape is refused.
     Status encodeMultisine(const TestRequest& request, const std::function<std::uint16_t*(const std::string&)>& at) const;
+    /// The circle fields (second axis, direction, radius, feed, centre, arcs) of a Circle request.
+    Status writeCircleBlock(const TestRequest& request, int unit);
     Status loadAxes();
     Result<AxisInfo> axisInfo(const std::string& axis);
     Result<std::string> readText(int unit, std::uint16_t channel);

@@ -75,6 +75,10 @@ private:
         // FRF multisine (docs/modbus.md): periods, phases, bands in use and fmin/fmax/spacing per band.
         std::uint16_t msPeriods = 0, msPhases = 0, msBandCount = 0;
         std::array<double, 12> msBands{};
+        // Circle (docs/modbus.md "Circle test"): second plane axis (index), direction, geometry.
+        std::uint16_t circleSecondAxis = 0, circleDirection = 0;
+        double circleRadius = 0, circleFeed = 0, circleCenterX = 0, circleCenterY = 0, circleDataStartDeg = 45,
+               circleLeadArcDeg = 90;
     };
     using Clock = std::chrono::steady_clock;
 
@@ -92,6 +96,11 @@ private:
     int runCommand(int unitIndex, std::uint16_t code, std::uint16_t token);
     void takeTrace();
     void takeFrequencyResponse();
+    // The circle test of two axes (SimDriveServerCircle.cpp).
+    int startCircle(int unitIndex, TestRequest& request);
+    void checkCircleSecondAxis();
+    int writeCircleField(const RegisterField& f, int unitIndex, const std::uint16_t* words);
+    bool encodeCircleField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
     // Register helpers.
     void encodeField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
     bool encodeIdentity(const RegisterField& f, int unitIndex, std::uint16_t* buf);
@@ -118,6 +127,7 @@ private:
     std::string m_message;
     double m_progress = 0.0;
     int m_testUnit = -1;
+    int m_testSecondUnit = -1; ///< circle: the second plane axis, else -1
     double m_testStartMachineS = 0.0;
     Clock::time_point m_testStartWall;
     Clock::time_point m_lastHeartbeat;

@@ -170,6 +170,8 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
         if (n == key)
             return encodeF64(v, o, buf);
     }
+    if (n.rfind("circle.", 0) == 0 && encodeCircleField(f, ui, buf))
+        return;
     if (n == "heartbeat.counter")
         return u16(m_heartbeat);
     if (n == "trace.select_offset")
@@ -234,6 +236,8 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
         m_selChannel = w[0];
         return 0;
     }
+    if (n.rfind("circle.", 0) == 0)
+        return writeCircleField(f, ui, w);
     if (n.rfind("test.", 0) != 0)
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "field " + n + " is read-only");
     if (m_state == "running")

@@ -80,6 +80,9 @@ int SimDriveServer::startTest(int ui)
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "excitation amplitude " + num(c.amplitude) +
                                                                    " % of the rated torque above the drive's limit " +
                                                                    num(lim.amplitudeLimitPct) + " %");
+    } else if (type == "circle") {
+        if (const int r = startCircle(ui, req); r != 0)
+            return r;
     } else {
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test type '" + type + "' is not supported by this drive");
     }
@@ -97,6 +100,7 @@ int SimDriveServer::startTest(int ui)
     m_message.clear();
     m_progress = 0.0;
     m_testUnit = ui;
+    m_testSecondUnit = type == "circle" ? c.circleSecondAxis : -1;
     m_testStartMachineS = ax.sim->time();
     m_testStartWall = m_lastHeartbeat = Clock::now();
     m_trace.reset();
@@ -126,7 +130,7 @@ void SimDriveServer::checkSafety()
     const double torqueLimit = lim.amplitudeLimitPct / 100.0 * ratedTorque;
     const bool fullClosed = s.parameter("position.feedback") > 0.5;
     const std::string type = m_map.name("test_type", m_config[static_cast<std::size_t>(m_testUnit)].type);
-    const bool positionTest = type == "jog" || type == "hold"; // the position loop is closed only there
+    const bool positionTest = type == "jog" || type == "hold" || type == "circle"; // the position loop is closed only there
     const double followingError =
         positionTest ? s.positionCommand() - (fullClosed ? s.tablePosition() : s.motorPosition()) : 0.0;
     const bool linear = ax.kind == "linear"; // rotary tables turn endlessly: no travel window
@@ -144,6 +148,8 @@ void SimDriveServer::checkSafety()
     else if (std::abs(followingError) > lim.followingErrorLimit)
         trip("following_error",
              "following error " + num(followingError) + u + " above the limit " + num(lim.followingErrorLimit) + u);
+    else if (m_testSecondUnit >= 0)
+        checkCircleSecondAxis();
 }
 
 void SimDriveServer::takeTrace()

@@ -137,6 +137,8 @@ Status SimulatedDrive::startTest(const TestRequest& request)
 {
     if (m_status.state == TestState::Running)
         return makeError(ErrorCode::Busy, "a test is already running");
+    if (request.type == TestType::Circle)
+        return startCircle(request);
     auto s = axisSim(request.axis);
     if (!s)
         return s.error();
@@ -193,6 +195,8 @@ Status SimulatedDrive::startTest(const TestRequest& request)
         length = *len;
         break;
     }
+    case TestType::Circle:  // started by startCircle above
+        break;
     }
     sim.startTrace();
     m_request = request;
@@ -206,6 +210,8 @@ Status SimulatedDrive::startTest(const TestRequest& request)
 
 Result<TestStatus> SimulatedDrive::pollTest()
 {
+    if (m_circle && m_status.state == TestState::Running)
+        return pollCircle();
     if (m_status.state != TestState::Running || !m_active)
         return m_status;
     const double remaining = m_endTime - m_active->time();
@@ -352,6 +358,10 @@ Result<double> SimulatedDrive::startMultisine(sim::AxisSimulator& sim, const Tes
 
 Status SimulatedDrive::abortTest()
 {
+    if (m_circle && m_status.state == TestState::Running) {
+        abortCircle("aborted by the user");
+        return Status::success();
+    }
     if (m_status.state != TestState::Running || !m_active)
         return Status::success();
     // Stop at once: hold the present position, drop the test's commands, restore the parameters.

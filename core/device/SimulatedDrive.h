@@ -40,6 +40,11 @@ private:
     Result<double> startFrf(sim::AxisSimulator& sim, const TestRequest& request);
     /// The multisine variant of startFrf (MultisineTest.h), after the amplitude and timing checks.
     Result<double> startMultisine(sim::AxisSimulator& sim, const TestRequest& request, double peakNm, const LoopTiming& timing);
+    // The circle test of two axes (SimulatedDriveCircle.cpp).
+    struct CircleState;
+    Status startCircle(const TestRequest& request);
+    Result<TestStatus> pollCircle();
+    void abortCircle(const std::string& why);
 
     sim::MachineDefinition m_machine;
     std::map<std::string, std::unique_ptr<sim::AxisSimulator>> m_axes;
@@ -56,6 +61,7 @@ private:
     std::shared_ptr<const MultisinePlan> m_multisinePlan;
     std::uint64_t m_clampsAtStart = 0;  ///< voltage clamps of the current loop before a multisine test
     std::optional<FrfMeasurement> m_frf;
+    std::shared_ptr<CircleState> m_circle;  ///< the running circle test
 };
 
 }  // namespace axistune::device

@@ -7,6 +7,7 @@
 #include "core/sim/CircleTest.h"
 
 #include "core/sim/AxisSimulator.h"
+#include "core/sim/CircleRun.h"
 
 #include <cmath>
 #include <memory>
@@ -29,48 +30,6 @@ std::string fmt(double v)
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.10g", v);
     return buf;
-}
-
-/// Travelled arc s(τ) ≥ 0 [rad] with its derivatives: dwell, constant angular acceleration over half
-/// the lead-in arc, constant speed, deceleration over half the lead-out arc.
-struct ArcPlan {
-    double dwell = 0, omega = 0, alpha = 0, tAcc = 0, tConst = 0, sAcc = 0;
-    double duration() const { return dwell + 2.0 * tAcc + tConst; }
-    MotionState at(double t) const
-    {
-        double s = 0, w = 0, a = 0;
-        double u = t - dwell;
-        if (u <= 0.0) {
-            return {0.0, 0.0, 0.0};
-        } else if (u < tAcc) {
-            s = 0.5 * alpha * u * u, w = alpha * u, a = alpha;
-        } else if ((u -= tAcc) < tConst) {
-            s = sAcc + omega * u, w = omega;
-        } else if ((u -= tConst) < tAcc) {
-            s = sAcc + omega * tConst + omega * u - 0.5 * alpha * u * u, w = omega - alpha * u, a = -alpha;
-        } else {
-            s = 2.0 * sAcc + omega * tConst;
-        }
-        return {s, w, a};
-    }
-};
-
-Status checkOptions(const CircleTestOptions& o)
-{
-    auto bad = [](const std::string& m) { return Status(makeError(ErrorCode::BadInput, "circle test: " + m)); };
-    if (!(o.radiusM > 0.0) || !std::isfinite(o.radiusM))
-        return bad("radius must be positive (is " + fmt(o.radiusM) + " m)");
-    if (!(o.feedMPerS > 0.0) || !std::isfinite(o.feedMPerS))
-        return bad("feed must be positive (is " + fmt(o.feedMPerS) + " m/s)");
-    if (!(o.leadArcDeg >= 10.0) || o.leadArcDeg > 360.0)
-        return bad("lead arc must be 10..360 deg (is " + fmt(o.leadArcDeg) + ")");
-    if (!std::isfinite(o.centerXM) || !std::isfinite(o.centerYM) || !std::isfinite(o.dataStartDeg))
-        return bad("centre and start angle must be finite");
-    if (!(o.dwellS >= 0.0) || !std::isfinite(o.squarenessPerM) || !std::isfinite(o.scaleX) || !std::isfinite(o.scaleY))
-        return bad("dwell must be >= 0 and the geometric errors finite");
-    if (!(o.torqueExcludeDeg > 0.0 && o.torqueWindowDeg > o.torqueExcludeDeg && o.torqueWindowDeg < 90.0))
-        return bad("torque plateau window must satisfy 0 < exclude < window < 90 deg");
-    return Status::success();
 }
 
 struct Samples {
@@ -134,10 +93,74 @@ model::BallBarTrace ballBarFromSamples(const Samples& d, const CircleTestOptions
 
 } // namespace
 
+Result<CircleTestResult> evaluateCircleTrace(const model::Capture& trace, const CircleTestOptions& o)
+{
+    auto path = CirclePath::plan(o);
+    if (!path)
+        return path.error();
+    auto bad = [](const std::string& m) { return makeError(ErrorCode::BadInput, "circle trace: " + m); };
+    const model::Channel* arc = trace.channel("arc_rad");
+    const model::Channel* px = trace.channel(circleChannel(o.axisX, "table_pos_m"));
+    const model::Channel* py = trace.channel(circleChannel(o.axisY, "table_pos_m"));
+    const model::Channel* tx = trace.channel(circleChannel(o.axisX, "torque_Nm"));
+    const model::Channel* ty = trace.channel(circleChannel(o.axisY, "torque_Nm"));
+    const std::pair<const model::Channel*, std::string> need[] = {
+        {arc, "arc_rad"},
+        {px, circleChannel(o.axisX, "table_pos_m")},
+        {py, circleChannel(o.axisY, "table_pos_m")},
+        {tx, circleChannel(o.axisX, "torque_Nm")},
+        {ty, circleChannel(o.axisY, "torque_Nm")}};
+    for (const auto& [c, name] : need) {
+        if (!c)
+            return bad("channel '" + name + "' is missing");
+        if (c->data.size() != arc->data.size())
+            return bad("channel '" + name + "' has " + std::to_string(c->data.size()) + " samples, arc_rad " +
+                       std::to_string(arc->data.size()));
+    }
+    if (arc->data.empty() || arc->data.back() < path->dataTo())
+        return bad("the trace ends before the 360 deg data arc (an aborted circle?)");
+    Samples d;
+    d.s = arc->data;
+    d.tx = tx->data;
+    d.ty = ty->data;
+    d.x.resize(d.s.size());
+    d.y.resize(d.s.size());
+    for (std::size_t i = 0; i < d.s.size(); ++i) {
+        const double xt = px->data[i], yt = py->data[i];
+        d.x[i] = (1.0 + o.scaleX) * xt + o.squarenessPerM * yt;
+        d.y[i] = (1.0 + o.scaleY) * yt;
+    }
+    const double phi0 = path->phi0(), sigma = path->sigma(), sFrom = path->dataFrom(), sTo = path->dataTo();
+    CircleTestResult res;
+    res.ballbar = ballBarFromSamples(d, o, phi0, sigma, sFrom, sTo);
+    model::BallBarTrace& bb = res.ballbar;
+    res.dTxNm = reversalTorqueChange(d, o, phi0, sigma, 0, sFrom, sTo);
+    res.dTyNm = reversalTorqueChange(d, o, phi0, sigma, 1, sFrom, sTo);
+    if (std::isfinite(res.dTxNm))
+        bb.dTxNm = res.dTxNm;
+    if (std::isfinite(res.dTyNm))
+        bb.dTyNm = res.dTyNm;
+    if (auto it = trace.metadata.find("machine"); it != trace.metadata.end())
+        bb.source = bb.metadata["source"] = it->second;
+    return res;
+}
+
+Result<model::BallBarTrace> ballBarFromCircleTrace(const model::Capture& trace)
+{
+    auto o = circleOptionsFromTrace(trace);
+    if (!o)
+        return o.error();
+    auto r = evaluateCircleTrace(trace, *o);
+    if (!r)
+        return r.error();
+    return std::move(r.value().ballbar);
+}
+
 Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const CircleTestOptions& o)
 {
-    if (auto st = checkOptions(o); !st)
-        return st.error();
+    auto path = CirclePath::plan(o);
+    if (!path)
+        return path.error();
     const AxisDefinition* defX = machine.axis(o.axisX);
     const AxisDefinition* defY = machine.axis(o.axisY);
     if (!defX || !defY)
@@ -153,69 +176,22 @@ Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const C
         return simY.error();
     AxisSimulator& ax = **simX;
     AxisSimulator& ay = **simY;
-    const double tp = ax.parameter("position.period");
-    if (std::abs(tp - ay.parameter("position.period")) > 1e-12 ||
-        std::abs(ax.currentPeriod() - ay.currentPeriod()) > 1e-15)
-        return makeError(ErrorCode::BadInput, "circle test: axes " + o.axisX + " and " + o.axisY +
-                                                  " must share the position and current periods");
-    const std::int64_t ticksPerSample = std::llround(tp / ax.currentPeriod());
-
-    const double sigma = o.direction == model::CircleDirection::Ccw ? 1.0 : -1.0;
-    const double r = o.radiusM, cx = o.centerXM, cy = o.centerYM;
-    ArcPlan plan;
-    plan.dwell = o.dwellS;
-    plan.omega = o.feedMPerS / r;
-    plan.sAcc = 0.5 * o.leadArcDeg * kDeg;
-    plan.alpha = plan.omega * plan.omega / (2.0 * plan.sAcc);
-    plan.tAcc = plan.omega / plan.alpha;
-    const double sFrom = o.leadArcDeg * kDeg, sTo = sFrom + 2.0 * kPi;
-    plan.tConst = (sTo + sFrom - 2.0 * plan.sAcc) / plan.omega;
-    const double phi0 = o.dataStartDeg * kDeg - sigma * sFrom;
-
-    auto command = [plan, sigma, phi0, r](double centre, bool isY) {
-        return [plan, sigma, phi0, r, centre, isY](double t) {
-            const MotionState a = plan.at(t);
-            const double phi = phi0 + sigma * a.position, w = sigma * a.velocity, al = sigma * a.acceleration;
-            const double c = std::cos(phi), s = std::sin(phi);
-            if (isY)
-                return MotionState{centre + r * s, r * c * w, -r * s * w * w + r * c * al};
-            return MotionState{centre + r * c, -r * s * w, -r * c * w * w - r * s * al};
-        };
-    };
-    ax.reset(cx + r * std::cos(phi0));
-    ay.reset(cy + r * std::sin(phi0));
-    ax.setControlMode(ControlMode::Position);
-    ay.setControlMode(ControlMode::Position);
-    ax.setPositionCommand(command(cx, false));
-    ay.setPositionCommand(command(cy, true));
+    // At rest on the start point at t = 0 (a drive positions its axes there first).
+    ax.reset(path->startPosition(false));
+    ay.reset(path->startPosition(true));
+    auto started = CircleRun::begin(ax, ay, *path);
+    if (!started)
+        return started.error();
+    CircleRun& run = started.value();
     ax.startTrace();
     ay.startTrace();
-
-    Samples d;
-    const auto n = static_cast<std::size_t>(std::ceil((plan.duration() + 0.2) / tp));
-    for (auto* v : {&d.s, &d.x, &d.y, &d.tx, &d.ty})
-        v->reserve(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        ax.runTicks(ticksPerSample);
-        ay.runTicks(ticksPerSample);
-        const double xt = ax.tablePosition(), yt = ay.tablePosition();
-        d.s.push_back(plan.at(ax.time()).position);
-        d.x.push_back((1.0 + o.scaleX) * xt + o.squarenessPerM * yt);
-        d.y.push_back((1.0 + o.scaleY) * yt);
-        d.tx.push_back(ax.torque());
-        d.ty.push_back(ay.torque());
-    }
-
-    CircleTestResult res;
-    res.ballbar = ballBarFromSamples(d, o, phi0, sigma, sFrom, sTo);
+    run.step(run.totalSamples());
+    auto evaluated = evaluateCircleTrace(run.trace(), o);
+    if (!evaluated)
+        return evaluated.error();
+    CircleTestResult res = std::move(evaluated).value();
     model::BallBarTrace& bb = res.ballbar;
     bb.source = "sim:" + machine.name;
-    res.dTxNm = reversalTorqueChange(d, o, phi0, sigma, 0, sFrom, sTo);
-    res.dTyNm = reversalTorqueChange(d, o, phi0, sigma, 1, sFrom, sTo);
-    if (std::isfinite(res.dTxNm))
-        bb.dTxNm = res.dTxNm;
-    if (std::isfinite(res.dTyNm))
-        bb.dTyNm = res.dTyNm;
     bb.metadata["source"] = bb.source;
     bb.metadata["squareness_um_per_m"] = fmt(o.squarenessPerM * 1e6);
     bb.metadata["scale_x_ppm"] = fmt(o.scaleX * 1e6);

@@ -49,4 +49,12 @@ struct CircleTestResult {
 /// hold any change to apply (lost-motion compensation, gains). Bad options give BadInput.
 Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const CircleTestOptions& opt);
 
+/// The ball bar's reading of a circle trace (layout in CircleRun.h, from CircleRun or a drive's Circle
+/// test): radial deviation over the data arc with the geometric errors of `opt` applied to the table
+/// positions, and ΔT of both axes. traceX/traceY stay empty. A missing channel, a trace shorter than
+/// the data arc (an aborted circle) or bad options give BadInput.
+Result<CircleTestResult> evaluateCircleTrace(const model::Capture& trace, const CircleTestOptions& opt);
+/// evaluateCircleTrace with the options from the trace's own metadata (circleOptionsFromTrace).
+Result<model::BallBarTrace> ballBarFromCircleTrace(const model::Capture& trace);
+
 } // namespace axistune::sim

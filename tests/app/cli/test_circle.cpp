@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/app/cli/CliRunner.h"
+#include "tests/app/cli/SimDriveProcess.h"
 
 using namespace axistune;
 using axistune::testing::makeTempDir;
@@ -289,5 +290,41 @@ TEST(CliCircle, CaptureTestCircleEqualsTheCircleCommand)
     r = axistune::testing::runCli("capture --test step --amplitude 1 --out " + (dir / "c.csv").string());
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("--axis is required"), std::string::npos) << r.err;
+    std::filesystem::remove_all(dir);
+}
+
+// circle --connect modbus://: a Circle test of axistune-simdrive (both axes move in the drive), the
+// trace evaluated by the CLI. Three table positions along Y give the preset's A and B within 10 %,
+// as the simulated circle does (ThreeCirclesThroughLostMotionGiveThePresetY).
+TEST(CliCircle, OverModbusTheDriveRunsTheCircles)
+{
+    axistune::testing::SimDrive sd("--preset vmc");
+    ASSERT_GT(sd.port(), 0) << sd.log();
+    const auto dir = makeTempDir("circle-modbus");
+    std::string files;
+    for (const char* cy : {"-150", "0", "150"}) {
+        const auto path = (dir / (std::string("m") + cy + ".csv")).string();
+        const auto servo = (dir / (std::string("s") + cy + ".csv")).string();
+        auto r = runCli("circle --connect " + sd.uri() + " --radius-mm 50 --feed-mm-min 1000 --center-y-mm " +
+                        std::string(cy) + " --servo-out-x " + servo + " --out " + path);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        auto j = nlohmann::json::parse(r.out);
+        EXPECT_NEAR(j["dT_y_Nm"].get<double>(), 2.0 * preset("Y", "plant.coulomb_motor"), 0.05 * 0.61);
+        EXPECT_NE(axistune::testing::readFileText(servo).find("Y.table_pos_m"), std::string::npos);
+        files += " " + path;
+    }
+    auto r = runCli("lost-motion --ballbar" + files + " --axis y --screw-offset-m 0.2 --exclude-deg 8");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const double aY = preset("Y", "plant.lost_motion_A"), bY = preset("Y", "plant.lost_motion_B");
+    EXPECT_NEAR(j["A_m_per_Nm"].get<double>(), aY, kTolRel * aY);
+    EXPECT_NEAR(j["B_per_Nm"].get<double>(), bY, kTolRel * bY);
+    // The drive's limits and the simulator-only options are refused with the reason.
+    r = runCli("circle --connect " + sd.uri() + " --center-y-mm 470 --out " + (dir / "far.csv").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("travel window"), std::string::npos) << r.err;
+    r = runCli("circle --connect " + sd.uri() + " --squareness-um-per-m 40 --out " + (dir / "sq.csv").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("sim: connections only"), std::string::npos) << r.err;
     std::filesystem::remove_all(dir);
 }

@@ -3,6 +3,7 @@
 // loopback socket. The embedded SimulatedDrive with the same seed is the independent reference.
 #include "core/device/ModbusDrive.h"
 #include "core/device/SimDriveServer.h"
+#include "tests/core/device/ServerThread.h"
 
 #include <chrono>
 #include <cmath>
@@ -13,49 +14,9 @@
 
 using namespace axistune;
 using namespace axistune::device;
+using axistune::devtest::ServerThread;
 
 namespace {
-
-class ServerThread {
-public:
-    explicit ServerThread(SimDriveServerOptions o)
-    {
-        o.log = [this](const std::string& l) {
-            std::lock_guard lock(m_mutex);
-            m_log += l + "\n";
-        };
-        auto s = SimDriveServer::create(o);
-        EXPECT_TRUE(s.ok()) << (s.ok() ? "" : s.error().detail);
-        if (!s.ok())
-            return;
-        m_server = std::move(s).value();
-        m_thread = std::thread([this] { (void)m_server->serve(); });
-    }
-    ~ServerThread() { stop(); }
-    void stop()
-    {
-        if (m_server)
-            m_server->requestStop();
-        if (m_thread.joinable())
-            m_thread.join();
-    }
-    int port() const { return m_server ? m_server->port() : 0; }
-    std::string uri(int timeoutMs = 1000) const
-    {
-        return "modbus://127.0.0.1:" + std::to_string(port()) + "?timeout_ms=" + std::to_string(timeoutMs);
-    }
-    std::string log()
-    {
-        std::lock_guard lock(m_mutex);
-        return m_log;
-    }
-
-private:
-    std::unique_ptr<SimDriveServer> m_server;
-    std::thread m_thread;
-    std::mutex m_mutex;
-    std::string m_log;
-};
 
 SimDriveServerOptions options(const std::string& preset = "vmc")
 {
