@@ -404,6 +404,7 @@ Status ModbusDrive::startTest(const TestRequest& request)
     const char* type = request.type == TestType::Step   ? "step"
                        : request.type == TestType::Jog  ? "jog"
                        : request.type == TestType::Hold ? "hold"
+                       : request.type == TestType::CurrentStep ? "current_step"
                                                         : "frf";
     const int code = m_map.code("test_type", type);
     if (code < 0)

@@ -40,6 +40,10 @@ private:
     Result<double> startFrf(sim::AxisSimulator& sim, const TestRequest& request);
     /// The multisine variant of startFrf (MultisineTest.h), after the amplitude and timing checks.
     Result<double> startMultisine(sim::AxisSimulator& sim, const TestRequest& request, double peakNm, const LoopTiming& timing);
+    /// Checks and installs a current step (TestType::CurrentStep); returns the test length [s] (record and hold).
+    Result<double> startCurrentStep(sim::AxisSimulator& sim, const TestRequest& request);
+    /// Current step: at the end of the record, takes the trace and closes the position loop again.
+    void endCurrentStepRecord();
 
     sim::MachineDefinition m_machine;
     std::map<std::string, std::unique_ptr<sim::AxisSimulator>> m_axes;
@@ -56,6 +60,8 @@ private:
     std::shared_ptr<const MultisinePlan> m_multisinePlan;
     std::uint64_t m_clampsAtStart = 0;  ///< voltage clamps of the current loop before a multisine test
     std::optional<FrfMeasurement> m_frf;
+    double m_recordEnd = -1.0;  ///< current step: machine time the record ends and the hold begins (< 0: none)
+    std::string m_stepStart;    ///< current step: machine time of the step, as capture metadata
 };
 
 }  // namespace axistune::device
