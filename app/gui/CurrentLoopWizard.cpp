@@ -10,6 +10,8 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 namespace axistune {
@@ -34,7 +36,8 @@ CurrentLoopSavePage::CurrentLoopSavePage(AppContext& ctx, CurrentLoopData& share
     setTitle(tr("Save"));
     setSubTitle(
         tr("The session holds the motor data and settings, the α table, the chosen α and gains with the rise "
-           "time, the gain schedule, the step responses, what was applied with its journal, and the read-back."));
+           "time, the gain schedule, the predicted step responses, what was applied with its journal, the read-back, "
+           "and the current step measured on the drive with its comparison."));
     auto* lay = new QVBoxLayout(this);
     m_text = new QLabel(this);
     m_text->setObjectName("clSummary");
@@ -79,16 +82,49 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard
     m_apply = new ApplyPage(ctx, this);
     m_apply->setObjectName("clApply");
     auto* step = new CurrentLoopStepPage(ctx, m_data, m_apply, this);
+    m_safety = new SafetyPage(ctx, this);
+    m_safety->setObjectName("clSafety");
+    m_safety->setLimitKeys({"motor.max_current", "drive.max_voltage", "current.kp", "current.ki", "current.alpha"});
+    m_run = new TestRunPage(ctx, this);
+    m_run->setObjectName("clRunPage");
+    m_run->setRequestFactory([this] {
+        device::TestRequest r;
+        r.axis = m_data.axis.toStdString();
+        r.type = device::TestType::CurrentStep;
+        r.amplitude = m_data.stepAmplitudeA;
+        r.durationS = m_data.stepRecordS;
+        m_data.measuredCapture.reset();
+        m_data.measured.reset();
+        m_data.measureError.clear();
+        return std::vector<device::TestRequest>{r};
+    });
+    connect(m_run, &TestRunPage::runFinished, this, [this](bool ok) {
+        if (ok && !m_run->replies().empty() && m_run->replies().front().capture) {
+            m_data.measuredCapture = m_run->replies().front().capture;
+            return;
+        }
+        m_data.measureError = m_run->failure();
+        m_ctx.log(tr("Current loop: the current step failed: %1").arg(m_run->failure()));
+    });
     auto* verify = new CurrentLoopVerifyPage(ctx, m_data, m_apply, this);
     auto* save = new CurrentLoopSavePage(ctx, m_data, m_apply, this);
     setPage(Motor, m_motor);
     setPage(Design, m_design);
     setPage(Step, step);
     setPage(Apply, m_apply);
+    setPage(Safety, m_safety);
+    setPage(MeasureRun, m_run);
     setPage(Verify, verify);
     setPage(Save, save);
     setStartId(Motor);
     resize(1000, 700);
+}
+
+int CurrentLoopWizard::nextId() const
+{
+    if (currentId() == Apply && !m_data.measure)
+        return Verify;  // no measurement wanted: straight to the read-back
+    return QWizard::nextId();
 }
 
 void CurrentLoopWizard::saveSession()
@@ -167,16 +203,40 @@ void CurrentLoopWizard::saveSession()
                  "current-loop wizard",
                  {{"current.kp", c->gains.kpVPerA}, {"current.ki", c->gains.kiVPerAs}, {"current.alpha", c->alpha}}});
     }
-    if (d.verified)
-        rec.results.push_back({"verification",
-                               {{"kp_V_per_A", d.readKp},
-                                {"ki_V_per_As", d.readKi},
-                                {"alpha", d.readAlpha},
-                                {"predicted_overshoot", d.verifyOvershoot},
-                                {"predicted_rise_time_s", d.verifyRiseS},
-                                {"measured", nullptr},
-                                {"note", "the drive offers no current-step test"}},
-                               {{"t_s", d.verifyStep.timeS}, {"delay_inclusive", d.verifyStep.discrete}}});
+    if (d.measuredCapture)
+        rec.captures.push_back({"current_step", *d.measuredCapture});
+    if (d.verified) {
+        nlohmann::json v{{"kp_V_per_A", d.readKp},
+                         {"ki_V_per_As", d.readKi},
+                         {"alpha", d.readAlpha},
+                         {"predicted_overshoot", d.verifyOvershoot},
+                         {"predicted_rise_time_s", d.verifyRiseS},
+                         {"measured", nullptr}};
+        std::vector<model::Channel> arrays{{"t_s", d.verifyStep.timeS}, {"delay_inclusive", d.verifyStep.discrete}};
+        if (d.measured) {
+            auto fin = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+            v["measured"] = {{"capture", "current_step"},
+                             {"step_A", d.measured->amplitudeA},
+                             {"rise_time_s", fin(d.measuredFigures.riseTimeS)},
+                             {"overshoot", fin(d.measuredFigures.overshoot)},
+                             {"design_rise_time_s", fin(d.designFigures.riseTimeS)},
+                             {"design_overshoot", fin(d.designFigures.overshoot)},
+                             {"predicted_rise_time_s", fin(d.predictedFigures.riseTimeS)},
+                             {"predicted_overshoot", fin(d.predictedFigures.overshoot)},
+                             {"max_abs_difference", d.difference.maxAbs},
+                             {"rms_difference", d.difference.rms},
+                             {"samples_compared", d.difference.samples},
+                             {"verdict", d.measuredVerdict.toStdString()}};
+            arrays = {{"t_s", d.measured->tS},
+                      {"measured", d.measured->normalised},
+                      {"delay_inclusive", d.measuredPrediction.discrete},
+                      {"delay_free", d.measuredPrediction.delayFree}};
+        } else {
+            v["note"] = d.measure ? "no measured current step: " + d.measureError.toStdString()
+                                  : std::string("no current step was measured (not chosen)");
+        }
+        rec.results.push_back({"verification", v, arrays});
+    }
     if (m_apply->applied())
         rec.parameterSets.push_back(
             {0, rec.info.axis, store::ParameterSource::Applied, {}, "current-loop wizard", m_apply->readBack()});

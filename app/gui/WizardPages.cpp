@@ -58,6 +58,8 @@ QString testName(const device::TestRequest& r)
         return QCoreApplication::translate("TestRunPage", "position hold");
     case device::TestType::Frf:
         return QCoreApplication::translate("TestRunPage", "frequency response (%1)").arg(qs(device::frfMethodName(r.frfMethod)));
+    case device::TestType::CurrentStep:
+        return QCoreApplication::translate("TestRunPage", "current step");
     }
     return {};
 }
