@@ -166,6 +166,13 @@ private slots:
             QCOMPARE(w.currentId(), int(CurrentLoopWizard::Safety));
             w.safetyPage()->confirmation()->setChecked(true);
             QVERIFY(w.safetyPage()->isComplete());
+            // The five current-loop limits are shown (read from the drive's metadata).
+            QVERIFY(waitUntil(
+                [&] {
+                    auto* t = w.safetyPage()->findChild<QTableWidget*>();
+                    return t && t->rowCount() == 5;
+                },
+                10000));
             shot(&w, "current-loop-06-safety");
             w.next();
             QCOMPARE(w.currentId(), int(CurrentLoopWizard::MeasureRun));
