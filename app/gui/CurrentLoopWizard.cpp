@@ -66,6 +66,15 @@ void CurrentLoopSavePage::initializePage()
         text += "\n" + tr("Not applied: the proposal is kept in the session.");
     else
         text += "\n" + tr("Applied to axis %1 and read back.").arg(m_d.axis);
+    if (m_d.measured)
+        text += "\n" + tr("Measured current step of %1 A: rise time %2 µs (predicted %3 µs), overshoot %4 % (predicted "
+                           "%5 %); largest difference %6 % of the step.")
+                           .arg(m_d.measured->amplitudeA, 0, 'f', 2)
+                           .arg(m_d.measuredFigures.riseTimeS * 1e6, 0, 'f', 1)
+                           .arg(m_d.predictedFigures.riseTimeS * 1e6, 0, 'f', 1)
+                           .arg(m_d.measuredFigures.overshoot * 100.0, 0, 'f', 1)
+                           .arg(m_d.predictedFigures.overshoot * 100.0, 0, 'f', 1)
+                           .arg(m_d.difference.maxAbs * 100.0, 0, 'f', 1);
     text += "\n" + (w && w->savedSessionId() > 0 ? tr("Saved as session %1.").arg(w->savedSessionId())
                                                  : tr("The session was not saved (no store open)."));
     m_text->setText(text);
@@ -85,18 +94,34 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard
     m_safety = new SafetyPage(ctx, this);
     m_safety->setObjectName("clSafety");
     m_safety->setLimitKeys({"motor.max_current", "drive.max_voltage", "current.kp", "current.ki", "current.alpha"});
-    m_run = new TestRunPage(ctx, this);
-    m_run->setObjectName("clRunPage");
-    m_run->setRequestFactory([this] {
+    auto stepRequest = [this] {
         device::TestRequest r;
         r.axis = m_data.axis.toStdString();
         r.type = device::TestType::CurrentStep;
         r.amplitude = m_data.stepAmplitudeA;
         r.durationS = m_data.stepRecordS;
+        return std::vector<device::TestRequest>{r};
+    };
+    // The same step before applying, with the gains the drive holds: the comparison for the one after.
+    m_beforeRun = new TestRunPage(ctx, this);
+    m_beforeRun->setObjectName("clBeforeRunPage");
+    m_beforeRun->setRequestFactory([this, stepRequest] {
+        m_data.beforeCapture.reset();
+        return stepRequest();
+    });
+    connect(m_beforeRun, &TestRunPage::runFinished, this, [this](bool ok) {
+        if (ok && !m_beforeRun->replies().empty() && m_beforeRun->replies().front().capture)
+            m_data.beforeCapture = m_beforeRun->replies().front().capture;
+        else
+            m_ctx.log(tr("Current loop: the current step before applying failed: %1").arg(m_beforeRun->failure()));
+    });
+    m_run = new TestRunPage(ctx, this);
+    m_run->setObjectName("clRunPage");
+    m_run->setRequestFactory([this, stepRequest] {
         m_data.measuredCapture.reset();
         m_data.measured.reset();
         m_data.measureError.clear();
-        return std::vector<device::TestRequest>{r};
+        return stepRequest();
     });
     connect(m_run, &TestRunPage::runFinished, this, [this](bool ok) {
         if (ok && !m_run->replies().empty() && m_run->replies().front().capture) {
@@ -111,8 +136,9 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard
     setPage(Motor, m_motor);
     setPage(Design, m_design);
     setPage(Step, step);
-    setPage(Apply, m_apply);
     setPage(Safety, m_safety);
+    setPage(BeforeRun, m_beforeRun);
+    setPage(Apply, m_apply);
     setPage(MeasureRun, m_run);
     setPage(Verify, verify);
     setPage(Save, save);
@@ -205,6 +231,8 @@ void CurrentLoopWizard::saveSession()
     }
     if (d.measuredCapture)
         rec.captures.push_back({"current_step", *d.measuredCapture});
+    if (d.beforeCapture)
+        rec.captures.push_back({"current_step_before", *d.beforeCapture});
     if (d.verified) {
         nlohmann::json v{{"kp_V_per_A", d.readKp},
                          {"ki_V_per_As", d.readKi},
@@ -227,6 +255,11 @@ void CurrentLoopWizard::saveSession()
                              {"rms_difference", d.difference.rms},
                              {"samples_compared", d.difference.samples},
                              {"verdict", d.measuredVerdict.toStdString()}};
+            if (d.before)
+                v["measured_before"] = {{"capture", "current_step_before"},
+                                        {"step_A", d.before->amplitudeA},
+                                        {"rise_time_s", fin(d.beforeFigures.riseTimeS)},
+                                        {"overshoot", fin(d.beforeFigures.overshoot)}};
             arrays = {{"t_s", d.measured->tS},
                       {"measured", d.measured->normalised},
                       {"delay_inclusive", d.measuredPrediction.discrete},

@@ -5,11 +5,12 @@
 // parameters, with the back-EMF check at the contouring speed → the design of core/tuning CurrentLoop
 // (α sweep; per α the optimum under dead-time stability, voltage envelope and overshoot limit) shown
 // in the k_p–k_i plane, rise time against α, the gain schedule over current → step responses
-// (delay-free design, delay-inclusive prediction at the drive's period and dead time) → apply
-// current.kp / current.ki / current.alpha → safety → a current step measured on the drive
-// (TestType::CurrentStep, progress and Abort) → verify (read back; measured step over the design and
-// the prediction with the read-back gains, rise time and overshoot of each, the difference) → save
-// (session kind "current-loop", the measured step as capture "current_step").
+// (delay-free design, delay-inclusive prediction at the drive's period and dead time) → safety → a
+// current step measured on the drive with its present gains (TestType::CurrentStep, progress and Abort)
+// → apply current.kp / current.ki / current.alpha → the same step again → verify (read back; measured
+// step over the design and the prediction with the read-back gains, rise time and overshoot of each, the
+// difference; the step before for comparison) → save (session kind "current-loop", the measured steps as
+// captures "current_step" and "current_step_before").
 
 #include "core/model/Capture.h"
 #include "core/tuning/CurrentLoop.h"
@@ -69,6 +70,9 @@ struct CurrentLoopData {
     double stepRecordS = 0.0;     ///< recording length [s] (the step comes 10 % in)
     std::shared_ptr<const model::Capture> measuredCapture;
     std::optional<tuning::MeasuredCurrentStep> measured;
+    std::shared_ptr<const model::Capture> beforeCapture;  ///< the same step before applying (present gains)
+    std::optional<tuning::MeasuredCurrentStep> before;
+    tuning::StepFigures beforeFigures;
     QString measureError;         ///< why there is no measured step (empty when there is one)
     tuning::StepResponse measuredPrediction;  ///< prediction with the read-back gains on the measured grid
     tuning::StepFigures measuredFigures, designFigures, predictedFigures;
@@ -218,7 +222,7 @@ private:
 class CurrentLoopWizard : public QWizard {
     Q_OBJECT
 public:
-    enum PageId { Motor, Design, Step, Apply, Safety, MeasureRun, Verify, Save };
+    enum PageId { Motor, Design, Step, Safety, BeforeRun, Apply, MeasureRun, Verify, Save };
 
     explicit CurrentLoopWizard(AppContext& ctx, QWidget* parent = nullptr);
 
@@ -228,6 +232,7 @@ public:
     ApplyPage* applyPage() const { return m_apply; }
     SafetyPage* safetyPage() const { return m_safety; }
     TestRunPage* runPage() const { return m_run; }
+    TestRunPage* beforeRunPage() const { return m_beforeRun; }
     qint64 savedSessionId() const { return m_sessionId; }
 
     void saveSession();
@@ -241,6 +246,7 @@ private:
     ApplyPage* m_apply = nullptr;
     SafetyPage* m_safety = nullptr;
     TestRunPage* m_run = nullptr;
+    TestRunPage* m_beforeRun = nullptr;
     qint64 m_sessionId = 0;
 };
 

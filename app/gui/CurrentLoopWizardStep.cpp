@@ -62,7 +62,8 @@ CurrentLoopStepPage::CurrentLoopStepPage(AppContext& ctx, CurrentLoopData& share
 {
     setTitle(tr("Current loop: step responses"));
     setSubTitle(tr("The delay-free design model against the prediction with the drive's current-loop period "
-                   "(zero-order hold) and dead time; after applying, a current step measured on the drive."));
+                   "(zero-order hold) and dead time; a current step is measured on the drive before and after "
+                   "applying."));
     auto* lay = new QVBoxLayout(this);
     m_plot = new widgets::CurvePlot(this);
     m_plot->setObjectName("clStepPlot");
@@ -72,7 +73,7 @@ CurrentLoopStepPage::CurrentLoopStepPage(AppContext& ctx, CurrentLoopData& share
     m_text->setObjectName("clStepText");
     m_text->setWordWrap(true);
     lay->addWidget(m_text);
-    auto* box = new QGroupBox(tr("Current step on the drive after applying"), this);
+    auto* box = new QGroupBox(tr("Current step on the drive, before and after applying"), this);
     m_measureBox = box;
     auto* form = new QFormLayout(box);
     m_measure = new QCheckBox(tr("Measure a current step (velocity loop open, then the axis holds its position)"), box);
@@ -165,9 +166,9 @@ bool CurrentLoopStepPage::validatePage()
     if (auto* safety = qobject_cast<SafetyPage*>(wizard()->page(CurrentLoopWizard::Safety))) {
         safety->setAxes({m_d.axis});
         safety->setMotionDescription(
-            tr("A q-axis current step of %1 A for %2 ms with the velocity and position loops open: the motor "
-               "accelerates freely while it lasts, then the axis holds its position again. Afterwards the step "
-               "is compared with the prediction.")
+            tr("A q-axis current step of %1 A recorded for %2 ms, twice: now with the gains the drive holds, and "
+               "after applying the proposed ones. The velocity and position loops are open while it lasts: the "
+               "motor accelerates freely, then the axis holds its position again.")
                 .arg(m_d.stepAmplitudeA, 0, 'f', 2)
                 .arg(m_d.stepRecordS * 1e3, 0, 'f', 2));
     }
@@ -176,7 +177,9 @@ bool CurrentLoopStepPage::validatePage()
 
 int CurrentLoopStepPage::nextId() const
 {
-    return m_ctx.drive().isConnected() && !m_d.axis.isEmpty() ? CurrentLoopWizard::Apply : CurrentLoopWizard::Save;
+    if (!m_ctx.drive().isConnected() || m_d.axis.isEmpty())
+        return CurrentLoopWizard::Save;
+    return !m_measureBox->isHidden() && m_measure->isChecked() ? CurrentLoopWizard::Safety : CurrentLoopWizard::Apply;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -250,6 +253,13 @@ void CurrentLoopVerifyPage::showResult()
         else
             m_d.measureError = QString::fromStdString(m.error().detail);
     }
+    m_d.before.reset();
+    if (m_d.beforeCapture) {
+        if (auto b = tuning::currentStepFromCapture(*m_d.beforeCapture); b) {
+            m_d.before = std::move(b).value();
+            m_d.beforeFigures = tuning::stepFigures(m_d.before->tS, m_d.before->normalised);
+        }
+    }
     const double dur = m_d.measured ? m_d.measured->tS.back() : predictionLength(*c, m_d.drivePeriodS);
     m_d.verifyStep = tuning::stepResponses(m_d.motor, m_d.readAlpha, {m_d.readKi, m_d.readKp}, m_d.driveDeadTimeS,
                                            m_d.drivePeriodS, dur);
@@ -272,6 +282,9 @@ void CurrentLoopVerifyPage::showResult()
                        .arg(same ? tr("as proposed") : tr("NOT as proposed"));
     if (!m_apply->applied())
         text += " " + tr("Not applied: the drive kept its own gains, and the measurement is of those.");
+    if (m_d.before)
+        m_plot->addCurve(tr("Measured before applying (gains before)"), scaled(m_d.before->tS, 1e6),
+                         m_d.before->normalised, QColor(150, 150, 150), Qt::DashLine);
     if (m_d.measured) {
         m_plot->addCurve(tr("Measured on the drive (%1 A step)").arg(m_d.measured->amplitudeA, 0, 'f', 2),
                          scaled(m_d.measured->tS, 1e6), m_d.measured->normalised, QColor(0, 0, 0));
@@ -311,6 +324,9 @@ QString CurrentLoopVerifyPage::compareMeasured()
     text += "\n" + tr("• design (delay-free): rise time %1 µs, overshoot %2 %").arg(us(df.riseTimeS), pct(df.overshoot));
     text += "\n" + tr("• prediction (period + dead time, read-back gains): rise time %1 µs, overshoot %2 %")
                        .arg(us(pf.riseTimeS), pct(pf.overshoot));
+    if (m_d.before)
+        text += "\n" + tr("• measured before applying (gains before): rise time %1 µs, overshoot %2 %")
+                           .arg(us(m_d.beforeFigures.riseTimeS), pct(m_d.beforeFigures.overshoot));
     text += "\n" + tr("Measured − predicted: rise time %1 µs, overshoot %2 percentage points; largest difference %3 % "
                        "of the step, rms %4 % over %5 samples.")
                        .arg(us(mf.riseTimeS - pf.riseTimeS), pct(mf.overshoot - pf.overshoot), pct(m_d.difference.maxAbs),

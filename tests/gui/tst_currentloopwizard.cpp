@@ -21,9 +21,10 @@
 //  * the back-EMF k_e·ω: the free motor reaches ≈ 6 rad/s in 2.5 ms, a voltage ramp of ≈ 2 V that the
 //    PI follows with a current error ≈ ramp slope/k_i ≈ 0.15 % of the step.
 // Together ≲ 2.7 %, hence kAgree = 3 %; an L_q wrong by 5 % moves the prediction by 5.7–6.3 % and fails.
-// Measured: max |measured − predicted| 0.85 %, rms 0.29 % over 41 samples; rise time 41.6 µs against
-// 41.7 µs predicted, overshoot 20.0 % against 19.9 %. The rise times are compared within one current
-// period (62.5 µs grid, interpolated).
+// Measured: max |measured − predicted| 0.98 %, rms 0.34 % over 41 samples; rise time 42.2 µs against
+// 41.7 µs predicted, overshoot 19.1 % against 19.9 %. The rise times are compared within one current
+// period (62.5 µs grid, interpolated). The step is measured before applying too (preset gains, within
+// 0.3 % of the design's: the same figures within the same tolerances; measured 41.7 µs, 19.9 %).
 // The test runs twice: on the embedded drive and over Modbus TCP against axistune-simdrive (gains
 // read back as float32, hence 1e-6 relative there).
 #include "app/gui/AppContext.h"
@@ -42,6 +43,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -154,15 +156,6 @@ private slots:
                      qPrintable(QString("%1 A, first voltage %2 V").arg(amp).arg(firstV)));
             shot(&w, "current-loop-04-step");
             w.next();
-            QCOMPARE(w.currentId(), int(CurrentLoopWizard::Apply));
-            ApplyPage* apply = w.applyPage();
-            apply->confirmation()->setChecked(true);
-            QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); },
-                              10000));
-            shot(&w, "current-loop-05-apply");
-            apply->applyButton()->click();
-            QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
-            w.next();
             QCOMPARE(w.currentId(), int(CurrentLoopWizard::Safety));
             w.safetyPage()->confirmation()->setChecked(true);
             QVERIFY(w.safetyPage()->isComplete());
@@ -173,13 +166,27 @@ private slots:
                     return t && t->rowCount() == 5;
                 },
                 10000));
-            shot(&w, "current-loop-06-safety");
+            shot(&w, "current-loop-05-safety");
+            auto runDone = [](TestRunPage* p) {
+                return waitUntil([p] { return !p->isRunning() && (p->succeeded() || !p->failure().isEmpty()); }, 30000);
+            };
             w.next();
-            QCOMPARE(w.currentId(), int(CurrentLoopWizard::MeasureRun));
-            QVERIFY(waitUntil(
-                [&] { return !w.runPage()->isRunning() && (w.runPage()->succeeded() || !w.runPage()->failure().isEmpty()); },
-                30000));
-            shot(&w, "current-loop-07-run");
+            QCOMPARE(w.currentId(), int(CurrentLoopWizard::BeforeRun));  // the step with the gains before
+            QVERIFY(runDone(w.beforeRunPage()));
+            shot(&w, "current-loop-06-run");
+            QVERIFY2(w.beforeRunPage()->succeeded(), qPrintable(w.beforeRunPage()->failure()));
+            w.next();
+            QCOMPARE(w.currentId(), int(CurrentLoopWizard::Apply));
+            ApplyPage* apply = w.applyPage();
+            apply->confirmation()->setChecked(true);
+            QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); },
+                              10000));
+            shot(&w, "current-loop-07-apply");
+            apply->applyButton()->click();
+            QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
+            w.next();
+            QCOMPARE(w.currentId(), int(CurrentLoopWizard::MeasureRun));  // the same step after applying
+            QVERIFY(runDone(w.runPage()));
             QVERIFY2(w.runPage()->succeeded(), qPrintable(w.runPage()->failure()));
             w.next();
             QCOMPARE(w.currentId(), int(CurrentLoopWizard::Verify));
@@ -187,6 +194,13 @@ private slots:
             shot(&w, "current-loop-08-verify");
             const auto& d = w.data();
             QVERIFY2(d.measured.has_value(), qPrintable(d.measureError));
+            // The step before: the preset's gains (35.7 V/A, 1.03e5 V/(A·s), α 1) are within 0.3 % of the
+            // design's, so it has the same figures within the same tolerances.
+            QVERIFY(d.before.has_value());
+            qInfo("measured before applying: rise %.2f us, overshoot %.2f %%", d.beforeFigures.riseTimeS * 1e6,
+                  d.beforeFigures.overshoot * 100);
+            QVERIFY(std::abs(d.beforeFigures.riseTimeS - d.measuredFigures.riseTimeS) <= 62.5e-6);
+            QVERIFY(std::abs(d.beforeFigures.overshoot - d.measuredFigures.overshoot) <= kAgree);
             QCOMPARE(d.measured->amplitudeA, amp);
             QVERIFY(std::abs(d.measured->periodS - 62.5e-6) < 1e-12);
             qInfo("measured %.2f A step: rise %.2f us (predicted %.2f, design %.2f), overshoot %.2f %% (predicted "
@@ -199,8 +213,9 @@ private slots:
             QVERIFY2(d.difference.maxAbs <= kAgree, qPrintable(QString::number(d.difference.maxAbs)));
             QVERIFY(std::abs(d.measuredFigures.riseTimeS - d.predictedFigures.riseTimeS) <= 62.5e-6);
             QVERIFY(std::abs(d.measuredFigures.overshoot - d.predictedFigures.overshoot) <= kAgree);
-            // Measured, delay-free design and delay-inclusive prediction on one plot; the numbers in words.
-            QCOMPARE(w.findChild<widgets::CurvePlot*>("clVerifyPlot")->curveCount(), 3);
+            // Measured (after and before), delay-free design and delay-inclusive prediction on one plot; the
+            // numbers in words.
+            QCOMPARE(w.findChild<widgets::CurvePlot*>("clVerifyPlot")->curveCount(), 4);
             const QString text = w.findChild<QLabel*>("clVerifyText")->text();
             QVERIFY2(text.contains(QString::number(d.difference.maxAbs * 100.0, 'f', 1)) &&
                          text.contains(QString::number(d.measuredFigures.riseTimeS * 1e6, 'f', 1)),
@@ -249,6 +264,9 @@ private slots:
                 step = &c.capture;
         QVERIFY(step);
         QCOMPARE(QString::fromStdString(step->metadata.at("fs_Hz")), QString("16000"));
+        QVERIFY(std::any_of(rec->captures.begin(), rec->captures.end(),
+                            [](const auto& c) { return c.name == "current_step_before"; }));
+        QVERIFY((*verify)["measured_before"].is_object());
         QVERIFY(step->channel("current_A") && step->size() >= 40);
         const auto& measured = (*verify)["measured"];
         QVERIFY(measured.is_object());
@@ -260,7 +278,7 @@ private slots:
         QStringList titles;
         for (const auto& im : report.images())
             titles << im.title;
-        QVERIFY2(titles.filter("current_step").size() == 1 && titles.filter("verification").size() == 1,
+        QVERIFY2(titles.filter("current_step").size() == 2 && titles.filter("verification").size() == 1,
                  qPrintable(titles.join(" | ")));
 
         // And on the drive itself.
