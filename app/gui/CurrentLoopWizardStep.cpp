@@ -114,7 +114,7 @@ double CurrentLoopStepPage::defaultStepAmplitude(const CurrentLoopData& d)
     double amp = kStepCurrentShare * d.motor.maxCurrentA;
     if (perAmp > 0.0)
         amp = std::min(amp, kStepVoltageShare * d.motor.maxVoltageV / perAmp);
-    return std::floor(amp * 10.0) / 10.0;  // a round figure below the bound
+    return std::floor(amp * 10.0) / 10.0; // a round figure below the bound
 }
 
 void CurrentLoopStepPage::initializePage()
@@ -292,7 +292,7 @@ void CurrentLoopVerifyPage::showResult()
     } else {
         text += "\n" + tr("Predicted step with them: %1.").arg(stepSummary(s.timeS, s.discrete));
         text += "\n" + (m_d.measure ? tr("No measured current step: %1").arg(m_d.measureError)
-                                     : tr("No current step was measured (not chosen on the step page)."));
+                                    : tr("No current step was measured (not chosen on the step page)."));
     }
     m_plot->rescale();
     m_text->setText(text);
@@ -309,34 +309,36 @@ QString CurrentLoopVerifyPage::compareMeasured()
     const auto& df = m_d.designFigures;
     auto us = [](double s) { return QString::number(s * 1e6, 'f', 1); };
     auto pct = [](double x) { return QString::number(x * 100.0, 'f', 1); };
-    constexpr double kAgree = 0.05;  // of the step: well above noise and the inductance drop at the default step
-    m_d.measuredVerdict = m_d.difference.maxAbs <= kAgree
-                              ? tr("The measured step agrees with the delay-inclusive prediction within %1 % of the step.")
-                                    .arg(kAgree * 100.0, 0, 'f', 0)
-                              : tr("The measured step differs from the delay-inclusive prediction by more than %1 % of "
-                                   "the step: check R_a, L_q and the dead time, or use a smaller step.")
-                                    .arg(kAgree * 100.0, 0, 'f', 0);
-    QString text =
-        tr("Current step of %1 A measured on the drive (%2 samples at %3 µs):").arg(m.amplitudeA, 0, 'f', 2)
-            .arg(m.tS.size())
-            .arg(m.periodS * 1e6, 0, 'f', 2);
+    constexpr double kAgree = 0.05; // of the step: well above noise and the inductance drop at the default step
+    m_d.measuredVerdict =
+        m_d.difference.maxAbs <= kAgree
+            ? tr("The measured step agrees with the delay-inclusive prediction within %1 % of the step.")
+                  .arg(kAgree * 100.0, 0, 'f', 0)
+            : tr("The measured step differs from the delay-inclusive prediction by more than %1 % of "
+                 "the step: check R_a, L_q and the dead time, or use a smaller step.")
+                  .arg(kAgree * 100.0, 0, 'f', 0);
+    QString text = tr("Current step of %1 A measured on the drive (%2 samples at %3 µs):")
+                       .arg(m.amplitudeA, 0, 'f', 2)
+                       .arg(m.tS.size())
+                       .arg(m.periodS * 1e6, 0, 'f', 2);
     text += "\n" + tr("• measured: 10–90 % rise time %1 µs, overshoot %2 %").arg(us(mf.riseTimeS), pct(mf.overshoot));
-    text += "\n" + tr("• design (delay-free): rise time %1 µs, overshoot %2 %").arg(us(df.riseTimeS), pct(df.overshoot));
+    text +=
+        "\n" + tr("• design (delay-free): rise time %1 µs, overshoot %2 %").arg(us(df.riseTimeS), pct(df.overshoot));
     text += "\n" + tr("• prediction (period + dead time, read-back gains): rise time %1 µs, overshoot %2 %")
                        .arg(us(pf.riseTimeS), pct(pf.overshoot));
     if (m_d.before)
         text += "\n" + tr("• measured before applying (gains before): rise time %1 µs, overshoot %2 %")
                            .arg(us(m_d.beforeFigures.riseTimeS), pct(m_d.beforeFigures.overshoot));
     text += "\n" + tr("Measured − predicted: rise time %1 µs, overshoot %2 percentage points; largest difference %3 % "
-                       "of the step, rms %4 % over %5 samples.")
-                       .arg(us(mf.riseTimeS - pf.riseTimeS), pct(mf.overshoot - pf.overshoot), pct(m_d.difference.maxAbs),
-                            pct(m_d.difference.rms))
+                      "of the step, rms %4 % over %5 samples.")
+                       .arg(us(mf.riseTimeS - pf.riseTimeS), pct(mf.overshoot - pf.overshoot),
+                            pct(m_d.difference.maxAbs), pct(m_d.difference.rms))
                        .arg(m_d.difference.samples);
     if (m_d.measuredCapture) {
         const auto it = m_d.measuredCapture->metadata.find("voltage_clamped_ticks");
         if (it != m_d.measuredCapture->metadata.end() && it->second != "0")
             text += "\n" + tr("The voltage clamp acted in %1 current periods: the measured step is not the linear loop "
-                               "the prediction describes; use a smaller step.")
+                              "the prediction describes; use a smaller step.")
                                .arg(QString::fromStdString(it->second));
     }
     return text + "\n" + m_d.measuredVerdict;

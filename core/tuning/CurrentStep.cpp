@@ -20,7 +20,7 @@ double crossing(const std::vector<double>& t, const std::vector<double>& y, doub
     return std::numeric_limits<double>::quiet_NaN();
 }
 
-}  // namespace
+} // namespace
 
 Result<MeasuredCurrentStep> currentStepFromCapture(const model::Capture& cap)
 {
@@ -31,7 +31,8 @@ Result<MeasuredCurrentStep> currentStepFromCapture(const model::Capture& cap)
     const auto& cmd = cap.channel("current_cmd_A")->data;
     const auto& i = cap.channel("current_A")->data;
     if (t.size() != cmd.size() || t.size() != i.size())
-        return makeError(ErrorCode::BadInput, "current step: the channels t_s, current_cmd_A and current_A differ in length");
+        return makeError(ErrorCode::BadInput,
+                         "current step: the channels t_s, current_cmd_A and current_A differ in length");
     double peak = 0.0;
     for (double c : cmd)
         peak = std::max(peak, std::isfinite(c) ? std::abs(c) : 0.0);
@@ -78,4 +79,4 @@ StepDifference compareSteps(const std::vector<double>& a, const std::vector<doub
     return d;
 }
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

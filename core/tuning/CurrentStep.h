@@ -13,11 +13,11 @@
 namespace axistune::tuning {
 
 struct MeasuredCurrentStep {
-    std::vector<double> tS;          ///< time since the step [s]; sample 0 is the first with the step commanded
-    std::vector<double> normalised;  ///< current_A / amplitude
-    double amplitudeA = 0.0;         ///< the commanded step (signed)
-    double stepTimeS = 0.0;          ///< t_s of the step sample in the capture
-    double periodS = 0.0;            ///< sample period
+    std::vector<double> tS;         ///< time since the step [s]; sample 0 is the first with the step commanded
+    std::vector<double> normalised; ///< current_A / amplitude
+    double amplitudeA = 0.0;        ///< the commanded step (signed)
+    double stepTimeS = 0.0;         ///< t_s of the step sample in the capture
+    double periodS = 0.0;           ///< sample period
 };
 
 /// The step in a trace with channels t_s, current_cmd_A and current_A: the first sample whose command
@@ -25,8 +25,8 @@ struct MeasuredCurrentStep {
 Result<MeasuredCurrentStep> currentStepFromCapture(const model::Capture& capture);
 
 struct StepFigures {
-    double riseTimeS = 0.0;  ///< 10 %→90 % of the final value 1 by linear interpolation; NaN if 90 % is not reached
-    double overshoot = 0.0;  ///< max(y) − 1, at least 0
+    double riseTimeS = 0.0; ///< 10 %→90 % of the final value 1 by linear interpolation; NaN if 90 % is not reached
+    double overshoot = 0.0; ///< max(y) − 1, at least 0
 };
 
 /// Rise time and overshoot of a step normalised to 1.
@@ -41,4 +41,4 @@ struct StepDifference {
 /// a − b sample by sample over the common length (both on the same time grid).
 StepDifference compareSteps(const std::vector<double>& a, const std::vector<double>& b);
 
-}  // namespace axistune::tuning
+} // namespace axistune::tuning

@@ -3,11 +3,11 @@
 // the current-loop rate with the step where the request puts it, the axis at rest and holding after
 // the test, the parameters restored, and the refused requests naming their limit.
 #include "core/device/SimulatedDrive.h"
-#include "tests/core/device/DriveTestUtil.h"
-
-#include <gtest/gtest.h>
 
 #include <cmath>
+#include <gtest/gtest.h>
+
+#include "tests/core/device/DriveTestUtil.h"
 
 using namespace axistune;
 using namespace axistune::device;
@@ -51,17 +51,17 @@ std::string refusal(Drive& d, const TestRequest& r)
     return st.error().detail;
 }
 
-}  // namespace
+} // namespace
 
 TEST(SimulatedDriveCurrentStep, TracesAtTheCurrentRateAndHoldsAfterwards)
 {
     auto drive = devtest::makeDrive("vmc");
-    drive->setSliceSeconds(0.001);  // several polls inside the record and the hold
+    drive->setSliceSeconds(0.001); // several polls inside the record and the hold
     auto* sim = drive->simulator("X");
     ASSERT_NE(sim, nullptr);
     const auto before = sim->parameters();
     ASSERT_TRUE(drive->startTest(currentStep(5.0, 0.004)).ok());
-    EXPECT_FALSE(drive->writeParameters("X", {{"current.kp", 20.0}}).ok());  // no write while it runs
+    EXPECT_FALSE(drive->writeParameters("X", {{"current.kp", 20.0}}).ok()); // no write while it runs
     const auto s = runToEnd(*drive);
     ASSERT_EQ(s.state, TestState::Completed) << s.detail;
     auto trace = drive->readTrace();
@@ -86,14 +86,15 @@ TEST(SimulatedDriveCurrentStep, TracesAtTheCurrentRateAndHoldsAfterwards)
     EXPECT_LT(std::abs(sim->motorVelocity()), 0.01);
     EXPECT_EQ(sim->parameters(), before);
     // A following velocity step sees the velocity trace again.
-    ASSERT_TRUE(drive->startTest([] {
-                         TestRequest r;
-                         r.axis = "X";
-                         r.type = TestType::Step;
-                         r.amplitude = 1.0;
-                         r.durationS = 0.01;
-                         return r;
-                     }())
+    ASSERT_TRUE(drive
+                    ->startTest([] {
+                        TestRequest r;
+                        r.axis = "X";
+                        r.type = TestType::Step;
+                        r.amplitude = 1.0;
+                        r.durationS = 0.01;
+                        return r;
+                    }())
                     .ok());
     ASSERT_EQ(runToEnd(*drive).state, TestState::Completed);
     auto vel = drive->readTrace();
@@ -134,7 +135,7 @@ TEST(SimulatedDriveCurrentStep, AbortStopsTheStepAndRestoresTheParameters)
     auto* sim = drive->simulator("X");
     const auto before = sim->parameters();
     auto r = currentStep(5.0, 0.008);
-    r.traceDivider = 2;  // changes a parameter for the test
+    r.traceDivider = 2; // changes a parameter for the test
     ASSERT_TRUE(drive->startTest(r).ok());
     ASSERT_TRUE(drive->pollTest().ok());
     ASSERT_TRUE(drive->pollTest().ok());
@@ -148,5 +149,5 @@ TEST(SimulatedDriveCurrentStep, AbortStopsTheStepAndRestoresTheParameters)
     sim->run(0.3);
     EXPECT_LT(std::abs(sim->motorVelocity()), 0.01);
     EXPECT_LT(std::abs(sim->torqueCommand()), 0.5);
-    EXPECT_FALSE(drive->readTrace().ok());  // no completed test, no trace
+    EXPECT_FALSE(drive->readTrace().ok()); // no completed test, no trace
 }

@@ -8,10 +8,9 @@
 // give the same numbers to rounding (1e-9 of the step).
 #include "core/sim/AxisSimulator.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <deque>
+#include <gtest/gtest.h>
 
 using namespace axistune;
 using namespace axistune::sim;
@@ -23,7 +22,8 @@ struct LoopCase {
 };
 
 /// The discrete loop above, for a step of `amp` at sample `k0`, over `n` samples: i_k.
-std::vector<double> referenceStep(double r, double l, double h, const LoopCase& c, int dead, std::size_t k0, std::size_t n)
+std::vector<double> referenceStep(double r, double l, double h, const LoopCase& c, int dead, std::size_t k0,
+                                  std::size_t n)
 {
     const double phi = std::exp(-r * h / l), gamma = (1.0 - phi) / r;
     std::vector<double> out;
@@ -67,14 +67,14 @@ TEST_P(CurrentStep, MatchesTheDiscreteClosedLoopOfTheSpec)
     auto sim = makeSim(c);
     sim->setNonlinearities({false, false, false, false, false});
     const double h = sim->currentPeriod();
-    const std::size_t k0 = 8, n = 160;  // 10 ms at 16 kHz
+    const std::size_t k0 = 8, n = 160; // 10 ms at 16 kHz
     sim->setControlMode(ControlMode::Current);
     const double tStep = static_cast<double>(k0) * h;
     sim->setCurrentCommand([&](double t) { return t >= tStep - 0.5 * h ? c.stepA : 0.0; });
     sim->startTrace(TraceRate::Current);
     sim->runTicks(static_cast<std::int64_t>(n));
     const auto cap = sim->takeTrace();
-    EXPECT_EQ(sim->voltageClampCount(), 0u);  // the comparison is of the linear loop
+    EXPECT_EQ(sim->voltageClampCount(), 0u); // the comparison is of the linear loop
 
     std::vector<std::string> names;
     for (const auto& ch : cap.channels)
@@ -131,7 +131,7 @@ TEST(CurrentStepMode, VelocityTraceIsUntouchedAndHoldPositionStopsTheMotor)
     sim->holdPosition();
     const double held = sim->motorPosition();
     EXPECT_DOUBLE_EQ(sim->positionCommand(), held);
-    sim->startTrace();  // the default rate is still the velocity trace
+    sim->startTrace(); // the default rate is still the velocity trace
     sim->run(0.3);
     const auto cap = sim->takeTrace();
     EXPECT_EQ(cap.channels.size(), 14u);
@@ -141,4 +141,4 @@ TEST(CurrentStepMode, VelocityTraceIsUntouchedAndHoldPositionStopsTheMotor)
     EXPECT_NEAR(sim->motorPosition(), held, 1e-6);
 }
 
-}  // namespace
+} // namespace

@@ -4,9 +4,8 @@
 // 1 + e^{−ζπ/√(1−ζ²)}. The capture parser finds the step sample and normalises by the signed amplitude.
 #include "core/tuning/CurrentStep.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 
 using namespace axistune;
@@ -21,7 +20,7 @@ TEST(CurrentStepFigures, FirstOrderRiseTimeIsTauLn9)
         y.push_back(1.0 - std::exp(-k * h / tau));
     }
     const auto f = stepFigures(t, y);
-    EXPECT_NEAR(f.riseTimeS, tau * std::log(9.0), 1e-3 * tau);  // interpolation error ≪ h
+    EXPECT_NEAR(f.riseTimeS, tau * std::log(9.0), 1e-3 * tau); // interpolation error ≪ h
     EXPECT_EQ(f.overshoot, 0.0);
 }
 
@@ -57,7 +56,7 @@ TEST(CurrentStepFigures, CaptureParserFindsTheStepAndNormalises)
     EXPECT_NEAR(m->periodS, 62.5e-6, 1e-12);
     ASSERT_EQ(m->tS.size(), 6u);
     EXPECT_EQ(m->tS[0], 0.0);
-    EXPECT_DOUBLE_EQ(m->normalised[2], 1.0);  // −4 A / −4 A
+    EXPECT_DOUBLE_EQ(m->normalised[2], 1.0); // −4 A / −4 A
     const auto d = compareSteps(m->normalised, {0.0, 0.5, 1.0, 1.5, 2.0, 2.0, 9.0});
     EXPECT_EQ(d.samples, 6u);
     EXPECT_DOUBLE_EQ(d.maxAbs, 0.5);
