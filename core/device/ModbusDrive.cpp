@@ -121,6 +121,15 @@ Result<std::unique_ptr<ModbusDrive>> ModbusDrive::open(const ModbusUri& uri, Reg
         return st.error();
     if (auto st = d->loadAxes(); !st)
         return st.error();
+    // Continue the drive's token sequence (docs/modbus.md "previous + 1"): a fresh client counting from 1
+    // would repeat the last client's (code, token), and the drive would answer that as a retry without
+    // running the test — the old trace would then pass for a new one.
+    std::uint16_t echo = 0;
+    if (auto st = d->readRegs(d->m_map.unitIdBase, d->m_map.field("status.command_token_echo").address, 1, &echo,
+                              "reading the command token");
+        !st)
+        return st.error();
+    d->m_token = echo;
     return d;
 }
 

@@ -535,3 +535,37 @@ TEST(ModbusDrive, CurrentStepRefusedByTheDriveAndByTheServer)
     ASSERT_TRUE(s.ok());
     EXPECT_EQ(s->state, TestState::Completed) << s->detail;
 }
+
+// A second client after a first one (a new CLI process, a reconnect of the GUI) continues the drive's
+// command-token sequence: its start_test runs a new test instead of being answered as a retry of the
+// first client's command (which left the first test's trace in place).
+TEST(ModbusDrive, ANewClientRunsItsOwnTestNotTheLastClientsRetry)
+{
+    ServerThread srv(options("vmc"));
+    {
+        auto first = open(srv.uri());
+        ASSERT_TRUE(first);
+        ASSERT_TRUE(first->startTest(step("X", 5.0, 0.02)).ok());
+        auto s = finish(*first);
+        ASSERT_TRUE(s.ok() && s->state == TestState::Completed);
+    }
+    auto second = open(srv.uri());
+    ASSERT_TRUE(second);
+    TestRequest r;
+    r.axis = "X";
+    r.type = TestType::CurrentStep;
+    r.amplitude = 3.0;
+    r.durationS = 0.002;
+    ASSERT_TRUE(second->startTest(r).ok());
+    auto s = finish(*second);
+    ASSERT_TRUE(s.ok() && s->state == TestState::Completed);
+    auto t = second->readTrace();
+    ASSERT_TRUE(t.ok()) << t.error().detail;
+    EXPECT_EQ(t->metadata.at("fs_Hz"), "16000"); // the current step's trace, not the velocity step's (4000)
+    EXPECT_EQ(t->size(), 32u);
+    // And a refusal reaches the second client too.
+    r.amplitude = 45.0;
+    auto st = second->startTest(r);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().detail.find("40 A"), std::string::npos) << st.error().detail;
+}
