@@ -168,8 +168,8 @@ public:
     QDoubleSpinBox* amplitudeSpin() const { return m_amp; }
     QDoubleSpinBox* recordSpin() const { return m_record; }
 
-    /// Default step: the largest whose first voltage (α k_p + k_i T)·i* stays within 80 % of V_max, at most
-    /// 10 % of I_max (linear loop, small inductance drop).
+    /// Default step: the largest whose voltage before the current responds, (α k_p + (d + 1) k_i T)·i* with d
+    /// dead-time periods, stays within 80 % of V_max, at most 10 % of I_max (linear loop, small inductance drop).
     static double defaultStepAmplitude(const CurrentLoopData& d);
 
 private:

@@ -26,7 +26,7 @@ namespace gui {
 
 namespace {
 
-/// Share of V_max the first voltage of the default step may take.
+/// Share of V_max the largest early voltage of the default step may take.
 constexpr double kStepVoltageShare = 0.8;
 /// Largest default step as a share of I_max (the inductance falls by δ times this at most).
 constexpr double kStepCurrentShare = 0.1;
@@ -44,6 +44,15 @@ QString stepSummary(const std::vector<double>& t, const std::vector<double>& y)
     return QCoreApplication::translate("CurrentLoopWizard", "overshoot %1 %, 10–90 % rise time %2 µs")
         .arg(f.overshoot * 100.0, 0, 'f', 1)
         .arg(f.riseTimeS * 1e6, 0, 'f', 1);
+}
+
+/// Voltage per ampere of step in the last period before the current can respond: with d periods of dead
+/// time the error stays i* for d + 1 periods, so v = (α k_p + (d + 1) k_i T)·i*. Kept inside the clamp,
+/// the measured loop is the linear one the prediction describes.
+double earlyVoltagePerAmp(const CurrentLoopData& d, const tuning::AlphaOptimum& c)
+{
+    const double dead = d.drivePeriodS > 0.0 ? std::round(d.driveDeadTimeS / d.drivePeriodS) : 0.0;
+    return c.alpha * c.gains.kpVPerA + (dead + 1.0) * c.gains.kiVPerAs * d.drivePeriodS;
 }
 
 /// Length of the predicted response after the step [s].
@@ -108,9 +117,7 @@ double CurrentLoopStepPage::defaultStepAmplitude(const CurrentLoopData& d)
     const auto* c = d.chosen();
     if (!c)
         return 0.0;
-    // First period after the step: v = (α k_p + k_i T)·i* (error i* with i = 0), the largest voltage of a
-    // step that does not overshoot wildly; keep it inside the clamp so the measured loop is the linear one.
-    const double perAmp = c->alpha * c->gains.kpVPerA + c->gains.kiVPerAs * d.drivePeriodS;
+    const double perAmp = earlyVoltagePerAmp(d, *c);
     double amp = kStepCurrentShare * d.motor.maxCurrentA;
     if (perAmp > 0.0)
         amp = std::min(amp, kStepVoltageShare * d.motor.maxVoltageV / perAmp);
@@ -143,12 +150,12 @@ void CurrentLoopStepPage::initializePage()
         const double amp = defaultStepAmplitude(m_d);
         m_amp->setValue(amp);
         m_record->setValue(std::min(50.0, std::ceil(predictionLength(*c, m_d.drivePeriodS) / 0.9 * 1e4) / 10.0));
-        const double first = (c->alpha * c->gains.kpVPerA + c->gains.kiVPerAs * m_d.drivePeriodS) * amp;
+        const double first = earlyVoltagePerAmp(m_d, *c) * amp;
         m_measureNote->setText(
-            tr("Default %1 A: at most %2 % of I_max, and the first voltage after the step, (α k_p + k_i T)·i* = %3 V, "
-               "stays within %4 % of V_max (%5 V), so no voltage clamp acts and the inductance falls by only "
-               "δ·i*/I_max = %6 %. The drive refuses more than 50 % of I_max, a recording beyond 50 ms and a step "
-               "that would take the motor beyond 20 rad/s.")
+            tr("Default %1 A: at most %2 % of I_max, and the voltage before the current can respond, (α k_p + "
+               "(d + 1)·k_i T)·i* = %3 V with d dead-time periods, stays within %4 % of V_max (%5 V), so no voltage "
+               "clamp acts and the inductance falls by only δ·i*/I_max = %6 %. The drive refuses more than 50 % of "
+               "I_max, a recording beyond 50 ms and a step that would take the motor beyond 20 rad/s.")
                 .arg(amp, 0, 'f', 1)
                 .arg(kStepCurrentShare * 100.0, 0, 'f', 0)
                 .arg(first, 0, 'f', 1)

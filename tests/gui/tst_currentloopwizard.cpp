@@ -147,7 +147,8 @@ private slots:
             w.designPage()->allAlphas()->setChecked(false);
             w.next();
             QCOMPARE(w.currentId(), int(CurrentLoopWizard::Step));
-            // The measured step's default: within 80 % of V_max on the first period and at most 10 % of I_max.
+            // The measured step's default: the voltage before the current responds within 80 % of V_max (vmc:
+            // current.dead_time 0, so d = 0 and that is the first period's) and at most 10 % of I_max.
             auto* stepPage = qobject_cast<CurrentLoopStepPage*>(w.currentPage());
             QVERIFY(stepPage && stepPage->measureCheck()->isChecked());
             const double amp = stepPage->amplitudeSpin()->value();
