@@ -224,6 +224,9 @@ int runCapture(const CaptureOptions& o)
         req.returnToStart = o.back;
     } else if (o.test == "hold") {
         req.type = device::TestType::Hold;
+    } else if (o.test == "current-step") {
+        req.type = device::TestType::CurrentStep;
+        req.amplitude = o.amplitude;
     } else if (o.test == "frf") {
         req.type = device::TestType::Frf;
         if (o.method == "multisweep")
@@ -246,7 +249,7 @@ int runCapture(const CaptureOptions& o)
         req.settleS = o.settle;
         req.minMeasureS = o.minMeasure;
     } else {
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--test must be step, jog, hold, frf or circle (got '" + o.test + "')"));
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--test must be step, jog, hold, current-step, frf or circle (got '" + o.test + "')"));
     }
     if (o.test != "frf" && !o.sweepOut.empty())
         return reportError(cmd, makeError(ErrorCode::BadInput, "--sweep-out is only for --test frf"));
@@ -292,13 +295,13 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         auto o = std::make_shared<CaptureOptions>();
         sub.add_option("--connect", o->connect, "sim:PRESET (vmc, dd-table, two-inertia)")->capture_default_str();
         sub.add_option("--axis", o->axis, "axis name, e.g. X (all tests but circle)");
-        sub.add_option("--test", o->test, "step | jog | hold | frf | circle")->capture_default_str();
-        sub.add_option("--amplitude", o->amplitude, "step: motor velocity step [rad/s]");
+        sub.add_option("--test", o->test, "step | jog | hold | current-step | frf | circle")->capture_default_str();
+        sub.add_option("--amplitude", o->amplitude, "step: motor velocity step [rad/s]; current-step: q-axis current step [A]");
         sub.add_option("--distance", o->distance, "jog: distance [m or rad]");
         sub.add_option("--velocity", o->velocity, "jog: velocity [m/s or rad/s]");
         sub.add_option("--acceleration", o->acceleration, "jog: acceleration [m/s^2 or rad/s^2]")->capture_default_str();
         sub.add_flag("--back", o->back, "jog: return to the start (a reversal)");
-        sub.add_option("--duration", o->duration, "step/hold: recording length; jog: dwell before and after [s]")
+        sub.add_option("--duration", o->duration, "step/hold/current-step: recording length; jog: dwell before and after [s]")
             ->capture_default_str();
         sub.add_option("--trace-divider", o->divider, "trace every N velocity periods (0: drive setting)");
         sub.add_option("--seed", o->seed, "noise seed of the simulated machine")->capture_default_str();

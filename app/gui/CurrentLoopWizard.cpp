@@ -10,6 +10,8 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 namespace axistune {
@@ -34,7 +36,8 @@ CurrentLoopSavePage::CurrentLoopSavePage(AppContext& ctx, CurrentLoopData& share
     setTitle(tr("Save"));
     setSubTitle(
         tr("The session holds the motor data and settings, the α table, the chosen α and gains with the rise "
-           "time, the gain schedule, the step responses, what was applied with its journal, and the read-back."));
+           "time, the gain schedule, the predicted step responses, what was applied with its journal, the read-back, "
+           "and the current step measured on the drive with its comparison."));
     auto* lay = new QVBoxLayout(this);
     m_text = new QLabel(this);
     m_text->setObjectName("clSummary");
@@ -63,6 +66,15 @@ void CurrentLoopSavePage::initializePage()
         text += "\n" + tr("Not applied: the proposal is kept in the session.");
     else
         text += "\n" + tr("Applied to axis %1 and read back.").arg(m_d.axis);
+    if (m_d.measured)
+        text += "\n" + tr("Measured current step of %1 A: rise time %2 µs (predicted %3 µs), overshoot %4 % (predicted "
+                           "%5 %); largest difference %6 % of the step.")
+                           .arg(m_d.measured->amplitudeA, 0, 'f', 2)
+                           .arg(m_d.measuredFigures.riseTimeS * 1e6, 0, 'f', 1)
+                           .arg(m_d.predictedFigures.riseTimeS * 1e6, 0, 'f', 1)
+                           .arg(m_d.measuredFigures.overshoot * 100.0, 0, 'f', 1)
+                           .arg(m_d.predictedFigures.overshoot * 100.0, 0, 'f', 1)
+                           .arg(m_d.difference.maxAbs * 100.0, 0, 'f', 1);
     text += "\n" + (w && w->savedSessionId() > 0 ? tr("Saved as session %1.").arg(w->savedSessionId())
                                                  : tr("The session was not saved (no store open)."));
     m_text->setText(text);
@@ -79,16 +91,66 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard
     m_apply = new ApplyPage(ctx, this);
     m_apply->setObjectName("clApply");
     auto* step = new CurrentLoopStepPage(ctx, m_data, m_apply, this);
+    m_safety = new SafetyPage(ctx, this);
+    m_safety->setObjectName("clSafety");
+    m_safety->setLimitKeys({"motor.max_current", "drive.max_voltage", "current.kp", "current.ki", "current.alpha"});
+    auto stepRequest = [this] {
+        device::TestRequest r;
+        r.axis = m_data.axis.toStdString();
+        r.type = device::TestType::CurrentStep;
+        r.amplitude = m_data.stepAmplitudeA;
+        r.durationS = m_data.stepRecordS;
+        return std::vector<device::TestRequest>{r};
+    };
+    // The same step before applying, with the gains the drive holds: the comparison for the one after.
+    m_beforeRun = new TestRunPage(ctx, this);
+    m_beforeRun->setObjectName("clBeforeRunPage");
+    m_beforeRun->setRequestFactory([this, stepRequest] {
+        m_data.beforeCapture.reset();
+        return stepRequest();
+    });
+    connect(m_beforeRun, &TestRunPage::runFinished, this, [this](bool ok) {
+        if (ok && !m_beforeRun->replies().empty() && m_beforeRun->replies().front().capture)
+            m_data.beforeCapture = m_beforeRun->replies().front().capture;
+        else
+            m_ctx.log(tr("Current loop: the current step before applying failed: %1").arg(m_beforeRun->failure()));
+    });
+    m_run = new TestRunPage(ctx, this);
+    m_run->setObjectName("clRunPage");
+    m_run->setRequestFactory([this, stepRequest] {
+        m_data.measuredCapture.reset();
+        m_data.measured.reset();
+        m_data.measureError.clear();
+        return stepRequest();
+    });
+    connect(m_run, &TestRunPage::runFinished, this, [this](bool ok) {
+        if (ok && !m_run->replies().empty() && m_run->replies().front().capture) {
+            m_data.measuredCapture = m_run->replies().front().capture;
+            return;
+        }
+        m_data.measureError = m_run->failure();
+        m_ctx.log(tr("Current loop: the current step failed: %1").arg(m_run->failure()));
+    });
     auto* verify = new CurrentLoopVerifyPage(ctx, m_data, m_apply, this);
     auto* save = new CurrentLoopSavePage(ctx, m_data, m_apply, this);
     setPage(Motor, m_motor);
     setPage(Design, m_design);
     setPage(Step, step);
+    setPage(Safety, m_safety);
+    setPage(BeforeRun, m_beforeRun);
     setPage(Apply, m_apply);
+    setPage(MeasureRun, m_run);
     setPage(Verify, verify);
     setPage(Save, save);
     setStartId(Motor);
     resize(1000, 700);
+}
+
+int CurrentLoopWizard::nextId() const
+{
+    if (currentId() == Apply && !m_data.measure)
+        return Verify;  // no measurement wanted: straight to the read-back
+    return QWizard::nextId();
 }
 
 void CurrentLoopWizard::saveSession()
@@ -182,16 +244,47 @@ void CurrentLoopWizard::saveSession()
                  "current-loop wizard",
                  {{"current.kp", c->gains.kpVPerA}, {"current.ki", c->gains.kiVPerAs}, {"current.alpha", c->alpha}}});
     }
-    if (d.verified)
-        rec.results.push_back({"verification",
-                               {{"kp_V_per_A", d.readKp},
-                                {"ki_V_per_As", d.readKi},
-                                {"alpha", d.readAlpha},
-                                {"predicted_overshoot", d.verifyOvershoot},
-                                {"predicted_rise_time_s", d.verifyRiseS},
-                                {"measured", nullptr},
-                                {"note", "the drive offers no current-step test"}},
-                               {{"t_s", d.verifyStep.timeS}, {"delay_inclusive", d.verifyStep.discrete}}});
+    if (d.measuredCapture)
+        rec.captures.push_back({"current_step", *d.measuredCapture});
+    if (d.beforeCapture)
+        rec.captures.push_back({"current_step_before", *d.beforeCapture});
+    if (d.verified) {
+        nlohmann::json v{{"kp_V_per_A", d.readKp},
+                         {"ki_V_per_As", d.readKi},
+                         {"alpha", d.readAlpha},
+                         {"predicted_overshoot", d.verifyOvershoot},
+                         {"predicted_rise_time_s", d.verifyRiseS},
+                         {"measured", nullptr}};
+        std::vector<model::Channel> arrays{{"t_s", d.verifyStep.timeS}, {"delay_inclusive", d.verifyStep.discrete}};
+        if (d.measured) {
+            auto fin = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+            v["measured"] = {{"capture", "current_step"},
+                             {"step_A", d.measured->amplitudeA},
+                             {"rise_time_s", fin(d.measuredFigures.riseTimeS)},
+                             {"overshoot", fin(d.measuredFigures.overshoot)},
+                             {"design_rise_time_s", fin(d.designFigures.riseTimeS)},
+                             {"design_overshoot", fin(d.designFigures.overshoot)},
+                             {"predicted_rise_time_s", fin(d.predictedFigures.riseTimeS)},
+                             {"predicted_overshoot", fin(d.predictedFigures.overshoot)},
+                             {"max_abs_difference", d.difference.maxAbs},
+                             {"rms_difference", d.difference.rms},
+                             {"samples_compared", d.difference.samples},
+                             {"verdict", d.measuredVerdict.toStdString()}};
+            if (d.before)
+                v["measured_before"] = {{"capture", "current_step_before"},
+                                        {"step_A", d.before->amplitudeA},
+                                        {"rise_time_s", fin(d.beforeFigures.riseTimeS)},
+                                        {"overshoot", fin(d.beforeFigures.overshoot)}};
+            arrays = {{"t_s", d.measured->tS},
+                      {"measured", d.measured->normalised},
+                      {"delay_inclusive", d.measuredPrediction.discrete},
+                      {"delay_free", d.measuredPrediction.delayFree}};
+        } else {
+            v["note"] = d.measure ? "no measured current step: " + d.measureError.toStdString()
+                                  : std::string("no current step was measured (not chosen)");
+        }
+        rec.results.push_back({"verification", v, arrays});
+    }
     if (m_apply->applied())
         rec.parameterSets.push_back(
             {0, rec.info.axis, store::ParameterSource::Applied, {}, "current-loop wizard", m_apply->readBack()});

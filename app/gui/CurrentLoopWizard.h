@@ -5,17 +5,22 @@
 // parameters, with the back-EMF check at the contouring speed → the design of core/tuning CurrentLoop
 // (α sweep; per α the optimum under dead-time stability, voltage envelope and overshoot limit) shown
 // in the k_p–k_i plane, rise time against α, the gain schedule over current → step responses
-// (delay-free design, delay-inclusive prediction at the drive's period and dead time; the drive offers
-// no current-step test, so there is no measured current step) → apply current.kp / current.ki /
-// current.alpha → verify (read back, prediction with the read-back gains) → save (session kind
-// "current-loop").
+// (delay-free design, delay-inclusive prediction at the drive's period and dead time) → safety → a
+// current step measured on the drive with its present gains (TestType::CurrentStep, progress and Abort)
+// → apply current.kp / current.ki / current.alpha → the same step again → verify (read back; measured
+// step over the design and the prediction with the read-back gains, rise time and overshoot of each, the
+// difference; the step before for comparison) → save (session kind "current-loop", the measured steps as
+// captures "current_step" and "current_step_before").
 
+#include "core/model/Capture.h"
 #include "core/tuning/CurrentLoop.h"
+#include "core/tuning/CurrentStep.h"
 
 #include <QWizard>
 #include <QWizardPage>
 
 #include <numbers>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -34,6 +39,8 @@ namespace gui {
 
 class AppContext;
 class ApplyPage;
+class SafetyPage;
+class TestRunPage;
 
 /// Line-to-line rms volts per 1000 min⁻¹ from the q-axis peak constant [V·s/rad] (amplitude-invariant dq).
 inline constexpr double kKeToVPerKrpm = 1.2247448713915890 * 1000.0 * 2.0 * std::numbers::pi / 60.0;
@@ -62,6 +69,20 @@ struct CurrentLoopData {
     double readKp = 0.0, readKi = 0.0, readAlpha = 0.0;
     tuning::StepResponse verifyStep;
     double verifyOvershoot = 0.0, verifyRiseS = 0.0;
+    // The current step measured on the drive (TestType::CurrentStep).
+    bool measure = true;          ///< measure a current step after apply
+    double stepAmplitudeA = 0.0;  ///< step of the q-axis current command [A]
+    double stepRecordS = 0.0;     ///< recording length [s] (the step comes 10 % in)
+    std::shared_ptr<const model::Capture> measuredCapture;
+    std::optional<tuning::MeasuredCurrentStep> measured;
+    std::shared_ptr<const model::Capture> beforeCapture;  ///< the same step before applying (present gains)
+    std::optional<tuning::MeasuredCurrentStep> before;
+    tuning::StepFigures beforeFigures;
+    QString measureError;         ///< why there is no measured step (empty when there is one)
+    tuning::StepResponse measuredPrediction;  ///< prediction with the read-back gains on the measured grid
+    tuning::StepFigures measuredFigures, designFigures, predictedFigures;
+    tuning::StepDifference difference;        ///< measured − delay-inclusive prediction (normalised)
+    QString measuredVerdict;
 
     const tuning::AlphaOptimum* chosen() const
     {
@@ -150,7 +171,15 @@ public:
     CurrentLoopStepPage(AppContext& ctx, CurrentLoopData& data, ApplyPage* apply, QWidget* parent = nullptr);
     void initializePage() override;
     int nextId() const override;
+    bool validatePage() override;
     widgets::CurvePlot* plot() const { return m_plot; }
+    QCheckBox* measureCheck() const { return m_measure; }
+    QDoubleSpinBox* amplitudeSpin() const { return m_amp; }
+    QDoubleSpinBox* recordSpin() const { return m_record; }
+
+    /// Default step: the largest whose voltage before the current responds, (α k_p + (d + 1) k_i T)·i* with d
+    /// dead-time periods, stays within 80 % of V_max, at most 10 % of I_max (linear loop, small inductance drop).
+    static double defaultStepAmplitude(const CurrentLoopData& d);
 
 private:
     AppContext& m_ctx;
@@ -158,6 +187,11 @@ private:
     ApplyPage* m_apply;
     widgets::CurvePlot* m_plot = nullptr;
     QLabel* m_text = nullptr;
+    QWidget* m_measureBox = nullptr;
+    QCheckBox* m_measure = nullptr;
+    QDoubleSpinBox* m_amp = nullptr;
+    QDoubleSpinBox* m_record = nullptr;
+    QLabel* m_measureNote = nullptr;
 };
 
 /// Read back after apply and the prediction with the read-back gains.
@@ -167,9 +201,12 @@ public:
     CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& data, ApplyPage* apply, QWidget* parent = nullptr);
     void initializePage() override;
     bool isComplete() const override;
+    widgets::CurvePlot* plot() const { return m_plot; }
 
 private:
     void showResult();
+    /// The measured step against the prediction with the read-back gains; returns the text.
+    QString compareMeasured();
     AppContext& m_ctx;
     CurrentLoopData& m_d;
     ApplyPage* m_apply;
@@ -194,7 +231,7 @@ private:
 class CurrentLoopWizard : public QWizard {
     Q_OBJECT
 public:
-    enum PageId { Motor, Design, Step, Apply, Verify, Save };
+    enum PageId { Motor, Design, Step, Safety, BeforeRun, Apply, MeasureRun, Verify, Save };
 
     explicit CurrentLoopWizard(AppContext& ctx, QWidget* parent = nullptr);
 
@@ -202,9 +239,13 @@ public:
     CurrentLoopMotorPage* motorPage() const { return m_motor; }
     CurrentLoopDesignPage* designPage() const { return m_design; }
     ApplyPage* applyPage() const { return m_apply; }
+    SafetyPage* safetyPage() const { return m_safety; }
+    TestRunPage* runPage() const { return m_run; }
+    TestRunPage* beforeRunPage() const { return m_beforeRun; }
     qint64 savedSessionId() const { return m_sessionId; }
 
     void saveSession();
+    int nextId() const override;
 
 private:
     AppContext& m_ctx;
@@ -212,6 +253,9 @@ private:
     CurrentLoopMotorPage* m_motor = nullptr;
     CurrentLoopDesignPage* m_design = nullptr;
     ApplyPage* m_apply = nullptr;
+    SafetyPage* m_safety = nullptr;
+    TestRunPage* m_run = nullptr;
+    TestRunPage* m_beforeRun = nullptr;
     qint64 m_sessionId = 0;
 };
 

@@ -67,13 +67,6 @@ void addRow(QTableWidget* t, const QStringList& cells)
         t->setItem(r, c, new QTableWidgetItem(cells[c]));
 }
 
-std::vector<double> scaled(const std::vector<double>& v, double k)
-{
-    std::vector<double> out(v.size());
-    std::transform(v.begin(), v.end(), out.begin(), [k](double x) { return x * k; });
-    return out;
-}
-
 /// Boundary curve with k_i = 0 (no admissible k_i) as gaps.
 std::vector<double> gapsAtZero(const std::vector<double>& ki)
 {
@@ -91,23 +84,6 @@ double maxOf(const std::vector<double>& v)
         if (std::isfinite(x))
             m = std::max(m, x);
     return m;
-}
-
-/// First time the normalised response reaches `level` (linear interpolation), NaN if never.
-double crossing(const std::vector<double>& t, const std::vector<double>& y, double level)
-{
-    for (std::size_t i = 1; i < y.size(); ++i)
-        if (y[i - 1] < level && y[i] >= level)
-            return t[i - 1] + (level - y[i - 1]) / (y[i] - y[i - 1]) * (t[i] - t[i - 1]);
-    return std::nan("");
-}
-
-QString stepSummary(const std::vector<double>& t, const std::vector<double>& y)
-{
-    const double rise = crossing(t, y, 0.9) - crossing(t, y, 0.1);
-    return QCoreApplication::translate("CurrentLoopWizard", "overshoot %1 %, 10–90 % rise time %2 µs")
-        .arg(std::max(0.0, maxOf(y) - 1.0) * 100.0, 0, 'f', 1)
-        .arg(rise * 1e6, 0, 'f', 1);
 }
 
 } // namespace
@@ -591,148 +567,6 @@ bool CurrentLoopDesignPage::validatePage()
         m_d.fineDelayFree.push_back(tuning::delayFreeStep(m_d.motor, c->alpha, c->gains, t));
     }
     return true;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Step responses
-
-CurrentLoopStepPage::CurrentLoopStepPage(AppContext& ctx, CurrentLoopData& shared, ApplyPage* apply, QWidget* parent)
-    : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
-{
-    setTitle(tr("Current loop: step responses"));
-    setSubTitle(tr("The delay-free design model against the prediction with the drive's current-loop period "
-                   "(zero-order hold) and dead time."));
-    auto* lay = new QVBoxLayout(this);
-    m_plot = new widgets::CurvePlot(this);
-    m_plot->setObjectName("clStepPlot");
-    m_plot->setAxes(tr("Time"), QString::fromUtf8("µs"), tr("Current / command"), "1");
-    lay->addWidget(m_plot, 1);
-    m_text = new QLabel(this);
-    m_text->setObjectName("clStepText");
-    m_text->setWordWrap(true);
-    lay->addWidget(m_text);
-}
-
-void CurrentLoopStepPage::initializePage()
-{
-    m_plot->clear();
-    const auto* c = m_d.chosen();
-    if (!c)
-        return;
-    const auto& s = m_d.step;
-    const auto tUs = scaled(s.timeS, 1e6);
-    m_plot->addCurve(tr("Delay-free design"), scaled(m_d.fineTimeS, 1e6), m_d.fineDelayFree, QColor(0, 90, 180));
-    m_plot->addCurve(tr("Prediction: period %1 µs + dead time %2 µs")
-                         .arg(m_d.drivePeriodS * 1e6, 0, 'f', 1)
-                         .arg(m_d.driveDeadTimeS * 1e6, 0, 'f', 1),
-                     tUs, s.discrete, QColor(200, 90, 0));
-    m_plot->rescale();
-    m_text->setText(
-        tr("Delay-free: %1. With the delay: %2.\nNo measured current step: the drive offers no current-step "
-           "test (its tests are velocity step, jog, hold and frequency response). A velocity step is not "
-           "a measurement of the current loop — the current settles within about one velocity-loop period "
-           "of the trace — so none is shown here.")
-            .arg(stepSummary(m_d.fineTimeS, m_d.fineDelayFree), stepSummary(s.timeS, s.discrete)));
-    if (m_ctx.drive().isConnected() && !m_d.axis.isEmpty()) {
-        model::ParameterValues v{
-            {"current.kp", c->gains.kpVPerA}, {"current.ki", c->gains.kiVPerAs}, {"current.alpha", c->alpha}};
-        m_apply->setProposal(m_d.axis, v);
-        m_ctx.setProposed(m_d.axis, v);
-    }
-}
-
-int CurrentLoopStepPage::nextId() const
-{
-    return m_ctx.drive().isConnected() && !m_d.axis.isEmpty() ? CurrentLoopWizard::Apply : CurrentLoopWizard::Save;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Verify
-
-CurrentLoopVerifyPage::CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& shared, ApplyPage* apply,
-                                             QWidget* parent)
-    : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
-{
-    setTitle(tr("Current loop: verification"));
-    setSubTitle(tr("The gains read back from the drive and the step predicted with them (period and dead time of the "
-                   "drive), against the design."));
-    auto* lay = new QVBoxLayout(this);
-    m_plot = new widgets::CurvePlot(this);
-    m_plot->setObjectName("clVerifyPlot");
-    m_plot->setAxes(tr("Time"), QString::fromUtf8("µs"), tr("Current / command"), "1");
-    lay->addWidget(m_plot, 1);
-    m_text = new QLabel(this);
-    m_text->setObjectName("clVerifyText");
-    m_text->setWordWrap(true);
-    lay->addWidget(m_text);
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id != m_readRequest)
-            return;
-        m_readRequest = 0;
-        if (!r.ok) {
-            m_text->setText(tr("Reading back failed: %1").arg(r.error));
-            emit completeChanged();
-            return;
-        }
-        auto get = [&](const char* k) {
-            auto it = r.values.find(k);
-            return it == r.values.end() ? std::nan("") : it->second;
-        };
-        m_d.readKp = get("current.kp");
-        m_d.readKi = get("current.ki");
-        m_d.readAlpha = get("current.alpha");
-        m_d.drivePeriodS = get("current.period");
-        m_d.driveDeadTimeS = get("current.dead_time");
-        m_d.verified = true;
-        showResult();
-        emit completeChanged();
-    });
-}
-
-void CurrentLoopVerifyPage::initializePage()
-{
-    m_plot->clear();
-    m_d.verified = false;
-    if (!m_apply->applied()) {
-        m_text->setText(tr("Not applied: nothing to verify."));
-        return;
-    }
-    m_text->setText(tr("Reading back…"));
-    m_readRequest = m_ctx.drive().readParameters(
-        m_d.axis, {"current.kp", "current.ki", "current.alpha", "current.period", "current.dead_time"});
-}
-
-void CurrentLoopVerifyPage::showResult()
-{
-    const auto* c = m_d.chosen();
-    if (!c)
-        return;
-    const double dur = std::max(20.0 * c->riseTimeS, 40.0 * m_d.drivePeriodS);
-    m_d.verifyStep = tuning::stepResponses(m_d.motor, m_d.readAlpha, {m_d.readKi, m_d.readKp}, m_d.driveDeadTimeS,
-                                           m_d.drivePeriodS, dur);
-    const auto& s = m_d.verifyStep;
-    const auto tUs = scaled(s.timeS, 1e6);
-    m_plot->addCurve(tr("Design (delay-free, proposed gains)"), scaled(m_d.fineTimeS, 1e6), m_d.fineDelayFree,
-                     QColor(0, 90, 180));
-    m_plot->addCurve(tr("Prediction with the read-back gains"), tUs, s.discrete, QColor(200, 90, 0));
-    m_plot->rescale();
-    m_d.verifyOvershoot = std::max(0.0, maxOf(s.discrete) - 1.0);
-    m_d.verifyRiseS = crossing(s.timeS, s.discrete, 0.9) - crossing(s.timeS, s.discrete, 0.1);
-    const bool same = std::abs(m_d.readKp - c->gains.kpVPerA) <= 1e-6 * std::abs(c->gains.kpVPerA) + 1e-9 &&
-                      std::abs(m_d.readKi - c->gains.kiVPerAs) <= 1e-6 * std::abs(c->gains.kiVPerAs) + 1e-9 &&
-                      std::abs(m_d.readAlpha - c->alpha) <= 1e-9;
-    m_text->setText(tr("Read back: k_p %1 V/A, k_i %2 V/(A·s), α %3 — %4.\nPredicted step with them: %5.\nNo measured "
-                       "current step: the drive offers no current-step test.")
-                        .arg(m_d.readKp, 0, 'f', 3)
-                        .arg(m_d.readKi, 0, 'g', 6)
-                        .arg(m_d.readAlpha, 0, 'f', 2)
-                        .arg(same ? tr("as proposed") : tr("NOT as proposed"))
-                        .arg(stepSummary(s.timeS, s.discrete)));
-}
-
-bool CurrentLoopVerifyPage::isComplete() const
-{
-    return m_readRequest == 0;
 }
 
 } // namespace gui

@@ -60,6 +60,8 @@ QString testName(const device::TestRequest& r)
         return QCoreApplication::translate("TestRunPage", "frequency response (%1)").arg(qs(device::frfMethodName(r.frfMethod)));
     case device::TestType::Circle:
         return QCoreApplication::translate("TestRunPage", "circle of %1 and %2").arg(qs(r.axis), qs(r.secondAxis));
+    case device::TestType::CurrentStep:
+        return QCoreApplication::translate("TestRunPage", "current step");
     }
     return {};
 }

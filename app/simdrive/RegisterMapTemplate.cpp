@@ -65,11 +65,12 @@ std::string simRegisterMapJson()
     add("test.freq_count", 203, "u16", 1, "frf: number of frequencies");
     add("test.trace_channel_mask", 204, "u32", 2, "bit i: keep trace channel i (0: all)");
     add("test.amplitude", 206, "f64", 4,
-        "step: motor velocity step [rad/s]; frf: excitation amplitude [% of rated torque]");
+        "step: motor velocity step [rad/s]; current_step: q-axis current step [A]; frf: excitation amplitude [% "
+        "of rated torque]");
     add("test.distance", 210, "f64", 4, "jog: distance [m or rad]");
     add("test.velocity", 214, "f64", 4, "jog: velocity [m/s or rad/s]");
     add("test.acceleration", 218, "f64", 4, "jog: acceleration [m/s^2 or rad/s^2]");
-    add("test.duration", 222, "f64", 4, "step/hold: length; jog: dwell before and after [s]");
+    add("test.duration", 222, "f64", 4, "step/hold/current_step: recording length; jog: dwell before and after [s]");
     add("test.offset", 226, "f64", 4, "excitation offset (reserved)");
     add("test.freq_start", 230, "f64", 4, "frf: lowest frequency [Hz]");
     add("test.freq_end", 234, "f64", 4, "frf: highest frequency [Hz]");
@@ -107,7 +108,7 @@ std::string simRegisterMapJson()
           {"drive_fault", 6},
           {"aborted", 7}}},
         {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}}},
-        {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}, {"circle", 5}}},
+        {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}, {"current_step", 4}, {"circle", 5}}},
         {"circle_direction", {{"ccw", 0}, {"cw", 1}}},
         {"frf_method", {{"multisweep", 0}, {"conventional", 1}, {"prbs", 2}}},
         {"test_flag", {{"return_to_start", 1}}},

@@ -32,7 +32,24 @@ enum class TestType {
     Hold,  ///< position hold for duration [s]
     Frf,   ///< frequency response: torque injection in the closed velocity loop (FrfTest.h)
     Circle, ///< ball-bar circle of two axes together (CircleDriveTest.h, docs/ballbar.md)
+    /// q-axis current step (docs/simulator.md "Current-step test"): velocity and position loops open, the
+    /// current command steps from 0 to `amplitude` [A] 10 % into the recording and holds; `durationS` is the
+    /// recording length, traced at every current-loop period (fs = 1/current.period). Afterwards the axis
+    /// holds its position again. Refused above kMaxCurrentStepFraction of motor.max_current, beyond
+    /// kMaxCurrentStepS, or when the step would take the motor past kMaxCurrentStepSpeedRadS.
+    CurrentStep,
 };
+
+/// Largest current step as a fraction of motor.max_current.
+inline constexpr double kMaxCurrentStepFraction = 0.5;
+/// Longest current-step recording [s].
+inline constexpr double kMaxCurrentStepS = 0.05;
+/// Largest motor speed a current step may reach [rad/s], estimated as k_t·|I|·t / J_m with the rotor inertia
+/// alone: the motor accelerates freely while the velocity loop is open (about 190 min⁻¹).
+inline constexpr double kMaxCurrentStepSpeedRadS = 20.0;
+/// After a current-step record the axis holds its position this long before the test completes [s], so the
+/// next test starts at rest.
+inline constexpr double kCurrentStepHoldS = 0.3;
 
 /// Excitation and analysis of an FRF test (docs/frequency-response-sim.md).
 enum class FrfMethod {
@@ -47,12 +64,12 @@ const char* frfMethodName(FrfMethod m);
 struct TestRequest {
     std::string axis;
     TestType type = TestType::Step;
-    double amplitude = 0.0;     ///< Step: velocity step [rad/s]
+    double amplitude = 0.0;     ///< Step: velocity step [rad/s]; CurrentStep: q-axis current step [A]
     double distance = 0.0;      ///< Jog: [m] or [rad]
     double velocity = 0.0;      ///< Jog: [m/s] or [rad/s]
     double acceleration = 0.0;  ///< Jog: [m/s²] or [rad/s²]
     bool returnToStart = false; ///< Jog: move back (a reversal)
-    double durationS = 0.1;     ///< Step/Hold: recording length; Jog: dwell before and after
+    double durationS = 0.1;     ///< Step/Hold/CurrentStep: recording length; Jog: dwell before and after
     int traceDivider = 0;       ///< 0: the drive's trace.divider parameter
     // Frf (durationS is not used: the length follows from the plan).
     FrfMethod frfMethod = FrfMethod::MultiSweep;

@@ -413,6 +413,7 @@ Status ModbusDrive::startTest(const TestRequest& request)
                        : request.type == TestType::Jog  ? "jog"
                        : request.type == TestType::Hold ? "hold"
                        : request.type == TestType::Circle ? "circle"
+                       : request.type == TestType::CurrentStep ? "current_step"
                                                         : "frf";
     const int code = m_map.code("test_type", type);
     if (code < 0)

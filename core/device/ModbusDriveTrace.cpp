@@ -4,6 +4,9 @@
 #include "core/device/ModbusDrive.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <modbus/modbus.h>
 #include <sstream>
 
@@ -35,12 +38,18 @@ Result<std::string> ModbusDrive::readText(int unit, std::uint16_t channel)
 Result<model::Capture> ModbusDrive::readTrace()
 {
     const int unit = m_testUnit >= 0 ? m_testUnit : m_map.unitIdBase;
+    // Samples, channels and rate in one read (status.trace_samples .. status.trace_rate_hz).
     const auto& fs = m_map.field("status.trace_samples");
-    std::vector<std::uint16_t> r(3);
-    if (auto st = readRegs(unit, fs.address, 3, r.data(), "reading the trace size"); !st)
+    const auto& fc = m_map.field("status.trace_channels");
+    const auto& fr = m_map.field("status.trace_rate_hz");
+    const int lo = std::min({fs.address, fc.address, fr.address});
+    const int hi = std::max({fs.address + fs.count, fc.address + fc.count, fr.address + fr.count});
+    std::vector<std::uint16_t> r(static_cast<std::size_t>(hi - lo));
+    if (auto st = readRegs(unit, lo, hi - lo, r.data(), "reading the trace size"); !st)
         return st.error();
-    const std::uint32_t samples = decodeU32(r.data(), m_map.wordOrder);
-    const int channels = r[2];
+    const std::uint32_t samples = decodeU32(&r[static_cast<std::size_t>(fs.address - lo)], m_map.wordOrder);
+    const int channels = r[static_cast<std::size_t>(fc.address - lo)];
+    const double rateHz = decodeF64(&r[static_cast<std::size_t>(fr.address - lo)], m_map.wordOrder);
     if (samples == 0 || channels == 0)
         return makeError(ErrorCode::NotFound, m_uri.text + ": no trace: no test has completed");
     model::Capture cap;
@@ -56,6 +65,17 @@ Result<model::Capture> ModbusDrive::readTrace()
     for (std::string line; std::getline(ms, line);) {
         if (auto eq = line.find('='); eq != std::string::npos)
             cap.metadata[line.substr(0, eq)] = line.substr(eq + 1);
+    }
+    // The trace's rate: the velocity-loop divider or, for a current step, the current-loop rate.
+    if (!cap.metadata.count("fs_Hz") && rateHz > 0.0) {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.17g", rateHz);
+        cap.metadata["fs_Hz"] = buf;
+    } else if (cap.metadata.count("fs_Hz")) {
+        const double meta = std::strtod(cap.metadata["fs_Hz"].c_str(), nullptr);
+        if (!(std::abs(meta - rateHz) <= 1e-9 * std::abs(rateHz)))
+            return makeError(ErrorCode::Device, m_uri.text + ": trace metadata says fs_Hz=" + cap.metadata["fs_Hz"] +
+                                                    " but status.trace_rate_hz is " + std::to_string(rateHz) + " Hz");
     }
     if (static_cast<int>(cap.channels.size()) != channels)
         return makeError(ErrorCode::Device, m_uri.text + ": trace lists " + std::to_string(cap.channels.size()) +

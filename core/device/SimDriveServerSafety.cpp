@@ -56,6 +56,17 @@ int SimDriveServer::startTest(int ui)
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog velocity means " + num(motorSpeed) +
                                                                    " rad/s at the motor, above the speed limit " +
                                                                    num(lim.speedLimitRadS) + " rad/s");
+    } else if (type == "current_step") {
+        // The drive's own excitation limit in % of rated torque holds for the current step too; the
+        // embedded drive adds its limits (fraction of max current, record length, speed reached).
+        req.type = TestType::CurrentStep;
+        const double ratedTorque = ax.sim->parameter("motor.rated_current") * ax.sim->parameter("motor.torque_constant");
+        const double torque = std::abs(c.amplitude) * ax.sim->parameter("motor.torque_constant");
+        if (!(torque <= lim.amplitudeLimitPct / 100.0 * ratedTorque))
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
+                          "current step " + num(c.amplitude) + " A means " + num(torque) + " Nm, above the drive's limit " +
+                              num(lim.amplitudeLimitPct) + " % of the rated torque (" +
+                              num(lim.amplitudeLimitPct / 100.0 * ratedTorque) + " Nm)");
     } else if (type == "frf") {
         req.type = TestType::Frf;
         const std::string method = m_map.name("frf_method", c.frfMethod);

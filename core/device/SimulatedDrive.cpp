@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Current-step test (TestType::CurrentStep): the q-axis current loop of spec/current-loop-and-multisweep-frf.md
+// §1.2, §2.3 stepped with the velocity loop open; docs/simulator.md "Current-step test".
 #include "core/device/SimulatedDrive.h"
 
 #include "core/device/ModbusDrive.h"
@@ -6,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 namespace axistune::device {
@@ -155,6 +158,7 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     m_frfPlan.reset();
     m_multisinePlan.reset();
     m_frf.reset();
+    m_recordEnd = -1.0;
     switch (request.type) {
     case TestType::Step: {
         const double maxSpeed = 2.0 * std::numbers::pi * 6000.0 / 60.0;
@@ -197,8 +201,18 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     }
     case TestType::Circle:  // started by startCircle above
         break;
+    case TestType::CurrentStep: {
+        auto len = startCurrentStep(sim, request);
+        if (!len) {
+            (void)sim.setParameters(m_backup);
+            return len.error();
+        }
+        length = *len;
+        break;
     }
-    sim.startTrace();
+    }
+    if (request.type != TestType::CurrentStep)
+        sim.startTrace();
     m_request = request;
     m_active = &sim;
     m_startTime = sim.time();  // for Frf: aligned to the first trace sample
@@ -214,12 +228,15 @@ Result<TestStatus> SimulatedDrive::pollTest()
         return pollCircle();
     if (m_status.state != TestState::Running || !m_active)
         return m_status;
-    const double remaining = m_endTime - m_active->time();
+    const double remaining = (m_recordEnd >= 0.0 ? m_recordEnd : m_endTime) - m_active->time();
     m_active->run(std::min(m_slice, std::max(0.0, remaining)));
+    if (m_recordEnd >= 0.0 && m_active->time() >= m_recordEnd - 0.5 * m_active->currentPeriod())
+        endCurrentStepRecord();
     const double total = m_endTime - m_startTime;
     m_status.progress = std::clamp((m_active->time() - m_startTime) / total, 0.0, 1.0);
     if (m_active->time() >= m_endTime - 0.5 * m_active->currentPeriod()) {
-        m_trace = m_active->takeTrace();
+        if (!m_trace)  // a current step took its trace at the end of its record
+            m_trace = m_active->takeTrace();
         m_trace->metadata["machine"] = m_machine.name;
         m_active->setVelocityCommand({});
         m_active->setTorqueInjection({});
@@ -368,13 +385,80 @@ Status SimulatedDrive::abortTest()
     m_active->stopTrace();
     m_active->setVelocityCommand({});
     m_active->setTorqueInjection({});
+    m_active->setCurrentCommand({});
     m_active->setControlMode(sim::ControlMode::Velocity);
     (void)m_active->setParameters(m_backup);
+    m_recordEnd = -1.0;
     m_frfPlan.reset();
     m_multisinePlan.reset();
     m_status = {TestState::Aborted, m_status.progress, "aborted by the user"};
     m_active = nullptr;
     return Status::success();
+}
+
+Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const TestRequest& r)
+{
+    const auto& v = sim.parameters();
+    const double iMax = v.at("motor.max_current"), kt = v.at("motor.torque_constant"), j = v.at("plant.inertia_motor");
+    const double limitA = kMaxCurrentStepFraction * iMax;
+    char buf[320];
+    if (!std::isfinite(r.amplitude) || r.amplitude == 0.0 || std::abs(r.amplitude) > limitA) {
+        std::snprintf(buf, sizeof buf,
+                      "current step %g A refused: it must be finite, non-zero and at most %g %% of motor.max_current "
+                      "(%g A)",
+                      r.amplitude, 100.0 * kMaxCurrentStepFraction, limitA);
+        return makeError(ErrorCode::OutOfRange, buf);
+    }
+    if (!std::isfinite(r.durationS) || !(r.durationS > 0.0) || r.durationS > kMaxCurrentStepS) {
+        std::snprintf(buf, sizeof buf, "current-step recording %g s refused: it must lie in (0, %g] s", r.durationS,
+                      kMaxCurrentStepS);
+        return makeError(ErrorCode::OutOfRange, buf);
+    }
+    const double h = sim.currentPeriod();
+    const auto ticks = std::llround(r.durationS / h);
+    const auto preTicks = std::max<long long>(1, std::llround(0.1 * r.durationS / h));
+    if (ticks < preTicks + 2) {
+        std::snprintf(buf, sizeof buf, "current-step recording %g s refused: shorter than a few current periods (%g s)",
+                      r.durationS, h);
+        return makeError(ErrorCode::OutOfRange, buf);
+    }
+    // With the velocity loop open the motor accelerates freely: k_t·|I|·t / J_m at the end of the record, with
+    // the rotor inertia alone (a motor datum; the coupled load can only make it slower).
+    const double stepS = static_cast<double>(ticks - preTicks) * h;
+    const double speed = j > 0.0 ? kt * std::abs(r.amplitude) * stepS / j : std::numeric_limits<double>::infinity();
+    if (!(speed <= kMaxCurrentStepSpeedRadS)) {
+        std::snprintf(buf, sizeof buf,
+                      "current step %g A for %g s refused: the motor would reach about %.3g rad/s (k_t·I·t/J_m with the "
+                      "rotor inertia J_m %g kg·m²), above the %g rad/s a current step may reach; lower or shorten it",
+                      r.amplitude, stepS, speed, j, kMaxCurrentStepSpeedRadS);
+        return makeError(ErrorCode::OutOfRange, buf);
+    }
+    // The record starts on a whole current tick; the step comes preTicks later and holds to the end.
+    const double t0 = sim.time();
+    const double tStep = t0 + static_cast<double>(preTicks) * h;
+    const double amp = r.amplitude, half = 0.5 * h;
+    sim.setControlMode(sim::ControlMode::Current);
+    sim.setCurrentCommand([tStep, amp, half](double t) { return t >= tStep - half ? amp : 0.0; });
+    sim.startTrace(sim::TraceRate::Current);
+    m_clampsAtStart = sim.voltageClampCount();
+    m_recordEnd = t0 + static_cast<double>(ticks) * h;
+    std::snprintf(buf, sizeof buf, "%.17g", tStep);
+    m_stepStart = buf;
+    return static_cast<double>(ticks) * h + kCurrentStepHoldS;
+}
+
+void SimulatedDrive::endCurrentStepRecord()
+{
+    m_recordEnd = -1.0;
+    m_trace = m_active->takeTrace();
+    m_trace->metadata["test"] = "current_step";
+    m_trace->metadata["step_start_s"] = m_stepStart;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", m_request ? m_request->amplitude : 0.0);
+    m_trace->metadata["step_amplitude_A"] = buf;
+    m_trace->metadata["voltage_clamped_ticks"] = std::to_string(m_active->voltageClampCount() - m_clampsAtStart);
+    m_active->setCurrentCommand({});
+    m_active->holdPosition();
 }
 
 }  // namespace axistune::device

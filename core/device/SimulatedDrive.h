@@ -45,6 +45,10 @@ private:
     Status startCircle(const TestRequest& request);
     Result<TestStatus> pollCircle();
     void abortCircle(const std::string& why);
+    /// Checks and installs a current step (TestType::CurrentStep); returns the test length [s] (record and hold).
+    Result<double> startCurrentStep(sim::AxisSimulator& sim, const TestRequest& request);
+    /// Current step: at the end of the record, takes the trace and closes the position loop again.
+    void endCurrentStepRecord();
 
     sim::MachineDefinition m_machine;
     std::map<std::string, std::unique_ptr<sim::AxisSimulator>> m_axes;
@@ -62,6 +66,8 @@ private:
     std::uint64_t m_clampsAtStart = 0;  ///< voltage clamps of the current loop before a multisine test
     std::optional<FrfMeasurement> m_frf;
     std::shared_ptr<CircleState> m_circle;  ///< the running circle test
+    double m_recordEnd = -1.0;  ///< current step: machine time the record ends and the hold begins (< 0: none)
+    std::string m_stepStart;    ///< current step: machine time of the step, as capture metadata
 };
 
 }  // namespace axistune::device

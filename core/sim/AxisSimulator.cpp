@@ -189,6 +189,7 @@ void AxisSimulator::reset(double position)
     m_profileStart = 0.0;
     m_trace.clear();
     m_tracing = false;
+    m_traceRate = TraceRate::Velocity;
 }
 
 void AxisSimulator::setPositionProfile(MotionProfile profile)
@@ -274,6 +275,12 @@ void AxisSimulator::velocityTick(double t)
         enc += m_p.noisePosition * m_gauss(m_rng);
     m_velMeas = (enc - m_prevEncoder) / tv;
     m_prevEncoder = enc;
+    if (m_mode == ControlMode::Current) {
+        // Velocity and position loops open: only the measurement runs; runTicks takes the current command.
+        m_velCmd = 0.0;
+        ++m_velTick;
+        return;
+    }
 
     if (m_mode == ControlMode::Position && m_velTick % m_posDiv == 0) {
         double fb = screwLead() * enc;
@@ -300,7 +307,7 @@ void AxisSimulator::velocityTick(double t)
         m_velInt += m_p.velKi * tv * m_intDiv * e;
     m_torqueCmd = m_p.velKp * e + m_velInt + m_torqueFf;
 
-    if (m_tracing && m_velTick % m_traceDiv == 0) {
+    if (m_tracing && m_traceRate == TraceRate::Velocity && m_velTick % m_traceDiv == 0) {
         const double row[] = {t,
                               m_velCmd,
                               m_velMeas,
@@ -331,12 +338,16 @@ void AxisSimulator::runTicks(std::int64_t ticks)
         m_injectionNow = m_injection ? m_injection(t) : 0.0;
         if (m_tick % m_velDiv == 0)
             velocityTick(t);
-        double iCmd = m_filters.process(m_torqueCmd + m_injectionNow) / kt;
+        const bool currentMode = m_mode == ControlMode::Current;
+        double iCmd = currentMode ? (m_currentCommand ? m_currentCommand(t) : 0.0)
+                                  : m_filters.process(m_torqueCmd + m_injectionNow) / kt;
         if (std::abs(iCmd) > iMax) {
             iCmd = sgn(iCmd) * iMax;
             ++m_currentLimitCount;
         }
         m_currentCmd = iCmd;
+        if (currentMode)
+            m_torqueCmd = kt * iCmd;  // what the current command means as torque (status, safety checks)
         const double iMeas = PlantModel::current(m_x) + (noiseI > 0.0 ? noiseI * m_gauss(m_rng) : 0.0);
         m_currentInt += ki * m_hCurrent * (iCmd - iMeas);
         const double prop = kp * (alpha * iCmd - iMeas);
@@ -353,6 +364,13 @@ void AxisSimulator::runTicks(std::int64_t ticks)
             m_delayLine.pop_front();
         }
         m_voltage = applied;
+        if (m_tracing && m_traceRate == TraceRate::Current) {
+            // State at the start of the period: the command and voltage of this period, the current measured
+            // for it (detection noise included), the velocity loop's last measurement.
+            const double row[] = {t, iCmd, iMeas, applied, m_velMeas, torque()};
+            for (std::size_t c = 0; c < m_trace.size(); ++c)
+                m_trace[c].push_back(row[c]);
+        }
         const double load = m_loadTorque ? m_loadTorque(t) : 0.0;
         m_plant->step(m_x, applied, -frictionMotor(), load - frictionLoad(), m_nl.inductanceDrop);
         ++m_tick;
@@ -369,18 +387,37 @@ std::vector<std::string> AxisSimulator::traceChannelNames() const
             "motor_pos_" + u, "table_pos_" + u,   "lost_motion_comp_" + u, "load_vel_rad_s"};
 }
 
-void AxisSimulator::startTrace()
+std::vector<std::string> AxisSimulator::currentTraceChannelNames()
 {
-    m_trace.assign(traceChannelNames().size(), {});
+    return {"t_s", "current_cmd_A", "current_A", "voltage_V", "motor_vel_rad_s", "torque_Nm"};
+}
+
+void AxisSimulator::startTrace(TraceRate rate)
+{
+    m_traceRate = rate;
+    m_trace.assign(rate == TraceRate::Current ? currentTraceChannelNames().size() : traceChannelNames().size(), {});
     m_tracing = true;
+}
+
+void AxisSimulator::holdPosition()
+{
+    const double pos = m_p.fullClosed ? tablePosition() : motorPosition();
+    m_mode = ControlMode::Position;
+    m_profile = MotionProfile(pos);
+    m_positionCommand = nullptr;
+    m_profileStart = time();
+    m_posCmd = m_posFeedback = pos;
+    m_velInt = m_velCmd = m_velCmdFromPos = m_torqueFf = m_torqueCmd = 0.0;
+    m_filters.reset();
 }
 
 model::Capture AxisSimulator::takeTrace()
 {
     model::Capture cap;
-    const auto names = traceChannelNames();
+    const bool currentRate = m_traceRate == TraceRate::Current;
+    const auto names = currentRate ? currentTraceChannelNames() : traceChannelNames();
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", 1.0 / tracePeriod());
+    std::snprintf(buf, sizeof buf, "%.17g", 1.0 / (currentRate ? m_hCurrent : tracePeriod()));
     cap.metadata["fs_Hz"] = buf;
     cap.metadata["axis"] = m_def.name;
     std::snprintf(buf, sizeof buf, "%.17g", m_hCurrent);
@@ -392,6 +429,7 @@ model::Capture AxisSimulator::takeTrace()
         cap.channels.push_back({names[c], std::move(m_trace[c])});
     m_trace.clear();
     m_tracing = false;
+    m_traceRate = TraceRate::Velocity;
     return cap;
 }
 

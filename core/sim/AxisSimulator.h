@@ -26,7 +26,11 @@ namespace axistune::sim {
 enum class ControlMode {
     Velocity,  ///< velocity command from setVelocityCommand, position loop open
     Position,  ///< position command from setPositionProfile
+    Current,   ///< q-axis current command from setCurrentCommand; velocity and position loops open
 };
+
+/// Rate of the trace recorder: every trace.divider velocity periods, or every current-loop period.
+enum class TraceRate { Velocity, Current };
 
 /// Switches for the non-ideal parts. All on by default; tests turn them off to see the linear part.
 struct Nonlinearities {
@@ -64,6 +68,13 @@ public:
     /// Arbitrary position command (axis units) as a function of time since this call, sampled at the
     /// position-loop rate; used instead of the profile while set (an empty function clears it).
     void setPositionCommand(std::function<MotionState(double)> fn);
+    /// Current command [A] as a function of time for ControlMode::Current, sampled at the current-loop rate and
+    /// limited to motor.max_current; no torque filters and no injection act on it.
+    void setCurrentCommand(std::function<double(double)> fn) { m_currentCommand = std::move(fn); }
+    /// The drive's normal holding mode: position loop closed at the present feedback position (motor encoder,
+    /// or the load in full-closed mode), velocity integrator and torque filters cleared. Used after a
+    /// current-command test, when the velocity loop was open and the motor still moves.
+    void holdPosition();
     /// Torque added to the torque command [N·m] before the filters, sampled at the current-loop rate.
     void setTorqueInjection(std::function<double(double)> fn) { m_injection = std::move(fn); }
     /// External torque on the load side [N·m] (e.g. a cutting force on the table times the lead R; positive
@@ -77,6 +88,8 @@ public:
     double time() const { return static_cast<double>(m_tick) * m_hCurrent; }
     double currentPeriod() const { return m_hCurrent; }
     double velocityPeriod() const { return m_hCurrent * m_velDiv; }
+    /// Period of the velocity-rate trace (trace.divider velocity periods); a TraceRate::Current trace is
+    /// recorded every currentPeriod().
     double tracePeriod() const { return velocityPeriod() * m_traceDiv; }
     std::uint64_t voltageClampCount() const { return m_clampCount; }
     std::uint64_t currentLimitCount() const { return m_currentLimitCount; }
@@ -89,14 +102,17 @@ public:
     double torqueCommand() const { return m_torqueCmd; }
     double positionCommand() const { return m_posCmd; }
 
-    /// Trace recording: every `trace.divider` velocity periods while enabled.
-    void startTrace();
+    /// Trace recording while enabled: every `trace.divider` velocity periods (TraceRate::Velocity), or every
+    /// current-loop period (TraceRate::Current, channels currentTraceChannelNames()).
+    void startTrace(TraceRate rate = TraceRate::Velocity);
     void stopTrace() { m_tracing = false; }
     /// The recorded trace as a capture (channels in SI, metadata fs_Hz, axis, preset-free details).
     model::Capture takeTrace();
 
     /// Names of the trace channels for this axis kind, in capture order.
     std::vector<std::string> traceChannelNames() const;
+    /// Names of the channels of a TraceRate::Current trace, in capture order.
+    static std::vector<std::string> currentTraceChannelNames();
 
 private:
     AxisSimulator(AxisDefinition def, std::uint64_t seed);
@@ -143,6 +159,7 @@ private:
     std::function<double(double)> m_velocityCommand;
     std::function<double(double)> m_injection;
     std::function<double(double)> m_loadTorque;
+    std::function<double(double)> m_currentCommand;
     MotionProfile m_profile;
     std::function<MotionState(double)> m_positionCommand;
     double m_profileStart = 0.0;
@@ -171,6 +188,7 @@ private:
 
     // Trace.
     bool m_tracing = false;
+    TraceRate m_traceRate = TraceRate::Velocity;
     std::vector<std::vector<double>> m_trace;
 };
 

@@ -2,6 +2,7 @@
 // axistune-cli capture over modbus:// against the axistune-simdrive binary: the same FRF as the
 // embedded sim: drive with the same seed, and a clean exit 3 naming the lost connection when the
 // server is killed in the middle of a multi-sweep.
+#include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
 #include "tests/app/cli/CliRunner.h"
 #include "tests/app/cli/SimDriveProcess.h"
@@ -88,3 +89,34 @@ TEST(ModbusCapture, ServerKilledMidMultiSweepExitsThreeNamingTheLostConnection)
 }
 
 }  // namespace
+
+// capture --test current-step against the axistune-simdrive binary: the current-rate trace (16 kHz)
+// equals the embedded drive's with the same seed; a step beyond the drive's limit exits 2 with its message.
+TEST(ModbusCapture, CurrentStepOverModbusEqualsTheEmbeddedDrive)
+{
+    SimDrive srv("--preset vmc --seed 5");
+    ASSERT_GT(srv.port(), 0) << srv.log();
+    const auto dir = makeTempDir("modbus-current-step");
+    const auto remote = (dir / "remote.csv").string(), local = (dir / "local.csv").string();
+    const std::string args = " --axis X --test current-step --amplitude 5 --duration 0.003 --seed 5 --out ";
+    auto r = runCli("capture --connect " + srv.uri() + args + remote);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = runCli("capture --connect sim:vmc" + args + local);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto a = io::readCaptureCsvFile(remote);
+    auto b = io::readCaptureCsvFile(local);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(b->metadata.at("fs_Hz"), "16000");
+    EXPECT_EQ(a->metadata.at("fs_Hz"), "16000");
+    ASSERT_EQ(b->size(), 48u); // 3 ms at 62.5 µs
+    ASSERT_EQ(a->channels.size(), b->channels.size());
+    for (std::size_t c = 0; c < b->channels.size(); ++c) {
+        EXPECT_EQ(a->channels[c].name, b->channels[c].name);
+        EXPECT_EQ(a->channels[c].data, b->channels[c].data) << b->channels[c].name;
+    }
+    r = runCli("capture --connect " + srv.uri() + " --axis X --test current-step --amplitude 45 --duration 0.003 --out " +
+               remote);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("at most 50 % of motor.max_current (40 A)"), std::string::npos) << r.err;
+    std::filesystem::remove_all(dir);
+}

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <gtest/gtest.h>
 #include <modbus/modbus.h>
 #include <mutex>
@@ -421,4 +422,111 @@ TEST(ModbusDrive, FrfAmplitudeAboveTheDriveLimitIsRefused)
     EXPECT_NE(st.error().detail.find("excitation amplitude 5 % of the rated torque above the drive's limit 2 %"),
               std::string::npos)
         << st.error().detail;
+}
+
+// Current step (TestType::CurrentStep) over Modbus: the trace at the current-loop rate, read back at
+// the rate the drive reports (status.trace_rate_hz), equal to the embedded drive's trace bit for bit.
+TEST(ModbusDrive, CurrentStepOverModbusIsTheEmbeddedTrace)
+{
+    ServerThread srv(options("vmc"));
+    auto remote = open(srv.uri());
+    auto local = open("sim:vmc");
+    ASSERT_TRUE(remote && local);
+    TestRequest r;
+    r.axis = "Y";
+    r.type = TestType::CurrentStep;
+    r.amplitude = 4.0;
+    r.durationS = 0.005;
+    for (Drive* d : {remote.get(), local.get()}) {
+        ASSERT_TRUE(d->startTest(r).ok());
+        auto s = finish(*d);
+        ASSERT_TRUE(s.ok()) << s.error().detail;
+        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
+    }
+    auto tr = remote->readTrace();
+    auto tl = local->readTrace();
+    ASSERT_TRUE(tr.ok()) << tr.error().detail;
+    ASSERT_TRUE(tl.ok());
+    EXPECT_EQ(tl->size(), 80u); // 5 ms at 62.5 µs
+    EXPECT_EQ(tl->metadata.at("fs_Hz"), "16000");
+    EXPECT_EQ(tr->metadata, tl->metadata);
+    ASSERT_EQ(tr->channels.size(), tl->channels.size());
+    for (std::size_t c = 0; c < tl->channels.size(); ++c) {
+        EXPECT_EQ(tr->channels[c].name, tl->channels[c].name);
+        EXPECT_EQ(tr->channels[c].data, tl->channels[c].data) << tl->channels[c].name;
+    }
+    // The raw status register says the same rate.
+    RawClient raw(srv.port(), 2);
+    std::uint16_t w[4];
+    ASSERT_EQ(modbus_read_registers(raw.ctx, 116, 4, w), 4);
+    std::uint64_t bits = 0;
+    for (int k = 0; k < 4; ++k)
+        bits = (bits << 16) | w[k];
+    double rate;
+    std::memcpy(&rate, &bits, sizeof rate);
+    EXPECT_EQ(rate, 16000.0);
+}
+
+TEST(ModbusDrive, CurrentStepRefusedByTheDriveAndByTheServer)
+{
+    auto o = options("vmc");
+    o.safety.amplitudeLimitPct = 20.0; // 20 % of 15.3 A · 0.50911 N·m/A = 1.558 N·m → at most 3.06 A
+    ServerThread srv(o);
+    auto d = open(srv.uri());
+    ASSERT_TRUE(d);
+    TestRequest r;
+    r.axis = "X";
+    r.type = TestType::CurrentStep;
+    r.amplitude = 4.0;
+    r.durationS = 0.002;
+    auto st = d->startTest(r);
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
+    EXPECT_NE(st.error().detail.find("current step 4 A means 2.036 Nm, above the drive's limit 20 %"), std::string::npos)
+        << st.error().detail;
+    // Inside the server's limit but beyond the record length of the drive: the drive's own message.
+    r.amplitude = 3.0;
+    r.durationS = 0.06;
+    st = d->startTest(r);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().detail.find("(0, 0.05] s"), std::string::npos) << st.error().detail;
+    r.durationS = 0.001; // short: the velocity loop brakes the motor afterwards below the 20 % too
+    ASSERT_TRUE(d->startTest(r).ok());
+    auto s = finish(*d);
+    ASSERT_TRUE(s.ok());
+    EXPECT_EQ(s->state, TestState::Completed) << s->detail;
+}
+
+// A second client after a first one (a new CLI process, a reconnect of the GUI) continues the drive's
+// command-token sequence: its start_test runs a new test instead of being answered as a retry of the
+// first client's command (which left the first test's trace in place).
+TEST(ModbusDrive, ANewClientRunsItsOwnTestNotTheLastClientsRetry)
+{
+    ServerThread srv(options("vmc"));
+    {
+        auto first = open(srv.uri());
+        ASSERT_TRUE(first);
+        ASSERT_TRUE(first->startTest(step("X", 5.0, 0.02)).ok());
+        auto s = finish(*first);
+        ASSERT_TRUE(s.ok() && s->state == TestState::Completed);
+    }
+    auto second = open(srv.uri());
+    ASSERT_TRUE(second);
+    TestRequest r;
+    r.axis = "X";
+    r.type = TestType::CurrentStep;
+    r.amplitude = 3.0;
+    r.durationS = 0.002;
+    ASSERT_TRUE(second->startTest(r).ok());
+    auto s = finish(*second);
+    ASSERT_TRUE(s.ok() && s->state == TestState::Completed);
+    auto t = second->readTrace();
+    ASSERT_TRUE(t.ok()) << t.error().detail;
+    EXPECT_EQ(t->metadata.at("fs_Hz"), "16000"); // the current step's trace, not the velocity step's (4000)
+    EXPECT_EQ(t->size(), 32u);
+    // And a refusal reaches the second client too.
+    r.amplitude = 45.0;
+    auto st = second->startTest(r);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().detail.find("40 A"), std::string::npos) << st.error().detail;
 }
