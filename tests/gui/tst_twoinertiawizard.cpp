@@ -11,6 +11,7 @@
 // conventional"; the thesis bench reached 0.086×). A second wizard takes the response from the saved
 // session.
 #include "app/gui/AppContext.h"
+#include "app/gui/Report.h"
 #include "app/gui/TwoInertiaWizard.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
@@ -196,6 +197,11 @@ private slots:
             applied = applied || (ps.source == store::ParameterSource::Applied && ps.values.count("suppression.f0") &&
                                   ps.values.at("suppression.f0") == proposedF0);
         QVERIFY(filterKept && verified && applied);
+        // The report's summary names the filter with its frequency and the verification's load error.
+        const QString html = SessionReport::build(*rec).html();
+        QVERIFY(html.contains(QCoreApplication::translate("SessionReport", "Suppression filter")));
+        QVERIFY(html.contains(QString::number(proposedF0, 'f', 3)));
+        QVERIFY(html.contains(QString::number(measuredLoad * 180.0 / std::numbers::pi, 'f', 3)));
 
         // The same response from the saved session gives the same fit.
         TwoInertiaWizard w2(ctx);
