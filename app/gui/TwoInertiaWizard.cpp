@@ -109,6 +109,8 @@ TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : QWizard(p
            "loop (the axis oscillates about its position). Before and after applying the filter: one move with "
            "the profile's speed, acceleration and jerk (it does not return to the start)."));
     m_safety->setLimitKeys({"velocity.kp", "velocity.ki", "motor.rated_current"});
+    // Measured here: safety → FRF run. From a session: filter → safety (the session's axis) → profile.
+    m_safety->setNextIdFunction([this] { return m_data.fromSession ? int(BeforeRun) : int(Run); });
     m_run = new TestRunPage(ctx, this);
     m_run->setObjectName("tiRunPage");
     m_run->setRequestFactory([this] {
@@ -149,6 +151,10 @@ TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : QWizard(p
     setPage(Verify, verify);
     setPage(Save, save);
     setStartId(Source);
+    connect(this, &QWizard::currentIdChanged, this, [this](int id) {
+        if (id == Filter)
+            m_safety->setAxes(m_data.fromSession ? QStringList{m_data.axis} : QStringList{});
+    });
     connect(m_run, &TestRunPage::runFinished, this, [this](bool ok) {
         if (!ok)
             saveSession(true, m_run->failure());

@@ -533,8 +533,10 @@ void TwoInertiaFilterPage::update()
 
 int TwoInertiaFilterPage::nextId() const
 {
-    return m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis) ? TwoInertiaWizard::BeforeRun
-                                                                          : TwoInertiaWizard::Save;
+    if (!m_ctx.drive().isConnected() || !m_ctx.axes().contains(m_d.axis))
+        return TwoInertiaWizard::Save;
+    // A response from a session skipped the safety page: confirm the profile's motion there first.
+    return m_d.fromSession ? TwoInertiaWizard::Safety : TwoInertiaWizard::BeforeRun;
 }
 
 // ---------------------------------------------------------------------------------------------

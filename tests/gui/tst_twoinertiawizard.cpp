@@ -216,6 +216,16 @@ private slots:
         QVERIFY(waitUntil([&] { return w2.fitPage()->isComplete(); }, 30000));
         const double f0Again = tuning::antiresonanceRadS(w2.data().fit->params) / kTwoPi;
         QVERIFY2(std::abs(f0Again - gotF0) < 1e-6, qPrintable(QString("%1 vs %2").arg(f0Again).arg(gotF0)));
+        // The session path skipped the safety page: before the profile moves the axis it asks there,
+        // for the session's axis only, and goes on to the profile.
+        w2.next();
+        QCOMPARE(w2.currentId(), int(TwoInertiaWizard::Filter));
+        QVERIFY(waitUntil([&] { return w2.filterPage()->isComplete(); }, 10000));
+        w2.next();
+        QCOMPARE(w2.currentId(), int(TwoInertiaWizard::Safety));
+        QCOMPARE(w2.safetyPage()->axis(), QString("A"));
+        QVERIFY(!w2.safetyPage()->isComplete());
+        QCOMPARE(w2.safetyPage()->nextId(), int(TwoInertiaWizard::BeforeRun));
     }
 };
 
