@@ -5,6 +5,7 @@
 #include "core/sim/SuppressionFilter.h"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
