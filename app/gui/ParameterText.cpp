@@ -49,6 +49,10 @@ const char* const kLabels[] = {
     QT_TRANSLATE_NOOP("Parameter", "Lost-motion coefficient B"),
     QT_TRANSLATE_NOOP("Parameter", "Ball-screw length offset x0"),
     QT_TRANSLATE_NOOP("Parameter", "Trace divider (of the velocity period)"),
+    QT_TRANSLATE_NOOP("Parameter", "Vibration-suppression filter (0 off, 1 semi-closed F_m, 2 full-closed F_L)"),
+    QT_TRANSLATE_NOOP("Parameter", "Suppression filter frequency f0"),
+    QT_TRANSLATE_NOOP("Parameter", "Suppression filter damping zeta"),
+    QT_TRANSLATE_NOOP("Parameter", "F_L time constant tau"),
 };
 // clang-format on
 }  // namespace

@@ -251,7 +251,36 @@ struct Builder {
         row(QCoreApplication::translate("SessionReport", "Notes"),
             i.note.empty() ? none : esc(i.note).replace('\n', QStringLiteral("<br>")));
         row(QCoreApplication::translate("SessionReport", "AxisTune version"), esc(i.appVersion));
+        suppressionRows(row);
         html += QStringLiteral("</table>");
+    }
+
+    /// The two-inertia wizard's vibration-suppression filter and the load error of its verification.
+    template <class Row> void suppressionRows(Row& row)
+    {
+        constexpr double deg = 180.0 / 3.14159265358979323846;
+        for (const auto& r : rec.results) {
+            const auto& d = r.data;
+            auto num = [&d](const char* k) { return d.contains(k) && d[k].is_number() ? d[k].get<double>() : 0.0; };
+            if (r.name == "filter" && d.is_object() && d.contains("f0_Hz")) {
+                const bool full = d.value("mode", std::string()) == "full";
+                QString text = (full ? QCoreApplication::translate("SessionReport", "F_L (full-closed)")
+                                     : QCoreApplication::translate("SessionReport", "F_m (semi-closed)")) +
+                               QCoreApplication::translate("SessionReport", ": f₀ %1 Hz, ζ %2")
+                                   .arg(num("f0_Hz"), 0, 'f', 3)
+                                   .arg(num("zeta"), 0, 'f', 4);
+                if (full)
+                    text += QCoreApplication::translate("SessionReport", ", τ %1 ms").arg(num("tau_s") * 1e3, 0, 'f', 2);
+                row(QCoreApplication::translate("SessionReport", "Suppression filter"), text);
+            }
+            if (r.name == "verification" && d.is_object() && d.contains("measured_max_load_error_rad"))
+                row(QCoreApplication::translate("SessionReport", "Maximum load error (verification)"),
+                    QCoreApplication::translate("SessionReport",
+                                                "measured %1° with the filter; predicted %2° without, %3° with it")
+                        .arg(num("measured_max_load_error_rad") * deg, 0, 'f', 3)
+                        .arg(num("predicted_max_load_error_without_filter_rad") * deg, 0, 'f', 3)
+                        .arg(num("predicted_max_load_error_with_filter_rad") * deg, 0, 'f', 3));
+        }
     }
 
     void plots()

@@ -31,6 +31,20 @@ const WizardRegistrar kRegistrar{"two-inertia", QT_TRANSLATE_NOOP("Wizards", "Tw
 
 }  // namespace
 
+device::TestRequest profileJog(const QString& axis, const tuning::MotionProfile& p)
+{
+    device::TestRequest r;
+    r.axis = axis.toStdString();
+    r.type = device::TestType::Jog;
+    r.distance = p.vMax * (tuning::sCurveRampS(p) + p.cruiseS);
+    r.velocity = p.vMax;
+    r.acceleration = p.aMax;
+    r.jerk = p.jerk;
+    r.returnToStart = false;  // a second move would start while the first still rings
+    r.durationS = p.settleS;
+    return r;
+}
+
 TwoInertiaSavePage::TwoInertiaSavePage(AppContext& ctx, TwoInertiaData& shared, ApplyPage* apply, QWidget* parent)
     : QWizardPage(parent), m_ctx(ctx), m_d(shared), m_apply(apply)
 {
@@ -66,8 +80,15 @@ void TwoInertiaSavePage::initializePage()
                              ? tr(", τ %1 ms").arg(m_d.filter.tauS * 1e3, 0, 'f', 2)
                              : QString());
     }
+    if (m_d.loadAfter.maxAbs > 0.0)
+        text += "\n" + tr("Maximum load error of the profile: measured %1° with the filter (%2° before the change); "
+                          "predicted %3° without and %4° with the filter.")
+                           .arg(m_d.loadAfter.maxAbs * 180.0 / std::numbers::pi, 0, 'f', 3)
+                           .arg(m_d.loadBefore.maxAbs * 180.0 / std::numbers::pi, 0, 'f', 3)
+                           .arg(m_d.predictedLoadWithout * 180.0 / std::numbers::pi, 0, 'f', 3)
+                           .arg(m_d.predictedLoadWith * 180.0 / std::numbers::pi, 0, 'f', 3);
     if (!m_ctx.drive().isConnected())
-        text += "\n" + tr("Not connected: applying the velocity PI and verifying with the profile need a connection.");
+        text += "\n" + tr("Not connected: applying the filter and verifying with the profile need a connection.");
     else if (!m_apply->applied())
         text += "\n" + tr("Not applied: the proposal is kept in the session.");
     text += "\n" + (w && w->savedSessionId() > 0 ? tr("Saved as session %1.").arg(w->savedSessionId())
@@ -85,9 +106,11 @@ TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : QWizard(p
     m_safety = new SafetyPage(ctx, this);
     m_safety->setMotionDescription(
         tr("Frequency response: a torque sine stream at the set amplitude is injected into the closed velocity "
-           "loop (the axis oscillates about its position). Verification: a jog with the profile's speed and "
-           "acceleration, and back to the start."));
+           "loop (the axis oscillates about its position). Before and after applying the filter: one move with "
+           "the profile's speed, acceleration and jerk (it does not return to the start)."));
     m_safety->setLimitKeys({"velocity.kp", "velocity.ki", "motor.rated_current"});
+    // Measured here: safety → FRF run. From a session: filter → safety (the session's axis) → profile.
+    m_safety->setNextIdFunction([this] { return m_data.fromSession ? int(BeforeRun) : int(Run); });
     m_run = new TestRunPage(ctx, this);
     m_run->setObjectName("tiRunPage");
     m_run->setRequestFactory([this] {
@@ -104,34 +127,34 @@ TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : QWizard(p
     m_fit = new TwoInertiaFitPage(ctx, m_data, m_run, this);
     m_apply = new ApplyPage(ctx, this);
     m_apply->setObjectName("tiApply");
-    auto* filter = new TwoInertiaFilterPage(ctx, m_data, m_apply, this);
+    m_filter = new TwoInertiaFilterPage(ctx, m_data, m_apply, this);
+    // The same profile before the change (the measured "without") and after it.
+    m_beforeRun = new TestRunPage(ctx, this);
+    m_beforeRun->setObjectName("tiBeforeRunPage");
+    m_beforeRun->setTitle(tr("Profile before the change"));
+    m_beforeRun->setRequestFactory(
+        [this] { return std::vector<device::TestRequest>{profileJog(m_data.axis, m_data.profile)}; });
     m_verifyRun = new TestRunPage(ctx, this);
     m_verifyRun->setObjectName("tiVerifyRunPage");
-    m_verifyRun->setRequestFactory([this] {
-        device::TestRequest r;
-        r.axis = m_data.axis.toStdString();
-        r.type = device::TestType::Jog;
-        const auto& p = m_data.profile;
-        // Reach the speed and cruise for 0.2 s, then come back: two accelerations and two decelerations.
-        r.distance = p.vMax * p.vMax / p.aMax + p.vMax * 0.2;
-        r.velocity = p.vMax;
-        r.acceleration = p.aMax;
-        r.returnToStart = true;
-        r.durationS = 0.3;
-        return std::vector<device::TestRequest>{r};
-    });
-    auto* verify = new TwoInertiaVerifyPage(m_data, m_verifyRun, this);
+    m_verifyRun->setRequestFactory(
+        [this] { return std::vector<device::TestRequest>{profileJog(m_data.axis, m_data.profile)}; });
+    auto* verify = new TwoInertiaVerifyPage(m_data, m_beforeRun, m_verifyRun, this);
     auto* save = new TwoInertiaSavePage(ctx, m_data, m_apply, this);
     setPage(Source, m_source);
     setPage(Safety, m_safety);
     setPage(Run, m_run);
     setPage(Fit, m_fit);
-    setPage(Filter, filter);
+    setPage(Filter, m_filter);
+    setPage(BeforeRun, m_beforeRun);
     setPage(Apply, m_apply);
     setPage(VerifyRun, m_verifyRun);
     setPage(Verify, verify);
     setPage(Save, save);
     setStartId(Source);
+    connect(this, &QWizard::currentIdChanged, this, [this](int id) {
+        if (id == Filter)
+            m_safety->setAxes(m_data.fromSession ? QStringList{m_data.axis} : QStringList{});
+    });
     connect(m_run, &TestRunPage::runFinished, this, [this](bool ok) {
         if (!ok)
             saveSession(true, m_run->failure());
@@ -160,8 +183,14 @@ void TwoInertiaWizard::saveSession(bool aborted, const QString& reason)
                   {"velocity_period_s", d.velocityPeriodS},
                   {"current_period_s", d.currentPeriodS},
                   {"mode", d.filter.mode == tuning::SuppressionMode::Full ? "full" : "semi"},
+                  {"position_feedback", d.feedback},
                   {"tau_s", d.tauS},
-                  {"profile", {{"vmax_rad_s", d.profile.vMax}, {"accel_rad_s2", d.profile.aMax}, {"jerk_rad_s3", d.profile.jerk}}}};
+                  {"profile",
+                   {{"vmax_rad_s", d.profile.vMax},
+                    {"accel_rad_s2", d.profile.aMax},
+                    {"jerk_rad_s3", d.profile.jerk},
+                    {"cruise_s", d.profile.cruiseS},
+                    {"settle_s", d.profile.settleS}}}};
     if (d.measured)
         rec.captures.push_back({"measured", store::frfAsCapture(*d.measured)});
     if (d.plant)
@@ -191,7 +220,9 @@ void TwoInertiaWizard::saveSession(bool aborted, const QString& reason)
                                {{"mode", d.filter.mode == tuning::SuppressionMode::Full ? "full" : "semi"},
                                 {"f0_Hz", d.filter.f0Hz},
                                 {"zeta", d.filter.zeta},
-                                {"tau_s", d.filter.tauS}},
+                                {"tau_s", d.filter.tauS},
+                                {"source", "model"},
+                                {"drive_parameters", d.proposal}},
                                {}});
         rec.results.push_back({"load_error",
                                {{"profile", rec.inputs["profile"]}},
@@ -210,20 +241,32 @@ void TwoInertiaWizard::saveSession(bool aborted, const QString& reason)
                                    {"delay_s", p.delayS},
                                    {"antiresonance_Hz", f0},
                                    {"resonance_Hz", fp}}});
-            rec.parameterSets.push_back({0, rec.info.axis, store::ParameterSource::Proposed, {}, "two-inertia wizard",
-                                         {{"velocity.kp", d.proposedPi.kpNmsPerRad},
-                                          {"velocity.ki", d.proposedPi.kiNmPerRad}}});
+            model::ParameterValues proposed = d.proposal;
+            proposed.insert({{"velocity.kp", d.proposedPi.kpNmsPerRad}, {"velocity.ki", d.proposedPi.kiNmPerRad}});
+            rec.parameterSets.push_back(
+                {0, rec.info.axis, store::ParameterSource::Proposed, {}, "two-inertia wizard", proposed});
         }
     }
+    if (d.beforeJog)
+        rec.captures.push_back({"before", *d.beforeJog});
     if (d.jog) {
         rec.captures.push_back({"verification", *d.jog});
         rec.results.push_back({"verification",
-                               {{"measured_max_twist_rad", d.measuredMaxTwist},
+                               {{"measured_max_load_error_rad", d.loadAfter.maxAbs},
+                                {"measured_before_max_load_error_rad", d.beforeJog ? nlohmann::json(d.loadBefore.maxAbs)
+                                                                                   : nlohmann::json()},
+                                {"predicted_max_load_error_without_filter_rad", d.predictedLoadWithout},
+                                {"predicted_max_load_error_with_filter_rad", d.predictedLoadWith},
+                                {"measured_max_twist_rad", d.measuredMaxTwist},
                                 {"predicted_max_twist_rad", d.predictedMaxTwist},
                                 {"ideal_tracking_max_twist_rad", d.idealMaxTwist}},
                                {{"t_s", d.verifyT},
                                 {"measured_twist_rad", d.measuredTwist},
-                                {"predicted_twist_rad", d.predictedTwist}}});
+                                {"predicted_twist_rad", d.predictedTwist},
+                                {"load_error_t_s", d.loadAfter.tS},
+                                {"load_error_rad", d.loadAfter.error},
+                                {"before_load_error_t_s", d.loadBefore.tS},
+                                {"before_load_error_rad", d.loadBefore.error}}});
     }
     if (m_apply->applied())
         rec.parameterSets.push_back(

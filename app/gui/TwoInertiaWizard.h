@@ -4,11 +4,12 @@
 // docs/wizards/two-inertia.md): the low-frequency response measured on the drive (closed velocity
 // loop, converted to the plant with the loop's PI) or taken from a saved session → two-inertia fit
 // (core/tuning TwoInertia) drawn over it with its residual, anti-resonance and resonance → F_m / F_L
-// settings and the predicted load error of an acceleration profile with and without the filter →
-// apply (the velocity PI of the thesis rule TI-5 on the fitted J_m; the simulated drive has no F_m/F_L
-// parameter, so the filter settings are shown for the NC and stored) → verify with a jog of the
-// profile's speed and acceleration (measured load − motor error against the prediction from the
-// measured motor motion) → save (session kind "two-inertia", model kind "two_inertia").
+// settings and the predicted load error of an acceleration profile with and without the filter → a jog
+// with the profile before the change (the measured "without") → apply (the filter suppression.*, mode
+// from the axis's position.feedback, with the velocity PI of the thesis rule TI-5 on the fitted J_m and
+// the feedforwards TI-3 needs) → verify with the same profile (measured load error y_L − y* against the
+// prediction with and without the filter; load − motor against the prediction from the measured motor
+// motion) → save (session kind "two-inertia", model kind "two_inertia").
 
 #include "app/gui/DriveController.h"
 #include "core/dsp/FrequencyResponse.h"
@@ -63,11 +64,22 @@ struct TwoInertiaData {
     tuning::MotionProfile profile;
     tuning::LoadErrorTraces loadError;
     tuning::VelocityPi proposedPi;
+    int feedback = -1;                 ///< the axis's position.feedback (0 semi, 1 full), -1 unknown
+    model::ParameterValues proposal;   ///< what the apply page writes (SI)
     // Verification (jog of the profile's speed and acceleration).
     std::shared_ptr<const model::Capture> jog;
     std::vector<double> verifyT, measuredTwist, predictedTwist;
     double measuredMaxTwist = 0.0, predictedMaxTwist = 0.0, idealMaxTwist = 0.0;
+    // Load error y_L − y* of the profile: measured before the apply (the drive's settings then) and
+    // after it (with the filter), predicted under ideal motor tracking without and with F_m.
+    std::shared_ptr<const model::Capture> beforeJog;
+    tuning::MeasuredLoadError loadBefore, loadAfter;
+    double predictedLoadWithout = 0.0, predictedLoadWith = 0.0;
 };
+
+/// The jog of the profile: one S-curve move (v_max, a_max, jerk) with profile.cruiseS at v_max, a dwell
+/// of profile.settleS before and after.
+device::TestRequest profileJog(const QString& axis, const tuning::MotionProfile& profile);
 
 class TwoInertiaSourcePage : public QWizardPage {
     Q_OBJECT
@@ -123,13 +135,16 @@ class TwoInertiaFilterPage : public QWizardPage {
 public:
     TwoInertiaFilterPage(AppContext& ctx, TwoInertiaData& data, ApplyPage* apply, QWidget* parent = nullptr);
     void initializePage() override;
+    bool isComplete() const override;
     int nextId() const override;
+    QComboBox* mode() const { return m_mode; }
 
 private:
     void update();
     AppContext& m_ctx;
     TwoInertiaData& m_d;
     ApplyPage* m_apply;
+    int m_readRequest = 0;
     QComboBox* m_mode = nullptr;
     QDoubleSpinBox* m_tau = nullptr;
     QDoubleSpinBox* m_vmax = nullptr;
@@ -143,11 +158,13 @@ private:
 class TwoInertiaVerifyPage : public QWizardPage {
     Q_OBJECT
 public:
-    TwoInertiaVerifyPage(TwoInertiaData& data, TestRunPage* run, QWidget* parent = nullptr);
+    TwoInertiaVerifyPage(TwoInertiaData& data, TestRunPage* before, TestRunPage* run, QWidget* parent = nullptr);
     void initializePage() override;
 
 private:
+    void loadError();
     TwoInertiaData& m_d;
+    TestRunPage* m_before;
     TestRunPage* m_run;
     widgets::CurvePlot* m_plot = nullptr;
     QLabel* m_result = nullptr;
@@ -169,7 +186,7 @@ private:
 class TwoInertiaWizard : public QWizard {
     Q_OBJECT
 public:
-    enum PageId { Source, Safety, Run, Fit, Filter, Apply, VerifyRun, Verify, Save };
+    enum PageId { Source, Safety, Run, Fit, Filter, BeforeRun, Apply, VerifyRun, Verify, Save };
 
     explicit TwoInertiaWizard(AppContext& ctx, QWidget* parent = nullptr);
 
@@ -178,6 +195,8 @@ public:
     SafetyPage* safetyPage() const { return m_safety; }
     TestRunPage* runPage() const { return m_run; }
     TwoInertiaFitPage* fitPage() const { return m_fit; }
+    TwoInertiaFilterPage* filterPage() const { return m_filter; }
+    TestRunPage* beforeRunPage() const { return m_beforeRun; }
     ApplyPage* applyPage() const { return m_apply; }
     TestRunPage* verifyRunPage() const { return m_verifyRun; }
     qint64 savedSessionId() const { return m_sessionId; }
@@ -192,6 +211,8 @@ private:
     SafetyPage* m_safety = nullptr;
     TestRunPage* m_run = nullptr;
     TwoInertiaFitPage* m_fit = nullptr;
+    TwoInertiaFilterPage* m_filter = nullptr;
+    TestRunPage* m_beforeRun = nullptr;
     ApplyPage* m_apply = nullptr;
     TestRunPage* m_verifyRun = nullptr;
     qint64 m_sessionId = 0;

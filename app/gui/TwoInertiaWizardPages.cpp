@@ -394,7 +394,7 @@ TwoInertiaFilterPage::TwoInertiaFilterPage(AppContext& ctx, TwoInertiaData& shar
     setTitle(tr("Suppression filter and predicted load error"));
     setSubTitle(tr("Semi-closed: F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) on the position command (5.7). Full-closed: "
                    "F_L = F_m/(τs + 1) on the velocity command (5.9). Start values from the model: f₀ and the zero "
-                   "damping ζ₀ (not ζ_p)."));
+                   "damping ζ₀ (not ζ_p). The drive's position.feedback decides which filter it runs."));
     auto* lay = new QHBoxLayout(this);
     auto* left = new QVBoxLayout;
     auto* form = new QFormLayout;
@@ -429,9 +429,35 @@ TwoInertiaFilterPage::TwoInertiaFilterPage(AppContext& ctx, TwoInertiaData& shar
     for (auto* s : {m_tau, m_vmax, m_accel, m_jerk})
         connect(s, &QDoubleSpinBox::valueChanged, this, &TwoInertiaFilterPage::update);
     connect(m_mode, &QComboBox::currentIndexChanged, this, &TwoInertiaFilterPage::update);
+    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+        if (r.id != m_readRequest)
+            return;
+        m_readRequest = 0;
+        auto it = r.values.find("position.feedback");
+        if (r.ok && it != r.values.end()) {
+            // The filter must match the feedback (the drive refuses F_m with full-closed and F_L with
+            // semi-closed feedback), so the mode follows the axis.
+            m_d.feedback = it->second >= 1.0 ? 1 : 0;
+            m_mode->setCurrentIndex(m_d.feedback);
+            m_mode->setEnabled(false);
+            m_mode->setToolTip(tr("Set by the axis's position.feedback"));
+        }
+        update();
+        emit completeChanged();
+    });
 }
 
-void TwoInertiaFilterPage::initializePage() { update(); }
+void TwoInertiaFilterPage::initializePage()
+{
+    m_mode->setEnabled(true);
+    m_mode->setToolTip(QString());
+    m_d.feedback = -1;
+    if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis))
+        m_readRequest = m_ctx.drive().readParameters(m_d.axis, {"position.feedback"});
+    update();
+}
+
+bool TwoInertiaFilterPage::isComplete() const { return m_readRequest == 0 && m_d.fit.has_value(); }
 
 void TwoInertiaFilterPage::update()
 {
@@ -460,6 +486,18 @@ void TwoInertiaFilterPage::update()
     m_plot->addCurve(tr("with F_m"), m_d.loadError.tS, b, QColor(0, 150, 60));
     m_plot->rescale();
     m_d.proposedPi = tuning::velocityPiFromInertia(p.jmKgm2, kTwoPi * 24.0, 10.0);
+    // The drive's filter (suppression.*) and the loop structure TI-3 needs for y_m ≈ y_m*: velocity
+    // feedforward and the torque feedforward J·a* with J = J_m + J_L of the fit (spec §4.10).
+    m_d.proposal = {{"velocity.kp", m_d.proposedPi.kpNmsPerRad},
+                    {"velocity.ki", m_d.proposedPi.kiNmPerRad},
+                    {"suppression.mode", mode == tuning::SuppressionMode::Full ? 2.0 : 1.0},
+                    {"suppression.f0", m_d.filter.f0Hz},
+                    {"suppression.zeta", m_d.filter.zeta},
+                    {"position.velocity_ff", 1.0},
+                    {"position.torque_ff", 1.0},
+                    {"velocity.inertia", p.jmKgm2 + p.jlKgm2}};
+    if (mode == tuning::SuppressionMode::Full)
+        m_d.proposal["suppression.tau"] = m_d.filter.tauS;
     m_table->setRowCount(0);
     addRow(m_table, {tr("Filter frequency f₀"), tr("%1 Hz").arg(m_d.filter.f0Hz, 0, 'f', 3)});
     addRow(m_table, {tr("Filter damping ζ"), QString::number(m_d.filter.zeta, 'f', 4)});
@@ -469,45 +507,114 @@ void TwoInertiaFilterPage::update()
     addRow(m_table, {tr("Velocity K_P (TI-5, ω_l 24 Hz, k 10)"),
                      QString::fromUtf8("%1 N·m·s/rad").arg(m_d.proposedPi.kpNmsPerRad, 0, 'f', 3)});
     addRow(m_table, {tr("Velocity K_I (TI-5)"), QString::fromUtf8("%1 N·m/rad").arg(m_d.proposedPi.kiNmPerRad, 0, 'f', 1)});
+    addRow(m_table, {tr("Drive filter suppression.mode"),
+                     mode == tuning::SuppressionMode::Full ? tr("2 (full-closed F_L)") : tr("1 (semi-closed F_m)")});
+    addRow(m_table, {tr("Torque feedforward inertia J_m + J_L"),
+                     QString::fromUtf8("%1 kg·m²").arg(p.jmKgm2 + p.jlKgm2, 0, 'g', 5)});
     m_table->resizeColumnsToContents();
-    m_result->setText(tr("Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, "
-                         "load through (5.6)). The drive has no F_m/F_L parameter: enter f₀, ζ (and τ) in the NC. "
-                         "The proposal applies the velocity PI of the thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m "
-                         "on the fitted J_m.")
-                          .arg(maxWithout, 0, 'f', 3)
-                          .arg(maxWith, 0, 'f', 3));
+    QString text = tr("Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, "
+                      "load through (5.6)).")
+                       .arg(maxWithout, 0, 'f', 3)
+                       .arg(maxWith, 0, 'f', 3);
+    if (mode == tuning::SuppressionMode::Full)
+        text += " " + tr("F_L acts inside the full-closed loop: the prediction with the filter is the semi-closed one.");
+    text += " " + tr("The proposal writes the filter to the drive (suppression.mode, f0, zeta%1), the velocity PI of the "
+                     "thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m on the fitted J_m, and the velocity and torque "
+                     "feedforward the method needs. The profile runs once before and once after the change.")
+                      .arg(mode == tuning::SuppressionMode::Full ? QStringLiteral(", tau") : QString());
+    if (m_d.feedback < 0)
+        text += " " + tr("Not connected to the axis: the mode is chosen here, and the settings are only stored.");
+    m_result->setText(text);
     if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis)) {
-        const model::ParameterValues proposal{{"velocity.kp", m_d.proposedPi.kpNmsPerRad},
-                                              {"velocity.ki", m_d.proposedPi.kiNmPerRad}};
-        m_apply->setProposal(m_d.axis, proposal);
-        m_ctx.setProposed(m_d.axis, proposal);
+        m_apply->setProposal(m_d.axis, m_d.proposal);
+        m_ctx.setProposed(m_d.axis, m_d.proposal);
     }
 }
 
 int TwoInertiaFilterPage::nextId() const
 {
-    return m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis) ? TwoInertiaWizard::Apply
-                                                                          : TwoInertiaWizard::Save;
+    if (!m_ctx.drive().isConnected() || !m_ctx.axes().contains(m_d.axis))
+        return TwoInertiaWizard::Save;
+    // A response from a session skipped the safety page: confirm the profile's motion there first.
+    return m_d.fromSession ? TwoInertiaWizard::Safety : TwoInertiaWizard::BeforeRun;
 }
 
 // ---------------------------------------------------------------------------------------------
 // Verify
 
-TwoInertiaVerifyPage::TwoInertiaVerifyPage(TwoInertiaData& shared, TestRunPage* run, QWidget* parent)
-    : QWizardPage(parent), m_d(shared), m_run(run)
+TwoInertiaVerifyPage::TwoInertiaVerifyPage(TwoInertiaData& shared, TestRunPage* before, TestRunPage* run,
+                                           QWidget* parent)
+    : QWizardPage(parent), m_d(shared), m_before(before), m_run(run)
 {
     setTitle(tr("Verify with the profile"));
-    setSubTitle(tr("A jog with the profile's speed and acceleration: the measured load − motor angle against the "
-                   "model's prediction from the measured motor motion (5.6)."));
+    setSubTitle(tr("The same profile as before the change, now with the filter: the measured load error y_L − y* "
+                   "against the prediction with and without the filter (ideal motor tracking), and the load − motor "
+                   "angle against the model's prediction from the measured motor motion (5.6)."));
     auto* lay = new QVBoxLayout(this);
     m_plot = new widgets::CurvePlot(this);
     m_plot->setObjectName("tiVerifyPlot");
-    m_plot->setAxes(tr("Time"), "s", tr("Load − motor"), QString::fromUtf8("°"));
+    m_plot->setAxes(tr("Time from the start of the move"), "s", tr("Load error y_L − y*"), QString::fromUtf8("°"));
     lay->addWidget(m_plot, 1);
     m_result = new QLabel(this);
     m_result->setObjectName("tiVerifyResult");
     m_result->setWordWrap(true);
+    m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
     lay->addWidget(m_result);
+}
+
+namespace {
+
+/// The load error of a profile jog's trace, with the time shifted to the start of the move.
+tuning::MeasuredLoadError jogLoadError(const model::Capture& c, double dwellS)
+{
+    const auto* t = c.channel("t_s");
+    const auto* cmd = c.channel("position_cmd_rad");
+    const auto* yl = c.channel("table_pos_rad");
+    if (!t || !cmd || !yl)
+        return {};
+    auto e = tuning::measuredLoadError(t->data, cmd->data, yl->data);
+    for (double& x : e.tS)
+        x -= dwellS;
+    return e;
+}
+
+std::vector<double> degrees(const std::vector<double>& rad)
+{
+    std::vector<double> out;
+    out.reserve(rad.size());
+    for (double v : rad)
+        out.push_back(v * kRadToDeg);
+    return out;
+}
+
+}  // namespace
+
+void TwoInertiaVerifyPage::loadError()
+{
+    auto params = m_d.fit->params;
+    params.delayS = 0.0;
+    tuning::SuppressionFilter fm = m_d.filter;
+    fm.mode = tuning::SuppressionMode::Semi;
+    const auto pred = tuning::predictLoadError(params, fm, m_d.profile);
+    m_d.predictedLoadWithout = pred.maxErrorWithoutFilter;
+    m_d.predictedLoadWith = pred.maxErrorWithFilter;
+    m_d.loadAfter = jogLoadError(*m_d.jog, m_d.profile.settleS);
+    m_d.loadBefore = {};
+    m_d.beforeJog.reset();
+    if (m_before->succeeded() && !m_before->replies().empty() && m_before->replies().front().capture) {
+        m_d.beforeJog = m_before->replies().front().capture;
+        m_d.loadBefore = jogLoadError(*m_d.beforeJog, m_d.profile.settleS);
+    }
+    const auto& pe = m_d.loadError;  // the filter page's prediction of the same profile
+    m_plot->addCurve(tr("predicted without the filter"), pe.tS, degrees(pe.withoutFilter), QColor(200, 60, 0),
+                     Qt::DashLine);
+    m_plot->addCurve(tr("predicted with the filter"), pe.tS, degrees(pe.withFilter), QColor(0, 150, 60), Qt::DashLine);
+    if (m_d.beforeJog)
+        m_plot->addCurve(tr("measured before the change"), m_d.loadBefore.tS, degrees(m_d.loadBefore.error),
+                         QColor(160, 120, 0));
+    m_plot->addCurve(tr("measured with the filter"), m_d.loadAfter.tS, degrees(m_d.loadAfter.error),
+                     QColor(0, 90, 200));
+    m_plot->rescale();
 }
 
 void TwoInertiaVerifyPage::initializePage()
@@ -517,6 +624,8 @@ void TwoInertiaVerifyPage::initializePage()
     m_d.verifyT.clear();
     m_d.measuredTwist.clear();
     m_d.predictedTwist.clear();
+    m_d.measuredMaxTwist = m_d.predictedMaxTwist = 0.0;
+    m_d.loadAfter = m_d.loadBefore = {};
     if (!m_run->succeeded() || m_run->replies().empty() || !m_run->replies().front().capture || !m_d.fit) {
         m_result->setText(tr("No verification run."));
         return;
@@ -526,39 +635,44 @@ void TwoInertiaVerifyPage::initializePage()
     const auto* ym = m_d.jog->channel("motor_pos_rad");
     const auto* vm = m_d.jog->channel("motor_vel_rad_s");
     const auto* yl = m_d.jog->channel("table_pos_rad");
-    if (!t || !ym || !vm || !yl) {
-        m_result->setText(tr("The trace lacks t_s, motor_pos_rad, motor_vel_rad_s or table_pos_rad (a rotary axis "
-                             "with a load encoder is needed)."));
+    if (!t || !ym || !vm || !yl || !m_d.jog->channel("position_cmd_rad")) {
+        m_result->setText(tr("The trace lacks t_s, position_cmd_rad, motor_pos_rad, motor_vel_rad_s or table_pos_rad "
+                             "(a rotary axis with a load encoder is needed)."));
         return;
     }
+    loadError();
     auto params = m_d.fit->params;
     params.delayS = 0.0;
     const auto pred = tuning::predictLoadFromMotor(params, t->data, ym->data, vm->data);
     const double off = yl->data.front() - ym->data.front();
-    std::vector<double> meas, pr;
     for (std::size_t i = 0; i < t->data.size(); ++i) {
         m_d.verifyT.push_back(t->data[i] - t->data.front());
         m_d.measuredTwist.push_back(yl->data[i] - ym->data[i] - off);
         m_d.predictedTwist.push_back(pred.empty() ? 0.0 : pred[i] - ym->data[i]);
-        meas.push_back(m_d.measuredTwist.back() * kRadToDeg);
-        pr.push_back(m_d.predictedTwist.back() * kRadToDeg);
         m_d.measuredMaxTwist = std::max(m_d.measuredMaxTwist, std::abs(m_d.measuredTwist.back()));
         m_d.predictedMaxTwist = std::max(m_d.predictedMaxTwist, std::abs(m_d.predictedTwist.back()));
     }
-    // The jog is a trapezoid: the S-curve with an (almost) infinite jerk, under ideal motor tracking.
-    tuning::MotionProfile trap = m_d.profile;
-    trap.jerk = 1e9;
+    // Load − motor under ideal motor tracking of the motor command (y* without the filter).
     const auto semi = tuning::suppressionFilterFromModel(params, tuning::SuppressionMode::Semi, 0.0);
-    m_d.idealMaxTwist = tuning::predictLoadError(params, semi, trap).maxErrorWithoutFilter;
-    m_plot->addCurve(tr("measured"), m_d.verifyT, meas, QColor(0, 90, 200));
-    m_plot->addCurve(tr("predicted from the motor motion"), m_d.verifyT, pr, QColor(200, 60, 0), Qt::DashLine);
-    m_plot->rescale();
-    m_result->setText(tr("Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°, "
-                         "predicted for ideal motor tracking of the trapezoid %3°. Without an F_m/F_L parameter in the "
-                         "drive this is the unfiltered case; the filtered case needs the filter in the NC.")
-                          .arg(m_d.measuredMaxTwist * kRadToDeg, 0, 'f', 3)
-                          .arg(m_d.predictedMaxTwist * kRadToDeg, 0, 'f', 3)
-                          .arg(m_d.idealMaxTwist * kRadToDeg, 0, 'f', 3));
+    m_d.idealMaxTwist = tuning::predictLoadError(params, semi, m_d.profile).maxErrorWithoutFilter;
+    QString text = tr("Maximum load error y_L − y* of the profile: measured with the filter %1°; predicted (ideal "
+                      "motor tracking) %2° without and %3° with the filter.")
+                       .arg(m_d.loadAfter.maxAbs * kRadToDeg, 0, 'f', 3)
+                       .arg(m_d.predictedLoadWithout * kRadToDeg, 0, 'f', 3)
+                       .arg(m_d.predictedLoadWith * kRadToDeg, 0, 'f', 3);
+    if (m_d.beforeJog)
+        text += " " + tr("Measured before the change: %1° (ratio with/before %2).")
+                          .arg(m_d.loadBefore.maxAbs * kRadToDeg, 0, 'f', 3)
+                          .arg(m_d.loadBefore.maxAbs > 0.0 ? m_d.loadAfter.maxAbs / m_d.loadBefore.maxAbs : 0.0, 0,
+                               'f', 3);
+    if (m_d.predictedLoadWithout > 0.0)
+        text += " " + tr("Measured with the filter / predicted without: %1 (the thesis reached 0.086, its criterion "
+                         "for a working filter is at most 0.2).")
+                          .arg(m_d.loadAfter.maxAbs / m_d.predictedLoadWithout, 0, 'f', 3);
+    text += "\n" + tr("Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°.")
+                       .arg(m_d.measuredMaxTwist * kRadToDeg, 0, 'f', 3)
+                       .arg(m_d.predictedMaxTwist * kRadToDeg, 0, 'f', 3);
+    m_result->setText(text);
 }
 
 }  // namespace gui

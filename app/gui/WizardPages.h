@@ -59,9 +59,12 @@ public:
 
     QString axis() const;
     QCheckBox* confirmation() const { return m_confirm; }
+    /// The page after this one (default: the next page id), for wizards that confirm a later motion here.
+    void setNextIdFunction(std::function<int()> fn) { m_nextIdFn = std::move(fn); }
 
     void initializePage() override;
     bool isComplete() const override;
+    int nextId() const override { return m_nextIdFn ? m_nextIdFn() : QWizardPage::nextId(); }
 
 private:
     void showLimits();
@@ -76,6 +79,7 @@ private:
     int m_metaRequest = 0;
     int m_readRequest = 0;
     std::vector<model::ParameterMeta> m_metas;
+    std::function<int()> m_nextIdFn;
 };
 
 class TestRunPage : public QWizardPage {

@@ -69,6 +69,7 @@ struct TestRequest {
     double velocity = 0.0;      ///< Jog: [m/s] or [rad/s]
     double acceleration = 0.0;  ///< Jog: [m/s²] or [rad/s²]
     bool returnToStart = false; ///< Jog: move back (a reversal)
+    double jerk = 0.0;          ///< Jog: jerk limit [m/s³] or [rad/s³] (rectangular jerk); 0 = trapezoid
     double durationS = 0.1;     ///< Step/Hold/CurrentStep: recording length; Jog: dwell before and after
     int traceDivider = 0;       ///< 0: the drive's trace.divider parameter
     // Frf (durationS is not used: the length follows from the plan).

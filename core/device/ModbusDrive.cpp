@@ -444,6 +444,8 @@ Status ModbusDrive::startTest(const TestRequest& request)
     encodeF64(request.velocity, o, at("test.velocity"));
     encodeF64(request.acceleration, o, at("test.acceleration"));
     encodeF64(request.durationS, o, at("test.duration"));
+    if (request.type == TestType::Jog)
+        encodeF64(request.jerk, o, at("test.amplitude"));  // jog: the jerk limit (0: trapezoid)
     if (request.type == TestType::Frf) {
         const char* method = request.frfMethod == FrfMethod::Prbs           ? "prbs"
                              : request.frfMethod == FrfMethod::Conventional ? "conventional"

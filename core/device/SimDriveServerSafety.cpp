@@ -47,6 +47,7 @@ int SimDriveServer::startTest(int ui)
                                                                    num(lim.speedLimitRadS) + " rad/s");
     } else if (type == "jog" || type == "hold") {
         req.type = type == "jog" ? TestType::Jog : TestType::Hold;
+        req.jerk = type == "jog" ? c.amplitude : 0.0;  // test.amplitude carries a jog's jerk limit
         const double target = ax.sim->positionCommand() + (type == "jog" ? c.distance : 0.0);
         if (ax.kind == "linear" && std::abs(target) > lim.travelLimit)
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
@@ -143,7 +144,7 @@ void SimDriveServer::checkSafety()
     const std::string type = m_map.name("test_type", m_config[static_cast<std::size_t>(m_testUnit)].type);
     const bool positionTest = type == "jog" || type == "hold" || type == "circle"; // the position loop is closed only there
     const double followingError =
-        positionTest ? s.positionCommand() - (fullClosed ? s.tablePosition() : s.motorPosition()) : 0.0;
+        positionTest ? s.loopPositionCommand() - (fullClosed ? s.tablePosition() : s.motorPosition()) : 0.0;
     const bool linear = ax.kind == "linear"; // rotary tables turn endlessly: no travel window
     if (m_opt.faults.driveFaultAfterS >= 0 && machineS >= m_opt.faults.driveFaultAfterS)
         trip("drive_fault", "drive fault injected " + num(machineS) + " s into the test (fault drive-fault)");

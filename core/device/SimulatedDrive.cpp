@@ -172,11 +172,13 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     case TestType::Jog: {
         if (!(request.velocity > 0.0) || !(request.acceleration > 0.0) || !std::isfinite(request.distance))
             return makeError(ErrorCode::OutOfRange, "jog needs a positive velocity and acceleration and a finite distance");
+        if (!(request.jerk >= 0.0) || !std::isfinite(request.jerk))
+            return makeError(ErrorCode::OutOfRange, "jog jerk must be finite and >= 0 (0: trapezoid)");
         sim::MotionProfile p(start);
         p.dwell(request.durationS);
-        p.move(request.distance, request.velocity, request.acceleration);
+        p.move(request.distance, request.velocity, request.acceleration, request.jerk);
         if (request.returnToStart)
-            p.move(-request.distance, request.velocity, request.acceleration);
+            p.move(-request.distance, request.velocity, request.acceleration, request.jerk);
         p.dwell(request.durationS);
         sim.setControlMode(sim::ControlMode::Position);
         sim.setPositionProfile(p);

@@ -78,6 +78,14 @@ std::vector<Def> buildDefs(AxisKind kind)
     }
     // Tracing.
     d.push_back({P("trace.divider", "Trace divider (of the velocity period)", "1", "1", 1, 1000, "trace", true, false, true), 1});
+    // Two-inertia vibration-suppression filter (spec/lost-motion-and-two-inertia.md §4.1, TI-3/TI-4), off
+    // by default: 1 = F_m on the position command (semi-closed feedback only), 2 = F_L on the velocity
+    // command of the position loop (full-closed feedback only).
+    d.push_back({P("suppression.mode", "Vibration-suppression filter (0 off, 1 semi-closed F_m, 2 full-closed F_L)", "1", "1",
+                   0, 2, "suppression", true, false, true), 0});
+    d.push_back({P("suppression.f0", "Suppression filter frequency f0", "Hz", "Hz", 1, 500, "suppression"), 20.0});
+    d.push_back({P("suppression.zeta", "Suppression filter damping zeta", "1", "1", 0, 1, "suppression"), 0.1});
+    d.push_back({P("suppression.tau", "F_L time constant tau", "s", "ms", 0, 0.1, "suppression"), 0.01});
 
     // Plant (the machine itself), read-only through the drive.
     d.push_back({P("plant.motor.resistance", "Armature resistance", "ohm", "ohm", 1e-4, 1e3, "plant", false), 0.32});

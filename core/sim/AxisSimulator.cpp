@@ -94,6 +94,26 @@ Status AxisSimulator::configure(const model::ParameterValues& v)
         filters.add(*b);
     }
 
+    SuppressionSettings sup;
+    sup.mode = static_cast<SuppressionFilterMode>(static_cast<int>(get("suppression.mode")));
+    sup.f0Hz = get("suppression.f0");
+    sup.zeta = get("suppression.zeta");
+    sup.tauS = get("suppression.tau");
+    if (auto st = checkSuppressionSettings(sup, get("position.feedback") >= 1.0, get("position.period")); !st)
+        return st;
+    FmCommandShaper fm;
+    dsp::Biquad fl;
+    if (sup.mode != SuppressionFilterMode::Off) {  // F_L's feedforward uses F_m's look-ahead too
+        if (auto st = fm.configure(sup.f0Hz, sup.zeta, get("position.period")); !st)
+            return st;
+    }
+    if (sup.mode == SuppressionFilterMode::FullClosedFl) {
+        auto b = designFlTustin(sup.f0Hz, sup.zeta, sup.tauS, get("position.period"));
+        if (!b)
+            return b.error();
+        fl = *b;
+    }
+
     PlantConfig pc;
     pc.resistanceOhm = get("plant.motor.resistance");
     pc.inductanceH = get("plant.motor.inductance_q");
@@ -157,6 +177,10 @@ Status AxisSimulator::configure(const model::ParameterValues& v)
         m_delayLine.assign(static_cast<std::size_t>(deadTicks), 0.0);
     }
     m_filters = filters;
+    // A new design starts from rest (writes are refused while a test moves the axis).
+    m_suppression = sup;
+    m_fm = fm;
+    m_fl = fl;
     if (rebuildPlant) {
         m_plant = std::make_unique<PlantModel>(pc, h);
         if (m_x.size() != m_plant->stateSize())
@@ -177,10 +201,12 @@ void AxisSimulator::reset(double position)
     m_rng.seed(m_seed);
     m_gauss.reset();
     m_filters.reset();
+    m_fm.reset();
+    m_fl.reset();
     m_delayLine.assign(static_cast<std::size_t>(m_deadTicks), 0.0);
     m_tick = m_velTick = 0;
     m_currentInt = m_velInt = m_torqueCmd = m_torqueFf = m_velCmd = m_velCmdFromPos = m_velMeas = 0.0;
-    m_posCmd = m_posFeedback = position;
+    m_posCmd = m_posFeedback = m_loopCmd = position;
     m_lmComp = m_lastDirection = m_currentCmd = m_voltage = m_injectionNow = 0.0;
     m_prevEncoder = quantize(m_plant->encoderAngle(m_x), m_p.encoderMotor);
     m_clampCount = m_currentLimitCount = 0;
@@ -246,8 +272,13 @@ double AxisSimulator::tablePosition() const { return screwLead() * m_plant->load
 
 void AxisSimulator::positionTick(double t, double feedbackPos)
 {
-    const MotionState s = m_positionCommand ? m_positionCommand(t - m_profileStart) : m_profile.at(t - m_profileStart);
-    m_posCmd = s.position;
+    const MotionState nc = m_positionCommand ? m_positionCommand(t - m_profileStart) : m_profile.at(t - m_profileStart);
+    // F_m: the semi-closed loop follows the motor command y_m* = F_m·y*; the trace keeps the NC (load)
+    // command y*. Full-closed: the loop follows y*, F_m·y* only gives the feedforward velocity.
+    const MotionState shaped = m_suppression.mode != SuppressionFilterMode::Off ? m_fm.process(nc) : nc;
+    const MotionState s = m_suppression.mode == SuppressionFilterMode::SemiClosedFm ? shaped : nc;
+    m_posCmd = nc.position;
+    m_loopCmd = s.position;
     m_posFeedback = feedbackPos;
     double comp = 0.0;
     if (m_def.kind == AxisKind::Linear) {
@@ -263,7 +294,13 @@ void AxisSimulator::positionTick(double t, double feedbackPos)
     }
     m_lmComp = comp;
     const double r = screwLead();
-    m_velCmdFromPos = (m_p.posKp * (s.position + comp - feedbackPos) + m_p.velFf * s.velocity) / r;
+    if (m_suppression.mode == SuppressionFilterMode::FullClosedFl) {
+        // F_L on the feedback velocity command; on the feedforward F_L·(τs + 1)·s·y* = s·F_m·y*: the
+        // command's look-ahead undoes F_L's lag τ, which would otherwise leave v*·τ of following error.
+        m_velCmdFromPos = (m_fl.process(m_p.posKp * (s.position + comp - feedbackPos)) + m_p.velFf * shaped.velocity) / r;
+    } else {
+        m_velCmdFromPos = (m_p.posKp * (s.position + comp - feedbackPos) + m_p.velFf * s.velocity) / r;
+    }
     m_torqueFf = m_p.torqueFf * m_p.inertiaFf * s.acceleration / r;
 }
 

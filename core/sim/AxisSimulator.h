@@ -14,6 +14,7 @@
 #include "core/sim/MachineDefinition.h"
 #include "core/sim/MotionProfile.h"
 #include "core/sim/PlantModel.h"
+#include "core/sim/SuppressionFilter.h"
 
 #include <cstdint>
 #include <deque>
@@ -101,6 +102,9 @@ public:
     double torque() const { return m_plant->config().torqueConstantNmPerA * PlantModel::current(m_x); }
     double torqueCommand() const { return m_torqueCmd; }
     double positionCommand() const { return m_posCmd; }
+    /// The command the position loop follows: y_m* = F_m·y* with suppression.mode 1, else y* (the
+    /// following error is taken against it).
+    double loopPositionCommand() const { return m_loopCmd; }
 
     /// Trace recording while enabled: every `trace.divider` velocity periods (TraceRate::Velocity), or every
     /// current-loop period (TraceRate::Current, channels currentTraceChannelNames()).
@@ -154,6 +158,10 @@ private:
     int m_traceDiv = 1;
     int m_deadTicks = 1;
     dsp::FilterCascade m_filters;
+    // Two-inertia suppression filter at the position-loop period (suppression.*; SuppressionFilter.h).
+    SuppressionSettings m_suppression;
+    FmCommandShaper m_fm;
+    dsp::Biquad m_fl;
 
     ControlMode m_mode = ControlMode::Velocity;
     std::function<double(double)> m_velocityCommand;
@@ -176,6 +184,7 @@ private:
     double m_velMeas = 0.0;
     double m_prevEncoder = 0.0;
     double m_posCmd = 0.0;
+    double m_loopCmd = 0.0;
     double m_posFeedback = 0.0;
     double m_lmComp = 0.0;
     double m_lastDirection = 0.0;

@@ -174,4 +174,41 @@ std::vector<double> predictLoadFromMotor(const TwoInertiaParams& p, std::span<co
     return out;
 }
 
+MeasuredLoadError measuredLoadError(std::span<const double> tS, std::span<const double> command,
+                                    std::span<const double> load, int standstillSamples)
+{
+    MeasuredLoadError out;
+    const std::size_t n = tS.size();
+    if (n < 2 || command.size() != n || load.size() != n || standstillSamples < 1)
+        return out;
+    const auto w = static_cast<std::size_t>(standstillSamples);
+    const double offset = load[0] - command[0];
+    for (std::size_t i = 0; i < n; ++i) {
+        bool fresh = i > 0 && command[i] != command[i - 1];
+        if (!fresh) {
+            const std::size_t lo = i >= w ? i - w : 0, hi = std::min(n - 1, i + w);
+            fresh = std::all_of(command.begin() + static_cast<std::ptrdiff_t>(lo),
+                                command.begin() + static_cast<std::ptrdiff_t>(hi) + 1,
+                                [&](double c) { return c == command[i]; });
+        }
+        if (!fresh)
+            continue;
+        out.tS.push_back(tS[i] - tS[0]);
+        out.error.push_back(load[i] - command[i] - offset);
+        out.maxAbs = std::max(out.maxAbs, std::abs(out.error.back()));
+    }
+    return out;
+}
+
+double sCurveRampS(const MotionProfile& prof)
+{
+    double tj = prof.aMax / prof.jerk;
+    double ta = prof.vMax / prof.aMax - tj;
+    if (ta < 0.0) {
+        tj = std::sqrt(prof.vMax / prof.jerk);
+        ta = 0.0;
+    }
+    return 2.0 * tj + ta;
+}
+
 }  // namespace axistune::tuning

@@ -45,4 +45,21 @@ LoadErrorTraces loadErrorTraces(const TwoInertiaParams& p, const SuppressionFilt
 std::vector<double> predictLoadFromMotor(const TwoInertiaParams& p, std::span<const double> tS,
                                          std::span<const double> motorPos, std::span<const double> motorVel);
 
+struct MeasuredLoadError {
+    std::vector<double> tS;     ///< from the first sample (0)
+    std::vector<double> error;  ///< y_L − y* minus its value at the first sample
+    double maxAbs = 0.0;
+};
+
+/// The load error y_L − y* of a traced move. A drive renews its position command once per position
+/// period and a trace sample between two renewals holds the old command while the load moves on, so
+/// only samples where the command is fresh are used: where it differs from the previous sample, or
+/// where it has not changed for `standstillSamples` samples on both sides (at rest). Empty on
+/// mismatched or too short inputs.
+MeasuredLoadError measuredLoadError(std::span<const double> tS, std::span<const double> command,
+                                    std::span<const double> load, int standstillSamples = 16);
+
+/// Duration of one rest-to-rest ramp (0 → v_max or back) of the S-curve of `profile`: 2·t_j + t_a.
+double sCurveRampS(const MotionProfile& profile);
+
 }  // namespace axistune::tuning
