@@ -146,7 +146,7 @@
 <context>
     <name>CurrentLoopWizard</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="108" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="44" />
         <source>overshoot %1 %, 10–90 % rise time %2 µs</source>
         <translation>オーバーシュート %1 %、10–90 % 立ち上がり時間 %2 µs</translation>
     </message>
@@ -515,6 +515,26 @@
         <source>Trace divider (of the velocity period)</source>
         <translation>トレース分周比 (速度ループ周期の倍数)</translation>
     </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="52" />
+        <source>Vibration-suppression filter (0 off, 1 semi-closed F_m, 2 full-closed F_L)</source>
+        <translation>振動抑制フィルタ (0 なし、1 セミクローズド F_m、2 フルクローズド F_L)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="53" />
+        <source>Suppression filter frequency f0</source>
+        <translation>振動抑制フィルタの周波数 f0</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="54" />
+        <source>Suppression filter damping zeta</source>
+        <translation>振動抑制フィルタの減衰比 zeta</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="55" />
+        <source>F_L time constant tau</source>
+        <translation>F_L の時定数 tau</translation>
+    </message>
 </context>
 <context>
     <name>PlotExport</name>
@@ -590,23 +610,23 @@
 <context>
     <name>SessionFrf</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="76" />
-        <location filename="../app/gui/WizardPages.cpp" line="81" />
+        <location filename="../app/gui/WizardPages.cpp" line="80" />
+        <location filename="../app/gui/WizardPages.cpp" line="85" />
         <source>Loading session %1 failed: %2</source>
         <translation>セッション %1 の読み込みに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="78" />
+        <location filename="../app/gui/WizardPages.cpp" line="82" />
         <source>no store is open</source>
         <translation>データベースが開かれていません</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="89" />
+        <location filename="../app/gui/WizardPages.cpp" line="93" />
         <source>Session %1 holds no frequency response.</source>
         <translation>セッション %1 に周波数応答はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="92" />
+        <location filename="../app/gui/WizardPages.cpp" line="96" />
         <source>Session %1, capture %2: %3</source>
         <translation>セッション %1、計測データ %2: %3</translation>
     </message>
@@ -690,7 +710,7 @@
     </message>
     <message>
         <location filename="../app/gui/Report.cpp" line="242" />
-        <location filename="../app/gui/Report.cpp" line="375" />
+        <location filename="../app/gui/Report.cpp" line="404" />
         <source>Axis</source>
         <translation>軸</translation>
     </message>
@@ -730,145 +750,180 @@
         <translation>AxisTune バージョン</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="259" />
+        <location filename="../app/gui/Report.cpp" line="267" />
+        <source>F_L (full-closed)</source>
+        <translation>F_L (フルクローズド)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="268" />
+        <source>F_m (semi-closed)</source>
+        <translation>F_m (セミクローズド)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="269" />
+        <source>: f₀ %1 Hz, ζ %2</source>
+        <translation>: f₀ %1 Hz、ζ %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="273" />
+        <source>, τ %1 ms</source>
+        <translation>、τ %1 ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="274" />
+        <source>Suppression filter</source>
+        <translation>振動抑制フィルタ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="277" />
+        <source>Maximum load error (verification)</source>
+        <translation>負荷側誤差の最大値 (検証)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="278" />
+        <source>measured %1° with the filter; predicted %2° without, %3° with it</source>
+        <translation>測定値 フィルタあり %1°、予測値 フィルタなし %2°、フィルタあり %3°</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/Report.cpp" line="288" />
         <source>Plots</source>
         <translation>プロット</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="269" />
+        <location filename="../app/gui/Report.cpp" line="298" />
         <source>FRF "%1" is unreadable: %2</source>
         <translation>周波数応答 "%1" を読み取れません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="279" />
+        <location filename="../app/gui/Report.cpp" line="308" />
         <source>Frequency response: %1</source>
         <translation>周波数応答: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="289" />
+        <location filename="../app/gui/Report.cpp" line="318" />
         <source>Capture: %1</source>
         <translation>計測データ: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="294" />
+        <location filename="../app/gui/Report.cpp" line="323" />
         <source>No plots recorded.</source>
         <translation>記録されたプロットはありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="321" />
+        <location filename="../app/gui/Report.cpp" line="350" />
         <source>Ball-bar traces: %1</source>
         <translation>ボールバーの軌跡: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="339" />
+        <location filename="../app/gui/Report.cpp" line="368" />
         <source>Result: %1</source>
         <translation>結果: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="346" />
+        <location filename="../app/gui/Report.cpp" line="375" />
         <source>Parameter sets</source>
         <translation>パラメータセット</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="350" />
+        <location filename="../app/gui/Report.cpp" line="379" />
         <source>axis %1, %2</source>
         <translation>軸 %1、%2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="355" />
-        <location filename="../app/gui/Report.cpp" line="376" />
+        <location filename="../app/gui/Report.cpp" line="384" />
+        <location filename="../app/gui/Report.cpp" line="405" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="356" />
+        <location filename="../app/gui/Report.cpp" line="385" />
         <source>Description</source>
         <translation>説明</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="357" />
+        <location filename="../app/gui/Report.cpp" line="386" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="371" />
+        <location filename="../app/gui/Report.cpp" line="400" />
         <source>Journal of writes</source>
         <translation>書き込み履歴</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="374" />
+        <location filename="../app/gui/Report.cpp" line="403" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="377" />
+        <location filename="../app/gui/Report.cpp" line="406" />
         <source>Old value</source>
         <translation>旧値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="378" />
+        <location filename="../app/gui/Report.cpp" line="407" />
         <source>New value</source>
         <translation>新値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="384" />
+        <location filename="../app/gui/Report.cpp" line="413" />
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="399" />
+        <location filename="../app/gui/Report.cpp" line="428" />
         <source>Results</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="405" />
+        <location filename="../app/gui/Report.cpp" line="434" />
         <source>Identified models</source>
         <translation>同定したモデル</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="408" />
+        <location filename="../app/gui/Report.cpp" line="437" />
         <source>axis %1</source>
         <translation>軸 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="411" />
+        <location filename="../app/gui/Report.cpp" line="440" />
         <source>Verification</source>
         <translation>検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="416" />
+        <location filename="../app/gui/Report.cpp" line="445" />
         <source>No verification was recorded.</source>
         <translation>検証は記録されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="430" />
+        <location filename="../app/gui/Report.cpp" line="459" />
         <source>Arrays (values): %1</source>
         <translation>配列 (値の数): %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="441" />
-        <location filename="../app/gui/Report.cpp" line="503" />
+        <location filename="../app/gui/Report.cpp" line="470" />
+        <location filename="../app/gui/Report.cpp" line="532" />
         <source>AxisTune session %1</source>
         <translation>AxisTune セッション %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="443" />
+        <location filename="../app/gui/Report.cpp" line="472" />
         <source>Inputs</source>
         <translation>入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="449" />
+        <location filename="../app/gui/Report.cpp" line="478" />
         <source>Report made by AxisTune from session %1 of the store.</source>
         <translation>データベースのセッション %1 から AxisTune が作成したレポートです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="485" />
-        <location filename="../app/gui/Report.cpp" line="491" />
+        <location filename="../app/gui/Report.cpp" line="514" />
+        <location filename="../app/gui/Report.cpp" line="520" />
         <source>Cannot write %1: %2</source>
         <translation>%1 を書き込めません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="509" />
+        <location filename="../app/gui/Report.cpp" line="538" />
         <source>Cannot write %1</source>
         <translation>%1 を書き込めません</translation>
     </message>
@@ -895,6 +950,16 @@
         <source>frequency response (%1)</source>
         <translation>周波数応答 (%1)</translation>
     </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="62" />
+        <source>circle of %1 and %2</source>
+        <translation>%1 軸と %2 軸の円弧補間テスト</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" line="64" />
+        <source>current step</source>
+        <translation>電流ステップ</translation>
+    </message>
 </context>
 <context>
     <name>VelocityLoopWizard</name>
@@ -907,7 +972,7 @@
 <context>
     <name>Wizards</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="21" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="24" />
         <source>Current loop…</source>
         <translation>電流ループ…</translation>
     </message>
@@ -917,7 +982,7 @@
         <translation>周波数応答…</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="47" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="48" />
         <source>Lost motion…</source>
         <translation>ロストモーション…</translation>
     </message>
@@ -932,7 +997,7 @@
         <translation>ノッチフィルタ…</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="26" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="27" />
         <source>Two-inertia vibration suppression…</source>
         <translation>2慣性系の振動抑制…</translation>
     </message>
@@ -965,17 +1030,17 @@
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AbortGuard.cpp" line="49" />
+        <location filename="../app/gui/AbortGuard.cpp" line="51" />
         <source>Cancelled by the operator.</source>
         <translation>作業者によりキャンセルされました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AbortGuard.cpp" line="63" />
+        <location filename="../app/gui/AbortGuard.cpp" line="65" />
         <source>Restoring %1 from before the write…</source>
         <translation>%1 を書き込み前の値に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/AbortGuard.cpp" line="67" />
+        <location filename="../app/gui/AbortGuard.cpp" line="69" />
         <source>Could not restore %1: the connection to the drive is lost. Check them on the drive before the axis runs again.</source>
         <translation>%1 を戻せません: サーボアンプとの接続が切れました。軸を再び動かす前にサーボアンプで確認してください。</translation>
     </message>
@@ -1011,129 +1076,129 @@
 <context>
     <name>axistune::gui::ApplyPage</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="337" />
-        <location filename="../app/gui/WizardPages.cpp" line="350" />
+        <location filename="../app/gui/WizardPages.cpp" line="341" />
+        <location filename="../app/gui/WizardPages.cpp" line="354" />
         <source>Apply</source>
         <translation>適用</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="338" />
+        <location filename="../app/gui/WizardPages.cpp" line="342" />
         <source>The parameters below change on the drive. Every value is read back after the write.</source>
         <translation>以下のパラメータをサーボアンプで変更します。書き込み後にすべての値を読み出して確認します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="340" />
+        <location filename="../app/gui/WizardPages.cpp" line="344" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="340" />
+        <location filename="../app/gui/WizardPages.cpp" line="344" />
         <source>Key</source>
         <translation>キー</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="340" />
+        <location filename="../app/gui/WizardPages.cpp" line="344" />
         <source>Device</source>
         <translation>サーボアンプ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="340" />
+        <location filename="../app/gui/WizardPages.cpp" line="344" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="340" />
+        <location filename="../app/gui/WizardPages.cpp" line="344" />
         <source>Read back</source>
         <translation>読み出し値</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="340" />
+        <location filename="../app/gui/WizardPages.cpp" line="344" />
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="345" />
+        <location filename="../app/gui/WizardPages.cpp" line="349" />
         <source>Write these values to the drive</source>
         <translation>これらの値をサーボアンプに書き込む</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="346" />
+        <location filename="../app/gui/WizardPages.cpp" line="350" />
         <source>Do not apply now (keep the proposal in the session only)</source>
         <translation>今は適用しない (提案はセッションにのみ保存)</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="351" />
+        <location filename="../app/gui/WizardPages.cpp" line="355" />
         <source>Restore previous values</source>
         <translation>以前の値に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="390" />
+        <location filename="../app/gui/WizardPages.cpp" line="394" />
         <source>Not connected: the proposal can only be kept in the session.</source>
         <translation>未接続: 提案はセッションに保存するだけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="393" />
+        <location filename="../app/gui/WizardPages.cpp" line="397" />
         <source>Reading the device values…</source>
         <translation>サーボアンプの値を読み出し中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="415" />
+        <location filename="../app/gui/WizardPages.cpp" line="419" />
         <source>Changed</source>
         <translation>変更あり</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="429" />
+        <location filename="../app/gui/WizardPages.cpp" line="433" />
         <source>The device values are not read yet: wait, then Apply.</source>
         <translation>サーボアンプの値をまだ読み出していません。少し待ってから適用してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="433" />
+        <location filename="../app/gui/WizardPages.cpp" line="437" />
         <source>Writing…</source>
         <translation>書き込み中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="442" />
+        <location filename="../app/gui/WizardPages.cpp" line="446" />
         <source>Restoring the previous values…</source>
         <translation>以前の値に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="465" />
-        <location filename="../app/gui/WizardPages.cpp" line="475" />
+        <location filename="../app/gui/WizardPages.cpp" line="469" />
+        <location filename="../app/gui/WizardPages.cpp" line="479" />
         <source>Reading the parameters failed: %1</source>
         <translation>パラメータの読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="479" />
+        <location filename="../app/gui/WizardPages.cpp" line="483" />
         <source>Changed values are highlighted. Confirm, then Apply.</source>
         <translation>変更される値は強調表示されています。確認してから適用してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="484" />
+        <location filename="../app/gui/WizardPages.cpp" line="488" />
         <source>The write failed; the drive keeps its values: %1</source>
         <translation>書き込みに失敗しました。サーボアンプの値は変わっていません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="491" />
+        <location filename="../app/gui/WizardPages.cpp" line="495" />
         <source>Applied and read back.</source>
         <translation>適用し、読み出して確認しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="495" />
+        <location filename="../app/gui/WizardPages.cpp" line="499" />
         <source>Axis %1: %2 parameters applied and read back</source>
         <translation>軸 %1: %2 個のパラメータを適用し、読み出して確認しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="501" />
+        <location filename="../app/gui/WizardPages.cpp" line="505" />
         <source>Restoring failed: %1</source>
         <translation>元に戻せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="508" />
+        <location filename="../app/gui/WizardPages.cpp" line="512" />
         <source>The previous values are back on the drive.</source>
         <translation>サーボアンプの値を以前の値に戻しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="512" />
+        <location filename="../app/gui/WizardPages.cpp" line="516" />
         <source>Axis %1: previous parameters restored</source>
         <translation>軸 %1: 以前のパラメータに戻しました</translation>
     </message>
@@ -1141,32 +1206,28 @@
 <context>
     <name>axistune::gui::CircleRunner</name>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="109" />
-        <source>Reading the parameters of axis %1 failed: %2</source>
-        <translation>軸 %1 のパラメータの読み出しに失敗しました: %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="119" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="123" />
         <source>Not connected: circle tests need a connection to a machine.</source>
         <translation>未接続: 円弧補間テストには機械との接続が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="121" />
-        <source>Machine %1 is not a simulated machine: the drive link has no circle test (two axes together). Measure with a ball bar and import the files.</source>
-        <translation>機械 %1 はシミュレーション機ではありません: サーボアンプとの通信には (2 軸同時の) 円弧補間テストがありません。ボールバーで測定してファイルを読み込んでください。</translation>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="187" />
+        <source>Circle %1 failed: %2</source>
+        <translation>円弧 %1 が失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="142" />
-        <source>Reading the parameters of both plane axes</source>
-        <translation>平面の 2 軸のパラメータを読み出し中</translation>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="193" />
+        <source>Circle %1 could not be evaluated: %2</source>
+        <translation>円弧 %1 を評価できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="183" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="211" />
         <source>Aborted by the operator after %1 of %2 circles.</source>
         <translation>%2 回中 %1 回の円弧の後、作業者により中止されました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="198" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="110" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="179" />
         <source>Circle %1 of %2</source>
         <translation>円弧 %1 / %2</translation>
     </message>
@@ -1243,172 +1304,172 @@
 <context>
     <name>axistune::gui::CurrentLoopDesignPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="381" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="357" />
         <source>Current loop: design</source>
         <translation>電流ループ: 設計</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="383" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="359" />
         <source>For each PI ratio α the gains with the shortest rise time inside the dead-time stability boundary (gain margin), the voltage envelope and the overshoot limit; α* has the shortest rise time of all.</source>
         <translation>各 PI率 α について、むだ時間の安定限界 (ゲイン余裕)、電圧の包絡線、オーバーシュート制限の内側で立ち上がり時間が最短となるゲイン; α* はその中で最も立ち上がり時間が短い α です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="390" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="366" />
         <source>Show the boundaries of every α</source>
         <translation>すべての α の境界を表示</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="392" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="368" />
         <source>Chosen α:</source>
         <translation>選択した α:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="400" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="413" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="376" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="389" />
         <source>k_p</source>
         <translation>k_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="400" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="413" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="376" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="389" />
         <source>V/A</source>
         <translation>V/A</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="400" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="376" />
         <source>k_i</source>
         <translation>k_i</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="400" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="376" />
         <source>V/(A·s)</source>
         <translation>V/(A·s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="404" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="380" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="382" />
         <source>α</source>
         <translation>α</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="404" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="380" />
         <source>Rise time 10–90 %</source>
         <translation>立ち上がり時間 10–90 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="415" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="382" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="391" />
         <source>k_p [V/A]</source>
         <translation>k_p [V/A]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="415" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="382" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="391" />
         <source>k_i [V/(A·s)]</source>
         <translation>k_i [V/(A·s)]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="382" />
         <source>Rise time [µs]</source>
         <translation>立ち上がり時間 [µs]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="406" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="382" />
         <source>Overshoot [%]</source>
         <translation>オーバーシュート [%]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="407" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="383" />
         <source>Active constraints</source>
         <translation>有効な制約</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="413" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="389" />
         <source>Current |i|</source>
         <translation>電流 |i|</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="415" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="391" />
         <source>Current [A]</source>
         <translation>電流 [A]</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="415" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="391" />
         <source>Factor</source>
         <translation>係数</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="418" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="394" />
         <source>Rise time against α</source>
         <translation>α に対する立ち上がり時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="419" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="395" />
         <source>α table</source>
         <translation>α の表</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="420" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="396" />
         <source>Gain schedule</source>
         <translation>ゲインスケジュール</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="448" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="424" />
         <source>Designing…</source>
         <translation>設計中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="489" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="465" />
         <source>The design failed: %1</source>
         <translation>設計に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="506" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="482" />
         <source> (optimum α*)</source>
         <translation> (最適 α*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="513" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="489" />
         <source>infeasible</source>
         <translation>実現不可</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="516" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="492" />
         <source>Rise time of the optimum per α</source>
         <translation>α ごとの最適点の立ち上がり時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="517" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="493" />
         <source>α* = %1</source>
         <translation>α* = %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="519" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="495" />
         <source>Optimum α* = %1: k_p = %2 V/A, k_i = %3 V/(A·s), rise time %4 µs (delay-free design model).</source>
         <translation>最適 α* = %1: k_p = %2 V/A、k_i = %3 V/(A·s)、立ち上がり時間 %4 µs (むだ時間なしの設計モデル)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="536" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="512" />
         <source>Stability boundary (gain margin %1 dB)</source>
         <translation>安定限界 (ゲイン余裕 %1 dB)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="546" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="522" />
         <source>Voltage envelope α = %1</source>
         <translation>電圧の包絡線 α = %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="548" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="524" />
         <source>Overshoot %1 % α = %2</source>
         <translation>オーバーシュート %1 % α = %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="553" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="529" />
         <source>α = %1: k_p %2 V/A, k_i %3 V/(A·s)</source>
         <translation>α = %1: k_p %2 V/A、k_i %3 V/(A·s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="569" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="545" />
         <source>k_p over current (k_i in the same ratio)</source>
         <translation>電流に対する k_p (k_i も同じ比率)</translation>
     </message>
@@ -1416,202 +1477,202 @@
 <context>
     <name>axistune::gui::CurrentLoopMotorPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="121" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="97" />
         <source>Current loop: motor data</source>
         <translation>電流ループ: モータデータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="122" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="98" />
         <source>Enter the motor data or read them from the drive's motor parameters. Maximum current and maximum voltage must use the same convention (both peak or both rms): only their ratio enters the voltage constraint.</source>
         <translation>モータデータを入力するか、サーボアンプのモータパラメータから読み出してください。最大電流と最大電圧は同じ表し方 (両方ピーク値または両方実効値) にしてください: 電圧制約にはその比だけが入ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="129" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="105" />
         <source>Read from drive</source>
         <translation>サーボアンプから読み出し</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="131" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="107" />
         <source>Axis:</source>
         <translation>軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="134" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="110" />
         <source>From profile</source>
         <translation>プロファイルから</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="136" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="112" />
         <source>The motor model of this axis in the machine's profile (saved by an earlier current-loop session or imported)</source>
         <translation>機械プロファイルにあるこの軸のモータモデル（以前の電流ループのセッションで保存したもの、またはインポートしたもの）</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="146" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="122" />
         <source>Motor</source>
         <translation>モータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="155" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="131" />
         <source> V(rms)/1000 min⁻¹</source>
         <translation> V(rms)/1000 min⁻¹</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="156" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="132" />
         <source> min⁻¹</source>
         <translation> min⁻¹</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="157" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="133" />
         <source>Armature resistance R_a:</source>
         <translation>電機子抵抗 R_a:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="158" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="134" />
         <source>q-axis inductance L_q:</source>
         <translation>q 軸インダクタンス L_q:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="159" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="135" />
         <source>Maximum current I_max:</source>
         <translation>最大電流 I_max:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="160" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="136" />
         <source>Maximum voltage V_max:</source>
         <translation>最大電圧 V_max:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="161" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="137" />
         <source>Inductance drop at I_max δ:</source>
         <translation>I_max でのインダクタンス低下 δ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="162" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="138" />
         <source>Rated current (0: not given):</source>
         <translation>定格電流 (0: 指定なし):</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="163" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="139" />
         <source>Back-EMF constant, line-to-line (0: not given):</source>
         <translation>誘起電圧定数、線間 (0: 指定なし):</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="164" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="140" />
         <source>Contouring speed:</source>
         <translation>輪郭加工速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="166" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="142" />
         <source>Design</source>
         <translation>設計</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="172" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="148" />
         <source>Dead time τ of the design:</source>
         <translation>設計のむだ時間 τ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="173" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="149" />
         <source>Gain margin:</source>
         <translation>ゲイン余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="174" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="150" />
         <source>Step overshoot limit:</source>
         <translation>ステップ応答のオーバーシュート制限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="175" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="151" />
         <source>Current ripple of the voltage check (of I_max):</source>
         <translation>電圧チェックの電流リプル (I_max に対する比):</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="197" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="173" />
         <source>Reading the motor parameters failed: %1</source>
         <translation>モータパラメータの読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="221" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="197" />
         <source>Read from axis %1 of the drive (peak values): maximum current, maximum voltage, rated current, current-loop period %2 µs, dead time %3 µs; the back-EMF constant from the torque constant (k_e = k_t/1.5, amplitude-invariant dq). The drive does not offer R_a, L_q and δ: enter them from the motor data sheet.</source>
         <translation>サーボアンプの軸 %1 から読み出しました (ピーク値): 最大電流、最大電圧、定格電流、電流ループ周期 %2 µs、むだ時間 %3 µs; 誘起電圧定数はトルク定数から (k_e = k_t/1.5、振幅不変の dq 変換)。サーボアンプは R_a、L_q、δ を提供しないため、モータのデータシートから入力してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="243" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="219" />
         <source>Not connected: enter the motor data (defaults: the rotary motor of Table 2.2, rms values). Apply needs a connection.</source>
         <translation>未接続: モータデータを入力してください (初期値: 表 2.2 の回転形モータ、実効値)。適用には接続が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="262" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="238" />
         <source>No machine profile: open a store and connect to (or choose) a machine first.</source>
         <translation>機械プロファイルがありません。先にストアを開き、機械に接続して（または機械を選んで）ください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="269" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="245" />
         <source>The profile of machine %1 has no motor model for axis %2: enter the data, or save a current-loop session first.</source>
         <translation>機械 %1 のプロファイルに軸 %2 のモータモデルがありません。データを入力するか、先に電流ループのセッションを保存してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="272" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="248" />
         <source>The profile of machine %1 could not be read: %2</source>
         <translation>機械 %1 のプロファイルを読めませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="287" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="263" />
         <source>R_a</source>
         <translation>R_a</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="288" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="264" />
         <source>L_q</source>
         <translation>L_q</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="289" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="265" />
         <source>δ</source>
         <translation>δ</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="290" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="266" />
         <source>I_max</source>
         <translation>I_max</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="291" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="267" />
         <source>V_max</source>
         <translation>V_max</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="292" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="268" />
         <source>rated current</source>
         <translation>定格電流</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="293" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="269" />
         <source>back-EMF constant</source>
         <translation>誘起電圧定数</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="296" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="272" />
         <source>Taken from the profile of machine %1, axis %2: %3.</source>
         <translation>機械 %1、軸 %2 のプロファイルから取得: %3。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="298" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="274" />
         <source>Not in the profile, kept as shown: %1.</source>
         <translation>プロファイルにないため表示のまま: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="338" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="314" />
         <source>Back-EMF check at the contouring speed %1 min⁻¹: %2 V(rms, line-to-line) = %3 V peak per phase, %4 % of V_max = %5 V (peak comparison; with rms values %6 %). The design neglects the back-EMF, which holds when it is small against V_max.</source>
         <translation>輪郭加工速度 %1 min⁻¹ での誘起電圧の確認: %2 V (実効値、線間) = 相あたりピーク %3 V、V_max = %5 V の %4 % (ピーク値で比較; 実効値では %6 %)。設計は誘起電圧を無視しており、これは V_max に比べて小さいときに成り立ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="348" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="324" />
         <source>No back-EMF constant given: the back-EMF at the contouring speed is not checked.</source>
         <translation>誘起電圧定数の指定なし: 輪郭加工速度での誘起電圧は確認しません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="351" />
+        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="327" />
         <source>Not usable: %1</source>
         <translation>使用できません: %1</translation>
     </message>
@@ -1619,42 +1680,47 @@
 <context>
     <name>axistune::gui::CurrentLoopSavePage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="34" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="37" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="36" />
-        <source>The session holds the motor data and settings, the α table, the chosen α and gains with the rise time, the gain schedule, the step responses, what was applied with its journal, and the read-back.</source>
-        <translation>セッションには、モータデータと設定、α の表、選択した α とゲインおよび立ち上がり時間、ゲインスケジュール、ステップ応答、適用した内容とその履歴、読み出し値が保存されます。</translation>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="39" />
+        <source>The session holds the motor data and settings, the α table, the chosen α and gains with the rise time, the gain schedule, the predicted step responses, what was applied with its journal, the read-back, and the current step measured on the drive with its comparison.</source>
+        <translation>セッションには、モータデータと設定、α の表、選んだ α とゲインと立ち上がり時間、ゲインスケジュール、予測したステップ応答、適用した内容とその履歴、読み出し値、サーボアンプで測定した電流ステップとその比較が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="55" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="59" />
         <source>α = %1, k_p = %2 V/A, k_i = %3 V/(A·s), rise time %4 µs (delay-free design).</source>
         <translation>α = %1、k_p = %2 V/A、k_i = %3 V/(A·s)、立ち上がり時間 %4 µs (むだ時間なしの設計)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="61" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="65" />
         <source>Not connected: the gains were not applied.</source>
         <translation>未接続: ゲインは適用されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="63" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="67" />
         <source>Not applied: the proposal is kept in the session.</source>
         <translation>未適用: 提案はセッションに保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="65" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="69" />
         <source>Applied to axis %1 and read back.</source>
         <translation>軸 %1 に適用し、読み出して確認しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="66" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="71" />
+        <source>Measured current step of %1 A: rise time %2 µs (predicted %3 µs), overshoot %4 % (predicted %5 %); largest difference %6 % of the step.</source>
+        <translation>%1 A の電流ステップの実測: 立ち上がり時間 %2 µs (予測 %3 µs)、オーバーシュート %4 % (予測 %5 %)。最大差はステップの %6 %。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="79" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="67" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="80" />
         <source>The session was not saved (no store open).</source>
         <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
     </message>
@@ -1662,106 +1728,205 @@
 <context>
     <name>axistune::gui::CurrentLoopStepPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="602" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="72" />
         <source>Current loop: step responses</source>
         <translation>電流ループ: ステップ応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="603" />
-        <source>The delay-free design model against the prediction with the drive's current-loop period (zero-order hold) and dead time.</source>
-        <translation>むだ時間なしの設計モデルと、サーボアンプの電流ループ周期 (0 次ホールド) とむだ時間を含めた予測の比較。</translation>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="73" />
+        <source>The delay-free design model against the prediction with the drive's current-loop period (zero-order hold) and dead time; a current step is measured on the drive before and after applying.</source>
+        <translation>むだ時間なしの設計モデルと、サーボアンプの電流ループ周期 (0 次ホールド) とむだ時間を含めた予測の比較。適用の前と後にサーボアンプで電流ステップを測定します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="608" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="79" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="608" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="79" />
         <source>Current / command</source>
         <translation>電流 / 指令</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="624" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="85" />
+        <source>Current step on the drive, before and after applying</source>
+        <translation>適用前後のサーボアンプでの電流ステップ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="88" />
+        <source>Measure a current step (velocity loop open, then the axis holds its position)</source>
+        <translation>電流ステップを測定する (速度ループ開放、その後は軸が位置を保持)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="97" />
+        <source>Step of the q-axis current command:</source>
+        <translation>q 軸電流指令のステップ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="103" />
+        <source>Recording (the step comes 10 % in):</source>
+        <translation>記録時間 (ステップは 10 % の時点):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="135" />
         <source>Delay-free design</source>
         <translation>むだ時間なしの設計</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="625" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="136" />
         <source>Prediction: period %1 µs + dead time %2 µs</source>
         <translation>予測: 周期 %1 µs + むだ時間 %2 µs</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="631" />
-        <source>Delay-free: %1. With the delay: %2.
-No measured current step: the drive offers no current-step test (its tests are velocity step, jog, hold and frequency response). A velocity step is not a measurement of the current loop — the current settles within about one velocity-loop period of the trace — so none is shown here.</source>
-        <translation>むだ時間なし: %1。むだ時間あり: %2。
-電流ステップの実測なし: サーボアンプに電流ステップのテストがありません (テストは速度ステップ、ジョグ、位置保持、周波数応答)。速度ステップは電流ループの測定になりません — 電流はトレースの速度ループ周期 1 回程度で整定するため — ここには表示しません。</translation>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="142" />
+        <source>Delay-free: %1. With the delay: %2.</source>
+        <translation>むだ時間なし: %1。むだ時間あり: %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="155" />
+        <source>Default %1 A: at most %2 % of I_max, and the voltage before the current can respond, (α k_p + (d + 1)·k_i T)·i* = %3 V with d dead-time periods, stays within %4 % of V_max (%5 V), so no voltage clamp acts and the inductance falls by only δ·i*/I_max = %6 %. The drive refuses more than 50 % of I_max, a recording beyond 50 ms and a step that would take the motor beyond 20 rad/s.</source>
+        <translation>既定値 %1 A: I_max の %2 % 以下で、電流が応答する前の電圧 (α k_p + (d + 1)·k_i T)·i* = %3 V (d はむだ時間の周期数) が V_max (%5 V) の %4 % 以内に収まるため、電圧クランプは働かず、インダクタンスの低下は δ·i*/I_max = %6 % にとどまります。サーボアンプは I_max の 50 % を超えるステップ、50 ms を超える記録、モータが 20 rad/s を超えるステップを拒否します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="176" />
+        <source>A q-axis current step of %1 A recorded for %2 ms, twice: now with the gains the drive holds, and after applying the proposed ones. The velocity and position loops are open while it lasts: the motor accelerates freely, then the axis holds its position again.</source>
+        <translation>q 軸電流を %1 A ステップさせて %2 ms 記録します。これを 2 回、現在のサーボアンプのゲインで今、提案したゲインを適用した後にもう一度行います。その間は速度ループと位置ループを開放するため、モータは自由に加速し、その後軸は再び位置を保持します。</translation>
     </message>
 </context>
 <context>
     <name>axistune::gui::CurrentLoopVerifyPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="656" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="199" />
         <source>Current loop: verification</source>
         <translation>電流ループ: 検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="657" />
-        <source>The gains read back from the drive and the step predicted with them (period and dead time of the drive), against the design.</source>
-        <translation>サーボアンプから読み出したゲインと、そのゲインで予測したステップ応答 (サーボアンプの周期とむだ時間) を設計と比較します。</translation>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="200" />
+        <source>The gains read back from the drive, the step predicted with them (period and dead time of the drive) and the design, against the current step measured on the drive.</source>
+        <translation>サーボアンプから読み出したゲイン、そのゲインで予測したステップ応答 (サーボアンプの周期とむだ時間) と設計を、サーボアンプで測定した電流ステップと比較します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="662" />
-        <source>Time</source>
-        <translation>時間</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="662" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="205" />
         <source>Current / command</source>
         <translation>電流 / 指令</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="673" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="205" />
+        <source>Time since the step</source>
+        <translation>ステップからの時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="217" />
         <source>Reading back failed: %1</source>
         <translation>読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="697" />
-        <source>Not applied: nothing to verify.</source>
-        <translation>未適用: 検証するものはありません。</translation>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="241" />
+        <source>Not connected: nothing to verify.</source>
+        <translation>未接続: 検証するものはありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="700" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="280" />
+        <source>Prediction with the read-back gains (period + dead time)</source>
+        <translation>読み出したゲインでの予測 (周期 + むだ時間)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="285" />
+        <source>Read back: k_p %1 V/A, k_i %2 V/(A·s), α %3 — %4.</source>
+        <translation>読み出し値: k_p %1 V/A、k_i %2 V/(A·s)、α %3 — %4。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="291" />
+        <source>Not applied: the drive kept its own gains, and the measurement is of those.</source>
+        <translation>未適用: サーボアンプは元のゲインのままで、測定はそのゲインでのものです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="293" />
+        <source>Measured before applying (gains before)</source>
+        <translation>適用前の実測 (適用前のゲイン)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="296" />
+        <source>Measured on the drive (%1 A step)</source>
+        <translation>サーボアンプでの実測 (%1 A ステップ)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="300" />
+        <source>Predicted step with them: %1.</source>
+        <translation>そのゲインで予測したステップ応答: %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="301" />
+        <source>No measured current step: %1</source>
+        <translation>電流ステップの実測なし: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="302" />
+        <source>No current step was measured (not chosen on the step page).</source>
+        <translation>電流ステップは測定していません (ステップ応答のページで選択されていません)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="322" />
+        <source>The measured step agrees with the delay-inclusive prediction within %1 % of the step.</source>
+        <translation>実測したステップ応答は、むだ時間を含む予測とステップの %1 % 以内で一致しています。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="324" />
+        <source>The measured step differs from the delay-inclusive prediction by more than %1 % of the step: check R_a, L_q and the dead time, or use a smaller step.</source>
+        <translation>実測したステップ応答は、むだ時間を含む予測とステップの %1 % を超えて異なります: R_a、L_q とむだ時間を確認するか、ステップを小さくしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="327" />
+        <source>Current step of %1 A measured on the drive (%2 samples at %3 µs):</source>
+        <translation>サーボアンプで測定した %1 A の電流ステップ (%3 µs 間隔で %2 点):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="331" />
+        <source>• measured: 10–90 % rise time %1 µs, overshoot %2 %</source>
+        <translation>• 実測: 10–90 % 立ち上がり時間 %1 µs、オーバーシュート %2 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="333" />
+        <source>• design (delay-free): rise time %1 µs, overshoot %2 %</source>
+        <translation>• 設計 (むだ時間なし): 立ち上がり時間 %1 µs、オーバーシュート %2 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="334" />
+        <source>• prediction (period + dead time, read-back gains): rise time %1 µs, overshoot %2 %</source>
+        <translation>• 予測 (周期 + むだ時間、読み出したゲイン): 立ち上がり時間 %1 µs、オーバーシュート %2 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="337" />
+        <source>• measured before applying (gains before): rise time %1 µs, overshoot %2 %</source>
+        <translation>• 適用前の実測 (適用前のゲイン): 立ち上がり時間 %1 µs、オーバーシュート %2 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="339" />
+        <source>Measured − predicted: rise time %1 µs, overshoot %2 percentage points; largest difference %3 % of the step, rms %4 % over %5 samples.</source>
+        <translation>実測 − 予測: 立ち上がり時間 %1 µs、オーバーシュート %2 ポイント。最大差はステップの %3 %、%5 点での rms は %4 %。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="347" />
+        <source>The voltage clamp acted in %1 current periods: the measured step is not the linear loop the prediction describes; use a smaller step.</source>
+        <translation>電圧クランプが電流制御周期 %1 回で働きました: 実測は予測が表す線形なループではありません。ステップを小さくしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="245" />
         <source>Reading back…</source>
         <translation>読み出し中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="715" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="278" />
         <source>Design (delay-free, proposed gains)</source>
         <translation>設計 (むだ時間なし、提案ゲイン)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="717" />
-        <source>Prediction with the read-back gains</source>
-        <translation>読み出したゲインでの予測</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="724" />
-        <source>Read back: k_p %1 V/A, k_i %2 V/(A·s), α %3 — %4.
-Predicted step with them: %5.
-No measured current step: the drive offers no current-step test.</source>
-        <translation>読み出し値: k_p %1 V/A、k_i %2 V/(A·s)、α %3 — %4。
-そのゲインで予測したステップ応答: %5。
-電流ステップの実測なし: サーボアンプに電流ステップのテストがありません。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="729" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="289" />
         <source>as proposed</source>
         <translation>提案どおり</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardPages.cpp" line="729" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="289" />
         <source>NOT as proposed</source>
         <translation>提案と異なる</translation>
     </message>
@@ -1769,9 +1934,24 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::CurrentLoopWizard</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizard.cpp" line="73" />
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="86" />
         <source>Current loop</source>
         <translation>電流ループ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="117" />
+        <source>The current step before applying failed: %1</source>
+        <translation>適用前の電流ステップ応答が失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="134" />
+        <source>The current step after applying failed: %1</source>
+        <translation>適用後の電流ステップ応答が失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/CurrentLoopWizard.cpp" line="141" />
+        <source>the current-loop gains</source>
+        <translation>電流ループゲイン</translation>
     </message>
 </context>
 <context>
@@ -2192,37 +2372,37 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionCirclePage</name>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="221" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="223" />
         <source>Circle tests</source>
         <translation>円弧補間テスト</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="222" />
-        <source>Both plane axes move on circles at the table positions chosen. Abort stops after the circle that is running.</source>
-        <translation>平面の 2 軸が、選んだテーブル位置で円弧を描いて動きます。中止すると実行中の円弧の後で停止します。</translation>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="224" />
+        <source>Both plane axes move on circles at the table positions chosen. Abort stops the running circle at once; the drive restores the parameters of both axes.</source>
+        <translation>平面の 2 軸が、選んだテーブル位置で円弧を描いて動きます。中止すると実行中の円弧をただちに停止し、サーボアンプが両軸のパラメータを元に戻します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="232" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="234" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="235" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="237" />
         <source>Run again</source>
         <translation>再実行</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="255" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="257" />
         <source>Completed: %1 circles.</source>
         <translation>完了: 円弧 %1 回。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="256" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="258" />
         <source>Aborted: %1</source>
         <translation>中止: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="256" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="258" />
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -2390,42 +2570,42 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionSavePage</name>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="58" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="59" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="59" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="60" />
         <source>The session holds the traces, the diagnostics, A and B with their points, the proposal, what was applied with its journal, and the verification.</source>
         <translation>セッションには、軌跡、診断、A と B およびその点、提案、適用した内容とその履歴、検証が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="78" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="79" />
         <source>Axis %1: A = %2 µm/(N·m), B = %3 µm/(N·m·m), x₀ = %4 mm.</source>
         <translation>軸 %1: A = %2 µm/(N·m)、B = %3 µm/(N·m·m)、x₀ = %4 mm。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="84" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="85" />
         <source>Not connected: applying the compensation and verifying it with a new circle need a connection to the machine.</source>
         <translation>未接続: 補正の適用と新しい円弧での検証には機械との接続が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="87" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="88" />
         <source>Not applied: the proposal is kept in the session.</source>
         <translation>未適用: 提案はセッションに保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="89" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="90" />
         <source>Applied; reversal step %1 µm before, %2 µm after.</source>
         <translation>適用しました。反転時の段差 前 %1 µm、後 %2 µm。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="92" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="93" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="93" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="94" />
         <source>The session was not saved (no store open).</source>
         <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
     </message>
@@ -2541,92 +2721,97 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionVerifyPage</name>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="301" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="303" />
         <source>Verify with a new circle</source>
         <translation>新しい円弧で検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="302" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="304" />
         <source>A circle at the last table position with the compensation applied: measured against the prediction and against the trace before.</source>
         <translation>補正を適用して最後のテーブル位置で円弧を描き、予測および適用前の軌跡と比較します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="311" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="313" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="319" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="321" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="319" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="321" />
         <source>Before</source>
         <translation>適用前</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="319" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="321" />
         <source>Predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="319" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="321" />
         <source>Measured</source>
         <translation>測定値</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="332" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="338" />
         <source>Aborted: %1</source>
         <translation>中止: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="332" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="338" />
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="351" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="341" />
+        <source>The verification circle failed: %1</source>
+        <translation>検証の円弧補間テストが失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="358" />
         <source>The compensation was not applied: nothing to verify.</source>
         <translation>補正は適用されていません: 検証するものはありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="357" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="364" />
         <source>Verify with a new ball-bar measurement and compare it in the session review.</source>
         <translation>新しいボールバー測定で検証し、セッションの確認画面で比較してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="391" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="398" />
         <source>before</source>
         <translation>適用前</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="392" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="399" />
         <source>predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="393" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="400" />
         <source>measured after</source>
         <translation>適用後の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="395" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="402" />
         <source>Reversal step of %1</source>
         <translation>%1 の反転時の段差</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="397" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="404" />
         <source>Circularity</source>
         <translation>真円度</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="400" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="407" />
         <source>The reversal step fell from %1 to %2. If the result is worse than predicted, restore the previous values on the apply page (Back).</source>
         <translation>反転時の段差は %1 から %2 に減りました。予測より悪い場合は、適用ページ (戻る) で以前の値に戻してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="403" />
+        <location filename="../app/gui/LostMotionWizardRuns.cpp" line="410" />
         <source>The reversal step did not fall (%1 → %2): check x₀ and the sign, or restore the previous values on the apply page (Back).</source>
         <translation>反転時の段差は減りませんでした (%1 → %2): x₀ と符号を確認するか、適用ページ (戻る) で以前の値に戻してください。</translation>
     </message>
@@ -2634,14 +2819,19 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::LostMotionWizard</name>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="99" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="100" />
         <source>Lost motion</source>
         <translation>ロストモーション</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="106" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="107" />
         <source>Circle tests: both axes of the plane move together on circles (radius and centres as set on the first page) at the programmed feed, one circle per table position, and once more for the verification.</source>
         <translation>円弧補間テスト: 平面の 2 軸が一緒に、指定した送り速度で円弧を描きます (半径と中心は最初のページの設定)。テーブル位置ごとに 1 回、検証でもう 1 回。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LostMotionWizard.cpp" line="135" />
+        <source>the lost-motion compensation</source>
+        <translation>ロストモーション補正</translation>
     </message>
 </context>
 <context>
@@ -4231,62 +4421,62 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::SafetyPage</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="103" />
+        <location filename="../app/gui/WizardPages.cpp" line="107" />
         <source>Safety</source>
         <translation>安全確認</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="104" />
+        <location filename="../app/gui/WizardPages.cpp" line="108" />
         <source>Check the axis and its limits before anything moves.</source>
         <translation>動かす前に、軸とその制限を確認してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="108" />
+        <location filename="../app/gui/WizardPages.cpp" line="112" />
         <source>Axis:</source>
         <translation>軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="113" />
+        <location filename="../app/gui/WizardPages.cpp" line="117" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="113" />
+        <location filename="../app/gui/WizardPages.cpp" line="117" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="113" />
+        <location filename="../app/gui/WizardPages.cpp" line="117" />
         <source>Limits</source>
         <translation>範囲</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="113" />
+        <location filename="../app/gui/WizardPages.cpp" line="117" />
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="118" />
+        <location filename="../app/gui/WizardPages.cpp" line="122" />
         <source>The axis is free to move over the whole test, nobody is inside the machine, and the emergency stop is within reach.</source>
         <translation>テスト全体を通じて軸は自由に動くことができ、機械の中には誰もおらず、非常停止ボタンに手が届きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="144" />
+        <location filename="../app/gui/WizardPages.cpp" line="148" />
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="149" />
+        <location filename="../app/gui/WizardPages.cpp" line="153" />
         <source>Reading the limits failed: %1</source>
         <translation>制限値の読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="170" />
+        <location filename="../app/gui/WizardPages.cpp" line="174" />
         <source>Not connected: connect to a machine first (Machine ▸ Connect).</source>
         <translation>未接続: 先に機械に接続してください (機械 ▸ 接続)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="172" />
+        <location filename="../app/gui/WizardPages.cpp" line="176" />
         <source>Machine %1, connected through %2.</source>
         <translation>機械 %1、%2 で接続中。</translation>
     </message>
@@ -4636,63 +4826,63 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::TestRunPage</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="194" />
+        <location filename="../app/gui/WizardPages.cpp" line="198" />
         <source>Run</source>
         <translation>実行</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="195" />
+        <location filename="../app/gui/WizardPages.cpp" line="199" />
         <source>The axis moves now. Abort stops the motion at once and restores the parameters.</source>
         <translation>軸が動きます。中止すると動作は直ちに止まり、パラメータは元に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="205" />
+        <location filename="../app/gui/WizardPages.cpp" line="209" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="207" />
+        <location filename="../app/gui/WizardPages.cpp" line="211" />
         <source>Run again</source>
         <translation>再実行</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="225" />
-        <location filename="../app/gui/WizardPages.cpp" line="227" />
+        <location filename="../app/gui/WizardPages.cpp" line="229" />
+        <location filename="../app/gui/WizardPages.cpp" line="231" />
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="259" />
+        <location filename="../app/gui/WizardPages.cpp" line="263" />
         <source>Nothing to run.</source>
         <translation>実行するものがありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="263" />
+        <location filename="../app/gui/WizardPages.cpp" line="267" />
         <source>Not connected.</source>
         <translation>未接続です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="278" />
+        <location filename="../app/gui/WizardPages.cpp" line="282" />
         <source>Test %1 of %2 on axis %3: %4</source>
         <translation>テスト %1 / %2、軸 %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="292" />
+        <location filename="../app/gui/WizardPages.cpp" line="296" />
         <source>Abort requested</source>
         <translation>中止を要求しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="323" />
+        <location filename="../app/gui/WizardPages.cpp" line="327" />
         <source>Completed.</source>
         <translation>完了しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="323" />
+        <location filename="../app/gui/WizardPages.cpp" line="327" />
         <source>Aborted: %1</source>
         <translation>中止: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="324" />
+        <location filename="../app/gui/WizardPages.cpp" line="328" />
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -4706,8 +4896,8 @@ No measured current step: the drive offers no current-step test.</source>
     </message>
     <message>
         <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="395" />
-        <source>Semi-closed: F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) on the position command (5.7). Full-closed: F_L = F_m/(τs + 1) on the velocity command (5.9). Start values from the model: f₀ and the zero damping ζ₀ (not ζ_p).</source>
-        <translation>セミクローズド: 位置指令に F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) (5.7)。フルクローズド: 速度指令に F_L = F_m/(τs + 1) (5.9)。初期値はモデルから: f₀ と零点の減衰 ζ₀ (ζ_p ではない)。</translation>
+        <source>Semi-closed: F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) on the position command (5.7). Full-closed: F_L = F_m/(τs + 1) on the velocity command (5.9). Start values from the model: f₀ and the zero damping ζ₀ (not ζ_p). The drive's position.feedback decides which filter it runs.</source>
+        <translation>セミクローズド: 位置指令に F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) (5.7)。フルクローズド: 速度指令に F_L = F_m/(τs + 1) (5.9)。初期値はモデルから: f₀ と零点の減衰比 ζ₀ (ζ_p ではありません)。どちらのフィルタを使うかはサーボアンプの position.feedback で決まります。</translation>
     </message>
     <message>
         <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="403" />
@@ -4770,60 +4960,100 @@ No measured current step: the drive offers no current-step test.</source>
         <translation>負荷側誤差 y_L − y*</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="459" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="443" />
+        <source>Set by the axis's position.feedback</source>
+        <translation>軸の position.feedback で決まります</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="485" />
         <source>without filter</source>
         <translation>フィルタなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="460" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="486" />
         <source>with F_m</source>
         <translation>F_m あり</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="464" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="502" />
         <source>Filter frequency f₀</source>
         <translation>フィルタ周波数 f₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="464" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="502" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="465" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="503" />
         <source>Filter damping ζ</source>
         <translation>フィルタの減衰 ζ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="467" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="505" />
         <source>Time constant τ</source>
         <translation>時定数 τ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="467" />
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="468" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="505" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="506" />
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="468" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="506" />
         <source>First-order lag T₁ = 2ζ/ω₀</source>
         <translation>1 次遅れ T₁ = 2ζ/ω₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="469" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="507" />
         <source>Velocity K_P (TI-5, ω_l 24 Hz, k 10)</source>
         <translation>速度 K_P (TI-5、ω_l 24 Hz、k 10)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="471" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="509" />
         <source>Velocity K_I (TI-5)</source>
         <translation>速度 K_I (TI-5)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="473" />
-        <source>Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, load through (5.6)). The drive has no F_m/F_L parameter: enter f₀, ζ (and τ) in the NC. The proposal applies the velocity PI of the thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m on the fitted J_m.</source>
-        <translation>負荷側誤差の最大値の予測: フィルタなし %1°、F_m あり %2° (モータは理想追従、負荷は (5.6) で計算)。サーボアンプには F_m/F_L のパラメータがないため、f₀、ζ (と τ) は NC に入力してください。提案では、同定した J_m に論文の規則 K_P = k√2·ω_l·J_m、K_I = k·ω_l²·J_m による速度 PI を適用します。</translation>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="510" />
+        <source>Drive filter suppression.mode</source>
+        <translation>サーボアンプのフィルタ suppression.mode</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="511" />
+        <source>2 (full-closed F_L)</source>
+        <translation>2 (フルクローズド F_L)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="511" />
+        <source>1 (semi-closed F_m)</source>
+        <translation>1 (セミクローズド F_m)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="512" />
+        <source>Torque feedforward inertia J_m + J_L</source>
+        <translation>トルクフィードフォワードのイナーシャ J_m + J_L</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="515" />
+        <source>Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, load through (5.6)).</source>
+        <translation>負荷側誤差の最大値の予測: フィルタなし %1°、F_m あり %2° (モータは理想追従、負荷は (5.6) で計算)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="520" />
+        <source>F_L acts inside the full-closed loop: the prediction with the filter is the semi-closed one.</source>
+        <translation>F_L はフルクローズドのループ内で働くため、フィルタありの予測はセミクローズドのものです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="521" />
+        <source>The proposal writes the filter to the drive (suppression.mode, f0, zeta%1), the velocity PI of the thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m on the fitted J_m, and the velocity and torque feedforward the method needs. The profile runs once before and once after the change.</source>
+        <translation>提案では、フィルタ (suppression.mode、f0、zeta%1) をサーボアンプに書き込み、同定した J_m に論文の規則 K_P = k√2·ω_l·J_m、K_I = k·ω_l²·J_m による速度 PI と、この手法に必要な速度・トルクフィードフォワードを適用します。プロファイルは変更の前と後に 1 回ずつ実行します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="526" />
+        <source>Not connected to the axis: the mode is chosen here, and the settings are only stored.</source>
+        <translation>軸に接続されていません: モードはここで選択し、設定は保存のみ行います。</translation>
     </message>
 </context>
 <context>
@@ -4983,52 +5213,57 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::TwoInertiaSavePage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="37" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="52" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="38" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="53" />
         <source>The session holds the measured response, the plant, the fitted model, the filter settings, the predicted load error, what was applied with its journal, and the verification.</source>
         <translation>セッションには、測定した応答、プラント、同定モデル、フィルタ設定、負荷側誤差の予測、適用した内容とその履歴、検証が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="58" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="73" />
         <source>Axis %1: anti-resonance f₀ %2 Hz, resonance f_p %3 Hz; filter %4: f₀ %5 Hz, ζ %6%7.</source>
         <translation>軸 %1: 反共振 f₀ %2 Hz、共振 f_p %3 Hz; フィルタ %4: f₀ %5 Hz、ζ %6%7。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="62" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="77" />
         <source>F_L (full-closed)</source>
         <translation>F_L (フルクローズド)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="62" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="77" />
         <source>F_m (semi-closed)</source>
         <translation>F_m (セミクローズド)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="66" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="81" />
         <source>, τ %1 ms</source>
         <translation>、τ %1 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="70" />
-        <source>Not connected: applying the velocity PI and verifying with the profile need a connection.</source>
-        <translation>未接続: 速度 PI の適用とプロファイルによる検証には接続が必要です。</translation>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="85" />
+        <source>Maximum load error of the profile: measured %1° with the filter (%2° before the change); predicted %3° without and %4° with the filter.</source>
+        <translation>プロファイルでの負荷側誤差の最大値: 測定値はフィルタあり %1° (変更前 %2°)、予測値はフィルタなし %3°、フィルタあり %4° です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="72" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="92" />
+        <source>Not connected: applying the filter and verifying with the profile need a connection.</source>
+        <translation>未接続です: フィルタの適用とプロファイルでの検証には接続が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="94" />
         <source>Not applied: the proposal is kept in the session.</source>
         <translation>未適用: 提案はセッションに保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="73" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="95" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="74" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="96" />
         <source>The session was not saved (no store open).</source>
         <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
     </message>
@@ -5104,62 +5339,97 @@ No measured current step: the drive offers no current-step test.</source>
 <context>
     <name>axistune::gui::TwoInertiaVerifyPage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="499" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="549" />
         <source>Verify with the profile</source>
         <translation>プロファイルで検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="500" />
-        <source>A jog with the profile's speed and acceleration: the measured load − motor angle against the model's prediction from the measured motor motion (5.6).</source>
-        <translation>プロファイルの速度と加速度でジョグ: 測定した負荷 − モータの角度を、測定したモータの動きからのモデルの予測 (5.6) と比較します。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="505" />
-        <source>Time</source>
-        <translation>時間</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="505" />
-        <source>Load − motor</source>
-        <translation>負荷 − モータ</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="521" />
-        <source>No verification run.</source>
-        <translation>検証は実行されていません。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="530" />
-        <source>The trace lacks t_s, motor_pos_rad, motor_vel_rad_s or table_pos_rad (a rotary axis with a load encoder is needed).</source>
-        <translation>トレースに t_s、motor_pos_rad、motor_vel_rad_s または table_pos_rad がありません (負荷側エンコーダ付きの回転軸が必要です)。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="553" />
-        <source>measured</source>
-        <translation>測定</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="554" />
-        <source>predicted from the motor motion</source>
-        <translation>モータの動きからの予測</translation>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="550" />
+        <source>The same profile as before the change, now with the filter: the measured load error y_L − y* against the prediction with and without the filter (ideal motor tracking), and the load − motor angle against the model's prediction from the measured motor motion (5.6).</source>
+        <translation>変更前と同じプロファイルをフィルタありで実行します: 測定した負荷側誤差 y_L − y* をフィルタあり・なしの予測 (モータは理想追従) と比較し、負荷 − モータの角度を測定したモータの動きからモデルで予測した値 (5.6) と比較します。</translation>
     </message>
     <message>
         <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="556" />
-        <source>Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°, predicted for ideal motor tracking of the trapezoid %3°. Without an F_m/F_L parameter in the drive this is the unfiltered case; the filtered case needs the filter in the NC.</source>
-        <translation>負荷 − モータの角度の最大値: 測定 %1°、測定したモータの動きからの予測 %2°、台形へのモータの理想追従での予測 %3°。サーボアンプに F_m/F_L のパラメータがないため、これはフィルタなしの場合です。フィルタありの場合は NC にフィルタが必要です。</translation>
+        <source>Time from the start of the move</source>
+        <translation>移動開始からの時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="556" />
+        <source>Load error y_L − y*</source>
+        <translation>負荷側誤差 y_L − y*</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="609" />
+        <source>predicted without the filter</source>
+        <translation>予測、フィルタなし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="611" />
+        <source>predicted with the filter</source>
+        <translation>予測、フィルタあり</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="613" />
+        <source>measured before the change</source>
+        <translation>測定、変更前</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="615" />
+        <source>measured with the filter</source>
+        <translation>測定、フィルタあり</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="639" />
+        <source>The trace lacks t_s, position_cmd_rad, motor_pos_rad, motor_vel_rad_s or table_pos_rad (a rotary axis with a load encoder is needed).</source>
+        <translation>トレースに t_s、position_cmd_rad、motor_pos_rad、motor_vel_rad_s または table_pos_rad がありません (負荷側エンコーダのある回転軸が必要です)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="658" />
+        <source>Maximum load error y_L − y* of the profile: measured with the filter %1°; predicted (ideal motor tracking) %2° without and %3° with the filter.</source>
+        <translation>プロファイルでの負荷側誤差 y_L − y* の最大値: 測定値はフィルタあり %1°、予測値 (モータは理想追従) はフィルタなし %2°、フィルタあり %3° です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="664" />
+        <source>Measured before the change: %1° (ratio with/before %2).</source>
+        <translation>変更前の測定値: %1° (フィルタあり/変更前の比 %2)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="669" />
+        <source>Measured with the filter / predicted without: %1 (the thesis reached 0.086, its criterion for a working filter is at most 0.2).</source>
+        <translation>フィルタありの測定値/フィルタなしの予測値: %1 (論文の結果は 0.086、フィルタが有効と判断する基準は 0.2 以下)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="672" />
+        <source>Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°.</source>
+        <translation>負荷 − モータの角度の最大値: 測定値 %1°、測定したモータの動きからの予測値 %2°。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="630" />
+        <source>No verification run.</source>
+        <translation>検証は実行されていません。</translation>
     </message>
 </context>
 <context>
     <name>axistune::gui::TwoInertiaWizard</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="80" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="102" />
         <source>Two-inertia vibration suppression</source>
         <translation>2慣性系の振動抑制</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="87" />
-        <source>Frequency response: a torque sine stream at the set amplitude is injected into the closed velocity loop (the axis oscillates about its position). Verification: a jog with the profile's speed and acceleration, and back to the start.</source>
-        <translation>周波数応答: 設定した振幅の正弦波トルクを速度閉ループに注入します (軸は現在位置の周りで振動します)。検証: プロファイルの速度と加速度でジョグし、開始位置に戻ります。</translation>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="109" />
+        <source>Frequency response: a torque sine stream at the set amplitude is injected into the closed velocity loop (the axis oscillates about its position). Before and after applying the filter: one move with the profile's speed, acceleration and jerk (it does not return to the start).</source>
+        <translation>周波数応答: 設定した振幅の正弦波トルクを閉じた速度ループに加振します (軸は現在位置の周りで振動します)。フィルタの適用前と適用後: プロファイルの速度・加速度・ジャークで 1 回移動します (開始位置には戻りません)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="135" />
+        <source>Profile before the change</source>
+        <translation>変更前のプロファイル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="164" />
+        <source>the suppression filter and gains</source>
+        <translation>振動抑制フィルタとゲイン</translation>
     </message>
 </context>
 <context>

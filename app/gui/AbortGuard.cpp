@@ -42,6 +42,8 @@ bool AbortGuard::reject()
     for (auto* r : m_runs)
         if (r->isRunning())
             m_ctx.drive().abort();
+    if (m_hooks.abortRuns)
+        m_hooks.abortRuns();
     if (m_restoring)
         return true;  // closes when the restore is done
     if (m_hooks.saved() || (!m_hooks.hasData() && !m_apply->applied()))

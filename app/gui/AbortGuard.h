@@ -29,6 +29,7 @@ public:
         std::function<bool()> hasData;                        ///< something measured or proposed worth keeping
         std::function<void(const QString& reason)> saveAborted; ///< store the session as aborted
         std::function<void()> close;                          ///< QWizard::reject() of the wizard
+        std::function<void()> abortRuns;                      ///< optional: stops runs that are not TestRunPages
     };
 
     /// `runs`: the wizard's test pages (aborted on cancel); `what`: the written parameters in words, for

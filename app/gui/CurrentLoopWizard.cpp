@@ -3,6 +3,7 @@
 // docs/wizards/current-loop.md). Method: spec/current-loop-and-multisweep-frf.md chapter 2.
 #include "app/gui/CurrentLoopWizard.h"
 
+#include "app/gui/AbortGuard.h"
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
@@ -113,7 +114,7 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard
         if (ok && !m_beforeRun->replies().empty() && m_beforeRun->replies().front().capture)
             m_data.beforeCapture = m_beforeRun->replies().front().capture;
         else
-            m_ctx.log(tr("Current loop: the current step before applying failed: %1").arg(m_beforeRun->failure()));
+            m_guard->runFailed(tr("The current step before applying failed: %1").arg(m_beforeRun->failure()));
     });
     m_run = new TestRunPage(ctx, this);
     m_run->setObjectName("clRunPage");
@@ -129,8 +130,15 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard
             return;
         }
         m_data.measureError = m_run->failure();
-        m_ctx.log(tr("Current loop: the current step failed: %1").arg(m_run->failure()));
+        // Nothing verified the applied gains: they are restored and the session is kept as aborted.
+        m_guard->runFailed(tr("The current step after applying failed: %1").arg(m_run->failure()));
     });
+    AbortGuard::Hooks hooks;
+    hooks.saved = [this] { return m_sessionId > 0 || m_savedAborted; };
+    hooks.hasData = [this] { return !m_beforeRun->replies().empty() || !m_run->replies().empty(); };
+    hooks.saveAborted = [this](const QString& why) { saveSession(true, why); };
+    hooks.close = [this] { QWizard::reject(); };
+    m_guard = new AbortGuard(ctx, m_apply, {m_beforeRun, m_run}, tr("the current-loop gains"), hooks, this);
     auto* verify = new CurrentLoopVerifyPage(ctx, m_data, m_apply, this);
     auto* save = new CurrentLoopSavePage(ctx, m_data, m_apply, this);
     setPage(Motor, m_motor);
@@ -153,13 +161,14 @@ int CurrentLoopWizard::nextId() const
     return QWizard::nextId();
 }
 
-void CurrentLoopWizard::saveSession()
+void CurrentLoopWizard::saveSession(bool aborted, const QString& reason)
 {
     const auto& d = m_data;
     store::SessionRecord rec;
     rec.info.kind = "current-loop";
     rec.info.axis = d.axis.toStdString();
-    rec.info.status = store::SessionStatus::Completed;
+    rec.info.status = aborted ? store::SessionStatus::Aborted : store::SessionStatus::Completed;
+    rec.info.note = reason.toStdString();
     const auto& m = d.motor;
     rec.inputs = {{"source", d.fromDrive ? (d.fromProfile ? "drive+profile" : "drive")
                                          : (d.fromProfile ? "profile" : "entered")},
@@ -290,8 +299,16 @@ void CurrentLoopWizard::saveSession()
             {0, rec.info.axis, store::ParameterSource::Applied, {}, "current-loop wizard", m_apply->readBack()});
     rec.journal = m_apply->journal();
     auto id = m_ctx.saveSession(rec);
-    if (id)
+    if (id && !aborted)
         m_sessionId = *id;
+    if (id && aborted)
+        m_savedAborted = true;
+}
+
+void CurrentLoopWizard::reject()
+{
+    if (!m_guard->reject())
+        QWizard::reject();
 }
 
 } // namespace gui

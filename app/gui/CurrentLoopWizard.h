@@ -38,6 +38,7 @@ class CurvePlot;
 namespace gui {
 
 class AppContext;
+class AbortGuard;
 class ApplyPage;
 class SafetyPage;
 class TestRunPage;
@@ -244,12 +245,17 @@ public:
     TestRunPage* beforeRunPage() const { return m_beforeRun; }
     qint64 savedSessionId() const { return m_sessionId; }
 
-    void saveSession();
+    /// Saves the session (Completed, or Aborted with the reason and whatever was measured).
+    void saveSession(bool aborted = false, const QString& reason = {});
     int nextId() const override;
+    /// Cancel: aborts a running step, restores applied gains and records the session as aborted (AbortGuard).
+    void reject() override;
 
 private:
     AppContext& m_ctx;
     CurrentLoopData m_data;
+    AbortGuard* m_guard = nullptr;
+    bool m_savedAborted = false;
     CurrentLoopMotorPage* m_motor = nullptr;
     CurrentLoopDesignPage* m_design = nullptr;
     ApplyPage* m_apply = nullptr;

@@ -4,6 +4,7 @@
 #include "app/gui/LostMotionWizard.h"
 
 #include "app/gui/BallBarText.h"
+#include "app/gui/AbortGuard.h"
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
@@ -122,8 +123,18 @@ LostMotionWizard::LostMotionWizard(AppContext& ctx, QWidget* parent) : QWizard(p
     setPage(Verify, verify);
     setPage(Save, save);
     setStartId(Source);
-    connect(m_circles, &LostMotionCirclePage::runFailed, this,
-            [this](const QString& why) { saveSession(true, why); });
+    AbortGuard::Hooks hooks;
+    hooks.saved = [this] { return m_sessionId > 0 || m_savedAborted; };
+    hooks.hasData = [this] { return !m_data.traces.empty(); };
+    hooks.saveAborted = [this](const QString& why) { saveSession(true, why); };
+    hooks.close = [this] { QWizard::reject(); };
+    hooks.abortRuns = [this, verify] {
+        m_circles->cleanupPage();  // aborts a running circle
+        verify->cleanupPage();
+    };
+    m_guard = new AbortGuard(ctx, m_apply, {}, tr("the lost-motion compensation"), hooks, this);
+    connect(m_circles, &LostMotionCirclePage::runFailed, m_guard, &AbortGuard::runFailed);
+    connect(verify, &LostMotionVerifyPage::runFailed, m_guard, &AbortGuard::runFailed);
     resize(1000, 700);
 }
 
@@ -231,6 +242,14 @@ void LostMotionWizard::saveSession(bool aborted, const QString& reason)
     auto id = m_ctx.saveSession(rec);
     if (id && !aborted)
         m_sessionId = *id;
+    if (id && aborted)
+        m_savedAborted = true;
+}
+
+void LostMotionWizard::reject()
+{
+    if (!m_guard->reject())
+        QWizard::reject();
 }
 
 }  // namespace gui

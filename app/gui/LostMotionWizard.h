@@ -48,6 +48,7 @@ class PolarPlot;
 namespace gui {
 
 class AppContext;
+class AbortGuard;
 class ApplyPage;
 class SafetyPage;
 
@@ -220,6 +221,10 @@ public:
     void cleanupPage() override;
     bool isComplete() const override;
 
+signals:
+    /// The verification circle failed or was aborted (the compensation is then unverified).
+    void runFailed(const QString& why);
+
 private:
     void evaluate();
     AppContext& m_ctx;
@@ -266,10 +271,14 @@ public:
 
     /// Saves the session (Completed, or Aborted with the reason); called by the last page, or on failure.
     void saveSession(bool aborted, const QString& reason);
+    /// Cancel: stops a running circle, restores an applied compensation, records the session as aborted.
+    void reject() override;
 
 private:
     AppContext& m_ctx;
     LostMotionData m_data;
+    AbortGuard* m_guard = nullptr;
+    bool m_savedAborted = false;
     LostMotionSourcePage* m_source = nullptr;
     SafetyPage* m_safety = nullptr;
     LostMotionCirclePage* m_circles = nullptr;

@@ -338,6 +338,7 @@ LostMotionVerifyPage::LostMotionVerifyPage(AppContext& ctx, LostMotionData& shar
             m_label->setText((aborted ? tr("Aborted: %1") : tr("Failed: %1")).arg(error));
             m_done = true;
             emit completeChanged();
+            emit runFailed(tr("The verification circle failed: %1").arg(error));
             return;
         }
         m_d.verification = m_runner->traces().front();

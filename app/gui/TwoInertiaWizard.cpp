@@ -3,6 +3,7 @@
 // docs/wizards/two-inertia.md). Method: spec/lost-motion-and-two-inertia.md chapter 5, §4.8–4.14.
 #include "app/gui/TwoInertiaWizard.h"
 
+#include "app/gui/AbortGuard.h"
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
@@ -155,10 +156,18 @@ TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : QWizard(p
         if (id == Filter)
             m_safety->setAxes(m_data.fromSession ? QStringList{m_data.axis} : QStringList{});
     });
-    connect(m_run, &TestRunPage::runFinished, this, [this](bool ok) {
-        if (!ok)
-            saveSession(true, m_run->failure());
-    });
+    AbortGuard::Hooks hooks;
+    hooks.saved = [this] { return m_sessionId > 0 || m_savedAborted; };
+    hooks.hasData = [this] { return !m_run->replies().empty() || !m_beforeRun->replies().empty(); };
+    hooks.saveAborted = [this](const QString& why) { saveSession(true, why); };
+    hooks.close = [this] { QWizard::reject(); };
+    m_guard = new AbortGuard(ctx, m_apply, {m_run, m_beforeRun, m_verifyRun}, tr("the suppression filter and gains"),
+                             hooks, this);
+    for (TestRunPage* run : {m_run, m_beforeRun, m_verifyRun})
+        connect(run, &TestRunPage::runFinished, this, [this, run](bool ok) {
+            if (!ok)
+                m_guard->runFailed(run->failure());
+        });
     resize(1000, 700);
 }
 
@@ -275,6 +284,14 @@ void TwoInertiaWizard::saveSession(bool aborted, const QString& reason)
     auto id = m_ctx.saveSession(rec);
     if (id && !aborted)
         m_sessionId = *id;
+    if (id && aborted)
+        m_savedAborted = true;
+}
+
+void TwoInertiaWizard::reject()
+{
+    if (!m_guard->reject())
+        QWizard::reject();
 }
 
 }  // namespace gui

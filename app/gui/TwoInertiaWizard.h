@@ -40,6 +40,7 @@ class CurvePlot;
 namespace gui {
 
 class AppContext;
+class AbortGuard;
 class ApplyPage;
 class SafetyPage;
 class TestRunPage;
@@ -203,10 +204,14 @@ public:
 
     /// Saves the session (Completed, or Aborted with the reason and whatever was measured).
     void saveSession(bool aborted, const QString& reason);
+    /// Cancel: aborts a running test, restores the applied filter and gains, records the session as aborted.
+    void reject() override;
 
 private:
     AppContext& m_ctx;
     TwoInertiaData m_data;
+    AbortGuard* m_guard = nullptr;
+    bool m_savedAborted = false;
     TwoInertiaSourcePage* m_source = nullptr;
     SafetyPage* m_safety = nullptr;
     TestRunPage* m_run = nullptr;

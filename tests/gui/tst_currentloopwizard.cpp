@@ -339,6 +339,55 @@ private slots:
         QCOMPARE(rec->inputs["source"].get<std::string>(), std::string("entered"));
     }
 
+    void cancelAfterApplyRestoresTheGains()
+    {
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        ctx.drive().connectTo("sim:vmc");
+        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
+        auto preset = sim::loadPreset("vmc");
+        QVERIFY(preset.ok());
+        const double kpBefore = preset->axis("X")->values.at("current.kp");
+        const double kiBefore = preset->axis("X")->values.at("current.ki");
+        CurrentLoopWizard w(ctx);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(waitUntil([&] { return !w.motorPage()->isReading() && w.motorPage()->isComplete(); }, 10000));
+        w.findChild<QDoubleSpinBox*>("clR")->setValue(0.32);
+        w.findChild<QDoubleSpinBox*>("clL")->setValue(4.0);  // another motor: gains that differ from the preset's
+        w.next();
+        QVERIFY(waitUntil([&] { return w.designPage()->isComplete(); }, 60000));
+        w.next();
+        auto* stepPage = qobject_cast<CurrentLoopStepPage*>(w.currentPage());
+        QVERIFY(stepPage);
+        stepPage->measureCheck()->setChecked(false);
+        w.next();
+        QCOMPARE(w.currentId(), int(CurrentLoopWizard::Apply));
+        ApplyPage* apply = w.applyPage();
+        apply->confirmation()->setChecked(true);
+        QVERIFY(waitUntil([&] { return !apply->previousValues().empty() && apply->applyButton()->isEnabled(); }, 10000));
+        apply->applyButton()->click();
+        QVERIFY(waitUntil([&] { return apply->applied(); }, 10000));
+        QVERIFY(std::abs(apply->readBack().at("current.kp") - kpBefore) > 0.05 * kpBefore);
+        // Cancel: the gains from before come back, and the session is kept as aborted.
+        w.reject();
+        QVERIFY(waitUntil([&] { return !w.isVisible(); }, 10000));
+        model::ParameterValues back;
+        const int id = ctx.drive().readParameters("X", {"current.kp", "current.ki"});
+        connect(&ctx.drive(), &DriveController::replied, this, [&](const DriveReply& r) {
+            if (r.id == id)
+                back = r.values;
+        });
+        QVERIFY(waitUntil([&] { return back.size() == 2; }, 10000));
+        QCOMPARE(back.at("current.kp"), kpBefore);
+        QCOMPARE(back.at("current.ki"), kiBefore);
+        auto sessions = ctx.database()->listSessions();
+        QVERIFY(sessions.ok() && sessions->size() == 1);
+        QCOMPARE(int(sessions->front().status), int(store::SessionStatus::Aborted));
+        QVERIFY2(QString::fromStdString(sessions->front().note).contains("restored"), sessions->front().note.c_str());
+    }
+
     void motorDataFromTheProfileAndSavedBack()
     {
         QTemporaryDir dir;
