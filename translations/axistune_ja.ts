@@ -1076,129 +1076,129 @@
 <context>
     <name>axistune::gui::ApplyPage</name>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="341" />
-        <location filename="../app/gui/WizardPages.cpp" line="354" />
+        <location filename="../app/gui/WizardPages.cpp" line="342" />
+        <location filename="../app/gui/WizardPages.cpp" line="355" />
         <source>Apply</source>
         <translation>適用</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="342" />
+        <location filename="../app/gui/WizardPages.cpp" line="343" />
         <source>The parameters below change on the drive. Every value is read back after the write.</source>
         <translation>以下のパラメータをサーボアンプで変更します。書き込み後にすべての値を読み出して確認します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="344" />
+        <location filename="../app/gui/WizardPages.cpp" line="345" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="344" />
+        <location filename="../app/gui/WizardPages.cpp" line="345" />
         <source>Key</source>
         <translation>キー</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="344" />
+        <location filename="../app/gui/WizardPages.cpp" line="345" />
         <source>Device</source>
         <translation>サーボアンプ</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="344" />
+        <location filename="../app/gui/WizardPages.cpp" line="345" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="344" />
+        <location filename="../app/gui/WizardPages.cpp" line="345" />
         <source>Read back</source>
         <translation>読み出し値</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="344" />
+        <location filename="../app/gui/WizardPages.cpp" line="345" />
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="349" />
+        <location filename="../app/gui/WizardPages.cpp" line="350" />
         <source>Write these values to the drive</source>
         <translation>これらの値をサーボアンプに書き込む</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="350" />
+        <location filename="../app/gui/WizardPages.cpp" line="351" />
         <source>Do not apply now (keep the proposal in the session only)</source>
         <translation>今は適用しない (提案はセッションにのみ保存)</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="355" />
+        <location filename="../app/gui/WizardPages.cpp" line="356" />
         <source>Restore previous values</source>
         <translation>以前の値に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="394" />
+        <location filename="../app/gui/WizardPages.cpp" line="395" />
         <source>Not connected: the proposal can only be kept in the session.</source>
         <translation>未接続: 提案はセッションに保存するだけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="397" />
+        <location filename="../app/gui/WizardPages.cpp" line="398" />
         <source>Reading the device values…</source>
         <translation>サーボアンプの値を読み出し中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="419" />
+        <location filename="../app/gui/WizardPages.cpp" line="420" />
         <source>Changed</source>
         <translation>変更あり</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="433" />
+        <location filename="../app/gui/WizardPages.cpp" line="434" />
         <source>The device values are not read yet: wait, then Apply.</source>
         <translation>サーボアンプの値をまだ読み出していません。少し待ってから適用してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="437" />
+        <location filename="../app/gui/WizardPages.cpp" line="438" />
         <source>Writing…</source>
         <translation>書き込み中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="446" />
+        <location filename="../app/gui/WizardPages.cpp" line="447" />
         <source>Restoring the previous values…</source>
         <translation>以前の値に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="469" />
-        <location filename="../app/gui/WizardPages.cpp" line="479" />
+        <location filename="../app/gui/WizardPages.cpp" line="470" />
+        <location filename="../app/gui/WizardPages.cpp" line="480" />
         <source>Reading the parameters failed: %1</source>
         <translation>パラメータの読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="483" />
+        <location filename="../app/gui/WizardPages.cpp" line="484" />
         <source>Changed values are highlighted. Confirm, then Apply.</source>
         <translation>変更される値は強調表示されています。確認してから適用してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="488" />
+        <location filename="../app/gui/WizardPages.cpp" line="489" />
         <source>The write failed; the drive keeps its values: %1</source>
         <translation>書き込みに失敗しました。サーボアンプの値は変わっていません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="495" />
+        <location filename="../app/gui/WizardPages.cpp" line="496" />
         <source>Applied and read back.</source>
         <translation>適用し、読み出して確認しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="499" />
+        <location filename="../app/gui/WizardPages.cpp" line="500" />
         <source>Axis %1: %2 parameters applied and read back</source>
         <translation>軸 %1: %2 個のパラメータを適用し、読み出して確認しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="505" />
+        <location filename="../app/gui/WizardPages.cpp" line="506" />
         <source>Restoring failed: %1</source>
         <translation>元に戻せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="512" />
+        <location filename="../app/gui/WizardPages.cpp" line="513" />
         <source>The previous values are back on the drive.</source>
         <translation>サーボアンプの値を以前の値に戻しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="516" />
+        <location filename="../app/gui/WizardPages.cpp" line="517" />
         <source>Axis %1: previous parameters restored</source>
         <translation>軸 %1: 以前のパラメータに戻しました</translation>
     </message>
@@ -4852,37 +4852,37 @@
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="263" />
+        <location filename="../app/gui/WizardPages.cpp" line="264" />
         <source>Nothing to run.</source>
         <translation>実行するものがありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="267" />
+        <location filename="../app/gui/WizardPages.cpp" line="268" />
         <source>Not connected.</source>
         <translation>未接続です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="282" />
+        <location filename="../app/gui/WizardPages.cpp" line="283" />
         <source>Test %1 of %2 on axis %3: %4</source>
         <translation>テスト %1 / %2、軸 %3: %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="296" />
+        <location filename="../app/gui/WizardPages.cpp" line="297" />
         <source>Abort requested</source>
         <translation>中止を要求しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="327" />
+        <location filename="../app/gui/WizardPages.cpp" line="328" />
         <source>Completed.</source>
         <translation>完了しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="327" />
+        <location filename="../app/gui/WizardPages.cpp" line="328" />
         <source>Aborted: %1</source>
         <translation>中止: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/WizardPages.cpp" line="328" />
+        <location filename="../app/gui/WizardPages.cpp" line="329" />
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -4960,98 +4960,98 @@
         <translation>負荷側誤差 y_L − y*</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="443" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="444" />
         <source>Set by the axis's position.feedback</source>
         <translation>軸の position.feedback で決まります</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="485" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="486" />
         <source>without filter</source>
         <translation>フィルタなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="486" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="487" />
         <source>with F_m</source>
         <translation>F_m あり</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="502" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="503" />
         <source>Filter frequency f₀</source>
         <translation>フィルタ周波数 f₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="502" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="503" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="503" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="504" />
         <source>Filter damping ζ</source>
         <translation>フィルタの減衰 ζ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="505" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="506" />
         <source>Time constant τ</source>
         <translation>時定数 τ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="505" />
         <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="506" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="507" />
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="506" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="507" />
         <source>First-order lag T₁ = 2ζ/ω₀</source>
         <translation>1 次遅れ T₁ = 2ζ/ω₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="507" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="508" />
         <source>Velocity K_P (TI-5, ω_l 24 Hz, k 10)</source>
         <translation>速度 K_P (TI-5、ω_l 24 Hz、k 10)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="509" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="510" />
         <source>Velocity K_I (TI-5)</source>
         <translation>速度 K_I (TI-5)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="510" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="511" />
         <source>Drive filter suppression.mode</source>
         <translation>サーボアンプのフィルタ suppression.mode</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="511" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="512" />
         <source>2 (full-closed F_L)</source>
         <translation>2 (フルクローズド F_L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="511" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="512" />
         <source>1 (semi-closed F_m)</source>
         <translation>1 (セミクローズド F_m)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="512" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="513" />
         <source>Torque feedforward inertia J_m + J_L</source>
         <translation>トルクフィードフォワードのイナーシャ J_m + J_L</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="515" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="516" />
         <source>Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, load through (5.6)).</source>
         <translation>負荷側誤差の最大値の予測: フィルタなし %1°、F_m あり %2° (モータは理想追従、負荷は (5.6) で計算)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="520" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="521" />
         <source>F_L acts inside the full-closed loop: the prediction with the filter is the semi-closed one.</source>
         <translation>F_L はフルクローズドのループ内で働くため、フィルタありの予測はセミクローズドのものです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="521" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="522" />
         <source>The proposal writes the filter to the drive (suppression.mode, f0, zeta%1), the velocity PI of the thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m on the fitted J_m, and the velocity and torque feedforward the method needs. The profile runs once before and once after the change.</source>
         <translation>提案では、フィルタ (suppression.mode、f0、zeta%1) をサーボアンプに書き込み、同定した J_m に論文の規則 K_P = k√2·ω_l·J_m、K_I = k·ω_l²·J_m による速度 PI と、この手法に必要な速度・トルクフィードフォワードを適用します。プロファイルは変更の前と後に 1 回ずつ実行します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="526" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="527" />
         <source>Not connected to the axis: the mode is chosen here, and the settings are only stored.</source>
         <translation>軸に接続されていません: モードはここで選択し、設定は保存のみ行います。</translation>
     </message>
@@ -5339,72 +5339,72 @@
 <context>
     <name>axistune::gui::TwoInertiaVerifyPage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="549" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="550" />
         <source>Verify with the profile</source>
         <translation>プロファイルで検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="550" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="551" />
         <source>The same profile as before the change, now with the filter: the measured load error y_L − y* against the prediction with and without the filter (ideal motor tracking), and the load − motor angle against the model's prediction from the measured motor motion (5.6).</source>
         <translation>変更前と同じプロファイルをフィルタありで実行します: 測定した負荷側誤差 y_L − y* をフィルタあり・なしの予測 (モータは理想追従) と比較し、負荷 − モータの角度を測定したモータの動きからモデルで予測した値 (5.6) と比較します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="556" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="557" />
         <source>Time from the start of the move</source>
         <translation>移動開始からの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="556" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="557" />
         <source>Load error y_L − y*</source>
         <translation>負荷側誤差 y_L − y*</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="609" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="610" />
         <source>predicted without the filter</source>
         <translation>予測、フィルタなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="611" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="612" />
         <source>predicted with the filter</source>
         <translation>予測、フィルタあり</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="613" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="614" />
         <source>measured before the change</source>
         <translation>測定、変更前</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="615" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="616" />
         <source>measured with the filter</source>
         <translation>測定、フィルタあり</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="639" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="640" />
         <source>The trace lacks t_s, position_cmd_rad, motor_pos_rad, motor_vel_rad_s or table_pos_rad (a rotary axis with a load encoder is needed).</source>
         <translation>トレースに t_s、position_cmd_rad、motor_pos_rad、motor_vel_rad_s または table_pos_rad がありません (負荷側エンコーダのある回転軸が必要です)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="658" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="659" />
         <source>Maximum load error y_L − y* of the profile: measured with the filter %1°; predicted (ideal motor tracking) %2° without and %3° with the filter.</source>
         <translation>プロファイルでの負荷側誤差 y_L − y* の最大値: 測定値はフィルタあり %1°、予測値 (モータは理想追従) はフィルタなし %2°、フィルタあり %3° です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="664" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="665" />
         <source>Measured before the change: %1° (ratio with/before %2).</source>
         <translation>変更前の測定値: %1° (フィルタあり/変更前の比 %2)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="669" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="670" />
         <source>Measured with the filter / predicted without: %1 (the thesis reached 0.086, its criterion for a working filter is at most 0.2).</source>
         <translation>フィルタありの測定値/フィルタなしの予測値: %1 (論文の結果は 0.086、フィルタが有効と判断する基準は 0.2 以下)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="672" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="673" />
         <source>Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°.</source>
         <translation>負荷 − モータの角度の最大値: 測定値 %1°、測定したモータの動きからの予測値 %2°。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="630" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="631" />
         <source>No verification run.</source>
         <translation>検証は実行されていません。</translation>
     </message>
@@ -5427,7 +5427,12 @@
         <translation>変更前のプロファイル</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="164" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="142" />
+        <source>Refused: the profile is given in motor revolutions and runs on rotary axes only; axis %1 is linear (its jog would be read in metres). Measure the load error with the NC's own test.</source>
+        <translation>拒否: プロファイルはモータの回転数で与えられるため回転軸でのみ実行します。軸 %1 は直線軸です（ジョグがメートル単位として解釈されます）。負荷側の誤差は NC 自身のテストで測定してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="176" />
         <source>the suppression filter and gains</source>
         <translation>振動抑制フィルタとゲイン</translation>
     </message>

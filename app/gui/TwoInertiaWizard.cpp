@@ -133,12 +133,24 @@ TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : QWizard(p
     m_beforeRun = new TestRunPage(ctx, this);
     m_beforeRun->setObjectName("tiBeforeRunPage");
     m_beforeRun->setTitle(tr("Profile before the change"));
-    m_beforeRun->setRequestFactory(
-        [this] { return std::vector<device::TestRequest>{profileJog(m_data.axis, m_data.profile)}; });
+    // The profile is given in motor revolutions: on a linear axis its numbers would be read as metres.
+    auto profileRequests = [this] {
+        return m_data.linearAxis ? std::vector<device::TestRequest>{}
+                                 : std::vector<device::TestRequest>{profileJog(m_data.axis, m_data.profile)};
+    };
+    auto linearRefusal = [this] {
+        return m_data.linearAxis ? tr("Refused: the profile is given in motor revolutions and runs on rotary axes "
+                                      "only; axis %1 is linear (its jog would be read in metres). Measure the load "
+                                      "error with the NC's own test.")
+                                       .arg(m_data.axis)
+                                 : QString();
+    };
+    m_beforeRun->setRequestFactory(profileRequests);
+    m_beforeRun->setEmptyReason(linearRefusal);
     m_verifyRun = new TestRunPage(ctx, this);
     m_verifyRun->setObjectName("tiVerifyRunPage");
-    m_verifyRun->setRequestFactory(
-        [this] { return std::vector<device::TestRequest>{profileJog(m_data.axis, m_data.profile)}; });
+    m_verifyRun->setRequestFactory(profileRequests);
+    m_verifyRun->setEmptyReason(linearRefusal);
     auto* verify = new TwoInertiaVerifyPage(m_data, m_beforeRun, m_verifyRun, this);
     auto* save = new TwoInertiaSavePage(ctx, m_data, m_apply, this);
     setPage(Source, m_source);

@@ -66,6 +66,9 @@ struct TwoInertiaData {
     tuning::LoadErrorTraces loadError;
     tuning::VelocityPi proposedPi;
     int feedback = -1;                 ///< the axis's position.feedback (0 semi, 1 full), -1 unknown
+    /// The axis has the linear axes' parameters (lostmotion.*): the profile, given in motor revolutions, is
+    /// not run there (its units would be read as metres).
+    bool linearAxis = false;
     model::ParameterValues proposal;   ///< what the apply page writes (SI)
     // Verification (jog of the profile's speed and acceleration).
     std::shared_ptr<const model::Capture> jog;

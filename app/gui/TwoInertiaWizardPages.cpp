@@ -433,6 +433,7 @@ TwoInertiaFilterPage::TwoInertiaFilterPage(AppContext& ctx, TwoInertiaData& shar
         if (r.id != m_readRequest)
             return;
         m_readRequest = 0;
+        m_d.linearAxis = r.ok && r.values.count("lostmotion.mode") > 0;
         auto it = r.values.find("position.feedback");
         if (r.ok && it != r.values.end()) {
             // The filter must match the feedback (the drive refuses F_m with full-closed and F_L with
@@ -453,7 +454,7 @@ void TwoInertiaFilterPage::initializePage()
     m_mode->setToolTip(QString());
     m_d.feedback = -1;
     if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis))
-        m_readRequest = m_ctx.drive().readParameters(m_d.axis, {"position.feedback"});
+        m_readRequest = m_ctx.drive().readParameters(m_d.axis);  // all: position.feedback, and the axis kind
     update();
 }
 

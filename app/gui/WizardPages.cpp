@@ -260,7 +260,8 @@ void TestRunPage::start()
     m_requests = m_factory ? m_factory() : std::vector<device::TestRequest>{};
     m_bar->setValue(0);
     if (m_requests.empty()) {
-        finish(false, tr("Nothing to run."), ErrorCode::BadInput);
+        const QString why = m_emptyReason ? m_emptyReason() : QString();
+        finish(false, why.isEmpty() ? tr("Nothing to run.") : why, ErrorCode::BadInput);
         return;
     }
     if (!m_ctx.drive().isConnected()) {

@@ -89,6 +89,8 @@ public:
 
     /// Called when the page is entered: the tests to run, in order. Entering the page starts them.
     void setRequestFactory(std::function<std::vector<device::TestRequest>()> factory);
+    /// Why the factory yields no request (shown as the failure instead of "Nothing to run.").
+    void setEmptyReason(std::function<QString()> reason) { m_emptyReason = std::move(reason); }
 
     bool isRunning() const { return m_running; }
     bool succeeded() const { return m_succeeded; }
@@ -119,6 +121,7 @@ private:
 
     AppContext& m_ctx;
     std::function<std::vector<device::TestRequest>()> m_factory;
+    std::function<QString()> m_emptyReason;
     std::vector<device::TestRequest> m_requests;
     std::vector<DriveReply> m_replies;
     std::size_t m_index = 0;

@@ -57,6 +57,26 @@ private slots:
         QVERIFY(!e->needsDrive);
     }
 
+    void profileIsRefusedOnALinearAxis()
+    {
+        // The profile is in motor revolutions: on vmc's linear X its numbers would be metres per second.
+        QTemporaryDir dir;
+        AppContext ctx;
+        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
+        ctx.drive().connectTo("sim:vmc");
+        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
+        TwoInertiaWizard w(ctx);
+        w.data().axis = "X";
+        w.filterPage()->initializePage();  // reads the axis's parameters: X has the linear ones
+        QVERIFY(waitUntil([&] { return w.data().linearAxis; }, 10000));
+        w.beforeRunPage()->initializePage();
+        QVERIFY(waitUntil([&] { return !w.beforeRunPage()->isRunning() && !w.beforeRunPage()->failure().isEmpty(); },
+                          10000));
+        QVERIFY(!w.beforeRunPage()->succeeded());
+        QVERIFY2(w.beforeRunPage()->failure().contains("rotary axes only"), qPrintable(w.beforeRunPage()->failure()));
+        QVERIFY(w.beforeRunPage()->replies().empty());  // nothing was sent to the drive
+    }
+
     void measuredOnTheBenchGivesTheAntiResonance()
     {
         const double jm = preset("plant.inertia_motor"), jl = preset("plant.inertia_load");
