@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Words for the ball-bar diagnostics' rule keys (core/tuning/BallBarReport.cpp; docs/ballbar.md "Rule keys").
 #include "app/gui/BallBarText.h"
+#include "app/gui/WidgetUtil.h"
 
 #include <map>
 
 namespace axistune {
 namespace gui {
 namespace {
-
-QString qs(const std::string& s) { return QString::fromStdString(s); }
 
 /// Fills %1..%n; the English text when the number of arguments does not match the key's.
 QString fill(const QString& pattern, const std::vector<std::string>& args, std::size_t expected, const std::string& english)

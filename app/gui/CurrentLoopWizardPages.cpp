@@ -3,6 +3,7 @@
 // design (k_p–k_i plane, rise time against α, schedule), step responses, verification.
 // Method: spec/current-loop-and-multisweep-frf.md chapter 2 (core/tuning/CurrentLoop.h).
 #include "app/gui/AppContext.h"
+#include "app/gui/WidgetUtil.h"
 #include "app/gui/CurrentLoopWizard.h"
 #include "app/gui/WizardPages.h"
 #include "core/store/Database.h"
@@ -35,37 +36,6 @@ namespace gui {
 namespace {
 
 constexpr int kCurvePoints = 60;
-
-QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double v, int decimals, const QString& suffix,
-                     const char* name)
-{
-    auto* s = new QDoubleSpinBox(parent);
-    s->setRange(lo, hi);
-    s->setDecimals(decimals);
-    s->setValue(v);
-    s->setSuffix(suffix);
-    s->setObjectName(name);
-    return s;
-}
-
-QTableWidget* makeTable(QWidget* parent, const QStringList& headers, const char* name)
-{
-    auto* t = new QTableWidget(0, headers.size(), parent);
-    t->setObjectName(name);
-    t->setHorizontalHeaderLabels(headers);
-    t->verticalHeader()->setVisible(false);
-    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    t->horizontalHeader()->setStretchLastSection(true);
-    return t;
-}
-
-void addRow(QTableWidget* t, const QStringList& cells)
-{
-    const int r = t->rowCount();
-    t->insertRow(r);
-    for (int c = 0; c < cells.size(); ++c)
-        t->setItem(r, c, new QTableWidgetItem(cells[c]));
-}
 
 /// Boundary curve with k_i = 0 (no admissible k_i) as gaps.
 std::vector<double> gapsAtZero(const std::vector<double>& ki)

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/DriveController.h"
+#include "app/gui/WidgetUtil.h"
 
 #include <QCoreApplication>
 #include <QMetaObject>
@@ -12,7 +13,6 @@ namespace axistune {
 namespace gui {
 
 namespace {
-QString qs(const std::string& s) { return QString::fromStdString(s); }
 /// Relative tolerance of the read-back check (float32 on the Modbus link has 6e-8).
 constexpr double kReadBackRelTol = 1e-6;
 }  // namespace

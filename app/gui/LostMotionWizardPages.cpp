@@ -2,6 +2,7 @@
 // Pages of the lost-motion wizard (LostMotionWizard.h; docs/wizards/lost-motion.md): source,
 // diagnostics, fit and prediction. The circle runs and the verification: LostMotionWizardRuns.cpp.
 #include "app/gui/LostMotionWizard.h"
+#include "app/gui/WidgetUtil.h"
 
 #include "app/gui/BallBarText.h"
 #include "app/gui/AppContext.h"
@@ -43,27 +44,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-QString qs(const std::string& s) { return QString::fromStdString(s); }
 QString um(double m, int prec = 3) { return QString::number(m * 1e6, 'f', prec); }
-
-QTableWidget* makeTable(QWidget* parent, const QStringList& headers)
-{
-    auto* t = new QTableWidget(0, headers.size(), parent);
-    t->setHorizontalHeaderLabels(headers);
-    t->verticalHeader()->setVisible(false);
-    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    t->horizontalHeader()->setStretchLastSection(true);
-    t->setWordWrap(true);
-    return t;
-}
-
-void addRow(QTableWidget* t, const QStringList& cells)
-{
-    const int r = t->rowCount();
-    t->insertRow(r);
-    for (int c = 0; c < cells.size(); ++c)
-        t->setItem(r, c, new QTableWidgetItem(cells[c]));
-}
 
 }  // namespace
 

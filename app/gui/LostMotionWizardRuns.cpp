@@ -2,6 +2,7 @@
 // Circle tests of the lost-motion wizard (LostMotionWizard.h "Circle tests"; docs/wizards/lost-motion.md):
 // the runner, the circle page and the verification page.
 #include "app/gui/LostMotionWizard.h"
+#include "app/gui/WidgetUtil.h"
 
 #include "app/gui/AppContext.h"
 #include "app/gui/DriveController.h"
@@ -46,27 +47,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kProgressSteps = 1000;  ///< progress units per circle
 
-QString qs(const std::string& s) { return QString::fromStdString(s); }
 QString um(double m, int prec = 3) { return QString::number(m * 1e6, 'f', prec); }
-
-QTableWidget* makeTable(QWidget* parent, const QStringList& headers)
-{
-    auto* t = new QTableWidget(0, headers.size(), parent);
-    t->setHorizontalHeaderLabels(headers);
-    t->verticalHeader()->setVisible(false);
-    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    t->horizontalHeader()->setStretchLastSection(true);
-    t->setWordWrap(true);
-    return t;
-}
-
-void addRow(QTableWidget* t, const QStringList& cells)
-{
-    const int r = t->rowCount();
-    t->insertRow(r);
-    for (int c = 0; c < cells.size(); ++c)
-        t->setItem(r, c, new QTableWidgetItem(cells[c]));
-}
 
 /// Deviation of a trace as a new trace (the prediction drawn as a ball-bar trace).
 io::BallBarTrace withDeviation(const io::BallBarTrace& t, const std::vector<double>& dev)

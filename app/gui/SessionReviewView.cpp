@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/SessionReviewView.h"
+#include "app/gui/WidgetUtil.h"
 
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
@@ -25,8 +26,6 @@ namespace axistune {
 namespace gui {
 
 namespace {
-QString qs(const std::string& s) { return QString::fromStdString(s); }
-
 /// A file-name-safe form of a capture name.
 QString safeName(const std::string& name)
 {
@@ -78,13 +77,6 @@ QTableWidget* table(const QStringList& headers, QWidget* parent)
     return t;
 }
 
-void addRow(QTableWidget* t, const QStringList& cells)
-{
-    const int r = t->rowCount();
-    t->insertRow(r);
-    for (int c = 0; c < cells.size(); ++c)
-        t->setItem(r, c, new QTableWidgetItem(cells[c]));
-}
 }  // namespace
 
 int addFrfWithBands(widgets::BodePlot& plot, const dsp::FrequencyResponse& frf, const QString& name)

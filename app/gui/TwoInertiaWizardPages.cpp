@@ -2,6 +2,7 @@
 // Pages of the two-inertia wizard (TwoInertiaWizard.h; docs/wizards/two-inertia.md): source, fit,
 // filter and prediction, verification. Method: spec/lost-motion-and-two-inertia.md §2.2–2.10, TI-1..TI-6.
 #include "app/gui/TwoInertiaWizard.h"
+#include "app/gui/WidgetUtil.h"
 
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
@@ -35,36 +36,6 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-
-QString qs(const std::string& s) { return QString::fromStdString(s); }
-
-QTableWidget* makeTable(QWidget* parent, const QStringList& headers)
-{
-    auto* t = new QTableWidget(0, headers.size(), parent);
-    t->setHorizontalHeaderLabels(headers);
-    t->verticalHeader()->setVisible(false);
-    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    t->horizontalHeader()->setStretchLastSection(true);
-    return t;
-}
-
-void addRow(QTableWidget* t, const QStringList& cells)
-{
-    const int r = t->rowCount();
-    t->insertRow(r);
-    for (int c = 0; c < cells.size(); ++c)
-        t->setItem(r, c, new QTableWidgetItem(cells[c]));
-}
-
-QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double v, int decimals, const QString& suffix)
-{
-    auto* s = new QDoubleSpinBox(parent);
-    s->setRange(lo, hi);
-    s->setDecimals(decimals);
-    s->setValue(v);
-    s->setSuffix(suffix);
-    return s;
-}
 
 /// Full precision, independent of the locale.
 std::string exact(double v) { return QString::number(v, 'g', 17).toStdString(); }

@@ -3,6 +3,7 @@
 // source and rule, design with prediction, verification. Method: spec/lost-motion-and-two-inertia.md
 // §2.8 (corrected 5.13), TI-5 §4.12 (margins), §4.11 (position gain).
 #include "app/gui/AppContext.h"
+#include "app/gui/WidgetUtil.h"
 #include "app/gui/VelocityLoopWizard.h"
 #include "app/gui/WizardPages.h"
 #include "core/store/FrfCapture.h"
@@ -36,23 +37,6 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kPositionGainMarginDb = 6.0;
-
-QString qs(const std::string& s)
-{
-    return QString::fromStdString(s);
-}
-
-QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, double v, int decimals, const QString& suffix,
-                     const char* name)
-{
-    auto* s = new QDoubleSpinBox(parent);
-    s->setRange(lo, hi);
-    s->setDecimals(decimals);
-    s->setValue(v);
-    s->setSuffix(suffix);
-    s->setObjectName(name);
-    return s;
-}
 
 void addRow(QTableWidget* t, const QString& a, const QString& b, const QString& c)
 {
