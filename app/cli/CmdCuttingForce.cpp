@@ -2,6 +2,7 @@
 // axistune-cli cutting-force: the adaptive cutting force observer of seed 003 (eq. (3) torsion torque,
 // eq. (2) cutting force, switching RLS) run offline on a captured trace (docs/machining.md).
 #include "app/cli/CliCommand.h"
+#include "core/model/Units.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageJson.h"
@@ -18,12 +19,7 @@ struct CuttingForceArgs {
     std::string in, stage, out;
 };
 
-std::string num(double v)
-{
-    char b[40];
-    std::snprintf(b, sizeof b, "%.17g", v);
-    return b;
-}
+std::string num(double v) { return model::formatNumber(v, 17); }
 
 Result<double> samplePeriod(const model::Capture& cap, const std::string& src)
 {

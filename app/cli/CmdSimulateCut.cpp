@@ -2,6 +2,7 @@
 // axistune-cli simulate-cut: a milling cut with regeneration on a simulated feed axis (core/sim/Milling
 // coupled to the AxisSimulator through its load-torque input), written as a capture CSV (docs/machining.md).
 #include "app/cli/CliCommand.h"
+#include "core/model/Units.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/MachiningJson.h"
 #include "core/sim/CutSimulation.h"
@@ -23,12 +24,7 @@ struct SimulateCutArgs {
     bool lostMotion = false;
 };
 
-std::string num(double v)
-{
-    char b[40];
-    std::snprintf(b, sizeof b, "%.17g", v);
-    return b;
-}
+std::string num(double v) { return model::formatNumber(v, 17); }
 
 int runSimulateCut(const SimulateCutArgs& a)
 {

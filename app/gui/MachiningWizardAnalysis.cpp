@@ -4,6 +4,7 @@
 // cutting force observer (seed 003, spec/cutting-force-observer-and-chatter-detection.md §1) and the
 // correlation chatter detection (seed 004, same spec §2) of core/machining, off the GUI thread.
 #include "app/gui/MachiningWizard.h"
+#include "core/model/Units.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageJson.h"
 #include "core/sim/CutSimulation.h"
@@ -41,12 +42,7 @@ QString f(double v, int decimals)
 
 namespace {
 
-std::string num(double v)
-{
-    char b[40];
-    std::snprintf(b, sizeof b, "%.17g", v);
-    return b;
-}
+std::string num(double v) { return model::formatNumber(v, 17); }
 
 /// The stage of a simulated machine's axis (like `axistune-cli chatter-detect` without --stage).
 Result<machining::StageDescription> stageOfPreset(const std::string& machine, const std::string& axis)

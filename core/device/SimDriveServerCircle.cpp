@@ -4,6 +4,7 @@
 // and speed limit of SafetyLimits, through device::checkCircleRequest) and the watch over the second
 // axis while the circle runs (the first is the test's unit and checked by checkSafety).
 #include "core/device/CircleDriveTest.h"
+#include "core/model/Units.h"
 #include "core/device/SimDriveServer.h"
 
 #include <cmath>
@@ -13,12 +14,7 @@
 namespace axistune::device {
 namespace {
 
-std::string num(double v)
-{
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v);
-    return b;
-}
+std::string num(double v) { return model::formatNumber(v, 4); }
 
 } // namespace
 

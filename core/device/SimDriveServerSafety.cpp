@@ -4,6 +4,7 @@
 // excitation in % of rated torque, following error); heartbeat watchdog. A trip stops the motion and
 // restores the pre-test parameters (SimulatedDrive::abortTest).
 #include "core/device/SimDriveServer.h"
+#include "core/model/Units.h"
 
 #include <cmath>
 #include <cstdio>
@@ -12,12 +13,7 @@
 namespace axistune::device {
 namespace {
 
-std::string num(double v)
-{
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v);
-    return b;
-}
+std::string num(double v) { return model::formatNumber(v, 4); }
 
 } // namespace
 

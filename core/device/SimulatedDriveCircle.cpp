@@ -3,6 +3,7 @@
 // the drive's own two axis simulators (applied parameters act, and the axes stay where the circle
 // left them): positioning to the start point, then sim::CircleRun, in slices from pollTest().
 #include "core/device/CircleDriveTest.h"
+#include "core/model/Units.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/sim/CircleRun.h"
 
@@ -13,12 +14,7 @@
 namespace axistune::device {
 namespace {
 
-std::string num(double v)
-{
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v);
-    return b;
-}
+std::string num(double v) { return model::formatNumber(v, 4); }
 
 }  // namespace
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/Units.h"
 
+#include <cstdio>
+
 #include <array>
 #include <numbers>
 
@@ -100,5 +102,12 @@ std::string unitLabel(std::string_view token)
 }
 
 std::vector<UnitInfo> allUnits() { return {kUnits.begin(), kUnits.end()}; }
+
+std::string formatNumber(double v, int significant)
+{
+    char b[48];
+    std::snprintf(b, sizeof b, "%.*g", significant, v);
+    return b;
+}
 
 }  // namespace axistune::model

@@ -29,4 +29,8 @@ std::string unitLabel(std::string_view token);
 /// All known unit tokens (for documentation and tests).
 std::vector<UnitInfo> allUnits();
 
+/// `v` with `significant` digits in printf's %g form ("0.6102", "1e-06"; 17 digits round-trip a double),
+/// '.' as the decimal point whatever the locale: for messages and metadata.
+std::string formatNumber(double v, int significant);
+
 }  // namespace axistune::model

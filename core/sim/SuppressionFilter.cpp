@@ -3,6 +3,7 @@
 // (y_m* = y* + LPF_{T1}(a*)/ω₀², spec/lost-motion-and-two-inertia.md §2.5 [DERIVED] decomposition and
 // §4.10) and F_L (5.9) by Tustin as in TI-4 (§4.11). The equations are in docs/simulator.md.
 #include "core/sim/SuppressionFilter.h"
+#include "core/model/Units.h"
 
 #include <cmath>
 #include <cstdio>
@@ -14,12 +15,7 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-std::string num(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string num(double v) { return model::formatNumber(v, 6); }
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 // §4.4 (Wizard D: centre = peak, width from the −3 dB width, predicted FRF = measured loop × filter).
 // Depth/width rule: Notch.h and docs/notch.md.
 #include "core/tuning/Notch.h"
+#include "core/model/Units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,12 +14,7 @@ namespace axistune::tuning {
 
 namespace {
 
-std::string num(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string num(double v) { return model::formatNumber(v, 6); }
 
 }  // namespace
 
