@@ -1012,17 +1012,17 @@
     <message>
         <location filename="../app/gui/AbortGuard.cpp" line="21" />
         <source>Restored %1 from before the write.</source>
-        <translation>%1 を書き込み前の値に戻しました。</translation>
+        <translation>%1を書き込み前の値に戻しました。</translation>
     </message>
     <message>
         <location filename="../app/gui/AbortGuard.cpp" line="22" />
         <source>The previous values of %1 were restored on the drive and read back.</source>
-        <translation>%1 の以前の値をサーボアンプに戻し、読み返しました。</translation>
+        <translation>%1の以前の値をサーボアンプに戻し、読み返しました。</translation>
     </message>
     <message>
         <location filename="../app/gui/AbortGuard.cpp" line="27" />
         <source>Restoring %1 failed (%2): the applied values may still be active on the drive.</source>
-        <translation>%1 を戻せませんでした (%2)。適用した値がサーボアンプで有効なままの可能性があります。</translation>
+        <translation>%1を戻せませんでした (%2)。適用した値がサーボアンプで有効なままの可能性があります。</translation>
     </message>
     <message>
         <location filename="../app/gui/AbortGuard.cpp" line="36" />
@@ -1037,12 +1037,12 @@
     <message>
         <location filename="../app/gui/AbortGuard.cpp" line="65" />
         <source>Restoring %1 from before the write…</source>
-        <translation>%1 を書き込み前の値に戻しています…</translation>
+        <translation>%1を書き込み前の値に戻しています…</translation>
     </message>
     <message>
         <location filename="../app/gui/AbortGuard.cpp" line="69" />
         <source>Could not restore %1: the connection to the drive is lost. Check them on the drive before the axis runs again.</source>
-        <translation>%1 を戻せません: サーボアンプとの接続が切れました。軸を再び動かす前にサーボアンプで確認してください。</translation>
+        <translation>%1を戻せません: サーボアンプとの接続が切れました。軸を再び動かす前にサーボアンプで確認してください。</translation>
     </message>
 </context>
 <context>

@@ -58,7 +58,8 @@ void AbortGuard::finish(const QString& why, bool closeAfter)
 {
     if (m_restoring)
         return;
-    m_reason = why.endsWith(QLatin1Char('.')) ? why : why + QLatin1Char('.');
+    // A sentence ends with "." (or "。" in Japanese); the note that follows starts a new one.
+    m_reason = why.endsWith(QLatin1Char('.')) || why.endsWith(QChar(0x3002)) ? why : why + QLatin1Char('.');
     m_closeAfter = closeAfter;
     if (m_apply->applied() && m_ctx.drive().isConnected()) {
         m_restoring = true;
