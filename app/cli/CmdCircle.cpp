@@ -92,18 +92,7 @@ int runCircleOnDrive(const CircleCliOptions& o, const sim::CircleTestOptions& c)
             if (auto st = (*drive)->writeParameters(axis, {{set->key, set->value}}); !st)
                 return reportError(cmd, makeError(st.error().code, "--set '" + item + "': " + st.error().detail));
     }
-    device::TestRequest r;
-    r.type = device::TestType::Circle;
-    r.axis = c.axisX;
-    r.secondAxis = c.axisY;
-    r.radiusM = c.radiusM;
-    r.feedMPerS = c.feedMPerS;
-    r.direction = c.direction;
-    r.centerXM = c.centerXM;
-    r.centerYM = c.centerYM;
-    r.dataStartDeg = c.dataStartDeg;
-    r.leadArcDeg = c.leadArcDeg;
-    r.durationS = c.dwellS;
+    const device::TestRequest r = device::circleRequestOf(c);
     if (auto st = (*drive)->startTest(r); !st)
         return reportError(cmd, st.error());
     for (;;) {

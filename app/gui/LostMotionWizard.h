@@ -93,8 +93,6 @@ public:
     void abort();
     bool isRunning() const { return m_running; }
     const std::vector<io::BallBarTrace>& traces() const { return m_traces; }
-    /// The drive request of a circle (dwellS becomes the request's durationS).
-    static device::TestRequest requestOf(const sim::CircleTestOptions& circle);
 
 signals:
     /// Progress in units of 1/1000 circle.

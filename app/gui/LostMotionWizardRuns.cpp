@@ -6,6 +6,7 @@
 
 #include "app/gui/AppContext.h"
 #include "app/gui/DriveController.h"
+#include "core/device/CircleDriveTest.h"
 #include "core/sim/CircleRun.h"
 #include "app/gui/WizardPages.h"
 #include "core/model/Units.h"
@@ -105,23 +106,6 @@ QString CircleRunner::unavailableReason() const
     return {};
 }
 
-device::TestRequest CircleRunner::requestOf(const sim::CircleTestOptions& o)
-{
-    device::TestRequest r;
-    r.type = device::TestType::Circle;
-    r.axis = o.axisX;
-    r.secondAxis = o.axisY;
-    r.radiusM = o.radiusM;
-    r.feedMPerS = o.feedMPerS;
-    r.direction = o.direction;
-    r.centerXM = o.centerXM;
-    r.centerYM = o.centerYM;
-    r.dataStartDeg = o.dataStartDeg;
-    r.leadArcDeg = o.leadArcDeg;
-    r.durationS = o.dwellS;
-    return r;
-}
-
 void CircleRunner::start(const QString& plane, std::vector<sim::CircleTestOptions> circles)
 {
     if (m_running)
@@ -158,7 +142,7 @@ void CircleRunner::runNext()
     if (i >= n)
         return finish(true, {}, false);
     emit progress(i * kProgressSteps, n * kProgressSteps, tr("Circle %1 of %2").arg(i + 1).arg(n));
-    m_currentId = m_ctx.drive().runTest(requestOf(m_circles[static_cast<std::size_t>(i)]));
+    m_currentId = m_ctx.drive().runTest(device::circleRequestOf(m_circles[static_cast<std::size_t>(i)]));
 }
 
 void CircleRunner::onCircle(const DriveReply& r)

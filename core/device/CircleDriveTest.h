@@ -30,6 +30,9 @@ struct CircleLimits {
 
 /// The circle options of a request (data arc, lead arcs, dwell = durationS; no geometric errors).
 sim::CircleTestOptions circleOptionsOf(const TestRequest& request);
+/// The Circle test request of a circle (the inverse of circleOptionsOf; the seed and the geometric errors of
+/// the options are the simulator's, not the drive's, and are not carried).
+TestRequest circleRequestOf(const sim::CircleTestOptions& circle);
 
 /// Positioning speed and acceleration of a request (its own, or the defaults when 0).
 double circlePositioningSpeed(const TestRequest& request);

@@ -34,6 +34,23 @@ sim::CircleTestOptions circleOptionsOf(const TestRequest& r)
     return o;
 }
 
+TestRequest circleRequestOf(const sim::CircleTestOptions& o)
+{
+    TestRequest r;
+    r.type = TestType::Circle;
+    r.axis = o.axisX;
+    r.secondAxis = o.axisY;
+    r.radiusM = o.radiusM;
+    r.feedMPerS = o.feedMPerS;
+    r.direction = o.direction;
+    r.centerXM = o.centerXM;
+    r.centerYM = o.centerYM;
+    r.dataStartDeg = o.dataStartDeg;
+    r.leadArcDeg = o.leadArcDeg;
+    r.durationS = o.dwellS;
+    return r;
+}
+
 double circlePositioningSpeed(const TestRequest& r) { return r.velocity > 0.0 ? r.velocity : kCirclePositioningSpeedMPerS; }
 double circlePositioningAccel(const TestRequest& r)
 {

@@ -69,6 +69,34 @@ double preset(const std::string& axis, const std::string& key)
 // s(t) from the start of the command, same parameters, same loop code), so their ball-bar traces differ
 // only by the state the drive's axes bring along (they position to the start point first; runCircleTest
 // resets them there) and the realisation of the measurement noise, both well below the lost motion.
+TEST(CircleDrive, RequestOfACircleCarriesEveryDriveField)
+{
+    sim::CircleTestOptions o;
+    o.axisX = "Y";
+    o.axisY = "Z";
+    o.radiusM = 0.075;
+    o.feedMPerS = 0.025;
+    o.direction = model::CircleDirection::Cw;
+    o.centerXM = -0.01;
+    o.centerYM = 0.12;
+    o.dataStartDeg = 30.0;
+    o.leadArcDeg = 60.0;
+    o.dwellS = 0.2;
+    const TestRequest r = circleRequestOf(o);
+    EXPECT_EQ(r.type, TestType::Circle);
+    const sim::CircleTestOptions back = circleOptionsOf(r);
+    EXPECT_EQ(back.axisX, "Y");
+    EXPECT_EQ(back.axisY, "Z");
+    EXPECT_EQ(back.radiusM, 0.075);
+    EXPECT_EQ(back.feedMPerS, 0.025);
+    EXPECT_EQ(back.direction, model::CircleDirection::Cw);
+    EXPECT_EQ(back.centerXM, -0.01);
+    EXPECT_EQ(back.centerYM, 0.12);
+    EXPECT_EQ(back.dataStartDeg, 30.0);
+    EXPECT_EQ(back.leadArcDeg, 60.0);
+    EXPECT_EQ(back.dwellS, 0.2);
+}
+
 TEST(CircleDrive, EmbeddedCircleIsTheSimulatedCircleTest)
 {
     auto drive = devtest::makeDrive("vmc", 1);
