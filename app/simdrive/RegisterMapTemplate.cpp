@@ -78,6 +78,17 @@ std::string simRegisterMapJson()
     add("test.reserved", 239, "u16", 1, "reserved, reads 0");
     add("test.settle", 240, "f64", 4, "frf: settle time per frequency [s] (0: from the loop dynamics)");
     add("test.min_measure", 244, "f64", 4, "frf: minimum measured time per frequency [s] (0: from the loop dynamics)");
+    add("test.multisine_periods", 248, "u16", 1, "frf multisine: averaged periods (0: from the loop dynamics)");
+    add("test.multisine_phases", 249, "u16", 1, "frf multisine: enum multisine_phases");
+    add("test.multisine_band_count", 250, "u16", 1,
+        "frf multisine: bands in use, 1..4 (0: one band freq_start..freq_end with spacing freq_start/2)");
+    add("test.multisine_reserved", 251, "u16", 1, "reserved, reads 0");
+    for (int b = 0; b < 4; ++b) {
+        const std::string n = "test.multisine_band" + std::to_string(b + 1), band = "band " + std::to_string(b + 1);
+        add(n + "_fmin", 252 + 12 * b, "f64", 4, "frf multisine: " + band + ", lowest line [Hz]");
+        add(n + "_fmax", 256 + 12 * b, "f64", 4, "frf multisine: " + band + ", highest line [Hz]");
+        add(n + "_spacing", 260 + 12 * b, "f64", 4, "frf multisine: " + band + ", line spacing [Hz]");
+    }
     add("command.code", 300, "u16", 1, "enum command; written together with command.token");
     add("command.token", 301, "u16", 1, "sequence token: a command repeated with the same token is not executed twice");
     add("heartbeat.counter", 310, "u16", 1,
@@ -110,7 +121,8 @@ std::string simRegisterMapJson()
         {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}}},
         {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}, {"current_step", 4}, {"circle", 5}}},
         {"circle_direction", {{"ccw", 0}, {"cw", 1}}},
-        {"frf_method", {{"multisweep", 0}, {"conventional", 1}, {"prbs", 2}}},
+        {"frf_method", {{"multisweep", 0}, {"conventional", 1}, {"prbs", 2}, {"multisine", 3}}},
+        {"multisine_phases", {{"clipping", 0}, {"schroeder", 1}}},
         {"test_flag", {{"return_to_start", 1}}},
         {"axis_kind", {{"linear", 0}, {"rotary", 1}}},
         {"trace_channel", {{"frf_metadata", 65532}, {"frf_data", 65533}, {"names", 65534}, {"metadata", 65535}}},
