@@ -15,6 +15,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -304,6 +305,29 @@ private slots:
         plot.clear();
         QCOMPARE(plot.seriesNames(), QStringList{});
         QVERIFY(!plot.exportVisibleCsv(dir.filePath("empty.csv")));
+    }
+
+    void legendWrapsToThePlotWidth()
+    {
+        // Three entries of about 300 px each: one column fits 400 px, all three (the most asked for) 1400 px.
+        widgets::CurvePlot plot;
+        const QString longName = QString("Stability boundary with a long explanatory name %1");
+        for (int i = 0; i < 3; ++i)
+            plot.addCurve(longName.arg(i), {0.0, 1.0}, {0.0, 1.0});
+        auto* cp = plot.findChild<QCustomPlot*>();
+        QVERIFY(cp);
+        int widest = 0;
+        for (int i = 0; i < cp->legend->itemCount(); ++i)
+            widest = std::max(widest, cp->legend->item(i)->minimumOuterSizeHint().width());
+        QVERIFY(widest > 250);
+        plot.resize(400, 300);
+        plot.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plot));
+        QCOMPARE(cp->legend->wrap(), 1);
+        plot.resize(1400, 300);
+        QTRY_COMPARE(cp->legend->wrap(), 3);
+        plot.resize(2 * widest + 80, 300);
+        QTRY_COMPARE(cp->legend->wrap(), 2);
     }
 
     void curvePlotCountsAndExport()
