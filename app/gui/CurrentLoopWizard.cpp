@@ -81,12 +81,10 @@ void CurrentLoopSavePage::initializePage()
     m_text->setText(text);
 }
 
-CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_ctx(ctx)
+CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : TuningWizard(parent), m_ctx(ctx)
 {
     setWindowTitle(tr("Current loop"));
     setObjectName("currentLoopWizard");
-    setWizardStyle(QWizard::ClassicStyle);
-    setOption(QWizard::NoBackButtonOnLastPage, true);
     m_motor = new CurrentLoopMotorPage(ctx, m_data, this);
     m_design = new CurrentLoopDesignPage(ctx, m_data, this);
     m_apply = new ApplyPage(ctx, this);
@@ -114,7 +112,7 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard
         if (ok && !m_beforeRun->replies().empty() && m_beforeRun->replies().front().capture)
             m_data.beforeCapture = m_beforeRun->replies().front().capture;
         else
-            m_guard->runFailed(tr("The current step before applying failed: %1").arg(m_beforeRun->failure()));
+            guard()->runFailed(tr("The current step before applying failed: %1").arg(m_beforeRun->failure()));
     });
     m_run = new TestRunPage(ctx, this);
     m_run->setObjectName("clRunPage");
@@ -131,14 +129,10 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : QWizard
         }
         m_data.measureError = m_run->failure();
         // Nothing verified the applied gains: they are restored and the session is kept as aborted.
-        m_guard->runFailed(tr("The current step after applying failed: %1").arg(m_run->failure()));
+        guard()->runFailed(tr("The current step after applying failed: %1").arg(m_run->failure()));
     });
-    AbortGuard::Hooks hooks;
-    hooks.saved = [this] { return m_sessionId > 0 || m_savedAborted; };
-    hooks.hasData = [this] { return !m_beforeRun->replies().empty() || !m_run->replies().empty(); };
-    hooks.saveAborted = [this](const QString& why) { saveSession(true, why); };
-    hooks.close = [this] { QWizard::reject(); };
-    m_guard = new AbortGuard(ctx, m_apply, {m_beforeRun, m_run}, tr("the current-loop gains"), hooks, this);
+    guardEarlyStops(ctx, m_apply, {m_beforeRun, m_run}, tr("the current-loop gains"),
+                    [this] { return !m_beforeRun->replies().empty() || !m_run->replies().empty(); });
     auto* verify = new CurrentLoopVerifyPage(ctx, m_data, m_apply, this);
     auto* save = new CurrentLoopSavePage(ctx, m_data, m_apply, this);
     setPage(Motor, m_motor);
@@ -299,16 +293,7 @@ void CurrentLoopWizard::saveSession(bool aborted, const QString& reason)
             {0, rec.info.axis, store::ParameterSource::Applied, {}, "current-loop wizard", m_apply->readBack()});
     rec.journal = m_apply->journal();
     auto id = m_ctx.saveSession(rec);
-    if (id && !aborted)
-        m_sessionId = *id;
-    if (id && aborted)
-        m_savedAborted = true;
-}
-
-void CurrentLoopWizard::reject()
-{
-    if (!m_guard->reject())
-        QWizard::reject();
+    sessionStored(id ? *id : 0, aborted);
 }
 
 } // namespace gui

@@ -12,11 +12,11 @@
 // difference; the step before for comparison) → save (session kind "current-loop", the measured steps as
 // captures "current_step" and "current_step_before").
 
+#include "app/gui/TuningWizard.h"
 #include "core/model/Capture.h"
 #include "core/tuning/CurrentLoop.h"
 #include "core/tuning/CurrentStep.h"
 
-#include <QWizard>
 #include <QWizardPage>
 
 #include <numbers>
@@ -38,7 +38,6 @@ class CurvePlot;
 namespace gui {
 
 class AppContext;
-class AbortGuard;
 class ApplyPage;
 class SafetyPage;
 class TestRunPage;
@@ -229,7 +228,7 @@ private:
     QLabel* m_text = nullptr;
 };
 
-class CurrentLoopWizard : public QWizard {
+class CurrentLoopWizard : public TuningWizard {
     Q_OBJECT
 public:
     enum PageId { Motor, Design, Step, Safety, BeforeRun, Apply, MeasureRun, Verify, Save };
@@ -243,26 +242,20 @@ public:
     SafetyPage* safetyPage() const { return m_safety; }
     TestRunPage* runPage() const { return m_run; }
     TestRunPage* beforeRunPage() const { return m_beforeRun; }
-    qint64 savedSessionId() const { return m_sessionId; }
 
     /// Saves the session (Completed, or Aborted with the reason and whatever was measured).
-    void saveSession(bool aborted = false, const QString& reason = {});
+    void saveSession(bool aborted = false, const QString& reason = {}) override;
     int nextId() const override;
-    /// Cancel: aborts a running step, restores applied gains and records the session as aborted (AbortGuard).
-    void reject() override;
 
 private:
     AppContext& m_ctx;
     CurrentLoopData m_data;
-    AbortGuard* m_guard = nullptr;
-    bool m_savedAborted = false;
     CurrentLoopMotorPage* m_motor = nullptr;
     CurrentLoopDesignPage* m_design = nullptr;
     ApplyPage* m_apply = nullptr;
     SafetyPage* m_safety = nullptr;
     TestRunPage* m_run = nullptr;
     TestRunPage* m_beforeRun = nullptr;
-    qint64 m_sessionId = 0;
 };
 
 } // namespace gui

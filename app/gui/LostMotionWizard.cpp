@@ -95,12 +95,10 @@ void LostMotionSavePage::initializePage()
     m_text->setText(text);
 }
 
-LostMotionWizard::LostMotionWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_ctx(ctx)
+LostMotionWizard::LostMotionWizard(AppContext& ctx, QWidget* parent) : TuningWizard(parent), m_ctx(ctx)
 {
     setWindowTitle(tr("Lost motion"));
     setObjectName("lostMotionWizard");
-    setWizardStyle(QWizard::ClassicStyle);
-    setOption(QWizard::NoBackButtonOnLastPage, true);
     m_source = new LostMotionSourcePage(ctx, m_data, this);
     m_safety = new SafetyPage(ctx, this);
     m_safety->setMotionDescription(
@@ -123,18 +121,14 @@ LostMotionWizard::LostMotionWizard(AppContext& ctx, QWidget* parent) : QWizard(p
     setPage(Verify, verify);
     setPage(Save, save);
     setStartId(Source);
-    AbortGuard::Hooks hooks;
-    hooks.saved = [this] { return m_sessionId > 0 || m_savedAborted; };
-    hooks.hasData = [this] { return !m_data.traces.empty(); };
-    hooks.saveAborted = [this](const QString& why) { saveSession(true, why); };
-    hooks.close = [this] { QWizard::reject(); };
-    hooks.abortRuns = [this, verify] {
-        m_circles->cleanupPage();  // aborts a running circle
-        verify->cleanupPage();
-    };
-    m_guard = new AbortGuard(ctx, m_apply, {}, tr("the lost-motion compensation"), hooks, this);
-    connect(m_circles, &LostMotionCirclePage::runFailed, m_guard, &AbortGuard::runFailed);
-    connect(verify, &LostMotionVerifyPage::runFailed, m_guard, &AbortGuard::runFailed);
+    guardEarlyStops(
+        ctx, m_apply, {}, tr("the lost-motion compensation"), [this] { return !m_data.traces.empty(); },
+        [this, verify] {
+            m_circles->cleanupPage();  // aborts a running circle
+            verify->cleanupPage();
+        });
+    connect(m_circles, &LostMotionCirclePage::runFailed, guard(), &AbortGuard::runFailed);
+    connect(verify, &LostMotionVerifyPage::runFailed, guard(), &AbortGuard::runFailed);
     resize(1000, 700);
 }
 
@@ -240,16 +234,7 @@ void LostMotionWizard::saveSession(bool aborted, const QString& reason)
     }
     rec.journal = m_apply->journal();
     auto id = m_ctx.saveSession(rec);
-    if (id && !aborted)
-        m_sessionId = *id;
-    if (id && aborted)
-        m_savedAborted = true;
-}
-
-void LostMotionWizard::reject()
-{
-    if (!m_guard->reject())
-        QWizard::reject();
+    sessionStored(id ? *id : 0, aborted);
 }
 
 }  // namespace gui

@@ -12,6 +12,7 @@
 // drive moves both plane axes with its own parameters, and the trace of both axes becomes a ball-bar
 // trace on this side (sim::ballBarFromCircleTrace). Abort stops the running circle at once.
 
+#include "app/gui/TuningWizard.h"
 #include "app/gui/DriveController.h"
 #include "core/device/Drive.h"
 #include "core/io/BallBarCsv.h"
@@ -20,7 +21,6 @@
 #include "core/tuning/LostMotion.h"
 
 #include <QFutureWatcher>
-#include <QWizard>
 #include <QWizardPage>
 
 #include <atomic>
@@ -48,7 +48,6 @@ class PolarPlot;
 namespace gui {
 
 class AppContext;
-class AbortGuard;
 class ApplyPage;
 class SafetyPage;
 
@@ -251,7 +250,7 @@ private:
     QLabel* m_text = nullptr;
 };
 
-class LostMotionWizard : public QWizard {
+class LostMotionWizard : public TuningWizard {
     Q_OBJECT
 public:
     enum PageId { Source, Safety, Circles, Diagnostics, Fit, Apply, Verify, Save };
@@ -264,25 +263,18 @@ public:
     LostMotionCirclePage* circlePage() const { return m_circles; }
     LostMotionDiagnosticsPage* diagnosticsPage() const { return m_diag; }
     ApplyPage* applyPage() const { return m_apply; }
-    /// Id of the saved session (0 before the save).
-    qint64 savedSessionId() const { return m_sessionId; }
 
     /// Saves the session (Completed, or Aborted with the reason); called by the last page, or on failure.
-    void saveSession(bool aborted, const QString& reason);
-    /// Cancel: stops a running circle, restores an applied compensation, records the session as aborted.
-    void reject() override;
+    void saveSession(bool aborted, const QString& reason) override;
 
 private:
     AppContext& m_ctx;
     LostMotionData m_data;
-    AbortGuard* m_guard = nullptr;
-    bool m_savedAborted = false;
     LostMotionSourcePage* m_source = nullptr;
     SafetyPage* m_safety = nullptr;
     LostMotionCirclePage* m_circles = nullptr;
     LostMotionDiagnosticsPage* m_diag = nullptr;
     ApplyPage* m_apply = nullptr;
-    qint64 m_sessionId = 0;
 };
 
 }  // namespace gui

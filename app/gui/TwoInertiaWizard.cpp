@@ -97,12 +97,10 @@ void TwoInertiaSavePage::initializePage()
     m_text->setText(text);
 }
 
-TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_ctx(ctx)
+TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : TuningWizard(parent), m_ctx(ctx)
 {
     setWindowTitle(tr("Two-inertia vibration suppression"));
     setObjectName("twoInertiaWizard");
-    setWizardStyle(QWizard::ClassicStyle);
-    setOption(QWizard::NoBackButtonOnLastPage, true);
     m_source = new TwoInertiaSourcePage(ctx, m_data, this);
     m_safety = new SafetyPage(ctx, this);
     m_safety->setMotionDescription(
@@ -168,17 +166,12 @@ TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : QWizard(p
         if (id == Filter)
             m_safety->setAxes(m_data.fromSession ? QStringList{m_data.axis} : QStringList{});
     });
-    AbortGuard::Hooks hooks;
-    hooks.saved = [this] { return m_sessionId > 0 || m_savedAborted; };
-    hooks.hasData = [this] { return !m_run->replies().empty() || !m_beforeRun->replies().empty(); };
-    hooks.saveAborted = [this](const QString& why) { saveSession(true, why); };
-    hooks.close = [this] { QWizard::reject(); };
-    m_guard = new AbortGuard(ctx, m_apply, {m_run, m_beforeRun, m_verifyRun}, tr("the suppression filter and gains"),
-                             hooks, this);
+    guardEarlyStops(ctx, m_apply, {m_run, m_beforeRun, m_verifyRun}, tr("the suppression filter and gains"),
+                    [this] { return !m_run->replies().empty() || !m_beforeRun->replies().empty(); });
     for (TestRunPage* run : {m_run, m_beforeRun, m_verifyRun})
         connect(run, &TestRunPage::runFinished, this, [this, run](bool ok) {
             if (!ok)
-                m_guard->runFailed(run->failure());
+                guard()->runFailed(run->failure());
         });
     resize(1000, 700);
 }
@@ -294,16 +287,7 @@ void TwoInertiaWizard::saveSession(bool aborted, const QString& reason)
             {0, rec.info.axis, store::ParameterSource::Applied, {}, "two-inertia wizard", m_apply->readBack()});
     rec.journal = m_apply->journal();
     auto id = m_ctx.saveSession(rec);
-    if (id && !aborted)
-        m_sessionId = *id;
-    if (id && aborted)
-        m_savedAborted = true;
-}
-
-void TwoInertiaWizard::reject()
-{
-    if (!m_guard->reject())
-        QWizard::reject();
+    sessionStored(id ? *id : 0, aborted);
 }
 
 }  // namespace gui

@@ -11,6 +11,7 @@
 // prediction with and without the filter; load − motor against the prediction from the measured motor
 // motion) → save (session kind "two-inertia", model kind "two_inertia").
 
+#include "app/gui/TuningWizard.h"
 #include "app/gui/DriveController.h"
 #include "core/dsp/FrequencyResponse.h"
 #include "core/tuning/TwoInertia.h"
@@ -18,7 +19,6 @@
 #include "core/tuning/TwoInertiaPrediction.h"
 #include "core/tuning/VelocityLoop.h"
 
-#include <QWizard>
 #include <QWizardPage>
 
 #include <memory>
@@ -40,7 +40,6 @@ class CurvePlot;
 namespace gui {
 
 class AppContext;
-class AbortGuard;
 class ApplyPage;
 class SafetyPage;
 class TestRunPage;
@@ -187,7 +186,7 @@ private:
     QLabel* m_text = nullptr;
 };
 
-class TwoInertiaWizard : public QWizard {
+class TwoInertiaWizard : public TuningWizard {
     Q_OBJECT
 public:
     enum PageId { Source, Safety, Run, Fit, Filter, BeforeRun, Apply, VerifyRun, Verify, Save };
@@ -203,18 +202,13 @@ public:
     TestRunPage* beforeRunPage() const { return m_beforeRun; }
     ApplyPage* applyPage() const { return m_apply; }
     TestRunPage* verifyRunPage() const { return m_verifyRun; }
-    qint64 savedSessionId() const { return m_sessionId; }
 
     /// Saves the session (Completed, or Aborted with the reason and whatever was measured).
-    void saveSession(bool aborted, const QString& reason);
-    /// Cancel: aborts a running test, restores the applied filter and gains, records the session as aborted.
-    void reject() override;
+    void saveSession(bool aborted, const QString& reason) override;
 
 private:
     AppContext& m_ctx;
     TwoInertiaData m_data;
-    AbortGuard* m_guard = nullptr;
-    bool m_savedAborted = false;
     TwoInertiaSourcePage* m_source = nullptr;
     SafetyPage* m_safety = nullptr;
     TestRunPage* m_run = nullptr;
@@ -223,7 +217,6 @@ private:
     TestRunPage* m_beforeRun = nullptr;
     ApplyPage* m_apply = nullptr;
     TestRunPage* m_verifyRun = nullptr;
-    qint64 m_sessionId = 0;
 };
 
 }  // namespace gui

@@ -72,12 +72,10 @@ void VelocityLoopSavePage::initializePage()
     m_text->setText(text);
 }
 
-VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_ctx(ctx)
+VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : TuningWizard(parent), m_ctx(ctx)
 {
     setWindowTitle(tr("Velocity and position loop"));
     setObjectName("velocityLoopWizard");
-    setWizardStyle(QWizard::ClassicStyle);
-    setOption(QWizard::NoBackButtonOnLastPage, true);
     m_source = new VelocityLoopSourcePage(ctx, m_data, this);
     m_safety = new SafetyPage(ctx, this);
     m_safety->setMotionDescription(
@@ -134,20 +132,16 @@ VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : QWiza
     setPage(Verify, verify);
     setPage(Save, save);
     setStartId(Source);
-    AbortGuard::Hooks hooks;
-    hooks.saved = [this] { return m_sessionId > 0 || m_savedAborted; };
-    hooks.hasData = [this] { return !m_run->replies().empty() || m_run->isRunning(); };
-    hooks.saveAborted = [this](const QString& why) { saveSession(true, why); };
-    hooks.close = [this] { QWizard::reject(); };
-    m_guard = new AbortGuard(ctx, m_apply, {m_run, m_verifyRun}, tr("the velocity-loop gains"), hooks, this);
+    guardEarlyStops(ctx, m_apply, {m_run, m_verifyRun}, tr("the velocity-loop gains"),
+                    [this] { return !m_run->replies().empty() || m_run->isRunning(); });
     connect(m_run, &TestRunPage::runFinished, this, [this](bool ok) {
         if (!ok)
-            m_guard->runFailed(m_run->failure());
+            guard()->runFailed(m_run->failure());
     });
     // A failed step after applying restores the gains from before (nothing verified them).
     connect(m_verifyRun, &TestRunPage::runFinished, this, [this](bool ok) {
         if (!ok)
-            m_guard->runFailed(tr("The step after applying failed: %1").arg(m_verifyRun->failure()));
+            guard()->runFailed(tr("The step after applying failed: %1").arg(m_verifyRun->failure()));
     });
     resize(1000, 700);
 }
@@ -232,16 +226,7 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
             {0, rec.info.axis, store::ParameterSource::Applied, {}, "velocity-loop wizard", m_apply->readBack()});
     rec.journal = m_apply->journal();
     auto id = m_ctx.saveSession(rec);
-    if (id && !aborted)
-        m_sessionId = *id;
-    if (id && aborted)
-        m_savedAborted = true;
-}
-
-void VelocityLoopWizard::reject()
-{
-    if (!m_guard->reject())
-        QWizard::reject();
+    sessionStored(id ? *id : 0, aborted);
 }
 
 } // namespace gui

@@ -8,13 +8,13 @@
 // (core/tuning VelocityLoop, VelocityStep) → apply velocity.kp / velocity.ki / position.kp → save
 // (session kind "velocity-loop").
 
+#include "app/gui/TuningWizard.h"
 #include "core/dsp/FrequencyResponse.h"
 #include "core/model/Capture.h"
 #include "core/tuning/TwoInertia.h"
 #include "core/tuning/VelocityLoop.h"
 #include "core/tuning/VelocityStep.h"
 
-#include <QWizard>
 #include <QWizardPage>
 
 #include <memory>
@@ -35,7 +35,6 @@ class CurvePlot;
 namespace gui {
 
 class AppContext;
-class AbortGuard;
 class ApplyPage;
 class SafetyPage;
 class TestRunPage;
@@ -170,7 +169,7 @@ private:
     QLabel* m_text = nullptr;
 };
 
-class VelocityLoopWizard : public QWizard {
+class VelocityLoopWizard : public TuningWizard {
     Q_OBJECT
 public:
     enum PageId { Source, Safety, Run, Design, Apply, VerifyRun, Verify, Save };
@@ -184,25 +183,19 @@ public:
     VelocityLoopDesignPage* designPage() const { return m_design; }
     ApplyPage* applyPage() const { return m_apply; }
     TestRunPage* verifyRunPage() const { return m_verifyRun; }
-    qint64 savedSessionId() const { return m_sessionId; }
 
     /// Saves the session (Completed, or Aborted with the reason and whatever was measured).
-    void saveSession(bool aborted, const QString& reason);
-    /// Cancel: aborts a running test, restores applied gains and records the session as aborted (AbortGuard).
-    void reject() override;
+    void saveSession(bool aborted, const QString& reason) override;
 
 private:
     AppContext& m_ctx;
     VelocityLoopData m_data;
-    AbortGuard* m_guard = nullptr;
-    bool m_savedAborted = false;
     VelocityLoopSourcePage* m_source = nullptr;
     SafetyPage* m_safety = nullptr;
     TestRunPage* m_run = nullptr;
     VelocityLoopDesignPage* m_design = nullptr;
     ApplyPage* m_apply = nullptr;
     TestRunPage* m_verifyRun = nullptr;
-    qint64 m_sessionId = 0;
 };
 
 } // namespace gui
