@@ -104,6 +104,15 @@ struct SessionRecord {
     std::vector<ParameterSet> parameterSets;
     std::vector<ModelRecord> models;
     std::vector<JournalEntry> journal;
+
+    /// The data of the first result of this name, or nullptr.
+    const nlohmann::json* result(const std::string& name) const
+    {
+        for (const auto& r : results)
+            if (r.name == name)
+                return &r.data;
+        return nullptr;
+    }
 };
 
 enum class OpenMode {

@@ -64,13 +64,6 @@ constexpr double kKi = 1.025e5, kKiTol = 0.03;   // C-A5: 1.02–1.03e5 V/(A·s)
 constexpr double kRise = 98e-6, kRiseTol = 5e-6; // C-A5: ≈ 98 µs
 constexpr double kAgree = 0.03;                   // measured vs predicted, of the step (see above)
 
-const nlohmann::json* result(const store::SessionRecord& rec, const std::string& name)
-{
-    for (const auto& r : rec.results)
-        if (r.name == name)
-            return &r.data;
-    return nullptr;
-}
 } // namespace
 
 class TestCurrentLoopWizard : public QObject {
@@ -235,7 +228,7 @@ private slots:
         QVERIFY(rec.ok());
         QCOMPARE(QString::fromStdString(rec->info.kind), QString("current-loop"));
         QCOMPARE(QString::fromStdString(rec->info.axis), QString("X"));
-        const auto* design = result(*rec, "design");
+        const auto* design = rec->result("design");
         QVERIFY(design);
         QCOMPARE((*design)["alpha"].get<double>(), 1.0);
         const double kp = (*design)["kp_V_per_A"].get<double>(), ki = (*design)["ki_V_per_As"].get<double>();
@@ -258,7 +251,7 @@ private slots:
             }
         QVERIFY(applied);
         QVERIFY(rec->journal.size() >= 2);
-        const auto* verify = result(*rec, "verification");
+        const auto* verify = rec->result("verification");
         QVERIFY(verify);
         QVERIFY(std::abs((*verify)["kp_V_per_A"].get<double>() - kp) <= wire * kp);
         // The measured step: its capture at the current-loop rate and its figures.
@@ -335,7 +328,7 @@ private slots:
         QCOMPARE(w.currentId(), int(CurrentLoopWizard::Save));
         auto rec = ctx.database()->loadSession(w.savedSessionId());
         QVERIFY(rec.ok());
-        QCOMPARE((*result(*rec, "design"))["alpha"].get<double>(), 1.0);
+        QCOMPARE((*rec->result("design"))["alpha"].get<double>(), 1.0);
         QCOMPARE(rec->inputs["source"].get<std::string>(), std::string("entered"));
     }
 

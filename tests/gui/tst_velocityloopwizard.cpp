@@ -40,13 +40,6 @@ double preset(const std::string& key)
     return m->axis("A")->values.at(key);
 }
 
-const nlohmann::json* result(const store::SessionRecord& rec, const std::string& name)
-{
-    for (const auto& r : rec.results)
-        if (r.name == name)
-            return &r.data;
-    return nullptr;
-}
 } // namespace
 
 class TestVelocityLoopWizard : public QObject {
@@ -156,7 +149,7 @@ private slots:
         QVERIFY(rec.ok());
         QCOMPARE(QString::fromStdString(rec->info.kind), QString("velocity-loop"));
         QCOMPARE(QString::fromStdString(rec->info.axis), QString("A"));
-        const auto* prop = result(*rec, "proposal");
+        const auto* prop = rec->result("proposal");
         QVERIFY(prop);
         QVERIFY(std::abs((*prop)["velocity_kp_Nms_per_rad"].get<double>() - wantKp) <= 1e-9 * wantKp);
         QVERIFY(std::abs((*prop)["velocity_ki_Nm_per_rad"].get<double>() - wantKi) <= 1e-9 * wantKi);
@@ -278,7 +271,7 @@ private slots:
         auto rec = ctx.database()->loadSession(w.savedSessionId());
         QVERIFY(rec.ok());
         QCOMPARE(rec->inputs["method"].get<std::string>(), std::string("margins"));
-        QVERIFY(std::abs((*result(*rec, "proposal"))["velocity_kp_Nms_per_rad"].get<double>() - wantKp) <=
+        QVERIFY(std::abs((*rec->result("proposal"))["velocity_kp_Nms_per_rad"].get<double>() - wantKp) <=
                 1e-3 * wantKp);
     }
 };
