@@ -25,7 +25,7 @@ inline constexpr double kCircleMaxDurationS = 600.0;          ///< positioning, 
 /// Limits a circle must respect; the embedded drive uses the defaults (those of axistune-simdrive).
 struct CircleLimits {
     double travelWindowM = 0.5;  ///< |position| of either axis, programmed path and start point
-    double maxMotorSpeedRadS = 2.0 * std::numbers::pi * 6000.0 / 60.0;  ///< feed and positioning speed at the motor
+    double maxMotorSpeedRadS = kMaxMotorSpeedRadS;  ///< feed and positioning speed at the motor
 };
 
 /// The circle options of a request (data arc, lead arcs, dwell = durationS; no geometric errors).

@@ -61,6 +61,9 @@ enum class FrfMethod {
 
 const char* frfMethodName(FrfMethod m);
 
+/// The embedded simulated drive's motor speed limit for steps and jogs: 6000 min⁻¹ [rad/s].
+inline constexpr double kMaxMotorSpeedRadS = 2.0 * 3.14159265358979323846 * 6000.0 / 60.0;
+
 struct TestRequest {
     std::string axis;
     TestType type = TestType::Step;

@@ -3,6 +3,8 @@
 // §1.2, §2.3 stepped with the velocity loop open; docs/simulator.md "Current-step test".
 #include "core/device/SimulatedDrive.h"
 
+#include "core/model/Units.h"
+
 #include "core/device/ModbusDrive.h"
 
 #include <algorithm>
@@ -161,8 +163,7 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     m_recordEnd = -1.0;
     switch (request.type) {
     case TestType::Step: {
-        const double maxSpeed = 2.0 * std::numbers::pi * 6000.0 / 60.0;
-        if (!std::isfinite(request.amplitude) || std::abs(request.amplitude) > maxSpeed)
+        if (!std::isfinite(request.amplitude) || std::abs(request.amplitude) > kMaxMotorSpeedRadS)
             return makeError(ErrorCode::OutOfRange, "step amplitude must be finite and at most 628 rad/s (6000 min^-1)");
         sim.setControlMode(sim::ControlMode::Velocity);
         const double t0 = sim.time() + 0.01 * request.durationS, amp = request.amplitude;
@@ -174,6 +175,14 @@ Status SimulatedDrive::startTest(const TestRequest& request)
             return makeError(ErrorCode::OutOfRange, "jog needs a positive velocity and acceleration and a finite distance");
         if (!(request.jerk >= 0.0) || !std::isfinite(request.jerk))
             return makeError(ErrorCode::OutOfRange, "jog jerk must be finite and >= 0 (0: trapezoid)");
+        // The velocity is in axis units: m/s on a linear axis (motor speed = v / R), rad/s on a rotary one.
+        const bool linear = sim.kind() == sim::AxisKind::Linear;
+        const double motorSpeed = linear ? request.velocity / sim.parameter("plant.screw_lead") : request.velocity;
+        if (!(motorSpeed <= kMaxMotorSpeedRadS))
+            return makeError(ErrorCode::OutOfRange,
+                             "jog velocity " + model::formatNumber(request.velocity, 4) + (linear ? " m/s" : " rad/s") +
+                                 " means " + model::formatNumber(motorSpeed, 4) +
+                                 " rad/s at the motor, above the limit of 628.3 rad/s (6000 min^-1)");
         sim::MotionProfile p(start);
         p.dwell(request.durationS);
         p.move(request.distance, request.velocity, request.acceleration, request.jerk);

@@ -80,6 +80,27 @@ TEST(SimulatedDrive, StepTestTracesAndRestoresAndRefusesWritesWhileRunning)
     EXPECT_NEAR(v->data.back(), 1.0, 0.02);
 }
 
+TEST(SimulatedDrive, JogAboveTheMotorSpeedLimitIsRefused)
+{
+    // vmc X: screw lead R = 12 mm/2π per rad, so 1.26 m/s is 6000 min⁻¹ at the motor.
+    auto d = connect({"sim:vmc", 1});
+    ASSERT_TRUE(d.ok());
+    TestRequest req;
+    req.axis = "X";
+    req.type = TestType::Jog;
+    req.distance = 0.01;
+    req.acceleration = 1.0;
+    req.durationS = 0.05;
+    req.velocity = 62.83;  // 10 rev/s read as metres per second
+    auto st = (*d)->startTest(req);
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
+    EXPECT_NE(st.error().detail.find("above the limit of 628.3 rad/s"), std::string::npos) << st.error().detail;
+    req.velocity = 0.6;  // 50 rev/s × 12 mm = 3000 min⁻¹: accepted
+    EXPECT_TRUE((*d)->startTest(req).ok());
+    EXPECT_TRUE((*d)->abortTest().ok());
+}
+
 TEST(SimulatedDrive, AbortStopsAndRestoresParameters)
 {
     auto d = connect({"sim:vmc", 1});
