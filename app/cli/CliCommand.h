@@ -6,6 +6,7 @@
 #include "core/model/Result.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <functional>
 #include <string>
@@ -31,5 +32,10 @@ int reportError(const std::string& command, const Error& error);
 
 /// Writes a command's text result to `outPath`, or to stdout when it is empty; returns the exit code.
 int writeResult(const std::string& command, const std::string& text, const std::string& outPath);
+
+/// The output boundary for JSON results: refuses (Internal error, nothing written) a result holding NaN
+/// or Inf, which JSON would show as null; otherwise writes the dump (indent < 0: one line) and a newline.
+int writeJsonResult(const std::string& command, const nlohmann::json& result, const std::string& outPath,
+                    int indent = 2);
 
 }  // namespace axistune::cli

@@ -141,7 +141,7 @@ int runBallBar(const BallBarCliOptions& o)
             why += (why.empty() ? "" : "; ") + r.text;
         return reportError("ballbar", makeError(ErrorCode::BadInput, "no diagnostic could be computed: " + why));
     }
-    return writeResult("ballbar", reportJson(*rep).dump(2) + "\n", o.outPath);
+    return writeJsonResult("ballbar", reportJson(*rep), o.outPath);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

@@ -131,7 +131,7 @@ int runChatterDetect(const ChatterDetectArgs& a)
     for (const auto& iv : res->intervals)
         j["intervals"].push_back(
             {{"start_s", iv.startS}, {"end_s", iv.endS}, {"frequency_Hz", iv.frequencyHz}, {"score", iv.score}});
-    return writeResult(cmd, j.dump(2) + "\n", a.out);
+    return writeJsonResult(cmd, j, a.out);
 }
 
 const CliRegistrar kRegistrar{{

@@ -101,7 +101,7 @@ int runCurrentLoop(const CurrentLoopOptions& o)
                                   {"discrete_with_delay", step.discrete}};
         j["plots"] = plots;
     }
-    return writeResult(cmd, j.dump(2) + "\n", o.outPath);
+    return writeJsonResult(cmd, j, o.outPath);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

@@ -143,8 +143,7 @@ int runCuttingForce(const CuttingForceArgs& a)
     j["mean_cutting_force_second_half_N"] = sumForce / static_cast<double>(counted);
     j["mode_samples"] = {{"hold", counts[0]}, {"rls3", counts[1]}, {"rls4", counts[2]}};
     j["final_estimate"] = {{"J_L_kgm2", jl.back()}, {"B_L_Nms_per_rad", bl.back()}, {"F_CL_Nm", fcl.back()}};
-    std::printf("%s\n", j.dump(2).c_str());
-    return 0;
+    return writeJsonResult(cmd, j, "");
 }
 
 const CliRegistrar kRegistrar{{

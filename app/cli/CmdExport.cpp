@@ -2,6 +2,7 @@
 // axistune-cli export: a machine's current parameters as an NC parameter file (map files in
 // resources/nc/, to verify against the NC's manual) or as AxisTune JSON/CSV (docs/storage.md).
 #include "app/cli/CliCommand.h"
+#include "core/model/InputLimits.h"
 #include "core/io/NcExport.h"
 #include "core/io/Profile.h"
 #include "core/store/Database.h"
@@ -62,10 +63,9 @@ int runExport(const ExportOptions& o)
     }
     if (auto st = io::writeTextFileAtomic(o.out, text); !st)
         return reportError(cmd, st.error());
-    std::cout << nlohmann::json{{"machine", o.machine}, {"format", o.format}, {"file", o.out}, {"unmapped", unmapped}}
-                     .dump(2)
-              << '\n';
-    return 0;
+    return writeJsonResult(cmd, {{"machine", o.machine}, {"format", o.format}, {"file", model::displayPath(o.out)},
+                                 {"unmapped", unmapped}},
+                           "");
 }
 
 const CliRegistrar kRegistrar{CliCommand{

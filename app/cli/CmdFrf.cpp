@@ -198,8 +198,7 @@ int runFrf(const FrfOptions& o)
         auto j = frfJson(frf.value());
         if (!o.margins.empty())
             j["margins"] = marginsJson(frf.value(), o.margins);
-        std::cout << j.dump() << '\n';
-        return 0;
+        return writeJsonResult(cmd, j, "", -1);
     }
     if (auto st = io::writeFrfCsvFile(o.outPath, frf.value()); !st)
         return reportError(cmd, st.error());
@@ -209,8 +208,7 @@ int runFrf(const FrfOptions& o)
     nlohmann::json summary{{"out", o.outPath}, {"points", frf->size()}, {"valid_points", valid}, {"metadata", frf->metadata}};
     if (!o.margins.empty())
         summary["margins"] = marginsJson(frf.value(), o.margins);
-    std::cout << summary.dump() << '\n';
-    return 0;
+    return writeJsonResult(cmd, summary, "", -1);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

@@ -2,6 +2,7 @@
 // axistune-cli import: reads a profile JSON or a parameter CSV written by `export --format json|csv`
 // into the store (docs/storage.md "Export and import").
 #include "app/cli/CliCommand.h"
+#include "core/model/InputLimits.h"
 #include "core/io/Profile.h"
 #include "core/store/Database.h"
 
@@ -52,11 +53,9 @@ int runImport(const ImportOptions& o)
     std::size_t count = 0;
     for (const auto& a : profile->axes)
         count += a.parameters.size();
-    std::cout << nlohmann::json{{"machine", profile->name}, {"format", format}, {"parameters", count},
-                                {"session", *sid}, {"db", o.db}}
-                     .dump(2)
-              << '\n';
-    return 0;
+    return writeJsonResult(cmd, {{"machine", profile->name}, {"format", format}, {"parameters", count},
+                                 {"session", *sid}, {"db", model::displayPath(o.db)}},
+                           "");
 }
 
 const CliRegistrar kRegistrar{CliCommand{

@@ -152,7 +152,7 @@ int runLostMotion(const LostMotionCliOptions& o)
         if (auto s = writeCompensated(o.compensatedOut, preds); !s)
             return reportError(cmd, s.error());
     }
-    return writeResult(cmd, j.dump(2) + "\n", o.outPath);
+    return writeJsonResult(cmd, j, o.outPath);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

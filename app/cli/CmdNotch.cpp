@@ -3,6 +3,7 @@
 // execution rate's limits and the free drive slots, predicted FRF and margins (docs/notch.md).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/model/InputLimits.h"
 #include "core/io/FrfCsv.h"
 #include "core/tuning/Notch.h"
 #include "core/tuning/Resonance.h"
@@ -32,15 +33,10 @@ nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json
 
 Result<std::vector<dsp::NotchSpec>> readExisting(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open");
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(f);
-    } catch (const nlohmann::json::parse_error& e) {
-        return makeError(ErrorCode::BadInput, path + ": not valid JSON (" + e.what() + ")");
-    }
+    auto parsed = model::readJsonFile(path);
+    if (!parsed)
+        return parsed.error();
+    const nlohmann::json& j = *parsed;
     if (!j.is_array())
         return makeError(ErrorCode::BadInput, path + ": expected a JSON list of {center_Hz, width_Hz, depth}");
     std::vector<dsp::NotchSpec> out;
@@ -168,8 +164,7 @@ int runNotch(NotchCliOptions o)
     j["margins_after"] = marginsJson(pred->after);
     if (!o.outFrf.empty())
         j["predicted_frf"] = o.outFrf;
-    std::cout << j.dump(2) << "\n";
-    return 0;
+    return writeJsonResult(cmd, j, "");
 }
 
 const CliRegistrar kRegistrar{CliCommand{

@@ -2,6 +2,7 @@
 // axistune-cli profile import|export: a machine profile between a JSON file and the store
 // (docs/storage.md, schema in docs/formats-profile.md).
 #include "app/cli/CliCommand.h"
+#include "core/model/InputLimits.h"
 #include "core/io/Profile.h"
 #include "core/store/Database.h"
 
@@ -35,8 +36,7 @@ int runImport(const ProfileOptions& o)
     if (!sid)
         return reportError(cmd, sid.error());
     nlohmann::json j{{"machine", profile->name}, {"axes", profile->axes.size()}, {"session", *sid}, {"db", o.db}};
-    std::cout << j.dump(2) << '\n';
-    return 0;
+    return writeJsonResult(cmd, j, "");
 }
 
 int runExport(const ProfileOptions& o)
@@ -54,8 +54,7 @@ int runExport(const ProfileOptions& o)
     }
     if (auto st = io::writeProfileFile(o.out, *profile); !st)
         return reportError(cmd, st.error());
-    std::cout << nlohmann::json{{"machine", o.machine}, {"file", o.out}}.dump(2) << '\n';
-    return 0;
+    return writeJsonResult(cmd, nlohmann::json{{"machine", o.machine}, {"file", model::displayPath(o.out)}}, "");
 }
 
 const CliRegistrar kRegistrar{CliCommand{

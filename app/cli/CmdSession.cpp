@@ -34,21 +34,18 @@ int runSession(const SessionOptions& o)
         nlohmann::json a = nlohmann::json::array();
         for (const auto& s : *sessions)
             a.push_back(store::sessionInfoJson(s));
-        std::cout << a.dump(2) << '\n';
-        return 0;
+        return writeJsonResult(cmd, a, "");
     }
     auto rec = db->loadSession(o.id);
     if (!rec)
         return reportError(cmd, rec.error());
     if (o.show->parsed()) {
-        std::cout << store::sessionSummaryJson(*rec).dump(2) << '\n';
-        return 0;
+        return writeJsonResult(cmd, store::sessionSummaryJson(*rec), "");
     }
     auto manifest = store::exportSessionFolder(*rec, o.out);
     if (!manifest)
         return reportError(cmd, manifest.error());
-    std::cout << nlohmann::json{{"session", o.id}, {"folder", o.out}}.dump(2) << '\n';
-    return 0;
+    return writeJsonResult(cmd, nlohmann::json{{"session", o.id}, {"folder", o.out}}, "");
 }
 
 const CliRegistrar kRegistrar{CliCommand{

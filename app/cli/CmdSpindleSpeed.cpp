@@ -136,8 +136,7 @@ int runSpindle(const SpindleArgs& a)
         }
         out["lobe_diagram"] = lobe;
     }
-    std::cout << out.dump(2) << '\n';
-    return 0;
+    return writeJsonResult(cmd, out, "");
 }
 
 const CliRegistrar kRegistrar{{

@@ -151,7 +151,7 @@ int runTwoInertia(const TwoInertiaOptions& o)
                                     {"jerk_rad_s3", o.profile.jerk}}},
                        {"without_filter_rad", loadError.maxErrorWithoutFilter},
                        {"with_filter_rad", loadError.maxErrorWithFilter}};
-    return writeResult(cmd, j.dump(2) + "\n", o.outPath);
+    return writeJsonResult(cmd, j, o.outPath);
 }
 
 const CliRegistrar kRegistrar{CliCommand{

@@ -3,6 +3,7 @@
 // (issue 5 item 3; docs/storage.md "Sessions from the CLI"). Digests: SHA-256, FIPS 180-4.
 #include "app/cli/SessionRecorder.h"
 
+#include "core/model/InputLimits.h"
 #include "core/store/FrfCapture.h"
 
 #include "app/cli/CliCommand.h"
@@ -128,12 +129,10 @@ std::string optionName(const CLI::Option* opt)
 
 std::optional<std::string> readWholeFile(const fs::path& p)
 {
-    std::ifstream f(p, std::ios::binary);
-    if (!f)
+    auto text = model::readInputFile(p.string());
+    if (!text)
         return std::nullopt;
-    std::ostringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
+    return std::move(text).value();
 }
 
 bool isRegularFile(const std::string& path)
@@ -144,16 +143,15 @@ bool isRegularFile(const std::string& path)
 
 nlohmann::json fileEntry(const std::string& option, const std::string& path, bool withContent)
 {
-    nlohmann::json e{{"option", "--" + option}, {"path", path}};
+    nlohmann::json e{{"option", "--" + option}, {"path", model::displayPath(path)}};
     auto bytes = readWholeFile(path);
     if (!bytes)
         return e;
     e["bytes"] = bytes->size();
     e["sha256"] = sha256Hex(*bytes);
     if (withContent && bytes->size() <= kMaxInlineJsonBytes) {
-        auto j = nlohmann::json::parse(*bytes, nullptr, false);
-        if (!j.is_discarded())
-            e["content"] = std::move(j);
+        if (auto j = model::parseJsonText(*bytes, path))
+            e["content"] = std::move(j).value();
     }
     return e;
 }
@@ -228,13 +226,12 @@ void addOutput(store::SessionRecord& rec, const OutputFile& f)
     const auto now = stamp(f.path);
     if (!now.exists || (f.before.exists && now.time == f.before.time && now.size == f.before.size))
         return;  // not written by this run
-    const nlohmann::json where{{"option", "--" + f.option}, {"path", f.path}};
+    const nlohmann::json where{{"option", "--" + f.option}, {"path", model::displayPath(f.path)}};
     auto bytes = readWholeFile(f.path);
     if (!bytes)
         return;
-    auto j = nlohmann::json::parse(*bytes, nullptr, false);
-    if (!j.is_discarded()) {
-        rec.results.push_back({f.option, {{"file", where}, {"data", std::move(j)}}, {}});
+    if (auto j = model::parseJsonText(*bytes, f.path)) {
+        rec.results.push_back({f.option, {{"file", where}, {"data", std::move(j).value()}}, {}});
         return;
     }
     if (auto frf = io::readFrfCsvFile(f.path)) {
@@ -245,16 +242,15 @@ void addOutput(store::SessionRecord& rec, const OutputFile& f)
         rec.results.push_back({f.option, {{"file", where}, {"bytes", bytes->size()}, {"sha256", sha256Hex(*bytes)}}, {}});
         return;
     }
-    rec.captures.back().capture.metadata["file"] = f.path;
+    rec.captures.back().capture.metadata["file"] = model::displayPath(f.path);
 }
 
 void addStdout(store::SessionRecord& rec, const std::string& text)
 {
     if (text.empty())
         return;
-    auto j = nlohmann::json::parse(text, nullptr, false);
-    if (!j.is_discarded())
-        rec.results.push_back({"stdout", std::move(j), {}});
+    if (auto j = model::parseJsonText(text, "stdout"))
+        rec.results.push_back({"stdout", std::move(j).value(), {}});
     else if (text.size() <= kMaxInlineTextBytes)
         rec.results.push_back({"stdout", {{"text", text}}, {}});
     else

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli: every analysis and capture without the GUI. Results as JSON on stdout (or --out),
 // errors on stderr with exit codes 2 (bad input), 3 (device error), 4 (safety stop).
+#include "core/model/InputLimits.h"
 #include "app/cli/CliCommand.h"
 
 #include <fstream>
@@ -31,6 +32,14 @@ int writeResult(const std::string& command, const std::string& text, const std::
     if (!(f << text))
         return reportError(command, makeError(ErrorCode::Io, outPath + ": cannot write"));
     return 0;
+}
+
+int writeJsonResult(const std::string& command, const nlohmann::json& result, const std::string& outPath, int indent)
+{
+    auto text = model::dumpResultJson(result, indent);
+    if (!text)
+        return reportError(command, text.error());
+    return writeResult(command, *text + "\n", outPath);
 }
 
 }  // namespace axistune::cli

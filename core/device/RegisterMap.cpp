@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Register map loader and register encodings; the format is described in docs/modbus.md.
 #include "core/device/RegisterMap.h"
+#include "core/model/InputLimits.h"
 
 #include "core/sim/MachineDefinition.h"
 
@@ -206,12 +207,10 @@ Status checkLayout(const RegisterMap& m, const std::string& source)
 Result<RegisterMap> parseRegisterMap(const std::string& jsonText, const std::string& source)
 {
     using nlohmann::json;
-    json j;
-    try {
-        j = json::parse(jsonText);
-    } catch (const json::exception& e) {
-        return makeError(ErrorCode::BadInput, source + ": not valid JSON: " + e.what());
-    }
+    auto parsed = model::parseJsonText(jsonText, source);
+    if (!parsed)
+        return parsed.error();
+    const json& j = *parsed;
     RegisterMap m;
     std::string where = "top level";
     try {
@@ -278,12 +277,10 @@ Result<RegisterMap> parseRegisterMap(const std::string& jsonText, const std::str
 
 Result<RegisterMap> loadRegisterMapFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, "register map '" + path + "' cannot be opened");
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return parseRegisterMap(ss.str(), path);
+    auto text = model::readInputFile(path);
+    if (!text)
+        return text.error();
+    return parseRegisterMap(*text, path);
 }
 
 Result<RegisterMap> loadRegisterMap(const std::string& family)

@@ -57,6 +57,11 @@ public:
     Status serve();
     void requestStop() { m_stop.store(true); }
 
+    /// Answers every request read from the connected stream socket `fd` until the peer closes it or a
+    /// frame is malformed, as serve() does for one client (SimDriveServerStream.cpp). For in-process
+    /// tests and the Modbus fuzz target (raw bytes through a socketpair); `fd` stays open.
+    void serveStream(int fd);
+
     // The register engine (SimDriveServerRegisters.cpp); returns 0 or a Modbus exception code.
     int readRegisters(int unitId, int address, int count, std::uint16_t* out);
     int writeRegisters(int unitId, int address, const std::uint16_t* values, int count);

@@ -2,6 +2,7 @@
 // Ball-bar CSV reader and writer (format: DESIGN.md "File formats", docs/ballbar.md).
 #include "core/io/BallBarCsv.h"
 #include "core/io/TextFile.h"
+#include "core/model/InputLimits.h"
 
 #include <algorithm>
 #include <cctype>
@@ -45,7 +46,7 @@ std::optional<double> parseNumber(const std::string& text)
     if (*first == '+')
         ++first;
     auto [ptr, ec] = std::from_chars(first, last, v);
-    if (ec != std::errc() || ptr != last)
+    if (ec != std::errc() || ptr != last || model::isDenormal(v))
         return std::nullopt;
     return v;
 }
@@ -73,7 +74,7 @@ Result<std::optional<double>> metaNumber(const std::map<std::string, MetaLine>& 
     auto v = parseNumber(it->second.value);
     const std::string where = src + " line " + std::to_string(it->second.line) + ", metadata '" + key + "'";
     if (!v)
-        return bad(where + ": not a number ('" + it->second.value + "')");
+        return bad(where + ": " + model::badNumberText(it->second.value));
     if (!std::isfinite(*v))
         return bad(where + ": not a finite number ('" + it->second.value + "')");
     if (positive && *v <= 0.0)
@@ -175,6 +176,8 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
     int lineNo = 0;
     while (std::getline(in, raw)) {
         ++lineNo;
+        if (auto lim = model::checkCsvLine(sourceName, static_cast<std::size_t>(lineNo), raw.size()); !lim)
+            return lim.error();
         if (!raw.empty() && raw.back() == '\r')
             raw.pop_back();
         const std::string line = trim(raw);
@@ -196,9 +199,15 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
             continue;
         }
         std::vector<std::string> fields;
-        std::stringstream ss(line);
-        for (std::string f; std::getline(ss, f, ',');)
-            fields.push_back(trim(f));
+        for (std::size_t start = 0;;) {
+            const auto comma = line.find(',', start);
+            fields.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+            if (comma == std::string::npos)
+                break;
+            start = comma + 1;
+        }
+        if (!line.empty() && line.back() == ',')
+            fields.pop_back();  // "a,b," splits like getline did: no empty last field
         if (!headerSeen) {
             if (fields.size() != 2 || fields[0] != "angle_deg" || fields[1] != "deviation_um")
                 return bad(where + ": expected the header 'angle_deg,deviation_um' (found '" + line + "')");
@@ -213,7 +222,7 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
         for (int c = 0; c < 2; ++c) {
             auto n = parseNumber(fields[c]);
             if (!n)
-                return bad(where + ", column '" + kCols[c] + "': not a number ('" + fields[c] + "')");
+                return bad(where + ", column '" + kCols[c] + "': " + model::badNumberText(fields[c]));
             if (!std::isfinite(*n))
                 return bad(where + ", column '" + kCols[c] + "': not a finite number ('" + fields[c] + "')");
             v[c] = *n;
@@ -234,10 +243,11 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
 
 Result<BallBarTrace> readBallBarCsvFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open the ball-bar file");
-    return readBallBarCsv(f, path);
+    auto text = model::readInputFile(path);
+    if (!text)
+        return text.error();
+    std::istringstream in(std::move(text).value());
+    return readBallBarCsv(in, path);
 }
 
 Status writeBallBarCsv(std::ostream& out, const BallBarTrace& t)

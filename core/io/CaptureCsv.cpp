@@ -2,6 +2,7 @@
 // Capture CSV reader/writer (DESIGN.md "File formats").
 #include "core/io/CaptureCsv.h"
 #include "core/io/TextFile.h"
+#include "core/model/InputLimits.h"
 
 #include <charconv>
 #include <cmath>
@@ -47,7 +48,7 @@ bool parseDouble(std::string_view s, double& v)
     if (*b == '+')
         ++b;
     auto [p, ec] = std::from_chars(b, e, v);
-    return ec == std::errc() && p == e;
+    return ec == std::errc() && p == e && !model::isDenormal(v);
 }
 
 }  // namespace
@@ -61,6 +62,8 @@ Result<model::Capture> readCaptureCsv(std::istream& in, const std::string& sourc
     auto where = [&](std::size_t ln) { return sourceName + " line " + std::to_string(ln); };
     while (std::getline(in, line)) {
         ++lineNo;
+        if (auto lim = model::checkCsvLine(sourceName, static_cast<std::size_t>(lineNo), line.size()); !lim)
+            return lim.error();
         const std::string_view t = trimView(line);
         if (t.empty())
             continue;
@@ -93,8 +96,8 @@ Result<model::Capture> readCaptureCsv(std::istream& in, const std::string& sourc
             }
             double v = 0.0;
             if (!parseDouble(cell, v)) {
-                return makeError(ErrorCode::BadInput, where(lineNo) + ", column '" + cap.channels[col].name + "': '"
-                                                          + std::string(cell) + "' is not a number");
+                return makeError(ErrorCode::BadInput, where(lineNo) + ", column '" + cap.channels[col].name + "': "
+                                                          + model::badNumberText(cell));
             }
             if (!std::isfinite(v)) {
                 return makeError(ErrorCode::BadInput, where(lineNo) + ", column '" + cap.channels[col].name
@@ -120,10 +123,11 @@ Result<model::Capture> readCaptureCsv(std::istream& in, const std::string& sourc
 
 Result<model::Capture> readCaptureCsvFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
-    return readCaptureCsv(f, path);
+    auto text = model::readInputFile(path);
+    if (!text)
+        return text.error();
+    std::istringstream in(std::move(text).value());
+    return readCaptureCsv(in, path);
 }
 
 Status writeCaptureCsv(std::ostream& out, const model::Capture& capture)

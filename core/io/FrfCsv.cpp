@@ -2,10 +2,12 @@
 // FRF CSV reader and writer (DESIGN.md "File formats").
 #include "core/io/FrfCsv.h"
 #include "core/io/TextFile.h"
+#include "core/model/InputLimits.h"
 
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <numbers>
 #include <optional>
 
@@ -42,7 +44,7 @@ bool parseDouble(const std::string& cell, double& value)
     if (*b == '+')
         ++b;
     const auto r = std::from_chars(b, e, value);
-    return r.ec == std::errc() && r.ptr == e;
+    return r.ec == std::errc() && r.ptr == e && !model::isDenormal(value);
 }
 
 std::string formatDouble(double v)
@@ -130,6 +132,8 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
     std::size_t lineNo = 0;
     while (std::getline(in, line)) {
         ++lineNo;
+        if (auto lim = model::checkCsvLine(sourceName, static_cast<std::size_t>(lineNo), line.size()); !lim)
+            return lim.error();
         if (!line.empty() && line.back() == '\r')
             line.pop_back();
         if (line.find_first_not_of(" \t") == std::string::npos)
@@ -155,7 +159,7 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
         }
         auto number = [&](std::size_t idx, const char* name, double& v) -> Status {
             if (!detail::parseDouble(cells[idx], v))
-                return makeError(ErrorCode::BadInput, where(sourceName, lineNo, name) + ": not a number ('" + cells[idx] + "')");
+                return makeError(ErrorCode::BadInput, where(sourceName, lineNo, name) + ": " + model::badNumberText(cells[idx]));
             if (!std::isfinite(v))
                 return makeError(ErrorCode::BadInput, where(sourceName, lineNo, name) + ": not finite ('" + cells[idx] + "')");
             return {};
@@ -182,6 +186,9 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
             if (auto s = number(*cols->phaseDeg, "phase_deg", deg); !s)
                 return s.error();
             h = std::polar(std::pow(10.0, db / 20.0), deg * std::numbers::pi / 180.0);
+            if (!std::isfinite(h.real()) || !std::isfinite(h.imag()))
+                return makeError(ErrorCode::OutOfRange, where(sourceName, lineNo, "mag_dB") + ": " + cells[*cols->magDb]
+                                                            + " dB does not fit a double");
         }
         double coh = std::nan("");
         if (cols->coherence && !cells[*cols->coherence].empty() && cells[*cols->coherence] != "nan") {
@@ -211,10 +218,11 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
 
 Result<dsp::FrequencyResponse> readFrfCsvFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open file");
-    return readFrfCsv(f, path);
+    auto text = model::readInputFile(path);
+    if (!text)
+        return text.error();
+    std::istringstream in(std::move(text).value());
+    return readFrfCsv(in, path);
 }
 
 Status writeFrfCsv(std::ostream& out, const dsp::FrequencyResponse& frf)
@@ -222,14 +230,24 @@ Status writeFrfCsv(std::ostream& out, const dsp::FrequencyResponse& frf)
     const std::size_t n = frf.size();
     if (frf.h.size() != n || frf.coherence.size() != n || frf.valid.size() != n)
         return makeError(ErrorCode::Internal, "FRF arrays of unequal length");
+    // The output boundary: a point that is not finite is a bug upstream, never a row of the file.
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(frf.freqHz[i]) || !std::isfinite(frf.h[i].real()) || !std::isfinite(frf.h[i].imag()))
+            return makeError(ErrorCode::Internal, "FRF point " + std::to_string(i + 1) + " is not finite; nothing written");
+    }
     for (const auto& [k, v] : frf.metadata)
         out << "# " << k << '=' << v << '\n';
     out << kFrfCsvHeader << '\n';
     using detail::formatDouble;
     for (std::size_t i = 0; i < n; ++i) {
         const auto h = frf.h[i];
-        out << formatDouble(frf.freqHz[i]) << ',' << formatDouble(h.real()) << ',' << formatDouble(h.imag()) << ','
-            << formatDouble(dsp::magnitudeDb(h)) << ',' << formatDouble(dsp::phaseDeg(h)) << ',';
+        out << formatDouble(frf.freqHz[i]) << ',' << formatDouble(h.real()) << ',' << formatDouble(h.imag()) << ',';
+        // |h| = 0 (an invalid point) has no dB value: the cell stays empty like an undefined coherence.
+        if (const double db = dsp::magnitudeDb(h); std::isfinite(db))
+            out << formatDouble(db) << ',' << formatDouble(dsp::phaseDeg(h));
+        else
+            out << ',';
+        out << ',';
         if (std::isfinite(frf.coherence[i]))
             out << formatDouble(frf.coherence[i]);
         out << ',' << (frf.valid[i] ? '1' : '0') << '\n';

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // NC parameter-file export from map files (docs/formats-profile.md "NC map files").
 #include "core/io/NcExport.h"
+#include "core/model/InputLimits.h"
 
 #include "core/model/Units.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -90,10 +92,13 @@ Result<NcMapEntry> entryFromJson(const nlohmann::json& e, const std::string& whe
         out.scale = e["scale"].get<double>();
     }
     if (e.contains("decimals")) {
-        if (!e["decimals"].is_number_integer() || e["decimals"].get<int>() < 0 || e["decimals"].get<int>() > 12)
+        if (!e["decimals"].is_number_integer() || e["decimals"].get<std::int64_t>() < 0
+            || e["decimals"].get<std::int64_t>() > 12)
             return bad(where + " (" + out.key + ")", "field 'decimals' must be an integer 0..12");
         out.decimals = e["decimals"].get<int>();
     }
+    if (out.key.empty() || out.number.empty())
+        return bad(where, "fields 'key' and 'number' must not be empty");
     if (auto c = model::convertUnit(1.0, out.siUnit, out.unit); !c)
         return bad(where + " (" + out.key + ")", "units '" + out.siUnit + "' -> '" + out.unit + "': " + c.error().detail);
     return out;
@@ -154,12 +159,39 @@ Result<NcMap> ncMapFromJson(const nlohmann::json& j, const std::string& sourceNa
         return bad(sourceName, "field 'layout': '" + *layout + "' (by_parameter, by_parameter_per_axis, by_axis)");
     if (m.layout == NcLayout::ByParameter && m.axisItem.empty())
         return bad(sourceName, "layout by_parameter needs 'axis_item'");
+    // Templates that would drop the notice or the values from the file are refused (docs/formats-profile.md).
+    if (m.comment.find("{text}") == std::string::npos)
+        return bad(sourceName, "field 'comment' must contain {text} (else the VERIFY notice would be dropped)");
+    for (const auto& f : m.commentForbidden) {
+        if (f.empty() || f.find_first_of(" \t\r\n") != std::string::npos)
+            return bad(sourceName, "field 'comment_forbidden': entries must be non-empty and hold no blank");
+        for (const char c : f)
+            if ((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == ':')
+                return bad(sourceName, "field 'comment_forbidden': '" + f
+                                           + "' holds a letter, digit or ':' (it would garble the VERIFY notice)");
+    }
+    for (const auto* t : {&m.comment, &m.line, &m.axisItem, &m.axisSeparator, &m.axisHeader})
+        if (t->find_first_of("\r\n") != std::string::npos)
+            return bad(sourceName, "templates must be single lines (no line break)");
+    if (m.layout == NcLayout::ByParameter) {
+        if (m.line.find("{axes}") == std::string::npos)
+            return bad(sourceName, "field 'line' must contain {axes} for layout by_parameter (else no value is written)");
+        if (m.axisItem.find("{value}") == std::string::npos)
+            return bad(sourceName, "field 'axis_item' must contain {value} (else no value is written)");
+    } else if (m.line.find("{value}") == std::string::npos) {
+        return bad(sourceName, "field 'line' must contain {value} (else no value is written)");
+    }
     if (!j.contains("parameters") || !j["parameters"].is_array())
         return bad(sourceName, "field 'parameters' must be an array");
     for (std::size_t i = 0; i < j["parameters"].size(); ++i) {
         auto e = entryFromJson(j["parameters"][i], sourceName + " parameters[" + std::to_string(i) + "]");
         if (!e)
             return e.error();
+        const std::string& line = e->line;
+        const char* needed = m.layout == NcLayout::ByParameter ? "{axes}" : "{value}";
+        if (!line.empty() && (line.find(needed) == std::string::npos || line.find_first_of("\r\n") != std::string::npos))
+            return bad(sourceName + " parameters[" + std::to_string(i) + "] (" + e->key + ")",
+                       std::string("field 'line' must be one line containing ") + needed);
         m.entries.push_back(std::move(e).value());
     }
     return m;
@@ -170,11 +202,10 @@ Result<NcMap> readNcMapFile(const std::string& path)
     auto text = readTextFile(path);
     if (!text)
         return text.error();
-    try {
-        return ncMapFromJson(nlohmann::json::parse(*text), path);
-    } catch (const nlohmann::json::parse_error& e) {
-        return bad(path, std::string("not valid JSON (") + e.what() + ")");
-    }
+    auto j = model::parseJsonText(*text, path);
+    if (!j)
+        return j.error();
+    return ncMapFromJson(*j, path);
 }
 
 Result<std::string> formatNcValue(const NcMapEntry& entry, double valueSi)
@@ -217,7 +248,7 @@ Result<NcExport> exportNc(const MachineProfile& profile, const NcMap& map)
     auto comment = [&](const std::string& text) {
         std::string t = text;
         for (const auto& f : map.commentForbidden) {
-            for (std::size_t p = t.find(f); !f.empty() && p != std::string::npos; p = t.find(f, p))
+            for (std::size_t p = t.find(f); !f.empty() && p != std::string::npos; p = t.find(f, p + 1))
                 t.replace(p, f.size(), " ");
         }
         auto vars = base;

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Machine profile JSON and the flat parameter CSV (schema: docs/formats-profile.md).
 #include "core/io/Profile.h"
+#include "core/model/InputLimits.h"
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -49,7 +51,7 @@ bool parseDouble(const std::string& s, double& v)
     if (*b == '+')
         ++b;
     auto [p, ec] = std::from_chars(b, e, v);
-    return ec == std::errc() && p == e && std::isfinite(v);
+    return ec == std::errc() && p == e && std::isfinite(v) && !model::isDenormal(v);
 }
 
 Result<AxisProfile> axisFromJson(const nlohmann::json& a, const std::string& where)
@@ -146,8 +148,12 @@ Result<MachineProfile> profileFromJson(const nlohmann::json& j, const std::strin
         return bad(sourceName, std::string("field 'format' must be \"") + kProfileFormat + "\"");
     if (!j.contains("version") || !j["version"].is_number_integer())
         return bad(sourceName, "field 'version' must be an integer");
-    if (j["version"].get<int>() > kProfileVersion || j["version"].get<int>() < 1) {
-        return bad(sourceName, "profile version " + std::to_string(j["version"].get<int>())
+    for (const auto& [key, val] : j.items()) {
+        if (key != "format" && key != "version" && key != "machine" && key != "axes")
+            return bad(sourceName, "unknown field '" + key + "' (format, version, machine, axes)");
+    }
+    if (j["version"].get<std::int64_t>() > kProfileVersion || j["version"].get<std::int64_t>() < 1) {
+        return bad(sourceName, "profile version " + std::to_string(j["version"].get<std::int64_t>())
                                    + " is not supported (this AxisTune reads version " + std::to_string(kProfileVersion) + ")");
     }
     MachineProfile p;
@@ -157,6 +163,10 @@ Result<MachineProfile> profileFromJson(const nlohmann::json& j, const std::strin
     if (!m.contains("name") || !m["name"].is_string() || m["name"].get<std::string>().empty())
         return bad(sourceName, "field 'machine.name' must be a non-empty string");
     p.name = m["name"].get<std::string>();
+    for (const auto& [key, val] : m.items()) {
+        if (key != "name" && key != "description")
+            return bad(sourceName, "unknown field 'machine." + key + "' (name, description)");
+    }
     if (m.contains("description")) {
         if (!m["description"].is_string())
             return bad(sourceName, "field 'machine.description' must be a string");
@@ -183,15 +193,7 @@ std::string profileToText(const MachineProfile& profile)
 
 Result<std::string> readTextFile(const std::string& path)
 {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec))
-        return makeError(ErrorCode::NotFound, path + ": no such file");
-    std::ifstream f(path, std::ios::binary);
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": cannot be opened for reading");
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
+    return model::readInputFile(path);
 }
 
 Status writeTextFileAtomic(const std::string& path, const std::string& text)
@@ -218,13 +220,10 @@ Result<MachineProfile> readProfileFile(const std::string& path)
     auto text = readTextFile(path);
     if (!text)
         return text.error();
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(*text);
-    } catch (const nlohmann::json::parse_error& e) {
-        return bad(path, std::string("not valid JSON (") + e.what() + ")");
-    }
-    return profileFromJson(j, path);
+    auto j = model::parseJsonText(*text, path);
+    if (!j)
+        return j.error();
+    return profileFromJson(*j, path);
 }
 
 Status writeProfileFile(const std::string& path, const MachineProfile& profile)
@@ -258,6 +257,8 @@ Result<MachineProfile> parametersFromCsv(const std::string& text, const std::str
     MachineProfile p;
     while (std::getline(in, line)) {
         ++lineNo;
+        if (auto lim = model::checkCsvLine(sourceName, static_cast<std::size_t>(lineNo), line.size()); !lim)
+            return lim.error();
         const std::string t = trim(line);
         const std::string where = sourceName + " line " + std::to_string(lineNo);
         if (t.empty())
@@ -284,7 +285,7 @@ Result<MachineProfile> parametersFromCsv(const std::string& text, const std::str
             return makeError(ErrorCode::BadInput, where + ", column 'machine': '" + cells[0] + "' differs from '" + p.name + "' (one machine per file)");
         double v = 0.0;
         if (!parseDouble(cells[3], v))
-            return makeError(ErrorCode::BadInput, where + ", column 'value': '" + cells[3] + "' is not a finite number");
+            return makeError(ErrorCode::BadInput, where + ", column 'value': " + model::badNumberText(cells[3]) + " (a finite SI number is needed)");
         AxisProfile* axis = nullptr;
         for (auto& a : p.axes) {
             if (a.name == cells[1])

@@ -2,12 +2,14 @@
 // Sine-stream CSV reader and writer (DESIGN.md "File formats").
 #include "core/io/SweepCsv.h"
 #include "core/io/TextFile.h"
+#include "core/model/InputLimits.h"
 
 #include "core/io/FrfCsv.h"
 
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 namespace axistune::io {
 
@@ -31,6 +33,8 @@ Result<dsp::SweepRecording> readSweepCsv(std::istream& in, const std::string& sr
     std::size_t lineNo = 0;
     while (std::getline(in, line)) {
         ++lineNo;
+        if (auto lim = model::checkCsvLine(src, static_cast<std::size_t>(lineNo), line.size()); !lim)
+            return lim.error();
         if (!line.empty() && line.back() == '\r')
             line.pop_back();
         if (line.find_first_not_of(" \t") == std::string::npos)
@@ -65,7 +69,7 @@ Result<dsp::SweepRecording> readSweepCsv(std::istream& in, const std::string& sr
         for (int c = 0; c < 5; ++c) {
             const auto& cell = cells[col[c]];
             if (!detail::parseDouble(cell, v[c]))
-                return makeError(ErrorCode::BadInput, where(src, lineNo, kNames[c]) + ": not a number ('" + cell + "')");
+                return makeError(ErrorCode::BadInput, where(src, lineNo, kNames[c]) + ": " + model::badNumberText(cell));
             if (!std::isfinite(v[c]))
                 return makeError(ErrorCode::BadInput, where(src, lineNo, kNames[c]) + ": not finite ('" + cell + "')");
         }
@@ -107,17 +111,18 @@ Result<dsp::SweepRecording> readSweepCsv(std::istream& in, const std::string& sr
         return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz: not a positive number ('" + fs->second + "')");
     if (auto a = rec.metadata.find("amplitude"); a != rec.metadata.end()) {
         if (!detail::parseDouble(a->second, rec.amplitude) || !std::isfinite(rec.amplitude))
-            return makeError(ErrorCode::BadInput, src + ": metadata amplitude: not a number ('" + a->second + "')");
+            return makeError(ErrorCode::BadInput, src + ": metadata amplitude: " + model::badNumberText(a->second));
     }
     return rec;
 }
 
 Result<dsp::SweepRecording> readSweepCsvFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open file");
-    return readSweepCsv(f, path);
+    auto text = model::readInputFile(path);
+    if (!text)
+        return text.error();
+    std::istringstream in(std::move(text).value());
+    return readSweepCsv(in, path);
 }
 
 Status writeSweepCsv(std::ostream& out, const dsp::SweepRecording& rec)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Readers of the tool and cutting-condition JSON files (docs/machining.md "File formats").
 #include "core/machining/MachiningJson.h"
+#include "core/model/InputLimits.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,14 +18,12 @@ using nlohmann::json;
 
 Result<json> parseText(const std::string& text, const std::string& src)
 {
-    try {
-        json j = json::parse(text);
-        if (!j.is_object())
-            return makeError(ErrorCode::BadInput, src + ": the top level must be a JSON object");
-        return j;
-    } catch (const json::parse_error& e) {
-        return makeError(ErrorCode::BadInput, src + ": not valid JSON (" + std::string(e.what()) + ")");
-    }
+    auto j = model::parseJsonText(text, src);
+    if (!j)
+        return j.error();
+    if (!j->is_object())
+        return makeError(ErrorCode::BadInput, src + ": the top level must be a JSON object");
+    return j;
 }
 
 Result<double> number(const json& obj, const std::string& key, const std::string& where)

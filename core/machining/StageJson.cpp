@@ -2,6 +2,7 @@
 // Reader of stage.json (docs/machining.md): stage parameters and the options of the cutting force observer
 // and the chatter detection.
 #include "core/machining/StageJson.h"
+#include "core/model/InputLimits.h"
 
 #include <cmath>
 #include <fstream>
@@ -158,12 +159,10 @@ TwoMassStage StageDescription::twoMass() const
 
 Result<StageDescription> parseStageJson(const std::string& text, const std::string& src)
 {
-    json j;
-    try {
-        j = json::parse(text);
-    } catch (const json::parse_error& e) {
-        return makeError(ErrorCode::BadInput, src + ": not valid JSON (" + std::string(e.what()) + ")");
-    }
+    auto parsed = model::parseJsonText(text, src);
+    if (!parsed)
+        return parsed.error();
+    const json& j = *parsed;
     if (!j.is_object())
         return makeError(ErrorCode::BadInput, src + ": the top level must be a JSON object");
     AXT_TRY(onlyKeys(
@@ -217,12 +216,10 @@ Result<StageDescription> parseStageJson(const std::string& text, const std::stri
 
 Result<StageDescription> readStageJsonFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open file");
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return parseStageJson(ss.str(), path);
+    auto text = model::readInputFile(path);
+    if (!text)
+        return text.error();
+    return parseStageJson(*text, path);
 }
 
 } // namespace axistune::machining

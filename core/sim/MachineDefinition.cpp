@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim/MachineDefinition.h"
+#include "core/model/InputLimits.h"
 
 #include "core/model/Units.h"
 
@@ -96,19 +97,8 @@ Result<std::vector<ResonanceMode>> parseModes(const json& modes, const std::stri
     return out;
 }
 
-}  // namespace
-
-Result<MachineDefinition> loadMachineDefinitionFile(const std::string& path)
+Result<MachineDefinition> machineFromObject(const json& j, const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
-    json j;
-    try {
-        j = json::parse(f);
-    } catch (const json::parse_error& e) {
-        return makeError(ErrorCode::BadInput, path + ": not valid JSON (" + std::string(e.what()) + ")");
-    }
     MachineDefinition def;
     def.name = j.value("name", fs::path(path).stem().string());
     def.description = j.value("description", std::string());
@@ -142,6 +132,28 @@ Result<MachineDefinition> loadMachineDefinitionFile(const std::string& path)
         def.axes.push_back(std::move(axis));
     }
     return def;
+}
+
+}  // namespace
+
+Result<MachineDefinition> loadMachineDefinitionFile(const std::string& path)
+{
+    auto parsed = model::readJsonFile(path);
+    if (!parsed)
+        return parsed.error();
+    return machineDefinitionFromJson(*parsed, path);
+}
+
+Result<MachineDefinition> machineDefinitionFromJson(const json& j, const std::string& source)
+{
+    const std::string path = model::displayPath(source);
+    if (!j.is_object())
+        return makeError(ErrorCode::BadInput, path + ": the top level must be a JSON object");
+    try {
+        return machineFromObject(j, path);
+    } catch (const json::exception& e) {
+        return makeError(ErrorCode::BadInput, path + ": wrong type of a value (" + std::string(e.what()) + ")");
+    }
 }
 
 }  // namespace axistune::sim

@@ -8,6 +8,8 @@
 #include "core/sim/AxisParameters.h"
 #include "core/sim/PlantModel.h"
 
+#include <nlohmann/json.hpp>
+
 #include <map>
 #include <string>
 #include <vector>
@@ -36,5 +38,7 @@ std::string resourceDir();
 std::vector<std::string> presetNames();
 Result<MachineDefinition> loadPreset(const std::string& name);
 Result<MachineDefinition> loadMachineDefinitionFile(const std::string& path);
+/// Validates a parsed machine file; errors name `source` and the axis and key.
+Result<MachineDefinition> machineDefinitionFromJson(const nlohmann::json& j, const std::string& source);
 
 }  // namespace axistune::sim

@@ -49,7 +49,7 @@ std::int64_t insertSessionRow(SQLite::Database& db, const SessionInfo& info, std
     ins.bind(5, info.finished.empty() ? now : info.finished);
     ins.bind(6, toString(info.status));
     ins.bind(7, info.appVersion.empty() ? std::string(AXISTUNE_VERSION) : info.appVersion);
-    ins.bind(8, inputs.dump());
+    ins.bind(8, inputs.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     ins.bind(9, info.operatorName);
     ins.bind(10, info.note);
     ins.exec();
@@ -67,7 +67,7 @@ void insertCaptures(SQLite::Database& db, std::int64_t sessionId, const std::vec
         cap.bind(1, sessionId);
         cap.bind(2, static_cast<std::int64_t>(i));
         cap.bind(3, c.name);
-        cap.bind(4, meta.dump());
+        cap.bind(4, meta.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
         cap.bind(5, static_cast<std::int64_t>(c.capture.size()));
         cap.exec();
         cap.reset();
@@ -92,7 +92,7 @@ void insertResults(SQLite::Database& db, std::int64_t sessionId, const std::vect
         res.bind(1, sessionId);
         res.bind(2, static_cast<std::int64_t>(i));
         res.bind(3, results[i].name);
-        res.bind(4, results[i].data.dump());
+        res.bind(4, results[i].data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
         res.exec();
         res.reset();
         const auto resultId = db.getLastInsertRowid();
@@ -176,7 +176,7 @@ Result<std::int64_t> Database::recordSession(const SessionRecord& r)
                                        s.note, {s.values.begin(), s.values.end()}, sid);
         }
         for (const auto& m : r.models)
-            detail::insertModel(*m_db, detail::ensureAxisId(*m_db, *mid, m.axis), m.kind, m.time, m.data.dump(), sid);
+            detail::insertModel(*m_db, detail::ensureAxisId(*m_db, *mid, m.axis), m.kind, m.time, m.data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), sid);
         if (mid)
             insertJournal(*m_db, *mid, sid, r.journal);
         tx.commit();

@@ -48,7 +48,9 @@ double phaseCrossoverRadS(const MotorData& m, double tau, PiGains g)
     if (g.kiVPerAs > 0.0 && g.kpVPerA > 0.0) {
         w0 = std::min(w0, g.kiVPerAs / g.kpVPerA);
     }
-    w0 *= 1e-3;
+    // A start below the smallest normal double (a resistance or k_i/k_p near 5e-324) would never grow
+    // by the factor 1.01 below: start there instead (at most ~72,000 steps up to 2π/τ).
+    w0 = std::max(w0 * 1e-3, std::numeric_limits<double>::min());
     auto f = [&](double w) { return openLoopPhase(m, tau, g, w) + kPi; };
     if (f(w0) <= 0.0) {
         return w0;

@@ -2,6 +2,7 @@
 // Motor data for the current-loop design (motor JSON, docs/tuning.md) and its checks, including the
 // back-EMF check of spec/current-loop-and-multisweep-frf.md §2.1 / §4.1 step 2 (C-A1).
 #include "core/tuning/CurrentLoop.h"
+#include "core/model/InputLimits.h"
 
 #include <nlohmann/json.hpp>
 
@@ -77,12 +78,10 @@ Status validateMotor(const MotorData& m, const std::string& source)
 
 Result<MotorData> parseMotorJson(const std::string& text, const std::string& source)
 {
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        return bad(source, std::string("not valid JSON: ") + e.what());
-    }
+    auto parsed = model::parseJsonText(text, source);
+    if (!parsed)
+        return parsed.error();
+    const nlohmann::json& j = *parsed;
     if (!j.is_object()) {
         return bad(source, "expected a JSON object");
     }
@@ -126,13 +125,10 @@ Result<MotorData> parseMotorJson(const std::string& text, const std::string& sou
 
 Result<MotorData> readMotorJsonFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f) {
-        return makeError(ErrorCode::NotFound, path + ": cannot open the motor file");
-    }
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return parseMotorJson(ss.str(), path);
+    auto text = model::readInputFile(path);
+    if (!text)
+        return text.error();
+    return parseMotorJson(*text, path);
 }
 
 }  // namespace axistune::tuning

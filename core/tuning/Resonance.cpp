@@ -122,6 +122,30 @@ Line robustLine(const std::vector<Point>& pts, std::size_t lo, std::size_t hi, d
     return line;
 }
 
+/// Most points a baseline fit uses. A wider window (a dense FRF, 10^5 points) is fitted through every
+/// stride-th point, and the fit is reused for the next stride points: near-linear time in the FRF's size
+/// (bench/bench_notch.cpp) where every point with its full window was quadratic. FRFs whose windows hold
+/// at most this many points (every measured FRF so far) are fitted exactly as before.
+constexpr std::size_t kMaxBaselinePoints = 512;
+
+/// robustLine through every stride-th point of pts[lo, hi); the noise from second differences of
+/// neighbouring points at every stride-th position.
+Line sampledRobustLine(const std::vector<Point>& pts, std::size_t lo, std::size_t hi, double x0, std::size_t stride)
+{
+    if (stride <= 1)
+        return robustLine(pts, lo, hi, x0);
+    std::vector<Point> sub;
+    sub.reserve((hi - lo) / stride + 1);
+    for (std::size_t k = lo; k < hi; k += stride)
+        sub.push_back(pts[k]);
+    Line line = robustLine(sub, 0, sub.size(), x0);
+    std::vector<double> d2;
+    for (std::size_t k = lo + 1; k + 1 < hi; k += stride)
+        d2.push_back(std::abs(pts[k + 1].y - 2.0 * pts[k].y + pts[k - 1].y));
+    line.noise = 1.4826 * median(d2) / std::sqrt(6.0);
+    return line;
+}
+
 /// Position (in x) where the excess crosses `level` walking from k outwards by `dir`; NaN if the
 /// walk leaves the contiguous usable run or the window before crossing.
 double crossing(const std::vector<Point>& pts, const Line& base, std::size_t k, int dir, double level, double xLimit)
@@ -198,12 +222,19 @@ Result<std::vector<Resonance>> findResonances(const dsp::FrequencyResponse& frf,
     const double halfDec = o.halfWindowOctaves * std::log10(2.0);
     std::vector<Line> base(pts.size());
     std::size_t lo = 0, hi = 0;
+    std::size_t lastFit = 0;
     for (std::size_t k = 0; k < pts.size(); ++k) {
         while (pts[lo].x < pts[k].x - halfDec)
             ++lo;
         while (hi < pts.size() && pts[hi].x <= pts[k].x + halfDec)
             ++hi;
-        base[k] = robustLine(pts, lo, hi, pts[k].x);
+        const std::size_t stride = (hi - lo + kMaxBaselinePoints - 1) / kMaxBaselinePoints;
+        if (stride <= 1 || k == 0 || k - lastFit >= stride) {
+            base[k] = sampledRobustLine(pts, lo, hi, pts[k].x, stride);
+            lastFit = k;
+        } else {
+            base[k] = base[lastFit];  // a line: evaluated at pts[k].x through its own x0
+        }
     }
     auto excess = [&](std::size_t k, const Line& l) { return pts[k].y - l.at(pts[k].x); };
 

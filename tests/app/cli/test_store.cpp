@@ -148,7 +148,7 @@ TEST(CliStore, BadFilesGiveClearErrors)
     EXPECT_NE(r.err.find("no machine 'lathe'"), std::string::npos) << r.err;
     r = runCli("export --db " + db + " --machine vmc --format mazak");
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("nc/mazak.json: no such file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("nc/mazak.json: cannot open (no such file)"), std::string::npos) << r.err;
 
     const auto badCsv = (dir / "p.csv").string();
     std::ofstream(badCsv) << "# format=axistune-parameters\nmachine,axis,key,value\nvmc,X,velocity.kp,fast\n";

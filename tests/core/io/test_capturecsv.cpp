@@ -32,7 +32,7 @@ TEST(CaptureCsv, ErrorsNameFileLineAndColumn)
     };
     auto r = parse("# fs_Hz=4000\nt_s,vel_rad_s\n0,1\n0.1,abc\n");
     ASSERT_FALSE(r.ok());
-    EXPECT_NE(r.error().detail.find("cap.csv line 4, column 'vel_rad_s': 'abc' is not a number"), std::string::npos)
+    EXPECT_NE(r.error().detail.find("cap.csv line 4, column 'vel_rad_s': not a number ('abc')"), std::string::npos)
         << r.error().detail;
     r = parse("t_s,vel_rad_s\n0,1,2\n");
     ASSERT_FALSE(r.ok());
