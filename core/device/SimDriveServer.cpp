@@ -177,6 +177,15 @@ void SimDriveServer::reply(const std::uint8_t* query, int length)
     } else if (fc == 0x10 || fc == 0x17) {
         const int waddr = be16(q + (fc == 0x10 ? 1 : 5)), wcount = be16(q + (fc == 0x10 ? 3 : 7));
         const std::uint8_t* bytes = q + (fc == 0x10 ? 6 : 10);
+        // The byte count (what libmodbus read) must be the word count × 2: a request that claims more
+        // words than it carries is refused, never executed with whatever lies beyond it (issue 21).
+        const int byteCount = q[fc == 0x10 ? 5 : 9];
+        if (byteCount != 2 * wcount || length < hl + (fc == 0x10 ? 6 : 10) + byteCount) {
+            log("refused function " + std::to_string(fc) + ": byte count " + std::to_string(byteCount) + " for "
+                + std::to_string(wcount) + " registers");
+            modbus_reply_exception(ctx, query, MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE);
+            return;
+        }
         std::vector<std::uint16_t> v(static_cast<std::size_t>(std::max(0, wcount)));
         for (int k = 0; k < wcount; ++k)
             v[static_cast<std::size_t>(k)] = static_cast<std::uint16_t>(be16(bytes + 2 * k));
