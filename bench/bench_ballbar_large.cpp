@@ -8,7 +8,6 @@
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include <benchmark/benchmark.h>
-
 #include <charconv>
 #include <cmath>
 #include <numbers>
@@ -27,9 +26,10 @@ std::string ballBarText(std::size_t n)
     for (std::size_t i = 0; i < n; ++i) {
         const double deg = 360.0 * static_cast<double>(i) / static_cast<double>(n);
         const double th = deg * std::numbers::pi / 180.0;
-        const double x = 100.0 * std::cos(th);  // mm
+        const double x = 100.0 * std::cos(th); // mm
         double dev = 2.0 * std::sin(x / 20.0 * 2.0 * std::numbers::pi) * std::cos(th);
-        dev += (std::sin(th) > 0.0 ? 2.0 : -2.0) * std::abs(std::cos(th)) + (std::cos(th) > 0.0 ? 2.0 : -2.0) * std::abs(std::sin(th));
+        dev += (std::sin(th) > 0.0 ? 2.0 : -2.0) * std::abs(std::cos(th)) +
+               (std::cos(th) > 0.0 ? 2.0 : -2.0) * std::abs(std::sin(th));
         dev += 0.1 * std::sin(0.37 * static_cast<double>(i));
         auto p = std::to_chars(buf, buf + sizeof buf, deg).ptr;
         *p++ = ',';
@@ -63,8 +63,14 @@ void BM_BallBarReadAndDiagnose(benchmark::State& state)
     state.SetComplexityN(state.range(0));
 }
 
-}  // namespace
+} // namespace
 
-BENCHMARK(BM_BallBarReadAndDiagnose)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1)->Complexity();
+BENCHMARK(BM_BallBarReadAndDiagnose)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Complexity();
 
 BENCHMARK_MAIN();

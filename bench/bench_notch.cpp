@@ -8,7 +8,6 @@
 #include "core/tuning/Resonance.h"
 
 #include <benchmark/benchmark.h>
-
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -25,9 +24,9 @@ dsp::FrequencyResponse denseFrf(std::size_t n)
         const double hz = 1.0 + 1999.0 * static_cast<double>(i) / static_cast<double>(n - 1);
         const std::complex<double> s(0.0, 2.0 * std::numbers::pi * hz);
         // K (s^2 + 2ζa wa s + wa^2) / (s^2 (s^2 + 2ζr wr s + wr^2)) · wr^2 / wa^2, ζ = 0.03 / 0.05.
-        std::complex<double> h = 2.0e5 * (s * s + 2.0 * 0.05 * wa * s + wa * wa)
-                                 / (s * s * (s * s + 2.0 * 0.03 * wr * s + wr * wr)) * (wr * wr / (wa * wa));
-        h *= std::pow(10.0, 0.01 * std::sin(0.7 * static_cast<double>(i)));  // ±0.2 dB, not random
+        std::complex<double> h = 2.0e5 * (s * s + 2.0 * 0.05 * wa * s + wa * wa) /
+                                 (s * s * (s * s + 2.0 * 0.03 * wr * s + wr * wr)) * (wr * wr / (wa * wa));
+        h *= std::pow(10.0, 0.01 * std::sin(0.7 * static_cast<double>(i))); // ±0.2 dB, not random
         f.push(hz, h, 0.99, true);
     }
     return f;
@@ -50,7 +49,7 @@ void BM_FindResonances(benchmark::State& state)
     state.SetComplexityN(state.range(0));
 }
 
-}  // namespace
+} // namespace
 
 BENCHMARK(BM_FindResonances)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->Complexity();
 

@@ -2,9 +2,9 @@
 // axistune-cli export: a machine's current parameters as an NC parameter file (map files in
 // resources/nc/, to verify against the NC's manual) or as AxisTune JSON/CSV (docs/storage.md).
 #include "app/cli/CliCommand.h"
-#include "core/model/InputLimits.h"
 #include "core/io/NcExport.h"
 #include "core/io/Profile.h"
+#include "core/model/InputLimits.h"
 #include "core/store/Database.h"
 
 #include <iostream>
@@ -63,9 +63,10 @@ int runExport(const ExportOptions& o)
     }
     if (auto st = io::writeTextFileAtomic(o.out, text); !st)
         return reportError(cmd, st.error());
-    return writeJsonResult(cmd, {{"machine", o.machine}, {"format", o.format}, {"file", model::displayPath(o.out)},
-                                 {"unmapped", unmapped}},
-                           "");
+    return writeJsonResult(
+        cmd,
+        {{"machine", o.machine}, {"format", o.format}, {"file", model::displayPath(o.out)}, {"unmapped", unmapped}},
+        "");
 }
 
 const CliRegistrar kRegistrar{CliCommand{

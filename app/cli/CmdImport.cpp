@@ -2,8 +2,8 @@
 // axistune-cli import: reads a profile JSON or a parameter CSV written by `export --format json|csv`
 // into the store (docs/storage.md "Export and import").
 #include "app/cli/CliCommand.h"
-#include "core/model/InputLimits.h"
 #include "core/io/Profile.h"
+#include "core/model/InputLimits.h"
 #include "core/store/Database.h"
 
 #include <iostream>
@@ -53,8 +53,12 @@ int runImport(const ImportOptions& o)
     std::size_t count = 0;
     for (const auto& a : profile->axes)
         count += a.parameters.size();
-    return writeJsonResult(cmd, {{"machine", profile->name}, {"format", format}, {"parameters", count},
-                                 {"session", *sid}, {"db", model::displayPath(o.db)}},
+    return writeJsonResult(cmd,
+                           {{"machine", profile->name},
+                            {"format", format},
+                            {"parameters", count},
+                            {"session", *sid},
+                            {"db", model::displayPath(o.db)}},
                            "");
 }
 

@@ -3,17 +3,16 @@
 // execution rate's limits and the free drive slots, predicted FRF and margins (docs/notch.md).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
-#include "core/model/InputLimits.h"
 #include "core/io/FrfCsv.h"
+#include "core/model/InputLimits.h"
 #include "core/tuning/Notch.h"
 #include "core/tuning/Resonance.h"
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 

@@ -2,8 +2,8 @@
 // axistune-cli profile import|export: a machine profile between a JSON file and the store
 // (docs/storage.md, schema in docs/formats-profile.md).
 #include "app/cli/CliCommand.h"
-#include "core/model/InputLimits.h"
 #include "core/io/Profile.h"
+#include "core/model/InputLimits.h"
 #include "core/store/Database.h"
 
 #include <iostream>

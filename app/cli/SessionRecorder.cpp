@@ -3,13 +3,12 @@
 // (issue 5 item 3; docs/storage.md "Sessions from the CLI"). Digests: SHA-256, FIPS 180-4.
 #include "app/cli/SessionRecorder.h"
 
-#include "core/model/InputLimits.h"
-#include "core/store/FrfCapture.h"
-
 #include "app/cli/CliCommand.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
+#include "core/model/InputLimits.h"
 #include "core/store/Database.h"
+#include "core/store/FrfCapture.h"
 
 #include <algorithm>
 #include <array>

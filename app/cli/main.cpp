@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli: every analysis and capture without the GUI. Results as JSON on stdout (or --out),
 // errors on stderr with exit codes 2 (bad input), 3 (device error), 4 (safety stop).
-#include "core/model/InputLimits.h"
 #include "app/cli/CliCommand.h"
+#include "core/model/InputLimits.h"
 
 #include <fstream>
 #include <iostream>

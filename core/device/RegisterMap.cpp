@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Register map loader and register encodings; the format is described in docs/modbus.md.
 #include "core/device/RegisterMap.h"
-#include "core/model/InputLimits.h"
 
+#include "core/model/InputLimits.h"
 #include "core/sim/MachineDefinition.h"
 
 #include <algorithm>

@@ -181,8 +181,8 @@ void SimDriveServer::reply(const std::uint8_t* query, int length)
         // words than it carries is refused, never executed with whatever lies beyond it (issue 21).
         const int byteCount = q[fc == 0x10 ? 5 : 9];
         if (byteCount != 2 * wcount || length < hl + (fc == 0x10 ? 6 : 10) + byteCount) {
-            log("refused function " + std::to_string(fc) + ": byte count " + std::to_string(byteCount) + " for "
-                + std::to_string(wcount) + " registers");
+            log("refused function " + std::to_string(fc) + ": byte count " + std::to_string(byteCount) + " for " +
+                std::to_string(wcount) + " registers");
             modbus_reply_exception(ctx, query, MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE);
             return;
         }

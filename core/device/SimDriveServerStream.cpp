@@ -3,7 +3,6 @@
 #include "core/device/SimDriveServer.h"
 
 #include <modbus/modbus.h>
-
 #include <vector>
 
 namespace axistune::device {
@@ -23,4 +22,4 @@ void SimDriveServer::serveStream(int fd)
     modbus_set_socket(ctx, -1);
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

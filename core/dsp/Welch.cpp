@@ -147,10 +147,10 @@ Result<FrequencyResponse> welchFrf(std::span<const double> x, std::span<const do
         return s.error();
     // Samples near the double range (1e308) overflow the spectra: refused, never written as valid points.
     for (std::size_t k = 0; k < s->freqHz.size(); ++k) {
-        if (!std::isfinite(s->pxx[k]) || !std::isfinite(s->pyy[k]) || !std::isfinite(s->pxy[k].real())
-            || !std::isfinite(s->pxy[k].imag()))
-            return makeError(ErrorCode::OutOfRange, "the spectra overflow in frequency bin " + std::to_string(k)
-                                                        + ": the samples are too large (near the double range)");
+        if (!std::isfinite(s->pxx[k]) || !std::isfinite(s->pyy[k]) || !std::isfinite(s->pxy[k].real()) ||
+            !std::isfinite(s->pxy[k].imag()))
+            return makeError(ErrorCode::OutOfRange, "the spectra overflow in frequency bin " + std::to_string(k) +
+                                                        ": the samples are too large (near the double range)");
     }
     auto frf = frfFromSpectra(s.value(), estimator);
     frf.metadata["nperseg"] = std::to_string(options.nperseg);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Ball-bar CSV reader and writer (format: DESIGN.md "File formats", docs/ballbar.md).
 #include "core/io/BallBarCsv.h"
+
 #include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
 
@@ -207,7 +208,7 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
             start = comma + 1;
         }
         if (!line.empty() && line.back() == ',')
-            fields.pop_back();  // "a,b," splits like getline did: no empty last field
+            fields.pop_back(); // "a,b," splits like getline did: no empty last field
         if (!headerSeen) {
             if (fields.size() != 2 || fields[0] != "angle_deg" || fields[1] != "deviation_um")
                 return bad(where + ": expected the header 'angle_deg,deviation_um' (found '" + line + "')");

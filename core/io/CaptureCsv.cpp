@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Capture CSV reader/writer (DESIGN.md "File formats").
 #include "core/io/CaptureCsv.h"
+
 #include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
 
@@ -96,8 +97,8 @@ Result<model::Capture> readCaptureCsv(std::istream& in, const std::string& sourc
             }
             double v = 0.0;
             if (!parseDouble(cell, v)) {
-                return makeError(ErrorCode::BadInput, where(lineNo) + ", column '" + cap.channels[col].name + "': "
-                                                          + model::badNumberText(cell));
+                return makeError(ErrorCode::BadInput, where(lineNo) + ", column '" + cap.channels[col].name +
+                                                          "': " + model::badNumberText(cell));
             }
             if (!std::isfinite(v)) {
                 return makeError(ErrorCode::BadInput, where(lineNo) + ", column '" + cap.channels[col].name

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // FRF CSV reader and writer (DESIGN.md "File formats").
 #include "core/io/FrfCsv.h"
+
 #include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
 
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <numbers>
 #include <optional>
+#include <sstream>
 
 namespace axistune::io {
 
@@ -159,7 +160,8 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
         }
         auto number = [&](std::size_t idx, const char* name, double& v) -> Status {
             if (!detail::parseDouble(cells[idx], v))
-                return makeError(ErrorCode::BadInput, where(sourceName, lineNo, name) + ": " + model::badNumberText(cells[idx]));
+                return makeError(ErrorCode::BadInput,
+                                 where(sourceName, lineNo, name) + ": " + model::badNumberText(cells[idx]));
             if (!std::isfinite(v))
                 return makeError(ErrorCode::BadInput, where(sourceName, lineNo, name) + ": not finite ('" + cells[idx] + "')");
             return {};
@@ -187,8 +189,8 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
                 return s.error();
             h = std::polar(std::pow(10.0, db / 20.0), deg * std::numbers::pi / 180.0);
             if (!std::isfinite(h.real()) || !std::isfinite(h.imag()))
-                return makeError(ErrorCode::OutOfRange, where(sourceName, lineNo, "mag_dB") + ": " + cells[*cols->magDb]
-                                                            + " dB does not fit a double");
+                return makeError(ErrorCode::OutOfRange, where(sourceName, lineNo, "mag_dB") + ": " +
+                                                            cells[*cols->magDb] + " dB does not fit a double");
         }
         double coh = std::nan("");
         if (cols->coherence && !cells[*cols->coherence].empty() && cells[*cols->coherence] != "nan") {
@@ -233,7 +235,8 @@ Status writeFrfCsv(std::ostream& out, const dsp::FrequencyResponse& frf)
     // The output boundary: a point that is not finite is a bug upstream, never a row of the file.
     for (std::size_t i = 0; i < n; ++i) {
         if (!std::isfinite(frf.freqHz[i]) || !std::isfinite(frf.h[i].real()) || !std::isfinite(frf.h[i].imag()))
-            return makeError(ErrorCode::Internal, "FRF point " + std::to_string(i + 1) + " is not finite; nothing written");
+            return makeError(ErrorCode::Internal,
+                             "FRF point " + std::to_string(i + 1) + " is not finite; nothing written");
     }
     for (const auto& [k, v] : frf.metadata)
         out << "# " << k << '=' << v << '\n';

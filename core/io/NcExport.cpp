@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // NC parameter-file export from map files (docs/formats-profile.md "NC map files").
 #include "core/io/NcExport.h"
-#include "core/model/InputLimits.h"
 
+#include "core/model/InputLimits.h"
 #include "core/model/Units.h"
 
 #include <cmath>
@@ -92,8 +92,8 @@ Result<NcMapEntry> entryFromJson(const nlohmann::json& e, const std::string& whe
         out.scale = e["scale"].get<double>();
     }
     if (e.contains("decimals")) {
-        if (!e["decimals"].is_number_integer() || e["decimals"].get<std::int64_t>() < 0
-            || e["decimals"].get<std::int64_t>() > 12)
+        if (!e["decimals"].is_number_integer() || e["decimals"].get<std::int64_t>() < 0 ||
+            e["decimals"].get<std::int64_t>() > 12)
             return bad(where + " (" + out.key + ")", "field 'decimals' must be an integer 0..12");
         out.decimals = e["decimals"].get<int>();
     }
@@ -167,15 +167,16 @@ Result<NcMap> ncMapFromJson(const nlohmann::json& j, const std::string& sourceNa
             return bad(sourceName, "field 'comment_forbidden': entries must be non-empty and hold no blank");
         for (const char c : f)
             if ((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == ':')
-                return bad(sourceName, "field 'comment_forbidden': '" + f
-                                           + "' holds a letter, digit or ':' (it would garble the VERIFY notice)");
+                return bad(sourceName, "field 'comment_forbidden': '" + f +
+                                           "' holds a letter, digit or ':' (it would garble the VERIFY notice)");
     }
     for (const auto* t : {&m.comment, &m.line, &m.axisItem, &m.axisSeparator, &m.axisHeader})
         if (t->find_first_of("\r\n") != std::string::npos)
             return bad(sourceName, "templates must be single lines (no line break)");
     if (m.layout == NcLayout::ByParameter) {
         if (m.line.find("{axes}") == std::string::npos)
-            return bad(sourceName, "field 'line' must contain {axes} for layout by_parameter (else no value is written)");
+            return bad(sourceName,
+                       "field 'line' must contain {axes} for layout by_parameter (else no value is written)");
         if (m.axisItem.find("{value}") == std::string::npos)
             return bad(sourceName, "field 'axis_item' must contain {value} (else no value is written)");
     } else if (m.line.find("{value}") == std::string::npos) {
@@ -189,7 +190,8 @@ Result<NcMap> ncMapFromJson(const nlohmann::json& j, const std::string& sourceNa
             return e.error();
         const std::string& line = e->line;
         const char* needed = m.layout == NcLayout::ByParameter ? "{axes}" : "{value}";
-        if (!line.empty() && (line.find(needed) == std::string::npos || line.find_first_of("\r\n") != std::string::npos))
+        if (!line.empty() &&
+            (line.find(needed) == std::string::npos || line.find_first_of("\r\n") != std::string::npos))
             return bad(sourceName + " parameters[" + std::to_string(i) + "] (" + e->key + ")",
                        std::string("field 'line' must be one line containing ") + needed);
         m.entries.push_back(std::move(e).value());

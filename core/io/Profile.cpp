@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Machine profile JSON and the flat parameter CSV (schema: docs/formats-profile.md).
 #include "core/io/Profile.h"
+
 #include "core/model/InputLimits.h"
 
 #include <charconv>
@@ -153,8 +154,9 @@ Result<MachineProfile> profileFromJson(const nlohmann::json& j, const std::strin
             return bad(sourceName, "unknown field '" + key + "' (format, version, machine, axes)");
     }
     if (j["version"].get<std::int64_t>() > kProfileVersion || j["version"].get<std::int64_t>() < 1) {
-        return bad(sourceName, "profile version " + std::to_string(j["version"].get<std::int64_t>())
-                                   + " is not supported (this AxisTune reads version " + std::to_string(kProfileVersion) + ")");
+        return bad(sourceName, "profile version " + std::to_string(j["version"].get<std::int64_t>()) +
+                                   " is not supported (this AxisTune reads version " + std::to_string(kProfileVersion) +
+                                   ")");
     }
     MachineProfile p;
     if (!j.contains("machine") || !j["machine"].is_object())
@@ -285,7 +287,8 @@ Result<MachineProfile> parametersFromCsv(const std::string& text, const std::str
             return makeError(ErrorCode::BadInput, where + ", column 'machine': '" + cells[0] + "' differs from '" + p.name + "' (one machine per file)");
         double v = 0.0;
         if (!parseDouble(cells[3], v))
-            return makeError(ErrorCode::BadInput, where + ", column 'value': " + model::badNumberText(cells[3]) + " (a finite SI number is needed)");
+            return makeError(ErrorCode::BadInput, where + ", column 'value': " + model::badNumberText(cells[3]) +
+                                                      " (a finite SI number is needed)");
         AxisProfile* axis = nullptr;
         for (auto& a : p.axes) {
             if (a.name == cells[1])

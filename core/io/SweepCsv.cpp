@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Sine-stream CSV reader and writer (DESIGN.md "File formats").
 #include "core/io/SweepCsv.h"
-#include "core/io/TextFile.h"
-#include "core/model/InputLimits.h"
 
 #include "core/io/FrfCsv.h"
+#include "core/io/TextFile.h"
+#include "core/model/InputLimits.h"
 
 #include <charconv>
 #include <cmath>
@@ -69,7 +69,8 @@ Result<dsp::SweepRecording> readSweepCsv(std::istream& in, const std::string& sr
         for (int c = 0; c < 5; ++c) {
             const auto& cell = cells[col[c]];
             if (!detail::parseDouble(cell, v[c]))
-                return makeError(ErrorCode::BadInput, where(src, lineNo, kNames[c]) + ": " + model::badNumberText(cell));
+                return makeError(ErrorCode::BadInput,
+                                 where(src, lineNo, kNames[c]) + ": " + model::badNumberText(cell));
             if (!std::isfinite(v[c]))
                 return makeError(ErrorCode::BadInput, where(src, lineNo, kNames[c]) + ": not finite ('" + cell + "')");
         }

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Readers of the tool and cutting-condition JSON files (docs/machining.md "File formats").
 #include "core/machining/MachiningJson.h"
-#include "core/model/InputLimits.h"
 
-#include <nlohmann/json.hpp>
+#include "core/model/InputLimits.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace axistune::machining {

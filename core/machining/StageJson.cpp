@@ -2,6 +2,7 @@
 // Reader of stage.json (docs/machining.md): stage parameters and the options of the cutting force observer
 // and the chatter detection.
 #include "core/machining/StageJson.h"
+
 #include "core/model/InputLimits.h"
 
 #include <cmath>

@@ -2,19 +2,21 @@
 // Guarded input reading and JSON parsing (docs/robustness.md).
 #include "core/model/InputLimits.h"
 
-#include <sys/stat.h>
-
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <sys/stat.h>
 
 namespace axistune::model {
 namespace {
 
-Error bad(std::string detail) { return makeError(ErrorCode::BadInput, std::move(detail)); }
+Error bad(std::string detail)
+{
+    return makeError(ErrorCode::BadInput, std::move(detail));
+}
 
 /// Length of the valid UTF-8 sequence at s[i], 0 when invalid.
 std::size_t utf8Length(const std::string& s, std::size_t i)
@@ -109,7 +111,7 @@ Status prescanJson(const std::string& text, const std::string& src)
     return Status::success();
 }
 
-}  // namespace
+} // namespace
 
 std::string displayPath(const std::string& path)
 {
@@ -146,8 +148,8 @@ Result<std::string> readInputFile(const std::string& path, std::size_t maxBytes)
     if (!S_ISREG(st.st_mode))
         return bad(shown + ": is not a regular file (a pipe, socket or device); copy the data into a file");
     if (static_cast<std::uint64_t>(st.st_size) > maxBytes) {
-        return bad(shown + ": " + std::to_string(st.st_size) + " bytes, larger than the limit of " + std::to_string(maxBytes)
-                   + " bytes");
+        return bad(shown + ": " + std::to_string(st.st_size) + " bytes, larger than the limit of " +
+                   std::to_string(maxBytes) + " bytes");
     }
     std::ifstream f(path, std::ios::binary);
     if (!f)
@@ -225,12 +227,15 @@ Result<std::string> dumpResultJson(const nlohmann::json& j, int indent)
 {
     std::string pointer;
     if (findNonFinite(j, pointer))
-        return makeError(ErrorCode::Internal, "result value " + displayPath(pointer)
-                                                  + " is not a finite number; nothing written");
+        return makeError(ErrorCode::Internal,
+                         "result value " + displayPath(pointer) + " is not a finite number; nothing written");
     return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-bool isDenormal(double v) { return std::fpclassify(v) == FP_SUBNORMAL; }
+bool isDenormal(double v)
+{
+    return std::fpclassify(v) == FP_SUBNORMAL;
+}
 
 std::string badNumberText(std::string_view cell)
 {
@@ -256,13 +261,13 @@ std::string badNumberText(std::string_view cell)
 Status checkCsvLine(const std::string& source, std::size_t lineNo, std::size_t lineBytes)
 {
     if (lineBytes > kMaxLineBytes) {
-        return bad(displayPath(source) + " line " + std::to_string(lineNo) + ": longer than "
-                   + std::to_string(kMaxLineBytes) + " bytes");
+        return bad(displayPath(source) + " line " + std::to_string(lineNo) + ": longer than " +
+                   std::to_string(kMaxLineBytes) + " bytes");
     }
     if (lineNo > kMaxCsvLines)
-        return bad(displayPath(source) + " line " + std::to_string(lineNo) + ": more than "
-                   + std::to_string(kMaxCsvLines) + " lines");
+        return bad(displayPath(source) + " line " + std::to_string(lineNo) + ": more than " +
+                   std::to_string(kMaxCsvLines) + " lines");
     return Status::success();
 }
 
-}  // namespace axistune::model
+} // namespace axistune::model

@@ -9,9 +9,8 @@
 
 #include "core/model/Result.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 
@@ -58,4 +57,4 @@ std::string badNumberText(std::string_view cell);
 /// `lineNo` exceeds kMaxCsvLines.
 Status checkCsvLine(const std::string& source, std::size_t lineNo, std::size_t lineBytes);
 
-}  // namespace axistune::model
+} // namespace axistune::model

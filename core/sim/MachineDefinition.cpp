@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim/MachineDefinition.h"
+
 #include "core/model/InputLimits.h"
-
 #include "core/model/Units.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 namespace axistune::sim {
 
@@ -134,7 +133,7 @@ Result<MachineDefinition> machineFromObject(const json& j, const std::string& pa
     return def;
 }
 
-}  // namespace
+} // namespace
 
 Result<MachineDefinition> loadMachineDefinitionFile(const std::string& path)
 {

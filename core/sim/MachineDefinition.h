@@ -8,9 +8,8 @@
 #include "core/sim/AxisParameters.h"
 #include "core/sim/PlantModel.h"
 
-#include <nlohmann/json.hpp>
-
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 

@@ -481,7 +481,9 @@ Result<std::int64_t> Database::saveModel(const std::string& machine, const Model
         SQLite::Transaction tx(*m_db, SQLite::TransactionBehavior::IMMEDIATE);
         const auto mid = detail::ensureMachineId(*m_db, machine, {});
         const auto aid = detail::ensureAxisId(*m_db, mid, model.axis);
-        const auto id = detail::insertModel(*m_db, aid, model.kind, model.time, model.data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), sessionId);
+        const auto id =
+            detail::insertModel(*m_db, aid, model.kind, model.time,
+                                model.data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), sessionId);
         tx.commit();
         return id;
     } catch (const std::exception& e) {

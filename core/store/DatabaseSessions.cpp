@@ -176,7 +176,8 @@ Result<std::int64_t> Database::recordSession(const SessionRecord& r)
                                        s.note, {s.values.begin(), s.values.end()}, sid);
         }
         for (const auto& m : r.models)
-            detail::insertModel(*m_db, detail::ensureAxisId(*m_db, *mid, m.axis), m.kind, m.time, m.data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), sid);
+            detail::insertModel(*m_db, detail::ensureAxisId(*m_db, *mid, m.axis), m.kind, m.time,
+                                m.data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), sid);
         if (mid)
             insertJournal(*m_db, *mid, sid, r.journal);
         tx.commit();

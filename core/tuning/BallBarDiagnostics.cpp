@@ -455,7 +455,8 @@ std::array<CyclicScan, 2> scanCyclicDecimated(const std::array<CyclicScanner, 2>
         residR(static_cast<Eigen::Index>(g)) = sr / static_cast<double>(e - b);
     }
     const double stepR = stepRad * static_cast<double>(group);
-    const std::array<CyclicScanner, 2> scR{CyclicScanner(0, thetaR, radius, stepR), CyclicScanner(1, thetaR, radius, stepR)};
+    const std::array<CyclicScanner, 2> scR{CyclicScanner(0, thetaR, radius, stepR),
+                                           CyclicScanner(1, thetaR, radius, stepR)};
     return scanCyclic(scR, residR);
 }
 
@@ -491,8 +492,8 @@ Status jointFit(const io::BallBarTrace& t, const BallBarOptions& opt, RunDiagnos
                          t.source + ": too few samples outside the reversal zones for the diagnostics");
     const std::array<CyclicScanner, 2> sc{CyclicScanner(0, theta, t.radiusM, meanStepRad(t)),
                                           CyclicScanner(1, theta, t.radiusM, meanStepRad(t))};
-    const auto scans = scanCyclicDecimated(sc, theta, leastSquares(a.leftCols(kSmooth), y).resid, t.radiusM,
-                                           meanStepRad(t));
+    const auto scans =
+        scanCyclicDecimated(sc, theta, leastSquares(a.leftCols(kSmooth), y).resid, t.radiusM, meanStepRad(t));
     for (Eigen::Index k = 0; k < a.rows(); ++k) {
         for (int axis = 0; axis < 2; ++axis) {
             const auto [c, s] = sc[axis].columns(scans[axis].k, static_cast<std::size_t>(k));

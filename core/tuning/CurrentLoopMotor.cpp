@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Motor data for the current-loop design (motor JSON, docs/tuning.md) and its checks, including the
 // back-EMF check of spec/current-loop-and-multisweep-frf.md §2.1 / §4.1 step 2 (C-A1).
-#include "core/tuning/CurrentLoop.h"
 #include "core/model/InputLimits.h"
-
-#include <nlohmann/json.hpp>
+#include "core/tuning/CurrentLoop.h"
 
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace axistune::tuning {

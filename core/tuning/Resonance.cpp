@@ -233,7 +233,7 @@ Result<std::vector<Resonance>> findResonances(const dsp::FrequencyResponse& frf,
             base[k] = sampledRobustLine(pts, lo, hi, pts[k].x, stride);
             lastFit = k;
         } else {
-            base[k] = base[lastFit];  // a line: evaluated at pts[k].x through its own x0
+            base[k] = base[lastFit]; // a line: evaluated at pts[k].x through its own x0
         }
     }
     auto excess = [&](std::size_t k, const Line& l) { return pts[k].y - l.at(pts[k].x); };

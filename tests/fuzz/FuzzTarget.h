@@ -64,8 +64,7 @@ inline void requireRefusal(const Error& e)
 }
 
 /// A Result is a refusal (checked above) or a value given to `check`. Returns true for a value.
-template <typename R, typename Check>
-bool expect(const R& r, Check&& check)
+template <typename R, typename Check> bool expect(const R& r, Check&& check)
 {
     if (!r) {
         requireRefusal(r.error());
@@ -75,7 +74,7 @@ bool expect(const R& r, Check&& check)
     return true;
 }
 
-}  // namespace axistune::fuzz
+} // namespace axistune::fuzz
 
 #ifdef AXISTUNE_FUZZ_MAIN
 #define AXISTUNE_FUZZ_REGISTER(name)                                                                                   \
@@ -90,6 +89,6 @@ bool expect(const R& r, Check&& check)
 #endif
 
 #define AXISTUNE_FUZZ_TARGET(name)                                                                                     \
-    static void axistuneFuzz_##name(const std::string& input);                                                        \
+    static void axistuneFuzz_##name(const std::string& input);                                                         \
     AXISTUNE_FUZZ_REGISTER(name)                                                                                       \
     static void axistuneFuzz_##name([[maybe_unused]] const std::string& input)

@@ -2,8 +2,6 @@
 // axistune-fuzz-replay TARGET PATH...: feeds every regular file under each PATH (files or folders,
 // recursively) to the fuzz target TARGET, as libFuzzer would. A crash, a sanitizer report or a contract
 // violation (tests/fuzz/FuzzTarget.h) aborts; otherwise it prints how many inputs it replayed.
-#include "tests/fuzz/FuzzTarget.h"
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -11,13 +9,15 @@
 #include <sstream>
 #include <vector>
 
+#include "tests/fuzz/FuzzTarget.h"
+
 namespace axistune::fuzz {
 std::map<std::string, TargetFn>& registry()
 {
     static std::map<std::string, TargetFn> r;
     return r;
 }
-}  // namespace axistune::fuzz
+} // namespace axistune::fuzz
 
 int main(int argc, char** argv)
 {

@@ -3,15 +3,13 @@
 // exit 2 with the file (and line and field where there is one) named, or in a correct result; never a
 // crash, a hang, or NaN/Inf/null in a result. A hang fails the
 // test by its ctest timeout instead of blocking for ever.
-#include "tests/app/cli/CliRunner.h"
-
-#include <gtest/gtest.h>
-
-#include <sys/stat.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <regex>
+#include <sys/stat.h>
+
+#include "tests/app/cli/CliRunner.h"
 
 using namespace axistune::testing;
 namespace fs = std::filesystem;
@@ -45,9 +43,12 @@ void expectRefused(const CliResult& r, std::initializer_list<std::string> fragme
         EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in: " << r.err;
 }
 
-std::string readSample(const std::string& name) { return readFileText(kSamples + "/" + name); }
+std::string readSample(const std::string& name)
+{
+    return readFileText(kSamples + "/" + name);
+}
 
-}  // namespace
+} // namespace
 
 TEST_F(Robustness, FifoWithoutWriterIsRefusedNotWaitedOn)
 {
@@ -68,7 +69,8 @@ TEST_F(Robustness, MotorNumbersOutsideTheDoubleRangeNameFileLineAndKey)
     const std::string m = readSample("motor-rotary.json");
     const std::regex r("(\"resistance_ohm\"\\s*:\\s*)[-0-9.eE+]+");
     const auto big = write("big.json", std::regex_replace(m, r, "$011e309"));
-    expectRefused(runCli("current-loop --motor " + big), {big + " line ", "key 'resistance_ohm'", "does not fit a double"});
+    expectRefused(runCli("current-loop --motor " + big),
+                  {big + " line ", "key 'resistance_ohm'", "does not fit a double"});
     const auto neg = write("neg.json", std::regex_replace(m, r, "$01-1e309"));
     expectRefused(runCli("current-loop --motor " + neg), {"key 'resistance_ohm'", "-1e309 does not fit a double"});
     // Used to loop for ever in the phase-crossover search.
@@ -112,7 +114,8 @@ TEST_F(Robustness, NcMapThatWouldLoopOrDropTheNoticeOrTheValuesIsRefused)
     expectRefused(runCli(base + space), {space + ": field 'comment_forbidden'"});
     auto noText = edited("notext.json", "\"comment\": \"({text})\"", "\"comment\": \"(see manual)\"");
     expectRefused(runCli(base + noText), {noText + ": field 'comment' must contain {text}"});
-    auto noValue = edited("novalue.json", "\"axis_item\": \"A{axis_index}P{value}\"", "\"axis_item\": \"A{axis_index}\"");
+    auto noValue =
+        edited("novalue.json", "\"axis_item\": \"A{axis_index}P{value}\"", "\"axis_item\": \"A{axis_index}\"");
     expectRefused(runCli(base + noValue), {noValue + ": field 'axis_item' must contain {value}"});
 }
 
@@ -123,7 +126,7 @@ TEST_F(Robustness, NonUtf8FileNamesDoNotAbort)
     const auto bb2 = write(bad + "-cw.csv", readSample("ballbar-cw.csv"));
     auto r = runCli("ballbar --in " + quoted(bb) + " --in " + quoted(bb2));
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find("run-\xEF\xBF\xBD\xEF\xBF\xBD-ccw.csv"), std::string::npos);  // U+FFFD for each bad byte
+    EXPECT_NE(r.out.find("run-\xEF\xBF\xBD\xEF\xBF\xBD-ccw.csv"), std::string::npos); // U+FFFD for each bad byte
     const auto frf = write(bad + ".csv", readSample("frf-two-inertia.csv"));
     r = runCli("notch --frf " + quoted(frf) + " --out-frf " + quoted((m_dir / (bad + "-out.csv")).string()));
     EXPECT_EQ(r.exitCode, 0) << r.err;
@@ -135,12 +138,13 @@ TEST_F(Robustness, HugeFiniteSampleIsRefusedNotWrittenAsValidNanRows)
     // Issue 21: one 1.79e308 sample made `frf --in` write NaN/Inf rows marked valid=1.
     std::string cap = readSample("capture-step-vmc-x.csv");
     const auto hdr = cap.find("t_s,");
-    const auto row = cap.find('\n', cap.find('\n', cap.find('\n', hdr) + 1) + 1) + 1;  // the third data row
+    const auto row = cap.find('\n', cap.find('\n', cap.find('\n', hdr) + 1) + 1) + 1; // the third data row
     const auto comma = cap.find(',', row);
     cap.replace(comma + 1, cap.find(',', comma + 1) - comma - 1, "1.79e308");
     const auto in = write("huge.csv", cap);
     const auto out = (m_dir / "frf.csv").string();
-    auto r = runCli("frf --in " + in + " --input velocity_cmd_rad_s --output motor_vel_rad_s --nperseg 64 --out " + out);
+    auto r =
+        runCli("frf --in " + in + " --input velocity_cmd_rad_s --output motor_vel_rad_s --nperseg 64 --out " + out);
     expectRefused(r, {in, "too large"});
     EXPECT_FALSE(fs::exists(out) && readFileText(out).find("nan") != std::string::npos);
 }

@@ -92,7 +92,9 @@ TEST(Profile, CsvErrorsNameLineAndColumn)
     const std::string head = "# format=axistune-parameters\nmachine,axis,key,value\n";
     auto e1 = parametersFromCsv(head + "m,X,a,1\nm,X,b,NaN\n", "p.csv");
     ASSERT_FALSE(e1.ok());
-    EXPECT_NE(e1.error().detail.find("p.csv line 4, column 'value': not a number ('NaN') (a finite SI number is needed)"), std::string::npos)
+    EXPECT_NE(
+        e1.error().detail.find("p.csv line 4, column 'value': not a number ('NaN') (a finite SI number is needed)"),
+        std::string::npos)
         << e1.error().detail;
     auto e2 = parametersFromCsv(head + "m,X,a,1\nn,X,b,2\n", "p.csv");
     ASSERT_FALSE(e2.ok());

@@ -4,14 +4,12 @@
 // UTF-8 in paths, and the NaN check at the JSON output boundary.
 #include "core/model/InputLimits.h"
 
-#include <gtest/gtest.h>
-
-#include <sys/stat.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <limits>
+#include <sys/stat.h>
 
 using namespace axistune;
 using namespace axistune::model;
@@ -26,17 +24,22 @@ fs::path tempDir()
     return d;
 }
 
-std::string errorOf(const Result<nlohmann::json>& r) { return r ? std::string() : r.error().detail; }
+std::string errorOf(const Result<nlohmann::json>& r)
+{
+    return r ? std::string() : r.error().detail;
+}
 
-}  // namespace
+} // namespace
 
 TEST(InputLimits, DisplayPathEscapesInvalidUtf8Only)
 {
     EXPECT_EQ(displayPath("run/µm-ステージ.csv"), "run/µm-ステージ.csv");
-    EXPECT_EQ(displayPath(std::string("a\xff" "b.csv")), "a\\xFFb.csv");
-    EXPECT_EQ(displayPath(std::string("\xc3")), "\\xC3");                  // truncated sequence
-    EXPECT_EQ(displayPath(std::string("\xc0\xaf")), "\\xC0\\xAF");         // overlong '/'
-    EXPECT_EQ(displayPath(std::string("\xed\xa0\x80")), "\\xED\\xA0\\x80");  // surrogate
+    EXPECT_EQ(displayPath(std::string("a\xff"
+                                      "b.csv")),
+              "a\\xFFb.csv");
+    EXPECT_EQ(displayPath(std::string("\xc3")), "\\xC3");                   // truncated sequence
+    EXPECT_EQ(displayPath(std::string("\xc0\xaf")), "\\xC0\\xAF");          // overlong '/'
+    EXPECT_EQ(displayPath(std::string("\xed\xa0\x80")), "\\xED\\xA0\\x80"); // surrogate
 }
 
 TEST(InputLimits, RefusesFifoDeviceDirectoryAndOversizedFiles)
@@ -45,7 +48,7 @@ TEST(InputLimits, RefusesFifoDeviceDirectoryAndOversizedFiles)
     const auto fifo = dir / "pipe.json";
     fs::remove(fifo);
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-    auto r = readInputFile(fifo.string());  // no writer: opening it would block for ever
+    auto r = readInputFile(fifo.string()); // no writer: opening it would block for ever
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().code, ErrorCode::BadInput);
     EXPECT_NE(r.error().detail.find(fifo.string() + ": is not a regular file"), std::string::npos) << r.error().detail;
@@ -63,10 +66,11 @@ TEST(InputLimits, RefusesFifoDeviceDirectoryAndOversizedFiles)
     EXPECT_EQ(missing.error().code, ErrorCode::NotFound);
 
     const auto big = dir / "big.csv";
-    std::ofstream(big) << "0123456789A";  // 11 bytes
+    std::ofstream(big) << "0123456789A"; // 11 bytes
     auto b = readInputFile(big.string(), 10);
     ASSERT_FALSE(b);
-    EXPECT_NE(b.error().detail.find("11 bytes, larger than the limit of 10 bytes"), std::string::npos) << b.error().detail;
+    EXPECT_NE(b.error().detail.find("11 bytes, larger than the limit of 10 bytes"), std::string::npos)
+        << b.error().detail;
     auto ok = readInputFile(big.string(), 11);
     ASSERT_TRUE(ok);
     EXPECT_EQ(*ok, "0123456789A");
@@ -76,7 +80,8 @@ TEST(InputLimits, RefusesFifoDeviceDirectoryAndOversizedFiles)
 TEST(InputLimits, JsonNumbersOutsideTheDoubleRangeNameLineAndKey)
 {
     const std::string e1 = errorOf(parseJsonText("{\n  \"a\": 1,\n  \"resistance_ohm\": 1e309\n}", "m.json"));
-    EXPECT_NE(e1.find("m.json line 3, key 'resistance_ohm': number 1e309 does not fit a double"), std::string::npos) << e1;
+    EXPECT_NE(e1.find("m.json line 3, key 'resistance_ohm': number 1e309 does not fit a double"), std::string::npos)
+        << e1;
     const std::string e2 = errorOf(parseJsonText("{\"x\": [1, -1e309]}", "m.json"));
     EXPECT_NE(e2.find("key 'x': number -1e309 does not fit a double"), std::string::npos) << e2;
     const std::string e3 = errorOf(parseJsonText("{\"r\": 5e-324}", "m.json"));

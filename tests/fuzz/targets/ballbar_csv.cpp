@@ -4,9 +4,10 @@
 // or give finite numbers.
 #include "core/io/BallBarCsv.h"
 #include "core/tuning/BallBarDiagnostics.h"
-#include "tests/fuzz/FuzzTarget.h"
 
 #include <sstream>
+
+#include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;
 
@@ -21,8 +22,7 @@ AXISTUNE_FUZZ_TARGET(ballbar_csv)
             fuzz::requireFinite(t.deviationM[i], "deviation");
         }
         auto run = tuning::analyzeRun(t);
-        if (run)
-        {
+        if (run) {
             fuzz::requireFinite(run->circularityM, "circularity");
             fuzz::requireFinite(run->residualRmsM, "residual");
             fuzz::requireFinite(run->radiusDeviationM, "radius deviation");

@@ -5,9 +5,10 @@
 // refused or holds only finite values.
 #include "core/dsp/Welch.h"
 #include "core/io/CaptureCsv.h"
-#include "tests/fuzz/FuzzTarget.h"
 
 #include <sstream>
+
+#include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;
 

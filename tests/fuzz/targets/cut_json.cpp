@@ -2,6 +2,7 @@
 // seeds: resources/samples/cut-*.json
 // Cutting-condition JSON: refused, or conditions that pass validateCut.
 #include "core/machining/MachiningJson.h"
+
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;

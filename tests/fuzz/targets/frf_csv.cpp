@@ -3,9 +3,10 @@
 // FRF CSV: refused, or increasing finite frequencies, finite values, and a file the writer writes and
 // the reader reads back to the same points.
 #include "core/io/FrfCsv.h"
-#include "tests/fuzz/FuzzTarget.h"
 
 #include <sstream>
+
+#include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;
 

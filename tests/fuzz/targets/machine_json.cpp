@@ -3,6 +3,7 @@
 // Machine preset JSON: refused, or axes with finite parameters and positive modal data.
 #include "core/model/InputLimits.h"
 #include "core/sim/MachineDefinition.h"
+
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;

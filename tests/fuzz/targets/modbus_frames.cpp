@@ -4,13 +4,13 @@
 // stream (framing by libmodbus, then the server's decoding and register engine), in-process through a
 // socketpair. No crash, no sanitizer report, and the stream ends (no hang) whatever the bytes.
 #include "core/device/SimDriveServer.h"
-#include "tests/fuzz/FuzzTarget.h"
 
 #include <fcntl.h>
+#include <memory>
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include <memory>
+#include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;
 

@@ -2,6 +2,7 @@
 // seeds: resources/samples/motor-*.json
 // Motor JSON and the current-loop design on it: refused, or finite gains (the design terminates).
 #include "core/tuning/CurrentLoop.h"
+
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;

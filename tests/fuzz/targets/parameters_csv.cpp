@@ -2,6 +2,7 @@
 // seeds: tests/data/nc/vmc.csv.expected
 // Flat parameter CSV (import --format csv): refused, or finite parameters that write and read back.
 #include "core/io/Profile.h"
+
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;

@@ -4,6 +4,7 @@
 // back to the same profile.
 #include "core/io/Profile.h"
 #include "core/model/InputLimits.h"
+
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;

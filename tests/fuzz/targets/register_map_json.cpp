@@ -2,6 +2,7 @@
 // seeds: resources/drives/*.json
 // Drive register map JSON: refused, or a map whose fields lie inside the register space.
 #include "core/device/RegisterMap.h"
+
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;

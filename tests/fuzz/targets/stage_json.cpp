@@ -3,6 +3,7 @@
 // Stage JSON: refused, or a stage whose two-mass model is finite and positive.
 #include "core/machining/StageJson.h"
 #include "core/machining/VibrationModeChatter.h"
+
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;

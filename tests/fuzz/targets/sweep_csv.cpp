@@ -3,9 +3,10 @@
 // Sine-stream CSV and its demodulation to an FRF: refused, or finite samples and a finite FRF.
 #include "core/dsp/SineDemodulation.h"
 #include "core/io/SweepCsv.h"
-#include "tests/fuzz/FuzzTarget.h"
 
 #include <sstream>
+
+#include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;
 
@@ -18,7 +19,7 @@ AXISTUNE_FUZZ_TARGET(sweep_csv)
         fuzz::require(r.fsHz > 0.0, "fs_Hz not positive");
         auto frf = dsp::sineStreamFrf(r);
         if (!frf)
-            return;  // refusals of the demodulation name the frequency, not the file
+            return; // refusals of the demodulation name the frequency, not the file
         for (std::size_t i = 0; i < frf->size(); ++i) {
             fuzz::requireFinite(frf->freqHz[i], "FRF frequency");
             if (frf->valid[i]) {

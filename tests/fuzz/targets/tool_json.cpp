@@ -2,6 +2,7 @@
 // seeds: resources/samples/tool-*.json
 // Tool modes JSON: refused, or positive finite modal masses, stiffnesses and non-negative damping.
 #include "core/machining/MachiningJson.h"
+
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;
