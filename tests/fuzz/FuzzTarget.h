@@ -12,6 +12,7 @@
 // bad-input error (exit 2), a success holds only finite numbers (and whatever else the target
 // asserts); a violation aborts, so libFuzzer and the replay report it like a crash.
 
+#include "core/model/InputLimits.h"
 #include "core/model/Result.h"
 
 #include <cmath>
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace axistune::fuzz {
