@@ -64,12 +64,7 @@ Result<std::vector<ModalParameters>> modes(const json& j, const std::string& key
 
 Result<std::string> slurp(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open file");
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
+    return model::readInputFile(path);
 }
 
 }  // namespace

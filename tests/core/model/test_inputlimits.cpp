@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <limits>
 #include <sys/stat.h>
+#include <unistd.h>
 
 using namespace axistune;
 using namespace axistune::model;
