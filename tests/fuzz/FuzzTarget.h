@@ -76,6 +76,17 @@ template <typename R, typename Check> bool expect(const R& r, Check&& check)
     return true;
 }
 
+/// The input parsed as JSON with the project's limits, or nullopt after checking the refusal.
+inline std::optional<nlohmann::json> parsedJson(const std::string& input)
+{
+    auto j = model::parseJsonText(input, kSource);
+    if (!j) {
+        requireRefusal(j.error());
+        return std::nullopt;
+    }
+    return std::move(j).value();
+}
+
 } // namespace axistune::fuzz
 
 #ifdef AXISTUNE_FUZZ_MAIN
