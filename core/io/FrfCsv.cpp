@@ -2,6 +2,7 @@
 // FRF CSV reader and writer (DESIGN.md "File formats").
 #include "core/io/FrfCsv.h"
 #include "core/io/TextFile.h"
+#include "core/model/Units.h"
 
 #include <charconv>
 #include <cmath>
@@ -206,7 +207,28 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
         return makeError(ErrorCode::BadInput, sourceName + ": no header line (expected " + kFrfCsvHeader + ")");
     if (frf.empty())
         return makeError(ErrorCode::BadInput, sourceName + ": no data rows");
+    if (auto it = frf.metadata.find("units"); it != frf.metadata.end()) {
+        const std::string unit = it->second;
+        if (auto st = convertFrfUnits(frf, unit, sourceName); !st)
+            return st.error();
+    }
     return frf;
+}
+
+Status convertFrfUnits(dsp::FrequencyResponse& frf, const std::string& unit, const std::string& sourceName)
+{
+    auto u = model::findUnit(unit);
+    if (!u) {
+        return makeError(ErrorCode::BadInput, sourceName + ": units '" + unit
+                                                  + "' is not a known unit (m/N, mm/N, um/N, nm/N, m/s/N, mm/s/N, m/s2/N, "
+                                                    "mm/s2/N, g/N, ...: docs/formats.md)");
+    }
+    for (auto& h : frf.h)
+        h *= u->toSi;
+    frf.metadata["units"] = std::string(u->si);
+    if (u->si != unit)
+        frf.metadata["units_in_file"] = unit;
+    return {};
 }
 
 Result<dsp::FrequencyResponse> readFrfCsvFile(const std::string& path)

@@ -59,6 +59,23 @@ constexpr std::array kUnits{
     UnitInfo{"1/Nm", "1/(N·m)", "1/Nm", 1.0},
     UnitInfo{"um/(Nm*m)", "µm/(N·m·m)", "1/Nm", 1e-6},
     UnitInfo{"counts/rev", "counts/rev", "counts/rev", 1.0},
+    // Measurement channels of imported records (impact tests, foreign loggers) and FRF units (docs/formats.md).
+    UnitInfo{"mm/s", "mm/s", "m/s", 1e-3},
+    UnitInfo{"m/s2", "m/s²", "m/s2", 1.0},
+    UnitInfo{"mm/s2", "mm/s²", "m/s2", 1e-3},
+    UnitInfo{"g", "g", "m/s2", 9.80665},
+    UnitInfo{"kN", "kN", "N", 1e3},
+    UnitInfo{"mN", "mN", "N", 1e-3},
+    UnitInfo{"mV", "mV", "V", 1e-3},
+    UnitInfo{"m/N", "m/N", "m/N", 1.0},
+    UnitInfo{"mm/N", "mm/N", "m/N", 1e-3},
+    UnitInfo{"um/N", "µm/N", "m/N", 1e-6},
+    UnitInfo{"nm/N", "nm/N", "m/N", 1e-9},
+    UnitInfo{"m/s/N", "m/(s·N)", "m/s/N", 1.0},
+    UnitInfo{"mm/s/N", "mm/(s·N)", "m/s/N", 1e-3},
+    UnitInfo{"m/s2/N", "m/(s²·N)", "m/s2/N", 1.0},
+    UnitInfo{"mm/s2/N", "mm/(s²·N)", "m/s2/N", 1e-3},
+    UnitInfo{"g/N", "g/N", "m/s2/N", 9.80665},
 };
 
 }  // namespace
