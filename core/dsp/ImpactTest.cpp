@@ -211,6 +211,7 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
     for (std::size_t k = 1; k <= lowBins; ++k)
         ref += sxx[k] / static_cast<double>(lowBins);
     const double floor = ref * std::pow(10.0, -o.forceRangeDb / 10.0);
+    const double fmin = o.minFrequencyHz >= 0.0 ? o.minFrequencyHz : order <= -2 ? 50.0 : order == -1 ? 20.0 : 0.0;
     res.forceBandHz = static_cast<double>(bins - 1) * df;
     bool bandSet = false;
     for (std::size_t k = 1; k < bins; ++k) {
@@ -224,7 +225,7 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
         const std::complex<double> jw(0.0, 2.0 * std::numbers::pi * f);
         h *= std::pow(jw, order);
         const double coh = res.used >= 2 && sxx[k] > 0.0 && syy[k] > 0.0 ? std::norm(sxy[k]) / (sxx[k] * syy[k]) : std::nan("");
-        res.frf.push(f, h, coh, ok);
+        res.frf.push(f, h, coh, ok && f >= fmin);
     }
     res.blockS = static_cast<double>(block) * dt;
     res.preTriggerS = static_cast<double>(pre) * dt;
@@ -247,6 +248,7 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
     md["exp_window_decay_1_s"] = num(sigma, 17);
     md["force_band_Hz"] = num(res.forceBandHz, 6);
     md["force_range_dB"] = num(o.forceRangeDb, 6);
+    md["fmin_Hz"] = num(fmin, 6);
     return res;
 }
 

@@ -49,6 +49,9 @@ struct ImpactOptions {
     double doubleHitWindowS = 0.05; ///< a second crossing closer than this after a hit is a double hit
     DoubleHitPolicy doubleHit = DoubleHitPolicy::Refuse;
     double forceRangeDb = 40.0;     ///< valid where the force spectrum is within this of its low-frequency level
+    /// Points below are invalid. < 0: automatic, 50 Hz when acceleration becomes receptance, 20 Hz for one
+    /// integration (a piezo accelerometer does not measure near DC and 1/ω² magnifies its noise), else 0.
+    double minFrequencyHz = -1.0;
 };
 
 struct ImpactHit {

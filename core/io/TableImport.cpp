@@ -175,7 +175,8 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
             continue;
         if (line[line.find_first_not_of(" \t")] == '#') {
             std::string k, v;
-            if (detail::parseMetadataLine(line.substr(line.find('#')), k, v))
+            // "# key=value" with a one-word key is metadata; other comment lines are prose
+            if (detail::parseMetadataLine(line.substr(line.find('#')), k, v) && k.find_first_of(" \t") == std::string::npos)
                 cap.metadata[k] = v;
             continue;
         }
