@@ -49,7 +49,7 @@ for i in range(n):
     h = 1.0 / complex(2.0e7 - 0.3 * (2 * math.pi * f) ** 2, 60.0 * 2 * math.pi * f) * -(2 * math.pi * f) ** 2 * 1000.0
     re, im = e20(h.real), e20(h.imag)
     vals += [re, im]
-    exp.append((1, repr(xmin + i * dx), re.strip(), im.strip()))
+    exp.append((1, repr(float(e13(xmin)) + i * float(e13(dx))), re.strip(), im.strip()))
 lines += header(["accelerance tip", "run 1", "25-Nov-26 18:00:00", "", ""], 4, 1, 1, 1, 1, 6, n, True, xmin, dx,
                 [(18, 0, 0, "Frequency", "Hz"), (12, 1, 0, "Acceleration", "mm/s^2"), (13, 0, 1, "Force", "N"), (0, 0, 0, "NONE", "NONE")])
 lines += rows(vals, 4)
@@ -74,7 +74,8 @@ vals = []
 for i in range(n):
     v = e20(math.sin(0.7 * i) * 3.25 - 0.5)
     vals.append(v)
-    exp.append((3, repr(i / 2048.0), v.strip(), "0"))
+    # the abscissa is what the file states: minimum + i * increment, both as written with E13.5
+    exp.append((3, repr(float(e13(0.0)) + i * float(e13(1.0 / 2048.0))), v.strip(), "0"))
 lines += header(["accel", "", "", "", ""], 1, 5, 3, 0, 0, 4, n, True, 0.0, 1.0 / 2048.0,
                 [(17, 0, 0, "Time", "s"), (12, 1, 0, "Acceleration", "m/s^2"), (0, 0, 0, "NONE", "NONE"), (0, 0, 0, "NONE", "NONE")])
 lines += rows(vals, 4)
