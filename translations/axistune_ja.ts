@@ -3374,6 +3374,157 @@
     </message>
 </context>
 <context>
+    <name>axistune::gui::MachiningTapPage</name>
+    <message>
+        <source>Tap test</source>
+        <translation>打撃試験</translation>
+    </message>
+    <message>
+        <source>Impact-hammer records at the tool tip: the receptance (m/N) from hammer force and response, averaged over the hits, used as the tool&apos;s FRF.</source>
+        <translation>工具先端のインパクトハンマー記録: ハンマーの力と応答からレセプタンス (m/N) を求め、打撃ごとに平均して工具の周波数応答として使います。</translation>
+    </message>
+    <message>
+        <source>Add record…</source>
+        <translation>記録を追加…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>削除</translation>
+    </message>
+    <message>
+        <source>acceleration [m/s²]</source>
+        <translation>加速度 [m/s²]</translation>
+    </message>
+    <message>
+        <source>velocity [m/s]</source>
+        <translation>速度 [m/s]</translation>
+    </message>
+    <message>
+        <source>displacement [m]</source>
+        <translation>変位 [m]</translation>
+    </message>
+    <message>
+        <source>10 % of the largest force</source>
+        <translation>最大力の 10 %</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <source>refuse the records</source>
+        <translation>記録を受け付けない</translation>
+    </message>
+    <message>
+        <source>drop that hit</source>
+        <translation>その打撃を除く</translation>
+    </message>
+    <message>
+        <source>Force column [N]</source>
+        <translation>力の列 [N]</translation>
+    </message>
+    <message>
+        <source>Response column</source>
+        <translation>応答の列</translation>
+    </message>
+    <message>
+        <source>Response measures</source>
+        <translation>応答の種類</translation>
+    </message>
+    <message>
+        <source>Trigger level [N]</source>
+        <translation>トリガレベル [N]</translation>
+    </message>
+    <message>
+        <source>Exponential window τ [ms]</source>
+        <translation>指数窓 τ [ms]</translation>
+    </message>
+    <message>
+        <source>Double hit</source>
+        <translation>二度打ち</translation>
+    </message>
+    <message>
+        <source>Modes to fit per direction</source>
+        <translation>方向ごとに同定するモード数</translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation>計算</translation>
+    </message>
+    <message>
+        <source>Save FRF…</source>
+        <translation>周波数応答を保存…</translation>
+    </message>
+    <message>
+        <source>Use as x FRF</source>
+        <translation>x の周波数応答に使う</translation>
+    </message>
+    <message>
+        <source>Use as y FRF</source>
+        <translation>y の周波数応答に使う</translation>
+    </message>
+    <message>
+        <source>Use for x and y</source>
+        <translation>x と y に使う</translation>
+    </message>
+    <message>
+        <source>Impact records</source>
+        <translation>打撃記録</translation>
+    </message>
+    <message>
+        <source>Records (*.csv *.txt *.log *.unv *.uff);;All files (*)</source>
+        <translation>記録 (*.csv *.txt *.log *.unv *.uff);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <source>Save receptance</source>
+        <translation>レセプタンスを保存</translation>
+    </message>
+    <message>
+        <source>FRF CSV (*.csv)</source>
+        <translation>周波数応答 CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Add at least one impact record.</source>
+        <translation>打撃記録を一つ以上追加してください。</translation>
+    </message>
+    <message>
+        <source>%1: no column &apos;%2&apos;</source>
+        <translation>%1: 列 &apos;%2&apos; がありません</translation>
+    </message>
+    <message>
+        <source>%1: sampled at %2 Hz, the first record at %3 Hz</source>
+        <translation>%1: サンプリング %2 Hz、最初の記録は %3 Hz です</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a positive number</source>
+        <translation>&apos;%1&apos; は正の数ではありません</translation>
+    </message>
+    <message>
+        <source>receptance</source>
+        <translation>レセプタンス</translation>
+    </message>
+    <message>
+        <source>%1 hit(s) averaged, %2 dropped; block %3 s; valid to %4 Hz (force spectrum within 40 dB).</source>
+        <translation>%1 回の打撃を平均、%2 回を除外; ブロック長 %3 s; %4 Hz まで有効 (力のスペクトルが 40 dB 以内)。</translation>
+    </message>
+    <message>
+        <source>Largest receptance %1 µm/N at %2 Hz.</source>
+        <translation>最大レセプタンス %1 µm/N (%2 Hz)。</translation>
+    </message>
+    <message>
+        <source>One hit: no coherence. Average several hits to see how repeatable the measurement is.</source>
+        <translation>打撃 1 回: コヒーレンスはありません。測定の再現性を見るには複数回打撃して平均してください。</translation>
+    </message>
+    <message>
+        <source>Compute the receptance first.</source>
+        <translation>先にレセプタンスを計算してください。</translation>
+    </message>
+    <message>
+        <source>Now the other direction&apos;s tap test (or use this one for both).</source>
+        <translation>次にもう一方の方向の打撃試験を行ってください (またはこの結果を両方に使います)。</translation>
+    </message>
+</context>
+<context>
     <name>axistune::gui::MachiningToolPage</name>
     <message>
         <location filename="../app/gui/MachiningWizard.cpp" line="66" />
@@ -3490,6 +3641,14 @@
 </context>
 <context>
     <name>axistune::gui::MachiningWizard</name>
+    <message>
+        <source>Tap test…</source>
+        <translation>打撃試験…</translation>
+    </message>
+    <message>
+        <source>Measure the tool-tip receptance with an impact hammer</source>
+        <translation>インパクトハンマーで工具先端のレセプタンスを測定します</translation>
+    </message>
     <message>
         <location filename="../app/gui/MachiningWizard.cpp" line="435" />
         <source>Machining: stability lobes and chatter</source>

@@ -2,9 +2,6 @@
 // Foreign-file options of axistune-cli (app/cli/ImportOptions.h).
 #include "app/cli/ImportOptions.h"
 
-#include "core/io/Uff58.h"
-
-#include <fstream>
 
 namespace axistune::cli {
 
@@ -43,36 +40,15 @@ Result<io::TableImportOptions> tableOptions(const ImportCliOptions& o)
 
 std::string detectFormat(const std::string& path, const ImportCliOptions& o)
 {
-    if (o.format != "auto")
-        return o.format;
-    const auto dot = path.rfind('.');
-    std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
-    for (char& c : ext)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == "unv" || ext == "uff")
-        return "uff";
-    std::ifstream f(path);
-    std::string first;
-    if (f && std::getline(f, first) && io::looksLikeHalscope(first))
-        return "halscope";
-    return "csv";
+    return o.format != "auto" ? o.format : io::detectImportFormat(path);
 }
 
 Result<model::Capture> readTimeSeries(const std::string& path, const ImportCliOptions& o)
 {
-    const std::string format = detectFormat(path, o);
-    if (format == "halscope")
-        return io::readHalscopeFile(path);
-    if (format == "uff") {
-        auto recs = io::readUff58File(path);
-        if (!recs)
-            return recs.error();
-        return io::captureFromUff(*recs, path);
-    }
     auto t = tableOptions(o);
     if (!t)
         return t.error();
-    return io::readTableFile(path, *t);
+    return io::readTimeSeriesFile(path, *t, o.format);
 }
 
 }  // namespace axistune::cli

@@ -5,6 +5,7 @@
 #include "app/gui/MachiningWizard.h"
 
 #include "app/gui/AppContext.h"
+#include "app/gui/MachiningTapPage.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/io/FrfCsv.h"
 #include "core/machining/MachiningJson.h"
@@ -446,11 +447,42 @@ MachiningWizard::MachiningWizard(AppContext& ctx, QWidget* parent) : QWizard(par
     setPage(AdviceId, m_advice);
     setPage(AnalysisId, m_analysis);
     setPage(SaveId, m_save);
+    m_tap = new MachiningTapPage(*m_tool, this);
+    setPage(TapId, m_tap);
+    setButtonText(QWizard::CustomButton1, tr("Tap test…"));
+    button(QWizard::CustomButton1)->setObjectName("machTapTest");
+    button(QWizard::CustomButton1)->setToolTip(tr("Measure the tool-tip receptance with an impact hammer"));
+    setOption(QWizard::HaveCustomButton1, true);
+    connect(this, &QWizard::customButtonClicked, this, [this](int which) {
+        if (which == QWizard::CustomButton1)
+            openTapTest();
+    });
     connect(this, &QWizard::currentIdChanged, this, &MachiningWizard::onPageChanged);
+}
+
+void MachiningWizard::openTapTest()
+{
+    if (currentId() != ToolId)
+        return;
+    m_tapRequested = true;
+    next();
+    m_tapRequested = false;
+}
+
+int MachiningWizard::nextId() const
+{
+    // the tap page sits outside the linear order: from the tool page only on request, never after Save
+    switch (currentId()) {
+    case ToolId: return m_tapRequested ? int(TapId) : int(CutId);
+    case TapId: return CutId;
+    case SaveId: return -1;
+    default: return QWizard::nextId();
+    }
 }
 
 void MachiningWizard::onPageChanged(int id)
 {
+    setOption(QWizard::HaveCustomButton1, id == ToolId);
     if (id == SaveId)
         save();
 }

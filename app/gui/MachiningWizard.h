@@ -244,7 +244,8 @@ private:
 class MachiningWizard : public QWizard {
     Q_OBJECT
 public:
-    enum PageId { ToolId, CutId, LobesId, AdviceId, AnalysisId, SaveId };
+    /// TapId is reached only from the tool page's "Tap test…" button (nextId()).
+    enum PageId { ToolId, CutId, LobesId, AdviceId, AnalysisId, SaveId, TapId };
 
     explicit MachiningWizard(AppContext& ctx, QWidget* parent = nullptr);
 
@@ -254,6 +255,10 @@ public:
     MachiningAdvicePage* advicePage() const { return m_advice; }
     MachiningAnalysisPage* analysisPage() const { return m_analysis; }
     MachiningSavePage* savePage() const { return m_save; }
+    class MachiningTapPage* tapPage() const { return m_tap; }
+    /// From the tool page: opens the tap-test page.
+    void openTapTest();
+    int nextId() const override;
     std::int64_t savedSessionId() const { return m_sessionId; }
 
 signals:
@@ -270,6 +275,8 @@ private:
     MachiningAdvicePage* m_advice = nullptr;
     MachiningAnalysisPage* m_analysis = nullptr;
     MachiningSavePage* m_save = nullptr;
+    class MachiningTapPage* m_tap = nullptr;
+    bool m_tapRequested = false;
     std::int64_t m_sessionId = 0;
 };
 

@@ -3,6 +3,7 @@
 #include "core/io/TableImport.h"
 
 #include "core/io/FrfCsv.h"
+#include "core/io/Uff58.h"
 #include "core/model/Units.h"
 
 #include <charconv>
@@ -305,6 +306,35 @@ Result<model::Capture> readHalscopeFile(const std::string& path)
     if (!f)
         return makeError(ErrorCode::NotFound, path + ": cannot open the file");
     return readHalscope(f, path);
+}
+
+std::string detectImportFormat(const std::string& path)
+{
+    const auto dot = path.rfind('.');
+    std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+    for (char& c : ext)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == "unv" || ext == "uff")
+        return "uff";
+    std::ifstream f(path);
+    std::string first;
+    if (f && std::getline(f, first) && looksLikeHalscope(first))
+        return "halscope";
+    return "csv";
+}
+
+Result<model::Capture> readTimeSeriesFile(const std::string& path, const TableImportOptions& options, const std::string& format)
+{
+    const std::string f = format == "auto" ? detectImportFormat(path) : format;
+    if (f == "halscope")
+        return readHalscopeFile(path);
+    if (f == "uff") {
+        auto recs = readUff58File(path);
+        if (!recs)
+            return recs.error();
+        return captureFromUff(*recs, path);
+    }
+    return readTableFile(path, options);
 }
 
 Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const std::string& sourceName,

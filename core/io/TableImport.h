@@ -44,6 +44,13 @@ Result<model::Capture> readHalscopeFile(const std::string& path);
 /// True when the text starts like a halscope log ("Sampling period is").
 bool looksLikeHalscope(const std::string& firstLine);
 
+/// The format of a file: "uff" for .unv/.uff, "halscope" when the first line is "Sampling period is", else "csv".
+std::string detectImportFormat(const std::string& path);
+
+/// A time series of any import format ("auto", "csv", "halscope", "uff") as a capture.
+Result<model::Capture> readTimeSeriesFile(const std::string& path, const TableImportOptions& options,
+                                          const std::string& format = "auto");
+
 struct FrfColumnOptions {
     std::string frequencyColumn;  ///< default: f_Hz, freq_Hz, f, freq, frequency (first present)
     std::string name;             ///< FRF name: columns <name>_re/<name>_im, ...; empty: re/im or the only FRF
