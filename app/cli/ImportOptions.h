@@ -9,19 +9,18 @@
 #include "core/model/Result.h"
 
 #include <CLI/CLI.hpp>
-
 #include <string>
 #include <vector>
 
 namespace axistune::cli {
 
 struct ImportCliOptions {
-    std::string format = "auto";  ///< auto | csv | halscope | uff
+    std::string format = "auto"; ///< auto | csv | halscope | uff
     std::string separator = "auto";
     std::string decimal = "auto";
     bool noHeader = false;
     std::vector<std::string> names;
-    std::vector<std::string> units;  ///< COL=UNIT
+    std::vector<std::string> units; ///< COL=UNIT
 };
 
 /// Adds --format, --separator, --decimal, --no-header, --names, --unit to `sub`.
@@ -36,4 +35,4 @@ std::string detectFormat(const std::string& path, const ImportCliOptions& o);
 /// Reads a time series (capture CSV, any delimited table, halscope log, UFF58 time records) as a capture.
 Result<model::Capture> readTimeSeries(const std::string& path, const ImportCliOptions& o);
 
-}  // namespace axistune::cli
+} // namespace axistune::cli

@@ -144,8 +144,7 @@ MachiningTapPage::MachiningTapPage(MachiningToolPage& tool, QWidget* parent) : Q
 
     connect(add, &QPushButton::clicked, this, [this] {
         const QStringList paths = QFileDialog::getOpenFileNames(
-            this, tr("Impact records"), QString(),
-            tr("Records (*.csv *.txt *.log *.unv *.uff);;All files (*)"));
+            this, tr("Impact records"), QString(), tr("Records (*.csv *.txt *.log *.unv *.uff);;All files (*)"));
         for (const auto& p : paths)
             addRecord(p);
     });
@@ -179,7 +178,8 @@ void MachiningTapPage::fillColumns(const QStringList& names)
     for (const auto& n : names) {
         if (n.contains("force", Qt::CaseInsensitive))
             m_force->setCurrentText(n);
-        if (n.contains("acc", Qt::CaseInsensitive) || n.contains("vel", Qt::CaseInsensitive) || n.contains("disp", Qt::CaseInsensitive))
+        if (n.contains("acc", Qt::CaseInsensitive) || n.contains("vel", Qt::CaseInsensitive) ||
+            n.contains("disp", Qt::CaseInsensitive))
             m_response->setCurrentText(n);
     }
 }
@@ -236,9 +236,10 @@ bool MachiningTapPage::compute()
     dsp::ImpactOptions o;
     o.fsHz = fs;
     o.response = static_cast<dsp::MotionQuantity>(m_responseType->currentData().toInt());
-    o.output = dsp::MotionQuantity::Displacement;  // the tool model needs receptance
+    o.output = dsp::MotionQuantity::Displacement; // the tool model needs receptance
     o.doubleHit = static_cast<dsp::DoubleHitPolicy>(m_doubleHit->currentData().toInt());
-    for (auto [edit, dst, scale] : {std::tuple{m_trigger, &o.triggerLevelN, 1.0}, std::tuple{m_expTau, &o.expTauS, 1e-3}}) {
+    for (auto [edit, dst, scale] :
+         {std::tuple{m_trigger, &o.triggerLevelN, 1.0}, std::tuple{m_expTau, &o.expTauS, 1e-3}}) {
         if (edit->text().trimmed().isEmpty())
             continue;
         const auto v = machiningNumber(edit->text());
@@ -308,7 +309,8 @@ bool MachiningTapPage::useAsToolFrf(const QString& direction)
     if (direction.contains('y'))
         m_yPath = path;
     if (m_xPath.isEmpty() || m_yPath.isEmpty()) {
-        m_summary->setText(m_summary->text() + "\n" + tr("Now the other direction's tap test (or use this one for both)."));
+        m_summary->setText(m_summary->text() + "\n" +
+                           tr("Now the other direction's tap test (or use this one for both)."));
         return true;
     }
     if (!m_tool.fitToolFrfs(m_xPath, m_yPath, m_modes->value())) {
@@ -321,7 +323,8 @@ bool MachiningTapPage::useAsToolFrf(const QString& direction)
         setError(QString::fromStdString(tool.error().detail));
         return false;
     }
-    for (const auto& [path, modes] : {std::pair{m_xPath, &tool.value().modesX}, std::pair{m_yPath, &tool.value().modesY}}) {
+    for (const auto& [path, modes] :
+         {std::pair{m_xPath, &tool.value().modesX}, std::pair{m_yPath, &tool.value().modesY}}) {
         auto frf = io::readFrfCsvFile(path.toStdString());
         if (!frf) {
             setError(QString::fromStdString(frf.error().detail));
@@ -335,7 +338,7 @@ bool MachiningTapPage::useAsToolFrf(const QString& direction)
     m_tool.setTool(*tool);
     setError({});
     if (wizard())
-        wizard()->back();  // show the fitted modes on the tool page
+        wizard()->back(); // show the fitted modes on the tool page
     return true;
 }
 

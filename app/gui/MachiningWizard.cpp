@@ -473,10 +473,14 @@ int MachiningWizard::nextId() const
 {
     // the tap page sits outside the linear order: from the tool page only on request, never after Save
     switch (currentId()) {
-    case ToolId: return m_tapRequested ? int(TapId) : int(CutId);
-    case TapId: return CutId;
-    case SaveId: return -1;
-    default: return QWizard::nextId();
+    case ToolId:
+        return m_tapRequested ? int(TapId) : int(CutId);
+    case TapId:
+        return CutId;
+    case SaveId:
+        return -1;
+    default:
+        return QWizard::nextId();
     }
 }
 

@@ -23,7 +23,7 @@ std::string num(double v, int digits = 4)
 
 struct Crossing {
     std::size_t record = 0;
-    std::size_t index = 0;  // first sample at or above the level
+    std::size_t index = 0; // first sample at or above the level
 };
 
 // Upward crossings of `level` with hysteresis (the force must fall below level/2 before the next one).
@@ -42,14 +42,17 @@ std::vector<std::size_t> crossings(const std::vector<double>& f, double level)
     return out;
 }
 
-}  // namespace
+} // namespace
 
 std::string impactUnits(MotionQuantity output)
 {
     switch (output) {
-    case MotionQuantity::Displacement: return "m/N";
-    case MotionQuantity::Velocity: return "m/s/N";
-    case MotionQuantity::Acceleration: return "m/s2/N";
+    case MotionQuantity::Displacement:
+        return "m/N";
+    case MotionQuantity::Velocity:
+        return "m/s/N";
+    case MotionQuantity::Acceleration:
+        return "m/s2/N";
     }
     return "m/N";
 }
@@ -60,7 +63,8 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
         return makeError(ErrorCode::BadInput, "sampling frequency must be positive");
     if (records.empty())
         return makeError(ErrorCode::BadInput, "no impact record");
-    if (o.expTauS < 0.0 || o.forceWindowS < 0.0 || o.lengthS < 0.0 || o.triggerLevelN < 0.0 || !(o.doubleHitWindowS > 0.0))
+    if (o.expTauS < 0.0 || o.forceWindowS < 0.0 || o.lengthS < 0.0 || o.triggerLevelN < 0.0 ||
+        !(o.doubleHitWindowS > 0.0))
         return makeError(ErrorCode::OutOfRange, "trigger level, windows and length must not be negative");
     const double dt = 1.0 / o.fsHz;
     ImpactResult res;
@@ -78,7 +82,8 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
             return makeError(ErrorCode::BadInput, rec.name + ": force and response have different lengths");
         for (std::size_t i = 0; i < rec.forceN.size(); ++i) {
             if (!std::isfinite(rec.forceN[i]) || !std::isfinite(rec.response[i]))
-                return makeError(ErrorCode::BadInput, rec.name + ": sample " + std::to_string(i + 1) + " is not finite");
+                return makeError(ErrorCode::BadInput,
+                                 rec.name + ": sample " + std::to_string(i + 1) + " is not finite");
         }
         double fmax = 0.0;
         for (double v : rec.forceN)
@@ -88,8 +93,8 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
         const double level = o.triggerLevelN > 0.0 ? o.triggerLevelN : 0.1 * fmax;
         const auto cr = crossings(rec.forceN, level);
         if (cr.empty())
-            return makeError(ErrorCode::BadInput, rec.name + ": the force never reaches the trigger level " + num(level) + " N (largest "
-                                                      + num(fmax) + " N)");
+            return makeError(ErrorCode::BadInput, rec.name + ": the force never reaches the trigger level " +
+                                                      num(level) + " N (largest " + num(fmax) + " N)");
         const auto window = static_cast<std::size_t>(std::llround(o.doubleHitWindowS * o.fsHz));
         for (std::size_t k = 0; k < cr.size(); ++k) {
             Hit h{r, cr[k], cr[k], 0.0, false};
@@ -98,15 +103,18 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
                 h.peak = std::max(h.peak, rec.forceN[i]);
                 h.pulseEnd = i + 1;
             }
-            ImpactHit info{rec.name, static_cast<double>(cr[k]) * dt, h.peak, static_cast<double>(h.pulseEnd - cr[k]) * dt, false, {}};
+            ImpactHit info{rec.name, static_cast<double>(cr[k]) * dt,
+                           h.peak,   static_cast<double>(h.pulseEnd - cr[k]) * dt,
+                           false,    {}};
             // a rebound: further crossings inside the double-hit window belong to this hit
             std::size_t j = k + 1;
             while (j < cr.size() && cr[j] - cr[k] < window)
                 ++j;
             if (j > k + 1) {
-                const std::string what = rec.name + ": double hit at " + num(static_cast<double>(cr[k]) * dt, 6) + " s: the force crosses "
-                                         + num(level) + " N again at " + num(static_cast<double>(cr[k + 1]) * dt, 6)
-                                         + " s, within the double-hit window of " + num(o.doubleHitWindowS) + " s";
+                const std::string what = rec.name + ": double hit at " + num(static_cast<double>(cr[k]) * dt, 6) +
+                                         " s: the force crosses " + num(level) + " N again at " +
+                                         num(static_cast<double>(cr[k + 1]) * dt, 6) +
+                                         " s, within the double-hit window of " + num(o.doubleHitWindowS) + " s";
                 if (o.doubleHit == DoubleHitPolicy::Refuse)
                     return makeError(ErrorCode::BadInput, what + "; repeat the hit or drop it (--double-hit drop)");
                 h.dropped = true;
@@ -133,8 +141,9 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
     if (o.preTriggerS >= 0.0) {
         pre = static_cast<std::size_t>(std::llround(o.preTriggerS * o.fsHz));
         if (pre > preAvail)
-            return makeError(ErrorCode::OutOfRange, "pre-trigger " + num(o.preTriggerS) + " s: a hit has only "
-                                                        + num(static_cast<double>(preAvail) * dt) + " s of record before its trigger");
+            return makeError(ErrorCode::OutOfRange, "pre-trigger " + num(o.preTriggerS) + " s: a hit has only " +
+                                                        num(static_cast<double>(preAvail) * dt) +
+                                                        " s of record before its trigger");
     } else {
         pre = std::min(preAvail, static_cast<std::size_t>(std::llround(1e-3 * o.fsHz)));
     }
@@ -152,8 +161,8 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
     if (o.lengthS > 0.0) {
         const auto want = static_cast<std::size_t>(std::llround(o.lengthS * o.fsHz));
         if (want > block)
-            return makeError(ErrorCode::OutOfRange, "block length " + num(o.lengthS) + " s: the hits leave only "
-                                                        + num(static_cast<double>(block) * dt) + " s");
+            return makeError(ErrorCode::OutOfRange, "block length " + num(o.lengthS) + " s: the hits leave only " +
+                                                        num(static_cast<double>(block) * dt) + " s");
         block = want;
     }
     if (block < 16)
@@ -174,7 +183,7 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
         const std::size_t pulse = h.pulseEnd - h.trigger;
         const std::size_t keep = o.forceWindowS > 0.0 ? static_cast<std::size_t>(std::llround(o.forceWindowS * o.fsHz))
                                                       : std::max<std::size_t>(2 * pulse, 5);
-        const std::size_t forceEnd = std::min(block, pre + keep);  // samples of the block that keep the force
+        const std::size_t forceEnd = std::min(block, pre + keep); // samples of the block that keep the force
         forceWindowS = std::max(forceWindowS, static_cast<double>(forceEnd - pre) * dt);
         double peakResp = 0.0, endResp = 0.0;
         const std::size_t tail = std::max<std::size_t>(block / 50, 1);
@@ -224,7 +233,8 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
         std::complex<double> h = sxx[k] > 0.0 ? sxy[k] / sxx[k] : std::complex<double>(0.0, 0.0);
         const std::complex<double> jw(0.0, 2.0 * std::numbers::pi * f);
         h *= std::pow(jw, order);
-        const double coh = res.used >= 2 && sxx[k] > 0.0 && syy[k] > 0.0 ? std::norm(sxy[k]) / (sxx[k] * syy[k]) : std::nan("");
+        const double coh =
+            res.used >= 2 && sxx[k] > 0.0 && syy[k] > 0.0 ? std::norm(sxy[k]) / (sxx[k] * syy[k]) : std::nan("");
         res.frf.push(f, h, coh, ok && f >= fmin);
     }
     res.blockS = static_cast<double>(block) * dt;
@@ -232,8 +242,8 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
     res.forceWindowS = forceWindowS;
     res.expDecayPerS = sigma;
     if (res.residualResponse > 0.02 && sigma == 0.0) {
-        res.notes.push_back("the response at the end of the block is still " + num(100.0 * res.residualResponse, 3)
-                            + " % of its peak: leakage; use an exponential window (--exp-tau) or a longer record");
+        res.notes.push_back("the response at the end of the block is still " + num(100.0 * res.residualResponse, 3) +
+                            " % of its peak: leakage; use an exponential window (--exp-tau) or a longer record");
     }
     auto& md = res.frf.metadata;
     md["method"] = "impact-h1";
@@ -252,4 +262,4 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
     return res;
 }
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

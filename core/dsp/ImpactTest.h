@@ -32,23 +32,23 @@ enum class MotionQuantity { Displacement = 0, Velocity = 1, Acceleration = 2 };
 enum class DoubleHitPolicy { Refuse, Drop };
 
 struct ImpactRecord {
-    std::string name;              ///< for messages (file name)
-    std::vector<double> forceN;    ///< hammer force [N]
-    std::vector<double> response;  ///< response in SI (m, m/s or m/s² by ImpactOptions::response)
+    std::string name;             ///< for messages (file name)
+    std::vector<double> forceN;   ///< hammer force [N]
+    std::vector<double> response; ///< response in SI (m, m/s or m/s² by ImpactOptions::response)
 };
 
 struct ImpactOptions {
     double fsHz = 0.0;
     MotionQuantity response = MotionQuantity::Acceleration;
-    MotionQuantity output = MotionQuantity::Displacement;  ///< receptance (m/N), mobility, accelerance
-    double triggerLevelN = 0.0;     ///< 0: 10 % of the record's largest |force|
-    double preTriggerS = -1.0;      ///< < 0: 1 ms or what the record has before the first hit
-    double forceWindowS = 0.0;      ///< 0: automatic (see above)
-    double expTauS = 0.0;           ///< 0: no exponential window
-    double lengthS = 0.0;           ///< 0: automatic block length
+    MotionQuantity output = MotionQuantity::Displacement; ///< receptance (m/N), mobility, accelerance
+    double triggerLevelN = 0.0;                           ///< 0: 10 % of the record's largest |force|
+    double preTriggerS = -1.0;                            ///< < 0: 1 ms or what the record has before the first hit
+    double forceWindowS = 0.0;                            ///< 0: automatic (see above)
+    double expTauS = 0.0;                                 ///< 0: no exponential window
+    double lengthS = 0.0;                                 ///< 0: automatic block length
     double doubleHitWindowS = 0.05; ///< a second crossing closer than this after a hit is a double hit
     DoubleHitPolicy doubleHit = DoubleHitPolicy::Refuse;
-    double forceRangeDb = 40.0;     ///< valid where the force spectrum is within this of its low-frequency level
+    double forceRangeDb = 40.0; ///< valid where the force spectrum is within this of its low-frequency level
     /// Points below are invalid. < 0: automatic, 50 Hz when acceleration becomes receptance, 20 Hz for one
     /// integration (a piezo accelerometer does not measure near DC and 1/ω² magnifies its noise), else 0.
     double minFrequencyHz = -1.0;
@@ -56,22 +56,22 @@ struct ImpactOptions {
 
 struct ImpactHit {
     std::string record;
-    double triggerS = 0.0;   ///< time of the trigger crossing in its record
+    double triggerS = 0.0; ///< time of the trigger crossing in its record
     double peakForceN = 0.0;
-    double pulseS = 0.0;     ///< trigger to the force back below 5 % of the peak
-    bool dropped = false;    ///< a double hit dropped by DoubleHitPolicy::Drop
+    double pulseS = 0.0;  ///< trigger to the force back below 5 % of the peak
+    bool dropped = false; ///< a double hit dropped by DoubleHitPolicy::Drop
     std::string note;
 };
 
 struct ImpactResult {
-    FrequencyResponse frf;           ///< metadata: units, hits, block, windows, decay, band
-    std::vector<ImpactHit> hits;     ///< all hits found, dropped ones flagged
-    std::size_t used = 0;            ///< hits averaged
+    FrequencyResponse frf;       ///< metadata: units, hits, block, windows, decay, band
+    std::vector<ImpactHit> hits; ///< all hits found, dropped ones flagged
+    std::size_t used = 0;        ///< hits averaged
     double blockS = 0.0, preTriggerS = 0.0, forceWindowS = 0.0;
-    double expDecayPerS = 0.0;       ///< σ = 1/τ added by the exponential window (0 without)
-    double forceBandHz = 0.0;        ///< first frequency where the force spectrum leaves forceRangeDb
-    double residualResponse = 0.0;   ///< |response| at the block end / its peak, worst hit (leakage check)
-    std::vector<std::string> notes;  ///< messages for the user (dropped hits, leakage)
+    double expDecayPerS = 0.0;      ///< σ = 1/τ added by the exponential window (0 without)
+    double forceBandHz = 0.0;       ///< first frequency where the force spectrum leaves forceRangeDb
+    double residualResponse = 0.0;  ///< |response| at the block end / its peak, worst hit (leakage check)
+    std::vector<std::string> notes; ///< messages for the user (dropped hits, leakage)
 };
 
 /// SI unit token of an FRF of `output` per newton: m/N, m/s/N, m/s2/N.
@@ -81,4 +81,4 @@ std::string impactUnits(MotionQuantity output);
 /// (policy Refuse), a pre-trigger or length that the records do not have, non-finite samples.
 Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const ImpactOptions& options);
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

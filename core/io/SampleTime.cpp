@@ -20,9 +20,9 @@ Result<SampleTiming> sampleTiming(std::span<const double> t, const std::string& 
     };
     for (std::size_t i = 1; i < n; ++i) {
         if (!(t[i] > t[i - 1]))
-            return makeError(ErrorCode::BadInput, where + ", " + lineOf(i) + ": time does not increase ("
-                                                      + model::formatNumber(t[i - 1], 17) + " s then "
-                                                      + model::formatNumber(t[i], 17) + " s)");
+            return makeError(ErrorCode::BadInput, where + ", " + lineOf(i) + ": time does not increase (" +
+                                                      model::formatNumber(t[i - 1], 17) + " s then " +
+                                                      model::formatNumber(t[i], 17) + " s)");
     }
     SampleTiming s;
     s.intervalS = (t[n - 1] - t[0]) / static_cast<double>(n - 1);
@@ -37,15 +37,15 @@ Result<SampleTiming> sampleTiming(std::span<const double> t, const std::string& 
         s.maxDeviationS = std::max(s.maxDeviationS, dev);
         if (dev > tol) {
             return makeError(ErrorCode::BadInput,
-                             where + ", " + lineOf(i) + ": not uniformly sampled: the time stamp "
-                                 + model::formatNumber(t[i], 10) + " s is " + model::formatNumber(dev, 3)
-                                 + " s off the uniform grid of interval " + model::formatNumber(s.intervalS, 10)
-                                 + " s (tolerance " + model::formatNumber(100.0 * kTimeJitterTolerance, 3)
-                                 + " % of the interval); give --fs to use the sample index instead");
+                             where + ", " + lineOf(i) + ": not uniformly sampled: the time stamp " +
+                                 model::formatNumber(t[i], 10) + " s is " + model::formatNumber(dev, 3) +
+                                 " s off the uniform grid of interval " + model::formatNumber(s.intervalS, 10) +
+                                 " s (tolerance " + model::formatNumber(100.0 * kTimeJitterTolerance, 3) +
+                                 " % of the interval); give --fs to use the sample index instead");
         }
     }
     s.fsHz = 1.0 / s.intervalS;
     return s;
 }
 
-}  // namespace axistune::io
+} // namespace axistune::io

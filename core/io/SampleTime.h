@@ -32,4 +32,4 @@ struct SampleTiming {
 /// Errors: fewer than 2 samples, non-increasing time, a stamp off the grid by more than the tolerance.
 Result<SampleTiming> sampleTiming(std::span<const double> t, const std::string& where, std::size_t firstDataLine = 0);
 
-}  // namespace axistune::io
+} // namespace axistune::io

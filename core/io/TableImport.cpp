@@ -50,7 +50,8 @@ std::vector<std::string> splitLine(const std::string& line, char sep)
     std::size_t start = 0;
     while (true) {
         const auto pos = line.find(sep, start);
-        cells.push_back(trimCell(std::string_view(line).substr(start, pos == std::string::npos ? std::string::npos : pos - start)));
+        cells.push_back(
+            trimCell(std::string_view(line).substr(start, pos == std::string::npos ? std::string::npos : pos - start)));
         if (pos == std::string::npos)
             break;
         start = pos + 1;
@@ -76,7 +77,7 @@ bool parseNumber(std::string cell, bool decimalComma, double& v)
             if (c == ',')
                 c = '.';
             else if (c == '.')
-                return false;  // a point in a decimal-comma file is a mistake, not a thousands mark
+                return false; // a point in a decimal-comma file is a mistake, not a thousands mark
         }
     }
     return detail::parseDouble(cell, v);
@@ -85,14 +86,18 @@ bool parseNumber(std::string cell, bool decimalComma, double& v)
 std::string separatorName(char sep)
 {
     switch (sep) {
-    case '\t': return "tab";
-    case ';': return "semicolon";
-    case ',': return "comma";
-    default: return "blanks";
+    case '\t':
+        return "tab";
+    case ';':
+        return "semicolon";
+    case ',':
+        return "comma";
+    default:
+        return "blanks";
     }
 }
 
-}  // namespace
+} // namespace
 
 Result<model::Capture> readTable(std::istream& in, const std::string& sourceName, const TableImportOptions& options)
 {
@@ -110,9 +115,9 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
 
     auto addRow = [&](const std::vector<std::string>& cells, std::size_t ln) -> Status {
         if (cells.size() != cap.channels.size()) {
-            return makeError(ErrorCode::BadInput, where(ln) + ": " + std::to_string(cells.size()) + " fields, expected "
-                                                      + std::to_string(cap.channels.size()) + " (separator "
-                                                      + separatorName(sep) + ")");
+            return makeError(ErrorCode::BadInput, where(ln) + ": " + std::to_string(cells.size()) +
+                                                      " fields, expected " + std::to_string(cap.channels.size()) +
+                                                      " (separator " + separatorName(sep) + ")");
         }
         if (!decimalComma) {
             bool comma = false, point = false;
@@ -125,12 +130,13 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
         for (std::size_t i = 0; i < cells.size(); ++i) {
             double v = 0.0;
             if (!parseNumber(cells[i], *decimalComma, v)) {
-                return makeError(ErrorCode::BadInput, where(ln) + ", column '" + cap.channels[i].name + "': '" + cells[i]
-                                                          + "' is not a number"
-                                                          + (*decimalComma ? " (decimal comma)" : " (decimal point)"));
+                return makeError(ErrorCode::BadInput, where(ln) + ", column '" + cap.channels[i].name + "': '" +
+                                                          cells[i] + "' is not a number" +
+                                                          (*decimalComma ? " (decimal comma)" : " (decimal point)"));
             }
             if (!std::isfinite(v))
-                return makeError(ErrorCode::BadInput, where(ln) + ", column '" + cap.channels[i].name + "': value is not finite");
+                return makeError(ErrorCode::BadInput,
+                                 where(ln) + ", column '" + cap.channels[i].name + "': value is not finite");
             cap.channels[i].data.push_back(v * scale[i]);
         }
         if (firstDataLine == 0)
@@ -149,7 +155,8 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
         }
         for (const auto& [col, unit] : options.units) {
             if (!seen.count(col))
-                return makeError(ErrorCode::NotFound, sourceName + ": unit given for column '" + col + "', which the file does not have");
+                return makeError(ErrorCode::NotFound,
+                                 sourceName + ": unit given for column '" + col + "', which the file does not have");
         }
         scale.assign(names.size(), 1.0);
         for (std::size_t i = 0; i < names.size(); ++i) {
@@ -158,8 +165,8 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
                 continue;
             auto u = model::findUnit(it->second);
             if (!u)
-                return makeError(ErrorCode::BadInput, sourceName + ", column '" + names[i] + "': unknown unit '" + it->second
-                                                          + "' (docs/formats.md lists the units)");
+                return makeError(ErrorCode::BadInput, sourceName + ", column '" + names[i] + "': unknown unit '" +
+                                                          it->second + "' (docs/formats.md lists the units)");
             scale[i] = u->toSi;
             cap.metadata["unit." + names[i]] = std::string(u->si);
             cap.metadata["unit_in_file." + names[i]] = it->second;
@@ -177,7 +184,8 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
         if (line[line.find_first_not_of(" \t")] == '#') {
             std::string k, v;
             // "# key=value" with a one-word key is metadata; other comment lines are prose
-            if (detail::parseMetadataLine(line.substr(line.find('#')), k, v) && k.find_first_of(" \t") == std::string::npos)
+            if (detail::parseMetadataLine(line.substr(line.find('#')), k, v) &&
+                k.find_first_of(" \t") == std::string::npos)
                 cap.metadata[k] = v;
             continue;
         }
@@ -190,7 +198,8 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
                 double v = 0.0;
                 numeric = numeric && (parseNumber(c, false, v) || parseNumber(c, true, v));
             }
-            const bool header = options.header == HeaderMode::Present || (options.header == HeaderMode::Auto && !numeric);
+            const bool header =
+                options.header == HeaderMode::Present || (options.header == HeaderMode::Auto && !numeric);
             std::vector<std::string> names;
             if (header) {
                 names = cells;
@@ -203,12 +212,14 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
             if (!options.names.empty() && header && options.header != HeaderMode::Present) {
                 // names given for a file that has a header: the header wins, but both must agree in width
                 if (options.names.size() != cells.size())
-                    return makeError(ErrorCode::BadInput, where(lineNo) + ": the header has " + std::to_string(cells.size())
-                                                              + " columns, " + std::to_string(options.names.size()) + " names were given");
+                    return makeError(ErrorCode::BadInput,
+                                     where(lineNo) + ": the header has " + std::to_string(cells.size()) + " columns, " +
+                                         std::to_string(options.names.size()) + " names were given");
             }
             if (!header && names.size() != cells.size())
-                return makeError(ErrorCode::BadInput, where(lineNo) + ": " + std::to_string(cells.size()) + " fields, "
-                                                          + std::to_string(names.size()) + " column names were given");
+                return makeError(ErrorCode::BadInput, where(lineNo) + ": " + std::to_string(cells.size()) +
+                                                          " fields, " + std::to_string(names.size()) +
+                                                          " column names were given");
             if (auto st = setColumns(names, lineNo); !st)
                 return st.error();
             if (header)
@@ -255,37 +266,41 @@ Result<model::Capture> readHalscope(std::istream& in, const std::string& sourceN
         if (lineNo == 1) {
             // "Sampling period is <int> ns "
             auto cells = splitLine(line, ' ');
-            if (!looksLikeHalscope(line) || cells.size() < 5 || cells[4] != "ns" || !detail::parseDouble(cells[3], periodNs)
-                || !(periodNs > 0.0))
-                return makeError(ErrorCode::BadInput, where(1) + ": not a halscope log (expected 'Sampling period is <n> ns')");
+            if (!looksLikeHalscope(line) || cells.size() < 5 || cells[4] != "ns" ||
+                !detail::parseDouble(cells[3], periodNs) || !(periodNs > 0.0))
+                return makeError(ErrorCode::BadInput,
+                                 where(1) + ": not a halscope log (expected 'Sampling period is <n> ns')");
             continue;
         }
         auto cells = splitLine(line, ' ');
         if (cells.empty())
             continue;
         if (cells.size() % 2 != 0)
-            return makeError(ErrorCode::BadInput, where(lineNo) + ": expected pairs '<channel> <value>', found "
-                                                      + std::to_string(cells.size()) + " fields");
+            return makeError(ErrorCode::BadInput, where(lineNo) + ": expected pairs '<channel> <value>', found " +
+                                                      std::to_string(cells.size()) + " fields");
         const std::size_t nch = cells.size() / 2;
         if (cap.channels.empty()) {
             for (std::size_t i = 0; i < nch; ++i) {
                 if (cap.channel(cells[2 * i]))
-                    return makeError(ErrorCode::BadInput, where(lineNo) + ": channel '" + cells[2 * i] + "' appears twice");
+                    return makeError(ErrorCode::BadInput,
+                                     where(lineNo) + ": channel '" + cells[2 * i] + "' appears twice");
                 cap.channels.push_back({cells[2 * i], {}});
             }
             firstDataLine = lineNo;
         }
         if (nch != cap.channels.size())
-            return makeError(ErrorCode::BadInput, where(lineNo) + ": " + std::to_string(nch) + " channels, the first row has "
-                                                      + std::to_string(cap.channels.size()));
+            return makeError(ErrorCode::BadInput, where(lineNo) + ": " + std::to_string(nch) +
+                                                      " channels, the first row has " +
+                                                      std::to_string(cap.channels.size()));
         for (std::size_t i = 0; i < nch; ++i) {
             if (cells[2 * i] != cap.channels[i].name)
-                return makeError(ErrorCode::BadInput, where(lineNo) + ", field " + std::to_string(2 * i + 1) + ": channel '"
-                                                          + cells[2 * i] + "' where '" + cap.channels[i].name + "' was expected");
+                return makeError(ErrorCode::BadInput, where(lineNo) + ", field " + std::to_string(2 * i + 1) +
+                                                          ": channel '" + cells[2 * i] + "' where '" +
+                                                          cap.channels[i].name + "' was expected");
             double v = 0.0;
             if (!detail::parseDouble(cells[2 * i + 1], v) || !std::isfinite(v))
-                return makeError(ErrorCode::BadInput, where(lineNo) + ", channel '" + cap.channels[i].name + "': '"
-                                                          + cells[2 * i + 1] + "' is not a finite number");
+                return makeError(ErrorCode::BadInput, where(lineNo) + ", channel '" + cap.channels[i].name + "': '" +
+                                                          cells[2 * i + 1] + "' is not a finite number");
             cap.channels[i].data.push_back(v);
         }
     }
@@ -323,7 +338,8 @@ std::string detectImportFormat(const std::string& path)
     return "csv";
 }
 
-Result<model::Capture> readTimeSeriesFile(const std::string& path, const TableImportOptions& options, const std::string& format)
+Result<model::Capture> readTimeSeriesFile(const std::string& path, const TableImportOptions& options,
+                                          const std::string& format)
 {
     const std::string f = format == "auto" ? detectImportFormat(path) : format;
     if (f == "halscope")
@@ -344,15 +360,17 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
     if (!options.frequencyColumn.empty()) {
         f = table.channel(options.frequencyColumn);
         if (!f)
-            return makeError(ErrorCode::NotFound, sourceName + ": no frequency column '" + options.frequencyColumn + "'");
+            return makeError(ErrorCode::NotFound,
+                             sourceName + ": no frequency column '" + options.frequencyColumn + "'");
     } else {
         for (const char* n : {"f_Hz", "freq_Hz", "f", "freq", "frequency", "Frequency", "Freq"}) {
             if ((f = table.channel(n)))
                 break;
         }
         if (!f)
-            return makeError(ErrorCode::NotFound, sourceName + ": no frequency column (f_Hz, freq_Hz, f, freq or frequency); "
-                                                              "name it with --freq-column");
+            return makeError(ErrorCode::NotFound, sourceName +
+                                                      ": no frequency column (f_Hz, freq_Hz, f, freq or frequency); "
+                                                      "name it with --freq-column");
     }
     std::string name = options.name;
     if (name.empty()) {
@@ -360,7 +378,8 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
         std::vector<std::string> prefixes;
         for (const auto& c : table.channels) {
             const auto& n = c.name;
-            if (n.size() > 3 && n.compare(n.size() - 3, 3, "_re") == 0 && table.channel(n.substr(0, n.size() - 3) + "_im"))
+            if (n.size() > 3 && n.compare(n.size() - 3, 3, "_re") == 0 &&
+                table.channel(n.substr(0, n.size() - 3) + "_im"))
                 prefixes.push_back(n.substr(0, n.size() - 3));
         }
         if (table.channel("re") && table.channel("im"))
@@ -369,10 +388,12 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
             std::string list;
             for (const auto& p : prefixes)
                 list += (list.empty() ? "" : ", ") + (p.empty() ? std::string("re/im") : p);
-            return makeError(ErrorCode::BadInput, sourceName + ": the file has several FRFs (" + list + "); choose one with --column");
+            return makeError(ErrorCode::BadInput,
+                             sourceName + ": the file has several FRFs (" + list + "); choose one with --column");
         }
         if (prefixes.empty())
-            return makeError(ErrorCode::BadInput, sourceName + ": no FRF columns (<name>_re and <name>_im, or re and im)");
+            return makeError(ErrorCode::BadInput,
+                             sourceName + ": no FRF columns (<name>_re and <name>_im, or re and im)");
         name = prefixes.front();
     }
     const std::string pre = name.empty() ? "" : name + "_";
@@ -382,20 +403,23 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
     const auto* mag = table.channel(pre + "mag");
     const auto* ph = table.channel(pre + "phase_deg");
     if (!(re && im) && !((magDb || mag) && ph))
-        return makeError(ErrorCode::NotFound, sourceName + ": no columns " + pre + "re/" + pre + "im (or " + pre + "mag_dB/"
-                                                  + pre + "phase_deg, " + pre + "mag/" + pre + "phase_deg)");
+        return makeError(ErrorCode::NotFound, sourceName + ": no columns " + pre + "re/" + pre + "im (or " + pre +
+                                                  "mag_dB/" + pre + "phase_deg, " + pre + "mag/" + pre + "phase_deg)");
     dsp::FrequencyResponse frf;
     frf.metadata = table.metadata;
     for (const char* k : {"separator", "decimal", "first_data_line"})
         frf.metadata.erase(k);
-    const std::size_t first = table.metadata.count("first_data_line") ? std::stoul(table.metadata.at("first_data_line")) : 0;
+    const std::size_t first =
+        table.metadata.count("first_data_line") ? std::stoul(table.metadata.at("first_data_line")) : 0;
     for (std::size_t i = 0; i < table.size(); ++i) {
         const double fi = f->data[i];
-        const std::string at = sourceName + (first ? " line " + std::to_string(first + i) : " row " + std::to_string(i + 1));
+        const std::string at =
+            sourceName + (first ? " line " + std::to_string(first + i) : " row " + std::to_string(i + 1));
         if (fi < 0.0)
             return makeError(ErrorCode::OutOfRange, at + ", column '" + f->name + "': negative frequency");
         if (!frf.freqHz.empty() && !(fi > frf.freqHz.back()))
-            return makeError(ErrorCode::BadInput, at + ", column '" + f->name + "': frequencies must increase strictly");
+            return makeError(ErrorCode::BadInput,
+                             at + ", column '" + f->name + "': frequencies must increase strictly");
         std::complex<double> h;
         if (re && im) {
             h = {re->data[i], im->data[i]};
@@ -418,4 +442,4 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
     return frf;
 }
 
-}  // namespace axistune::io
+} // namespace axistune::io

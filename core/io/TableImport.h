@@ -25,11 +25,12 @@ enum class HeaderMode { Auto, Present, Absent };
 enum class DecimalMark { Auto, Point, Comma };
 
 struct TableImportOptions {
-    char separator = 0;                          ///< 0: auto; '\t', ';', ',', ' ' (any run of blanks)
-    DecimalMark decimal = DecimalMark::Auto;     ///< Auto: comma when the separator is not ',' and a cell has ',' and no '.'
-    HeaderMode header = HeaderMode::Auto;        ///< Auto: the first line is a header when a cell is not a number
-    std::vector<std::string> names;              ///< names of a headerless file's columns (default col1, col2, ...)
-    std::map<std::string, std::string> units;    ///< column → unit token of the file; values converted to SI
+    char separator = 0; ///< 0: auto; '\t', ';', ',', ' ' (any run of blanks)
+    DecimalMark decimal =
+        DecimalMark::Auto;                ///< Auto: comma when the separator is not ',' and a cell has ',' and no '.'
+    HeaderMode header = HeaderMode::Auto; ///< Auto: the first line is a header when a cell is not a number
+    std::vector<std::string> names;       ///< names of a headerless file's columns (default col1, col2, ...)
+    std::map<std::string, std::string> units; ///< column → unit token of the file; values converted to SI
 };
 
 /// Reads a delimited table into a capture (channels in file order, values in SI after `units`).
@@ -52,13 +53,13 @@ Result<model::Capture> readTimeSeriesFile(const std::string& path, const TableIm
                                           const std::string& format = "auto");
 
 struct FrfColumnOptions {
-    std::string frequencyColumn;  ///< default: f_Hz, freq_Hz, f, freq, frequency (first present)
-    std::string name;             ///< FRF name: columns <name>_re/<name>_im, ...; empty: re/im or the only FRF
-    std::string units;            ///< unit of h in the file (m/N, um/N, ...); overrides a `units` metadata line
+    std::string frequencyColumn; ///< default: f_Hz, freq_Hz, f, freq, frequency (first present)
+    std::string name;            ///< FRF name: columns <name>_re/<name>_im, ...; empty: re/im or the only FRF
+    std::string units;           ///< unit of h in the file (m/N, um/N, ...); overrides a `units` metadata line
 };
 
 /// One FRF from the columns of an imported table, h converted to SI (units key of docs/formats.md).
 Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const std::string& sourceName,
                                             const FrfColumnOptions& options);
 
-}  // namespace axistune::io
+} // namespace axistune::io

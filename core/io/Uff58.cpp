@@ -100,8 +100,8 @@ Result<Uff58Record> readRecord(LineReader& r, double lengthFactor, double forceF
     std::string line;
     auto need = [&](const char* what) -> Status {
         if (!r.next(line))
-            return makeError(ErrorCode::BadInput, r.source + ": the file ends inside dataset 58 (line " + std::to_string(rec.line)
-                                                      + ") before " + what);
+            return makeError(ErrorCode::BadInput, r.source + ": the file ends inside dataset 58 (line " +
+                                                      std::to_string(rec.line) + ") before " + what);
         if (isDelimiter(line))
             return makeError(ErrorCode::BadInput, r.at() + ": dataset 58 ends before " + what);
         return {};
@@ -142,8 +142,8 @@ Result<Uff58Record> readRecord(LineReader& r, double lengthFactor, double forceF
         if (auto s = parseInt(field(line, 0, 10), w, "ordinate data type", rec.ordinateType); !s)
             return s.error();
         if (rec.ordinateType != 2 && rec.ordinateType != 4 && rec.ordinateType != 5 && rec.ordinateType != 6)
-            return makeError(ErrorCode::BadInput, w + ", ordinate data type: " + std::to_string(rec.ordinateType)
-                                                      + " (expected 2, 4 real or 5, 6 complex)");
+            return makeError(ErrorCode::BadInput, w + ", ordinate data type: " + std::to_string(rec.ordinateType) +
+                                                      " (expected 2, 4 real or 5, 6 complex)");
         if (auto s = parseInt(field(line, 10, 10), w, "number of points", n); !s)
             return s.error();
         if (n < 1)
@@ -151,7 +151,8 @@ Result<Uff58Record> readRecord(LineReader& r, double lengthFactor, double forceF
         if (auto s = parseInt(field(line, 20, 10), w, "abscissa spacing", spacing); !s)
             return s.error();
         if (spacing != 0 && spacing != 1)
-            return makeError(ErrorCode::BadInput, w + ", abscissa spacing: " + std::to_string(spacing) + " (expected 0 or 1)");
+            return makeError(ErrorCode::BadInput,
+                             w + ", abscissa spacing: " + std::to_string(spacing) + " (expected 0 or 1)");
         rec.evenSpacing = spacing == 1;
         const char* names[] = {"abscissa minimum", "abscissa increment", "z-axis value"};
         double* dst[] = {&rec.xMin, &rec.xStep, &rec.zValue};
@@ -197,18 +198,19 @@ Result<Uff58Record> readRecord(LineReader& r, double lengthFactor, double forceF
             double d = 0.0;
             const std::string cell = line.substr(b, i - b);
             if (!parseFortranDouble(cell, d) || !std::isfinite(d))
-                return makeError(ErrorCode::BadInput, r.at() + " (record 12), field " + std::to_string(fieldNo) + ": '" + cell
-                                                          + "' is not a finite number");
+                return makeError(ErrorCode::BadInput, r.at() + " (record 12), field " + std::to_string(fieldNo) +
+                                                          ": '" + cell + "' is not a finite number");
             v.push_back(d);
         }
     }
     if (!closed)
-        return makeError(ErrorCode::BadInput, r.source + ": the file ends inside dataset 58 of line " + std::to_string(rec.line)
-                                                  + " (no closing -1)");
+        return makeError(ErrorCode::BadInput, r.source + ": the file ends inside dataset 58 of line " +
+                                                  std::to_string(rec.line) + " (no closing -1)");
     if (v.size() != want)
-        return makeError(ErrorCode::BadInput, r.source + " line " + std::to_string(rec.line) + " (dataset 58, record 12): "
-                                                  + std::to_string(v.size()) + " values, record 7 announces "
-                                                  + std::to_string(n) + " points = " + std::to_string(want) + " values");
+        return makeError(ErrorCode::BadInput, r.source + " line " + std::to_string(rec.line) +
+                                                  " (dataset 58, record 12): " + std::to_string(v.size()) +
+                                                  " values, record 7 announces " + std::to_string(n) +
+                                                  " points = " + std::to_string(want) + " values");
     for (std::size_t p = 0; p < static_cast<std::size_t>(n); ++p) {
         const double* q = v.data() + p * perPoint;
         double x = 0.0;
@@ -250,19 +252,27 @@ bool noLabel(const std::string& label)
 const char* siOfType(int dataType)
 {
     switch (dataType) {
-    case 8: return "m";
-    case 11: return "m/s";
-    case 12: return "m/s2";
+    case 8:
+        return "m";
+    case 11:
+        return "m/s";
+    case 12:
+        return "m/s2";
     case 9:
-    case 13: return "N";
-    case 17: return "s";
-    case 18: return "Hz";
-    default: return nullptr;
+    case 13:
+        return "N";
+    case 17:
+        return "s";
+    case 18:
+        return "Hz";
+    default:
+        return nullptr;
     }
 }
 
 // Factor to SI of an axis: dataset 164 when it is not SI, else the units label, else SI by data type.
-Result<double> axisToSi(const Uff58Record& rec, const UffAxis& a, const std::string& where, std::string& token, bool& assumed)
+Result<double> axisToSi(const Uff58Record& rec, const UffAxis& a, const std::string& where, std::string& token,
+                        bool& assumed)
 {
     if (rec.lengthFactor != 1.0 || rec.forceFactor != 1.0) {
         token = siOfType(a.dataType) ? siOfType(a.dataType) : "";
@@ -279,7 +289,7 @@ Result<double> axisToSi(const Uff58Record& rec, const UffAxis& a, const std::str
     return 1.0;
 }
 
-}  // namespace
+} // namespace
 
 Result<std::vector<Uff58Record>> readUff58(std::istream& in, const std::string& sourceName)
 {
@@ -292,7 +302,8 @@ Result<std::vector<Uff58Record>> readUff58(std::istream& in, const std::string& 
         if (trim(line).empty())
             continue;
         if (!isDelimiter(line))
-            return makeError(ErrorCode::BadInput, r.at() + ": expected '    -1' opening a dataset, found '" + trim(line) + "'");
+            return makeError(ErrorCode::BadInput,
+                             r.at() + ": expected '    -1' opening a dataset, found '" + trim(line) + "'");
         if (!r.next(line))
             break;
         const std::string id = trim(line);
@@ -305,7 +316,8 @@ Result<std::vector<Uff58Record>> readUff58(std::istream& in, const std::string& 
             continue;
         }
         if (id.rfind("58", 0) == 0 && id.size() > 2 && (id[2] == 'b' || id[2] == 'B'))
-            return makeError(ErrorCode::BadInput, r.at() + ": binary dataset 58b is not supported; export ASCII dataset 58");
+            return makeError(ErrorCode::BadInput,
+                             r.at() + ": binary dataset 58b is not supported; export ASCII dataset 58");
         const bool units = id == "164";
         std::vector<std::string> body;
         bool closed = false;
@@ -317,7 +329,8 @@ Result<std::vector<Uff58Record>> readUff58(std::istream& in, const std::string& 
             body.push_back(line);
         }
         if (!closed)
-            return makeError(ErrorCode::BadInput, sourceName + ": the file ends inside dataset " + id + " (no closing -1)");
+            return makeError(ErrorCode::BadInput,
+                             sourceName + ": the file ends inside dataset " + id + " (no closing -1)");
         if (units) {
             // record 2: length, force, temperature factors Format(3D25.17)
             if (body.size() < 2)
@@ -326,8 +339,9 @@ Result<std::vector<Uff58Record>> readUff58(std::istream& in, const std::string& 
             for (int k = 0; k < 3; ++k) {
                 const std::string cell = field(body[1], 25 * static_cast<std::size_t>(k), 25);
                 if (!parseFortranDouble(cell, f[k]) || !(f[k] > 0.0))
-                    return makeError(ErrorCode::BadInput, sourceName + ": dataset 164 record 2, factor " + std::to_string(k + 1)
-                                                              + ": '" + cell + "' is not a positive number");
+                    return makeError(ErrorCode::BadInput, sourceName + ": dataset 164 record 2, factor " +
+                                                              std::to_string(k + 1) + ": '" + cell +
+                                                              "' is not a positive number");
             }
             lengthFactor = f[0];
             forceFactor = f[1];
@@ -352,8 +366,8 @@ Result<dsp::FrequencyResponse> frfFromUff(const Uff58Record& rec, const std::str
 {
     const std::string where = sourceName + " line " + std::to_string(rec.line) + " (dataset 58)";
     if (!rec.isComplex() || (rec.functionType != 4 && rec.abscissa.dataType != 18))
-        return makeError(ErrorCode::BadInput, where + ": function type " + std::to_string(rec.functionType)
-                                                  + " is not a complex frequency response");
+        return makeError(ErrorCode::BadInput, where + ": function type " + std::to_string(rec.functionType) +
+                                                  " is not a complex frequency response");
     std::string num, den;
     bool assumed = false;
     auto fn = axisToSi(rec, rec.numerator, where + " record 9", num, assumed);
@@ -366,7 +380,8 @@ Result<dsp::FrequencyResponse> frfFromUff(const Uff58Record& rec, const std::str
     const double scale = *fn / *fd;
     for (std::size_t i = 0; i < rec.x.size(); ++i) {
         if (i > 0 && !(rec.x[i] > rec.x[i - 1]))
-            return makeError(ErrorCode::BadInput, where + ", point " + std::to_string(i + 1) + ": frequencies must increase strictly");
+            return makeError(ErrorCode::BadInput,
+                             where + ", point " + std::to_string(i + 1) + ": frequencies must increase strictly");
         if (rec.x[i] < 0.0)
             return makeError(ErrorCode::BadInput, where + ", point " + std::to_string(i + 1) + ": negative frequency");
         frf.push(rec.x[i], rec.y[i] * scale, std::nan(""), true);
@@ -400,8 +415,8 @@ Result<model::Capture> captureFromUff(const std::vector<Uff58Record>& records, c
         if (rec.isComplex() || !rec.evenSpacing)
             return makeError(ErrorCode::BadInput, where + ": a time response must be real and evenly spaced");
         if (first && (rec.x.size() != first->x.size() || std::abs(rec.xStep - first->xStep) > 1e-9 * first->xStep))
-            return makeError(ErrorCode::BadInput, where + ": length or time step differs from the record of line "
-                                                      + std::to_string(first->line));
+            return makeError(ErrorCode::BadInput, where + ": length or time step differs from the record of line " +
+                                                      std::to_string(first->line));
         if (!first) {
             first = &rec;
             cap.channels.push_back({"t_s", rec.x});
@@ -411,9 +426,10 @@ Result<model::Capture> captureFromUff(const std::vector<Uff58Record>& records, c
         auto f = axisToSi(rec, rec.numerator, where + " record 9", token, assumed);
         if (!f)
             return f.error();
-        std::string name = rec.idLines.empty() || rec.idLines[0].empty() || rec.idLines[0] == "NONE"
-                               ? "node" + std::to_string(rec.responseNode) + "_dir" + std::to_string(rec.responseDirection)
-                               : rec.idLines[0];
+        std::string name =
+            rec.idLines.empty() || rec.idLines[0].empty() || rec.idLines[0] == "NONE"
+                ? "node" + std::to_string(rec.responseNode) + "_dir" + std::to_string(rec.responseDirection)
+                : rec.idLines[0];
         for (char& c : name) {
             if (c == ' ' || c == ',' || c == ';')
                 c = '_';
@@ -432,4 +448,4 @@ Result<model::Capture> captureFromUff(const std::vector<Uff58Record>& records, c
     return cap;
 }
 
-}  // namespace axistune::io
+} // namespace axistune::io

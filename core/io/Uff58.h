@@ -30,19 +30,19 @@ struct UffAxis {
 };
 
 struct Uff58Record {
-    std::size_t line = 0;  ///< file line of the "58" line
+    std::size_t line = 0; ///< file line of the "58" line
     std::vector<std::string> idLines;
-    int functionType = 0;  ///< 1 time response, 4 FRF, ...
+    int functionType = 0; ///< 1 time response, 4 FRF, ...
     int functionId = 0, version = 0, loadCase = 0;
     std::string responseName, referenceName;
     int responseNode = 0, responseDirection = 0, referenceNode = 0, referenceDirection = 0;
-    int ordinateType = 0;  ///< 2, 4 real; 5, 6 complex
+    int ordinateType = 0; ///< 2, 4 real; 5, 6 complex
     bool evenSpacing = true;
     double xMin = 0.0, xStep = 0.0, zValue = 0.0;
     UffAxis abscissa, numerator, denominator, zAxis;
-    std::vector<double> x;                  ///< abscissa of every point (filled for even spacing too)
-    std::vector<std::complex<double>> y;    ///< ordinate (imaginary part 0 for real data)
-    double lengthFactor = 1.0, forceFactor = 1.0;  ///< dataset 164 in force before this record (1 without)
+    std::vector<double> x;                        ///< abscissa of every point (filled for even spacing too)
+    std::vector<std::complex<double>> y;          ///< ordinate (imaginary part 0 for real data)
+    double lengthFactor = 1.0, forceFactor = 1.0; ///< dataset 164 in force before this record (1 without)
     bool isComplex() const { return ordinateType == 5 || ordinateType == 6; }
 };
 
@@ -59,4 +59,4 @@ Result<dsp::FrequencyResponse> frfFromUff(const Uff58Record& record, const std::
 /// required; channels named by ID line 1 (else "node<N>_dir<D>"), converted to SI as for FRFs; t_s added.
 Result<model::Capture> captureFromUff(const std::vector<Uff58Record>& records, const std::string& sourceName);
 
-}  // namespace axistune::io
+} // namespace axistune::io

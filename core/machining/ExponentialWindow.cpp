@@ -17,9 +17,10 @@ Result<ModalParameters> removeExponentialWindow(const ModalParameters& w, double
     m.dampingNsPerM = w.dampingNsPerM - 2.0 * w.massKg * sigma;
     m.stiffnessNPerM = w.stiffnessNPerM - m.dampingNsPerM * sigma - w.massKg * sigma * sigma;
     if (!(m.dampingNsPerM > 0.0))
-        return makeError(ErrorCode::OutOfRange, "the exponential window adds more damping (" + model::formatNumber(2.0 * w.massKg * sigma, 4)
-                                                    + " N·s/m) than the fitted mode has (" + model::formatNumber(w.dampingNsPerM, 4)
-                                                    + " N·s/m): use a longer time constant");
+        return makeError(ErrorCode::OutOfRange,
+                         "the exponential window adds more damping (" + model::formatNumber(2.0 * w.massKg * sigma, 4) +
+                             " N·s/m) than the fitted mode has (" + model::formatNumber(w.dampingNsPerM, 4) +
+                             " N·s/m): use a longer time constant");
     if (!(m.stiffnessNPerM > 0.0))
         return makeError(ErrorCode::OutOfRange, "removing the exponential window leaves no positive stiffness");
     return m;
@@ -54,4 +55,4 @@ Status removeExponentialWindow(std::vector<ModalParameters>& modes, const dsp::F
     return {};
 }
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

@@ -23,4 +23,4 @@ Result<double> exponentialWindowDecay(const dsp::FrequencyResponse& frf);
 /// Applies removeExponentialWindow to every mode with the FRF's σ (nothing when σ = 0).
 Status removeExponentialWindow(std::vector<ModalParameters>& modes, const dsp::FrequencyResponse& frf);
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli frf --impact and import-frf end to end, on the real records of shared/data/real.
-#include "CliRunner.h"
-
 #include "core/io/FrfCsv.h"
-
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <gtest/gtest.h>
+
+#include "CliRunner.h"
 
 using namespace axistune;
 using namespace axistune::testing;
@@ -22,13 +21,14 @@ std::string realData(const std::string& name)
     return std::string(AXISTUNE_TEST_DATA_DIR) + "/../../../shared/data/real/" + name;
 }
 
-}  // namespace
+} // namespace
 
 TEST(CliImpact, RealRecordGivesReceptanceWithUnits)
 {
     const auto dir = makeTempDir("impact");
     const auto out = (dir / "h.csv").string();
-    auto r = runCli("frf --impact --in " + realData("impact_test_raw_time.csv") + " --force force_N --response accel_m_s2 --out " + out);
+    auto r = runCli("frf --impact --in " + realData("impact_test_raw_time.csv") +
+                    " --force force_N --response accel_m_s2 --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto frf = io::readFrfCsvFile(out);
     ASSERT_TRUE(frf) << frf.error().detail;
@@ -48,11 +48,12 @@ TEST(CliImpact, RealRecordGivesReceptanceWithUnits)
 TEST(CliImpact, JitteredTimeColumnsAcceptedAndFsOverrides)
 {
     const auto dir = makeTempDir("emps");
-    auto r = runCli("frf --in " + realData("emps_DATA_EMPS.csv") + " --input u_voltage --output q_motor --out " + (dir / "e.csv").string());
+    auto r = runCli("frf --in " + realData("emps_DATA_EMPS.csv") + " --input u_voltage --output q_motor --out " +
+                    (dir / "e.csv").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("\"fs_Hz\":\"1000"), std::string::npos) << r.out;
-    auto f = runCli("frf --in " + realData("emps_DATA_EMPS.csv") + " --input u_voltage --output q_motor --fs 500 --out "
-                    + (dir / "e2.csv").string());
+    auto f = runCli("frf --in " + realData("emps_DATA_EMPS.csv") +
+                    " --input u_voltage --output q_motor --fs 500 --out " + (dir / "e2.csv").string());
     ASSERT_EQ(f.exitCode, 0) << f.err;
     EXPECT_NE(f.out.find("\"fs_Hz\":\"500\""), std::string::npos) << f.out;
 }
@@ -69,16 +70,18 @@ TEST(CliImpact, DoubleHitExitsTwoWithTheTime)
             if (i >= 20 && i <= 24)
                 force = 100.0;
             if (i >= 60 && i <= 63)
-                force = 30.0;  // the rebound 4 ms later
+                force = 30.0; // the rebound 4 ms later
             const double t = i * 1e-4;
-            std::string ts = std::to_string(t), fs = std::to_string(force), as = std::to_string(std::sin(0.3 * i) * std::exp(-0.01 * i));
+            std::string ts = std::to_string(t), fs = std::to_string(force),
+                        as = std::to_string(std::sin(0.3 * i) * std::exp(-0.01 * i));
             for (auto* s : {&ts, &fs, &as})
                 for (char& c : *s)
-                    c = c == '.' ? ',' : c;  // decimal comma, semicolon separator
+                    c = c == '.' ? ',' : c; // decimal comma, semicolon separator
             f << ts << ';' << fs << ';' << as << '\n';
         }
     }
-    auto r = runCli("frf --impact --in " + in + " --force force_N --response accel_m_s2 --out " + (dir / "h.csv").string());
+    auto r =
+        runCli("frf --impact --in " + in + " --force force_N --response accel_m_s2 --out " + (dir / "h.csv").string());
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("double hit at 0.002 s"), std::string::npos) << r.err;
 }
@@ -87,12 +90,14 @@ TEST(CliImportFrf, ColumnAndUnitsOfTheToolHolderFile)
 {
     const auto dir = makeTempDir("impfrf");
     const auto out = (dir / "h12.csv").string();
-    auto r = runCli("import-frf --in " + realData("tooltip_frf_H11_H15.csv") + " --column H12 --units um/N --out " + out);
+    auto r =
+        runCli("import-frf --in " + realData("tooltip_frf_H11_H15.csv") + " --column H12 --units um/N --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto frf = io::readFrfCsvFile(out);
     ASSERT_TRUE(frf);
-    EXPECT_DOUBLE_EQ(frf->h[1].real(), 0.004482785e-6);  // line "1.0,...,0.004482785,..." of the file, in µm/N
-    auto bad = runCli("import-frf --in " + realData("tooltip_frf_H11_H15.csv") + " --column H12 --units parsec/N --out " + out);
+    EXPECT_DOUBLE_EQ(frf->h[1].real(), 0.004482785e-6); // line "1.0,...,0.004482785,..." of the file, in µm/N
+    auto bad = runCli("import-frf --in " + realData("tooltip_frf_H11_H15.csv") +
+                      " --column H12 --units parsec/N --out " + out);
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.err.find("parsec/N"), std::string::npos);
 }

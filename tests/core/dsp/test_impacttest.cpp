@@ -6,12 +6,11 @@
 #include "core/io/CaptureCsv.h"
 #include "core/io/SampleTime.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
-#include <cstdlib>
 #include <complex>
+#include <cstdlib>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -44,7 +43,8 @@ cd receptance(double w)
 struct Synth {
     std::vector<double> force, accel;
 };
-Synth synth(std::size_t n, double fs, const std::vector<std::size_t>& starts, const std::vector<double>& amps, double gain = 1.0)
+Synth synth(std::size_t n, double fs, const std::vector<std::size_t>& starts, const std::vector<double>& amps,
+            double gain = 1.0)
 {
     Synth s;
     s.force.assign(n, 0.0);
@@ -84,7 +84,7 @@ std::size_t firstAtOrAbove(const std::vector<double>& f, double level)
     return f.size();
 }
 
-}  // namespace
+} // namespace
 
 TEST(ImpactTest, RealRecordReceptancePeakMatchesNumpyReferenceAndPublishedH11)
 {
@@ -102,8 +102,8 @@ TEST(ImpactTest, RealRecordReceptancePeakMatchesNumpyReferenceAndPublishedH11)
     std::ifstream ref(std::string(AXISTUNE_TEST_DATA_DIR) + "/impact/ref_peak.csv");
     ASSERT_TRUE(ref);
     std::string line;
-    std::getline(ref, line);  // comment
-    std::getline(ref, line);  // header
+    std::getline(ref, line); // comment
+    std::getline(ref, line); // header
     std::getline(ref, line);
     double peakHz = 0, peak = 0, h11 = 0, bin = 0;
     char c = 0;
@@ -135,16 +135,17 @@ TEST(ImpactTest, SyntheticHitReceptanceMobilityAccelerance)
     dsp::ImpactOptions o;
     o.fsHz = fs;
     o.triggerLevelN = 12.0;
-    o.preTriggerS = static_cast<double>(firstAtOrAbove(s.force, 12.0)) / fs;  // block = the whole record
+    o.preTriggerS = static_cast<double>(firstAtOrAbove(s.force, 12.0)) / fs; // block = the whole record
     o.forceWindowS = 0.01;
     o.forceRangeDb = 200.0;
     o.minFrequencyHz = 0.0;
-    for (auto q : {dsp::MotionQuantity::Displacement, dsp::MotionQuantity::Velocity, dsp::MotionQuantity::Acceleration}) {
+    for (auto q :
+         {dsp::MotionQuantity::Displacement, dsp::MotionQuantity::Velocity, dsp::MotionQuantity::Acceleration}) {
         o.output = q;
         auto r = dsp::impactFrf({{"synthetic", s.force, s.accel}}, o);
         ASSERT_TRUE(r) << r.error().detail;
         ASSERT_EQ(r->frf.size(), n / 2);
-        EXPECT_EQ(r->frf.freqHz.front(), fs / n);  // DC excluded
+        EXPECT_EQ(r->frf.freqHz.front(), fs / n); // DC excluded
         for (std::size_t k = 50; k < 1000; k += 37) {
             const double w = 2.0 * kPi * r->frf.freqHz[k];
             const cd want = receptance(w) * std::pow(cd(0.0, w), static_cast<int>(q));
@@ -188,7 +189,7 @@ TEST(ImpactTest, CoherenceAcrossHitsIsTheAnalyticValue)
 TEST(ImpactTest, SeveralHitsInOneRecord)
 {
     const double fs = 10240.0;
-    const std::size_t n = 4096;  // 0.4 s, hits every 0.1 s; the response decays by e^-16 in 0.1 s
+    const std::size_t n = 4096; // 0.4 s, hits every 0.1 s; the response decays by e^-16 in 0.1 s
     auto s = synth(n, fs, {30, 1054, 2078, 3102}, {90.0, 110.0, 100.0, 95.0});
     dsp::ImpactOptions o;
     o.fsHz = fs;

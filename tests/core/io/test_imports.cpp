@@ -5,12 +5,11 @@
 #include "core/io/TableImport.h"
 #include "core/io/Uff58.h"
 
-#include <gtest/gtest.h>
-
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
 using namespace axistune;
@@ -31,7 +30,7 @@ double num(const std::string& s)
     return v;
 }
 
-}  // namespace
+} // namespace
 
 TEST(FrfUnits, MicrometrePerNewtonIsConvertedAndUnknownUnitRefused)
 {
@@ -50,7 +49,7 @@ TEST(FrfUnits, MicrometrePerNewtonIsConvertedAndUnknownUnitRefused)
     std::istringstream accel("# units=g/N\nf_Hz,re,im\n100,1,0\n");
     auto a = io::readFrfCsv(accel, "a.csv");
     ASSERT_TRUE(a);
-    EXPECT_DOUBLE_EQ(a->h[0].real(), 9.80665);  // standard gravity, by definition
+    EXPECT_DOUBLE_EQ(a->h[0].real(), 9.80665); // standard gravity, by definition
     EXPECT_EQ(a->metadata.at("units"), "m/s2/N");
 }
 
@@ -129,7 +128,7 @@ TEST(SampleTime, JitteredColumnsAcceptedGapsRefused)
     auto s = io::sampleTiming(t, "j.csv, column 't_s'", 5);
     ASSERT_TRUE(s) << s.error().detail;
     EXPECT_NEAR(s->fsHz, 1000.0, 1e-4);
-    t.erase(t.begin() + 500);  // a lost sample
+    t.erase(t.begin() + 500); // a lost sample
     auto g = io::sampleTiming(t, "g.csv, column 't_s'", 5);
     ASSERT_FALSE(g);
     EXPECT_NE(g.error().detail.find("g.csv, column 't_s', line"), std::string::npos) << g.error().detail;
@@ -137,7 +136,8 @@ TEST(SampleTime, JitteredColumnsAcceptedGapsRefused)
 
 TEST(SampleTime, RealImpactAndEmpsTimeColumns)
 {
-    for (const auto& [file, fs] : {std::pair{"impact_test_raw_time.csv", 51200.0}, std::pair{"emps_DATA_EMPS.csv", 1000.0}}) {
+    for (const auto& [file, fs] :
+         {std::pair{"impact_test_raw_time.csv", 51200.0}, std::pair{"emps_DATA_EMPS.csv", 1000.0}}) {
         auto t = io::readTableFile(realData(file), {});
         ASSERT_TRUE(t) << t.error().detail;
         auto s = io::sampleTiming(t->channel("t_s")->data, file);
@@ -207,13 +207,14 @@ TEST(Uff58, IndependentFileReadBackExactly)
     // record 3: time response
     auto cap = io::captureFromUff(*recs, "frf.unv");
     ASSERT_TRUE(cap) << cap.error().detail;
-    EXPECT_NEAR(num(cap->metadata.at("fs_Hz")), 1.0 / 4.88281e-4, 1e-9);  // the increment as written (E13.5)
+    EXPECT_NEAR(num(cap->metadata.at("fs_Hz")), 1.0 / 4.88281e-4, 1e-9); // the increment as written (E13.5)
     EXPECT_FALSE(io::frfFromUff((*recs)[2], "frf.unv"));
 }
 
 TEST(Uff58, TruncatedFileNamesTheLine)
 {
-    std::istringstream in("    -1\n    58\nid1\nid2\nid3\nid4\nid5\n    4         1    1         0 NONE               1   1 NONE               1   1\n"
+    std::istringstream in("    -1\n    58\nid1\nid2\nid3\nid4\nid5\n    4         1    1         0 NONE               "
+                          "1   1 NONE               1   1\n"
                           "         6         3         1  1.00000E+01  5.00000E-01  0.00000E+00\n");
     auto r = io::readUff58(in, "cut.unv");
     ASSERT_FALSE(r);

@@ -2,10 +2,9 @@
 // The exponential window's damping removed from fitted modes (core/machining/ExponentialWindow).
 #include "core/machining/ExponentialWindow.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
+#include <gtest/gtest.h>
 
 using namespace axistune;
 
@@ -32,7 +31,7 @@ TEST(ExponentialWindow, WindowedModeMapsBackExactly)
 
 TEST(ExponentialWindow, MoreWindowDampingThanTheModeIsRefused)
 {
-    auto r = machining::removeExponentialWindow({0.4, 10.0, 3e7}, 20.0);  // 2mσ = 16 > 10
+    auto r = machining::removeExponentialWindow({0.4, 10.0, 3e7}, 20.0); // 2mσ = 16 > 10
     ASSERT_FALSE(r);
     EXPECT_NE(r.error().detail.find("longer time constant"), std::string::npos);
     dsp::FrequencyResponse frf;
