@@ -3,6 +3,7 @@
 #include "core/io/TableImport.h"
 
 #include "core/io/FrfCsv.h"
+#include "core/io/TextFile.h"
 #include "core/io/Uff58.h"
 #include "core/model/Units.h"
 
@@ -240,10 +241,7 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
 
 Result<model::Capture> readTableFile(const std::string& path, const TableImportOptions& options)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
-    return readTable(f, path, options);
+    return readFromFile(path, [&](std::istream& in, const std::string& p) { return readTable(in, p, options); });
 }
 
 bool looksLikeHalscope(const std::string& firstLine)
@@ -317,10 +315,7 @@ Result<model::Capture> readHalscope(std::istream& in, const std::string& sourceN
 
 Result<model::Capture> readHalscopeFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
-    return readHalscope(f, path);
+    return readFromFile(path, [&](std::istream& in, const std::string& p) { return readHalscope(in, p); });
 }
 
 std::string detectImportFormat(const std::string& path)

@@ -26,4 +26,15 @@ Status writeTextFile(const std::string& path, WriteFn&& write)
     return Status::success();
 }
 
+/// Opens `path` for reading and returns `read(std::istream&, path)`; NotFound naming the path when it cannot
+/// be opened. Shared by the import readers (table, halscope, UFF58).
+template <typename ReadFn>
+auto readFromFile(const std::string& path, ReadFn&& read) -> decltype(read(std::declval<std::istream&>(), path))
+{
+    std::ifstream f(path);
+    if (!f)
+        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
+    return read(static_cast<std::istream&>(f), path);
+}
+
 }  // namespace axistune::io

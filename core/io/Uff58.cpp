@@ -3,6 +3,7 @@
 #include "core/io/Uff58.h"
 
 #include "core/io/FrfCsv.h"
+#include "core/io/TextFile.h"
 #include "core/model/Units.h"
 
 #include <algorithm>
@@ -356,10 +357,7 @@ Result<std::vector<Uff58Record>> readUff58(std::istream& in, const std::string& 
 
 Result<std::vector<Uff58Record>> readUff58File(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
-    return readUff58(f, path);
+    return readFromFile(path, [&](std::istream& in, const std::string& p) { return readUff58(in, p); });
 }
 
 Result<dsp::FrequencyResponse> frfFromUff(const Uff58Record& rec, const std::string& sourceName)
