@@ -323,9 +323,9 @@ bool MachiningTapPage::useAsToolFrf(const QString& direction)
         setError(QString::fromStdString(tool.error().detail));
         return false;
     }
-    for (const auto& [path, modes] :
+    for (const auto& [frfPath, modes] :
          {std::pair{m_xPath, &tool.value().modesX}, std::pair{m_yPath, &tool.value().modesY}}) {
-        auto frf = io::readFrfCsvFile(path.toStdString());
+        auto frf = io::readFrfCsvFile(frfPath.toStdString());
         if (!frf) {
             setError(QString::fromStdString(frf.error().detail));
             return false;
