@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -118,6 +119,16 @@ Result<dsp::FrequencyResponse> frfFromCapture(const FrfOptions& o)
     w.noverlap = o.noverlap;
     w.window = o.window == "boxcar" ? dsp::WelchWindow::Rectangular : dsp::WelchWindow::Hann;
     const auto est = o.estimator == "h2" ? dsp::FrfEstimator::H2 : dsp::FrfEstimator::H1;
+    // A hammer pulse (crest factor far above a noise or multisine excitation's 2–5) in Welch segments
+    // gives a wrong magnitude and a meaningless coherence (issue 19): say so, the result stays as asked.
+    double peak = 0.0, power = 0.0;
+    for (double v : x->data) {
+        peak = std::max(peak, std::abs(v));
+        power += v * v;
+    }
+    if (power > 0.0 && peak / std::sqrt(power / static_cast<double>(x->data.size())) > 20.0)
+        std::cerr << "axistune-cli frf: note: column '" << o.inputCol
+                  << "' looks like a hammer impact (crest factor above 20); use --impact for tap tests\n";
     auto frf = dsp::welchFrf(x->data, y->data, *fs, w, est);
     if (!frf)
         return makeError(frf.error().code, o.inPath + ": " + frf.error().detail);

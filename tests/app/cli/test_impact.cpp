@@ -45,6 +45,20 @@ TEST(CliImpact, RealRecordGivesReceptanceWithUnits)
     EXPECT_NEAR(bestHz, 1056.0, 2.0);
 }
 
+TEST(CliImpact, WelchOnAHammerRecordSaysUseImpact)
+{
+    const auto dir = makeTempDir("welchimpact");
+    auto r = runCli("frf --in " + realData("impact_test_raw_time.csv") + " --input force_N --output accel_m_s2 --out " +
+                    (dir / "w.csv").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("use --impact"), std::string::npos) << r.err;
+    // a noise-like excitation gets no such note (EMPS control voltage)
+    auto e = runCli("frf --in " + realData("emps_DATA_EMPS.csv") + " --input u_voltage --output q_motor --out " +
+                    (dir / "e.csv").string());
+    ASSERT_EQ(e.exitCode, 0) << e.err;
+    EXPECT_EQ(e.err.find("use --impact"), std::string::npos) << e.err;
+}
+
 TEST(CliImpact, JitteredTimeColumnsAcceptedAndFsOverrides)
 {
     const auto dir = makeTempDir("emps");
