@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/Units.h"
 
-#include <cstdio>
-
 #include <array>
 #include <numbers>
 
@@ -78,7 +76,7 @@ constexpr std::array kUnits{
     UnitInfo{"g/N", "g/N", "m/s2/N", 9.80665},
 };
 
-}  // namespace
+} // namespace
 
 Result<UnitInfo> findUnit(std::string_view token)
 {
@@ -98,8 +96,8 @@ Result<double> convertUnit(double value, std::string_view from, std::string_view
     if (!t)
         return t.error();
     if (f->si != t->si) {
-        return makeError(ErrorCode::BadInput, "cannot convert '" + std::string(from) + "' to '" + std::string(to)
-                                                  + "': different quantities");
+        return makeError(ErrorCode::BadInput, "cannot convert '" + std::string(from) + "' to '" + std::string(to) +
+                                                  "': different quantities");
     }
     return value * f->toSi / t->toSi;
 }
@@ -118,13 +116,9 @@ std::string unitLabel(std::string_view token)
     return f ? std::string(f->label) : std::string(token);
 }
 
-std::vector<UnitInfo> allUnits() { return {kUnits.begin(), kUnits.end()}; }
-
-std::string formatNumber(double v, int significant)
+std::vector<UnitInfo> allUnits()
 {
-    char b[48];
-    std::snprintf(b, sizeof b, "%.*g", significant, v);
-    return b;
+    return {kUnits.begin(), kUnits.end()};
 }
 
-}  // namespace axistune::model
+} // namespace axistune::model
