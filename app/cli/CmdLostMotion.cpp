@@ -4,6 +4,7 @@
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/io/BallBarCsv.h"
+#include "core/model/Constants.h"
 #include "core/tuning/LostMotion.h"
 
 #include <fstream>
@@ -16,7 +17,7 @@
 namespace axistune::cli {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 struct LostMotionCliOptions {
     std::vector<std::string> paths;
@@ -42,8 +43,8 @@ Status writeCompensated(const std::string& path, const std::vector<tuning::Compe
     for (std::size_t k = 0; k < preds.size(); ++k) {
         const auto& p = preds[k];
         for (std::size_t i = 0; i < p.angleRad.size(); ++i)
-            f << k << ',' << p.angleRad[i] / kDeg << ',' << p.measuredM[i] * 1e6 << ',' << p.proposedM[i] * 1e6 << ','
-              << p.conventionalM[i] * 1e6 << '\n';
+            f << k << ',' << p.angleRad[i] / kRadPerDeg << ',' << p.measuredM[i] * 1e6 << ',' << p.proposedM[i] * 1e6
+              << ',' << p.conventionalM[i] * 1e6 << '\n';
     }
     if (!f)
         return makeError(ErrorCode::Io, path + ": write failed");
@@ -79,7 +80,7 @@ nlohmann::json fitJson(const LostMotionCliOptions& o, const tuning::LostMotionFi
                        {"dx_m", p.dxM},
                        {"residual_m", fit->residualsM[i]},
                        {"file", p.source},
-                       {"angle_deg", p.angleRad / kDeg}});
+                       {"angle_deg", p.angleRad / kRadPerDeg}});
     }
     j["points"] = pts;
     j["residual_rms_m"] = fit->residualRmsM;

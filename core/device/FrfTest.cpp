@@ -10,6 +10,7 @@
 #include "core/dsp/Excitation.h"
 #include "core/dsp/InjectionHold.h"
 #include "core/dsp/Welch.h"
+#include "core/model/Constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -266,7 +267,7 @@ double frfExcitation(const FrfPlan& plan, double s)
     if (it == plan.segments.end())
         return 0.0;
     const double cycles = std::fmod(it->freqHz * (s - static_cast<double>(it->windowStart)) / plan.fsHz, 1.0);
-    return plan.amplitudeNm * std::sin(2.0 * std::numbers::pi * cycles + it->phaseOffsetDeg * std::numbers::pi / 180.0);
+    return plan.amplitudeNm * std::sin(model::kTwoPi * cycles + it->phaseOffsetDeg * model::kRadPerDeg);
 }
 
 Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace)

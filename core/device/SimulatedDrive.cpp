@@ -3,9 +3,9 @@
 // §1.2, §2.3 stepped with the velocity loop open; docs/simulator.md "Current-step test".
 #include "core/device/SimulatedDrive.h"
 
-#include "core/model/Units.h"
-
 #include "core/device/ModbusDrive.h"
+#include "core/model/Constants.h"
+#include "core/model/Units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -294,7 +294,7 @@ Result<FrfMeasurement> SimulatedDrive::readFrequencyResponse()
 Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestRequest& r)
 {
     const auto& v = sim.parameters();
-    const double rated = v.at("motor.rated_current") * v.at("motor.torque_constant");
+    const double rated = model::ratedTorqueNm(v.at("motor.rated_current"), v.at("motor.torque_constant"));
     if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0) || r.amplitudePct > kMaxFrfAmplitudePct) {
         char buf[200];
         std::snprintf(buf, sizeof buf, "FRF amplitude %g %% of rated torque refused: it must lie in (0, %g] %% (rated torque %.4g Nm)",
@@ -315,14 +315,14 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     if (r.minMeasureS > 0.0)
         timing.minMeasureS = r.minMeasureS;
     if (r.frfMethod == FrfMethod::Multisine)
-        return startMultisine(sim, r, r.amplitudePct / 100.0 * rated, timing);
+        return startMultisine(sim, r, model::torqueNmFromRatedPct(r.amplitudePct, rated), timing);
     FrfPlanOptions po;
     po.method = r.frfMethod;
     po.fsHz = 1.0 / sim.tracePeriod();
     po.fminHz = r.fminHz;
     po.fmaxHz = r.fmaxHz;
     po.points = r.points;
-    po.amplitudeNm = r.amplitudePct / 100.0 * rated;
+    po.amplitudeNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
     po.timing = timing;
     po.voltageLimitV = v.at("drive.max_voltage");
     auto plan = planFrfTest(po);

@@ -9,6 +9,7 @@
 #include "core/dsp/Multisine.h"
 
 #include "core/dsp/Fft.h"
+#include "core/model/Constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,7 @@
 namespace axistune::dsp {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 constexpr std::size_t kMaxWindow = std::size_t{1} << 20;
 constexpr std::size_t kMaxLines = 20000;
 

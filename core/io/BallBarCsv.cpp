@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Ball-bar CSV reader and writer (format: DESIGN.md "File formats", docs/ballbar.md).
 #include "core/io/BallBarCsv.h"
+
 #include "core/io/TextFile.h"
+#include "core/model/Constants.h"
 
 #include <algorithm>
 #include <cctype>
@@ -17,7 +19,7 @@
 namespace axistune::io {
 namespace {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 std::string trim(std::string s)
 {
@@ -154,8 +156,8 @@ template <typename LineOf> Status checkSamples(const BallBarTrace& t, const std:
         if (sign * (t.angleRad[i] - t.angleRad[i - 1]) <= 0.0) {
             std::ostringstream os;
             os << src << lineOf(i) << ", column 'angle_deg': angles must be strictly "
-               << (sign > 0 ? "increasing" : "decreasing") << " (" << t.angleRad[i - 1] / kDegToRad << " then "
-               << t.angleRad[i] / kDegToRad << ")";
+               << (sign > 0 ? "increasing" : "decreasing") << " (" << t.angleRad[i - 1] / kRadPerDeg << " then "
+               << t.angleRad[i] / kRadPerDeg << ")";
             return bad(os.str());
         }
     }
@@ -218,7 +220,7 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
                 return bad(where + ", column '" + kCols[c] + "': not a finite number ('" + fields[c] + "')");
             v[c] = *n;
         }
-        t.angleRad.push_back(v[0] * kDegToRad);
+        t.angleRad.push_back(v[0] * kRadPerDeg);
         t.deviationM.push_back(v[1] * 1e-6);
         sampleLines.push_back(lineNo);
     }
@@ -271,7 +273,7 @@ Status writeBallBarCsv(std::ostream& out, const BallBarTrace& t)
     }
     out << "angle_deg,deviation_um\n";
     for (std::size_t i = 0; i < t.size(); ++i)
-        out << t.angleRad[i] / kDegToRad << ',' << t.deviationM[i] * 1e6 << '\n';
+        out << t.angleRad[i] / kRadPerDeg << ',' << t.deviationM[i] * 1e6 << '\n';
     if (!out)
         return makeError(ErrorCode::Io, src + ": write failed");
     return Status::success();

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // FRF CSV reader and writer (DESIGN.md "File formats").
 #include "core/io/FrfCsv.h"
+
 #include "core/io/TextFile.h"
+#include "core/model/Constants.h"
 #include "core/model/Units.h"
 
 #include <charconv>
@@ -182,7 +184,7 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
                 return s.error();
             if (auto s = number(*cols->phaseDeg, "phase_deg", deg); !s)
                 return s.error();
-            h = std::polar(std::pow(10.0, db / 20.0), deg * std::numbers::pi / 180.0);
+            h = std::polar(std::pow(10.0, db / 20.0), deg * model::kRadPerDeg);
         }
         double coh = std::nan("");
         if (cols->coherence && !cells[*cols->coherence].empty() && cells[*cols->coherence] != "nan") {

@@ -5,6 +5,8 @@
 // instead of the reference's 20-point quadrature.
 #include "core/machining/ToolModel.h"
 
+#include "core/model/Constants.h"
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -93,7 +95,7 @@ std::pair<double, double> engagementAngles(const CuttingConditions& cut)
 
 Eigen::Matrix2d integrateToothMatrix(const CuttingConditions& cut, double a, double b)
 {
-    constexpr double kTwoPi = 2.0 * std::numbers::pi;
+    using model::kTwoPi;
     const auto [st, en] = engagementAngles(cut);
     Eigen::Matrix2d sum = Eigen::Matrix2d::Zero();
     const long mLo = static_cast<long>(std::floor((a - en) / kTwoPi));

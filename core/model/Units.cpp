@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/Units.h"
 
+#include "core/model/Constants.h"
+
 #include <array>
 #include <numbers>
 
 namespace axistune::model {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // One row per unit. The SI unit of each quantity has toSi = 1.
 constexpr std::array kUnits{
@@ -18,13 +18,13 @@ constexpr std::array kUnits{
     UnitInfo{"um", "µm", "m", 1e-6},
     UnitInfo{"nm", "nm", "m", 1e-9},
     UnitInfo{"rad", "rad", "rad", 1.0},
-    UnitInfo{"deg", "deg", "rad", kPi / 180.0},
-    UnitInfo{"rev", "rev", "rad", 2.0 * kPi},
+    UnitInfo{"deg", "deg", "rad", kRadPerDeg},
+    UnitInfo{"rev", "rev", "rad", kTwoPi},
     UnitInfo{"m/s", "m/s", "m/s", 1.0},
     UnitInfo{"mm/min", "mm/min", "m/s", 1e-3 / 60.0},
     UnitInfo{"rad/s", "rad/s", "rad/s", 1.0},
-    UnitInfo{"min^-1", "min⁻¹", "rad/s", 2.0 * kPi / 60.0},
-    UnitInfo{"deg/s", "deg/s", "rad/s", kPi / 180.0},
+    UnitInfo{"min^-1", "min⁻¹", "rad/s", kRadPerSPerRpm},
+    UnitInfo{"deg/s", "deg/s", "rad/s", kRadPerDeg},
     UnitInfo{"s", "s", "s", 1.0},
     UnitInfo{"ms", "ms", "s", 1e-3},
     UnitInfo{"us", "µs", "s", 1e-6},
@@ -45,13 +45,13 @@ constexpr std::array kUnits{
     UnitInfo{"V/(A*s)", "V/(A·s)", "V/(A*s)", 1.0},
     UnitInfo{"Nm/A", "N·m/A", "Nm/A", 1.0},
     UnitInfo{"V*s/rad", "V·s/rad", "V*s/rad", 1.0},
-    UnitInfo{"V/kmin^-1", "V/(1000 min⁻¹)", "V*s/rad", 1.0 / (1000.0 * 2.0 * kPi / 60.0)},
+    UnitInfo{"V/kmin^-1", "V/(1000 min⁻¹)", "V*s/rad", 1.0 / (1000.0 * kRadPerSPerRpm)},
     UnitInfo{"Nm*s/rad", "N·m·s/rad", "Nm*s/rad", 1.0},
     UnitInfo{"Nm/rad", "N·m/rad", "Nm/rad", 1.0},
     UnitInfo{"N/m", "N/m", "N/m", 1.0},
     UnitInfo{"N*s/m", "N·s/m", "N*s/m", 1.0},
     UnitInfo{"m/rad", "m/rad", "m/rad", 1.0},
-    UnitInfo{"mm/rev", "mm/rev", "m/rad", 1e-3 / (2.0 * kPi)},
+    UnitInfo{"mm/rev", "mm/rev", "m/rad", 1e-3 / kTwoPi},
     UnitInfo{"m/Nm", "m/(N·m)", "m/Nm", 1.0},
     UnitInfo{"um/Nm", "µm/(N·m)", "m/Nm", 1e-6},
     UnitInfo{"1/Nm", "1/(N·m)", "1/Nm", 1.0},

@@ -4,6 +4,8 @@
 // spec/lost-motion-and-two-inertia.md §1.7–1.9). The discrete-time equations are in docs/simulator.md.
 #include "core/sim/AxisSimulator.h"
 
+#include "core/model/Constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -12,7 +14,7 @@
 namespace axistune::sim {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 
 Result<int> integerRatio(double num, double den, const std::string& what)
 {

@@ -5,6 +5,7 @@
 // Conventions: docs/ballbar.md "Simulated circle tests" and "Circle tests through the drive".
 #include "core/sim/CircleRun.h"
 
+#include "core/model/Constants.h"
 #include "core/sim/AxisSimulator.h"
 
 #include <cmath>
@@ -14,8 +15,8 @@
 namespace axistune::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using model::kPi;
+using model::kRadPerDeg;
 constexpr double kTailS = 0.2;  ///< recorded after the end of the path (the axes settle)
 
 std::string fmt(double v)
@@ -64,13 +65,13 @@ Result<CirclePath> CirclePath::plan(const CircleTestOptions& o)
     p.m_sigma = o.direction == model::CircleDirection::Ccw ? 1.0 : -1.0;
     p.m_dwell = o.dwellS;
     p.m_omega = o.feedMPerS / o.radiusM;
-    p.m_sAcc = 0.5 * o.leadArcDeg * kDeg;
+    p.m_sAcc = 0.5 * o.leadArcDeg * kRadPerDeg;
     p.m_alpha = p.m_omega * p.m_omega / (2.0 * p.m_sAcc);
     p.m_tAcc = p.m_omega / p.m_alpha;
-    p.m_sFrom = o.leadArcDeg * kDeg;
+    p.m_sFrom = o.leadArcDeg * kRadPerDeg;
     p.m_sTo = p.m_sFrom + 2.0 * kPi;
     p.m_tConst = (p.m_sTo + p.m_sFrom - 2.0 * p.m_sAcc) / p.m_omega;
-    p.m_phi0 = o.dataStartDeg * kDeg - p.m_sigma * p.m_sFrom;
+    p.m_phi0 = o.dataStartDeg * kRadPerDeg - p.m_sigma * p.m_sFrom;
     return p;
 }
 

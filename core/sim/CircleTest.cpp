@@ -6,6 +6,7 @@
 // conventions: docs/ballbar.md "Simulated circle tests".
 #include "core/sim/CircleTest.h"
 
+#include "core/model/Constants.h"
 #include "core/sim/AxisSimulator.h"
 #include "core/sim/CircleRun.h"
 
@@ -17,8 +18,8 @@
 namespace axistune::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using model::kPi;
+using model::kRadPerDeg;
 
 double wrapPi(double a)
 {
@@ -41,7 +42,7 @@ double reversalTorqueChange(const Samples& d, const CircleTestOptions& o, double
                             double sFrom, double sTo)
 {
     const auto& torque = axis == 0 ? d.tx : d.ty;
-    const double ex = o.torqueExcludeDeg * kDeg, win = o.torqueWindowDeg * kDeg;
+    const double ex = o.torqueExcludeDeg * kRadPerDeg, win = o.torqueWindowDeg * kRadPerDeg;
     double sum = 0.0;
     int count = 0;
     for (int k = -2; k <= 6; ++k) {

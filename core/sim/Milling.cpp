@@ -4,6 +4,8 @@
 // loss-of-contact nonlinearity; modes integrated exactly under a zero-order hold of the force.
 #include "core/sim/Milling.h"
 
+#include "core/model/Constants.h"
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -11,7 +13,7 @@
 namespace axistune::sim {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 
 Status checkModes(const std::vector<MillingMode>& modes, const std::string& dir)
 {
@@ -77,7 +79,7 @@ Result<MillingProcess> MillingProcess::create(const MillingSetup& setup)
     if (p.m_k < 8)
         p.m_k = 8;
     p.m_h = p.m_tau / p.m_k;
-    p.m_omega = kTwoPi * setup.spindleRpm / 60.0;
+    p.m_omega = setup.spindleRpm * model::kRadPerSPerRpm;
     const double r = setup.radialImmersion;
     if (setup.upMilling) {
         p.m_entry = 0.0;

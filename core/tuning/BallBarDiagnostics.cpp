@@ -5,6 +5,8 @@
 // (ISO 230-4 least-squares circle for centre, radius and circularity).
 #include "core/tuning/BallBarDiagnostics.h"
 
+#include "core/model/Constants.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -15,8 +17,8 @@
 namespace axistune::tuning {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using model::kPi;
+using model::kRadPerDeg;
 constexpr std::size_t kMinSideSamples = 4;
 
 double wrapPi(double a)
@@ -177,8 +179,12 @@ Coverage coverageOf(const io::BallBarTrace& t)
 /// Arguments of the "full_circle" refusal: source, covered °, from °, to °, largest gap °, allowed gap °.
 std::vector<std::string> coverageArgs(const io::BallBarTrace& t, const Coverage& c, const BallBarOptions& opt)
 {
-    return {t.source,          fmt((2.0 * kPi - c.maxGap) / kDeg, 1), fmt(c.from / kDeg, 1), fmt(c.to / kDeg, 1),
-            fmt(c.maxGap / kDeg, 1), fmt(opt.maxGapDeg, 1)};
+    return {t.source,
+            fmt((2.0 * kPi - c.maxGap) / kRadPerDeg, 1),
+            fmt(c.from / kRadPerDeg, 1),
+            fmt(c.to / kRadPerDeg, 1),
+            fmt(c.maxGap / kRadPerDeg, 1),
+            fmt(opt.maxGapDeg, 1)};
 }
 
 } // namespace
@@ -186,7 +192,7 @@ std::vector<std::string> coverageArgs(const io::BallBarTrace& t, const Coverage&
 Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, const std::string& what)
 {
     const Coverage c = coverageOf(t);
-    if (c.maxGap <= opt.maxGapDeg * kDeg)
+    if (c.maxGap <= opt.maxGapDeg * kRadPerDeg)
         return Status::success();
     const auto a = coverageArgs(t, c, opt);
     return makeError(ErrorCode::BadInput, a[0] + ": " + what +
@@ -224,8 +230,8 @@ Result<double> circularityOf(std::span<const double> angle, std::span<const doub
 Result<ReversalEvent> fitReversal(const io::BallBarTrace& t, int axis, double rev, const BallBarOptions& opt)
 {
     const double sigma = t.directionSign();
-    const double ex = opt.excludeDeg * kDeg;
-    const double outer = ex + opt.fitWindowDeg * kDeg;
+    const double ex = opt.excludeDeg * kRadPerDeg;
+    const double outer = ex + opt.fitWindowDeg * kRadPerDeg;
     std::vector<std::size_t> fitIdx, zoneIdx;
     std::size_t before = 0, after = 0;
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -239,7 +245,7 @@ Result<ReversalEvent> fitReversal(const io::BallBarTrace& t, int axis, double re
     }
     if (before < kMinSideSamples || after < kMinSideSamples)
         return makeError(ErrorCode::BadInput,
-                         t.source + ": the " + axisName(axis) + " reversal at " + fmt(rev / kDeg, 0) +
+                         t.source + ": the " + axisName(axis) + " reversal at " + fmt(rev / kRadPerDeg, 0) +
                              "° is not covered (needs at least " + std::to_string(kMinSideSamples) + " samples from " +
                              fmt(opt.excludeDeg, 1) + "° to " + fmt(opt.excludeDeg + opt.fitWindowDeg, 1) +
                              "° on each side; found " + std::to_string(before) + " before, " + std::to_string(after) +
@@ -440,7 +446,7 @@ Status jointFit(const io::BallBarTrace& t, const BallBarOptions& opt, RunDiagnos
 {
     std::vector<std::size_t> idx;
     for (std::size_t i = 0; i < t.size(); ++i) {
-        if (!inAnySpikeZone(t.angleRad[i], run.sigma, opt.excludeDeg * kDeg))
+        if (!inAnySpikeZone(t.angleRad[i], run.sigma, opt.excludeDeg * kRadPerDeg))
             idx.push_back(i);
     }
     constexpr Eigen::Index kSmooth = 9;

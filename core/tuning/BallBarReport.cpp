@@ -2,6 +2,7 @@
 // Ball-bar report: combines per-run diagnostics (BallBarDiagnostics.cpp) over CW and CCW runs.
 // Squareness and servo mismatch both give a sin2θ term; servo mismatch changes sign with the travel
 // direction (k = γR/2 + σvΔτ/2, docs/ballbar.md), so two directions separate them by least squares.
+#include "core/model/Constants.h"
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include <Eigen/Dense>
@@ -12,7 +13,7 @@
 namespace axistune::tuning {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 std::string fmt(double v, int prec = 2)
 {
@@ -132,8 +133,8 @@ void combineReversals(BallBarReport& rep, const BallBarOptions& opt)
                                 "backlash", args});
     }
     for (const auto& s : rep.spikes) {
-        const std::vector<std::string> args{fmt(s.angleRad / kDeg, 1), fmt(opt.excludeDeg, 1), axisName(s.axis),
-                                            fmt(s.widthRad / kDeg, 2)};
+        const std::vector<std::string> args{fmt(s.angleRad / kRadPerDeg, 1), fmt(opt.excludeDeg, 1), axisName(s.axis),
+                                            fmt(s.widthRad / kRadPerDeg, 2)};
         rep.findings.push_back({std::string("reversal_spike_") + (s.axis == 0 ? "x" : "y"), s.heightM * 1e6, "um",
                                 "peak residual at " + args[0] + "°, within ±" + args[1] + "° of a " + args[2] +
                                     " reversal (width " + args[3] +
