@@ -5,11 +5,11 @@
 
 #include "core/device/ModbusDrive.h"
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/model/Units.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -296,10 +296,10 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     const auto& v = sim.parameters();
     const double rated = model::ratedTorqueNm(v.at("motor.rated_current"), v.at("motor.torque_constant"));
     if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0) || r.amplitudePct > kMaxFrfAmplitudePct) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "FRF amplitude %g %% of rated torque refused: it must lie in (0, %g] %% (rated torque %.4g Nm)",
-                      r.amplitudePct, kMaxFrfAmplitudePct, rated);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange, "FRF amplitude " + model::formatNumber(r.amplitudePct, 6) +
+                                                    " % of rated torque refused: it must lie in (0, " +
+                                                    model::formatNumber(kMaxFrfAmplitudePct, 6) + "] % (rated torque " +
+                                                    model::formatNumber(rated, 4) + " Nm)");
     }
     if (!(r.settleS >= 0.0) || !(r.minMeasureS >= 0.0))
         return makeError(ErrorCode::OutOfRange, "FRF settle and measure times must not be negative");
@@ -412,37 +412,33 @@ Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const T
     const auto& v = sim.parameters();
     const double iMax = v.at("motor.max_current"), kt = v.at("motor.torque_constant"), j = v.at("plant.inertia_motor");
     const double limitA = kMaxCurrentStepFraction * iMax;
-    char buf[320];
+    const auto g = [](double x) { return model::formatNumber(x, 6); }; // printf's %g
     if (!std::isfinite(r.amplitude) || r.amplitude == 0.0 || std::abs(r.amplitude) > limitA) {
-        std::snprintf(buf, sizeof buf,
-                      "current step %g A refused: it must be finite, non-zero and at most %g %% of motor.max_current "
-                      "(%g A)",
-                      r.amplitude, 100.0 * kMaxCurrentStepFraction, limitA);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange,
+                         "current step " + g(r.amplitude) + " A refused: it must be finite, non-zero and at most " +
+                             g(100.0 * kMaxCurrentStepFraction) + " % of motor.max_current (" + g(limitA) + " A)");
     }
     if (!std::isfinite(r.durationS) || !(r.durationS > 0.0) || r.durationS > kMaxCurrentStepS) {
-        std::snprintf(buf, sizeof buf, "current-step recording %g s refused: it must lie in (0, %g] s", r.durationS,
-                      kMaxCurrentStepS);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
+                                                    " s refused: it must lie in (0, " + g(kMaxCurrentStepS) + "] s");
     }
     const double h = sim.currentPeriod();
     const auto ticks = std::llround(r.durationS / h);
     const auto preTicks = std::max<long long>(1, std::llround(0.1 * r.durationS / h));
     if (ticks < preTicks + 2) {
-        std::snprintf(buf, sizeof buf, "current-step recording %g s refused: shorter than a few current periods (%g s)",
-                      r.durationS, h);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
+                                                    " s refused: shorter than a few current periods (" + g(h) + " s)");
     }
     // With the velocity loop open the motor accelerates freely: k_t·|I|·t / J_m at the end of the record, with
     // the rotor inertia alone (a motor datum; the coupled load can only make it slower).
     const double stepS = static_cast<double>(ticks - preTicks) * h;
     const double speed = j > 0.0 ? kt * std::abs(r.amplitude) * stepS / j : std::numeric_limits<double>::infinity();
     if (!(speed <= kMaxCurrentStepSpeedRadS)) {
-        std::snprintf(buf, sizeof buf,
-                      "current step %g A for %g s refused: the motor would reach about %.3g rad/s (k_t·I·t/J_m with the "
-                      "rotor inertia J_m %g kg·m²), above the %g rad/s a current step may reach; lower or shorten it",
-                      r.amplitude, stepS, speed, j, kMaxCurrentStepSpeedRadS);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange,
+                         "current step " + g(r.amplitude) + " A for " + g(stepS) +
+                             " s refused: the motor would reach about " + model::formatNumber(speed, 3) +
+                             " rad/s (k_t·I·t/J_m with the rotor inertia J_m " + g(j) + " kg·m²), above the " +
+                             g(kMaxCurrentStepSpeedRadS) + " rad/s a current step may reach; lower or shorten it");
     }
     // The record starts on a whole current tick; the step comes preTicks later and holds to the end.
     const double t0 = sim.time();
@@ -453,8 +449,7 @@ Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const T
     sim.startTrace(sim::TraceRate::Current);
     m_clampsAtStart = sim.voltageClampCount();
     m_recordEnd = t0 + static_cast<double>(ticks) * h;
-    std::snprintf(buf, sizeof buf, "%.17g", tStep);
-    m_stepStart = buf;
+    m_stepStart = model::formatNumber(tStep, 17);
     return static_cast<double>(ticks) * h + kCurrentStepHoldS;
 }
 
@@ -464,9 +459,7 @@ void SimulatedDrive::endCurrentStepRecord()
     m_trace = m_active->takeTrace();
     m_trace->metadata["test"] = "current_step";
     m_trace->metadata["step_start_s"] = m_stepStart;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", m_request ? m_request->amplitude : 0.0);
-    m_trace->metadata["step_amplitude_A"] = buf;
+    model::setMetadataNumber(m_trace->metadata, "step_amplitude_A", m_request ? m_request->amplitude : 0.0);
     m_trace->metadata["voltage_clamped_ticks"] = std::to_string(m_active->voltageClampCount() - m_clampsAtStart);
     m_active->setCurrentCommand({});
     m_active->holdPosition();

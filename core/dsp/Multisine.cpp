@@ -10,13 +10,13 @@
 
 #include "core/dsp/Fft.h"
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <set>
-#include <sstream>
 
 namespace axistune::dsp {
 namespace {
@@ -27,10 +27,7 @@ constexpr std::size_t kMaxLines = 20000;
 
 std::string num(double v)
 {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
+    return model::formatNumber(v, 10);
 }
 
 /// X[m] = Σ_t x[t] e^{−2πimt/n} for all n bins, from two real FFTs (FFTW plans cached, dsp::RealFft).

@@ -6,11 +6,11 @@
 #include "core/dsp/SineDemodulation.h"
 
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::dsp {
 
@@ -133,10 +133,7 @@ Result<FrequencyResponse> sineStreamFrf(const SweepRecording& rec)
         frf.push(f, dy->phasor() / dx->phasor(), std::nan(""), dy->valid);
     }
     frf.metadata["method"] = anyMulti && anyConventional ? "sine-stream-mixed" : anyMulti ? "multisweep" : "conventional";
-    std::ostringstream fs;
-    fs.precision(17);
-    fs << rec.fsHz;
-    frf.metadata["fs_Hz"] = fs.str();
+    model::setMetadataNumber(frf.metadata, "fs_Hz", rec.fsHz);
     return frf;
 }
 

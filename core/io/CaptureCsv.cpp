@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Capture CSV reader/writer (DESIGN.md "File formats").
 #include "core/io/CaptureCsv.h"
-#include "core/io/TextFile.h"
 
-#include <charconv>
+#include "core/io/TextFile.h"
+#include "core/model/Number.h"
+
 #include <cmath>
 #include <fstream>
-#include <iomanip>
-#include <sstream>
 
 namespace axistune::io {
 namespace {
@@ -40,14 +39,10 @@ std::vector<std::string> splitComma(const std::string& line)
 
 bool parseDouble(std::string_view s, double& v)
 {
-    if (s.empty())
-        return false;
-    const char* b = s.data();
-    const char* e = s.data() + s.size();
-    if (*b == '+')
-        ++b;
-    auto [p, ec] = std::from_chars(b, e, v);
-    return ec == std::errc() && p == e;
+    const auto x = model::parseNumber(s, true);
+    if (x)
+        v = *x;
+    return x.has_value();
 }
 
 }  // namespace
@@ -138,13 +133,11 @@ Status writeCaptureCsv(std::ostream& out, const model::Capture& capture)
     for (std::size_t i = 0; i < capture.channels.size(); ++i)
         out << (i ? "," : "") << capture.channels[i].name;
     out << '\n';
-    char buf[32];
     for (std::size_t r = 0; r < n; ++r) {
         for (std::size_t i = 0; i < capture.channels.size(); ++i) {
-            auto [p, ec] = std::to_chars(buf, buf + sizeof buf, capture.channels[i].data[r]);
             if (i)
                 out << ',';
-            out.write(buf, p - buf);
+            out << model::formatShortest(capture.channels[i].data[r]);
         }
         out << '\n';
     }

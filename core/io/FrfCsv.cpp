@@ -4,9 +4,9 @@
 
 #include "core/io/TextFile.h"
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/model/Units.h"
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -38,21 +38,15 @@ std::vector<std::string> splitCsvLine(const std::string& line)
 
 bool parseDouble(const std::string& cell, double& value)
 {
-    if (cell.empty())
-        return false;
-    const char* b = cell.data();
-    const char* e = b + cell.size();
-    if (*b == '+')
-        ++b;
-    const auto r = std::from_chars(b, e, value);
-    return r.ec == std::errc() && r.ptr == e;
+    const auto v = model::parseNumber(cell, true);
+    if (v)
+        value = *v;
+    return v.has_value();
 }
 
 std::string formatDouble(double v)
 {
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
+    return model::formatShortest(v);
 }
 
 bool parseMetadataLine(const std::string& line, std::string& key, std::string& value)

@@ -2,9 +2,9 @@
 // Machine profile JSON and the flat parameter CSV (schema: docs/formats-profile.md).
 #include "core/io/Profile.h"
 
-#include <charconv>
+#include "core/model/Number.h"
+
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -42,14 +42,10 @@ std::vector<std::string> splitComma(const std::string& line)
 
 bool parseDouble(const std::string& s, double& v)
 {
-    if (s.empty())
-        return false;
-    const char* b = s.data();
-    const char* e = s.data() + s.size();
-    if (*b == '+')
-        ++b;
-    auto [p, ec] = std::from_chars(b, e, v);
-    return ec == std::errc() && p == e && std::isfinite(v);
+    const auto x = model::parseNumber(s);
+    if (x)
+        v = *x;
+    return x.has_value();
 }
 
 Result<AxisProfile> axisFromJson(const nlohmann::json& a, const std::string& where)
@@ -240,9 +236,7 @@ std::string parametersToCsv(const MachineProfile& profile)
     os << "machine,axis,key,value\n";
     for (const auto& a : profile.axes) {
         for (const auto& [k, v] : a.parameters) {
-            char buf[40];
-            std::snprintf(buf, sizeof buf, "%.17g", v);
-            os << profile.name << ',' << a.name << ',' << k << ',' << buf << '\n';
+            os << profile.name << ',' << a.name << ',' << k << ',' << model::formatNumber(v, 17) << '\n';
         }
     }
     return os.str();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/Number.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <system_error>
@@ -40,6 +41,13 @@ std::string formatFixed(double v, int decimals)
     if (decimals > 40)
         decimals = 40;
     return finish(buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals));
+}
+
+std::string formatScientific(double v, int decimals)
+{
+    char buf[kBuf];
+    return finish(buf,
+                  std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific, std::clamp(decimals, 0, 40)));
 }
 
 std::optional<double> parseNumber(std::string_view text, bool allowNonFinite)

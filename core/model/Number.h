@@ -20,6 +20,8 @@ std::string formatShortest(double v);
 std::string formatNumber(double v, int significant);
 /// `v` with `decimals` digits after the point, printf's %.*f form ("0.500", "-12").
 std::string formatFixed(double v, int decimals);
+/// `v` in exponent form with `decimals` digits after the point, printf's %.*e form ("1.500000000e-03").
+std::string formatScientific(double v, int decimals);
 
 /// The number the whole of `text` spells: an optional sign ('+' or '-'), digits with '.' as the decimal
 /// point, an optional exponent; "inf"/"nan" only when `allowNonFinite`. No white space, no ',' and nothing

@@ -5,6 +5,7 @@
 #include "core/sim/AxisSimulator.h"
 
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
@@ -455,14 +456,10 @@ model::Capture AxisSimulator::takeTrace()
     model::Capture cap;
     const bool currentRate = m_traceRate == TraceRate::Current;
     const auto names = currentRate ? currentTraceChannelNames() : traceChannelNames();
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", 1.0 / (currentRate ? m_hCurrent : tracePeriod()));
-    cap.metadata["fs_Hz"] = buf;
+    model::setMetadataNumber(cap.metadata, "fs_Hz", 1.0 / (currentRate ? m_hCurrent : tracePeriod()));
     cap.metadata["axis"] = m_def.name;
-    std::snprintf(buf, sizeof buf, "%.17g", m_hCurrent);
-    cap.metadata["current_period_s"] = buf;
-    std::snprintf(buf, sizeof buf, "%.17g", velocityPeriod());
-    cap.metadata["velocity_period_s"] = buf;
+    model::setMetadataNumber(cap.metadata, "current_period_s", m_hCurrent);
+    model::setMetadataNumber(cap.metadata, "velocity_period_s", velocityPeriod());
     cap.metadata["seed"] = std::to_string(m_seed);
     for (std::size_t c = 0; c < names.size() && c < m_trace.size(); ++c)
         cap.channels.push_back({names[c], std::move(m_trace[c])});

@@ -6,10 +6,10 @@
 #include "core/sim/CircleRun.h"
 
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/sim/AxisSimulator.h"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 namespace axistune::sim {
@@ -21,16 +21,12 @@ constexpr double kTailS = 0.2;  ///< recorded after the end of the path (the axe
 
 std::string fmt(double v)
 {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
+    return model::formatNumber(v, 17);
 }
 
 std::string fmtShort(double v)
 {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return model::formatNumber(v, 10);
 }
 
 Status checkOptions(const CircleTestOptions& o)
@@ -200,14 +196,8 @@ Result<CircleTestOptions> circleOptionsFromTrace(const model::Capture& trace)
         return it->second;
     };
     auto number = [&](const char* key) -> Result<double> {
-        auto t = text(key);
-        if (!t)
-            return t.error();
-        char* end = nullptr;
-        const double v = std::strtod(t->c_str(), &end);
-        if (end == t->c_str() || *end != '\0' || !std::isfinite(v))
-            return bad(std::string("metadata '") + key + "' is not a number ('" + *t + "')");
-        return v;
+        auto v = model::metadataNumber(md, key);
+        return v ? v : bad(v.error().detail);
     };
     if (auto t = text("test"); !t || *t != "circle")
         return bad("not the trace of a circle test (metadata test=circle missing)");

@@ -7,6 +7,7 @@
 #include "core/sim/CircleTest.h"
 
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/sim/AxisSimulator.h"
 #include "core/sim/CircleRun.h"
 
@@ -28,9 +29,7 @@ double wrapPi(double a)
 
 std::string fmt(double v)
 {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return model::formatNumber(v, 10);
 }
 
 struct Samples {

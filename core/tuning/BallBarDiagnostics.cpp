@@ -6,13 +6,13 @@
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::tuning {
 namespace {
@@ -53,11 +53,7 @@ const char* axisName(int axis)
 
 std::string fmt(double v, int prec = 2)
 {
-    std::ostringstream os;
-    os.setf(std::ios::fixed);
-    os.precision(prec);
-    os << v;
-    return os.str();
+    return model::formatFixed(v, prec);
 }
 
 /// Least squares with a design matrix; returns coefficients and the inverse normal matrix diagonal.

@@ -3,12 +3,12 @@
 // Squareness and servo mismatch both give a sin2θ term; servo mismatch changes sign with the travel
 // direction (k = γR/2 + σvΔτ/2, docs/ballbar.md), so two directions separate them by least squares.
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::tuning {
 namespace {
@@ -17,11 +17,7 @@ using model::kRadPerDeg;
 
 std::string fmt(double v, int prec = 2)
 {
-    std::ostringstream os;
-    os.setf(std::ios::fixed);
-    os.precision(prec);
-    os << v;
-    return os.str();
+    return model::formatFixed(v, prec);
 }
 
 const char* axisName(int axis)

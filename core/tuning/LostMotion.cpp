@@ -5,12 +5,12 @@
 #include "core/tuning/LostMotion.h"
 
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::tuning {
 namespace {
@@ -22,10 +22,7 @@ constexpr double kApparentThesisUmPerNmM = 17; ///< Fig. 4.4(a), spec §1.4
 
 std::string fmtG(double v)
 {
-    std::ostringstream os;
-    os.precision(3);
-    os << v;
-    return os.str();
+    return model::formatNumber(v, 3);
 }
 
 double wrapPi(double a)
