@@ -47,6 +47,8 @@ void expectFormats()
     EXPECT_EQ(formatFixed(-12.345, 1), "-12.3");
     EXPECT_EQ(formatFixed(2.5, 0), "2");                // round half to even, as printf
     EXPECT_EQ(formatFixed(1234567.0, 2), "1234567.00"); // no grouping
+    EXPECT_EQ(formatScientific(0.0015, 9), "1.500000000e-03");
+    EXPECT_EQ(formatScientific(-2.0e10, 2), "-2.00e+10");
     EXPECT_EQ(formatShortest(std::numeric_limits<double>::infinity()), "inf");
 }
 
