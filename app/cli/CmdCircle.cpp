@@ -3,12 +3,13 @@
 // circle tests"); also reachable as `capture --test circle`. On sim:PRESET it runs core/sim/CircleTest
 // on the preset; on modbus://HOST:PORT it is a Circle test of the drive (docs/ballbar.md "Circle tests
 // through the drive"), the trace of both axes evaluated here.
-#include "app/cli/CliCommand.h"
 #include "app/cli/CircleCommand.h"
+#include "app/cli/CliCommand.h"
 #include "core/device/CircleDriveTest.h"
 #include "core/device/Drive.h"
 #include "core/io/BallBarCsv.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/Number.h"
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
 #include "core/sim/CircleTest.h"
@@ -61,14 +62,10 @@ Result<SetItem> parseSet(const std::string& item, const std::string& plane)
     } else {
         out.axes = {plane.substr(0, 1), plane.substr(1, 1)};
     }
-    try {
-        std::size_t used = 0;
-        out.value = std::stod(item.substr(eq + 1), &used);
-        if (used != item.size() - eq - 1)
-            throw std::invalid_argument("trailing");
-    } catch (const std::exception&) {
+    const auto v = model::parseNumber(std::string_view(item).substr(eq + 1));
+    if (!v)
         return makeError(ErrorCode::BadInput, "--set '" + item + "': value is not a number");
-    }
+    out.value = *v;
     return out;
 }
 

@@ -13,6 +13,7 @@
 #include "core/io/FrfCsv.h"
 #include "core/io/SampleTime.h"
 #include "core/io/SweepCsv.h"
+#include "core/model/Number.h"
 #include "core/model/Units.h"
 
 #include <nlohmann/json.hpp>
@@ -22,6 +23,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 namespace axistune::cli {
@@ -301,12 +303,12 @@ int runFrf(const FrfOptions& o)
         // A drive's sweep (capture --sweep-out) names its injection hold: the same correction as the drive's FRF.
         const auto& md = rec->metadata;
         if (md.count("injection_hold_period_s") && md.count("injection_hold_ticks")) {
-            char* e1 = nullptr;
-            char* e2 = nullptr;
-            const double h = std::strtod(md.at("injection_hold_period_s").c_str(), &e1);
-            const long n = std::strtol(md.at("injection_hold_ticks").c_str(), &e2, 10);
-            Status st = (*e1 || *e2) ? Status(makeError(ErrorCode::BadInput, "not a number"))
-                                     : dsp::correctInjectionHold(frf.value(), h, static_cast<int>(n));
+            const auto h = model::metadataNumber(md, "injection_hold_period_s");
+            const auto n = model::metadataInteger(md, "injection_hold_ticks");
+            Status st = !h                       ? Status(h.error())
+                        : !n                     ? Status(n.error())
+                        : *n < 1 || *n > 1000000 ? Status(makeError(ErrorCode::BadInput, "tick count out of range"))
+                                                 : dsp::correctInjectionHold(frf.value(), *h, static_cast<int>(*n));
             if (!st)
                 return reportError(cmd, makeError(ErrorCode::BadInput, o.sweepPath + ": metadata injection_hold_period_s / "
                                                                        "injection_hold_ticks: " + st.error().detail));

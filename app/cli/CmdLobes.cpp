@@ -4,8 +4,9 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/io/FrfCsv.h"
 #include "core/machining/MachiningJson.h"
-#include "core/machining/ToolModeFit.h"
 #include "core/machining/StabilityLobes.h"
+#include "core/machining/ToolModeFit.h"
+#include "core/model/Number.h"
 
 #include <cmath>
 #include <cstdio>
@@ -41,14 +42,15 @@ Result<std::vector<machining::ModalParameters>> fitDirection(const LobesArgs& a,
     auto fit = machining::fitToolModes(*frf, opt);
     if (!fit)
         return makeError(fit.error().code, path + ": " + fit.error().detail);
-    char line[160];
-    std::snprintf(line, sizeof line, "lobes: %s from %s: %zu points, rms relative fit error %.3g\n", dir, path.c_str(),
-                  fit->points, fit->rmsRelativeError);
-    std::cerr << line;
+    using model::formatFixed, model::formatNumber;
+    std::cerr << "lobes: " << dir << " from " << path << ": " << fit->points << " points, rms relative fit error "
+              << formatNumber(fit->rmsRelativeError, 3) << '\n';
     for (const auto& m : fit->modes) {
-        std::snprintf(line, sizeof line, "  mass_kg=%.6g damping_Ns_per_m=%.6g stiffness_N_per_m=%.6g (%.1f Hz, zeta %.4f)\n",
-                      m.massKg, m.dampingNsPerM, m.stiffnessNPerM, machining::naturalFrequencyHz(m), machining::dampingRatio(m));
-        std::cerr << line;
+        std::cerr << "  mass_kg=" << formatNumber(m.massKg, 6)
+                  << " damping_Ns_per_m=" << formatNumber(m.dampingNsPerM, 6)
+                  << " stiffness_N_per_m=" << formatNumber(m.stiffnessNPerM, 6) << " ("
+                  << formatFixed(machining::naturalFrequencyHz(m), 1) << " Hz, zeta "
+                  << formatFixed(machining::dampingRatio(m), 4) << ")\n";
     }
     return fit->modes;
 }
@@ -107,13 +109,9 @@ int runLobes(const LobesArgs& a)
         os = &file;
     }
     *os << "rpm,limit_depth_m\n";
-    char line[96];
     for (const auto& p : *lobes) {
-        if (std::isinf(p.limitDepthM))
-            std::snprintf(line, sizeof line, "%.10g,inf\n", p.rpm);
-        else
-            std::snprintf(line, sizeof line, "%.10g,%.9e\n", p.rpm, p.limitDepthM);
-        *os << line;
+        *os << model::formatNumber(p.rpm, 10) << ','
+            << (std::isinf(p.limitDepthM) ? std::string("inf") : model::formatScientific(p.limitDepthM, 9)) << '\n';
     }
     if (!*os)
         return reportError(cmd, makeError(ErrorCode::Io, (a.out.empty() ? "stdout" : a.out) + ": write failed"));

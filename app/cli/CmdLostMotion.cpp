@@ -5,6 +5,7 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/io/BallBarCsv.h"
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/tuning/LostMotion.h"
 
 #include <fstream>
@@ -39,12 +40,13 @@ Status writeCompensated(const std::string& path, const std::vector<tuning::Compe
     std::ofstream f(path);
     if (!f)
         return makeError(ErrorCode::Io, path + ": cannot open for writing");
-    f << std::setprecision(12) << "file_index,angle_deg,measured_um,proposed_um,conventional_um\n";
+    const auto g = [](double v) { return model::formatNumber(v, 12); };
+    f << "file_index,angle_deg,measured_um,proposed_um,conventional_um\n";
     for (std::size_t k = 0; k < preds.size(); ++k) {
         const auto& p = preds[k];
         for (std::size_t i = 0; i < p.angleRad.size(); ++i)
-            f << k << ',' << p.angleRad[i] / kRadPerDeg << ',' << p.measuredM[i] * 1e6 << ',' << p.proposedM[i] * 1e6
-              << ',' << p.conventionalM[i] * 1e6 << '\n';
+            f << k << ',' << g(p.angleRad[i] / kRadPerDeg) << ',' << g(p.measuredM[i] * 1e6) << ','
+              << g(p.proposedM[i] * 1e6) << ',' << g(p.conventionalM[i] * 1e6) << '\n';
     }
     if (!f)
         return makeError(ErrorCode::Io, path + ": write failed");

@@ -7,12 +7,12 @@
 #include "core/machining/ChatterFrequencyEstimator.h"
 #include "core/machining/MachiningJson.h"
 #include "core/machining/SpindleSpeed.h"
-
-#include <nlohmann/json.hpp>
+#include "core/model/Number.h"
 
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 namespace {
@@ -31,13 +31,12 @@ struct SpindleArgs {
 // Sample period from "# fs_Hz=" metadata, else from a t_s column.
 Result<double> samplePeriod(const model::Capture& c, const std::string& src)
 {
-    if (auto it = c.metadata.find("fs_Hz"); it != c.metadata.end()) {
-        try {
-            const double fs = std::stod(it->second);
-            if (fs > 0.0 && std::isfinite(fs))
-                return 1.0 / fs;
-        } catch (...) {
-        }
+    const auto fs = model::optionalMetadataNumber(c.metadata, "fs_Hz");
+    if (!fs)
+        return makeError(ErrorCode::BadInput, src + ": " + fs.error().detail);
+    if (fs->has_value()) {
+        if (**fs > 0.0)
+            return 1.0 / **fs;
         return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz is not a positive number");
     }
     if (const auto* t = c.channel("t_s"); t && t->data.size() > 1) {

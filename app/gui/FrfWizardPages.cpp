@@ -10,6 +10,7 @@
 #include "core/device/MultisineTest.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "widgets/BodePlot.h"
 
 #include <QCheckBox>
@@ -365,8 +366,9 @@ void FrfResultPage::setMeasurement(const dsp::FrequencyResponse& frf, device::Fr
     m_method = method;
     m_done = false;
     m_analysis = {};
-    const auto it = frf.metadata.find("fs_Hz");
-    m_fsHz = it == frf.metadata.end() ? 0.0 : std::atof(it->second.c_str());
+    // The rate only draws the validity bands and the note under the plot: 0 (unknown) when unreadable.
+    const auto fs = model::metadataNumber(frf.metadata, "fs_Hz");
+    m_fsHz = fs ? *fs : 0.0;
 }
 
 void FrfResultPage::initializePage()
