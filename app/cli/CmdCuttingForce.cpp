@@ -31,14 +31,10 @@ Result<double> samplePeriod(const model::Capture& cap, const std::string& src)
             return dt;
         return makeError(ErrorCode::BadInput, src + ", column 't_s': time does not increase");
     }
-    const auto fs = model::optionalMetadataNumber(cap.metadata, "fs_Hz");
-    if (!fs)
-        return makeError(ErrorCode::BadInput, src + ": " + fs.error().detail);
-    if (fs->has_value()) {
-        if (**fs > 0.0)
-            return 1.0 / **fs;
-        return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz is not a positive number");
-    }
+    if (const auto ts = model::metadataSamplePeriodS(cap.metadata); !ts)
+        return makeError(ErrorCode::BadInput, src + ": " + ts.error().detail);
+    else if (ts->has_value())
+        return **ts;
     return makeError(ErrorCode::BadInput,
                      src + ": neither a column 't_s' nor a metadata line 'fs_Hz' gives the sample rate");
 }

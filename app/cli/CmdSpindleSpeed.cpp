@@ -31,14 +31,10 @@ struct SpindleArgs {
 // Sample period from "# fs_Hz=" metadata, else from a t_s column.
 Result<double> samplePeriod(const model::Capture& c, const std::string& src)
 {
-    const auto fs = model::optionalMetadataNumber(c.metadata, "fs_Hz");
-    if (!fs)
-        return makeError(ErrorCode::BadInput, src + ": " + fs.error().detail);
-    if (fs->has_value()) {
-        if (**fs > 0.0)
-            return 1.0 / **fs;
-        return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz is not a positive number");
-    }
+    if (const auto ts = model::metadataSamplePeriodS(c.metadata); !ts)
+        return makeError(ErrorCode::BadInput, src + ": " + ts.error().detail);
+    else if (ts->has_value())
+        return **ts;
     if (const auto* t = c.channel("t_s"); t && t->data.size() > 1) {
         const double ts = (t->data.back() - t->data.front()) / static_cast<double>(t->data.size() - 1);
         if (ts > 0.0)

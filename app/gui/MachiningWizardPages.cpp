@@ -314,11 +314,11 @@ bool MachiningAdvicePage::estimateFromCapture(const QString& path)
     double ts = 0.0;
     if (t && t->data.size() >= 2)
         ts = (t->data.back() - t->data.front()) / static_cast<double>(t->data.size() - 1);
-    else if (const auto fs = model::optionalMetadataNumber(cap->metadata, "fs_Hz"); !fs) {
-        m_estimate->setText(path + QStringLiteral(": ") + QString::fromStdString(fs.error().detail));
+    else if (const auto fromFs = model::metadataSamplePeriodS(cap->metadata); !fromFs) {
+        m_estimate->setText(path + QStringLiteral(": ") + QString::fromStdString(fromFs.error().detail));
         return false;
-    } else if (fs->has_value()) {
-        ts = 1.0 / **fs;
+    } else {
+        ts = fromFs->value_or(0.0);
     }
     if (!ch || !(ts > 0.0)) {
         m_estimate->setText(tr("%1: no signal channel or no sample rate (t_s or fs_Hz)").arg(path));

@@ -50,43 +50,47 @@ std::string formatScientific(double v, int decimals)
                   std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific, std::clamp(decimals, 0, 40)));
 }
 
-std::optional<double> parseNumber(std::string_view text, bool allowNonFinite)
+namespace {
+
+// The digits of a number: the text without one leading '+' (from_chars takes '-' but not '+');
+// nullopt for "", "+" and "+-1".
+std::optional<std::string_view> unsignedPlus(std::string_view text)
 {
-    if (text.empty())
-        return std::nullopt;
-    const char* b = text.data();
-    const char* e = b + text.size();
-    // from_chars takes '-' but not '+'; a "+-1" must not pass.
-    if (*b == '+') {
-        ++b;
-        if (b == e || *b == '-')
+    if (!text.empty() && text.front() == '+') {
+        text.remove_prefix(1);
+        if (!text.empty() && text.front() == '-')
             return std::nullopt;
     }
-    double v = 0.0;
-    const auto r = std::from_chars(b, e, v);
-    if (r.ec != std::errc() || r.ptr != e)
+    if (text.empty())
         return std::nullopt;
-    if (!allowNonFinite && !std::isfinite(v))
+    return text;
+}
+
+template <typename T> std::optional<T> parseWhole(std::string_view text)
+{
+    const auto t = unsignedPlus(text);
+    if (!t)
+        return std::nullopt;
+    T v{};
+    const auto r = std::from_chars(t->data(), t->data() + t->size(), v);
+    if (r.ec != std::errc() || r.ptr != t->data() + t->size())
+        return std::nullopt;
+    return v;
+}
+
+} // namespace
+
+std::optional<double> parseNumber(std::string_view text, bool allowNonFinite)
+{
+    const auto v = parseWhole<double>(text);
+    if (!v || (!allowNonFinite && !std::isfinite(*v)))
         return std::nullopt;
     return v;
 }
 
 std::optional<long long> parseInteger(std::string_view text)
 {
-    if (text.empty())
-        return std::nullopt;
-    const char* b = text.data();
-    const char* e = b + text.size();
-    if (*b == '+') {
-        ++b;
-        if (b == e || *b == '-')
-            return std::nullopt;
-    }
-    long long v = 0;
-    const auto r = std::from_chars(b, e, v);
-    if (r.ec != std::errc() || r.ptr != e)
-        return std::nullopt;
-    return v;
+    return parseWhole<long long>(text);
 }
 
 Result<std::optional<double>> optionalMetadataNumber(const Metadata& metadata, const std::string& key)
@@ -119,6 +123,17 @@ Result<long long> metadataInteger(const Metadata& metadata, const std::string& k
     if (!v)
         return makeError(ErrorCode::BadInput, "metadata '" + key + "' is not a whole number ('" + it->second + "')");
     return *v;
+}
+
+Result<std::optional<double>> metadataSamplePeriodS(const Metadata& metadata)
+{
+    auto fs = optionalMetadataNumber(metadata, "fs_Hz");
+    if (!fs || !fs->has_value())
+        return fs;
+    if (!(**fs > 0.0))
+        return makeError(ErrorCode::BadInput,
+                         "metadata 'fs_Hz' is not a positive number ('" + metadata.at("fs_Hz") + "')");
+    return std::optional<double>{1.0 / **fs};
 }
 
 void setMetadataNumber(Metadata& metadata, const std::string& key, double v)

@@ -39,6 +39,9 @@ Result<double> metadataNumber(const Metadata& metadata, const std::string& key);
 Result<std::optional<double>> optionalMetadataNumber(const Metadata& metadata, const std::string& key);
 /// A whole number stored in metadata (e.g. "nperseg", "injection_hold_ticks").
 Result<long long> metadataInteger(const Metadata& metadata, const std::string& key);
+/// The sample period [s] 1/fs_Hz of a capture's metadata: nullopt without fs_Hz, an error naming the key
+/// when fs_Hz is not a positive number.
+Result<std::optional<double>> metadataSamplePeriodS(const Metadata& metadata);
 /// Stores a number so that it reads back exactly (17 significant digits, '.' as the decimal point).
 void setMetadataNumber(Metadata& metadata, const std::string& key, double v);
 

@@ -116,6 +116,12 @@ TEST(Number, MetadataNumbersNameTheKey)
     EXPECT_EQ(metadataInteger(md, "ticks").value(), 8);
     EXPECT_EQ(metadataInteger(Metadata{{"n", "8.5"}}, "n").error().detail,
               "metadata 'n' is not a whole number ('8.5')");
+    EXPECT_EQ(metadataSamplePeriodS(md).value(), 1.0 / 4000.0);
+    EXPECT_FALSE(metadataSamplePeriodS(Metadata{}).value().has_value());
+    EXPECT_EQ(metadataSamplePeriodS(Metadata{{"fs_Hz", "-1"}}).error().detail,
+              "metadata 'fs_Hz' is not a positive number ('-1')");
+    EXPECT_EQ(metadataSamplePeriodS(Metadata{{"fs_Hz", "4,0"}}).error().detail,
+              "metadata 'fs_Hz' is not a number ('4,0')");
     setMetadataNumber(md, "x", 0.1);
     EXPECT_EQ(md.at("x"), "0.10000000000000001");
     EXPECT_EQ(metadataNumber(md, "x").value(), 0.1);
