@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // lobes --tool-frf-x/--tool-frf-y: tool modes fitted to a receptance FRF CSV give the same lobes as the
 // equivalent tool.json. The FRFs are written here analytically, H = Σ 1/(k − mω² + jcω) in m/N.
+#include "core/model/Number.h"
+#include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
 
 #include <gtest/gtest.h>
@@ -31,16 +33,15 @@ void writeFrfCsv(const std::filesystem::path& p, const std::vector<Mode>& modes)
 {
     std::ofstream f(p);
     f << "f_Hz,re,im,mag_dB,phase_deg,coherence,valid\n";
-    char line[256];
+    const auto g = [](double v) { return axistune::model::formatNumber(v, 17); };
     for (int i = 0; i < 400; ++i) {
         const double hz = 500.0 * std::pow(6.0, i / 399.0);
         const double w = 2.0 * std::numbers::pi * hz;
         std::complex<double> h = 0.0;
         for (const auto& m : modes)
             h += 1.0 / std::complex<double>(m.k - m.m * w * w, m.c * w);
-        std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,,1\n", hz, h.real(), h.imag(),
-                      20.0 * std::log10(std::abs(h)), std::arg(h) * 180.0 / std::numbers::pi);
-        f << line;
+        f << g(hz) << ',' << g(h.real()) << ',' << g(h.imag()) << ',' << g(20.0 * std::log10(std::abs(h))) << ','
+          << g(std::arg(h) * 180.0 / std::numbers::pi) << ",,1\n";
     }
 }
 
@@ -57,7 +58,7 @@ double firstLimit(const std::string& csvText)
     std::string line;
     std::getline(csv, line);
     std::getline(csv, line);
-    return std::stod(line.substr(line.find(',') + 1));
+    return axistune::testutil::stod(line.substr(line.find(',') + 1));
 }
 
 }  // namespace

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "core/model/Number.h"
+#include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
 
 using axistune::testing::makeTempDir;
@@ -27,7 +29,7 @@ const std::string kSamples = std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resou
 std::string cutArgs(double depthM, const std::filesystem::path& out)
 {
     return "simulate-cut --machine vmc --axis X --tool " + kSamples + "tool-table1.json --cut " + kSamples +
-           "cut-table1.json --rpm 1500 --depth-m " + std::to_string(depthM) + " --duration-s 1.2 --seed 3 --out " +
+           "cut-table1.json --rpm 1500 --depth-m " + axistune::model::formatShortest(depthM) + " --duration-s 1.2 --seed 3 --out " +
            out.string();
 }
 
@@ -55,7 +57,7 @@ std::vector<double> column(const std::filesystem::path& p, const std::string& na
                 return {};
             continue;
         }
-        out.push_back(std::stod(cells.at(static_cast<std::size_t>(idx))));
+        out.push_back(axistune::testutil::stod(cells.at(static_cast<std::size_t>(idx))));
     }
     return out;
 }

@@ -13,6 +13,7 @@
 #include <sys/wait.h>
 #include <thread>
 
+#include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
 #include "tests/app/cli/SimDriveProcess.h"
 
@@ -60,7 +61,7 @@ double mbpollValue(const std::string& out, int address)
 {
     const std::string tag = "[" + std::to_string(address) + "]:";
     const auto at = out.find(tag);
-    return at == std::string::npos ? std::nan("") : std::strtod(out.c_str() + at + tag.size(), nullptr);
+    return at == std::string::npos ? std::nan("") : axistune::testutil::stod(out.c_str() + at + tag.size());
 }
 
 double paramsValue(const std::string& uri, const std::string& key, const std::string& axis = "X")

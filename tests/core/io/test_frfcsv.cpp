@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/FrfCsv.h"
+#include "tests/NumberText.h"
 
 #include <gtest/gtest.h>
 
@@ -38,8 +39,8 @@ TEST(FrfCsv, HeaderAndRowFormat)
     ASSERT_EQ(cells.size(), 7u);
     EXPECT_EQ(cells[5], "");
     EXPECT_EQ(cells[6], "1");
-    EXPECT_NEAR(std::stod(cells[3]), 10.0 * std::log10(1.01), 1e-12);
-    EXPECT_NEAR(std::stod(cells[4]), -5.710593137499643, 1e-12);
+    EXPECT_NEAR(axistune::testutil::stod(cells[3]), 10.0 * std::log10(1.01), 1e-12);
+    EXPECT_NEAR(axistune::testutil::stod(cells[4]), -5.710593137499643, 1e-12);
 }
 
 TEST(FrfCsv, RoundTripIsExact)
