@@ -13,8 +13,9 @@
 namespace axistune::testutil {
 
 /// As std::stod in the "C" locale: skips leading white space and reads the longest number at the
-/// start (text after it is ignored); std::invalid_argument when there is none.
-inline double stod(std::string_view s)
+/// start (text after it is ignored; `used`, when given, receives the characters read); throws
+/// std::invalid_argument when there is none.
+inline double stod(std::string_view s, std::size_t* used = nullptr)
 {
     std::size_t i = 0;
     while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i])))
@@ -27,7 +28,9 @@ inline double stod(std::string_view s)
         throw std::invalid_argument("not a number: '" + std::string(s) + "'");
     if (r.ec != std::errc())
         throw std::out_of_range("number out of range: '" + std::string(s) + "'");
+    if (used)
+        *used = static_cast<std::size_t>(r.ptr - s.data());
     return v;
 }
 
-}  // namespace axistune::testutil
+} // namespace axistune::testutil

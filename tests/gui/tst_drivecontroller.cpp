@@ -4,9 +4,6 @@
 // Abort of a long FRF test (within 1 s, parameters restored), and a drive killed during a test (the
 // reply fails, connectionLost, not connected, the GUI event loop kept running).
 #include "app/gui/DriveController.h"
-#include "tests/NumberText.h"
-#include "tests/app/cli/SimDriveProcess.h"
-#include "tests/gui/GuiTestUtil.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -14,6 +11,10 @@
 #include <QtTest>
 
 #include <optional>
+
+#include "tests/NumberText.h"
+#include "tests/app/cli/SimDriveProcess.h"
+#include "tests/gui/GuiTestUtil.h"
 
 using axistune::gui::DriveController;
 using axistune::gui::DriveReply;

@@ -2,20 +2,20 @@
 // lobes --tool-frf-x/--tool-frf-y: tool modes fitted to a receptance FRF CSV give the same lobes as the
 // equivalent tool.json. The FRFs are written here analytically, H = Σ 1/(k − mω² + jcω) in m/N.
 #include "core/model/Number.h"
-#include "tests/NumberText.h"
-#include "tests/app/cli/CliRunner.h"
-
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/NumberText.h"
+#include "tests/app/cli/CliRunner.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::readFileText;

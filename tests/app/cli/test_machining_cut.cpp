@@ -4,6 +4,8 @@
 //   axistune-cli lobes --tool resources/samples/tool-table1.json --cut resources/samples/cut-table1.json
 //       --rpm-min 1000 --rpm-max 3500 --rpm-step 50 --steps-per-period 160
 // gives 1.07 mm at 1500 rpm. Stable: 0.5 mm (0.47 × limit); chattering: 2.0 mm (1.9 × limit).
+#include "core/model/Number.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "core/model/Number.h"
 #include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
 
@@ -29,8 +30,8 @@ const std::string kSamples = std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resou
 std::string cutArgs(double depthM, const std::filesystem::path& out)
 {
     return "simulate-cut --machine vmc --axis X --tool " + kSamples + "tool-table1.json --cut " + kSamples +
-           "cut-table1.json --rpm 1500 --depth-m " + axistune::model::formatShortest(depthM) + " --duration-s 1.2 --seed 3 --out " +
-           out.string();
+           "cut-table1.json --rpm 1500 --depth-m " + axistune::model::formatShortest(depthM) +
+           " --duration-s 1.2 --seed 3 --out " + out.string();
 }
 
 /// Column `name` of a capture CSV (skips "# " metadata lines).

@@ -18,9 +18,8 @@
 #include <thread>
 
 #include "tests/NumberText.h"
-#include "tests/core/sim/LiftedModel.h"
-
 #include "tests/core/device/DriveTestUtil.h"
+#include "tests/core/sim/LiftedModel.h"
 
 using namespace axistune;
 using namespace axistune::device;

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/FrfCsv.h"
-#include "tests/NumberText.h"
-
-#include <gtest/gtest.h>
 
 #include <cmath>
+#include <gtest/gtest.h>
 #include <sstream>
+
+#include "tests/NumberText.h"
 
 using namespace axistune;
 

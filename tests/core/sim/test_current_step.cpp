@@ -7,11 +7,12 @@
 // constant 0 the circuit does not see the motion, and with the nonlinearities off the simulator must
 // give the same numbers to rounding (1e-9 of the step).
 #include "core/sim/AxisSimulator.h"
-#include "tests/NumberText.h"
 
 #include <cmath>
 #include <deque>
 #include <gtest/gtest.h>
+
+#include "tests/NumberText.h"
 
 using namespace axistune;
 using namespace axistune::sim;

@@ -12,23 +12,23 @@
 #include "core/sim/MachineDefinition.h"
 #include "core/store/FrfCapture.h"
 #include "core/store/SessionExport.h"
-#include "tests/core/store/StoreTestUtil.h"
-
-#include <gtest/gtest.h>
 
 #include <clocale>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <map>
 #include <sstream>
 #include <string>
+
+#include "tests/core/store/StoreTestUtil.h"
 
 namespace axistune {
 namespace {
 
 namespace fs = std::filesystem;
-using Files = std::map<std::string, std::string>;  ///< name → bytes
+using Files = std::map<std::string, std::string>; ///< name → bytes
 
 const std::string kResources = AXISTUNE_SOURCE_RESOURCE_DIR;
 
@@ -170,5 +170,5 @@ TEST(LocaleIndependence, FilesAreByteIdenticalUnderCAndGerman)
     fs::remove_all(root);
 }
 
-}  // namespace
-}  // namespace axistune
+} // namespace
+} // namespace axistune
