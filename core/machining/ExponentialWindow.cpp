@@ -2,9 +2,9 @@
 // Exponential-window damping removed from fitted modes (core/machining/ExponentialWindow.h).
 #include "core/machining/ExponentialWindow.h"
 
+#include "core/model/Number.h"
 #include "core/model/Units.h"
 
-#include <charconv>
 #include <cmath>
 
 namespace axistune::machining {
@@ -28,15 +28,13 @@ Result<ModalParameters> removeExponentialWindow(const ModalParameters& w, double
 
 Result<double> exponentialWindowDecay(const dsp::FrequencyResponse& frf)
 {
-    auto it = frf.metadata.find("exp_window_decay_1_s");
-    if (it == frf.metadata.end())
-        return 0.0;
-    double v = 0.0;
-    const auto& s = it->second;
-    const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !(v >= 0.0) || !std::isfinite(v))
-        return makeError(ErrorCode::BadInput, "metadata exp_window_decay_1_s is not a number >= 0 ('" + s + "')");
-    return v;
+    const auto v = model::optionalMetadataNumber(frf.metadata, "exp_window_decay_1_s");
+    if (!v)
+        return v.error();
+    if (!(v->value_or(0.0) >= 0.0))
+        return makeError(ErrorCode::BadInput, "metadata 'exp_window_decay_1_s' must be >= 0 ('" +
+                                                  frf.metadata.at("exp_window_decay_1_s") + "')");
+    return v->value_or(0.0);
 }
 
 Status removeExponentialWindow(std::vector<ModalParameters>& modes, const dsp::FrequencyResponse& frf)
