@@ -4,8 +4,8 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/io/FrfCsv.h"
 #include "core/machining/MachiningJson.h"
-#include "core/machining/ToolModeFit.h"
 #include "core/machining/StabilityLobes.h"
+#include "core/machining/ToolModeFit.h"
 #include "core/model/Units.h"
 
 #include <charconv>
@@ -61,7 +61,8 @@ Result<std::vector<machining::ModalParameters>> fitDirection(const LobesArgs& a,
     opt.maxHz = a.frfMaxHz;
     if (!a.band.empty()) {
         if (!std::isnan(a.frfMinHz) || !std::isnan(a.frfMaxHz))
-            return makeError(ErrorCode::BadInput, "--band and --frf-min-hz/--frf-max-hz are alternatives: give one of them");
+            return makeError(ErrorCode::BadInput,
+                             "--band and --frf-min-hz/--frf-max-hz are alternatives: give one of them");
         auto band = parseBand(a.band);
         if (!band)
             return band.error();
@@ -74,16 +75,17 @@ Result<std::vector<machining::ModalParameters>> fitDirection(const LobesArgs& a,
     std::cerr << "lobes: " << dir << " from " << path << ": " << fit->modes.size() << " mode(s) in the "
               << (fit->automaticBand ? "automatic" : "given") << " band " << formatNumber(fit->bandMinHz, 6) << " to "
               << formatNumber(fit->bandMaxHz, 6) << " Hz, " << fit->points << " points, weighted residual "
-              << formatNumber(100.0 * fit->residualRatio, 3) << " % (accepted up to " << formatNumber(100.0 * opt.maxResidual, 3)
-              << " %)\n";
+              << formatNumber(100.0 * fit->residualRatio, 3) << " % (accepted up to "
+              << formatNumber(100.0 * opt.maxResidual, 3) << " %)\n";
     for (const auto& m : fit->modes)
-        std::cerr << "  mass_kg=" << formatNumber(m.massKg, 6) << " damping_Ns_per_m=" << formatNumber(m.dampingNsPerM, 6)
+        std::cerr << "  mass_kg=" << formatNumber(m.massKg, 6)
+                  << " damping_Ns_per_m=" << formatNumber(m.dampingNsPerM, 6)
                   << " stiffness_N_per_m=" << formatNumber(m.stiffnessNPerM, 6) << " ("
-                  << formatNumber(machining::naturalFrequencyHz(m), 5) << " Hz, zeta " << formatNumber(machining::dampingRatio(m), 4)
-                  << ")\n";
-    std::cerr << "  residual terms (not used by the lobes): upper " << formatNumber(fit->upperResidual.real(), 4) << " + j·"
-              << formatNumber(fit->upperResidual.imag(), 4) << " m/N, lower " << formatNumber(fit->lowerResidual, 4)
-              << " m/N·(rad/s)^2\n";
+                  << formatNumber(machining::naturalFrequencyHz(m), 5) << " Hz, zeta "
+                  << formatNumber(machining::dampingRatio(m), 4) << ")\n";
+    std::cerr << "  residual terms (not used by the lobes): upper " << formatNumber(fit->upperResidual.real(), 4)
+              << " + j·" << formatNumber(fit->upperResidual.imag(), 4) << " m/N, lower "
+              << formatNumber(fit->lowerResidual, 4) << " m/N·(rad/s)^2\n";
     return fit->modes;
 }
 
@@ -142,8 +144,8 @@ int runLobes(const LobesArgs& a)
     }
     *os << "rpm,limit_depth_m\n";
     for (const auto& p : *lobes)
-        *os << model::formatNumber(p.rpm, 10) << ',' << (std::isinf(p.limitDepthM) ? std::string("inf") : model::formatNumber(p.limitDepthM, 10))
-            << '\n';
+        *os << model::formatNumber(p.rpm, 10) << ','
+            << (std::isinf(p.limitDepthM) ? std::string("inf") : model::formatNumber(p.limitDepthM, 10)) << '\n';
     if (!*os)
         return reportError(cmd, makeError(ErrorCode::Io, (a.out.empty() ? "stdout" : a.out) + ": write failed"));
     return 0;
@@ -159,9 +161,11 @@ const CliRegistrar kRegistrar{{
                        "instead of --tool: measured tool-tip receptance FRF CSV in x (feed), h in m/N; modes are fitted");
         sub.add_option("--tool-frf-y", a->toolFrfY, "instead of --tool: the same in y");
         sub.add_option("--modes", a->modes,
-                       "modes fitted per direction to --tool-frf-x/-y (default 0: one per resonance peak above 25 % of the largest)");
+                       "modes fitted per direction to --tool-frf-x/-y (default 0: one per resonance peak above 25 % of "
+                       "the largest)");
         sub.add_option("--band", a->band, "fit band FMIN:FMAX [Hz] (default: chosen from the resonance peaks)");
-        sub.add_option("--frf-min-hz", a->frfMinHz, "fit band lower edge [Hz] (instead of --band; the upper edge is then the data's end)");
+        sub.add_option("--frf-min-hz", a->frfMinHz,
+                       "fit band lower edge [Hz] (instead of --band; the upper edge is then the data's end)");
         sub.add_option("--frf-max-hz", a->frfMaxHz, "fit band upper edge [Hz] (instead of --band)");
         sub.add_option("--cut", a->cut, "cut.json: teeth, Kt_N_per_m2, Kr_N_per_m2, radial_immersion (0-1], milling down|up")
             ->required();

@@ -80,7 +80,7 @@ private:
     QLineEdit* m_fitMax = nullptr;
     QSpinBox* m_fitModes = nullptr;
     QLabel* m_fitStatus = nullptr;
-    QString m_fitError;  ///< why the last FRF fit was refused (shown until the table is edited)
+    QString m_fitError; ///< why the last FRF fit was refused (shown until the table is edited)
     QString m_source;
 };
 

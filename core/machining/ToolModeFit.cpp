@@ -11,7 +11,6 @@
 #include "core/model/Units.h"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -30,13 +29,13 @@ constexpr double kMinPeakFraction = 0.05;          // a peak for an explicit mod
 constexpr double kSignificantPeakFraction = 0.25;  // a peak counted automatically: ≥ 25 %
 constexpr double kMaxPeakZeta = 0.25;              // half-power bandwidth of a resonance: ζ ≤ 0.25
 constexpr double kBandHalfWidths = 3.0;            // automatic band: 3 half-power half-widths beyond the peaks
-constexpr double kZetaMin = 1e-4, kZetaMax = 0.25;  // plausible fitted damping ratios
+constexpr double kZetaMin = 1e-4, kZetaMax = 0.25; // plausible fitted damping ratios
 constexpr double kMinModePeakFraction = 0.05;      // a fitted mode's peak ≥ 5 % of the largest |H| in the band
 constexpr double kMaxLocalResidual = 0.35;         // ‖G − H‖/‖H‖ within f_n(1 ± ζ)
 
 struct Points {
-    std::vector<double> f;  // Hz
-    std::vector<cd> h;      // m/N
+    std::vector<double> f; // Hz
+    std::vector<cd> h;     // m/N
 };
 
 Points collect(const dsp::FrequencyResponse& frf, double lo, double hi)
@@ -46,7 +45,8 @@ Points collect(const dsp::FrequencyResponse& frf, double lo, double hi)
         const bool isValid = i < frf.valid.size() ? frf.valid[i] : true;
         const double f = frf.freqHz[i];
         const cd h = frf.h[i];
-        if (!isValid || !(f > 0.0) || f < lo || f > hi || !std::isfinite(h.real()) || !std::isfinite(h.imag()) || h == 0.0)
+        if (!isValid || !(f > 0.0) || f < lo || f > hi || !std::isfinite(h.real()) || !std::isfinite(h.imag()) ||
+            h == 0.0)
             continue;
         p.f.push_back(f);
         p.h.push_back(h);
@@ -76,7 +76,8 @@ double crossing(const std::vector<double>& f, const std::vector<double>& mag, st
         const double b = mag[static_cast<std::size_t>(i + dir)];
         if (b < level) {
             const double t = (a - level) / (a - b);
-            return f[static_cast<std::size_t>(i)] + t * (f[static_cast<std::size_t>(i + dir)] - f[static_cast<std::size_t>(i)]);
+            return f[static_cast<std::size_t>(i)] +
+                   t * (f[static_cast<std::size_t>(i + dir)] - f[static_cast<std::size_t>(i)]);
         }
     }
     return std::numeric_limits<double>::quiet_NaN();
@@ -85,7 +86,7 @@ double crossing(const std::vector<double>& f, const std::vector<double>& mag, st
 struct Candidate {
     ResonancePeak peak;
     std::size_t index = 0;
-    double mag = 0.0;  // smoothed |H| at the peak
+    double mag = 0.0; // smoothed |H| at the peak
 };
 
 std::vector<ResonancePeak> peaksOf(const Points& p)
@@ -109,7 +110,7 @@ std::vector<ResonancePeak> peaksOf(const Points& p)
         const double f1 = crossing(p.f, sMag, i, -1, level);
         const double f2 = crossing(p.f, sMag, i, +1, level);
         if (!std::isfinite(f1) || !std::isfinite(f2) || (f2 - f1) / (2.0 * p.f[i]) > kMaxPeakZeta)
-            continue;  // not resolved inside the data, or too wide to be a resonance
+            continue; // not resolved inside the data, or too wide to be a resonance
         // the raw −Im maximum near the smoothed one
         std::size_t ip = i;
         for (std::size_t j = i >= half ? i - half : 0; j <= std::min(n - 1, i + half); ++j)
@@ -162,7 +163,7 @@ std::vector<ResonancePeak> peaksOf(const Points& p)
 struct Model {
     int modes = 0;
     bool residuals = false;
-    double scale = 1.0;   // S [m/N]
+    double scale = 1.0; // S [m/N]
     double omegaRef = 1.0;
 
     static double zetaOf(double q) { return 0.5 / (1.0 + std::exp(-q)); }
@@ -195,7 +196,7 @@ std::string hz(double f)
     return formatNumber(f, 5) + " Hz";
 }
 
-}  // namespace
+} // namespace
 
 std::vector<ResonancePeak> findResonancePeaks(const dsp::FrequencyResponse& frf, double minHz, double maxHz)
 {
@@ -218,27 +219,30 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
     const double lo = std::isnan(options.minHz) ? 0.0 : options.minHz;
     const double hi = std::isnan(options.maxHz) ? std::numeric_limits<double>::infinity() : options.maxHz;
     if (!(hi > lo))
-        return makeError(ErrorCode::OutOfRange, "tool FRF fit: the band's upper edge must be above its lower edge (got "
-                                                    + formatNumber(lo, 6) + " to " + formatNumber(hi, 6) + " Hz)");
+        return makeError(ErrorCode::OutOfRange,
+                         "tool FRF fit: the band's upper edge must be above its lower edge (got " +
+                             formatNumber(lo, 6) + " to " + formatNumber(hi, 6) + " Hz)");
     const Points all = collect(frf, lo, hi);
     const std::size_t minPoints = static_cast<std::size_t>(3 * std::max(options.modes, 1) + 1);
     if (all.f.size() < minPoints)
-        return makeError(ErrorCode::BadInput, "tool FRF: " + std::to_string(all.f.size()) + " valid points in the band, "
-                                                  + std::to_string(minPoints) + " needed for " + std::to_string(std::max(options.modes, 1))
-                                                  + " mode(s)");
+        return makeError(ErrorCode::BadInput, "tool FRF: " + std::to_string(all.f.size()) +
+                                                  " valid points in the band, " + std::to_string(minPoints) +
+                                                  " needed for " + std::to_string(std::max(options.modes, 1)) +
+                                                  " mode(s)");
 
     // 1. Peaks and the number of modes.
     auto peaks = peaksOf(all);
     if (peaks.empty())
         return makeError(ErrorCode::BadInput, "tool FRF: no resonance peak for mode 1 (no maximum of -Im H with both "
-                                              "half-power points inside "
-                                                  + hz(all.f.front()) + " to " + hz(all.f.back()) + ")");
+                                              "half-power points inside " +
+                                                  hz(all.f.front()) + " to " + hz(all.f.back()) + ")");
     if (options.modes > 0) {
         if (static_cast<int>(peaks.size()) < options.modes)
-            return makeError(ErrorCode::BadInput,
-                             "tool FRF: no resonance peak for mode " + std::to_string(peaks.size() + 1) + " (only "
-                                 + std::to_string(peaks.size()) + " resonance peak(s) above 5 % of the largest -Im H between "
-                                 + hz(all.f.front()) + " and " + hz(all.f.back()) + ")");
+            return makeError(ErrorCode::BadInput, "tool FRF: no resonance peak for mode " +
+                                                      std::to_string(peaks.size() + 1) + " (only " +
+                                                      std::to_string(peaks.size()) +
+                                                      " resonance peak(s) above 5 % of the largest -Im H between " +
+                                                      hz(all.f.front()) + " and " + hz(all.f.back()) + ")");
         peaks.resize(static_cast<std::size_t>(options.modes));
     } else {
         const double largest = peaks.front().negIm;
@@ -265,10 +269,10 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
     const bool residuals = options.residualTerms;
     const int nParams = 3 * nModes + (residuals ? 3 : 0);
     if (static_cast<int>(p.f.size()) < nParams + 1)
-        return makeError(ErrorCode::BadInput, "tool FRF: " + std::to_string(p.f.size()) + " valid points in the band "
-                                                  + hz(out.bandMinHz) + " to " + hz(out.bandMaxHz) + ", "
-                                                  + std::to_string(nParams + 1) + " needed for " + std::to_string(nModes) + " mode(s)"
-                                                  + (residuals ? " and the residual terms" : ""));
+        return makeError(ErrorCode::BadInput,
+                         "tool FRF: " + std::to_string(p.f.size()) + " valid points in the band " + hz(out.bandMinHz) +
+                             " to " + hz(out.bandMaxHz) + ", " + std::to_string(nParams + 1) + " needed for " +
+                             std::to_string(nModes) + " mode(s)" + (residuals ? " and the residual terms" : ""));
     out.points = p.f.size();
     out.peaks = peaks;
 
@@ -349,7 +353,7 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
             }
         }
         if (!accepted)
-            break;  // no descent direction left: converged to the numerical floor
+            break; // no descent direction left: converged to the numerical floor
         jacobianOf(x, r, J);
     }
     out.iterations = it;
@@ -362,8 +366,8 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
     };
     std::vector<Fitted> fitted;
     for (int j = 0; j < nModes; ++j)
-        fitted.push_back({std::exp(x[3 * j]), Model::zetaOf(x[3 * j + 1]), std::exp(x[3 * j + 2]), peaks[static_cast<std::size_t>(j)],
-                          out.startModes[static_cast<std::size_t>(j)]});
+        fitted.push_back({std::exp(x[3 * j]), Model::zetaOf(x[3 * j + 1]), std::exp(x[3 * j + 2]),
+                          peaks[static_cast<std::size_t>(j)], out.startModes[static_cast<std::size_t>(j)]});
     std::sort(fitted.begin(), fitted.end(), [](const Fitted& a, const Fitted& b) { return a.wn < b.wn; });
     out.modes.clear();
     out.startModes.clear();
@@ -389,41 +393,48 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
     out.rmsRelativeError = std::sqrt(rel / static_cast<double>(n));
     out.residualRatio = std::sqrt(num / den);
 
-    const std::string where = " (band " + hz(out.bandMinHz) + " to " + hz(out.bandMaxHz) + ", " + std::to_string(nModes) + " mode(s))";
+    const std::string where =
+        " (band " + hz(out.bandMinHz) + " to " + hz(out.bandMaxHz) + ", " + std::to_string(nModes) + " mode(s))";
     for (std::size_t j = 0; j < fitted.size(); ++j) {
         const auto& m = out.modes[j];
-        if (!std::isfinite(m.massKg) || !std::isfinite(m.dampingNsPerM) || !std::isfinite(m.stiffnessNPerM) || !(m.massKg > 0.0)
-            || !(m.stiffnessNPerM > 0.0))
-            return makeError(ErrorCode::BadInput, "tool FRF fit refused: the fit diverged (mode " + std::to_string(j + 1)
-                                                      + " has no finite mass, damping or stiffness)" + where
-                                                      + "; the band holds more than these modes explain: choose a band around the "
-                                                        "resonances (--band) or another number of modes");
+        if (!std::isfinite(m.massKg) || !std::isfinite(m.dampingNsPerM) || !std::isfinite(m.stiffnessNPerM) ||
+            !(m.massKg > 0.0) || !(m.stiffnessNPerM > 0.0))
+            return makeError(ErrorCode::BadInput,
+                             "tool FRF fit refused: the fit diverged (mode " + std::to_string(j + 1) +
+                                 " has no finite mass, damping or stiffness)" + where +
+                                 "; the band holds more than these modes explain: choose a band around the "
+                                 "resonances (--band) or another number of modes");
     }
     if (!(out.residualRatio <= options.maxResidual))
         return makeError(ErrorCode::BadInput,
-                         "tool FRF fit refused: the model misses the measured receptance by " + formatNumber(100.0 * out.residualRatio, 3)
-                             + " % (weighted residual; at most " + formatNumber(100.0 * options.maxResidual, 3)
-                             + " % accepted)" + where + "; choose a band around the resonances (--band) or another number of modes");
+                         "tool FRF fit refused: the model misses the measured receptance by " +
+                             formatNumber(100.0 * out.residualRatio, 3) + " % (weighted residual; at most " +
+                             formatNumber(100.0 * options.maxResidual, 3) + " % accepted)" + where +
+                             "; choose a band around the resonances (--band) or another number of modes");
     for (std::size_t j = 0; j < fitted.size(); ++j) {
         const auto& fm = fitted[j];
         const double fn = fm.wn / kTwoPi;
         const std::string mode = "mode " + std::to_string(j + 1) + " (" + hz(fn) + ")";
         if (fm.zeta > kZetaMax || fm.zeta < kZetaMin)
-            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " has damping ratio " + formatNumber(fm.zeta, 3)
-                                                      + ", outside the plausible " + formatNumber(kZetaMin, 2) + " to "
-                                                      + formatNumber(kZetaMax, 2) + where);
+            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " has damping ratio " +
+                                                      formatNumber(fm.zeta, 3) + ", outside the plausible " +
+                                                      formatNumber(kZetaMin, 2) + " to " + formatNumber(kZetaMax, 2) +
+                                                      where);
         if (fn < out.bandMinHz || fn > out.bandMaxHz)
             return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " lies outside the band" + where);
         if (1.0 / (2.0 * fm.zeta * fm.k) < kMinModePeakFraction * maxMag)
-            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " has a peak compliance below 5 % of the largest |H| "
-                                                      "in the band, it is not a resonance of the data" + where);
+            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode +
+                                                      " has a peak compliance below 5 % of the largest |H| "
+                                                      "in the band, it is not a resonance of the data" +
+                                                      where);
         if (j > 0) {
             const auto& prev = fitted[j - 1];
             if (fm.wn - prev.wn < (fm.zeta * fm.wn + prev.zeta * prev.wn))
-                return makeError(ErrorCode::BadInput, "tool FRF fit refused: modes " + std::to_string(j) + " and " + std::to_string(j + 1)
-                                                          + " (" + hz(prev.wn / kTwoPi) + ", " + hz(fn)
-                                                          + ") overlap within their half-power bandwidths: one resonance fitted twice"
-                                                          + where);
+                return makeError(ErrorCode::BadInput,
+                                 "tool FRF fit refused: modes " + std::to_string(j) + " and " + std::to_string(j + 1) +
+                                     " (" + hz(prev.wn / kTwoPi) + ", " + hz(fn) +
+                                     ") overlap within their half-power bandwidths: one resonance fitted twice" +
+                                     where);
         }
         double ln = 0.0, ld = 0.0;
         for (std::size_t i = 0; i < n; ++i)
@@ -432,11 +443,12 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
                 ld += std::norm(p.h[i]);
             }
         if (ld > 0.0 && std::sqrt(ln / ld) > kMaxLocalResidual)
-            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " misses the measured peak by "
-                                                      + formatNumber(100.0 * std::sqrt(ln / ld), 3) + " % within its half-power band (at most "
-                                                      + formatNumber(100.0 * kMaxLocalResidual, 3) + " %)" + where);
+            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " misses the measured peak by " +
+                                                      formatNumber(100.0 * std::sqrt(ln / ld), 3) +
+                                                      " % within its half-power band (at most " +
+                                                      formatNumber(100.0 * kMaxLocalResidual, 3) + " %)" + where);
     }
     return out;
 }
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

@@ -23,35 +23,35 @@
 namespace axistune::machining {
 
 struct ToolModeFitOptions {
-    int modes = 0;  ///< modes to fit; 0 = one per significant resonance peak (≥ 25 % of the largest −Im H)
-    double minHz = std::numeric_limits<double>::quiet_NaN();  ///< band lower edge; NaN (both) = automatic
-    double maxHz = std::numeric_limits<double>::quiet_NaN();  ///< band upper edge; NaN = automatic / data end
-    int maxIterations = 200;    ///< Levenberg–Marquardt iterations
-    bool residualTerms = true;  ///< fit the residual terms of the out-of-band modes
-    double maxResidual = 0.30;  ///< quality gate: largest accepted weighted residual ratio (see result)
+    int modes = 0; ///< modes to fit; 0 = one per significant resonance peak (≥ 25 % of the largest −Im H)
+    double minHz = std::numeric_limits<double>::quiet_NaN(); ///< band lower edge; NaN (both) = automatic
+    double maxHz = std::numeric_limits<double>::quiet_NaN(); ///< band upper edge; NaN = automatic / data end
+    int maxIterations = 200;                                 ///< Levenberg–Marquardt iterations
+    bool residualTerms = true;                               ///< fit the residual terms of the out-of-band modes
+    double maxResidual = 0.30; ///< quality gate: largest accepted weighted residual ratio (see result)
 };
 
 /// A resonance peak found in the FRF.
 struct ResonancePeak {
-    double hz = 0.0;        ///< frequency of the −Im H maximum
-    double lowHz = 0.0;     ///< lower half-power point of |H| (of the merged peak group)
-    double highHz = 0.0;    ///< upper half-power point of |H| (of the merged peak group)
-    double negIm = 0.0;     ///< −Im H at the peak [m/N]
-    double halfWidthHz = 0.0;  ///< half the own half-power bandwidth (before merging)
+    double hz = 0.0;          ///< frequency of the −Im H maximum
+    double lowHz = 0.0;       ///< lower half-power point of |H| (of the merged peak group)
+    double highHz = 0.0;      ///< upper half-power point of |H| (of the merged peak group)
+    double negIm = 0.0;       ///< −Im H at the peak [m/N]
+    double halfWidthHz = 0.0; ///< half the own half-power bandwidth (before merging)
 };
 
 struct ToolModeFitResult {
-    std::vector<ModalParameters> modes;       ///< sorted by natural frequency
-    std::vector<ModalParameters> startModes;  ///< the peak-picking start values, same order as modes
-    std::vector<ResonancePeak> peaks;         ///< the peaks the modes started from, same order as modes
-    double bandMinHz = 0.0, bandMaxHz = 0.0;  ///< the band that was fitted
+    std::vector<ModalParameters> modes;      ///< sorted by natural frequency
+    std::vector<ModalParameters> startModes; ///< the peak-picking start values, same order as modes
+    std::vector<ResonancePeak> peaks;        ///< the peaks the modes started from, same order as modes
+    double bandMinHz = 0.0, bandMaxHz = 0.0; ///< the band that was fitted
     bool automaticBand = false;
-    std::complex<double> upperResidual = 0.0;  ///< constant compliance of the modes above the band [m/N]
-    double lowerResidual = 0.0;  ///< L of −L/ω² for the modes below the band [m/N·(rad/s)²]
-    double rmsRelativeError = 0.0;  ///< sqrt(mean |H_model/H − 1|²) over the fitted points (diagnostic)
-    double residualRatio = 0.0;     ///< ‖√|H|·(H_model − H)‖ / ‖√|H|·H‖ over the band (the gated quantity)
+    std::complex<double> upperResidual = 0.0; ///< constant compliance of the modes above the band [m/N]
+    double lowerResidual = 0.0;               ///< L of −L/ω² for the modes below the band [m/N·(rad/s)²]
+    double rmsRelativeError = 0.0;            ///< sqrt(mean |H_model/H − 1|²) over the fitted points (diagnostic)
+    double residualRatio = 0.0; ///< ‖√|H|·(H_model − H)‖ / ‖√|H|·H‖ over the band (the gated quantity)
     int iterations = 0;
-    std::size_t points = 0;  ///< valid points inside the band that were fitted
+    std::size_t points = 0; ///< valid points inside the band that were fitted
 };
 
 /// Resonance peaks of the receptance in [minHz, maxHz] (NaN = data edge), strongest first, each at least
@@ -68,4 +68,4 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
 /// Model of a fit (modes and residual terms) at ω [rad/s], in m/N.
 std::complex<double> fittedCompliance(const ToolModeFitResult& fit, double omegaRadS);
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

@@ -45,7 +45,8 @@ Prim prim(double p)
 Status validateTool(const ToolModes& tool)
 {
     if (tool.modesX.empty() && tool.modesY.empty())
-        return makeError(ErrorCode::BadInput, "modes_x, modes_y: at least one mode is required (an empty list is a rigid direction)");
+        return makeError(ErrorCode::BadInput,
+                         "modes_x, modes_y: at least one mode is required (an empty list is a rigid direction)");
     if (auto s = checkModes(tool.modesX, "modes_x"); !s)
         return s;
     return checkModes(tool.modesY, "modes_y");

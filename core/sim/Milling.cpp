@@ -37,7 +37,8 @@ Status checkModes(const std::vector<MillingMode>& modes, const std::string& dir)
 Status validateMillingSetup(const MillingSetup& s)
 {
     if (s.modesX.empty() && s.modesY.empty())
-        return makeError(ErrorCode::BadInput, "modes_x, modes_y: at least one mode is needed (an empty list is a rigid direction)");
+        return makeError(ErrorCode::BadInput,
+                         "modes_x, modes_y: at least one mode is needed (an empty list is a rigid direction)");
     if (auto st = checkModes(s.modesX, "x"); !st)
         return st;
     if (auto st = checkModes(s.modesY, "y"); !st)

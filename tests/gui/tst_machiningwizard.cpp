@@ -17,9 +17,9 @@
 #include "core/machining/ToolModel.h"
 #include "widgets/CurvePlot.h"
 
-#include <QCoreApplication>
 #include <QAbstractButton>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>

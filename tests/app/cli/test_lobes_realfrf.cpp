@@ -3,18 +3,17 @@
 // automatic fit is accepted and gives the limit depth the zero-order computation on the measured FRF gives
 // (see tests/core/machining/test_tool_fit_real.cpp for the modes), and a fit over the whole file with one or
 // two modes is refused with the reason and exit 2, never turned into lobes.
-#include "tests/app/cli/CliRunner.h"
-#include "tests/core/machining/RealToolFrf.h"
-
-#include <gtest/gtest.h>
-
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <sstream>
 #include <string>
+
+#include "tests/app/cli/CliRunner.h"
+#include "tests/core/machining/RealToolFrf.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::readFileText;
@@ -43,7 +42,8 @@ bool writeH11(const std::filesystem::path& p)
         const auto h = frf.h[i];
         const double mag = std::abs(h);
         f << num(frf.freqHz[i]) << ',' << num(h.real()) << ',' << num(h.imag()) << ','
-          << num(mag > 0.0 ? 20.0 * std::log10(mag) : -400.0) << ',' << num(std::arg(h) * 180.0 / std::numbers::pi) << ",,1\n";
+          << num(mag > 0.0 ? 20.0 * std::log10(mag) : -400.0) << ',' << num(std::arg(h) * 180.0 / std::numbers::pi)
+          << ",,1\n";
     }
     return static_cast<bool>(f);
 }
@@ -63,15 +63,17 @@ double minLimit(const std::string& csvText)
     return best;
 }
 
-}  // namespace
+} // namespace
 
 TEST(CliLobesRealFrf, AutomaticFitOfH11GivesLobes)
 {
     const auto dir = makeTempDir("lobesreal");
     ASSERT_TRUE(writeH11(dir / "h11.csv")) << axistune::testing::kRealToolFrfCsv;
-    const std::string frfs = " --tool-frf-x " + (dir / "h11.csv").string() + " --tool-frf-y " + (dir / "h11.csv").string();
+    const std::string frfs =
+        " --tool-frf-x " + (dir / "h11.csv").string() + " --tool-frf-y " + (dir / "h11.csv").string();
     // Speeds around the first lobes' bottoms of the 1068 Hz mode with 4 teeth (the wizard's default cut).
-    const std::string common = " --cut " + kSamples + "cut-table1.json --rpm-min 2000 --rpm-max 6000 --rpm-step 50 --steps-per-period 80";
+    const std::string common =
+        " --cut " + kSamples + "cut-table1.json --rpm-min 2000 --rpm-max 6000 --rpm-step 50 --steps-per-period 80";
     auto r = runCli("lobes" + frfs + common + " --out " + (dir / "lobes.csv").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("3 mode(s) in the automatic band"), std::string::npos) << r.err;
@@ -85,10 +87,12 @@ TEST(CliLobesRealFrf, WholeFileOneAndTwoModesAreRefusedWithExit2)
 {
     const auto dir = makeTempDir("lobesrealbad");
     ASSERT_TRUE(writeH11(dir / "h11.csv"));
-    const std::string frfs = " --tool-frf-x " + (dir / "h11.csv").string() + " --tool-frf-y " + (dir / "h11.csv").string();
+    const std::string frfs =
+        " --tool-frf-x " + (dir / "h11.csv").string() + " --tool-frf-y " + (dir / "h11.csv").string();
     const std::string common = " --cut " + kSamples + "cut-table1.json --rpm-min 2000 --rpm-max 6000 --rpm-step 500";
     for (const char* modes : {"1", "2"}) {
-        auto r = runCli("lobes --band 0:5000 --modes " + std::string(modes) + frfs + common + " --out " + (dir / "l.csv").string());
+        auto r = runCli("lobes --band 0:5000 --modes " + std::string(modes) + frfs + common + " --out " +
+                        (dir / "l.csv").string());
         EXPECT_EQ(r.exitCode, 2) << modes << " mode(s): " << r.err;
         EXPECT_NE(r.err.find("refused"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("h11.csv"), std::string::npos) << r.err;

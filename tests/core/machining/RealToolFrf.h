@@ -42,9 +42,10 @@ inline dsp::FrequencyResponse readRealToolFrf(int j)
         }
         if (v.size() != 11)
             return {};
-        frf.push(v[0], {v[static_cast<std::size_t>(2 * j - 1)], v[static_cast<std::size_t>(2 * j)]}, std::nan(""), true);
+        frf.push(v[0], {v[static_cast<std::size_t>(2 * j - 1)], v[static_cast<std::size_t>(2 * j)]}, std::nan(""),
+                 true);
     }
     return frf;
 }
 
-}  // namespace axistune::testing
+} // namespace axistune::testing

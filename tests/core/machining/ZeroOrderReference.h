@@ -6,7 +6,6 @@
 // ψ = ω_c τ = π − 2 arg(−1/Λ) + 2πm (spec/chatter-stability-and-spindle-speed.md §6.1 "cross-check option").
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
-
 #include <cmath>
 #include <complex>
 #include <functional>
@@ -58,4 +57,4 @@ inline ZoaBottom zoaMinimum(const std::function<void(const std::function<void(do
     return best;
 }
 
-}  // namespace axistune::testing
+} // namespace axistune::testing

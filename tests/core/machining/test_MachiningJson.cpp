@@ -91,8 +91,8 @@ TEST(MachiningJson, LobeInputsAreValidated)
     c.krNPerM2 = 0.294e9;
     c.radialImmersion = 0.5;
     LobeOptions o;
-    EXPECT_FALSE(stabilityLobes({{}, {}}, c, {3000.0}, o).ok());  // rigid in x and y
-    EXPECT_TRUE(stabilityLobes({{m}, {}}, c, {3000.0}, o).ok());   // rigid in y only (issue 19)
+    EXPECT_FALSE(stabilityLobes({{}, {}}, c, {3000.0}, o).ok()); // rigid in x and y
+    EXPECT_TRUE(stabilityLobes({{m}, {}}, c, {3000.0}, o).ok()); // rigid in y only (issue 19)
     EXPECT_FALSE(stabilityLobes({{m}, {m}}, c, {-3000.0}, o).ok());
     o.stepsPerPeriod = 1;
     EXPECT_FALSE(stabilityLobes({{m}, {m}}, c, {3000.0}, o).ok());
@@ -139,7 +139,8 @@ TEST(MachiningJson, EmptyModeListIsARigidDirection)
     EXPECT_EQ(t->modesX.size(), 1u);
     EXPECT_TRUE(t->modesY.empty());
     // Rigid in both directions leaves nothing to compute; a list that is not a list is still an error.
-    expectError(parseToolJson(R"({"modes_x":[],"modes_y":[]})", "src.json").error(), ErrorCode::BadInput, "at least one mode");
+    expectError(parseToolJson(R"({"modes_x":[],"modes_y":[]})", "src.json").error(), ErrorCode::BadInput,
+                "at least one mode");
     expectError(parseToolJson(R"({"modes_x":[],"modes_y":{"mass_kg":1}})", "src.json").error(), ErrorCode::BadInput,
                 "modes_y");
 }

@@ -4,16 +4,15 @@
 // a_lim = 1/(|Λ|·2 sin(ψ/2)) with ψ = ω_c τ = π − 2 arg(−1/Λ) + 2πm (spec §6.1 "cross-check option").
 // Valid where K_f(t) stays close to its mean: full slotting with four teeth, single-mode tool.
 #include "core/machining/StabilityLobes.h"
-#include "tests/core/machining/ZeroOrderReference.h"
-
-#include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
-
 #include <cmath>
 #include <complex>
+#include <gtest/gtest.h>
 #include <numbers>
+
+#include "tests/core/machining/ZeroOrderReference.h"
 
 using namespace axistune::machining;
 

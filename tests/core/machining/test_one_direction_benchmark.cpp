@@ -10,11 +10,10 @@
 //    receptance is −1/(4ζ(1+ζ)k), so a_min = 4ζ(1+ζ)k/K_n = 0.298 mm.
 #include "core/machining/StabilityLobes.h"
 
-#include <gtest/gtest.h>
-
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -75,12 +74,12 @@ std::vector<std::size_t> peaks(const std::vector<double>& d)
     return out;
 }
 
-}  // namespace
+} // namespace
 
 TEST(OneDirectionBenchmark, RigidYToolIsValid)
 {
     EXPECT_TRUE(validateTool(benchmarkTool()).ok());
-    EXPECT_FALSE(validateTool(ToolModes{}).ok());  // rigid in both directions: nothing to compute
+    EXPECT_FALSE(validateTool(ToolModes{}).ok()); // rigid in both directions: nothing to compute
 }
 
 TEST(OneDirectionBenchmark, LobesMatchTheIndependentOneDofReference)

@@ -10,19 +10,18 @@
 // formula are used here.) Tolerances from issue 19: frequencies 1.5 %, damping and stiffness 15 %.
 #include "core/machining/StabilityLobes.h"
 #include "core/machining/ToolModeFit.h"
-#include "tests/core/machining/RealToolFrf.h"
-#include "tests/core/machining/ZeroOrderReference.h"
-
-#include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
-
 #include <cmath>
+#include <complex>
+#include <gtest/gtest.h>
 #include <iostream>
 #include <limits>
-#include <complex>
 #include <numbers>
+
+#include "tests/core/machining/RealToolFrf.h"
+#include "tests/core/machining/ZeroOrderReference.h"
 
 using namespace axistune;
 using namespace axistune::machining;
@@ -54,7 +53,7 @@ void expectAuthorModes(const ToolModeFitResult& fit)
     }
 }
 
-}  // namespace
+} // namespace
 
 TEST(ToolFitReal, H11AutomaticFitFindsTheAuthorsThreeModes)
 {
@@ -91,7 +90,7 @@ void expectRefusedOrRight(const Result<ToolModeFitResult>& fit, const char* what
     EXPECT_NEAR(m.stiffnessNPerM, a.k, 0.15 * a.k) << what;
 }
 
-}  // namespace
+} // namespace
 
 TEST(ToolFitReal, H11WholeFileOneModeIsRefusedOrRight)
 {
@@ -115,7 +114,7 @@ TEST(ToolFitReal, H11OneModeAutomaticBandIsRight)
     auto fit = fitToolModes(frf, {.modes = 1});
     ASSERT_TRUE(fit.ok()) << fit.error().detail;
     expectRefusedOrRight(fit, "one mode, automatic band");
-    EXPECT_LT(fit->bandMaxHz, 1500.0);  // the band of the strongest peak only
+    EXPECT_LT(fit->bandMaxHz, 1500.0); // the band of the strongest peak only
 }
 
 // The lobes of the machining wizard's default cut (4 teeth, K_t = 0.980 GPa, K_r = 0.294 GPa, a_e/D = 7/12,
@@ -156,7 +155,7 @@ TEST(ToolFitReal, H11DefaultCutMinimumLimitAgreesWithZeroOrderOnTheMeasuredFrf)
     double minDepth = std::numeric_limits<double>::infinity();
     for (const auto& p : *lobes)
         minDepth = std::min(minDepth, p.limitDepthM);
-    std::cout << "ZOA on measured H11: " << zoa.depthM * 1e3 << " mm at " << zoa.omegaC / (2.0 * kPi) << " Hz; SDM minimum "
-              << minDepth * 1e3 << " mm\n";
+    std::cout << "ZOA on measured H11: " << zoa.depthM * 1e3 << " mm at " << zoa.omegaC / (2.0 * kPi)
+              << " Hz; SDM minimum " << minDepth * 1e3 << " mm\n";
     EXPECT_NEAR(minDepth, zoa.depthM, 0.10 * zoa.depthM);
 }

@@ -56,7 +56,7 @@ TEST(ToolModeFit, RecoversTable1ToolWithinHalfPercent)
     EXPECT_NEAR(fit->bandMinHz, fn * (1.0 - 4.0 * z), 0.01 * fn);
     EXPECT_NEAR(fit->bandMaxHz, fn * (1.0 + 4.0 * z), 0.01 * fn);
     EXPECT_GT(fit->points, 20u);
-    EXPECT_LT(fit->points, 40u);  // 400 log-spaced points over 500–3000 Hz: 0.45 % apart
+    EXPECT_LT(fit->points, 40u); // 400 log-spaced points over 500–3000 Hz: 0.45 % apart
 }
 
 TEST(ToolModeFit, RecoversTwoModesWithinTwoPercent)
