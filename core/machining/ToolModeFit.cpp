@@ -403,14 +403,14 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
                              "tool FRF fit refused: the fit diverged (mode " + std::to_string(j + 1) +
                                  " has no finite mass, damping or stiffness)" + where +
                                  "; the band holds more than these modes explain: choose a band around the "
-                                 "resonances (--band) or another number of modes");
+                                 "resonances or another number of modes");
     }
     if (!(out.residualRatio <= options.maxResidual))
         return makeError(ErrorCode::BadInput,
                          "tool FRF fit refused: the model misses the measured receptance by " +
                              formatNumber(100.0 * out.residualRatio, 3) + " % (weighted residual; at most " +
                              formatNumber(100.0 * options.maxResidual, 3) + " % accepted)" + where +
-                             "; choose a band around the resonances (--band) or another number of modes");
+                             "; choose a band around the resonances or another number of modes");
     for (std::size_t j = 0; j < fitted.size(); ++j) {
         const auto& fm = fitted[j];
         const double fn = fm.wn / kTwoPi;

@@ -151,6 +151,8 @@ private slots:
             QVERIFY2(tool->errorLabel()->isVisibleTo(&w) && tool->errorLabel()->text().contains("h11.csv") &&
                          tool->errorLabel()->text().contains("refused"),
                      qPrintable(tool->errorLabel()->text()));
+            if (modes == 1)
+                maybeScreenshot(&w, "machining-01c-tool-fit-refused");
         }
         tool->fitMinHz()->clear();
         tool->fitMaxHz()->clear();
