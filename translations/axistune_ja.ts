@@ -3619,14 +3619,69 @@
         <translation>y 方向の工具先端の周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="203" />
-        <source>%1: %2 points, rms relative error %3 %</source>
-        <translation>%1: %2 点、相対 rms 誤差 %3 %</translation>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>auto</source>
+        <translation>自動</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="209" />
-        <source>fitted to %1</source>
-        <translation>%1 から同定</translation>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>Modes fitted per direction; auto = one per resonance peak above 25 % of the largest</source>
+        <translation>方向ごとに同定するモード数。自動 = 最大の共振ピークの 25 % 以上の共振ピークごとに 1 モード</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>Fit band lower edge; empty = chosen from the resonance peaks</source>
+        <translation>同定帯域の下限。空欄 = 共振ピークから自動選択</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>Fit band upper edge; empty = chosen from the resonance peaks</source>
+        <translation>同定帯域の上限。空欄 = 共振ピークから自動選択</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>FRF fit band [Hz]</source>
+        <translation>周波数応答の同定帯域 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>to</source>
+        <translation>〜</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>Modes per direction</source>
+        <translation>方向ごとのモード数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>fit refused</source>
+        <translation>同定を拒否</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>FRF fit band: '%1' is not a number</source>
+        <translation>周波数応答の同定帯域: '%1' は数値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>%1: %2 mode(s), band %3–%4 Hz (%5), weighted residual %6 %</source>
+        <translation>%1: %2 モード、帯域 %3〜%4 Hz (%5)、重み付き残差 %6 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>automatic</source>
+        <translation>自動</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>given</source>
+        <translation>指定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>fitted to %1 and %2</source>
+        <translation>%1 と %2 から同定</translation>
     </message>
     <message>
         <location filename="../app/gui/MachiningWizard.cpp" line="223" />

@@ -17,8 +17,6 @@ namespace {
 
 Status checkModes(const std::vector<ModalParameters>& modes, const char* key)
 {
-    if (modes.empty())
-        return makeError(ErrorCode::BadInput, std::string(key) + ": at least one mode is required");
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const auto& m = modes[i];
         const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
@@ -48,6 +46,9 @@ Prim prim(double p)
 
 Status validateTool(const ToolModes& tool)
 {
+    if (tool.modesX.empty() && tool.modesY.empty())
+        return makeError(ErrorCode::BadInput,
+                         "modes_x, modes_y: at least one mode is required (an empty list is a rigid direction)");
     if (auto s = checkModes(tool.modesX, "modes_x"); !s)
         return s;
     return checkModes(tool.modesY, "modes_y");

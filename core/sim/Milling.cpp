@@ -17,8 +17,6 @@ using model::kTwoPi;
 
 Status checkModes(const std::vector<MillingMode>& modes, const std::string& dir)
 {
-    if (modes.empty())
-        return makeError(ErrorCode::BadInput, "modes_" + dir + ": at least one mode is needed");
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const auto& m = modes[i];
         const std::string at = "modes_" + dir + "[" + std::to_string(i) + "]";
@@ -40,6 +38,9 @@ Status checkModes(const std::vector<MillingMode>& modes, const std::string& dir)
 
 Status validateMillingSetup(const MillingSetup& s)
 {
+    if (s.modesX.empty() && s.modesY.empty())
+        return makeError(ErrorCode::BadInput,
+                         "modes_x, modes_y: at least one mode is needed (an empty list is a rigid direction)");
     if (auto st = checkModes(s.modesX, "x"); !st)
         return st;
     if (auto st = checkModes(s.modesY, "y"); !st)

@@ -134,3 +134,20 @@ TEST(CliLobesToolFrf, BadFilesExitWith2)
     EXPECT_NE(r.err.find("--tool"), std::string::npos) << r.err;
     std::filesystem::remove_all(dir);
 }
+
+TEST(CliLobesToolFrf, RigidYToolJsonIsAccepted)
+{
+    // The Insperger–Stépán one-direction benchmark (modes_y: []; m = 0.03993 kg, f_n = 922 Hz, ζ = 0.011 →
+    // k = m(2πf_n)², c = 2ζ√(km)) at 7500 min⁻¹, the bottom of a lobe:
+    // tests/data/machining/insperger_1dof_ref.out gives 0.3218 mm (120 steps); 3 % as in
+    // tests/core/machining/test_one_direction_benchmark.cpp.
+    const auto dir = makeTempDir("lobesrigidy");
+    writeFile(dir / "tool.json", R"({"modes_x":[{"mass_kg":0.03993,"damping_Ns_per_m":5.0890,"stiffness_N_per_m":1.34005e6}],
+                                     "modes_y":[]})");
+    writeFile(dir / "cut.json", R"({"teeth":2,"Kt_N_per_m2":6e8,"Kr_N_per_m2":2e8,"radial_immersion":1.0,"milling":"down"})");
+    auto r = runCli("lobes --tool " + (dir / "tool.json").string() + " --cut " + (dir / "cut.json").string() +
+                    " --rpm-min 7500 --rpm-max 7500 --rpm-step 10 --steps-per-period 120 --out " + (dir / "l.csv").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NEAR(firstLimit(readFileText(dir / "l.csv")), 0.3218e-3, 0.03 * 0.3218e-3);
+    std::filesystem::remove_all(dir);
+}
