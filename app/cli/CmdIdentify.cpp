@@ -122,6 +122,7 @@ CliRegistrar reg{{"identify",
                       sub.add_option("--time-tolerance", o->cols.timeTolerance, "accepted jitter of the time steps, fraction of the median step (default 0.001)");
                       sub.add_option("--cutoff", o->ident.cutoffHz, "zero-phase low-pass on the position [Hz] (default 100)");
                       sub.add_option("--decimation", o->ident.decimation, "decimation factor (default round(fs/cutoff))");
+                      sub.add_option("--min-speed", o->ident.minSpeed, "leave out equations slower than this [m/s or rad/s] (default 1 % of the largest speed)");
                       sub.add_flag("--asymmetric", o->ident.asymmetric, "also fit per-direction viscous and Coulomb friction");
                       sub.add_option("--validate", o->validatePaths, "records to validate on (same columns plus --reference)");
                       sub.add_option("--reference", o->cols.reference, "commanded-position column of the validation records");

@@ -56,6 +56,7 @@ nlohmann::json identificationToJson(const IdentificationResult& r, AxisMotion mo
     j["residual_rel_pct"] = finite(r.residualRelPct);
     j["method"] = {{"sample_rate_Hz", r.sampleRateHz},  {"decimation", r.decimation},
                    {"border_samples", r.borderSamples}, {"equations", r.rows},
+                   {"min_speed", r.minSpeed},
                    {"moving_forward_pct", 100.0 * r.positiveFraction},
                    {"moving_backward_pct", 100.0 * r.negativeFraction}};
     if (r.asymmetric) {

@@ -89,23 +89,51 @@ Result<std::vector<double>> decimate(const dsp::Sos& sos, const std::vector<doub
     return out;
 }
 
-Result<LsFit> fitColumns(const std::vector<std::vector<double>>& cols, const std::vector<double>& y, int r)
+// Parallel decimation of the force and every regressor column, then LS over the rows whose decimated
+// velocity is at least `minSpeed`: at rest the friction is anything within ±Fc, not Fc·sign(q̇).
+Result<LsFit> fitColumns(const std::vector<std::vector<double>>& cols, const std::vector<double>& y,
+                         const std::vector<double>& velocity, int r, double minSpeed, std::size_t* rowsUsed)
 {
     auto dec = dsp::chebyshev1LowPass(8, 0.05, 0.8 / r);
     if (!dec)
         return dec.error();
     auto yd = decimate(*dec, y, r);
-    if (!yd)
-        return yd.error();
-    Eigen::MatrixXd w(static_cast<Eigen::Index>(yd->size()), static_cast<Eigen::Index>(cols.size()));
-    for (std::size_t j = 0; j < cols.size(); ++j) {
-        auto cd = decimate(*dec, cols[j], r);
-        if (!cd)
-            return cd.error();
-        for (std::size_t i = 0; i < cd->size(); ++i)
-            w(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (*cd)[i];
+    auto vd = decimate(*dec, velocity, r);
+    if (!yd || !vd)
+        return (!yd ? yd : vd).error();
+    std::vector<std::vector<double>> cd;
+    for (const auto& c : cols) {
+        auto d = decimate(*dec, c, r);
+        if (!d)
+            return d.error();
+        cd.push_back(std::move(d).value());
     }
-    return leastSquares(w, Eigen::Map<const Eigen::VectorXd>(yd->data(), static_cast<Eigen::Index>(yd->size())));
+    std::vector<std::size_t> keep;
+    for (std::size_t i = 0; i < vd->size(); ++i) {
+        if (std::abs((*vd)[i]) >= minSpeed)
+            keep.push_back(i);
+    }
+    *rowsUsed = keep.size();
+    Eigen::MatrixXd w(static_cast<Eigen::Index>(keep.size()), static_cast<Eigen::Index>(cols.size()));
+    Eigen::VectorXd yv(static_cast<Eigen::Index>(keep.size()));
+    for (std::size_t i = 0; i < keep.size(); ++i) {
+        yv(static_cast<Eigen::Index>(i)) = (*yd)[keep[i]];
+        for (std::size_t j = 0; j < cd.size(); ++j)
+            w(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = cd[j][keep[i]];
+    }
+    return leastSquares(w, yv);
+}
+
+double maxAbsDecimated(const std::vector<double>& v, int r)
+{
+    auto dec = dsp::chebyshev1LowPass(8, 0.05, 0.8 / r);
+    auto d = dec ? decimate(*dec, v, r) : Result<std::vector<double>>(dec.error());
+    double m = 0.0;
+    if (d) {
+        for (double x : *d)
+            m = std::max(m, std::abs(x));
+    }
+    return m;
 }
 
 Estimate est(const LsFit& f, int i) { return {f.theta(i), f.std(i)}; }
@@ -198,7 +226,8 @@ Result<IdentificationResult> identifyRigidBody(const MotionRecord& rec, const Id
                              + num(100.0 * res.negativeFraction) + " % backward; each needs at least "
                              + num(100.0 * o.minDirectionFraction) + " %)");
     }
-    auto fit = fitColumns({cA, cV, cS, cOne}, y, res.decimation);
+    res.minSpeed = o.minSpeed > 0.0 ? o.minSpeed : o.minSpeedFraction * maxAbsDecimated(cV, res.decimation);
+    auto fit = fitColumns({cA, cV, cS, cOne}, y, cV, res.decimation, res.minSpeed, &res.rows);
     if (!fit)
         return fit.error();
     res.condition = fit->condition;
@@ -208,7 +237,6 @@ Result<IdentificationResult> identifyRigidBody(const MotionRecord& rec, const Id
                                                   + num(fit->scaledCondition) + " > " + num(o.maxScaledCondition)
                                                   + "): the motion does not excite inertia, viscous and Coulomb friction separately");
     }
-    res.rows = (m + static_cast<std::size_t>(res.decimation) - 1) / static_cast<std::size_t>(res.decimation);
     res.inertia = est(*fit, 0);
     res.viscous = est(*fit, 1);
     res.coulomb = est(*fit, 2);
@@ -235,7 +263,8 @@ Result<IdentificationResult> identifyRigidBody(const MotionRecord& rec, const Id
             sPos[i] = cV[i] > 0.0 ? 1.0 : 0.0;
             sNeg[i] = cV[i] < 0.0 ? -1.0 : 0.0;
         }
-        auto af = fitColumns({cA, vPos, vNeg, sPos, sNeg}, y, res.decimation);
+        std::size_t rowsAsym = 0;
+        auto af = fitColumns({cA, vPos, vNeg, sPos, sNeg}, y, cV, res.decimation, res.minSpeed, &rowsAsym);
         if (!af)
             return af.error();
         if (!(af->scaledCondition <= o.maxScaledCondition)) {

@@ -28,6 +28,10 @@ struct IdentificationOptions {
     int decimation = 0;       ///< 0: round(fs / cutoff)
     int borderSamples = -1;   ///< dropped at each end; −1: 5·decimation
     bool asymmetric = false;  ///< also fit per-direction viscous and Coulomb friction
+    /// Equations (after decimation) with a slower velocity are left out: at rest the friction is
+    /// anything within ±Fc. minSpeed > 0 in m/s or rad/s, else minSpeedFraction of the largest speed.
+    double minSpeed = 0.0;
+    double minSpeedFraction = 0.01;
     /// Refusal thresholds (docs/identification.md "When the identification is refused").
     double maxScaledCondition = 1000.0;
     double minDirectionFraction = 0.05;  ///< of the samples moving each way, for Coulomb
@@ -57,7 +61,8 @@ struct IdentificationResult {
     double sampleRateHz = 0.0;
     int decimation = 1;
     int borderSamples = 0;
-    std::size_t rows = 0;  ///< equations after decimation
+    std::size_t rows = 0;  ///< equations after decimation and leaving out the ones at rest
+    double minSpeed = 0.0; ///< the speed below which equations were left out
     Estimate inertia, viscous, coulomb, offset;
     double residualRms = 0.0;     ///< force units
     double residualRelPct = 0.0;  ///< 100·|e|/|y|

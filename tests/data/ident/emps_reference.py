@@ -17,7 +17,9 @@ padding, np.gradient, np.linalg.lstsq), not from the C++ code:
      y = force_scale * force column;
   6. parallel decimation by r = round(fs/fc): every column of W and y through a zero-phase
      Chebyshev I (order 8, 0.05 dB ripple, cutoff 0.8*(fs/2)/r), then every r-th sample from the first;
-  7. least squares; sigma^2 = |e|^2/(N-p); std = sqrt(diag(sigma^2 (W'W)^-1)).
+  7. keep the rows whose decimated velocity is at least 1 % of its largest magnitude (at rest the
+     friction is anything within +-Fc);
+  8. least squares; sigma^2 = |e|^2/(N-p); std = sqrt(diag(sigma^2 (W'W)^-1)).
 Validation: the identified model simulated in closed loop with the record's controller (see
 simulate()), errors against the measured position.
 """
@@ -67,6 +69,9 @@ def identify(t, q, u, asymmetric=False):
     dec = sig.cheby1(8, 0.05, 0.8 / r, output="sos")
     Wd = np.column_stack([sig.sosfiltfilt(dec, W[:, j])[::r] for j in range(W.shape[1])])
     yd = sig.sosfiltfilt(dec, y)[::r]
+    vd = sig.sosfiltfilt(dec, qd)[::r]
+    moving = np.abs(vd) >= 0.01 * np.max(np.abs(vd))
+    Wd, yd = Wd[moving], yd[moving]
     theta, *_ = np.linalg.lstsq(Wd, yd, rcond=None)
     e = yd - Wd @ theta
     n, p = Wd.shape
