@@ -33,7 +33,10 @@ namespace axistune {
 namespace gui {
 namespace {
 
-QString num(double v) { return std::isfinite(v) ? QString::number(v, 'g', 6) : QStringLiteral("–"); }
+QString num(double v)
+{
+    return std::isfinite(v) ? QString::number(v, 'g', 6) : QStringLiteral("–");
+}
 
 void fillColumns(QComboBox* box, const model::Capture& cap, bool withNone)
 {
@@ -63,7 +66,7 @@ QLineEdit* fileRow(QWidget* parent, QFormLayout* form, const QString& label, con
     return edit;
 }
 
-}  // namespace
+} // namespace
 
 IdentifyDialog::IdentifyDialog(QWidget* parent) : QDialog(parent)
 {
@@ -81,8 +84,8 @@ IdentifyDialog::IdentifyDialog(QWidget* parent) : QDialog(parent)
     m_save = new QPushButton(tr("Save result…"), this);
     m_save->setEnabled(false);
     connect(m_save, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Identification result"), QStringLiteral("identification.json"),
-                                                          tr("JSON (*.json)"));
+        const QString path = QFileDialog::getSaveFileName(this, tr("Identification result"),
+                                                          QStringLiteral("identification.json"), tr("JSON (*.json)"));
         QString error;
         if (!path.isEmpty() && !saveTo(path, &error))
             setStatus(error, true);
@@ -119,7 +122,8 @@ QWidget* IdentifyDialog::buildInputs()
     auto* box = new QGroupBox(tr("Records"), this);
     auto* form = new QFormLayout(box);
     m_estFile = fileRow(box, form, tr("Estimation record:"), tr("Browse…"), [this] {
-        const QString p = QFileDialog::getOpenFileName(this, tr("Estimation record"), {}, tr("Capture CSV (*.csv);;All files (*)"));
+        const QString p =
+            QFileDialog::getOpenFileName(this, tr("Estimation record"), {}, tr("Capture CSV (*.csv);;All files (*)"));
         if (!p.isEmpty())
             loadEstimation(p);
     });
@@ -133,7 +137,8 @@ QWidget* IdentifyDialog::buildInputs()
     m_forceScale = spin(box, 1e-9, 1e9, 1.0, 8, QString(), "identifyForceScale");
     m_forceScale->setToolTip(tr("N (linear) or N·m (rotary) per unit of the force column, e.g. the drive gain in N/V"));
     m_cutoff = spin(box, 1.0, 10000.0, 100.0, 1, tr(" Hz"), "identifyCutoff");
-    m_cutoff->setToolTip(tr("Zero-phase low-pass on the position before differentiating; the decimation follows from it"));
+    m_cutoff->setToolTip(
+        tr("Zero-phase low-pass on the position before differentiating; the decimation follows from it"));
     m_asymmetric = new QCheckBox(tr("Also per-direction friction"), box);
     form->addRow(tr("Position column:"), m_position);
     form->addRow(tr("Position unit:"), m_unit);
@@ -142,7 +147,8 @@ QWidget* IdentifyDialog::buildInputs()
     form->addRow(tr("Low-pass cutoff:"), m_cutoff);
     form->addRow(QString(), m_asymmetric);
     m_valFile = fileRow(box, form, tr("Validation record (optional):"), tr("Browse…"), [this] {
-        const QString p = QFileDialog::getOpenFileName(this, tr("Validation record"), {}, tr("Capture CSV (*.csv);;All files (*)"));
+        const QString p =
+            QFileDialog::getOpenFileName(this, tr("Validation record"), {}, tr("Capture CSV (*.csv);;All files (*)"));
         if (!p.isEmpty())
             loadValidation(p);
     });
@@ -199,7 +205,8 @@ bool IdentifyDialog::loadEstimation(const QString& path)
     m_estFile->setText(path);
     fillColumns(m_position, *m_estCapture, false);
     fillColumns(m_force, *m_estCapture, false);
-    setStatus(tr("%1: %2 samples, %3 columns").arg(path).arg(m_estCapture->size()).arg(m_estCapture->channels.size()), false);
+    setStatus(tr("%1: %2 samples, %3 columns").arg(path).arg(m_estCapture->size()).arg(m_estCapture->channels.size()),
+              false);
     return true;
 }
 
@@ -217,7 +224,8 @@ bool IdentifyDialog::loadValidation(const QString& path)
     return true;
 }
 
-void IdentifyDialog::selectColumns(const QString& position, const QString& force, const QString& reference, const QString& extra)
+void IdentifyDialog::selectColumns(const QString& position, const QString& force, const QString& reference,
+                                   const QString& extra)
 {
     for (const auto& [box, name] : {std::pair{m_position, position}, std::pair{m_force, force},
                                     std::pair{m_reference, reference}, std::pair{m_extra, extra}}) {
@@ -230,8 +238,10 @@ bool IdentifyDialog::loadController(const QString& path)
 {
     std::ifstream f(path.toStdString());
     auto j = nlohmann::json::parse(f, nullptr, false);
-    auto c = j.is_discarded() ? Result<ident::PositionController>(makeError(ErrorCode::BadInput, path.toStdString() + ": not valid JSON"))
-                              : ident::controllerFromJson(j, path.toStdString());
+    auto c =
+        j.is_discarded()
+            ? Result<ident::PositionController>(makeError(ErrorCode::BadInput, path.toStdString() + ": not valid JSON"))
+            : ident::controllerFromJson(j, path.toStdString());
     if (!c) {
         setStatus(QString::fromStdString(c.error().detail), true);
         return false;
@@ -261,7 +271,8 @@ bool IdentifyDialog::identify()
     cols.forceScale = m_forceScale->value();
     cols.reference = m_reference->currentText().toStdString();
     cols.extra = m_extra->currentText().toStdString();
-    const auto motion = m_unit->currentData().toString() == QLatin1String("m") ? ident::AxisMotion::Linear : ident::AxisMotion::Rotary;
+    const auto motion =
+        m_unit->currentData().toString() == QLatin1String("m") ? ident::AxisMotion::Linear : ident::AxisMotion::Rotary;
     const std::string src = m_estFile->text().toStdString();
     ident::IdentificationOptions opt;
     opt.cutoffHz = m_cutoff->value();
@@ -283,7 +294,8 @@ bool IdentifyDialog::identify()
         auto vrec = ident::validationRecordFromCapture(*m_valCapture, m_valFile->text().toStdString(), cols);
         const auto model = ident::RigidBodyModel::symmetric(res->inertia.value, res->viscous.value, res->coulomb.value,
                                                             res->offset.value);
-        auto v = vrec ? ident::validateClosedLoop(model, c, *vrec, opt.cutoffHz, static_cast<std::size_t>(res->borderSamples))
+        auto v = vrec ? ident::validateClosedLoop(model, c, *vrec, opt.cutoffHz,
+                                                  static_cast<std::size_t>(res->borderSamples))
                       : Result<ident::ValidationResult>(vrec.error());
         if (!v) {
             m_validation->setText(tr("Validation not possible: %1").arg(QString::fromStdString(v.error().detail)));
@@ -318,16 +330,18 @@ void IdentifyDialog::showResult(const ident::IdentificationResult& r, ident::Axi
         row(tr("Coulomb friction, backward"), r.asymmetric->coulombNegative, "coulomb");
     }
     m_table->resizeColumnsToContents();
-    setStatus(tr("Identified from %1 equations (decimation %2, %3 Hz): condition number %4 (scaled %5), residual %6 %7 rms "
-                 "(%8 % of the force)")
-                  .arg(r.rows)
-                  .arg(r.decimation)
-                  .arg(num(r.sampleRateHz))
-                  .arg(num(r.condition), num(r.scaledCondition), num(r.residualRms), unit("force"), num(r.residualRelPct)),
-              false);
+    setStatus(
+        tr("Identified from %1 equations (decimation %2, %3 Hz): condition number %4 (scaled %5), residual %6 %7 rms "
+           "(%8 % of the force)")
+            .arg(r.rows)
+            .arg(r.decimation)
+            .arg(num(r.sampleRateHz))
+            .arg(num(r.condition), num(r.scaledCondition), num(r.residualRms), unit("force"), num(r.residualRelPct)),
+        false);
 }
 
-void IdentifyDialog::showValidation(const ident::ValidationRecord& rec, const ident::ValidationResult& v, ident::AxisMotion motion)
+void IdentifyDialog::showValidation(const ident::ValidationRecord& rec, const ident::ValidationResult& v,
+                                    ident::AxisMotion motion)
 {
     const bool linear = motion == ident::AxisMotion::Linear;
     // Linear: positions in mm and the error in µm; rotary: rad and the error in degrees (own strips).
@@ -346,10 +360,11 @@ void IdentifyDialog::showValidation(const ident::ValidationRecord& rec, const id
     m_plot->addSeries(tr("error (measured − simulated)"), t, e, errUnit, QColor(40, 140, 40));
     m_plot->rescale();
     const QString u = linear ? QStringLiteral("m") : QStringLiteral("rad");
-    m_validation->setText(tr("Validation on %1: position error %2 %3 rms, %4 %3 max, %5 % of the motion's rms; benchmark "
-                             "errors: position %6 %, force %7 %")
-                              .arg(m_valFile->text(), num(v.positionErrorRms), u, num(v.positionErrorMax),
-                                   num(v.positionErrorPctOfMotion), num(v.benchmarkPositionPct), num(v.benchmarkForcePct)));
+    m_validation->setText(
+        tr("Validation on %1: position error %2 %3 rms, %4 %3 max, %5 % of the motion's rms; benchmark "
+           "errors: position %6 %, force %7 %")
+            .arg(m_valFile->text(), num(v.positionErrorRms), u, num(v.positionErrorMax),
+                 num(v.positionErrorPctOfMotion), num(v.benchmarkPositionPct), num(v.benchmarkForcePct)));
 }
 
 bool IdentifyDialog::saveTo(const QString& path, QString* error) const
@@ -359,15 +374,22 @@ bool IdentifyDialog::saveTo(const QString& path, QString* error) const
         return false;
     }
     QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(QByteArray::fromStdString(m_result->dump(2) + "\n")) < 0) {
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+        f.write(QByteArray::fromStdString(m_result->dump(2) + "\n")) < 0) {
         *error = tr("%1 cannot be written: %2").arg(path, f.errorString());
         return false;
     }
     return true;
 }
 
-QString IdentifyDialog::statusText() const { return m_status->text(); }
-QString IdentifyDialog::validationText() const { return m_validation->text(); }
+QString IdentifyDialog::statusText() const
+{
+    return m_status->text();
+}
+QString IdentifyDialog::validationText() const
+{
+    return m_validation->text();
+}
 
 void IdentifyDialog::setStatus(const QString& text, bool error)
 {
@@ -383,5 +405,5 @@ IdentifyDialog* showIdentifyDialog(QWidget* parent)
     return d;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

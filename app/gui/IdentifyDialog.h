@@ -11,7 +11,6 @@
 #include <QDialog>
 
 #include <nlohmann/json.hpp>
-
 #include <optional>
 
 class QCheckBox;
@@ -89,5 +88,5 @@ private:
 /// Opens the dialog (non-modal, deleted on close).
 IdentifyDialog* showIdentifyDialog(QWidget* parent);
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -3,10 +3,9 @@
 // §1.2, §2.3 stepped with the velocity loop open; docs/simulator.md "Current-step test".
 #include "core/device/SimulatedDrive.h"
 
+#include "core/device/ModbusDrive.h"
 #include "core/model/Units.h"
 #include "core/sim/IdentifiedPlant.h"
-
-#include "core/device/ModbusDrive.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +46,8 @@ Status applySimQuery(sim::MachineDefinition& def, const std::string& query)
         else if (key == "axis" && !value.empty())
             axisName = value;
         else
-            return makeError(ErrorCode::BadInput, "unknown or empty option '" + item + "' (expected model=PATH and axis=NAME)");
+            return makeError(ErrorCode::BadInput,
+                             "unknown or empty option '" + item + "' (expected model=PATH and axis=NAME)");
         if (amp == std::string::npos)
             break;
         start = amp + 1;
@@ -74,7 +74,7 @@ Status applySimQuery(sim::MachineDefinition& def, const std::string& query)
     return sim::applyIdentifiedModel(*target, *m, modelPath);
 }
 
-}  // namespace
+} // namespace
 
 Result<std::unique_ptr<Drive>> connect(const ConnectionSettings& settings)
 {

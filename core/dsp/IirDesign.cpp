@@ -36,7 +36,7 @@ Sos sectionsFromPoles(const std::vector<cd>& upperPoles, double wn)
         const cd z = (fs2 + s) / (fs2 - s);
         SosSection sec;
         sec.a = {-2.0 * z.real(), std::norm(z)};
-        const double g = (1.0 + sec.a[0] + sec.a[1]) / 4.0;  // zeros at −1: numerator (1 + z⁻¹)²
+        const double g = (1.0 + sec.a[0] + sec.a[1]) / 4.0; // zeros at −1: numerator (1 + z⁻¹)²
         sec.b = {g, 2.0 * g, g};
         sos.push_back(sec);
     }
@@ -54,7 +54,7 @@ std::array<double, 2> unitSteadyState(const SosSection& s)
 
 void runSections(const Sos& sos, std::vector<double>& x, double initialLevel)
 {
-    double level = initialLevel;  // the steady-state input of each section for a constant signal
+    double level = initialLevel; // the steady-state input of each section for a constant signal
     for (const auto& s : sos) {
         auto z = unitSteadyState(s);
         double z1 = z[0] * level, z2 = z[1] * level;
@@ -68,7 +68,7 @@ void runSections(const Sos& sos, std::vector<double>& x, double initialLevel)
     }
 }
 
-}  // namespace
+} // namespace
 
 Result<Sos> butterworthLowPass(int order, double wn)
 {
@@ -96,7 +96,7 @@ Result<Sos> chebyshev1LowPass(int order, double rippleDb, double wn)
         poles.emplace_back(-std::sinh(mu) * std::sin(th), std::cosh(mu) * std::cos(th));
     }
     Sos sos = sectionsFromPoles(poles, wn);
-    const double dc = std::pow(10.0, -rippleDb / 20.0);  // even order: DC sits at the ripple's bottom
+    const double dc = std::pow(10.0, -rippleDb / 20.0); // even order: DC sits at the ripple's bottom
     for (double& b : sos.front().b)
         b *= dc;
     return sos;
@@ -106,8 +106,8 @@ Result<std::vector<double>> filtfiltSos(const Sos& sos, const std::vector<double
 {
     const std::size_t pad = 3 * (2 * sos.size() + 1);
     if (x.size() <= pad) {
-        return makeError(ErrorCode::BadInput, "zero-phase filter needs more than " + std::to_string(pad) + " samples, got "
-                                                  + std::to_string(x.size()));
+        return makeError(ErrorCode::BadInput, "zero-phase filter needs more than " + std::to_string(pad) +
+                                                  " samples, got " + std::to_string(x.size()));
     }
     const std::size_t n = x.size();
     std::vector<double> ext;
@@ -126,4 +126,4 @@ Result<std::vector<double>> filtfiltSos(const Sos& sos, const std::vector<double
     return y;
 }
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

@@ -19,7 +19,7 @@ namespace axistune::dsp {
 /// One section: y = (b0 + b1 z⁻¹ + b2 z⁻²)/(1 + a1 z⁻¹ + a2 z⁻²) x.
 struct SosSection {
     std::array<double, 3> b{1.0, 0.0, 0.0};
-    std::array<double, 2> a{0.0, 0.0};  ///< a1, a2 (a0 = 1)
+    std::array<double, 2> a{0.0, 0.0}; ///< a1, a2 (a0 = 1)
 };
 using Sos = std::vector<SosSection>;
 
@@ -31,4 +31,4 @@ Result<Sos> chebyshev1LowPass(int order, double rippleDb, double cutoffNyquist);
 /// Zero-phase filtering; BadInput when the signal is not longer than the padding 3·(2·sections+1).
 Result<std::vector<double>> filtfiltSos(const Sos& sos, const std::vector<double>& x);
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

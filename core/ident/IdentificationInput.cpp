@@ -12,7 +12,7 @@ bool endsWith(const std::string& s, const std::string& suffix)
     return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-}  // namespace
+} // namespace
 
 Result<AxisMotion> axisMotionFor(const std::string& unit, const std::string& column)
 {
@@ -21,13 +21,14 @@ Result<AxisMotion> axisMotionFor(const std::string& unit, const std::string& col
     if (unit == "rad")
         return AxisMotion::Rotary;
     if (!unit.empty())
-        return makeError(ErrorCode::BadInput, "position unit '" + unit + "' must be m (linear axis) or rad (rotary axis)");
+        return makeError(ErrorCode::BadInput,
+                         "position unit '" + unit + "' must be m (linear axis) or rad (rotary axis)");
     if (endsWith(column, "_m"))
         return AxisMotion::Linear;
     if (endsWith(column, "_rad"))
         return AxisMotion::Rotary;
-    return makeError(ErrorCode::BadInput, "position column '" + column
-                                              + "' does not end in _m or _rad: give the position unit (m or rad)");
+    return makeError(ErrorCode::BadInput,
+                     "position column '" + column + "' does not end in _m or _rad: give the position unit (m or rad)");
 }
 
 Result<std::vector<double>> captureColumn(const model::Capture& cap, const std::string& src, const std::string& name)
@@ -58,7 +59,8 @@ Result<double> capturePeriod(const model::Capture& cap, const std::string& src, 
     return h;
 }
 
-Result<MotionRecord> motionRecordFromCapture(const model::Capture& cap, const std::string& src, const CaptureColumns& cols)
+Result<MotionRecord> motionRecordFromCapture(const model::Capture& cap, const std::string& src,
+                                             const CaptureColumns& cols)
 {
     if (!(cols.forceScale > 0.0) || !std::isfinite(cols.forceScale))
         return makeError(ErrorCode::OutOfRange, "force scale must be a positive number");
@@ -112,4 +114,4 @@ Result<ValidationRecord> validationRecordFromCapture(const model::Capture& cap, 
     return r;
 }
 
-}  // namespace axistune::ident
+} // namespace axistune::ident

@@ -16,12 +16,12 @@ namespace axistune::ident {
 inline constexpr double kDefaultTimeTolerance = 1e-3;
 
 struct CaptureColumns {
-    std::string time = "t_s";  ///< ignored when fsHz > 0
-    double fsHz = 0.0;         ///< overrides the time column
+    std::string time = "t_s"; ///< ignored when fsHz > 0
+    double fsHz = 0.0;        ///< overrides the time column
     double timeTolerance = kDefaultTimeTolerance;
-    std::string position, force, velocity;  ///< velocity optional
-    double forceScale = 1.0;                ///< force units per unit of the force column
-    std::string reference, extra;           ///< validation only; extra optional
+    std::string position, force, velocity; ///< velocity optional
+    double forceScale = 1.0;               ///< force units per unit of the force column
+    std::string reference, extra;          ///< validation only; extra optional
 };
 
 /// "m" → Linear, "rad" → Rotary; empty: from the position column's suffix "_m" / "_rad".
@@ -33,8 +33,9 @@ Result<std::vector<double>> captureColumn(const model::Capture& cap, const std::
 /// 1/fsHz, or the uniform period of the time column (errors name the source and the column).
 Result<double> capturePeriod(const model::Capture& cap, const std::string& src, const CaptureColumns& cols);
 
-Result<MotionRecord> motionRecordFromCapture(const model::Capture& cap, const std::string& src, const CaptureColumns& cols);
+Result<MotionRecord> motionRecordFromCapture(const model::Capture& cap, const std::string& src,
+                                             const CaptureColumns& cols);
 Result<ValidationRecord> validationRecordFromCapture(const model::Capture& cap, const std::string& src,
                                                      const CaptureColumns& cols);
 
-}  // namespace axistune::ident
+} // namespace axistune::ident

@@ -8,7 +8,10 @@
 namespace axistune::ident {
 namespace {
 
-nlohmann::json finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json finite(double v)
+{
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
 
 Result<double> number(const nlohmann::json& j, const std::string& key, const std::string& src)
 {
@@ -20,17 +23,20 @@ Result<double> number(const nlohmann::json& j, const std::string& key, const std
     return v.get<double>();
 }
 
-}  // namespace
+} // namespace
 
-const char* axisMotionName(AxisMotion m) { return m == AxisMotion::Linear ? "linear" : "rotary"; }
+const char* axisMotionName(AxisMotion m)
+{
+    return m == AxisMotion::Linear ? "linear" : "rotary";
+}
 
 nlohmann::json unitsJson(AxisMotion m)
 {
     if (m == AxisMotion::Linear)
-        return {{"position", "m"}, {"velocity", "m/s"}, {"force", "N"},  {"inertia", "kg"},
-                {"viscous", "N*s/m"}, {"coulomb", "N"}, {"offset", "N"}};
-    return {{"position", "rad"}, {"velocity", "rad/s"}, {"force", "N*m"}, {"inertia", "kg*m^2"},
-            {"viscous", "N*m*s/rad"}, {"coulomb", "N*m"}, {"offset", "N*m"}};
+        return {{"position", "m"},    {"velocity", "m/s"}, {"force", "N"}, {"inertia", "kg"},
+                {"viscous", "N*s/m"}, {"coulomb", "N"},    {"offset", "N"}};
+    return {{"position", "rad"},      {"velocity", "rad/s"}, {"force", "N*m"}, {"inertia", "kg*m^2"},
+            {"viscous", "N*m*s/rad"}, {"coulomb", "N*m"},    {"offset", "N*m"}};
 }
 
 nlohmann::json estimateJson(const Estimate& e)
@@ -54,8 +60,10 @@ nlohmann::json identificationToJson(const IdentificationResult& r, AxisMotion mo
     j["condition_number_scaled"] = finite(r.scaledCondition);
     j["residual_rms"] = finite(r.residualRms);
     j["residual_rel_pct"] = finite(r.residualRelPct);
-    j["method"] = {{"sample_rate_Hz", r.sampleRateHz},  {"decimation", r.decimation},
-                   {"border_samples", r.borderSamples}, {"equations", r.rows},
+    j["method"] = {{"sample_rate_Hz", r.sampleRateHz},
+                   {"decimation", r.decimation},
+                   {"border_samples", r.borderSamples},
+                   {"equations", r.rows},
                    {"min_speed", r.minSpeed},
                    {"moving_forward_pct", 100.0 * r.positiveFraction},
                    {"moving_backward_pct", 100.0 * r.negativeFraction}};
@@ -121,7 +129,8 @@ Result<PositionController> controllerFromJson(const nlohmann::json& j, const std
 Result<IdentifiedModel> identifiedModelFromJson(const nlohmann::json& j, const std::string& src)
 {
     if (!j.is_object() || j.value("format", std::string()) != kIdentificationFormat)
-        return makeError(ErrorCode::BadInput, src + ": not an identification result (format must be '" + kIdentificationFormat + "')");
+        return makeError(ErrorCode::BadInput,
+                         src + ": not an identification result (format must be '" + kIdentificationFormat + "')");
     if (j.value("version", 0) != kIdentificationVersion)
         return makeError(ErrorCode::BadInput, src + ": unsupported identification version");
     IdentifiedModel m;
@@ -156,4 +165,4 @@ Result<IdentifiedModel> readIdentifiedModelFile(const std::string& path)
     return identifiedModelFromJson(j, path);
 }
 
-}  // namespace axistune::ident
+} // namespace axistune::ident

@@ -7,7 +7,6 @@
 #include "core/model/Result.h"
 
 #include <nlohmann/json.hpp>
-
 #include <string>
 
 namespace axistune::ident {
@@ -15,7 +14,7 @@ namespace axistune::ident {
 inline constexpr const char* kIdentificationFormat = "axistune-identification";
 inline constexpr int kIdentificationVersion = 1;
 
-const char* axisMotionName(AxisMotion m);  ///< "linear" / "rotary"
+const char* axisMotionName(AxisMotion m); ///< "linear" / "rotary"
 /// The units block: position, force, inertia, viscous, coulomb, offset, velocity.
 nlohmann::json unitsJson(AxisMotion m);
 
@@ -31,10 +30,10 @@ Result<PositionController> controllerFromJson(const nlohmann::json& j, const std
 
 struct IdentifiedModel {
     AxisMotion motion = AxisMotion::Linear;
-    RigidBodyModel model;  ///< the symmetric fit (inertia, viscous, coulomb, offset)
+    RigidBodyModel model; ///< the symmetric fit (inertia, viscous, coulomb, offset)
 };
 /// Reads a result file written by `axistune-cli identify`; errors name the file and the field.
 Result<IdentifiedModel> identifiedModelFromJson(const nlohmann::json& j, const std::string& sourceName);
 Result<IdentifiedModel> readIdentifiedModelFile(const std::string& path);
 
-}  // namespace axistune::ident
+} // namespace axistune::ident

@@ -10,7 +10,6 @@
 #include "core/dsp/IirDesign.h"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -37,7 +36,10 @@ std::vector<double> gradient(const std::vector<double>& x, double h)
     return g;
 }
 
-double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
+double sign(double v)
+{
+    return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0);
+}
 
 struct LsFit {
     Eigen::VectorXd theta, std;
@@ -48,8 +50,8 @@ Result<LsFit> leastSquares(const Eigen::MatrixXd& w, const Eigen::VectorXd& y)
 {
     const auto n = w.rows(), p = w.cols();
     if (n <= p + 1)
-        return makeError(ErrorCode::BadInput, "refused: " + std::to_string(n) + " equations after decimation for "
-                                                  + std::to_string(p) + " parameters (record too short)");
+        return makeError(ErrorCode::BadInput, "refused: " + std::to_string(n) + " equations after decimation for " +
+                                                  std::to_string(p) + " parameters (record too short)");
     LsFit f;
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(w);
     const auto& s = svd.singularValues();
@@ -65,7 +67,7 @@ Result<LsFit> leastSquares(const Eigen::MatrixXd& w, const Eigen::VectorXd& y)
     const auto& sn = svdn.singularValues();
     f.scaledCondition = sn(sn.size() - 1) > 0.0 ? sn(0) / sn(sn.size() - 1) : INFINITY;
     if (!std::isfinite(f.scaledCondition))
-        return f;  // the caller refuses with its reason
+        return f; // the caller refuses with its reason
     f.theta = w.colPivHouseholderQr().solve(y);
     const Eigen::VectorXd e = y - w * f.theta;
     const double s2 = e.squaredNorm() / static_cast<double>(n - p);
@@ -136,11 +138,17 @@ double maxAbsDecimated(const std::vector<double>& v, int r)
     return m;
 }
 
-Estimate est(const LsFit& f, int i) { return {f.theta(i), f.std(i)}; }
+Estimate est(const LsFit& f, int i)
+{
+    return {f.theta(i), f.std(i)};
+}
 
-}  // namespace
+} // namespace
 
-double Estimate::stdPct() const { return value != 0.0 ? 100.0 * std / std::abs(value) : INFINITY; }
+double Estimate::stdPct() const
+{
+    return value != 0.0 ? 100.0 * std / std::abs(value) : INFINITY;
+}
 
 RigidBodyModel RigidBodyModel::symmetric(double m, double fv, double fc, double offset)
 {
@@ -161,10 +169,10 @@ Result<double> uniformSamplePeriod(const std::vector<double>& t, double relToler
         return makeError(ErrorCode::BadInput, "time does not increase (median step " + num(median) + " s)");
     for (std::size_t i = 0; i < steps.size(); ++i) {
         if (std::abs(steps[i] - median) > relTolerance * median) {
-            return makeError(ErrorCode::BadInput, "not uniformly sampled: the step between data rows " + std::to_string(i + 1)
-                                                      + " and " + std::to_string(i + 2) + " is " + num(steps[i])
-                                                      + " s, the median step " + num(median) + " s (tolerance "
-                                                      + num(100.0 * relTolerance) + " %)");
+            return makeError(ErrorCode::BadInput, "not uniformly sampled: the step between data rows " +
+                                                      std::to_string(i + 1) + " and " + std::to_string(i + 2) + " is " +
+                                                      num(steps[i]) + " s, the median step " + num(median) +
+                                                      " s (tolerance " + num(100.0 * relTolerance) + " %)");
         }
     }
     return median;
@@ -179,17 +187,17 @@ Result<IdentificationResult> identifyRigidBody(const MotionRecord& rec, const Id
         return makeError(ErrorCode::BadInput, "position, force and velocity have different lengths");
     const double fs = 1.0 / rec.periodS;
     if (!(o.cutoffHz > 0.0) || o.cutoffHz >= 0.5 * fs)
-        return makeError(ErrorCode::OutOfRange, "cutoff " + num(o.cutoffHz) + " Hz must lie in (0, " + num(0.5 * fs)
-                                                    + ") Hz, below the Nyquist frequency");
+        return makeError(ErrorCode::OutOfRange, "cutoff " + num(o.cutoffHz) + " Hz must lie in (0, " + num(0.5 * fs) +
+                                                    ") Hz, below the Nyquist frequency");
     IdentificationResult res;
     res.sampleRateHz = fs;
     res.decimation = o.decimation > 0 ? o.decimation : std::max(1, static_cast<int>(std::lround(fs / o.cutoffHz)));
     res.borderSamples = o.borderSamples >= 0 ? o.borderSamples : 5 * res.decimation;
     const auto border = static_cast<std::size_t>(res.borderSamples);
     if (n < 2 * border + 20 * static_cast<std::size_t>(res.decimation))
-        return makeError(ErrorCode::BadInput, "refused: " + std::to_string(n) + " samples are too few for a border of "
-                                                  + std::to_string(border) + " and decimation by "
-                                                  + std::to_string(res.decimation));
+        return makeError(ErrorCode::BadInput, "refused: " + std::to_string(n) +
+                                                  " samples are too few for a border of " + std::to_string(border) +
+                                                  " and decimation by " + std::to_string(res.decimation));
     auto lp = dsp::butterworthLowPass(4, o.cutoffHz / (0.5 * fs));
     if (!lp)
         return lp.error();
@@ -221,10 +229,10 @@ Result<IdentificationResult> identifyRigidBody(const MotionRecord& rec, const Id
     res.negativeFraction = static_cast<double>(neg) / static_cast<double>(m);
     if (std::min(res.positiveFraction, res.negativeFraction) < o.minDirectionFraction) {
         return makeError(ErrorCode::BadInput,
-                         "refused: the motion does not reverse enough to separate Coulomb friction from the offset ("
-                             + num(100.0 * res.positiveFraction) + " % of the samples move forward, "
-                             + num(100.0 * res.negativeFraction) + " % backward; each needs at least "
-                             + num(100.0 * o.minDirectionFraction) + " %)");
+                         "refused: the motion does not reverse enough to separate Coulomb friction from the offset (" +
+                             num(100.0 * res.positiveFraction) + " % of the samples move forward, " +
+                             num(100.0 * res.negativeFraction) + " % backward; each needs at least " +
+                             num(100.0 * o.minDirectionFraction) + " %)");
     }
     res.minSpeed = o.minSpeed > 0.0 ? o.minSpeed : o.minSpeedFraction * maxAbsDecimated(cV, res.decimation);
     auto fit = fitColumns({cA, cV, cS, cOne}, y, cV, res.decimation, res.minSpeed, &res.rows);
@@ -233,9 +241,10 @@ Result<IdentificationResult> identifyRigidBody(const MotionRecord& rec, const Id
     res.condition = fit->condition;
     res.scaledCondition = fit->scaledCondition;
     if (!(fit->scaledCondition <= o.maxScaledCondition)) {
-        return makeError(ErrorCode::BadInput, "refused: the regressor [q'', q', sign(q'), 1] is ill-conditioned (scaled condition number "
-                                                  + num(fit->scaledCondition) + " > " + num(o.maxScaledCondition)
-                                                  + "): the motion does not excite inertia, viscous and Coulomb friction separately");
+        return makeError(ErrorCode::BadInput,
+                         "refused: the regressor [q'', q', sign(q'), 1] is ill-conditioned (scaled condition number " +
+                             num(fit->scaledCondition) + " > " + num(o.maxScaledCondition) +
+                             "): the motion does not excite inertia, viscous and Coulomb friction separately");
     }
     res.inertia = est(*fit, 0);
     res.viscous = est(*fit, 1);
@@ -244,15 +253,16 @@ Result<IdentificationResult> identifyRigidBody(const MotionRecord& rec, const Id
     res.residualRms = fit->residualRms;
     res.residualRelPct = fit->residualRelPct;
     if (!(res.inertia.value > 0.0) || res.inertia.stdPct() > o.maxInertiaStdPct) {
-        return makeError(ErrorCode::BadInput, "refused: the inertia is not identified (" + num(res.inertia.value) + " ± "
-                                                  + num(res.inertia.std) + ", relative standard deviation "
-                                                  + num(res.inertia.stdPct()) + " % > " + num(o.maxInertiaStdPct)
-                                                  + " % or not positive): the record has too little acceleration");
+        return makeError(ErrorCode::BadInput, "refused: the inertia is not identified (" + num(res.inertia.value) +
+                                                  " ± " + num(res.inertia.std) + ", relative standard deviation " +
+                                                  num(res.inertia.stdPct()) + " % > " + num(o.maxInertiaStdPct) +
+                                                  " % or not positive): the record has too little acceleration");
     }
     for (const auto& [name, e] : {std::pair{"viscous", res.viscous}, std::pair{"Coulomb", res.coulomb}}) {
         if (e.value < -3.0 * e.std) {
-            return makeError(ErrorCode::BadInput, std::string("refused: negative ") + name + " friction " + num(e.value) + " ± "
-                                                      + num(e.std) + " is not physical; the force or position sign is probably wrong");
+            return makeError(ErrorCode::BadInput, std::string("refused: negative ") + name + " friction " +
+                                                      num(e.value) + " ± " + num(e.std) +
+                                                      " is not physical; the force or position sign is probably wrong");
         }
     }
     if (o.asymmetric) {
@@ -268,11 +278,12 @@ Result<IdentificationResult> identifyRigidBody(const MotionRecord& rec, const Id
         if (!af)
             return af.error();
         if (!(af->scaledCondition <= o.maxScaledCondition)) {
-            return makeError(ErrorCode::BadInput, "refused: the asymmetric regressor is ill-conditioned (scaled condition number "
-                                                      + num(af->scaledCondition) + ")");
+            return makeError(ErrorCode::BadInput,
+                             "refused: the asymmetric regressor is ill-conditioned (scaled condition number " +
+                                 num(af->scaledCondition) + ")");
         }
-        res.asymmetric = AsymmetricFriction{est(*af, 0), est(*af, 1), est(*af, 2), est(*af, 3), est(*af, 4),
-                                            af->residualRms, af->scaledCondition};
+        res.asymmetric = AsymmetricFriction{est(*af, 0), est(*af, 1),     est(*af, 2),        est(*af, 3),
+                                            est(*af, 4), af->residualRms, af->scaledCondition};
     }
     return res;
 }
@@ -302,7 +313,7 @@ Result<ValidationResult> validateClosedLoop(const RigidBodyModel& model, const P
     for (std::size_t k = 0; k < 3; ++k)
         q[k] = rec.position[k];
     for (std::size_t k = 0; k < std::min(n, 2 + d); ++k)
-        u[k] = rec.command[k];  // commands issued before the simulated loop starts
+        u[k] = rec.command[k]; // commands issued before the simulated loop starts
     double v = (rec.position[3] - rec.position[1]) / (2.0 * h);
     for (std::size_t k = 2; k + 1 < n; ++k) {
         const double raw = c.kv * (c.kpPerS * (rec.reference[k] - q[k]) - (q[k] - q[k - 2]) / (2.0 * h));
@@ -314,14 +325,14 @@ Result<ValidationResult> validateClosedLoop(const RigidBodyModel& model, const P
             double vn = 0.0;
             if (v == 0.0) {
                 if (net <= model.coulombPositive && net >= -model.coulombNegative)
-                    continue;  // sticks
+                    continue; // sticks
                 vn = dt / model.inertia * (net > 0.0 ? net - model.coulombPositive : net + model.coulombNegative);
             } else {
                 const double fr = v > 0.0 ? model.viscousPositive * v + model.coulombPositive
                                           : model.viscousNegative * v - model.coulombNegative;
                 vn = v + dt / model.inertia * (net - fr);
                 if (vn * v < 0.0)
-                    vn = 0.0;  // a velocity reversal passes through rest
+                    vn = 0.0; // a velocity reversal passes through rest
             }
             x += 0.5 * dt * (v + vn);
             v = vn;
@@ -359,4 +370,4 @@ Result<ValidationResult> validateClosedLoop(const RigidBodyModel& model, const P
     return out;
 }
 
-}  // namespace axistune::ident
+} // namespace axistune::ident

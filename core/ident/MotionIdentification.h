@@ -24,30 +24,30 @@ enum class AxisMotion { Linear, Rotary };
 Result<double> uniformSamplePeriod(const std::vector<double>& timeS, double relTolerance);
 
 struct IdentificationOptions {
-    double cutoffHz = 100.0;  ///< zero-phase Butterworth (order 4) on the position
-    int decimation = 0;       ///< 0: round(fs / cutoff)
-    int borderSamples = -1;   ///< dropped at each end; −1: 5·decimation
-    bool asymmetric = false;  ///< also fit per-direction viscous and Coulomb friction
+    double cutoffHz = 100.0; ///< zero-phase Butterworth (order 4) on the position
+    int decimation = 0;      ///< 0: round(fs / cutoff)
+    int borderSamples = -1;  ///< dropped at each end; −1: 5·decimation
+    bool asymmetric = false; ///< also fit per-direction viscous and Coulomb friction
     /// Equations (after decimation) with a slower velocity are left out: at rest the friction is
     /// anything within ±Fc. minSpeed > 0 in m/s or rad/s, else minSpeedFraction of the largest speed.
     double minSpeed = 0.0;
     double minSpeedFraction = 0.01;
     /// Refusal thresholds (docs/identification.md "When the identification is refused").
     double maxScaledCondition = 1000.0;
-    double minDirectionFraction = 0.05;  ///< of the samples moving each way, for Coulomb
+    double minDirectionFraction = 0.05; ///< of the samples moving each way, for Coulomb
     double maxInertiaStdPct = 20.0;
 };
 
 struct MotionRecord {
     double periodS = 0.0;
-    std::vector<double> position;  ///< m or rad
-    std::vector<double> force;     ///< N or N·m (already scaled)
-    std::vector<double> velocity;  ///< optional measured velocity (m/s or rad/s); empty = from position
+    std::vector<double> position; ///< m or rad
+    std::vector<double> force;    ///< N or N·m (already scaled)
+    std::vector<double> velocity; ///< optional measured velocity (m/s or rad/s); empty = from position
 };
 
 struct Estimate {
     double value = 0.0;
-    double std = 0.0;  ///< standard deviation from the LS covariance σ²(WᵀW)⁻¹
+    double std = 0.0; ///< standard deviation from the LS covariance σ²(WᵀW)⁻¹
     double stdPct() const;
 };
 
@@ -92,24 +92,24 @@ struct RigidBodyModel {
 /// sample k held over [t_{k+delay}, t_{k+delay+1}); force = forceScale·u.
 struct PositionController {
     double kpPerS = 0.0;
-    double kv = 0.0;          ///< command units per (position unit/s)
-    double saturation = 0.0;  ///< |sat| limit in command units, > 0
+    double kv = 0.0;         ///< command units per (position unit/s)
+    double saturation = 0.0; ///< |sat| limit in command units, > 0
     int delaySamples = 0;
-    double forceScale = 1.0;  ///< force units per command unit
+    double forceScale = 1.0; ///< force units per command unit
 };
 
 struct ValidationRecord {
     double periodS = 0.0;
-    std::vector<double> reference, position, command;  ///< command: the recorded u (for the force error)
-    std::vector<double> extra;                          ///< added to u (e.g. force pulses); may be empty
+    std::vector<double> reference, position, command; ///< command: the recorded u (for the force error)
+    std::vector<double> extra;                        ///< added to u (e.g. force pulses); may be empty
 };
 
 struct ValidationResult {
-    std::size_t firstSample = 0;  ///< errors are taken from here to the end
+    std::size_t firstSample = 0; ///< errors are taken from here to the end
     double positionErrorRms = 0.0, positionErrorMax = 0.0;
-    double positionErrorPctOfMotion = 0.0;  ///< 100·rms(e)/rms(q − mean q)
-    double benchmarkPositionPct = 0.0;      ///< 100·‖q_f − q_sim‖/‖q_f‖ (EMPS benchmark script, q_f filtered)
-    double benchmarkForcePct = 0.0;         ///< 100·‖F − F_sim‖/‖F‖
+    double positionErrorPctOfMotion = 0.0; ///< 100·rms(e)/rms(q − mean q)
+    double benchmarkPositionPct = 0.0;     ///< 100·‖q_f − q_sim‖/‖q_f‖ (EMPS benchmark script, q_f filtered)
+    double benchmarkForcePct = 0.0;        ///< 100·‖F − F_sim‖/‖F‖
     std::vector<double> simulatedPosition, simulatedCommand;
 };
 
@@ -120,4 +120,4 @@ Result<ValidationResult> validateClosedLoop(const RigidBodyModel& model, const P
                                             const ValidationRecord& record, double cutoffHz, std::size_t firstSample,
                                             int substeps = 10);
 
-}  // namespace axistune::ident
+} // namespace axistune::ident

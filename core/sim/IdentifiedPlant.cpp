@@ -12,11 +12,13 @@ Status applyIdentifiedModel(AxisDefinition& axis, const ident::IdentifiedModel& 
 {
     const bool linear = axis.kind == AxisKind::Linear;
     if (linear != (m.motion == ident::AxisMotion::Linear)) {
-        return makeError(ErrorCode::BadInput, src + ": a " + ident::axisMotionName(m.motion) + " model cannot be applied to "
-                                                  + (linear ? "linear" : "rotary") + " axis " + axis.name);
+        return makeError(ErrorCode::BadInput, src + ": a " + ident::axisMotionName(m.motion) +
+                                                  " model cannot be applied to " + (linear ? "linear" : "rotary") +
+                                                  " axis " + axis.name);
     }
     const double r = linear ? axis.values.at("plant.screw_lead") : 1.0;
-    const double totals[3] = {m.model.inertia * r * r, 0.5 * (m.model.viscousPositive + m.model.viscousNegative) * r * r,
+    const double totals[3] = {m.model.inertia * r * r,
+                              0.5 * (m.model.viscousPositive + m.model.viscousNegative) * r * r,
                               0.5 * (m.model.coulombPositive + m.model.coulombNegative) * r};
     const char* pairs[3][2] = {{"plant.inertia_motor", "plant.inertia_load"},
                                {"plant.viscous_motor", "plant.viscous_load"},
@@ -43,4 +45,4 @@ Status applyIdentifiedModel(AxisDefinition& axis, const ident::IdentifiedModel& 
     return Status::success();
 }
 
-}  // namespace axistune::sim
+} // namespace axistune::sim

@@ -19,4 +19,4 @@ namespace axistune::sim {
 /// or the reverse, a value outside the parameter's limits (never clamped).
 Status applyIdentifiedModel(AxisDefinition& axis, const ident::IdentifiedModel& model, const std::string& sourceName);
 
-}  // namespace axistune::sim
+} // namespace axistune::sim

@@ -5,7 +5,6 @@
 // and a cutoff above the Nyquist frequency is refused with the reason. Screenshot for docs.
 #include "app/gui/IdentifyDialog.h"
 #include "core/ident/IdentificationJson.h"
-#include "tests/gui/GuiTestUtil.h"
 #include "widgets/TimeTracePlot.h"
 
 #include <QComboBox>
@@ -15,6 +14,8 @@
 #include <QtTest>
 
 #include <fstream>
+
+#include "tests/gui/GuiTestUtil.h"
 
 using namespace axistune;
 
@@ -66,10 +67,10 @@ private slots:
     {
         const QString real = QStringLiteral(AXISTUNE_REAL_DATA_DIR);
         gui::IdentifyDialog d;
-        QVERIFY(!d.identify());  // nothing loaded
+        QVERIFY(!d.identify()); // nothing loaded
         QVERIFY(d.loadEstimation(real + "/emps_DATA_EMPS.csv"));
         d.selectColumns("q_motor", "u_voltage");
-        d.findChild<QDoubleSpinBox*>("identifyCutoff")->setValue(600.0);  // above Nyquist (500 Hz)
+        d.findChild<QDoubleSpinBox*>("identifyCutoff")->setValue(600.0); // above Nyquist (500 Hz)
         QVERIFY(!d.identify());
         QVERIFY2(d.statusText().contains("Nyquist"), qPrintable(d.statusText()));
         QCOMPARE(d.resultTable()->rowCount(), 0);

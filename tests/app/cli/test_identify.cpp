@@ -2,13 +2,12 @@
 // axistune-cli identify end to end on the EMPS records (shared/data/real): the result file against
 // the independent reference (tests/data/ident/emps_reference.py, 0.5 %), the validation on the
 // pulses record (2 % of the reference's), units, and exit 2 with the reason for bad input.
-#include "tests/app/cli/CliRunner.h"
-
+#include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
-#include <fstream>
+#include "tests/app/cli/CliRunner.h"
 
 using axistune::testing::runCli;
 
@@ -19,7 +18,8 @@ const std::string kData = AXISTUNE_TEST_DATA_DIR;
 
 std::string empsArgs()
 {
-    return "identify --in " + kReal + "/emps_DATA_EMPS.csv --position q_motor --position-unit m --force u_voltage "
+    return "identify --in " + kReal +
+           "/emps_DATA_EMPS.csv --position q_motor --position-unit m --force u_voltage "
            "--force-scale 35.15065188";
 }
 
@@ -29,13 +29,15 @@ nlohmann::json reference()
     return nlohmann::json::parse(f);
 }
 
-}  // namespace
+} // namespace
 
 TEST(CliIdentify, EmpsResultAndValidationAgreeWithTheReference)
 {
     ASSERT_TRUE(std::filesystem::exists(kReal + "/emps_DATA_EMPS.csv")) << kReal << ": real data missing";
-    const auto r = runCli(empsArgs() + " --asymmetric --validate " + kReal + "/emps_DATA_EMPS_PULSES.csv --reference q_ref "
-                          "--extra pulses_N --controller " + kData + "/ident/emps_controller.json");
+    const auto r = runCli(empsArgs() + " --asymmetric --validate " + kReal +
+                          "/emps_DATA_EMPS_PULSES.csv --reference q_ref "
+                          "--extra pulses_N --controller " +
+                          kData + "/ident/emps_controller.json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     const auto ref = reference();
@@ -56,19 +58,23 @@ TEST(CliIdentify, EmpsResultAndValidationAgreeWithTheReference)
     ASSERT_EQ(j["validation"].size(), 1u);
     const auto v = j["validation"][0];
     const auto rv = ref["validation"]["identified"];
-    for (const auto& [mine, theirs] : {std::pair{"position_error_rms", "position_error_rms_m"},
-                                       std::pair{"position_error_pct_of_motion_rms", "position_error_pct_of_motion_rms"},
-                                       std::pair{"benchmark_rel_err_position_pct", "benchmark_rel_err_position_pct"},
-                                       std::pair{"benchmark_rel_err_force_pct", "benchmark_rel_err_force_pct"}}) {
+    for (const auto& [mine, theirs] :
+         {std::pair{"position_error_rms", "position_error_rms_m"},
+          std::pair{"position_error_pct_of_motion_rms", "position_error_pct_of_motion_rms"},
+          std::pair{"benchmark_rel_err_position_pct", "benchmark_rel_err_position_pct"},
+          std::pair{"benchmark_rel_err_force_pct", "benchmark_rel_err_force_pct"}}) {
         EXPECT_NEAR(v[mine].get<double>(), rv[theirs].get<double>(), 0.02 * rv[theirs].get<double>()) << mine;
     }
 }
 
 TEST(CliIdentify, ControllerFromOptionsGivesTheSameValidation)
 {
-    const auto a = runCli(empsArgs() + " --validate " + kReal + "/emps_DATA_EMPS_PULSES.csv --reference q_ref --extra pulses_N "
-                          "--controller " + kData + "/ident/emps_controller.json");
-    const auto b = runCli(empsArgs() + " --validate " + kReal + "/emps_DATA_EMPS_PULSES.csv --reference q_ref --extra pulses_N "
+    const auto a = runCli(empsArgs() + " --validate " + kReal +
+                          "/emps_DATA_EMPS_PULSES.csv --reference q_ref --extra pulses_N "
+                          "--controller " +
+                          kData + "/ident/emps_controller.json");
+    const auto b = runCli(empsArgs() + " --validate " + kReal +
+                          "/emps_DATA_EMPS_PULSES.csv --reference q_ref --extra pulses_N "
                           "--kp 160.18 --kv 243.45 --saturation 10 --delay 0");
     ASSERT_EQ(a.exitCode, 0) << a.err;
     ASSERT_EQ(b.exitCode, 0) << b.err;
@@ -107,7 +113,8 @@ TEST(CliIdentify, BadInputExitsTwoWithTheReason)
             rows += line.empty() || line[0] == '#' ? 0 : 1;
         }
     }
-    r = runCli("identify --in " + (dir / "short.csv").string() + " --position q_motor --position-unit m --force u_voltage");
+    r = runCli("identify --in " + (dir / "short.csv").string() +
+               " --position q_motor --position-unit m --force u_voltage");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("refused"), std::string::npos) << r.err;
     std::filesystem::remove_all(dir);

@@ -10,11 +10,10 @@
 #include "core/ident/IdentificationJson.h"
 #include "core/ident/MotionIdentification.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numbers>
 
 using namespace axistune;
@@ -22,7 +21,7 @@ using namespace axistune::device;
 
 namespace {
 
-constexpr double kM = 95.1089, kFv = 203.5034, kFc = 20.3935;  // the EMPS benchmark's published model
+constexpr double kM = 95.1089, kFv = 203.5034, kFc = 20.3935; // the EMPS benchmark's published model
 
 std::string writeModel(ident::AxisMotion motion)
 {
@@ -31,7 +30,8 @@ std::string writeModel(ident::AxisMotion motion)
     r.viscous = {kFv, 1.0};
     r.coulomb = {kFc, 0.1};
     r.offset = {-3.1648, 0.04};
-    const auto path = std::filesystem::temp_directory_path() / (std::string("axistune-model-") + ident::axisMotionName(motion) + ".json");
+    const auto path = std::filesystem::temp_directory_path() /
+                      (std::string("axistune-model-") + ident::axisMotionName(motion) + ".json");
     std::ofstream(path) << ident::identificationToJson(r, motion).dump(2);
     return path.string();
 }
@@ -67,7 +67,7 @@ model::Capture jog(Drive& drive, double velocity)
     return t.ok() ? *t : model::Capture{};
 }
 
-}  // namespace
+} // namespace
 
 TEST(IdentifiedPlant, ModelSetsTheMotorSideTotals)
 {
@@ -104,12 +104,12 @@ TEST(IdentifiedPlant, JogsOnTheModelledAxisIdentifyTheModelAgain)
         rec.periodS = ts->data[1] - ts->data[0];
         rec.position.insert(rec.position.end(), q->data.begin(), q->data.end());
         for (double tau : f->data)
-            rec.force.push_back(tau / r);  // motor torque → force at the table
+            rec.force.push_back(tau / r); // motor torque → force at the table
     }
     auto id = ident::identifyRigidBody(rec, {});
     ASSERT_TRUE(id.ok()) << id.error().detail;
-    for (const auto& [e, truth, name] : {std::tuple{id->inertia, kM, "M"}, std::tuple{id->viscous, kFv, "Fv"},
-                                         std::tuple{id->coulomb, kFc, "Fc"}}) {
+    for (const auto& [e, truth, name] :
+         {std::tuple{id->inertia, kM, "M"}, std::tuple{id->viscous, kFv, "Fv"}, std::tuple{id->coulomb, kFc, "Fc"}}) {
         EXPECT_NEAR(e.value, truth, std::max(3.0 * e.std, 0.02 * truth)) << name << " ± " << e.std;
         EXPECT_LT(std::abs(e.value - truth), 0.02 * truth) << name;
     }
@@ -122,7 +122,8 @@ TEST(IdentifiedPlant, WrongKindUnknownOptionAndMissingFileAreRefused)
     const auto rotary = writeModel(ident::AxisMotion::Rotary);
     auto a = connect({"sim:vmc?model=" + rotary + "&axis=X", 1});
     ASSERT_FALSE(a.ok());
-    EXPECT_NE(a.error().detail.find("rotary model cannot be applied to linear axis X"), std::string::npos) << a.error().detail;
+    EXPECT_NE(a.error().detail.find("rotary model cannot be applied to linear axis X"), std::string::npos)
+        << a.error().detail;
     auto b = connect({"sim:vmc?modle=x.json", 1});
     ASSERT_FALSE(b.ok());
     EXPECT_NE(b.error().detail.find("unknown or empty option 'modle=x.json'"), std::string::npos) << b.error().detail;
@@ -130,6 +131,6 @@ TEST(IdentifiedPlant, WrongKindUnknownOptionAndMissingFileAreRefused)
     ASSERT_FALSE(c.ok());
     EXPECT_NE(c.error().detail.find("/nonexistent/result.json"), std::string::npos) << c.error().detail;
     auto e = connect({"sim:vmc?model=" + writeModel(ident::AxisMotion::Linear), 1});
-    ASSERT_FALSE(e.ok());  // three linear axes: which one?
+    ASSERT_FALSE(e.ok()); // three linear axes: which one?
     EXPECT_NE(e.error().detail.find("give axis=NAME"), std::string::npos) << e.error().detail;
 }

@@ -12,12 +12,11 @@
 #include "core/ident/MotionIdentification.h"
 #include "core/io/CaptureCsv.h"
 
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <random>
 
@@ -38,7 +37,8 @@ nlohmann::json reference()
 model::Capture readReal(const std::string& name)
 {
     const std::string path = kRealDir + "/" + name;
-    EXPECT_TRUE(std::filesystem::exists(path)) << path << " missing: configure with -DAXISTUNE_REAL_DATA_DIR=<shared/data/real>";
+    EXPECT_TRUE(std::filesystem::exists(path))
+        << path << " missing: configure with -DAXISTUNE_REAL_DATA_DIR=<shared/data/real>";
     auto c = io::readCaptureCsvFile(path);
     EXPECT_TRUE(c.ok()) << (c.ok() ? "" : c.error().detail);
     return c.ok() ? c.value() : model::Capture{};
@@ -60,8 +60,8 @@ void expectRel(double actual, double expected, double rel, const std::string& wh
 }
 
 // q = a1 sin(w1 t) + a2 sin(w2 t), force from the model exactly (plus optional noise).
-ident::MotionRecord analyticRecord(double m, double fv, double fc, double off, double a1, double f1, double a2, double f2,
-                                   double seconds, double noise = 0.0)
+ident::MotionRecord analyticRecord(double m, double fv, double fc, double off, double a1, double f1, double a2,
+                                   double f2, double seconds, double noise = 0.0)
 {
     ident::MotionRecord r;
     r.periodS = 1e-3;
@@ -80,7 +80,7 @@ ident::MotionRecord analyticRecord(double m, double fv, double fc, double off, d
     return r;
 }
 
-}  // namespace
+} // namespace
 
 TEST(IirDesign, ZeroPhaseFiltersMatchScipySosfiltfilt)
 {
@@ -107,7 +107,7 @@ TEST(Identification, EmpsAgreesWithTheIndependentReference)
     const auto ref = reference();
     const auto cap = readReal("emps_DATA_EMPS.csv");
     auto rec = ident::motionRecordFromCapture(cap, "emps_DATA_EMPS.csv", empsColumns());
-    ASSERT_TRUE(rec.ok()) << rec.error().detail;  // ±24 ns jitter on 1 ms: within 0.1 %
+    ASSERT_TRUE(rec.ok()) << rec.error().detail; // ±24 ns jitter on 1 ms: within 0.1 %
     ident::IdentificationOptions o;
     o.asymmetric = true;
     auto r = ident::identifyRigidBody(*rec, o);
@@ -127,7 +127,8 @@ TEST(Identification, EmpsAgreesWithTheIndependentReference)
     ASSERT_TRUE(r->asymmetric.has_value());
     const auto ta = ref["asymmetric"]["theta"];
     const auto& a = *r->asymmetric;
-    const ident::Estimate* ea[5] = {&a.inertia, &a.viscousPositive, &a.viscousNegative, &a.coulombPositive, &a.coulombNegative};
+    const ident::Estimate* ea[5] = {&a.inertia, &a.viscousPositive, &a.viscousNegative, &a.coulombPositive,
+                                    &a.coulombNegative};
     for (int i = 0; i < 5; ++i)
         expectRel(ea[i]->value, ta[i].get<double>(), 0.005, "asymmetric " + std::to_string(i));
 }
@@ -136,9 +137,12 @@ TEST(Identification, EmpsValidationOnThePulsesRecord)
 {
     const auto ref = reference();
     const auto th = ref["symmetric"]["theta"];
-    const auto rc = ref["controller"];  // the script's names
-    auto ctrl = ident::controllerFromJson({{"kp_per_s", rc["kp"]}, {"kv", rc["kv"]}, {"saturation", rc["saturation"]},
-                                           {"delay_samples", rc["delay"]}, {"force_scale", rc["force_scale"]}},
+    const auto rc = ref["controller"]; // the script's names
+    auto ctrl = ident::controllerFromJson({{"kp_per_s", rc["kp"]},
+                                           {"kv", rc["kv"]},
+                                           {"saturation", rc["saturation"]},
+                                           {"delay_samples", rc["delay"]},
+                                           {"force_scale", rc["force_scale"]}},
                                           "reference");
     ASSERT_TRUE(ctrl.ok()) << ctrl.error().detail;
     const auto cap = readReal("emps_DATA_EMPS_PULSES.csv");
@@ -154,8 +158,10 @@ TEST(Identification, EmpsValidationOnThePulsesRecord)
         ASSERT_TRUE(v.ok()) << v.error().detail;
         const auto rv = ref["validation"][which];
         expectRel(v->positionErrorRms, rv["position_error_rms_m"].get<double>(), 0.02, which + " rms");
-        expectRel(v->positionErrorPctOfMotion, rv["position_error_pct_of_motion_rms"].get<double>(), 0.02, which + " %");
-        expectRel(v->benchmarkPositionPct, rv["benchmark_rel_err_position_pct"].get<double>(), 0.02, which + " benchmark q");
+        expectRel(v->positionErrorPctOfMotion, rv["position_error_pct_of_motion_rms"].get<double>(), 0.02,
+                  which + " %");
+        expectRel(v->benchmarkPositionPct, rv["benchmark_rel_err_position_pct"].get<double>(), 0.02,
+                  which + " benchmark q");
         expectRel(v->benchmarkForcePct, rv["benchmark_rel_err_force_pct"].get<double>(), 0.02, which + " benchmark F");
     }
     // The bound the reference computes: the published model under the same simulation.
@@ -165,7 +171,7 @@ TEST(Identification, EmpsValidationOnThePulsesRecord)
 
 TEST(Identification, AnalyticRecordGivesTheParametersBack)
 {
-    for (const double scale : {1.0, 0.01}) {  // a linear axis in m/N, a rotary one in rad/N·m
+    for (const double scale : {1.0, 0.01}) { // a linear axis in m/N, a rotary one in rad/N·m
         const double m = 95.0 * scale, fv = 200.0 * scale, fc = 20.0 * scale, off = -3.0 * scale;
         auto rec = analyticRecord(m, fv, fc, off, 0.1, 0.5, 0.02, 1.3, 20.0);
         auto r = ident::identifyRigidBody(rec, {});
