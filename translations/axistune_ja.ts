@@ -1261,6 +1261,18 @@
         <translation>ノイズのシード:</translation>
     </message>
     <message>
+        <source>Identified model (optional):</source>
+        <translation>同定したモデル (任意):</translation>
+    </message>
+    <message>
+        <source>result JSON of Identify from motion</source>
+        <translation>「動作からの同定」の結果 JSON</translation>
+    </message>
+    <message>
+        <source>Axis of the model:</source>
+        <translation>モデルを適用する軸:</translation>
+    </message>
+    <message>
         <location filename="../app/gui/ConnectDialog.cpp" line="114" />
         <source>Host:</source>
         <translation>ホスト:</translation>
@@ -6508,8 +6520,8 @@
     </message>
     <message>
         <location filename="../app/gui/IdentifyDialog.cpp" line="346" />
-        <source>error (measured − simulated)</source>
-        <translation>誤差 (測定 − シミュレーション)</translation>
+        <source>position error</source>
+        <translation>位置誤差</translation>
     </message>
     <message>
         <location filename="../app/gui/IdentifyDialog.cpp" line="349" />

@@ -102,19 +102,19 @@ IdentifyDialog::IdentifyDialog(QWidget* parent) : QDialog(parent)
     lay->addWidget(m_status);
     m_table = makeTable(this, {tr("Parameter"), tr("Value"), tr("Std. deviation"), tr("Std. dev. [%]"), tr("Unit")},
                         "identifyTable");
-    m_table->setMinimumHeight(170);
+    m_table->setMinimumHeight(150);
     lay->addWidget(m_table);
     m_validation = new QLabel(this);
     m_validation->setObjectName("identifyValidation");
     m_validation->setWordWrap(true);
     lay->addWidget(m_validation);
     m_plot = new widgets::TimeTracePlot(this);
-    m_plot->setMinimumHeight(260);
+    m_plot->setMinimumHeight(340);
     lay->addWidget(m_plot, 1);
     auto* close = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
     lay->addWidget(close);
-    resize(1100, 900);
+    resize(1100, 960);
 }
 
 QWidget* IdentifyDialog::buildInputs()
@@ -194,14 +194,21 @@ QWidget* IdentifyDialog::buildController()
     return box;
 }
 
-bool IdentifyDialog::loadEstimation(const QString& path)
+std::optional<model::Capture> IdentifyDialog::readCapture(const QString& path)
 {
     auto cap = io::readCaptureCsvFile(path.toStdString());
     if (!cap) {
         setStatus(QString::fromStdString(cap.error().detail), true);
-        return false;
+        return std::nullopt;
     }
-    m_estCapture = std::move(cap).value();
+    return std::move(cap).value();
+}
+
+bool IdentifyDialog::loadEstimation(const QString& path)
+{
+    m_estCapture = readCapture(path);
+    if (!m_estCapture)
+        return false;
     m_estFile->setText(path);
     fillColumns(m_position, *m_estCapture, false);
     fillColumns(m_force, *m_estCapture, false);
@@ -212,12 +219,9 @@ bool IdentifyDialog::loadEstimation(const QString& path)
 
 bool IdentifyDialog::loadValidation(const QString& path)
 {
-    auto cap = io::readCaptureCsvFile(path.toStdString());
-    if (!cap) {
-        setStatus(QString::fromStdString(cap.error().detail), true);
+    m_valCapture = readCapture(path);
+    if (!m_valCapture)
         return false;
-    }
-    m_valCapture = std::move(cap).value();
     m_valFile->setText(path);
     fillColumns(m_reference, *m_valCapture, false);
     fillColumns(m_extra, *m_valCapture, true);
@@ -357,7 +361,7 @@ void IdentifyDialog::showValidation(const ident::ValidationRecord& rec, const id
     }
     m_plot->addSeries(tr("measured position"), t, q, posUnit, QColor(0, 90, 200));
     m_plot->addSeries(tr("simulated position"), t, qs, posUnit, QColor(220, 80, 0), Qt::DashLine);
-    m_plot->addSeries(tr("error (measured − simulated)"), t, e, errUnit, QColor(40, 140, 40));
+    m_plot->addSeries(tr("position error"), t, e, errUnit, QColor(40, 140, 40));
     m_plot->rescale();
     const QString u = linear ? QStringLiteral("m") : QStringLiteral("rad");
     m_validation->setText(

@@ -60,6 +60,7 @@ private:
     void showResult(const ident::IdentificationResult& r, ident::AxisMotion motion);
     void showValidation(const ident::ValidationRecord& rec, const ident::ValidationResult& v, ident::AxisMotion motion);
     void setStatus(const QString& text, bool error);
+    std::optional<model::Capture> readCapture(const QString& path);
 
     QLineEdit* m_estFile = nullptr;
     QLineEdit* m_valFile = nullptr;

@@ -52,7 +52,7 @@ private slots:
         const double rms = (*d.result())["validation"][0]["position_error_rms"].get<double>();
         const double refRms = ref["validation"]["identified"]["position_error_rms_m"].get<double>();
         QVERIFY2(std::abs(rms - refRms) <= 0.02 * refRms, qPrintable(QString::number(rms)));
-        d.resize(1100, 900);
+        d.resize(1100, 960);
         testing::maybeScreenshot(&d, "identify-dialog");
 
         QTemporaryDir dir;

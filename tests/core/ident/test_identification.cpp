@@ -76,6 +76,7 @@ ident::MotionRecord analyticRecord(double m, double fv, double fc, double off, d
         const double a = -a1 * w1 * w1 * std::sin(w1 * t) - a2 * w2 * w2 * std::sin(w2 * t);
         r.position.push_back(q);
         r.force.push_back(m * a + fv * v + fc * (v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0)) + off + noise * nd(rng));
+        r.velocity.push_back(v);
     }
     return r;
 }
@@ -174,19 +175,24 @@ TEST(Identification, AnalyticRecordGivesTheParametersBack)
     for (const double scale : {1.0, 0.01}) { // a linear axis in m/N, a rotary one in rad/N·m
         const double m = 95.0 * scale, fv = 200.0 * scale, fc = 20.0 * scale, off = -3.0 * scale;
         auto rec = analyticRecord(m, fv, fc, off, 0.1, 0.5, 0.02, 1.3, 20.0);
-        auto r = ident::identifyRigidBody(rec, {});
-        ASSERT_TRUE(r.ok()) << r.error().detail;
-        expectRel(r->inertia.value, m, 0.005, "M");
-        expectRel(r->viscous.value, fv, 0.005, "Fv");
-        expectRel(r->coulomb.value, fc, 0.005, "Fc");
-        expectRel(r->offset.value, off, 0.005, "offset");
+        for (const bool measuredVelocity : {false, true}) { // differentiate q, or the --velocity column
+            auto input = rec;
+            if (!measuredVelocity)
+                input.velocity.clear();
+            auto r = ident::identifyRigidBody(input, {});
+            ASSERT_TRUE(r.ok()) << r.error().detail;
+            expectRel(r->inertia.value, m, 0.005, "M");
+            expectRel(r->viscous.value, fv, 0.005, "Fv");
+            expectRel(r->coulomb.value, fc, 0.005, "Fc");
+            expectRel(r->offset.value, off, 0.005, "offset");
+        }
     }
 }
 
 TEST(Identification, RefusesWithoutReversalUnexcitedInertiaOrBadTime)
 {
     // Always moving forward: Coulomb and the offset cannot be told apart.
-    ident::MotionRecord fwd;
+    ident::MotionRecord fwd; // no velocity column: differentiated
     fwd.periodS = 1e-3;
     for (int k = 0; k < 20000; ++k) {
         const double t = k * 1e-3;
