@@ -2,12 +2,16 @@
 // The "Identify from motion" dialog (app/gui/IdentifyDialog) on the EMPS records: the parameters it
 // shows equal the independent reference (tests/data/ident/emps_reference.json) within 0.5 %, the
 // validation on the pulses record is shown and plotted, the saved file is a model the simulator reads,
-// and a cutoff above the Nyquist frequency is refused with the reason. Screenshot for docs.
+// a cutoff above the Nyquist frequency is refused with the reason, and the connection dialog builds the
+// sim:PRESET?model=…&axis=… URI. Screenshot for docs.
+#include "app/gui/AppContext.h"
+#include "app/gui/ConnectDialog.h"
 #include "app/gui/IdentifyDialog.h"
 #include "core/ident/IdentificationJson.h"
 #include "widgets/TimeTracePlot.h"
 
 #include <QComboBox>
+#include <QLineEdit>
 #include <QDoubleSpinBox>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -75,6 +79,18 @@ private slots:
         QVERIFY2(d.statusText().contains("Nyquist"), qPrintable(d.statusText()));
         QCOMPARE(d.resultTable()->rowCount(), 0);
         QVERIFY(!d.result().has_value());
+    }
+
+    // The connection dialog puts a saved result in as the plant of a simulated axis.
+    void connectDialogCarriesTheModel()
+    {
+        gui::AppContext ctx;
+        gui::ConnectDialog d(ctx);
+        d.setSimulated("vmc");
+        QCOMPARE(d.uri(), QStringLiteral("sim:vmc"));
+        d.findChild<QLineEdit*>("modelEdit")->setText("/tmp/result.json");
+        d.findChild<QLineEdit*>("modelAxisEdit")->setText("X");
+        QCOMPARE(d.uri(), QStringLiteral("sim:vmc?model=/tmp/result.json&axis=X"));
     }
 };
 
