@@ -299,6 +299,8 @@ Result<ValidationResult> validateClosedLoop(const RigidBodyModel& model, const P
         return makeError(ErrorCode::BadInput, "validation record too short");
     if (!(model.inertia > 0.0))
         return makeError(ErrorCode::BadInput, "model inertia must be positive");
+    if (!(c.kpPerS > 0.0) || !(c.kv > 0.0) || !std::isfinite(c.kpPerS * c.kv * c.forceScale) || !(c.forceScale > 0.0))
+        return makeError(ErrorCode::OutOfRange, "controller: kp, kv and the force scale must be positive numbers");
     if (!(c.saturation > 0.0) || c.delaySamples < 0 || c.delaySamples > 100 || substeps < 1)
         return makeError(ErrorCode::OutOfRange, "controller: saturation must be > 0 and delay in 0..100 samples");
     const double h = rec.periodS;

@@ -241,4 +241,13 @@ TEST(IdentificationJson, ResultRoundTripsAsASimulatorModel)
     bad["inertia"]["value"] = -1.0;
     EXPECT_FALSE(ident::identifiedModelFromJson(bad, "mem").ok());
     EXPECT_FALSE(ident::controllerFromJson(nlohmann::json{{"kp_per_s", 1.0}}, "c.json").ok());
+    // A validation without a position loop (kp = 0) is refused, not simulated.
+    ident::ValidationRecord v;
+    v.periodS = 1e-3;
+    v.reference.assign(100, 0.0);
+    v.position.assign(100, 0.0);
+    v.command.assign(100, 0.0);
+    auto noLoop = ident::validateClosedLoop(m->model, {0.0, 10.0, 10.0, 0, 1.0}, v, 100.0, 10);
+    ASSERT_FALSE(noLoop.ok());
+    EXPECT_NE(noLoop.error().detail.find("kp, kv"), std::string::npos) << noLoop.error().detail;
 }
