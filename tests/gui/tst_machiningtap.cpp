@@ -29,7 +29,7 @@ QString realData(const QString& name)
 {
     if (const char* dir = std::getenv("AXISTUNE_SHARED_DIR"))
         return QString::fromLocal8Bit(dir) + "/data/real/" + name;
-    return QString(AXISTUNE_TEST_DATA_DIR) + "/../../../shared/data/real/" + name;
+    return QString(AXISTUNE_REAL_DATA_DIR) + "/" + name;
 }
 
 } // namespace

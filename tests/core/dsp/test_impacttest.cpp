@@ -28,7 +28,7 @@ std::string realData(const std::string& name)
     // a missing file fails the test loudly
     if (const char* dir = std::getenv("AXISTUNE_SHARED_DIR"))
         return std::string(dir) + "/data/real/" + name;
-    return std::string(AXISTUNE_TEST_DATA_DIR) + "/../../../shared/data/real/" + name;
+    return std::string(AXISTUNE_REAL_DATA_DIR) + "/" + name;
 }
 
 // The analytic SDOF: receptance H(jω) = 1/(k − mω² + jcω), fn ≈ 1299 Hz, ζ = 0.02.

@@ -20,7 +20,7 @@ std::string realData(const std::string& name)
 {
     if (const char* dir = std::getenv("AXISTUNE_SHARED_DIR"))
         return std::string(dir) + "/data/real/" + name;
-    return std::string(AXISTUNE_TEST_DATA_DIR) + "/../../../shared/data/real/" + name;
+    return std::string(AXISTUNE_REAL_DATA_DIR) + "/" + name;
 }
 
 double num(const std::string& s)
