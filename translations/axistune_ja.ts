@@ -1261,6 +1261,18 @@
         <translation>ノイズのシード:</translation>
     </message>
     <message>
+        <source>Identified model (optional):</source>
+        <translation>同定したモデル (任意):</translation>
+    </message>
+    <message>
+        <source>result JSON of Identify from motion</source>
+        <translation>「動作からの同定」の結果 JSON</translation>
+    </message>
+    <message>
+        <source>Axis of the model:</source>
+        <translation>モデルを適用する軸:</translation>
+    </message>
+    <message>
         <location filename="../app/gui/ConnectDialog.cpp" line="114" />
         <source>Host:</source>
         <translation>ホスト:</translation>
@@ -3788,6 +3800,14 @@
         <translation>NC パラメータの書き出し(&amp;P)…</translation>
     </message>
     <message>
+        <source>T&amp;ools</source>
+        <translation>ツール(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Identify from &amp;motion…</source>
+        <translation>動作からの同定(&amp;M)…</translation>
+    </message>
+    <message>
         <location filename="../app/gui/MainWindow.cpp" line="189" />
         <source>Se&amp;ttings</source>
         <translation>設定(&amp;T)</translation>
@@ -6256,6 +6276,322 @@
         <location filename="../app/gui/main.cpp" line="36" />
         <source>Save a screenshot of the main window and quit.</source>
         <translation>メインウィンドウのスクリーンショットを保存して終了します。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::IdentifyDialog</name>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="71" />
+        <source>Identify inertia and friction from motion</source>
+        <translation>動作からのイナーシャと摩擦の同定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="78" />
+        <source>Identify</source>
+        <translation>同定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="81" />
+        <source>Save result…</source>
+        <translation>結果を保存…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="84" />
+        <source>Identification result</source>
+        <translation>同定結果</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="85" />
+        <location filename="../app/gui/IdentifyDialog.cpp" line="183" />
+        <source>JSON (*.json)</source>
+        <translation>JSON (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Std. deviation</source>
+        <translation>標準偏差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Std. dev. [%]</source>
+        <translation>標準偏差 [%]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Unit</source>
+        <translation>単位</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="119" />
+        <source>Records</source>
+        <translation>記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="121" />
+        <source>Estimation record:</source>
+        <translation>推定用の記録:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="121" />
+        <location filename="../app/gui/IdentifyDialog.cpp" line="144" />
+        <source>Browse…</source>
+        <translation>参照…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="122" />
+        <source>Estimation record</source>
+        <translation>推定用の記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="122" />
+        <location filename="../app/gui/IdentifyDialog.cpp" line="145" />
+        <source>Capture CSV (*.csv);;All files (*)</source>
+        <translation>キャプチャ CSV (*.csv);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="131" />
+        <source>m (linear axis)</source>
+        <translation>m (直線軸)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="132" />
+        <source>rad (rotary axis)</source>
+        <translation>rad (回転軸)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="134" />
+        <source>N (linear) or N·m (rotary) per unit of the force column, e.g. the drive gain in N/V</source>
+        <translation>力の列の 1 単位あたりの N (直線軸) または N·m (回転軸)。例: ドライブのゲイン N/V</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="135" />
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="136" />
+        <source>Zero-phase low-pass on the position before differentiating; the decimation follows from it</source>
+        <translation>微分の前に位置へかけるゼロ位相ローパスフィルタ。間引き率はこれから決まります</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="137" />
+        <source>Also per-direction friction</source>
+        <translation>方向別の摩擦も同定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="138" />
+        <source>Position column:</source>
+        <translation>位置の列:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="139" />
+        <source>Position unit:</source>
+        <translation>位置の単位:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="140" />
+        <source>Force column:</source>
+        <translation>力の列:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="141" />
+        <source>Force scale:</source>
+        <translation>力の換算係数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="142" />
+        <source>Low-pass cutoff:</source>
+        <translation>ローパスのカットオフ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="144" />
+        <source>Validation record (optional):</source>
+        <translation>検証用の記録 (任意):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="145" />
+        <source>Validation record</source>
+        <translation>検証用の記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="153" />
+        <source>A column added to the controller output, e.g. force pulses (empty: none)</source>
+        <translation>制御器の出力に加える列。例: 力のパルス (空欄: なし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="154" />
+        <source>Reference column:</source>
+        <translation>指令位置の列:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="155" />
+        <source>Added to the command:</source>
+        <translation>指令に加える列:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="161" />
+        <source>Controller of the validation record</source>
+        <translation>検証用の記録の制御器</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="163" />
+        <source>u = sat(kv·(kp·(r − q) − v)), v from a two-tap average of q and a backward difference; force = scale·u</source>
+        <translation>u = sat(kv·(kp·(r − q) − v))。v は q の 2 タップ平均の後退差分。力 = 換算係数·u</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="168" />
+        <source> 1/s</source>
+        <translation> 1/s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="173" />
+        <source> samples</source>
+        <translation> サンプル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="175" />
+        <source>0: the force scale of the estimation record</source>
+        <translation>0: 推定用の記録の力の換算係数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="176" />
+        <source>Position gain kp:</source>
+        <translation>位置ゲイン kp:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="177" />
+        <source>Velocity gain kv:</source>
+        <translation>速度ゲイン kv:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="178" />
+        <source>Saturation ±:</source>
+        <translation>飽和 ±:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="179" />
+        <source>Delay:</source>
+        <translation>遅れ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="180" />
+        <source>Force per command unit:</source>
+        <translation>指令 1 単位あたりの力:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="181" />
+        <source>Load controller file…</source>
+        <translation>制御器ファイルを読み込む…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="183" />
+        <source>Controller</source>
+        <translation>制御器</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="202" />
+        <source>%1: %2 samples, %3 columns</source>
+        <translation>%1: %2 サンプル、%3 列</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="255" />
+        <source>Load the estimation record first.</source>
+        <translation>先に推定用の記録を読み込んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="272" />
+        <source>Not identified: %1</source>
+        <translation>同定できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="289" />
+        <source>Validation not possible: %1</source>
+        <translation>検証できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="310" />
+        <source>Inertia</source>
+        <translation>イナーシャ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="311" />
+        <source>Viscous friction</source>
+        <translation>粘性摩擦</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="312" />
+        <source>Coulomb friction</source>
+        <translation>クーロン摩擦</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="313" />
+        <source>Offset</source>
+        <translation>オフセット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="315" />
+        <source>Viscous friction, forward</source>
+        <translation>粘性摩擦 (正方向)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="316" />
+        <source>Viscous friction, backward</source>
+        <translation>粘性摩擦 (負方向)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="317" />
+        <source>Coulomb friction, forward</source>
+        <translation>クーロン摩擦 (正方向)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="318" />
+        <source>Coulomb friction, backward</source>
+        <translation>クーロン摩擦 (負方向)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="321" />
+        <source>Identified from %1 equations (decimation %2, %3 Hz): condition number %4 (scaled %5), residual %6 %7 rms (%8 % of the force)</source>
+        <translation>%1 本の式から同定 (間引き %2、%3 Hz): 条件数 %4 (正規化 %5)、残差 %6 %7 rms (力の %8 %)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="344" />
+        <source>measured position</source>
+        <translation>測定位置</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="345" />
+        <source>simulated position</source>
+        <translation>シミュレーション位置</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="346" />
+        <source>position error</source>
+        <translation>位置誤差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="349" />
+        <source>Validation on %1: position error %2 %3 rms, %4 %3 max, %5 % of the motion&apos;s rms; benchmark errors: position %6 %, force %7 %</source>
+        <translation>%1 での検証: 位置誤差 %2 %3 rms、最大 %4 %3、動作の rms の %5 %。ベンチマークの誤差: 位置 %6 %、力 %7 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="358" />
+        <source>Nothing to save: run the identification first.</source>
+        <translation>保存するものがありません。先に同定を実行してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="363" />
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 に書き込めません: %2</translation>
     </message>
 </context>
 </TS>

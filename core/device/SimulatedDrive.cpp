@@ -7,6 +7,7 @@
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
+#include "core/sim/IdentifiedPlant.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,13 +28,68 @@ const char* testStateName(TestState s)
     return "?";
 }
 
+namespace {
+
+// "model=PATH[&axis=NAME]": the identified rigid-body model of `axistune-cli identify` as the
+// plant of one axis (docs/identification.md "Using the result"). The axis may be left out when the
+// machine has one axis of the model's kind.
+Status applySimQuery(sim::MachineDefinition& def, const std::string& query)
+{
+    std::string modelPath, axisName;
+    std::size_t start = 0;
+    while (start <= query.size()) {
+        const auto amp = query.find('&', start);
+        const std::string item = query.substr(start, amp == std::string::npos ? std::string::npos : amp - start);
+        const auto eq = item.find('=');
+        const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+        if (key == "model" && !value.empty())
+            modelPath = value;
+        else if (key == "axis" && !value.empty())
+            axisName = value;
+        else
+            return makeError(ErrorCode::BadInput,
+                             "unknown or empty option '" + item + "' (expected model=PATH and axis=NAME)");
+        if (amp == std::string::npos)
+            break;
+        start = amp + 1;
+    }
+    if (modelPath.empty())
+        return makeError(ErrorCode::BadInput, "axis=NAME needs model=PATH");
+    auto m = ident::readIdentifiedModelFile(modelPath);
+    if (!m)
+        return m.error();
+    const auto kind = m->motion == ident::AxisMotion::Linear ? sim::AxisKind::Linear : sim::AxisKind::Rotary;
+    sim::AxisDefinition* target = nullptr;
+    int candidates = 0;
+    for (auto& a : def.axes) {
+        if (axisName.empty() ? a.kind == kind : a.name == axisName) {
+            target = &a;
+            ++candidates;
+        }
+    }
+    if (target == nullptr)
+        return makeError(ErrorCode::NotFound, axisName.empty() ? "no axis of the model's kind on machine " + def.name
+                                                               : "no axis '" + axisName + "' on machine " + def.name);
+    if (candidates > 1)
+        return makeError(ErrorCode::BadInput, "machine " + def.name + " has several such axes: give axis=NAME");
+    return sim::applyIdentifiedModel(*target, *m, modelPath);
+}
+
+} // namespace
+
 Result<std::unique_ptr<Drive>> connect(const ConnectionSettings& settings)
 {
     const std::string prefix = "sim:";
     if (settings.uri.rfind(prefix, 0) == 0) {
-        auto def = sim::loadPreset(settings.uri.substr(prefix.size()));
+        const std::string rest = settings.uri.substr(prefix.size());
+        const auto q = rest.find('?');
+        auto def = sim::loadPreset(rest.substr(0, q));
         if (!def)
             return makeError(def.error().code, "connection '" + settings.uri + "': " + def.error().detail);
+        if (q != std::string::npos) {
+            if (auto st = applySimQuery(def.value(), rest.substr(q + 1)); !st)
+                return makeError(st.error().code, "connection '" + settings.uri + "': " + st.error().detail);
+        }
         auto d = SimulatedDrive::create(*def, settings.seed);
         if (!d)
             return d.error();
