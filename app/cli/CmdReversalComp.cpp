@@ -95,7 +95,8 @@ int runReversalComp(const ReversalCompCliOptions& o)
 {
     const std::string cmd = "reversal-comp";
     if (o.circle.plane.size() != 2)
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--plane '" + o.circle.plane + "': two axis letters, e.g. XY"));
+        return reportError(
+            cmd, makeError(ErrorCode::BadInput, "--plane '" + o.circle.plane + "': two axis letters, e.g. XY"));
     if (o.circle.connect.rfind("sim:", 0) != 0 && o.circle.connect.rfind("modbus://", 0) != 0)
         return reportError(cmd, makeError(ErrorCode::BadInput, "--connect '" + o.circle.connect +
                                                                    "': expected sim:PRESET or modbus://HOST:PORT"));
@@ -114,8 +115,8 @@ int runReversalComp(const ReversalCompCliOptions& o)
     auto model = driveModel(d, o, c);
     if (!model)
         return reportError(cmd, model.error());
-    auto tuned = tuning::tuneReversalCompensation(*model, c, before->result.ballbar, before->result.dTxNm,
-                                                  before->result.dTyNm);
+    auto tuned =
+        tuning::tuneReversalCompensation(*model, c, before->result.ballbar, before->result.dTxNm, before->result.dTyNm);
     if (!tuned)
         return reportError(cmd, tuned.error());
     if (auto st = writeBallBar(o.predictedOut, tuned->predicted, "predicted"); !st)
@@ -131,9 +132,11 @@ int runReversalComp(const ReversalCompCliOptions& o)
         return writeResult(cmd, j.dump(2) + "\n", o.out);
     // 3. Write the pulse (range-checked and read back by the drive).
     for (const auto& a : tuned->axes) {
-        const model::ParameterValues v{{"reversal.amplitude", a.amplitudeMPerS}, {"reversal.time_constant", a.timeConstantS}};
+        const model::ParameterValues v{{"reversal.amplitude", a.amplitudeMPerS},
+                                       {"reversal.time_constant", a.timeConstantS}};
         if (auto st = d.writeParameters(a.axis, v); !st)
-            return reportError(cmd, makeError(st.error().code, "writing the pulse of " + a.axis + ": " + st.error().detail));
+            return reportError(cmd,
+                               makeError(st.error().code, "writing the pulse of " + a.axis + ": " + st.error().detail));
     }
     j["written"] = true;
     // 4. Verify with a new circle.
@@ -150,8 +153,9 @@ int runReversalComp(const ReversalCompCliOptions& o)
         const double verified = (*spikes)[k].worstM;
         auto& ja = j["axes"][k];
         ja["verified_spike_um"] = verified * 1e6;
-        ja["measured_reduction_pct"] =
-            a.measuredSpikeM > 0.0 ? nlohmann::json((1.0 - verified / a.measuredSpikeM) * 100.0) : nlohmann::json(nullptr);
+        ja["measured_reduction_pct"] = a.measuredSpikeM > 0.0
+                                           ? nlohmann::json((1.0 - verified / a.measuredSpikeM) * 100.0)
+                                           : nlohmann::json(nullptr);
     }
     return writeResult(cmd, j.dump(2) + "\n", o.out);
 }
@@ -165,8 +169,12 @@ const CliRegistrar kRegistrar{
          auto& c = o->circle;
          sub.add_option("--connect", c.connect, "sim:PRESET or modbus://HOST:PORT")->capture_default_str();
          sub.add_option("--plane", c.plane, "the two axes, first = x role")->capture_default_str();
-         sub.add_option("--radius-mm", c.radiusMm, "circle radius [mm]")->capture_default_str()->check(CLI::PositiveNumber);
-         sub.add_option("--feed-mm-min", c.feedMmMin, "feed [mm/min]")->capture_default_str()->check(CLI::PositiveNumber);
+         sub.add_option("--radius-mm", c.radiusMm, "circle radius [mm]")
+             ->capture_default_str()
+             ->check(CLI::PositiveNumber);
+         sub.add_option("--feed-mm-min", c.feedMmMin, "feed [mm/min]")
+             ->capture_default_str()
+             ->check(CLI::PositiveNumber);
          sub.add_option("--direction", c.direction, "ccw | cw")
              ->capture_default_str()
              ->check(CLI::IsMember({"ccw", "cw"}));

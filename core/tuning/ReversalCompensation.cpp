@@ -123,7 +123,8 @@ Result<std::array<Candidate, 2>> searchPulses(Search& s, const std::array<double
         return Status::success();
     };
     auto pulse = [&](int k, double a, double tau) {
-        return active[k] ? Candidate{std::clamp(a, 0.0, kMaxAmplitude), std::clamp(tau, 1e-4, 0.5)} : Candidate{0.0, 0.01};
+        return active[k] ? Candidate{std::clamp(a, 0.0, kMaxAmplitude), std::clamp(tau, 1e-4, 0.5)}
+                         : Candidate{0.0, 0.01};
     };
     if (auto st = consider({Candidate{0.0, 0.01}, Candidate{0.0, 0.01}}); !st) // uncompensated: the reference
         return st.error();
@@ -178,8 +179,8 @@ Result<ReversalCompResult> tuneReversalCompensation(const sim::MachineDefinition
     for (const auto& n : names) {
         const auto* a = model.axis(n);
         if (!a || a->kind != sim::AxisKind::Linear)
-            return makeError(ErrorCode::BadInput, "reversal compensation: the model '" + model.name +
-                                                      "' has no linear axis '" + n + "'");
+            return makeError(ErrorCode::BadInput,
+                             "reversal compensation: the model '" + model.name + "' has no linear axis '" + n + "'");
     }
     auto meas = reversalSpikes(measured, opt.ballbar);
     if (!meas)
@@ -195,9 +196,10 @@ Result<ReversalCompResult> tuneReversalCompensation(const sim::MachineDefinition
     }
     if (!active[0] && !active[1])
         return makeError(ErrorCode::BadInput,
-                         measured.source + ": reversal compensation refused: the measured circle shows no reversal "
-                                           "spike above the detection rule on " + names[0] + " or " + names[1] +
-                             " (nothing to compensate)");
+                         measured.source +
+                             ": reversal compensation refused: the measured circle shows no reversal "
+                             "spike above the detection rule on " +
+                             names[0] + " or " + names[1] + " (nothing to compensate)");
     // The model as the drive is now: it must show the measured spikes, or its prediction means nothing.
     auto base = sim::runCircleTest(model, circle);
     if (!base)
@@ -212,12 +214,12 @@ Result<ReversalCompResult> tuneReversalCompensation(const sim::MachineDefinition
             continue;
         const double rel = std::abs(res.axes[k].modelSpikeM - res.axes[k].measuredSpikeM) / res.axes[k].measuredSpikeM;
         if (rel > kModelSpikeTolerance)
-            return makeError(ErrorCode::BadInput,
-                             "reversal compensation refused: the model '" + model.name + "' gives a " + names[k] +
-                                 " reversal spike of " + um(res.axes[k].modelSpikeM) + " um where the circle measured " +
-                                 um(res.axes[k].measuredSpikeM) + " um (more than " +
-                                 std::to_string(static_cast<int>(kModelSpikeTolerance * 100)) +
-                                 " % apart): its prediction cannot be trusted");
+            return makeError(ErrorCode::BadInput, "reversal compensation refused: the model '" + model.name +
+                                                      "' gives a " + names[k] + " reversal spike of " +
+                                                      um(res.axes[k].modelSpikeM) + " um where the circle measured " +
+                                                      um(res.axes[k].measuredSpikeM) + " um (more than " +
+                                                      std::to_string(static_cast<int>(kModelSpikeTolerance * 100)) +
+                                                      " % apart): its prediction cannot be trusted");
     }
     std::array<double, 2> rule{};
     for (int k = 0; k < 2; ++k) {

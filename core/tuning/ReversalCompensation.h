@@ -40,14 +40,14 @@ Result<std::array<AxisSpikes, 2>> reversalSpikes(const io::BallBarTrace& trace, 
 
 struct ReversalCompAxis {
     std::string axis;
-    double amplitudeMPerS = 0.0; ///< reversal.amplitude
-    double timeConstantS = 0.0;  ///< reversal.time_constant
-    double measuredSpikeM = 0.0; ///< worst spike of the measured circle
-    double modelSpikeM = 0.0;    ///< worst spike of the model's uncompensated full circle
-    double predictedSpikeM = 0.0; ///< worst spike of the model's compensated full circle
+    double amplitudeMPerS = 0.0;     ///< reversal.amplitude
+    double timeConstantS = 0.0;      ///< reversal.time_constant
+    double measuredSpikeM = 0.0;     ///< worst spike of the measured circle
+    double modelSpikeM = 0.0;        ///< worst spike of the model's uncompensated full circle
+    double predictedSpikeM = 0.0;    ///< worst spike of the model's compensated full circle
     double predictedReduction = 0.0; ///< 1 − predicted / model (fraction)
-    double dTNm = 0.0;           ///< reversal torque change of the measured circle
-    int evaluations = 0;         ///< simulated circles of the search
+    double dTNm = 0.0;               ///< reversal torque change of the measured circle
+    int evaluations = 0;             ///< simulated circles of the search
 };
 
 struct ReversalCompResult {

@@ -5,15 +5,15 @@
 // ball-bar diagnostics read from a circle; the measured one comes from the drive's circles, the
 // predicted one from the model's). Over Modbus (axistune-simdrive on a free loopback port) the pulse
 // round-trips through the registers and the circles are those of the embedded drive.
-#include "tests/app/cli/CliRunner.h"
-#include "tests/app/cli/SimDriveProcess.h"
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/app/cli/CliRunner.h"
+#include "tests/app/cli/SimDriveProcess.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::readFileText;
@@ -48,7 +48,7 @@ void expectReductions(const nlohmann::json& j)
     for (const auto& a : j["axes"]) {
         const double measured = a["measured_reduction_pct"].get<double>();
         const double predicted = a["predicted_reduction_pct"].get<double>();
-        EXPECT_GE(measured, 70.0) << a.dump();                              // the requirement
+        EXPECT_GE(measured, 70.0) << a.dump();                                 // the requirement
         EXPECT_LE(std::abs(predicted - measured), 0.2 * measured) << a.dump(); // "as predicted within 20 %"
         // The spike before is the friction spike of vmc (about 7.5 µm at 1000 mm/min on R 50 mm).
         EXPECT_GT(a["measured_spike_um"].get<double>(), 3.0) << a.dump();
