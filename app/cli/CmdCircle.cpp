@@ -70,7 +70,7 @@ Result<SetItem> parseSet(const std::string& item, const std::string& plane)
     return out;
 }
 
-}  // namespace
+} // namespace
 
 Result<DriveCircle> measureCircleOnDrive(device::Drive& drive, const sim::CircleTestOptions& c)
 {
@@ -163,7 +163,7 @@ Status applySet(sim::MachineDefinition& m, const std::string& item, const std::s
     return Status::success();
 }
 
-}  // namespace
+} // namespace
 
 int runCircle(const CircleCliOptions& o)
 {

@@ -90,10 +90,12 @@ std::vector<Def> buildDefs(AxisKind kind)
     // a·sgn(v_new)·exp(−t/τ) is added to the velocity command (docs/simulator.md). Amplitude 0 = off.
     // Kept after every older drive parameter, so the register addresses of those do not move.
     if (lin) {
-        d.push_back({P("reversal.amplitude", "Reversal compensation pulse amplitude (velocity command)", "m/s", "mm/min",
-                       0, 0.05, "reversal"), 0.0});
-        d.push_back({P("reversal.time_constant", "Reversal compensation pulse time constant", "s", "ms", 1e-4, 0.5,
-                       "reversal"), 0.01});
+        d.push_back({P("reversal.amplitude", "Reversal compensation pulse amplitude (velocity command)", "m/s",
+                       "mm/min", 0, 0.05, "reversal"),
+                     0.0});
+        d.push_back(
+            {P("reversal.time_constant", "Reversal compensation pulse time constant", "s", "ms", 1e-4, 0.5, "reversal"),
+             0.01});
     }
 
     // Plant (the machine itself), read-only through the drive.
@@ -119,7 +121,8 @@ std::vector<Def> buildDefs(AxisKind kind)
         d.push_back({P("plant.lost_motion_B", "Lost-motion compliance B", "1/Nm", "um/(Nm*m)", 0, 1e-2, "plant", false), 0.0});
         d.push_back({P("plant.screw_offset", "Screw length offset x0", "m", "mm", -10, 10, "plant", false), 0.0});
         d.push_back({P("plant.scale_resolution", "Linear-scale resolution (0 = ideal)", "m", "nm", 0, 1e-3, "plant", false), 0.0});
-        d.push_back({P("plant.backlash", "Backlash (play between nut and table)", "m", "um", 0, 1e-3, "plant", false), 0.0});
+        d.push_back(
+            {P("plant.backlash", "Backlash (play between nut and table)", "m", "um", 0, 1e-3, "plant", false), 0.0});
     } else {
         d.push_back({P("plant.encoder_load", "Load encoder resolution (0 = ideal)", "counts/rev", "counts/rev", 0, 1e12, "plant", false), 0.0});
     }

@@ -318,7 +318,7 @@ void AxisSimulator::positionTick(double t, double feedbackPos)
     if (nc.velocity != 0.0) {
         const double dir = sgn(nc.velocity);
         if (m_reversalDir != 0.0 && dir != m_reversalDir)
-            m_reversalStart = t;  // a commanded reversal: the compensation pulse starts
+            m_reversalStart = t; // a commanded reversal: the compensation pulse starts
         m_reversalDir = dir;
     }
     const double r = screwLead();
@@ -369,7 +369,8 @@ void AxisSimulator::velocityTick(double t)
         // Reversal compensation pulse a·sgn(v_new)·exp(−(t − t_rev)/τ) on the velocity command.
         m_reversalVel = 0.0;
         if (m_p.reversalAmp > 0.0 && m_reversalStart >= 0.0 && t - m_reversalStart < 30.0 * m_p.reversalTau)
-            m_reversalVel = m_reversalDir * m_p.reversalAmp / screwLead() * std::exp(-(t - m_reversalStart) / m_p.reversalTau);
+            m_reversalVel =
+                m_reversalDir * m_p.reversalAmp / screwLead() * std::exp(-(t - m_reversalStart) / m_p.reversalTau);
         m_velCmd += m_reversalVel;
     }
     const double e = m_velCmd - m_velMeas;

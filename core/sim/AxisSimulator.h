@@ -127,7 +127,7 @@ private:
     double frictionMotor() const;
     double frictionLoad() const;
     double lostMotionDeflection() const;
-    double tableBeforePlay() const;  ///< table position without the backlash
+    double tableBeforePlay() const; ///< table position without the backlash
     void updatePlay();
     double quantize(double value, double step) const;
     double screwLead() const;  ///< R [m/rad] for linear axes, 1 for rotary
@@ -140,8 +140,8 @@ private:
         double coulombMotor = 0, coulombLoad = 0, coulombVelocity = 0, jMotorSide = 0, jLoadSide = 0;
         double lead = 1, lmA = 0, lmB = 0, screwOffset = 0;
         double compA = 0, compB = 0, compOffset = 0, backlash = 0;
-        double play = 0;                        ///< plant.backlash [m]
-        double reversalAmp = 0, reversalTau = 0.01;  ///< reversal.amplitude [m/s], reversal.time_constant [s]
+        double play = 0;                            ///< plant.backlash [m]
+        double reversalAmp = 0, reversalTau = 0.01; ///< reversal.amplitude [m/s], reversal.time_constant [s]
         int compMode = 0;
         bool fullClosed = false;
     };
@@ -192,10 +192,10 @@ private:
     double m_loopCmd = 0.0;
     double m_posFeedback = 0.0;
     double m_lmComp = 0.0;
-    double m_table = 0.0;            ///< table position inside the play (plant.backlash)
-    double m_reversalDir = 0.0;      ///< direction of the last commanded motion (reversal compensation)
-    double m_reversalStart = -1.0;   ///< time of the last commanded reversal [s]; < 0: none yet
-    double m_reversalVel = 0.0;      ///< reversal pulse on the velocity command now [rad/s motor]
+    double m_table = 0.0;          ///< table position inside the play (plant.backlash)
+    double m_reversalDir = 0.0;    ///< direction of the last commanded motion (reversal compensation)
+    double m_reversalStart = -1.0; ///< time of the last commanded reversal [s]; < 0: none yet
+    double m_reversalVel = 0.0;    ///< reversal pulse on the velocity command now [rad/s motor]
     double m_lastDirection = 0.0;
     double m_currentCmd = 0.0;
     double m_voltage = 0.0;

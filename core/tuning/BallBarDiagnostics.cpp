@@ -289,7 +289,7 @@ Result<ReversalEvent> fitReversal(const io::BallBarTrace& t, int axis, double re
     std::vector<std::pair<double, double>> zone;
     const double h = f.coef(4);
     const double towards = h >= 0.0 ? 1.0 : -1.0; // direction from L0 to L1
-    double progress = 0.0;                         // running extreme of the transition, 0 (L0) … |h| (L1)
+    double progress = 0.0;                        // running extreme of the transition, 0 (L0) … |h| (L1)
     for (std::size_t k : order) {
         const auto [d, r] = rel[k];
         const double u = std::abs(axisProjection(axis, rev + sigma * d));
