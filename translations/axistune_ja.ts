@@ -99,13 +99,18 @@
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="74" />
-        <source>mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° each side of the reversal, where a spike has decayed; positive = outward step (lost motion), negative = inward (over-compensation); a backlash: |step| above %6 µm (4× its standard error, at least 0.3 µm)</source>
-        <translation>%1 回の %2 反転（%3）での半径方向の段差の平均。象限突起が減衰した反転の両側 %4–%5° で 3 次式と段差を同時に当てはめる。正 = 外向きの段差（ロストモーション）、負 = 内向き（補正過剰）。|段差| が %6 µm（標準誤差の 4 倍、最小 0.3 µm）を超えるのでバックラッシと判定</translation>
+        <source>a backlash: |step| above %1 µm (4× its standard error, at least 0.3 µm)</source>
+        <translation>|段差| が %1 µm（標準誤差の 4 倍、最小 0.3 µm）を超えるのでバックラッシと判定</translation>
     </message>
     <message>
-        <location filename="../app/gui/BallBarText.cpp" line="80" />
-        <source>mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° each side of the reversal, where a spike has decayed; positive = outward step (lost motion), negative = inward (over-compensation); no backlash: |step| not above %6 µm (4× its standard error, at least 0.3 µm)</source>
-        <translation>%1 回の %2 反転（%3）での半径方向の段差の平均。象限突起が減衰した反転の両側 %4–%5° で 3 次式と段差を同時に当てはめる。正 = 外向きの段差（ロストモーション）、負 = 内向き（補正過剰）。|段差| が %6 µm（標準誤差の 4 倍、最小 0.3 µm）以下なのでバックラッシではない</translation>
+        <location filename="../app/gui/BallBarText.cpp" line="75" />
+        <source>no backlash: |step| not above %1 µm (4× its standard error, at least 0.3 µm)</source>
+        <translation>|段差| が %1 µm（標準誤差の 4 倍、最小 0.3 µm）以下なのでバックラッシではない</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="78" />
+        <source>mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° each side of the reversal, where a spike has decayed; positive = outward step (lost motion), negative = inward (over-compensation); %6</source>
+        <translation>%1 回の %2 反転（%3）での半径方向の段差の平均。象限突起が減衰した反転の両側 %4–%5° で 3 次式と段差を同時に当てはめる。正 = 外向きの段差（ロストモーション）、負 = 内向き（補正過剰）。%6</translation>
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="79" />

@@ -69,18 +69,19 @@ QString BallBarText::rule(const std::string& id, const std::vector<std::string>&
                        "R/2, best pitch %2 mm) in the residual of the smooth fit, projected radially; not detected "
                        "against a noise threshold of %3 µm (false alarm ≈ 1e-3)"),
                     a, 3, english);
-    if (id == "backlash")
+    if (id == "backlash" || id == "backlash.not_detected") {
+        if (a.size() != 6)
+            return qs(english);
+        const QString verdict =
+            id == "backlash" ? tr("a backlash: |step| above %1 µm (4× its standard error, at least 0.3 µm)")
+                             : tr("no backlash: |step| not above %1 µm (4× its standard error, at least 0.3 µm)");
+        std::vector<std::string> args(a.begin(), a.begin() + 5);
+        args.push_back(verdict.arg(qs(a[5])).toStdString());
         return fill(tr("mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° "
                        "each side of the reversal, where a spike has decayed; positive = outward step (lost motion), "
-                       "negative = inward (over-compensation); a backlash: |step| above %6 µm (4× its standard "
-                       "error, at least 0.3 µm)"),
-                    a, 6, english);
-    if (id == "backlash.not_detected")
-        return fill(tr("mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° "
-                       "each side of the reversal, where a spike has decayed; positive = outward step (lost motion), "
-                       "negative = inward (over-compensation); no backlash: |step| not above %6 µm (4× its standard "
-                       "error, at least 0.3 µm)"),
-                    a, 6, english);
+                       "negative = inward (over-compensation); %6"),
+                    args, 6, english);
+    }
     if (id == "backlash.not_covered")
         return fill(tr("Backlash: no %1 reversal is covered by the trace(s)"), a, 1, english);
     if (id == "reversal_spike")

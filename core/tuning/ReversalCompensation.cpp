@@ -28,6 +28,24 @@ std::string um(double m)
     return os.str();
 }
 
+/// A circle of the model and the spikes the diagnostics read from it.
+struct SimulatedCircle {
+    io::BallBarTrace trace;
+    std::array<AxisSpikes, 2> spikes;
+};
+
+Result<SimulatedCircle> simulateCircle(const sim::MachineDefinition& model, const sim::CircleTestOptions& circle,
+                                       const BallBarOptions& opt)
+{
+    auto r = sim::runCircleTest(model, circle);
+    if (!r)
+        return r.error();
+    auto spikes = reversalSpikes(r->ballbar, opt);
+    if (!spikes)
+        return spikes.error();
+    return SimulatedCircle{std::move(r->ballbar), *spikes};
+}
+
 struct Candidate {
     double a = 0.0, tau = 0.01, cost = 0.0;
 };
@@ -75,10 +93,10 @@ private:
                 a.values["reversal.time_constant"] = c[k].tau;
             }
         }
-        auto r = sim::runCircleTest(m, m_circle);
+        auto r = simulateCircle(m, m_circle, m_opt.ballbar);
         if (!r)
             return r.error();
-        return reversalSpikes(r->ballbar, m_opt.ballbar);
+        return r->spikes;
     }
 
     const sim::MachineDefinition& m_model;
@@ -201,15 +219,12 @@ Result<ReversalCompResult> tuneReversalCompensation(const sim::MachineDefinition
                              "spike above the detection rule on " +
                              names[0] + " or " + names[1] + " (nothing to compensate)");
     // The model as the drive is now: it must show the measured spikes, or its prediction means nothing.
-    auto base = sim::runCircleTest(model, circle);
+    auto base = simulateCircle(model, circle, opt.ballbar);
     if (!base)
         return base.error();
-    auto modelSpikes = reversalSpikes(base->ballbar, opt.ballbar);
-    if (!modelSpikes)
-        return modelSpikes.error();
-    res.modelUncompensated = base->ballbar;
+    res.modelUncompensated = base->trace;
     for (int k = 0; k < 2; ++k) {
-        res.axes[k].modelSpikeM = (*modelSpikes)[k].worstM;
+        res.axes[k].modelSpikeM = base->spikes[k].worstM;
         if (!active[k])
             continue;
         const double rel = std::abs(res.axes[k].modelSpikeM - res.axes[k].measuredSpikeM) / res.axes[k].measuredSpikeM;
@@ -239,16 +254,13 @@ Result<ReversalCompResult> tuneReversalCompensation(const sim::MachineDefinition
         res.axes[k].timeConstantS = (*best)[k].tau;
         res.axes[k].evaluations = search.evaluations();
     }
-    auto predicted = sim::runCircleTest(withPulses(model, res.axes), circle);
+    auto predicted = simulateCircle(withPulses(model, res.axes), circle, opt.ballbar);
     if (!predicted)
         return predicted.error();
-    auto predSpikes = reversalSpikes(predicted->ballbar, opt.ballbar);
-    if (!predSpikes)
-        return predSpikes.error();
-    res.predicted = predicted->ballbar;
+    res.predicted = predicted->trace;
     for (int k = 0; k < 2; ++k) {
         auto& a = res.axes[k];
-        a.predictedSpikeM = (*predSpikes)[k].worstM;
+        a.predictedSpikeM = predicted->spikes[k].worstM;
         a.predictedReduction = a.modelSpikeM > 0.0 ? 1.0 - a.predictedSpikeM / a.modelSpikeM : 0.0;
     }
     return res;
