@@ -95,7 +95,8 @@ bool inAnySpikeZone(double theta, double sigma, double excludeRad)
     return false;
 }
 
-/// Spike = largest residual inside the spike zone; width = full width at half height (travel angle).
+/// Spike = largest residual against the step's transition inside the spike zone (fitReversal); width = full
+/// width at half height (travel angle).
 void findSpike(ReversalEvent& ev, const std::vector<std::pair<double, double>>& zone /* (d, resid) sorted by d */,
                double reversalAngle, double sigma)
 {
