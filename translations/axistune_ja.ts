@@ -99,8 +99,18 @@
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="74" />
-        <source>mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° each side of the reversal; positive = outward step (lost motion), negative = inward (over-compensation)</source>
-        <translation>%1 回の %2 反転（%3）での半径方向の段差の平均。反転の両側 %4–%5° で 3 次式と段差を同時に当てはめる。正 = 外向きの段差（ロストモーション）、負 = 内向き（補正過剰）</translation>
+        <source>a backlash: |step| above %1 µm (4× its standard error, at least 0.3 µm)</source>
+        <translation>|段差| が %1 µm（標準誤差の 4 倍、最小 0.3 µm）を超えるのでバックラッシと判定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="75" />
+        <source>no backlash: |step| not above %1 µm (4× its standard error, at least 0.3 µm)</source>
+        <translation>|段差| が %1 µm（標準誤差の 4 倍、最小 0.3 µm）以下なのでバックラッシではない</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="78" />
+        <source>mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° each side of the reversal, where a spike has decayed; positive = outward step (lost motion), negative = inward (over-compensation); %6</source>
+        <translation>%1 回の %2 反転（%3）での半径方向の段差の平均。象限突起が減衰した反転の両側 %4–%5° で 3 次式と段差を同時に当てはめる。正 = 外向きの段差（ロストモーション）、負 = 内向き（補正過剰）。%6</translation>
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="79" />
@@ -109,8 +119,8 @@
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="81" />
-        <source>peak residual at %1°, within ±%2° of a %3 reversal (width %4° at half height) against the local step fit; reported when above 4× the fit-window noise and 0.3 µm</source>
-        <translation>%3 反転の ±%2° 以内、%1° での局所段差当てはめに対する残差のピーク（半値幅 %4°）。当てはめ窓のノイズの 4 倍かつ 0.3 µm を超えるとき報告</translation>
+        <source>transient at %1°, within ±%2° of a %3 reversal (width %4° at half height): the peak departure from the step's own transition (the level before the reversal, then a monotonic move to the level after it, which a backlash follows) that comes back to that level; reported when above 4× the fit-window noise and 0.3 µm</source>
+        <translation>%3 反転の ±%2° 以内、%1° での象限突起（半値幅 %4°）: 段差そのものの遷移（反転前のレベルから反転後のレベルへの単調な移行で、バックラッシはこれに従う）から離れて元のレベルに戻る偏差のピーク。当てはめ窓のノイズの 4 倍かつ 0.3 µm を超えるとき報告</translation>
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="85" />
@@ -534,6 +544,14 @@
         <location filename="../app/gui/ParameterText.cpp" line="55" />
         <source>F_L time constant tau</source>
         <translation>F_L の時定数 tau</translation>
+    </message>
+    <message>
+        <source>Reversal compensation pulse amplitude (velocity command)</source>
+        <translation>象限突起補正パルスの振幅（速度指令）</translation>
+    </message>
+    <message>
+        <source>Reversal compensation pulse time constant</source>
+        <translation>象限突起補正パルスの時定数</translation>
     </message>
 </context>
 <context>

@@ -74,6 +74,13 @@ nlohmann::json reportJson(const tuning::BallBarReport& rep)
     j["radius_deviation_um"] = opt(rep.radiusDeviationM, 1e6);
     j["backlash_x_um"] = opt(rep.backlashM[0], 1e6);
     j["backlash_y_um"] = opt(rep.backlashM[1], 1e6);
+    for (int axis = 0; axis < 2; ++axis) {
+        const std::string a = axisKey(axis);
+        j["backlash_detected_" + a] =
+            rep.backlashM[axis] ? nlohmann::json(rep.backlashDetected[axis]) : nlohmann::json(nullptr);
+        j["backlash_threshold_" + a + "_um"] =
+            rep.backlashM[axis] ? nlohmann::json(rep.backlashThresholdM[axis] * 1e6) : nlohmann::json(nullptr);
+    }
     nlohmann::json spikes = nlohmann::json::array();
     for (const auto& s : rep.spikes) {
         spikes.push_back({{"axis", axisKey(s.axis)},

@@ -168,6 +168,9 @@ Status AxisSimulator::configure(const model::ParameterValues& v)
     p.compB = linear ? get("lostmotion.B") : 0.0;
     p.compOffset = linear ? get("lostmotion.screw_offset") : 0.0;
     p.backlash = linear ? get("lostmotion.backlash") : 0.0;
+    p.play = linear ? get("plant.backlash") : 0.0;
+    p.reversalAmp = linear ? get("reversal.amplitude") : 0.0;
+    p.reversalTau = linear ? get("reversal.time_constant") : 0.01;
     p.fullClosed = get("position.feedback") >= 1.0;
     m_p = p;
     m_hCurrent = h;
@@ -211,6 +214,9 @@ void AxisSimulator::reset(double position)
     m_currentInt = m_velInt = m_torqueCmd = m_torqueFf = m_velCmd = m_velCmdFromPos = m_velMeas = 0.0;
     m_posCmd = m_posFeedback = m_loopCmd = position;
     m_lmComp = m_lastDirection = m_currentCmd = m_voltage = m_injectionNow = 0.0;
+    m_table = tableBeforePlay();
+    m_reversalDir = m_reversalVel = 0.0;
+    m_reversalStart = -1.0;
     m_prevEncoder = quantize(m_plant->encoderAngle(m_x), m_p.encoderMotor);
     m_clampCount = m_currentLimitCount = 0;
     m_profile = MotionProfile(position);
@@ -271,7 +277,23 @@ double AxisSimulator::lostMotionDeflection() const
 
 double AxisSimulator::motorPosition() const { return screwLead() * PlantModel::motorAngle(m_x); }
 
-double AxisSimulator::tablePosition() const { return screwLead() * m_plant->loadAngle(m_x) - lostMotionDeflection(); }
+double AxisSimulator::tableBeforePlay() const
+{
+    return screwLead() * m_plant->loadAngle(m_x) - lostMotionDeflection();
+}
+
+double AxisSimulator::tablePosition() const
+{
+    return m_table;
+}
+
+void AxisSimulator::updatePlay()
+{
+    // Kinematic play (docs/simulator.md "Backlash"): the table stands still, held by its guideway, while
+    // the nut travels through the gap; at either end of the gap the nut takes the table along.
+    const double half = m_nl.backlash ? 0.5 * m_p.play : 0.0, nut = tableBeforePlay();
+    m_table = std::clamp(m_table, nut - half, nut + half);
+}
 
 void AxisSimulator::positionTick(double t, double feedbackPos)
 {
@@ -296,6 +318,12 @@ void AxisSimulator::positionTick(double t, double feedbackPos)
         }
     }
     m_lmComp = comp;
+    if (nc.velocity != 0.0) {
+        const double dir = sgn(nc.velocity);
+        if (m_reversalDir != 0.0 && dir != m_reversalDir)
+            m_reversalStart = t; // a commanded reversal: the compensation pulse starts
+        m_reversalDir = dir;
+    }
     const double r = screwLead();
     if (m_suppression.mode == SuppressionFilterMode::FullClosedFl) {
         // F_L on the feedback velocity command; on the feedforward F_L·(τs + 1)·s·y* = s·F_m·y*: the
@@ -341,6 +369,12 @@ void AxisSimulator::velocityTick(double t)
         m_torqueFf = 0.0;
     } else {
         m_velCmd = m_velCmdFromPos;
+        // Reversal compensation pulse a·sgn(v_new)·exp(−(t − t_rev)/τ) on the velocity command.
+        m_reversalVel = 0.0;
+        if (m_p.reversalAmp > 0.0 && m_reversalStart >= 0.0 && t - m_reversalStart < 30.0 * m_p.reversalTau)
+            m_reversalVel =
+                m_reversalDir * m_p.reversalAmp / screwLead() * std::exp(-(t - m_reversalStart) / m_p.reversalTau);
+        m_velCmd += m_reversalVel;
     }
     const double e = m_velCmd - m_velMeas;
     if (m_velTick % m_intDiv == 0)
@@ -413,6 +447,7 @@ void AxisSimulator::runTicks(std::int64_t ticks)
         }
         const double load = m_loadTorque ? m_loadTorque(t) : 0.0;
         m_plant->step(m_x, applied, -frictionMotor(), load - frictionLoad(), m_nl.inductanceDrop);
+        updatePlay();
         ++m_tick;
     }
 }
@@ -448,6 +483,8 @@ void AxisSimulator::holdPosition()
     m_profileStart = time();
     m_posCmd = m_posFeedback = pos;
     m_velInt = m_velCmd = m_velCmdFromPos = m_torqueFf = m_torqueCmd = 0.0;
+    m_reversalDir = m_reversalVel = 0.0;
+    m_reversalStart = -1.0;
     m_filters.reset();
 }
 

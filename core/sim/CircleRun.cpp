@@ -38,6 +38,8 @@ Status checkOptions(const CircleTestOptions& o)
         return bad("feed must be positive (is " + fmtShort(o.feedMPerS) + " m/s)");
     if (!(o.leadArcDeg >= 10.0) || o.leadArcDeg > 360.0)
         return bad("lead arc must be 10..360 deg (is " + fmtShort(o.leadArcDeg) + ")");
+    if (!(o.dataArcDeg >= 30.0) || o.dataArcDeg > 360.0)
+        return bad("data arc must be 30..360 deg (is " + fmtShort(o.dataArcDeg) + ")");
     if (!std::isfinite(o.centerXM) || !std::isfinite(o.centerYM) || !std::isfinite(o.dataStartDeg))
         return bad("centre and start angle must be finite");
     if (!(o.dwellS >= 0.0) || !std::isfinite(o.dwellS) || !std::isfinite(o.squarenessPerM) ||
@@ -65,7 +67,7 @@ Result<CirclePath> CirclePath::plan(const CircleTestOptions& o)
     p.m_alpha = p.m_omega * p.m_omega / (2.0 * p.m_sAcc);
     p.m_tAcc = p.m_omega / p.m_alpha;
     p.m_sFrom = o.leadArcDeg * kRadPerDeg;
-    p.m_sTo = p.m_sFrom + 2.0 * kPi;
+    p.m_sTo = p.m_sFrom + o.dataArcDeg * kRadPerDeg;
     p.m_tConst = (p.m_sTo + p.m_sFrom - 2.0 * p.m_sAcc) / p.m_omega;
     p.m_phi0 = o.dataStartDeg * kRadPerDeg - p.m_sigma * p.m_sFrom;
     return p;

@@ -118,7 +118,7 @@ Result<CircleTestResult> evaluateCircleTrace(const model::Capture& trace, const 
                        std::to_string(arc->data.size()));
     }
     if (arc->data.empty() || arc->data.back() < path->dataTo())
-        return bad("the trace ends before the 360 deg data arc (an aborted circle?)");
+        return bad("the trace ends before the " + fmt(o.dataArcDeg) + " deg data arc (an aborted circle?)");
     Samples d;
     d.s = arc->data;
     d.tx = tx->data;
