@@ -9,10 +9,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 namespace axistune::cli {
 namespace {
@@ -98,14 +98,9 @@ int runLobes(const LobesArgs& a)
     auto lobes = machining::stabilityLobes(*tool, *cut, *grid, opt);
     if (!lobes)
         return reportError(cmd, lobes.error());
-    std::ofstream file;
-    std::ostream* os = &std::cout;
-    if (!a.out.empty()) {
-        file.open(a.out);
-        if (!file)
-            return reportError(cmd, makeError(ErrorCode::Io, a.out + ": cannot write"));
-        os = &file;
-    }
+    // Composed in memory, then stdout or written atomically (a full disk never leaves half a file).
+    std::ostringstream text;
+    std::ostream* os = &text;
     *os << "rpm,limit_depth_m\n";
     char line[96];
     for (const auto& p : *lobes) {
@@ -115,9 +110,7 @@ int runLobes(const LobesArgs& a)
             std::snprintf(line, sizeof line, "%.10g,%.9e\n", p.rpm, p.limitDepthM);
         *os << line;
     }
-    if (!*os)
-        return reportError(cmd, makeError(ErrorCode::Io, (a.out.empty() ? "stdout" : a.out) + ": write failed"));
-    return 0;
+    return writeResult(cmd, text.str(), a.out);
 }
 
 const CliRegistrar kRegistrar{{

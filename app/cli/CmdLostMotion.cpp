@@ -3,10 +3,11 @@
 // predicted proposed and conventional compensation (docs/ballbar.md; spec/lost-motion-and-two-inertia.md §4.3–4.5).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/io/AtomicFile.h"
 #include "core/io/BallBarCsv.h"
 #include "core/tuning/LostMotion.h"
 
-#include <fstream>
+#include <sstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -35,9 +36,7 @@ struct LostMotionCliOptions {
 
 Status writeCompensated(const std::string& path, const std::vector<tuning::CompensationPrediction>& preds)
 {
-    std::ofstream f(path);
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": cannot open for writing");
+    std::ostringstream f;
     f << std::setprecision(12) << "file_index,angle_deg,measured_um,proposed_um,conventional_um\n";
     for (std::size_t k = 0; k < preds.size(); ++k) {
         const auto& p = preds[k];
@@ -45,9 +44,7 @@ Status writeCompensated(const std::string& path, const std::vector<tuning::Compe
             f << k << ',' << p.angleRad[i] / kDeg << ',' << p.measuredM[i] * 1e6 << ',' << p.proposedM[i] * 1e6 << ','
               << p.conventionalM[i] * 1e6 << '\n';
     }
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": write failed");
-    return Status::success();
+    return io::writeFileAtomic(path, f.view());
 }
 
 nlohmann::json optJson(const std::optional<double>& v, double scale = 1.0)

@@ -319,6 +319,9 @@ Result<io::MachineProfile> openMachine(const SessionFlags& f, std::optional<stor
     auto profile = opened->loadProfile(f.machine);
     if (!profile)
         return profile.error();
+    // Before the command runs: a test is never measured for a session the store cannot take.
+    if (auto st = opened->checkWritable(); !st)
+        return makeError(st.error().code, st.error().detail + " (checked before running; nothing was measured)");
     db.emplace(std::move(opened).value());
     return profile;
 }
