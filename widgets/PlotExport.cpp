@@ -9,7 +9,6 @@
 #include <QFileInfo>
 #include <QStringList>
 #include <QSvgGenerator>
-
 #include <qcustomplot.h>
 
 namespace axistune {

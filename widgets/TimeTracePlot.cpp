@@ -6,14 +6,12 @@
 #include "widgets/TimeTracePlot.h"
 
 #include "core/io/AtomicFile.h"
-
 #include "core/model/Units.h"
 #include "widgets/PlotCommon.h"
 #include "widgets/PlotExport.h"
 
 #include <QLabel>
 #include <QVBoxLayout>
-
 #include <qcustomplot.h>
 
 #include <algorithm>

@@ -4,8 +4,8 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/io/FrfCsv.h"
 #include "core/machining/MachiningJson.h"
-#include "core/machining/ToolModeFit.h"
 #include "core/machining/StabilityLobes.h"
+#include "core/machining/ToolModeFit.h"
 
 #include <cmath>
 #include <cstdio>

@@ -7,12 +7,12 @@
 #include "core/io/BallBarCsv.h"
 #include "core/tuning/LostMotion.h"
 
-#include <sstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 
 namespace axistune::cli {
 namespace {

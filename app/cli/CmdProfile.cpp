@@ -7,8 +7,8 @@
 
 #include <filesystem>
 #include <iostream>
-#include <optional>
 #include <memory>
+#include <optional>
 
 namespace axistune::cli {
 

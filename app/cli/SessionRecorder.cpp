@@ -304,7 +304,8 @@ Result<io::MachineProfile> openMachine(const SessionFlags& f, std::optional<stor
         if (opened.error().code == ErrorCode::NotFound)
             return makeError(ErrorCode::BadInput, "store " + f.db + " does not exist; " + howTo
                                                       + " (a profile with machine '" + f.machine + "')");
-        return opened.error();
+        return makeError(opened.error().code,
+                         opened.error().detail + " (checked before running; nothing was measured)");
     }
     auto machines = opened->listMachines();
     if (!machines)

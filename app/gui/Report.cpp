@@ -509,7 +509,8 @@ QString SessionReport::standaloneHtml() const
 bool SessionReport::saveHtml(const QString& path, QString* error) const
 {
     const QByteArray bytes = standaloneHtml().toUtf8();
-    if (auto st = io::writeFileAtomic(path.toStdString(), std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    if (auto st = io::writeFileAtomic(path.toStdString(),
+                                      std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
         !st) {
         if (error)
             *error = tr("Cannot write %1: %2").arg(path, QString::fromStdString(st.error().detail));

@@ -12,8 +12,8 @@
 #include "core/device/RegisterMap.h"
 #include "core/device/SimulatedDrive.h"
 
-#include <atomic>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>

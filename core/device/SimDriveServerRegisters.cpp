@@ -3,8 +3,8 @@
 // whole before anything changes, commands deduplicated by their sequence token (docs/modbus.md).
 #include "core/device/SimDriveServer.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <modbus/modbus.h>
@@ -344,8 +344,7 @@ int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t*
     return ex;
 }
 
-int SimDriveServer::writeRegistersChecked(int ui, int address, const std::uint16_t* values, int count,
-                                          bool& commandRan)
+int SimDriveServer::writeRegistersChecked(int ui, int address, const std::uint16_t* values, int count, bool& commandRan)
 {
     const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
     // First pass: every touched field must be written whole and be valid; nothing changes on an error.

@@ -35,8 +35,9 @@ int SimDriveServer::startTest(int ui)
         refusedWhy = why;
     }
     if (!refusedFields.empty())
-        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test configuration refused earlier (" + refusedFields + ": " +
-                                                               refusedWhy + "); write a valid test block before start_test");
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test configuration refused earlier (" + refusedFields +
+                                                               ": " + refusedWhy +
+                                                               "); write a valid test block before start_test");
     TestRequest req;
     req.axis = ax.name;
     req.amplitude = c.amplitude;

@@ -7,16 +7,15 @@
 #include "core/store/Schema.h"
 
 #include <SQLiteCpp/SQLiteCpp.h>
-#include <sqlite3.h>
-
 #include <array>
-#include <cerrno>
 #include <bit>
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <sqlite3.h>
 
 namespace axistune::store {
 
@@ -343,6 +342,10 @@ Result<Database> Database::open(const std::string& path, OpenMode mode)
         removeFailedOpenLeftovers(path, !exists);
         if (sysErr == ENOSPC)
             return makeError(ErrorCode::Io, path + ": disk full while opening the store (nothing was saved)");
+        if (sysErr == EROFS || sysErr == EACCES || sysErr == EPERM)
+            return makeError(ErrorCode::Io, path +
+                                                ": the store is read-only (file, folder or file system not writable; " +
+                                                std::strerror(sysErr) + "); nothing can be saved in it");
         return e;
     };
     try {

@@ -3,13 +3,13 @@
 // The committed register map read as plain JSON (not through core's loader) and mbpoll, the
 // independent Modbus client from Debian, for the end-to-end Modbus tests.
 
-#include "tests/app/cli/CliRunner.h"
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "tests/app/cli/CliRunner.h"
 
 namespace axistune::testing {
 
@@ -51,4 +51,4 @@ inline double mbpollValue(const std::string& out, int address)
     return at == std::string::npos ? std::nan("") : std::strtod(out.c_str() + at + tag.size(), nullptr);
 }
 
-}  // namespace axistune::testing
+} // namespace axistune::testing

@@ -6,13 +6,13 @@
 // no LD_PRELOAD, and vanishes with the shell even if the test dies. Each case asserts the message
 // (file named), the exit code, and that nothing was lost: previous files byte for byte, the store's
 // sessions, no temporary files, no -wal/-shm left behind.
-#include "tests/app/cli/CliRunner.h"
-
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+
+#include "tests/app/cli/CliRunner.h"
 
 using namespace axistune::testing;
 namespace fs = std::filesystem;
@@ -34,8 +34,8 @@ int inNamespace(const fs::path& dir, const std::string& script)
 {
     const auto file = dir / "script.sh";
     std::ofstream(file) << "set -u\nCLI=" << AXISTUNE_CLI << "\nD=" << dir.string() << "\n" << script;
-    const std::string cmd = "unshare --user --map-root-user --mount sh " + file.string() + " >" +
-                            (dir / "script.out").string() + " 2>&1";
+    const std::string cmd =
+        "unshare --user --map-root-user --mount sh " + file.string() + " >" + (dir / "script.out").string() + " 2>&1";
     const int st = std::system(cmd.c_str());
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
@@ -50,26 +50,33 @@ int rc(const fs::path& dir, const std::string& name)
     return std::stoi("0" + text(dir / (name + ".rc")));
 }
 
-}  // namespace
+} // namespace
 
 TEST(FilesAtomic, FullDiskLeavesEveryPreviousFileAndTheStoreIntact)
 {
     const auto dir = makeTempDir("fulldisk");
     // 4 MiB tmpfs: a store (64 KiB pages) and old outputs, then filled to the last byte.
-    const int sh = inNamespace(dir, R"(
+    const int sh = inNamespace(
+        dir, R"(
 mkdir -p $D/disk && mount -t tmpfs -o size=4m tmpfs $D/disk || { echo "cannot mount a tmpfs"; exit 90; }
-$CLI profile import --db $D/disk/s.db --in )" + kProfile + R"( >/dev/null || exit 91
+$CLI profile import --db $D/disk/s.db --in )" +
+                 kProfile + R"( >/dev/null || exit 91
 printf 'old lobes\n' > $D/disk/lobes.csv
 printf 'old report\n' > $D/disk/loop.json
 printf 'old capture\n' > $D/disk/step.csv
 cp $D/disk/s.db $D/s-before.db
 dd if=/dev/zero of=$D/disk/fill bs=4096 >/dev/null 2>&1
-$CLI )" + lobesArgs("$D/disk/lobes.csv") + R"( >$D/lobes.out 2>$D/lobes.err; echo $? >$D/lobes.rc
-$CLI )" + lobesArgs("$D/disk/new.csv") + R"( >$D/new.out 2>$D/new.err; echo $? >$D/new.rc
-$CLI current-loop --motor )" + kSamples + R"(motor-rotary.json --out $D/disk/loop.json >$D/loop.out 2>$D/loop.err; echo $? >$D/loop.rc
+$CLI )" + lobesArgs("$D/disk/lobes.csv") +
+                 R"( >$D/lobes.out 2>$D/lobes.err; echo $? >$D/lobes.rc
+$CLI )" + lobesArgs("$D/disk/new.csv") +
+                 R"( >$D/new.out 2>$D/new.err; echo $? >$D/new.rc
+$CLI current-loop --motor )" +
+                 kSamples + R"(motor-rotary.json --out $D/disk/loop.json >$D/loop.out 2>$D/loop.err; echo $? >$D/loop.rc
 $CLI capture --connect sim:vmc --axis X --test step --amplitude 5 --duration 0.1 --out $D/disk/step.csv >$D/step.out 2>$D/step.err; echo $? >$D/step.rc
-$CLI profile import --db $D/disk/s.db --in )" + kProfile + R"( --note again >$D/import.out 2>$D/import.err; echo $? >$D/import.rc
-$CLI profile import --db $D/disk/fresh.db --in )" + kProfile + R"( >$D/fresh.out 2>$D/fresh.err; echo $? >$D/fresh.rc
+$CLI profile import --db $D/disk/s.db --in )" +
+                 kProfile + R"( --note again >$D/import.out 2>$D/import.err; echo $? >$D/import.rc
+$CLI profile import --db $D/disk/fresh.db --in )" +
+                 kProfile + R"( >$D/fresh.out 2>$D/fresh.err; echo $? >$D/fresh.rc
 ls -a $D/disk >$D/listing.txt
 cp $D/disk/lobes.csv $D/lobes.after; cp $D/disk/loop.json $D/loop.after; cp $D/disk/step.csv $D/step.after
 cp $D/disk/s.db $D/s-after.db
@@ -78,11 +85,13 @@ exit 0
     ASSERT_EQ(sh, 0) << "namespace script failed (unshare/mount unavailable?): " << text(dir / "script.out");
     const std::string disk = (dir / "disk").string();
     // Each write refused with exit 1 (I/O) and the file named; the previous file byte for byte.
-    for (const auto& [name, file, old] : {std::tuple<std::string, std::string, std::string>{"lobes", "lobes.csv", "old lobes\n"},
-                                          {"loop", "loop.json", "old report\n"},
-                                          {"step", "step.csv", "old capture\n"}}) {
+    for (const auto& [name, file, old] :
+         {std::tuple<std::string, std::string, std::string>{"lobes", "lobes.csv", "old lobes\n"},
+          {"loop", "loop.json", "old report\n"},
+          {"step", "step.csv", "old capture\n"}}) {
         EXPECT_EQ(rc(dir, name), 1) << name << ": " << text(dir / (name + ".err"));
-        EXPECT_NE(text(dir / (name + ".err")).find(disk + "/" + file), std::string::npos) << text(dir / (name + ".err"));
+        EXPECT_NE(text(dir / (name + ".err")).find(disk + "/" + file), std::string::npos)
+            << text(dir / (name + ".err"));
         EXPECT_NE(text(dir / (name + ".err")).find("No space left on device"), std::string::npos)
             << text(dir / (name + ".err"));
         EXPECT_NE(text(dir / (name + ".err")).find("previous file is unchanged"), std::string::npos);
@@ -114,11 +123,13 @@ TEST(FilesAtomic, ReadOnlyStoreIsRefusedBeforeTheTestRuns)
     const auto dir = makeTempDir("rostore");
     const int sh = inNamespace(dir, R"(
 mkdir -p $D/ro && mount -t tmpfs -o size=4m tmpfs $D/ro || { echo "cannot mount a tmpfs"; exit 90; }
-$CLI profile import --db $D/ro/s.db --in )" + kProfile + R"( >/dev/null || exit 91
+$CLI profile import --db $D/ro/s.db --in )" +
+                                        kProfile + R"( >/dev/null || exit 91
 cp $D/ro/s.db $D/s-before.db
 mount -o remount,ro $D/ro || { echo "cannot remount read-only"; exit 92; }
 $CLI capture --connect sim:vmc --axis X --test step --amplitude 5 --duration 0.1 --out $D/step.csv --db $D/ro/s.db --machine vmc >$D/cap.out 2>$D/cap.err; echo $? >$D/cap.rc
-$CLI profile import --db $D/ro/s.db --in )" + kProfile + R"( >$D/import.out 2>$D/import.err; echo $? >$D/import.rc
+$CLI profile import --db $D/ro/s.db --in )" +
+                                        kProfile + R"( >$D/import.out 2>$D/import.err; echo $? >$D/import.rc
 ls -a $D/ro >$D/listing.txt
 cp $D/ro/s.db $D/s-after.db
 exit 0
@@ -145,7 +156,8 @@ TEST(FilesAtomic, StoreThatIsNotSqliteIsRefusedAndKept)
     std::ofstream(store) << content;
     const auto imp = runCli("profile import --db " + store + " --in " + kProfile);
     EXPECT_EQ(imp.exitCode, 2) << imp.err;
-    EXPECT_NE(imp.err.find(store + ": not an AxisTune store (not an SQLite database file)"), std::string::npos) << imp.err;
+    EXPECT_NE(imp.err.find(store + ": not an AxisTune store (not an SQLite database file)"), std::string::npos)
+        << imp.err;
     const auto cap = runCli("capture --connect sim:vmc --axis X --test step --amplitude 5 --duration 0.1 --out " +
                             (dir / "step.csv").string() + " --db " + store + " --machine vmc");
     EXPECT_EQ(cap.exitCode, 2) << cap.err;

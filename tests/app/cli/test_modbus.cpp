@@ -25,7 +25,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using axistune::testing::SimDrive;
 
-
 double paramsValue(const std::string& uri, const std::string& key, const std::string& axis = "X")
 {
     auto r = runCli("params --connect '" + uri + "' --axis " + axis + " --get " + key);
