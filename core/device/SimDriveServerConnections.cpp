@@ -29,7 +29,7 @@ constexpr auto kFrameTimeout = 1000ms;      ///< a started frame must be complet
 constexpr auto kSilentTimeout = 10s;        ///< a connection must send its first request within
 constexpr auto kSendTimeout = 2s;           ///< an answer the client does not read
 constexpr int kFramesPerTurn = 8;           ///< per connection and loop turn (fairness)
-constexpr int kAcceptsPerTurn = 64;
+constexpr int kAcceptsPerTurn = 256;
 constexpr std::size_t kInputBytes = 4 * kMaxAduBytes; ///< buffered per connection
 constexpr int kConnectionLinesPerSecond = 20;
 
@@ -101,7 +101,7 @@ Status SimDriveServer::listen(int port)
     addr.sin_family = AF_INET;
     addr.sin_port = htons(static_cast<std::uint16_t>(port));
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK); // loopback only, whatever the caller asked
-    if (bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 || ::listen(fd, 128) != 0)
+    if (bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 || ::listen(fd, SOMAXCONN) != 0)
         return makeError(ErrorCode::Device,
                          "cannot listen on 127.0.0.1:" + std::to_string(port) + ": " + std::strerror(errno));
     socklen_t len = sizeof addr;
