@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Writing one text file through a stream writer, with errors that name the path. Shared by the CSV
+// Reading and writing one text file through a stream, with errors that name the path. Shared by the CSV
 // writers (capture, FRF, sine stream, ball-bar). The text is built in memory and written atomically
 // (core/io/AtomicFile.h): a failed or interrupted write never leaves half a file.
 
 #include "core/io/AtomicFile.h"
 #include "core/model/Result.h"
 
+#include <fstream>
+#include <istream>
 #include <ostream>
 #include <sstream>
 #include <string>
