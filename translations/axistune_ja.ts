@@ -572,11 +572,6 @@
         <translation>%1: 画像サイズ %2×%3 が負です</translation>
     </message>
     <message>
-        <location filename="../widgets/PlotExport.cpp" line="73" />
-        <source>%1: the existing file cannot be replaced</source>
-        <translation>%1: 既存のファイルを置き換えられません</translation>
-    </message>
-    <message>
         <location filename="../widgets/PlotExport.cpp" line="84" />
         <source>%1: could not write the image (is the folder writable and the disk not full?)</source>
         <translation>%1: 画像を書き込めませんでした (フォルダの書き込み権限とディスクの空き容量を確認してください)</translation>

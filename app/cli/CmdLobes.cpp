@@ -11,10 +11,10 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 namespace axistune::cli {
 namespace {
@@ -135,22 +135,15 @@ int runLobes(const LobesArgs& a)
     auto lobes = machining::stabilityLobes(*tool, *cut, *grid, opt);
     if (!lobes)
         return reportError(cmd, lobes.error());
-    std::ofstream file;
-    std::ostream* os = &std::cout;
-    if (!a.out.empty()) {
-        file.open(a.out);
-        if (!file)
-            return reportError(cmd, makeError(ErrorCode::Io, a.out + ": cannot write"));
-        os = &file;
-    }
+    // Composed in memory, then stdout or written atomically (a full disk never leaves half a file).
+    std::ostringstream text;
+    std::ostream* os = &text;
     *os << "rpm,limit_depth_m\n";
     for (const auto& p : *lobes) {
         *os << model::formatNumber(p.rpm, 10) << ','
             << (std::isinf(p.limitDepthM) ? std::string("inf") : model::formatScientific(p.limitDepthM, 9)) << '\n';
     }
-    if (!*os)
-        return reportError(cmd, makeError(ErrorCode::Io, (a.out.empty() ? "stdout" : a.out) + ": write failed"));
-    return 0;
+    return writeResult(cmd, text.str(), a.out);
 }
 
 const CliRegistrar kRegistrar{{

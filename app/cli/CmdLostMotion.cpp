@@ -3,17 +3,18 @@
 // predicted proposed and conventional compensation (docs/ballbar.md; spec/lost-motion-and-two-inertia.md §4.3–4.5).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/io/AtomicFile.h"
 #include "core/io/BallBarCsv.h"
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
 #include "core/tuning/LostMotion.h"
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 
 namespace axistune::cli {
 namespace {
@@ -37,9 +38,7 @@ struct LostMotionCliOptions {
 
 Status writeCompensated(const std::string& path, const std::vector<tuning::CompensationPrediction>& preds)
 {
-    std::ofstream f(path);
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": cannot open for writing");
+    std::ostringstream f;
     const auto g = [](double v) { return model::formatNumber(v, 12); };
     f << "file_index,angle_deg,measured_um,proposed_um,conventional_um\n";
     for (std::size_t k = 0; k < preds.size(); ++k) {
@@ -48,9 +47,7 @@ Status writeCompensated(const std::string& path, const std::vector<tuning::Compe
             f << k << ',' << g(p.angleRad[i] / kRadPerDeg) << ',' << g(p.measuredM[i] * 1e6) << ','
               << g(p.proposedM[i] * 1e6) << ',' << g(p.conventionalM[i] * 1e6) << '\n';
     }
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": write failed");
-    return Status::success();
+    return io::writeFileAtomic(path, f.view());
 }
 
 nlohmann::json optJson(const std::optional<double>& v, double scale = 1.0)

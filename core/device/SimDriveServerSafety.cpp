@@ -26,6 +26,19 @@ int SimDriveServer::startTest(int ui)
     const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
     const SafetyLimits& lim = m_opt.safety;
     const std::string type = m_map.name("test_type", c.type);
+    // A test never runs on a block the drive refused (it would run on what was there before); the
+    // circle block counts for circle tests only.
+    std::string refusedFields, refusedWhy;
+    for (const auto& [name, why] : m_refusedConfig[static_cast<std::size_t>(ui)]) {
+        if (name.rfind("circle.", 0) == 0 && type != "circle")
+            continue;
+        refusedFields += (refusedFields.empty() ? "" : ", ") + name;
+        refusedWhy = why;
+    }
+    if (!refusedFields.empty())
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test configuration refused earlier (" + refusedFields +
+                                                               ": " + refusedWhy +
+                                                               "); write a valid test block before start_test");
     TestRequest req;
     req.axis = ax.name;
     req.amplitude = c.amplitude;

@@ -190,25 +190,6 @@ Result<std::string> readTextFile(const std::string& path)
     return ss.str();
 }
 
-Status writeTextFileAtomic(const std::string& path, const std::string& text)
-{
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f)
-            return makeError(ErrorCode::Io, path + ": cannot be opened for writing");
-        f << text;
-        f.flush();
-        if (!f)
-            return makeError(ErrorCode::Io, path + ": write failed");
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec)
-        return makeError(ErrorCode::Io, path + ": cannot replace the file (" + ec.message() + ")");
-    return Status::success();
-}
-
 Result<MachineProfile> readProfileFile(const std::string& path)
 {
     auto text = readTextFile(path);
