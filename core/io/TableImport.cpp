@@ -2,6 +2,8 @@
 // Delimited-table, halscope-log and FRF-column imports (core/io/TableImport.h, docs/formats.md "Imports").
 #include "core/io/TableImport.h"
 
+#include "core/model/Constants.h"
+
 #include "core/io/FrfCsv.h"
 #include "core/io/TextFile.h"
 #include "core/io/Uff58.h"
@@ -420,7 +422,7 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
             h = {re->data[i], im->data[i]};
         } else {
             const double m = magDb ? std::pow(10.0, magDb->data[i] / 20.0) : mag->data[i];
-            h = std::polar(m, ph->data[i] * std::numbers::pi / 180.0);
+            h = std::polar(m, ph->data[i] * model::kRadPerDeg);
         }
         frf.push(fi, h, std::nan(""), true);
     }

@@ -6,26 +6,22 @@
 // depends on the loops and is found on the model by simulated circles.
 #include "core/tuning/ReversalCompensation.h"
 
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/sim/AxisParameters.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <sstream>
 
 namespace axistune::tuning {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using model::kPi;
 constexpr double kMaxAmplitude = 0.05; ///< reversal.amplitude upper limit [m/s] (parameter catalogue)
 
 std::string um(double m)
 {
-    std::ostringstream os;
-    os.setf(std::ios::fixed);
-    os.precision(2);
-    os << m * 1e6;
-    return os.str();
+    return model::formatFixed(m * 1e6, 2);
 }
 
 /// A circle of the model and the spikes the diagnostics read from it.
