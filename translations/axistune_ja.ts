@@ -99,8 +99,18 @@
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="74" />
-        <source>mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° each side of the reversal; positive = outward step (lost motion), negative = inward (over-compensation)</source>
-        <translation>%1 回の %2 反転（%3）での半径方向の段差の平均。反転の両側 %4–%5° で 3 次式と段差を同時に当てはめる。正 = 外向きの段差（ロストモーション）、負 = 内向き（補正過剰）</translation>
+        <source>a backlash: |step| above %1 µm (4× its standard error, at least 0.3 µm)</source>
+        <translation>|段差| が %1 µm（標準誤差の 4 倍、最小 0.3 µm）を超えるのでバックラッシと判定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="75" />
+        <source>no backlash: |step| not above %1 µm (4× its standard error, at least 0.3 µm)</source>
+        <translation>|段差| が %1 µm（標準誤差の 4 倍、最小 0.3 µm）以下なのでバックラッシではない</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/BallBarText.cpp" line="78" />
+        <source>mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° each side of the reversal, where a spike has decayed; positive = outward step (lost motion), negative = inward (over-compensation); %6</source>
+        <translation>%1 回の %2 反転（%3）での半径方向の段差の平均。象限突起が減衰した反転の両側 %4–%5° で 3 次式と段差を同時に当てはめる。正 = 外向きの段差（ロストモーション）、負 = 内向き（補正過剰）。%6</translation>
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="79" />
@@ -109,8 +119,8 @@
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="81" />
-        <source>peak residual at %1°, within ±%2° of a %3 reversal (width %4° at half height) against the local step fit; reported when above 4× the fit-window noise and 0.3 µm</source>
-        <translation>%3 反転の ±%2° 以内、%1° での局所段差当てはめに対する残差のピーク（半値幅 %4°）。当てはめ窓のノイズの 4 倍かつ 0.3 µm を超えるとき報告</translation>
+        <source>transient at %1°, within ±%2° of a %3 reversal (width %4° at half height): the peak departure from the step's own transition (the level before the reversal, then a monotonic move to the level after it, which a backlash follows) that comes back to that level; reported when above 4× the fit-window noise and 0.3 µm</source>
+        <translation>%3 反転の ±%2° 以内、%1° での象限突起（半値幅 %4°）: 段差そのものの遷移（反転前のレベルから反転後のレベルへの単調な移行で、バックラッシはこれに従う）から離れて元のレベルに戻る偏差のピーク。当てはめ窓のノイズの 4 倍かつ 0.3 µm を超えるとき報告</translation>
     </message>
     <message>
         <location filename="../app/gui/BallBarText.cpp" line="85" />
@@ -535,6 +545,14 @@
         <source>F_L time constant tau</source>
         <translation>F_L の時定数 tau</translation>
     </message>
+    <message>
+        <source>Reversal compensation pulse amplitude (velocity command)</source>
+        <translation>象限突起補正パルスの振幅（速度指令）</translation>
+    </message>
+    <message>
+        <source>Reversal compensation pulse time constant</source>
+        <translation>象限突起補正パルスの時定数</translation>
+    </message>
 </context>
 <context>
     <name>PlotExport</name>
@@ -552,11 +570,6 @@
         <location filename="../widgets/PlotExport.cpp" line="58" />
         <source>%1: negative image size %2×%3</source>
         <translation>%1: 画像サイズ %2×%3 が負です</translation>
-    </message>
-    <message>
-        <location filename="../widgets/PlotExport.cpp" line="73" />
-        <source>%1: the existing file cannot be replaced</source>
-        <translation>%1: 既存のファイルを置き換えられません</translation>
     </message>
     <message>
         <location filename="../widgets/PlotExport.cpp" line="84" />
@@ -1259,6 +1272,18 @@
         <location filename="../app/gui/ConnectDialog.cpp" line="113" />
         <source>Noise seed:</source>
         <translation>ノイズのシード:</translation>
+    </message>
+    <message>
+        <source>Identified model (optional):</source>
+        <translation>同定したモデル (任意):</translation>
+    </message>
+    <message>
+        <source>result JSON of Identify from motion</source>
+        <translation>「動作からの同定」の結果 JSON</translation>
+    </message>
+    <message>
+        <source>Axis of the model:</source>
+        <translation>モデルを適用する軸:</translation>
     </message>
     <message>
         <location filename="../app/gui/ConnectDialog.cpp" line="114" />
@@ -3374,6 +3399,157 @@
     </message>
 </context>
 <context>
+    <name>axistune::gui::MachiningTapPage</name>
+    <message>
+        <source>Tap test</source>
+        <translation>打撃試験</translation>
+    </message>
+    <message>
+        <source>Impact-hammer records at the tool tip: the receptance (m/N) from hammer force and response, averaged over the hits, used as the tool&apos;s FRF.</source>
+        <translation>工具先端のインパクトハンマー記録: ハンマーの力と応答からレセプタンス (m/N) を求め、打撃ごとに平均して工具の周波数応答として使います。</translation>
+    </message>
+    <message>
+        <source>Add record…</source>
+        <translation>記録を追加…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>削除</translation>
+    </message>
+    <message>
+        <source>acceleration [m/s²]</source>
+        <translation>加速度 [m/s²]</translation>
+    </message>
+    <message>
+        <source>velocity [m/s]</source>
+        <translation>速度 [m/s]</translation>
+    </message>
+    <message>
+        <source>displacement [m]</source>
+        <translation>変位 [m]</translation>
+    </message>
+    <message>
+        <source>10 % of the largest force</source>
+        <translation>最大力の 10 %</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <source>refuse the records</source>
+        <translation>記録を受け付けない</translation>
+    </message>
+    <message>
+        <source>drop that hit</source>
+        <translation>その打撃を除く</translation>
+    </message>
+    <message>
+        <source>Force column [N]</source>
+        <translation>力の列 [N]</translation>
+    </message>
+    <message>
+        <source>Response column</source>
+        <translation>応答の列</translation>
+    </message>
+    <message>
+        <source>Response measures</source>
+        <translation>応答の種類</translation>
+    </message>
+    <message>
+        <source>Trigger level [N]</source>
+        <translation>トリガレベル [N]</translation>
+    </message>
+    <message>
+        <source>Exponential window τ [ms]</source>
+        <translation>指数窓 τ [ms]</translation>
+    </message>
+    <message>
+        <source>Double hit</source>
+        <translation>二度打ち</translation>
+    </message>
+    <message>
+        <source>Modes to fit per direction</source>
+        <translation>方向ごとに同定するモード数</translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation>計算</translation>
+    </message>
+    <message>
+        <source>Save FRF…</source>
+        <translation>周波数応答を保存…</translation>
+    </message>
+    <message>
+        <source>Use as x FRF</source>
+        <translation>x の周波数応答に使う</translation>
+    </message>
+    <message>
+        <source>Use as y FRF</source>
+        <translation>y の周波数応答に使う</translation>
+    </message>
+    <message>
+        <source>Use for x and y</source>
+        <translation>x と y に使う</translation>
+    </message>
+    <message>
+        <source>Impact records</source>
+        <translation>打撃記録</translation>
+    </message>
+    <message>
+        <source>Records (*.csv *.txt *.log *.unv *.uff);;All files (*)</source>
+        <translation>記録 (*.csv *.txt *.log *.unv *.uff);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <source>Save receptance</source>
+        <translation>レセプタンスを保存</translation>
+    </message>
+    <message>
+        <source>FRF CSV (*.csv)</source>
+        <translation>周波数応答 CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Add at least one impact record.</source>
+        <translation>打撃記録を一つ以上追加してください。</translation>
+    </message>
+    <message>
+        <source>%1: no column &apos;%2&apos;</source>
+        <translation>%1: 列 &apos;%2&apos; がありません</translation>
+    </message>
+    <message>
+        <source>%1: sampled at %2 Hz, the first record at %3 Hz</source>
+        <translation>%1: サンプリング %2 Hz、最初の記録は %3 Hz です</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a positive number</source>
+        <translation>&apos;%1&apos; は正の数ではありません</translation>
+    </message>
+    <message>
+        <source>receptance</source>
+        <translation>レセプタンス</translation>
+    </message>
+    <message>
+        <source>%1 hit(s) averaged, %2 dropped; block %3 s; valid to %4 Hz (force spectrum within 40 dB).</source>
+        <translation>%1 回の打撃を平均、%2 回を除外; ブロック長 %3 s; %4 Hz まで有効 (力のスペクトルが 40 dB 以内)。</translation>
+    </message>
+    <message>
+        <source>Largest receptance %1 µm/N at %2 Hz.</source>
+        <translation>最大レセプタンス %1 µm/N (%2 Hz)。</translation>
+    </message>
+    <message>
+        <source>One hit: no coherence. Average several hits to see how repeatable the measurement is.</source>
+        <translation>打撃 1 回: コヒーレンスはありません。測定の再現性を見るには複数回打撃して平均してください。</translation>
+    </message>
+    <message>
+        <source>Compute the receptance first.</source>
+        <translation>先にレセプタンスを計算してください。</translation>
+    </message>
+    <message>
+        <source>Now the other direction&apos;s tap test (or use this one for both).</source>
+        <translation>次にもう一方の方向の打撃試験を行ってください (またはこの結果を両方に使います)。</translation>
+    </message>
+</context>
+<context>
     <name>axistune::gui::MachiningToolPage</name>
     <message>
         <location filename="../app/gui/MachiningWizard.cpp" line="66" />
@@ -3468,14 +3644,69 @@
         <translation>y 方向の工具先端の周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="203" />
-        <source>%1: %2 points, rms relative error %3 %</source>
-        <translation>%1: %2 点、相対 rms 誤差 %3 %</translation>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>auto</source>
+        <translation>自動</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizard.cpp" line="209" />
-        <source>fitted to %1</source>
-        <translation>%1 から同定</translation>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>Modes fitted per direction; auto = one per resonance peak above 25 % of the largest</source>
+        <translation>方向ごとに同定するモード数。自動 = 最大の共振ピークの 25 % 以上の共振ピークごとに 1 モード</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>Fit band lower edge; empty = chosen from the resonance peaks</source>
+        <translation>同定帯域の下限。空欄 = 共振ピークから自動選択</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>Fit band upper edge; empty = chosen from the resonance peaks</source>
+        <translation>同定帯域の上限。空欄 = 共振ピークから自動選択</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>FRF fit band [Hz]</source>
+        <translation>周波数応答の同定帯域 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>to</source>
+        <translation>〜</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>Modes per direction</source>
+        <translation>方向ごとのモード数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>fit refused</source>
+        <translation>同定を拒否</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>FRF fit band: '%1' is not a number</source>
+        <translation>周波数応答の同定帯域: '%1' は数値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>%1: %2 mode(s), band %3–%4 Hz (%5), weighted residual %6 %</source>
+        <translation>%1: %2 モード、帯域 %3〜%4 Hz (%5)、重み付き残差 %6 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>automatic</source>
+        <translation>自動</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>given</source>
+        <translation>指定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningWizard.cpp" line="220" />
+        <source>fitted to %1 and %2</source>
+        <translation>%1 と %2 から同定</translation>
     </message>
     <message>
         <location filename="../app/gui/MachiningWizard.cpp" line="223" />
@@ -3490,6 +3721,14 @@
 </context>
 <context>
     <name>axistune::gui::MachiningWizard</name>
+    <message>
+        <source>Tap test…</source>
+        <translation>打撃試験…</translation>
+    </message>
+    <message>
+        <source>Measure the tool-tip receptance with an impact hammer</source>
+        <translation>インパクトハンマーで工具先端のレセプタンスを測定します</translation>
+    </message>
     <message>
         <location filename="../app/gui/MachiningWizard.cpp" line="435" />
         <source>Machining: stability lobes and chatter</source>
@@ -3572,6 +3811,14 @@
         <location filename="../app/gui/MainWindow.cpp" line="188" />
         <source>Export NC &amp;parameters…</source>
         <translation>NC パラメータの書き出し(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>T&amp;ools</source>
+        <translation>ツール(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Identify from &amp;motion…</source>
+        <translation>動作からの同定(&amp;M)…</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="189" />
@@ -6042,6 +6289,322 @@
         <location filename="../app/gui/main.cpp" line="36" />
         <source>Save a screenshot of the main window and quit.</source>
         <translation>メインウィンドウのスクリーンショットを保存して終了します。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::IdentifyDialog</name>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="71" />
+        <source>Identify inertia and friction from motion</source>
+        <translation>動作からのイナーシャと摩擦の同定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="78" />
+        <source>Identify</source>
+        <translation>同定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="81" />
+        <source>Save result…</source>
+        <translation>結果を保存…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="84" />
+        <source>Identification result</source>
+        <translation>同定結果</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="85" />
+        <location filename="../app/gui/IdentifyDialog.cpp" line="183" />
+        <source>JSON (*.json)</source>
+        <translation>JSON (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Std. deviation</source>
+        <translation>標準偏差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Std. dev. [%]</source>
+        <translation>標準偏差 [%]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="100" />
+        <source>Unit</source>
+        <translation>単位</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="119" />
+        <source>Records</source>
+        <translation>記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="121" />
+        <source>Estimation record:</source>
+        <translation>推定用の記録:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="121" />
+        <location filename="../app/gui/IdentifyDialog.cpp" line="144" />
+        <source>Browse…</source>
+        <translation>参照…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="122" />
+        <source>Estimation record</source>
+        <translation>推定用の記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="122" />
+        <location filename="../app/gui/IdentifyDialog.cpp" line="145" />
+        <source>Capture CSV (*.csv);;All files (*)</source>
+        <translation>キャプチャ CSV (*.csv);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="131" />
+        <source>m (linear axis)</source>
+        <translation>m (直線軸)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="132" />
+        <source>rad (rotary axis)</source>
+        <translation>rad (回転軸)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="134" />
+        <source>N (linear) or N·m (rotary) per unit of the force column, e.g. the drive gain in N/V</source>
+        <translation>力の列の 1 単位あたりの N (直線軸) または N·m (回転軸)。例: ドライブのゲイン N/V</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="135" />
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="136" />
+        <source>Zero-phase low-pass on the position before differentiating; the decimation follows from it</source>
+        <translation>微分の前に位置へかけるゼロ位相ローパスフィルタ。間引き率はこれから決まります</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="137" />
+        <source>Also per-direction friction</source>
+        <translation>方向別の摩擦も同定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="138" />
+        <source>Position column:</source>
+        <translation>位置の列:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="139" />
+        <source>Position unit:</source>
+        <translation>位置の単位:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="140" />
+        <source>Force column:</source>
+        <translation>力の列:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="141" />
+        <source>Force scale:</source>
+        <translation>力の換算係数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="142" />
+        <source>Low-pass cutoff:</source>
+        <translation>ローパスのカットオフ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="144" />
+        <source>Validation record (optional):</source>
+        <translation>検証用の記録 (任意):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="145" />
+        <source>Validation record</source>
+        <translation>検証用の記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="153" />
+        <source>A column added to the controller output, e.g. force pulses (empty: none)</source>
+        <translation>制御器の出力に加える列。例: 力のパルス (空欄: なし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="154" />
+        <source>Reference column:</source>
+        <translation>指令位置の列:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="155" />
+        <source>Added to the command:</source>
+        <translation>指令に加える列:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="161" />
+        <source>Controller of the validation record</source>
+        <translation>検証用の記録の制御器</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="163" />
+        <source>u = sat(kv·(kp·(r − q) − v)), v from a two-tap average of q and a backward difference; force = scale·u</source>
+        <translation>u = sat(kv·(kp·(r − q) − v))。v は q の 2 タップ平均の後退差分。力 = 換算係数·u</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="168" />
+        <source> 1/s</source>
+        <translation> 1/s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="173" />
+        <source> samples</source>
+        <translation> サンプル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="175" />
+        <source>0: the force scale of the estimation record</source>
+        <translation>0: 推定用の記録の力の換算係数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="176" />
+        <source>Position gain kp:</source>
+        <translation>位置ゲイン kp:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="177" />
+        <source>Velocity gain kv:</source>
+        <translation>速度ゲイン kv:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="178" />
+        <source>Saturation ±:</source>
+        <translation>飽和 ±:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="179" />
+        <source>Delay:</source>
+        <translation>遅れ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="180" />
+        <source>Force per command unit:</source>
+        <translation>指令 1 単位あたりの力:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="181" />
+        <source>Load controller file…</source>
+        <translation>制御器ファイルを読み込む…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="183" />
+        <source>Controller</source>
+        <translation>制御器</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="202" />
+        <source>%1: %2 samples, %3 columns</source>
+        <translation>%1: %2 サンプル、%3 列</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="255" />
+        <source>Load the estimation record first.</source>
+        <translation>先に推定用の記録を読み込んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="272" />
+        <source>Not identified: %1</source>
+        <translation>同定できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="289" />
+        <source>Validation not possible: %1</source>
+        <translation>検証できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="310" />
+        <source>Inertia</source>
+        <translation>イナーシャ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="311" />
+        <source>Viscous friction</source>
+        <translation>粘性摩擦</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="312" />
+        <source>Coulomb friction</source>
+        <translation>クーロン摩擦</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="313" />
+        <source>Offset</source>
+        <translation>オフセット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="315" />
+        <source>Viscous friction, forward</source>
+        <translation>粘性摩擦 (正方向)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="316" />
+        <source>Viscous friction, backward</source>
+        <translation>粘性摩擦 (負方向)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="317" />
+        <source>Coulomb friction, forward</source>
+        <translation>クーロン摩擦 (正方向)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="318" />
+        <source>Coulomb friction, backward</source>
+        <translation>クーロン摩擦 (負方向)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="321" />
+        <source>Identified from %1 equations (decimation %2, %3 Hz): condition number %4 (scaled %5), residual %6 %7 rms (%8 % of the force)</source>
+        <translation>%1 本の式から同定 (間引き %2、%3 Hz): 条件数 %4 (正規化 %5)、残差 %6 %7 rms (力の %8 %)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="344" />
+        <source>measured position</source>
+        <translation>測定位置</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="345" />
+        <source>simulated position</source>
+        <translation>シミュレーション位置</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="346" />
+        <source>position error</source>
+        <translation>位置誤差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="349" />
+        <source>Validation on %1: position error %2 %3 rms, %4 %3 max, %5 % of the motion&apos;s rms; benchmark errors: position %6 %, force %7 %</source>
+        <translation>%1 での検証: 位置誤差 %2 %3 rms、最大 %4 %3、動作の rms の %5 %。ベンチマークの誤差: 位置 %6 %、力 %7 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="358" />
+        <source>Nothing to save: run the identification first.</source>
+        <translation>保存するものがありません。先に同定を実行してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/IdentifyDialog.cpp" line="363" />
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 に書き込めません: %2</translation>
     </message>
 </context>
 </TS>

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "widgets/PlotExport.h"
 
+#include "core/io/AtomicFile.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QStringList>
 #include <QSvgGenerator>
-
 #include <qcustomplot.h>
 
 namespace axistune {
@@ -68,19 +69,24 @@ bool exportPlotImage(QCustomPlot& plot, const QString& path, int width, int heig
     if (height == 0)
         height = size.height();
 
-    // Never report an older file of the same name as the written one.
-    if (QFileInfo::exists(path) && !QFile::remove(path))
-        return fail(PlotExport::tr("%1: the existing file cannot be replaced").arg(path));
-    bool ok = false;
-    if (suffix == QLatin1String("png"))
-        ok = plot.savePng(path, width, height);
-    else if (suffix == QLatin1String("pdf"))
-        ok = plot.savePdf(path, width, height, QCP::epNoCosmetic);
-    else
-        ok = writeSvg(plot, path, width, height);
-    // QSvgGenerator and QPdfWriter do not report write errors: check the file.
-    const QFileInfo written(path);
-    if (!ok || !written.exists() || written.size() == 0)
+    // Written to a temporary file next to `path` and renamed over it (core/io/AtomicFile.h): a failed
+    // export leaves the older file of the same name as it was, never half an image.
+    const auto st = io::writeFileAtomicVia(path.toStdString(), [&](const std::string& tmpPath) -> Status {
+        const QString tmp = QString::fromStdString(tmpPath);
+        bool ok = false;
+        if (suffix == QLatin1String("png"))
+            ok = plot.savePng(tmp, width, height);
+        else if (suffix == QLatin1String("pdf"))
+            ok = plot.savePdf(tmp, width, height, QCP::epNoCosmetic);
+        else
+            ok = writeSvg(plot, tmp, width, height);
+        // QSvgGenerator and QPdfWriter do not report write errors: check the file.
+        const QFileInfo written(tmp);
+        if (!ok || !written.exists() || written.size() == 0)
+            return makeError(ErrorCode::Io, "the image writer failed");
+        return Status::success();
+    });
+    if (!st)
         return fail(PlotExport::tr("%1: could not write the image (is the folder writable and the disk not full?)").arg(path));
     return true;
 }

@@ -5,11 +5,11 @@
 // pass so that one unit is as long in x as in y (also in exports of any size).
 #include "widgets/PolarPlot.h"
 
+#include "core/model/Constants.h"
 #include "widgets/PlotCommon.h"
 #include "widgets/PlotExport.h"
 
 #include <QVBoxLayout>
-
 #include <qcustomplot.h>
 
 #include <algorithm>
@@ -20,7 +20,7 @@ namespace widgets {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using model::kPi;
 constexpr double kHalfSpan = 0.42;  // rings and deviations stay within 1 ± kHalfSpan
 constexpr double kExtent = 1.62;    // half-width of the drawing in display units
 
@@ -178,7 +178,7 @@ void PolarPlot::rebuild()
     const double inner = 1.0 - rings * divDisplay;
     const double outer = 1.0 + rings * divDisplay;
     for (int deg = 0; deg < 360; deg += 30) {
-        const double a = deg * kPi / 180.0;
+        const double a = deg * model::kRadPerDeg;
         auto* spoke = new QCPItemLine(m_plot);
         spoke->start->setCoords(inner * std::cos(a), inner * std::sin(a));
         spoke->end->setCoords(outer * std::cos(a), outer * std::sin(a));

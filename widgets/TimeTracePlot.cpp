@@ -5,14 +5,13 @@
 // and cursors and the CSV export read that same vector (or the capture itself).
 #include "widgets/TimeTracePlot.h"
 
+#include "core/io/AtomicFile.h"
 #include "core/model/Units.h"
 #include "widgets/PlotCommon.h"
 #include "widgets/PlotExport.h"
 
 #include <QLabel>
-#include <QSaveFile>
 #include <QVBoxLayout>
-
 #include <qcustomplot.h>
 
 #include <algorithm>
@@ -630,10 +629,8 @@ bool TimeTracePlot::exportVisibleCsv(const QString& path) const
         }
         text += '\n';
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) !=
-                                                 static_cast<qint64>(text.size()) || !file.commit()) {
-        m_lastError = tr("%1: cannot write the file (%2)").arg(path, file.errorString());
+    if (auto st = io::writeFileAtomic(path.toStdString(), text); !st) {
+        m_lastError = tr("%1: cannot write the file (%2)").arg(path, QString::fromStdString(st.error().detail));
         return false;
     }
     return true;

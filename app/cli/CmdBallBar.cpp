@@ -3,6 +3,7 @@
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/io/BallBarCsv.h"
+#include "core/model/Constants.h"
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include <fstream>
@@ -14,7 +15,7 @@
 namespace axistune::cli {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 struct BallBarCliOptions {
     std::vector<std::string> inPaths;
@@ -54,7 +55,7 @@ nlohmann::json runJson(const tuning::RunDiagnostics& r)
     nlohmann::json ev = nlohmann::json::array();
     for (const auto& e : r.events) {
         ev.push_back({{"axis", axisKey(e.axis)},
-                      {"angle_deg", e.angleRad / kDeg},
+                      {"angle_deg", e.angleRad / kRadPerDeg},
                       {"table_mm", e.tableCoordM * 1e3},
                       {"step_um", e.stepM * 1e6},
                       {"step_stderr_um", e.stepStdErrM * 1e6},
@@ -73,12 +74,19 @@ nlohmann::json reportJson(const tuning::BallBarReport& rep)
     j["radius_deviation_um"] = opt(rep.radiusDeviationM, 1e6);
     j["backlash_x_um"] = opt(rep.backlashM[0], 1e6);
     j["backlash_y_um"] = opt(rep.backlashM[1], 1e6);
+    for (int axis = 0; axis < 2; ++axis) {
+        const std::string a = axisKey(axis);
+        j["backlash_detected_" + a] =
+            rep.backlashM[axis] ? nlohmann::json(rep.backlashDetected[axis]) : nlohmann::json(nullptr);
+        j["backlash_threshold_" + a + "_um"] =
+            rep.backlashM[axis] ? nlohmann::json(rep.backlashThresholdM[axis] * 1e6) : nlohmann::json(nullptr);
+    }
     nlohmann::json spikes = nlohmann::json::array();
     for (const auto& s : rep.spikes) {
         spikes.push_back({{"axis", axisKey(s.axis)},
-                          {"angle_deg", s.angleRad / kDeg},
+                          {"angle_deg", s.angleRad / kRadPerDeg},
                           {"height_um", s.heightM * 1e6},
-                          {"width_deg", s.widthRad / kDeg},
+                          {"width_deg", s.widthRad / kRadPerDeg},
                           {"file", s.source}});
     }
     j["reversal_spikes"] = spikes;

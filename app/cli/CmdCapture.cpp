@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli capture: runs a test on a drive and writes the trace as a capture CSV.
-#include "app/cli/CliCommand.h"
 #include "app/cli/CircleCommand.h"
+#include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/device/Drive.h"
 #include "core/device/MultisineTest.h"
@@ -9,6 +9,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
 #include "core/io/SweepCsv.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <charconv>
@@ -67,12 +68,11 @@ Result<model::ParameterValues> parseSets(device::Drive& drive, const std::string
         return metas.error();
     for (const auto& s : sets) {
         const auto eq = s.find('=');
-        double x = 0.0;
-        const char* b = eq == std::string::npos ? nullptr : s.data() + eq + 1;
-        const char* e = s.data() + s.size();
-        const auto r = b ? std::from_chars(b, e, x) : std::from_chars_result{nullptr, std::errc::invalid_argument};
-        if (eq == std::string::npos || eq == 0 || r.ec != std::errc() || r.ptr != e)
+        const auto parsed =
+            eq == std::string::npos ? std::nullopt : model::parseNumber(std::string_view(s).substr(eq + 1));
+        if (eq == std::string::npos || eq == 0 || !parsed)
             return makeError(ErrorCode::BadInput, "--set '" + s + "': expected KEY=VALUE with VALUE a number in SI units");
+        const double x = *parsed;
         const std::string key = s.substr(0, eq);
         const auto* meta = model::findParameter(*metas, key);
         if (!meta || !meta->writable)
@@ -106,8 +106,10 @@ Status prepareDrive(device::Drive& drive, const CaptureOptions& o)
 
 bool parseDouble(const std::string& s, double& x)
 {
-    const auto r = std::from_chars(s.data(), s.data() + s.size(), x);
-    return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(x);
+    const auto v = model::parseNumber(s);
+    if (v)
+        x = *v;
+    return v.has_value();
 }
 
 /// The multisine fields of the request from --band, --spacing-hz, --periods, --phases, --shape-from.

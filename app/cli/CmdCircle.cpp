@@ -3,12 +3,13 @@
 // circle tests"); also reachable as `capture --test circle`. On sim:PRESET it runs core/sim/CircleTest
 // on the preset; on modbus://HOST:PORT it is a Circle test of the drive (docs/ballbar.md "Circle tests
 // through the drive"), the trace of both axes evaluated here.
-#include "app/cli/CliCommand.h"
 #include "app/cli/CircleCommand.h"
+#include "app/cli/CliCommand.h"
 #include "core/device/CircleDriveTest.h"
 #include "core/device/Drive.h"
 #include "core/io/BallBarCsv.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/Number.h"
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
 #include "core/sim/CircleTest.h"
@@ -18,10 +19,6 @@
 #include <memory>
 
 namespace axistune::cli {
-namespace {
-
-
-
 sim::CircleTestOptions circleOptions(const CircleCliOptions& o)
 {
     sim::CircleTestOptions c;
@@ -40,6 +37,8 @@ sim::CircleTestOptions circleOptions(const CircleCliOptions& o)
     c.seed = o.seed;
     return c;
 }
+
+namespace {
 
 struct SetItem {
     std::vector<std::string> axes;
@@ -61,16 +60,43 @@ Result<SetItem> parseSet(const std::string& item, const std::string& plane)
     } else {
         out.axes = {plane.substr(0, 1), plane.substr(1, 1)};
     }
-    try {
-        std::size_t used = 0;
-        out.value = std::stod(item.substr(eq + 1), &used);
-        if (used != item.size() - eq - 1)
-            throw std::invalid_argument("trailing");
-    } catch (const std::exception&) {
+    const auto v = model::parseNumber(std::string_view(item).substr(eq + 1));
+    if (!v)
         return makeError(ErrorCode::BadInput, "--set '" + item + "': value is not a number");
-    }
+    out.value = *v;
     return out;
 }
+
+} // namespace
+
+Result<DriveCircle> measureCircleOnDrive(device::Drive& drive, const sim::CircleTestOptions& c)
+{
+    const device::TestRequest r = device::circleRequestOf(c);
+    if (auto st = drive.startTest(r); !st)
+        return st.error();
+    for (;;) {
+        auto s = drive.pollTest();
+        if (!s) {
+            (void)drive.abortTest();
+            return s.error();
+        }
+        if (s->state == device::TestState::Running)
+            continue;
+        if (s->state != device::TestState::Completed)
+            return makeError(s->state == device::TestState::Faulted ? ErrorCode::Safety : ErrorCode::Aborted,
+                             "circle test " + std::string(device::testStateName(s->state)) + ": " + s->detail);
+        break;
+    }
+    auto trace = drive.readTrace();
+    if (!trace)
+        return trace.error();
+    auto res = sim::evaluateCircleTrace(*trace, c);
+    if (!res)
+        return res.error();
+    return DriveCircle{std::move(*trace), std::move(res).value()};
+}
+
+namespace {
 
 /// The circle through a drive (modbus://): --set written to the drive, one Circle test, the trace
 /// evaluated on this side. Injected geometric errors and the second servo trace are simulator-only.
@@ -92,39 +118,20 @@ int runCircleOnDrive(const CircleCliOptions& o, const sim::CircleTestOptions& c)
             if (auto st = (*drive)->writeParameters(axis, {{set->key, set->value}}); !st)
                 return reportError(cmd, makeError(st.error().code, "--set '" + item + "': " + st.error().detail));
     }
-    const device::TestRequest r = device::circleRequestOf(c);
-    if (auto st = (*drive)->startTest(r); !st)
-        return reportError(cmd, st.error());
-    for (;;) {
-        auto s = (*drive)->pollTest();
-        if (!s) {
-            (void)(*drive)->abortTest();
-            return reportError(cmd, s.error());
-        }
-        if (s->state == device::TestState::Running)
-            continue;
-        if (s->state != device::TestState::Completed)
-            return reportError(cmd, makeError(s->state == device::TestState::Faulted ? ErrorCode::Safety
-                                                                                   : ErrorCode::Aborted,
-                                              "circle test " + std::string(device::testStateName(s->state)) + ": " +
-                                                  s->detail));
-        break;
-    }
-    auto trace = (*drive)->readTrace();
-    if (!trace)
-        return reportError(cmd, trace.error());
-    auto res = sim::evaluateCircleTrace(*trace, c);
-    if (!res)
-        return reportError(cmd, res.error());
-    model::BallBarTrace bb = res.value().ballbar;
+    auto measured = measureCircleOnDrive(**drive, c);
+    if (!measured)
+        return reportError(cmd, measured.error());
+    auto& res = measured->result;
+    auto& trace = measured->trace;
+    model::BallBarTrace bb = res.ballbar;
     bb.metadata["connection"] = o.connect;
     if (auto st = io::writeBallBarCsvFile(o.out, bb); !st)
         return reportError(cmd, st.error());
     if (!o.servoOutX.empty())
-        if (auto st = io::writeCaptureCsvFile(o.servoOutX, *trace); !st)
+        if (auto st = io::writeCaptureCsvFile(o.servoOutX, trace); !st)
             return reportError(cmd, st.error());
-    std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << bb.size() << ", \"dT_x_Nm\": " << res->dTxNm
-              << ", \"dT_y_Nm\": " << res->dTyNm << "}\n";
+    std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << bb.size() << ", \"dT_x_Nm\": " << res.dTxNm
+              << ", \"dT_y_Nm\": " << res.dTyNm << "}\n";
     return 0;
 }
 
@@ -153,7 +160,7 @@ Status applySet(sim::MachineDefinition& m, const std::string& item, const std::s
     return Status::success();
 }
 
-}  // namespace
+} // namespace
 
 int runCircle(const CircleCliOptions& o)
 {

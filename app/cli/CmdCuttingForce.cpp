@@ -2,10 +2,11 @@
 // axistune-cli cutting-force: the adaptive cutting force observer of seed 003 (eq. (3) torsion torque,
 // eq. (2) cutting force, switching RLS) run offline on a captured trace (docs/machining.md).
 #include "app/cli/CliCommand.h"
-#include "core/model/Units.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageJson.h"
+#include "core/model/Number.h"
+#include "core/model/Units.h"
 
 #include <cmath>
 #include <cstdio>
@@ -30,12 +31,10 @@ Result<double> samplePeriod(const model::Capture& cap, const std::string& src)
             return dt;
         return makeError(ErrorCode::BadInput, src + ", column 't_s': time does not increase");
     }
-    auto it = cap.metadata.find("fs_Hz");
-    if (it != cap.metadata.end()) {
-        const double fs = std::atof(it->second.c_str());
-        if (fs > 0.0)
-            return 1.0 / fs;
-    }
+    if (const auto ts = model::metadataSamplePeriodS(cap.metadata); !ts)
+        return makeError(ErrorCode::BadInput, src + ": " + ts.error().detail);
+    else if (ts->has_value())
+        return **ts;
     return makeError(ErrorCode::BadInput,
                      src + ": neither a column 't_s' nor a metadata line 'fs_Hz' gives the sample rate");
 }

@@ -4,15 +4,17 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/io/FrfCsv.h"
 #include "core/machining/MachiningJson.h"
-#include "core/machining/ToolModeFit.h"
 #include "core/machining/StabilityLobes.h"
+#include "core/machining/ToolModeFit.h"
+#include "core/model/Number.h"
+#include "core/model/Units.h"
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 namespace axistune::cli {
 namespace {
@@ -20,17 +22,37 @@ namespace {
 struct LobesArgs {
     std::string tool, cut, out;
     std::string toolFrfX, toolFrfY;  ///< alternative to --tool: measured tool-tip receptance FRFs [m/N]
-    int modes = 1;
-    double frfMinHz = 0.0, frfMaxHz = std::numeric_limits<double>::infinity();
+    int modes = 0;                   ///< 0: one per significant resonance peak
+    std::string band;                ///< "FMIN:FMAX" [Hz]; empty: automatic
+    double frfMinHz = std::numeric_limits<double>::quiet_NaN(), frfMaxHz = std::numeric_limits<double>::quiet_NaN();
     double rpmMin = 0.0, rpmMax = 0.0, rpmStep = 0.0;
     int steps = 40;
     double depthMaxMm = 50.0;
     int threads = 2;
 };
 
-// Fits the modes of one direction to a receptance FRF CSV; a summary goes to stderr.
+// "FMIN:FMAX" in Hz ('.' decimal point, no locale).
+Result<std::pair<double, double>> parseBand(const std::string& text)
+{
+    const auto colon = text.find(':');
+    auto num = [&](std::string_view t, double& v) {
+        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+        return ec == std::errc() && end == t.data() + t.size() && std::isfinite(v);
+    };
+    double lo = 0.0, hi = 0.0;
+    const std::string_view all(text);
+    if (colon == std::string::npos || !num(all.substr(0, colon), lo) || !num(all.substr(colon + 1), hi))
+        return makeError(ErrorCode::BadInput, "--band '" + text + "': expected FMIN:FMAX in Hz, e.g. --band 900:3000");
+    if (!(lo >= 0.0) || !(hi > lo))
+        return makeError(ErrorCode::OutOfRange, "--band '" + text + "': need 0 <= FMIN < FMAX");
+    return std::pair{lo, hi};
+}
+
+// Fits the modes of one direction to a receptance FRF CSV (core/machining/ToolModeFit.h: automatic band and
+// mode count unless given, quality gate); a summary goes to stderr. A refused fit is an error (exit 2).
 Result<std::vector<machining::ModalParameters>> fitDirection(const LobesArgs& a, const std::string& path, const char* dir)
 {
+    using model::formatNumber;
     auto frf = io::readFrfCsvFile(path);
     if (!frf)
         return frf.error();
@@ -38,18 +60,33 @@ Result<std::vector<machining::ModalParameters>> fitDirection(const LobesArgs& a,
     opt.modes = a.modes;
     opt.minHz = a.frfMinHz;
     opt.maxHz = a.frfMaxHz;
+    if (!a.band.empty()) {
+        if (!std::isnan(a.frfMinHz) || !std::isnan(a.frfMaxHz))
+            return makeError(ErrorCode::BadInput,
+                             "--band and --frf-min-hz/--frf-max-hz are alternatives: give one of them");
+        auto band = parseBand(a.band);
+        if (!band)
+            return band.error();
+        opt.minHz = band->first;
+        opt.maxHz = band->second;
+    }
     auto fit = machining::fitToolModes(*frf, opt);
     if (!fit)
         return makeError(fit.error().code, path + ": " + fit.error().detail);
-    char line[160];
-    std::snprintf(line, sizeof line, "lobes: %s from %s: %zu points, rms relative fit error %.3g\n", dir, path.c_str(),
-                  fit->points, fit->rmsRelativeError);
-    std::cerr << line;
-    for (const auto& m : fit->modes) {
-        std::snprintf(line, sizeof line, "  mass_kg=%.6g damping_Ns_per_m=%.6g stiffness_N_per_m=%.6g (%.1f Hz, zeta %.4f)\n",
-                      m.massKg, m.dampingNsPerM, m.stiffnessNPerM, machining::naturalFrequencyHz(m), machining::dampingRatio(m));
-        std::cerr << line;
-    }
+    std::cerr << "lobes: " << dir << " from " << path << ": " << fit->modes.size() << " mode(s) in the "
+              << (fit->automaticBand ? "automatic" : "given") << " band " << formatNumber(fit->bandMinHz, 6) << " to "
+              << formatNumber(fit->bandMaxHz, 6) << " Hz, " << fit->points << " points, weighted residual "
+              << formatNumber(100.0 * fit->residualRatio, 3) << " % (accepted up to "
+              << formatNumber(100.0 * opt.maxResidual, 3) << " %)\n";
+    for (const auto& m : fit->modes)
+        std::cerr << "  mass_kg=" << formatNumber(m.massKg, 6)
+                  << " damping_Ns_per_m=" << formatNumber(m.dampingNsPerM, 6)
+                  << " stiffness_N_per_m=" << formatNumber(m.stiffnessNPerM, 6) << " ("
+                  << formatNumber(machining::naturalFrequencyHz(m), 5) << " Hz, zeta "
+                  << formatNumber(machining::dampingRatio(m), 4) << ")\n";
+    std::cerr << "  residual terms (not used by the lobes): upper " << formatNumber(fit->upperResidual.real(), 4)
+              << " + j·" << formatNumber(fit->upperResidual.imag(), 4) << " m/N, lower "
+              << formatNumber(fit->lowerResidual, 4) << " m/N·(rad/s)^2\n";
     return fit->modes;
 }
 
@@ -98,26 +135,15 @@ int runLobes(const LobesArgs& a)
     auto lobes = machining::stabilityLobes(*tool, *cut, *grid, opt);
     if (!lobes)
         return reportError(cmd, lobes.error());
-    std::ofstream file;
-    std::ostream* os = &std::cout;
-    if (!a.out.empty()) {
-        file.open(a.out);
-        if (!file)
-            return reportError(cmd, makeError(ErrorCode::Io, a.out + ": cannot write"));
-        os = &file;
-    }
+    // Composed in memory, then stdout or written atomically (a full disk never leaves half a file).
+    std::ostringstream text;
+    std::ostream* os = &text;
     *os << "rpm,limit_depth_m\n";
-    char line[96];
     for (const auto& p : *lobes) {
-        if (std::isinf(p.limitDepthM))
-            std::snprintf(line, sizeof line, "%.10g,inf\n", p.rpm);
-        else
-            std::snprintf(line, sizeof line, "%.10g,%.9e\n", p.rpm, p.limitDepthM);
-        *os << line;
+        *os << model::formatNumber(p.rpm, 10) << ','
+            << (std::isinf(p.limitDepthM) ? std::string("inf") : model::formatScientific(p.limitDepthM, 9)) << '\n';
     }
-    if (!*os)
-        return reportError(cmd, makeError(ErrorCode::Io, (a.out.empty() ? "stdout" : a.out) + ": write failed"));
-    return 0;
+    return writeResult(cmd, text.str(), a.out);
 }
 
 const CliRegistrar kRegistrar{{
@@ -129,9 +155,13 @@ const CliRegistrar kRegistrar{{
         sub.add_option("--tool-frf-x", a->toolFrfX,
                        "instead of --tool: measured tool-tip receptance FRF CSV in x (feed), h in m/N; modes are fitted");
         sub.add_option("--tool-frf-y", a->toolFrfY, "instead of --tool: the same in y");
-        sub.add_option("--modes", a->modes, "modes fitted per direction to --tool-frf-x/-y (default 1)");
-        sub.add_option("--frf-min-hz", a->frfMinHz, "fit band lower edge [Hz] (default: all points)");
-        sub.add_option("--frf-max-hz", a->frfMaxHz, "fit band upper edge [Hz] (default: all points)");
+        sub.add_option("--modes", a->modes,
+                       "modes fitted per direction to --tool-frf-x/-y (default 0: one per resonance peak above 25 % of "
+                       "the largest)");
+        sub.add_option("--band", a->band, "fit band FMIN:FMAX [Hz] (default: chosen from the resonance peaks)");
+        sub.add_option("--frf-min-hz", a->frfMinHz,
+                       "fit band lower edge [Hz] (instead of --band; the upper edge is then the data's end)");
+        sub.add_option("--frf-max-hz", a->frfMaxHz, "fit band upper edge [Hz] (instead of --band)");
         sub.add_option("--cut", a->cut, "cut.json: teeth, Kt_N_per_m2, Kr_N_per_m2, radial_immersion (0-1], milling down|up")
             ->required();
         sub.add_option("--rpm-min", a->rpmMin, "lowest spindle speed [min^-1]")->required();

@@ -3,20 +3,23 @@
 // predicted proposed and conventional compensation (docs/ballbar.md; spec/lost-motion-and-two-inertia.md §4.3–4.5).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/io/AtomicFile.h"
 #include "core/io/BallBarCsv.h"
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/tuning/LostMotion.h"
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 
 namespace axistune::cli {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 struct LostMotionCliOptions {
     std::vector<std::string> paths;
@@ -35,19 +38,16 @@ struct LostMotionCliOptions {
 
 Status writeCompensated(const std::string& path, const std::vector<tuning::CompensationPrediction>& preds)
 {
-    std::ofstream f(path);
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": cannot open for writing");
-    f << std::setprecision(12) << "file_index,angle_deg,measured_um,proposed_um,conventional_um\n";
+    std::ostringstream f;
+    const auto g = [](double v) { return model::formatNumber(v, 12); };
+    f << "file_index,angle_deg,measured_um,proposed_um,conventional_um\n";
     for (std::size_t k = 0; k < preds.size(); ++k) {
         const auto& p = preds[k];
         for (std::size_t i = 0; i < p.angleRad.size(); ++i)
-            f << k << ',' << p.angleRad[i] / kDeg << ',' << p.measuredM[i] * 1e6 << ',' << p.proposedM[i] * 1e6 << ','
-              << p.conventionalM[i] * 1e6 << '\n';
+            f << k << ',' << g(p.angleRad[i] / kRadPerDeg) << ',' << g(p.measuredM[i] * 1e6) << ','
+              << g(p.proposedM[i] * 1e6) << ',' << g(p.conventionalM[i] * 1e6) << '\n';
     }
-    if (!f)
-        return makeError(ErrorCode::Io, path + ": write failed");
-    return Status::success();
+    return io::writeFileAtomic(path, f.view());
 }
 
 nlohmann::json optJson(const std::optional<double>& v, double scale = 1.0)
@@ -79,7 +79,7 @@ nlohmann::json fitJson(const LostMotionCliOptions& o, const tuning::LostMotionFi
                        {"dx_m", p.dxM},
                        {"residual_m", fit->residualsM[i]},
                        {"file", p.source},
-                       {"angle_deg", p.angleRad / kDeg}});
+                       {"angle_deg", p.angleRad / kRadPerDeg}});
     }
     j["points"] = pts;
     j["residual_rms_m"] = fit->residualRmsM;

@@ -3,6 +3,7 @@
 // read-back, over the embedded simulated drive (sim:PRESET) or Modbus TCP (modbus://HOST:PORT).
 #include "app/cli/CliCommand.h"
 #include "core/device/ModbusDrive.h"
+#include "core/model/Number.h"
 
 #include <charconv>
 #include <iostream>
@@ -45,14 +46,11 @@ Result<model::ParameterValues> parseSets(const std::vector<std::string>& sets)
     model::ParameterValues v;
     for (const auto& s : sets) {
         const auto eq = s.find('=');
-        double x = 0.0;
-        const char* b = eq == std::string::npos ? nullptr : s.data() + eq + 1;
-        const char* e = s.data() + s.size();
-        const auto r = b ? std::from_chars(b, e, x) : std::from_chars_result{nullptr, std::errc::invalid_argument};
-        if (eq == std::string::npos || eq == 0 || r.ec != std::errc() || r.ptr != e)
+        const auto x = eq == std::string::npos ? std::nullopt : model::parseNumber(std::string_view(s).substr(eq + 1));
+        if (eq == std::string::npos || eq == 0 || !x)
             return makeError(ErrorCode::BadInput,
                              "--set '" + s + "': expected KEY=VALUE with VALUE a number in SI units");
-        v[s.substr(0, eq)] = x;
+        v[s.substr(0, eq)] = *x;
     }
     return v;
 }

@@ -6,8 +6,10 @@
 #include "core/model/InputLimits.h"
 #include "core/store/Database.h"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace axistune::cli {
 
@@ -29,12 +31,23 @@ int runImport(const ProfileOptions& o)
     auto profile = io::readProfileFile(o.in);
     if (!profile)
         return reportError(cmd, profile.error());
-    auto db = store::Database::open(o.db);
-    if (!db)
-        return reportError(cmd, db.error());
-    auto sid = db.value().importProfile(*profile, o.in, o.note);
-    if (!sid)
+    std::error_code ec;
+    const bool existed = std::filesystem::exists(o.db, ec);
+    std::optional<store::Database> db;
+    {
+        auto opened = store::Database::open(o.db);
+        if (!opened)
+            return reportError(cmd, opened.error());
+        db.emplace(std::move(opened).value());
+    }
+    auto sid = db->importProfile(*profile, o.in, o.note);
+    if (!sid) {
+        // A failed import changes nothing: the transaction is rolled back; closing checkpoints and
+        // removes the log; a store this import was creating is removed again.
+        db.reset();
+        store::removeFailedOpenLeftovers(o.db, !existed);
         return reportError(cmd, sid.error());
+    }
     nlohmann::json j{{"machine", profile->name}, {"axes", profile->axes.size()}, {"session", *sid}, {"db", o.db}};
     return writeJsonResult(cmd, j, "");
 }

@@ -7,12 +7,12 @@
 #include "core/machining/ChatterFrequencyEstimator.h"
 #include "core/machining/MachiningJson.h"
 #include "core/machining/SpindleSpeed.h"
-
-#include <nlohmann/json.hpp>
+#include "core/model/Number.h"
 
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 namespace {
@@ -31,15 +31,10 @@ struct SpindleArgs {
 // Sample period from "# fs_Hz=" metadata, else from a t_s column.
 Result<double> samplePeriod(const model::Capture& c, const std::string& src)
 {
-    if (auto it = c.metadata.find("fs_Hz"); it != c.metadata.end()) {
-        try {
-            const double fs = std::stod(it->second);
-            if (fs > 0.0 && std::isfinite(fs))
-                return 1.0 / fs;
-        } catch (...) {
-        }
-        return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz is not a positive number");
-    }
+    if (const auto ts = model::metadataSamplePeriodS(c.metadata); !ts)
+        return makeError(ErrorCode::BadInput, src + ": " + ts.error().detail);
+    else if (ts->has_value())
+        return **ts;
     if (const auto* t = c.channel("t_s"); t && t->data.size() > 1) {
         const double ts = (t->data.back() - t->data.front()) / static_cast<double>(t->data.size() - 1);
         if (ts > 0.0)

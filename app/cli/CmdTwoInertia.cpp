@@ -6,24 +6,24 @@
 #include "core/dsp/InjectionHold.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/io/FrfCsv.h"
+#include "core/model/Constants.h"
 #include "core/tuning/TwoInertia.h"
 #include "core/tuning/TwoInertiaFilter.h"
 #include "core/tuning/VelocityLoop.h"
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <complex>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 namespace axistune::cli {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 
 struct TwoInertiaOptions {
     std::string frfPath;

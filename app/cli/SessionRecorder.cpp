@@ -299,7 +299,8 @@ Result<io::MachineProfile> openMachine(const SessionFlags& f, std::optional<stor
         if (opened.error().code == ErrorCode::NotFound)
             return makeError(ErrorCode::BadInput, "store " + f.db + " does not exist; " + howTo
                                                       + " (a profile with machine '" + f.machine + "')");
-        return opened.error();
+        return makeError(opened.error().code,
+                         opened.error().detail + " (checked before running; nothing was measured)");
     }
     auto machines = opened->listMachines();
     if (!machines)
@@ -314,6 +315,9 @@ Result<io::MachineProfile> openMachine(const SessionFlags& f, std::optional<stor
     auto profile = opened->loadProfile(f.machine);
     if (!profile)
         return profile.error();
+    // Before the command runs: a test is never measured for a session the store cannot take.
+    if (auto st = opened->checkWritable(); !st)
+        return makeError(st.error().code, st.error().detail + " (checked before running; nothing was measured)");
     db.emplace(std::move(opened).value());
     return profile;
 }

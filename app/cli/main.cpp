@@ -2,9 +2,9 @@
 // axistune-cli: every analysis and capture without the GUI. Results as JSON on stdout (or --out),
 // errors on stderr with exit codes 2 (bad input), 3 (device error), 4 (safety stop).
 #include "app/cli/CliCommand.h"
+#include "core/io/AtomicFile.h"
 #include "core/model/InputLimits.h"
 
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -25,12 +25,13 @@ int reportError(const std::string& command, const Error& error)
 int writeResult(const std::string& command, const std::string& text, const std::string& outPath)
 {
     if (outPath.empty()) {
-        std::cout << text;
+        if (!(std::cout << text).flush())
+            return reportError(command, makeError(ErrorCode::Io, "stdout: write failed"));
         return 0;
     }
-    std::ofstream f(outPath);
-    if (!(f << text))
-        return reportError(command, makeError(ErrorCode::Io, outPath + ": cannot write"));
+    // Atomic (core/io/AtomicFile.h): a full disk or a kill never leaves half a file with exit 0.
+    if (auto st = io::writeFileAtomic(outPath, text); !st)
+        return reportError(command, st.error());
     return 0;
 }
 

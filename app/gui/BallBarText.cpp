@@ -69,16 +69,26 @@ QString BallBarText::rule(const std::string& id, const std::vector<std::string>&
                        "R/2, best pitch %2 mm) in the residual of the smooth fit, projected radially; not detected "
                        "against a noise threshold of %3 µm (false alarm ≈ 1e-3)"),
                     a, 3, english);
-    if (id == "backlash")
+    if (id == "backlash" || id == "backlash.not_detected") {
+        if (a.size() != 6)
+            return qs(english);
+        const QString verdict =
+            id == "backlash" ? tr("a backlash: |step| above %1 µm (4× its standard error, at least 0.3 µm)")
+                             : tr("no backlash: |step| not above %1 µm (4× its standard error, at least 0.3 µm)");
+        std::vector<std::string> args(a.begin(), a.begin() + 5);
+        args.push_back(verdict.arg(qs(a[5])).toStdString());
         return fill(tr("mean radial step across %1 %2 reversal(s) (%3): joint fit of a cubic plus a step over %4–%5° "
-                       "each side of the reversal; positive = outward step (lost motion), negative = inward "
-                       "(over-compensation)"),
-                    a, 5, english);
+                       "each side of the reversal, where a spike has decayed; positive = outward step (lost motion), "
+                       "negative = inward (over-compensation); %6"),
+                    args, 6, english);
+    }
     if (id == "backlash.not_covered")
         return fill(tr("Backlash: no %1 reversal is covered by the trace(s)"), a, 1, english);
     if (id == "reversal_spike")
-        return fill(tr("peak residual at %1°, within ±%2° of a %3 reversal (width %4° at half height) against the local "
-                       "step fit; reported when above 4× the fit-window noise and 0.3 µm"),
+        return fill(tr("transient at %1°, within ±%2° of a %3 reversal (width %4° at half height): the peak departure "
+                       "from the step's own transition (the level before the reversal, then a monotonic move to the "
+                       "level after it, which a backlash follows) that comes back to that level; reported when above "
+                       "4× the fit-window noise and 0.3 µm"),
                     a, 4, english);
     if (id == "circularity")
         return fill(tr("max − min radial deviation after removing the least-squares circle (ISO 230-4), the largest "

@@ -47,6 +47,15 @@ ConnectDialog::ConnectDialog(AppContext& ctx, QWidget* parent) : QDialog(parent)
     m_seedLabel = new QLabel(simPage);
     simForm->addRow(m_presetLabel, m_preset);
     simForm->addRow(m_seedLabel, m_seed);
+    // An identified rigid-body model as one axis's plant (docs/identification.md "Using the result").
+    m_model = new QLineEdit(simPage);
+    m_model->setObjectName("modelEdit");
+    m_modelAxis = new QLineEdit(simPage);
+    m_modelAxis->setObjectName("modelAxisEdit");
+    m_modelLabel = new QLabel(simPage);
+    m_modelAxisLabel = new QLabel(simPage);
+    simForm->addRow(m_modelLabel, m_model);
+    simForm->addRow(m_modelAxisLabel, m_modelAxis);
     m_stack->addWidget(simPage);
 
     auto* mbPage = new QWidget(m_stack);
@@ -111,6 +120,9 @@ void ConnectDialog::retranslateUi()
     m_modbusRadio->setText(tr("Drive over Modbus TCP"));
     m_presetLabel->setText(tr("Machine preset:"));
     m_seedLabel->setText(tr("Noise seed:"));
+    m_modelLabel->setText(tr("Identified model (optional):"));
+    m_model->setPlaceholderText(tr("result JSON of Identify from motion"));
+    m_modelAxisLabel->setText(tr("Axis of the model:"));
     m_hostLabel->setText(tr("Host:"));
     m_portLabel->setText(tr("Port:"));
     m_timeoutLabel->setText(tr("Response timeout:"));
@@ -131,8 +143,15 @@ void ConnectDialog::updateMode() { m_stack->setCurrentIndex(m_simRadio->isChecke
 
 QString ConnectDialog::uri() const
 {
-    if (m_simRadio->isChecked())
-        return "sim:" + m_preset->currentText();
+    if (m_simRadio->isChecked()) {
+        QString u = "sim:" + m_preset->currentText();
+        if (!m_model->text().trimmed().isEmpty()) {
+            u += "?model=" + m_model->text().trimmed();
+            if (!m_modelAxis->text().trimmed().isEmpty())
+                u += "&axis=" + m_modelAxis->text().trimmed();
+        }
+        return u;
+    }
     QString u = QString("modbus://%1:%2").arg(m_host->text().trimmed()).arg(m_port->value());
     QStringList query;
     if (m_timeout->value() != 1000)

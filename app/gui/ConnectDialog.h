@@ -57,6 +57,10 @@ private:
     QComboBox* m_preset = nullptr;
     QLabel* m_seedLabel = nullptr;
     QSpinBox* m_seed = nullptr;
+    QLabel* m_modelLabel = nullptr;
+    QLineEdit* m_model = nullptr;
+    QLabel* m_modelAxisLabel = nullptr;
+    QLineEdit* m_modelAxis = nullptr;
     QLabel* m_hostLabel = nullptr;
     QLineEdit* m_host = nullptr;
     QLabel* m_portLabel = nullptr;

@@ -8,8 +8,8 @@
 #include "app/gui/NotchWizard.h"
 #include "app/gui/SessionReviewView.h"
 #include "app/gui/WizardRegistry.h"
-
 #include "core/device/FrfTest.h"
+#include "core/model/Constants.h"
 #include "core/store/Database.h"
 #include "core/store/FrfCapture.h"
 
@@ -124,7 +124,7 @@ nlohmann::json FrfWizard::inputsJson() const
     j["amplitude_pct"] = r.amplitudePct;
     const double rated = m_safety->driveInfo().ratedTorqueNm();
     if (std::isfinite(rated))
-        j["amplitude_Nm"] = r.amplitudePct / 100.0 * rated;
+        j["amplitude_Nm"] = model::torqueNmFromRatedPct(r.amplitudePct, rated);
     j["connection"] = m_ctx.drive().uri().toStdString();
     if (std::isfinite(m_config->estimatedMotionS()))
         j["estimated_motion_s"] = m_config->estimatedMotionS();

@@ -4,13 +4,13 @@
 // planMultisineTest with the timing of device::loopTimingFromParameters), the open loop from
 // dsp::openLoopFromClosedLoop and the resonances from tuning::findResonances
 // (spec/current-loop-and-multisweep-frf.md §4.3 step 7).
-#include "app/gui/FrfWizard.h"
-
 #include "app/gui/AppContext.h"
-
+#include "app/gui/FrfWizard.h"
 #include "core/device/FrfTest.h"
 #include "core/device/MultisineTest.h"
 #include "core/dsp/LoopAnalysis.h"
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "widgets/BodePlot.h"
 
 #include <QCheckBox>
@@ -47,7 +47,8 @@ double valueOr(const model::ParameterValues& v, const char* key, double fallback
 /// Motion time of the test the drive would plan for this request, or the drive's reason to refuse it.
 std::pair<double, QString> planMotionTime(const model::ParameterValues& v, const device::TestRequest& r)
 {
-    const double rated = valueOr(v, "motor.rated_current", kNaN) * valueOr(v, "motor.torque_constant", kNaN);
+    const double rated =
+        model::ratedTorqueNm(valueOr(v, "motor.rated_current", kNaN), valueOr(v, "motor.torque_constant", kNaN));
     const double period = valueOr(v, "velocity.period", kNaN) * valueOr(v, "trace.divider", kNaN);
     const double h = valueOr(v, "current.period", kNaN);
     if (!std::isfinite(rated) || !std::isfinite(period) || !(period > 0.0))
@@ -55,7 +56,7 @@ std::pair<double, QString> planMotionTime(const model::ParameterValues& v, const
     auto timing = device::loopTimingFromParameters(v);
     if (!timing)
         return {kNaN, QString::fromStdString(timing.error().detail)};
-    const double amplitudeNm = r.amplitudePct / 100.0 * rated;
+    const double amplitudeNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
     if (r.frfMethod == device::FrfMethod::Multisine) {
         if (!(h > 0.0))
             return {kNaN, QCoreApplication::translate("FrfConfigPage", "The current-loop period is unknown.")};
@@ -92,7 +93,8 @@ QString hz(double f) { return QCoreApplication::translate("FrfResultPage", "%1 H
 
 double FrfDriveInfo::ratedTorqueNm() const
 {
-    return valueOr(values, "motor.rated_current", kNaN) * valueOr(values, "motor.torque_constant", kNaN);
+    return model::ratedTorqueNm(valueOr(values, "motor.rated_current", kNaN),
+                                valueOr(values, "motor.torque_constant", kNaN));
 }
 
 double FrfDriveInfo::traceRateHz() const
@@ -184,7 +186,7 @@ void FrfSafetyPage::showAmplitude()
     m_amplitudeText->setText(tr("%1 % of the rated torque %2 N·m = %3 N·m peak of the injected torque (at most %4 %).")
                                  .arg(pct)
                                  .arg(rated, 0, 'g', 4)
-                                 .arg(pct / 100.0 * rated, 0, 'g', 4)
+                                 .arg(model::torqueNmFromRatedPct(pct, rated), 0, 'g', 4)
                                  .arg(device::kMaxFrfAmplitudePct));
 }
 
@@ -364,8 +366,9 @@ void FrfResultPage::setMeasurement(const dsp::FrequencyResponse& frf, device::Fr
     m_method = method;
     m_done = false;
     m_analysis = {};
-    const auto it = frf.metadata.find("fs_Hz");
-    m_fsHz = it == frf.metadata.end() ? 0.0 : std::atof(it->second.c_str());
+    // The rate only draws the validity bands and the note under the plot: 0 (unknown) when unreadable.
+    const auto fs = model::metadataNumber(frf.metadata, "fs_Hz");
+    m_fsHz = fs ? *fs : 0.0;
 }
 
 void FrfResultPage::initializePage()

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Pages of the lost-motion wizard (LostMotionWizard.h; docs/wizards/lost-motion.md): source,
 // diagnostics, fit and prediction. The circle runs and the verification: LostMotionWizardRuns.cpp.
+#include "app/gui/AppContext.h"
+#include "app/gui/BallBarText.h"
 #include "app/gui/LostMotionWizard.h"
 #include "app/gui/WidgetUtil.h"
-
-#include "app/gui/BallBarText.h"
-#include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
+#include "core/model/Constants.h"
 #include "core/model/Units.h"
 #include "core/sim/MachineDefinition.h"
 #include "widgets/CurvePlot.h"
@@ -42,7 +42,7 @@ namespace gui {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 QString um(double m, int prec = 3) { return QString::number(m * 1e6, 'f', prec); }
 

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Circle tests of the lost-motion wizard (LostMotionWizard.h "Circle tests"; docs/wizards/lost-motion.md):
 // the runner, the circle page and the verification page.
-#include "app/gui/LostMotionWizard.h"
-#include "app/gui/WidgetUtil.h"
-
 #include "app/gui/AppContext.h"
 #include "app/gui/DriveController.h"
-#include "core/device/CircleDriveTest.h"
-#include "core/sim/CircleRun.h"
+#include "app/gui/LostMotionWizard.h"
+#include "app/gui/WidgetUtil.h"
 #include "app/gui/WizardPages.h"
+#include "core/device/CircleDriveTest.h"
+#include "core/model/Constants.h"
 #include "core/model/Units.h"
+#include "core/sim/CircleRun.h"
 #include "core/sim/MachineDefinition.h"
 #include "widgets/CurvePlot.h"
 #include "widgets/PolarPlot.h"
@@ -45,7 +45,7 @@ namespace gui {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 constexpr int kProgressSteps = 1000;  ///< progress units per circle
 
 QString um(double m, int prec = 3) { return QString::number(m * 1e6, 'f', prec); }

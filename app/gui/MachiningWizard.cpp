@@ -5,6 +5,7 @@
 #include "app/gui/MachiningWizard.h"
 
 #include "app/gui/AppContext.h"
+#include "app/gui/MachiningTapPage.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/io/FrfCsv.h"
 #include "core/machining/MachiningJson.h"
@@ -88,6 +89,32 @@ MachiningToolPage::MachiningToolPage(QWidget* parent) : QWizardPage(parent)
     auto* fit = new QPushButton(tr("Fit to tool-tip FRFs…"), this);
     fit->setObjectName("machiningFitFrf");
     fit->setToolTip(tr("Modes fitted to measured tool-tip receptances (FRF CSV, h in m/N) in x and y"));
+    // Fit settings (core/machining/ToolModeFit.h): band and number of modes, automatic when left empty / 0.
+    m_fitMin = new QLineEdit(this);
+    m_fitMin->setObjectName("machFitMinHz");
+    m_fitMin->setPlaceholderText(tr("auto"));
+    m_fitMax = new QLineEdit(this);
+    m_fitMax->setObjectName("machFitMaxHz");
+    m_fitMax->setPlaceholderText(tr("auto"));
+    m_fitModes = new QSpinBox(this);
+    m_fitModes->setObjectName("machFitModes");
+    m_fitModes->setRange(0, 10);
+    m_fitModes->setSpecialValueText(tr("auto"));
+    m_fitModes->setToolTip(tr("Modes fitted per direction; auto = one per resonance peak above 25 % of the largest"));
+    m_fitMin->setToolTip(tr("Fit band lower edge; empty = chosen from the resonance peaks"));
+    m_fitMax->setToolTip(tr("Fit band upper edge; empty = chosen from the resonance peaks"));
+    m_fitStatus = new QLabel(this);
+    m_fitStatus->setObjectName("machFitStatus");
+    m_fitStatus->setWordWrap(true);
+    auto* fitRow = new QHBoxLayout;
+    fitRow->addWidget(new QLabel(tr("FRF fit band [Hz]"), this));
+    fitRow->addWidget(m_fitMin);
+    fitRow->addWidget(new QLabel(tr("to"), this));
+    fitRow->addWidget(m_fitMax);
+    fitRow->addSpacing(12);
+    fitRow->addWidget(new QLabel(tr("Modes per direction"), this));
+    fitRow->addWidget(m_fitModes);
+    fitRow->addStretch();
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(load);
     buttons->addWidget(fit);
@@ -98,6 +125,8 @@ MachiningToolPage::MachiningToolPage(QWidget* parent) : QWizardPage(parent)
     auto* lay = new QVBoxLayout(this);
     lay->addWidget(m_table, 1);
     lay->addLayout(buttons);
+    lay->addLayout(fitRow);
+    lay->addWidget(m_fitStatus);
     lay->addWidget(m_derived);
     lay->addWidget(m_error);
 
@@ -108,6 +137,7 @@ MachiningToolPage::MachiningToolPage(QWidget* parent) : QWizardPage(parent)
 
     connect(m_table, &QTableWidget::itemChanged, this, [this] {
         m_source = tr("entered");
+        m_fitError.clear();
         revalidate();
     });
     connect(load, &QPushButton::clicked, this, [this] {
@@ -124,14 +154,16 @@ MachiningToolPage::MachiningToolPage(QWidget* parent) : QWizardPage(parent)
         const QString y = QFileDialog::getOpenFileName(this, tr("Tool-tip FRF in y"), QString(),
                                                        tr("FRF CSV (*.csv);;All files (*)"));
         if (!y.isEmpty())
-            fitToolFrfs(x, y, 1);
+            fitToolFrfs(x, y);
     });
     connect(addX, &QPushButton::clicked, this, [this] {
         addRow("x", {0.4, 80.0, 3.0e7});
+        m_fitError.clear();
         revalidate();
     });
     connect(addY, &QPushButton::clicked, this, [this] {
         addRow("y", {0.4, 80.0, 3.0e7});
+        m_fitError.clear();
         revalidate();
     });
     connect(remove, &QPushButton::clicked, this, [this] {
@@ -175,6 +207,7 @@ bool MachiningToolPage::loadToolFile(const QString& path)
         setErrorText(m_error, QString::fromStdString(tool.error().detail));
         return false;
     }
+    m_fitError.clear();
     setTool(*tool);
     m_source = path;
     return true;
@@ -182,31 +215,47 @@ bool MachiningToolPage::loadToolFile(const QString& path)
 
 bool MachiningToolPage::fitToolFrfs(const QString& xPath, const QString& yPath, int modesPerDirection)
 {
-    // Modes per direction fitted to the receptance (core/machining/ToolModeFit.h: peak picking, then
-    // Levenberg–Marquardt on the relative complex residuals).
+    // Modes per direction fitted to the receptance (core/machining/ToolModeFit.h: resonance peaks, automatic
+    // or given band, √|H|-weighted least squares with residual terms, quality gate). A refused fit empties
+    // the table, so no lobes are computed from it, and shows the reason.
+    auto refuse = [this](const QString& reason) {
+        m_fitError = reason;
+        m_fitStatus->clear();
+        setTool({});
+        m_source = tr("fit refused");
+        return false;
+    };
+    machining::ToolModeFitOptions opt;
+    opt.modes = modesPerDirection >= 0 ? modesPerDirection : m_fitModes->value();
+    for (auto [edit, out] : {std::pair{m_fitMin, &opt.minHz}, std::pair{m_fitMax, &opt.maxHz}}) {
+        if (edit->text().trimmed().isEmpty())
+            continue;
+        auto v = machiningNumber(edit->text());
+        if (!v)
+            return refuse(tr("FRF fit band: '%1' is not a number").arg(edit->text()));
+        *out = *v;
+    }
     machining::ToolModes tool;
     QStringList quality;
     for (const auto& [path, modes] : {std::pair{xPath, &tool.modesX}, std::pair{yPath, &tool.modesY}}) {
         auto frf = io::readFrfCsvFile(path.toStdString());
-        if (!frf) {
-            setErrorText(m_error, QString::fromStdString(frf.error().detail));
-            return false;
-        }
-        machining::ToolModeFitOptions opt;
-        opt.modes = modesPerDirection;
+        if (!frf)
+            return refuse(QString::fromStdString(frf.error().detail));
         auto fit = machining::fitToolModes(*frf, opt);
-        if (!fit) {
-            setErrorText(m_error, path + ": " + QString::fromStdString(fit.error().detail));
-            return false;
-        }
+        if (!fit)
+            return refuse(path + ": " + QString::fromStdString(fit.error().detail));
         *modes = fit->modes;
-        quality << tr("%1: %2 points, rms relative error %3 %")
-                       .arg(path)
-                       .arg(fit->points)
-                       .arg(100.0 * fit->rmsRelativeError, 0, 'f', 2);
+        quality << tr("%1: %2 mode(s), band %3–%4 Hz (%5), weighted residual %6 %")
+                       .arg(modes == &tool.modesX ? "x" : "y")
+                       .arg(fit->modes.size())
+                       .arg(g(fit->bandMinHz, 5), g(fit->bandMaxHz, 5))
+                       .arg(fit->automaticBand ? tr("automatic") : tr("given"))
+                       .arg(g(100.0 * fit->residualRatio, 3));
     }
+    m_fitError.clear();
     setTool(tool);
-    m_source = tr("fitted to %1").arg(quality.join("; "));
+    m_fitStatus->setText(quality.join("\n"));
+    m_source = tr("fitted to %1 and %2").arg(xPath, yPath);
     return true;
 }
 
@@ -238,7 +287,10 @@ Result<machining::ToolModes> MachiningToolPage::tool() const
 void MachiningToolPage::revalidate()
 {
     auto t = tool();
-    if (!t) {
+    if (!m_fitError.isEmpty()) {
+        setErrorText(m_error, m_fitError);
+        m_derived->clear();
+    } else if (!t) {
         setErrorText(m_error, QString::fromStdString(t.error().detail));
         m_derived->clear();
     } else {
@@ -446,11 +498,46 @@ MachiningWizard::MachiningWizard(AppContext& ctx, QWidget* parent) : QWizard(par
     setPage(AdviceId, m_advice);
     setPage(AnalysisId, m_analysis);
     setPage(SaveId, m_save);
+    m_tap = new MachiningTapPage(*m_tool, this);
+    setPage(TapId, m_tap);
+    setButtonText(QWizard::CustomButton1, tr("Tap test…"));
+    button(QWizard::CustomButton1)->setObjectName("machTapTest");
+    button(QWizard::CustomButton1)->setToolTip(tr("Measure the tool-tip receptance with an impact hammer"));
+    setOption(QWizard::HaveCustomButton1, true);
+    connect(this, &QWizard::customButtonClicked, this, [this](int which) {
+        if (which == QWizard::CustomButton1)
+            openTapTest();
+    });
     connect(this, &QWizard::currentIdChanged, this, &MachiningWizard::onPageChanged);
+}
+
+void MachiningWizard::openTapTest()
+{
+    if (currentId() != ToolId)
+        return;
+    m_tapRequested = true;
+    next();
+    m_tapRequested = false;
+}
+
+int MachiningWizard::nextId() const
+{
+    // the tap page sits outside the linear order: from the tool page only on request, never after Save
+    switch (currentId()) {
+    case ToolId:
+        return m_tapRequested ? int(TapId) : int(CutId);
+    case TapId:
+        return CutId;
+    case SaveId:
+        return -1;
+    default:
+        return QWizard::nextId();
+    }
 }
 
 void MachiningWizard::onPageChanged(int id)
 {
+    setOption(QWizard::HaveCustomButton1, id == ToolId);
     if (id == SaveId)
         save();
 }

@@ -56,8 +56,14 @@ public:
     /// Fills the table from a tool.json; false (and the message shown) on error.
     bool loadToolFile(const QString& path);
     /// Fills the table with modes fitted to measured tool-tip receptance FRFs (FRF CSV, h in m/N) in x
-    /// and y; false (and the message, naming the file, shown) on error.
-    bool fitToolFrfs(const QString& xPath, const QString& yPath, int modesPerDirection);
+    /// and y (machining::fitToolModes with the page's band and mode count; modesPerDirection ≥ 0 overrides
+    /// the count, 0 = automatic). On error or a fit refused by the quality gate: false, the table emptied
+    /// (no lobes) and the reason, naming the file, shown.
+    bool fitToolFrfs(const QString& xPath, const QString& yPath, int modesPerDirection = -1);
+    QLineEdit* fitMinHz() const { return m_fitMin; }
+    QLineEdit* fitMaxHz() const { return m_fitMax; }
+    QSpinBox* fitModes() const { return m_fitModes; }
+    QLabel* fitStatus() const { return m_fitStatus; }
     void setTool(const machining::ToolModes& tool);
     /// The tool in the table, validated (machining::validateTool); the error names the row and column.
     Result<machining::ToolModes> tool() const;
@@ -70,6 +76,11 @@ private:
     QTableWidget* m_table = nullptr;
     QLabel* m_error = nullptr;
     QLabel* m_derived = nullptr;
+    QLineEdit* m_fitMin = nullptr;
+    QLineEdit* m_fitMax = nullptr;
+    QSpinBox* m_fitModes = nullptr;
+    QLabel* m_fitStatus = nullptr;
+    QString m_fitError; ///< why the last FRF fit was refused (shown until the table is edited)
     QString m_source;
 };
 
@@ -244,7 +255,8 @@ private:
 class MachiningWizard : public QWizard {
     Q_OBJECT
 public:
-    enum PageId { ToolId, CutId, LobesId, AdviceId, AnalysisId, SaveId };
+    /// TapId is reached only from the tool page's "Tap test…" button (nextId()).
+    enum PageId { ToolId, CutId, LobesId, AdviceId, AnalysisId, SaveId, TapId };
 
     explicit MachiningWizard(AppContext& ctx, QWidget* parent = nullptr);
 
@@ -254,6 +266,10 @@ public:
     MachiningAdvicePage* advicePage() const { return m_advice; }
     MachiningAnalysisPage* analysisPage() const { return m_analysis; }
     MachiningSavePage* savePage() const { return m_save; }
+    class MachiningTapPage* tapPage() const { return m_tap; }
+    /// From the tool page: opens the tap-test page.
+    void openTapTest();
+    int nextId() const override;
     std::int64_t savedSessionId() const { return m_sessionId; }
 
 signals:
@@ -270,6 +286,8 @@ private:
     MachiningAdvicePage* m_advice = nullptr;
     MachiningAnalysisPage* m_analysis = nullptr;
     MachiningSavePage* m_save = nullptr;
+    class MachiningTapPage* m_tap = nullptr;
+    bool m_tapRequested = false;
     std::int64_t m_sessionId = 0;
 };
 

@@ -4,9 +4,10 @@
 // cutting force observer (seed 003, spec/cutting-force-observer-and-chatter-detection.md §1) and the
 // correlation chatter detection (seed 004, same spec §2) of core/machining, off the GUI thread.
 #include "app/gui/MachiningWizard.h"
-#include "core/model/Units.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageJson.h"
+#include "core/model/Number.h"
+#include "core/model/Units.h"
 #include "core/sim/CutSimulation.h"
 #include "core/sim/MachineDefinition.h"
 #include "widgets/TimeTracePlot.h"
@@ -181,8 +182,15 @@ CutAnalysis analyseCut(model::Capture cap, const QString& source, const QString&
                     r;
         machining::ChatterDetectOptions opt = stage->chatter;
         // The air cut before the tool enters the material sets the force-energy floor (CD-2 gate).
-        if (auto e = cap.metadata.find("engage_s"); e != cap.metadata.end() && opt.baselineS <= 0.0)
-            opt.baselineS = 0.75 * std::atof(e->second.c_str());
+        if (opt.baselineS <= 0.0) {
+            const auto engage = model::optionalMetadataNumber(cap.metadata, "engage_s");
+            if (!engage) {
+                out.error = source + ": " + QString::fromStdString(engage.error().detail);
+                return out;
+            }
+            if (engage->has_value())
+                opt.baselineS = 0.75 * **engage;
+        }
         auto res = machining::detectChatter(t->data, fm, xm->data, xt->data, 1.0 / ts, *mode, opt);
         if (!res) {
             out.error = source + ": " + QString::fromStdString(res.error().detail);

@@ -5,6 +5,7 @@
 #include "app/gui/MachiningWizard.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/ChatterFrequencyEstimator.h"
+#include "core/model/Number.h"
 #include "widgets/CurvePlot.h"
 
 #include <QFileDialog>
@@ -313,8 +314,12 @@ bool MachiningAdvicePage::estimateFromCapture(const QString& path)
     double ts = 0.0;
     if (t && t->data.size() >= 2)
         ts = (t->data.back() - t->data.front()) / static_cast<double>(t->data.size() - 1);
-    else if (cap->metadata.count("fs_Hz"))
-        ts = 1.0 / std::atof(cap->metadata.at("fs_Hz").c_str());
+    else if (const auto fromFs = model::metadataSamplePeriodS(cap->metadata); !fromFs) {
+        m_estimate->setText(path + QStringLiteral(": ") + QString::fromStdString(fromFs.error().detail));
+        return false;
+    } else {
+        ts = fromFs->value_or(0.0);
+    }
     if (!ch || !(ts > 0.0)) {
         m_estimate->setText(tr("%1: no signal channel or no sample rate (t_s or fs_Hz)").arg(path));
         return false;

@@ -4,6 +4,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/ConnectDialog.h"
 #include "app/gui/HistoryView.h"
+#include "app/gui/IdentifyDialog.h"
 #include "app/gui/LogPanel.h"
 #include "app/gui/NcExportDialog.h"
 #include "app/gui/ParameterInspector.h"
@@ -151,6 +152,8 @@ void MainWindow::buildMenus()
     m_reviewAction = m_sessionsMenu->addAction(QString(), this, [this] { showSessionReview(); });
     m_historyAction = m_sessionsMenu->addAction(QString(), this, [this] { showHistory(*m_ctx, this); });
     m_ncExportAction = m_sessionsMenu->addAction(QString(), this, [this] { showNcExportDialog(*m_ctx, this); });
+    m_toolsMenu = menuBar()->addMenu(QString());
+    m_identifyAction = m_toolsMenu->addAction(QString(), this, [this] { showIdentifyDialog(this); });
     m_settingsMenu = menuBar()->addMenu(QString());
     m_prefsAction = m_settingsMenu->addAction(QString(), this, &MainWindow::showSettings);
     m_helpMenu = menuBar()->addMenu(QString());
@@ -186,6 +189,8 @@ void MainWindow::retranslateUi()
     m_reviewAction->setText(tr("&Review…"));
     m_historyAction->setText(tr("&History…"));
     m_ncExportAction->setText(tr("Export NC &parameters…"));
+    m_toolsMenu->setTitle(tr("T&ools"));
+    m_identifyAction->setText(tr("Identify from &motion…"));
     m_settingsMenu->setTitle(tr("Se&ttings"));
     m_prefsAction->setText(tr("&Preferences…"));
     m_helpMenu->setTitle(tr("&Help"));

@@ -107,6 +107,7 @@ private:
     QMenu* m_machineMenu = nullptr;
     QMenu* m_wizardsMenu = nullptr;
     QMenu* m_sessionsMenu = nullptr;
+    QMenu* m_toolsMenu = nullptr;
     QMenu* m_settingsMenu = nullptr;
     QMenu* m_helpMenu = nullptr;
     QAction* m_connectAction = nullptr;
@@ -115,6 +116,7 @@ private:
     QAction* m_reviewAction = nullptr;
     QAction* m_historyAction = nullptr;
     QAction* m_ncExportAction = nullptr;
+    QAction* m_identifyAction = nullptr;
     QAction* m_prefsAction = nullptr;
     QAction* m_aboutAction = nullptr;
     std::vector<QAction*> m_wizardActions;

@@ -3,7 +3,7 @@
 // prediction and margins), verify (measurement against prediction) and save. docs/wizards/notch.md.
 #include "app/gui/AppContext.h"
 #include "app/gui/NotchWizard.h"
-
+#include "core/model/Number.h"
 #include "core/store/FrfCapture.h"
 #include "widgets/BodePlot.h"
 
@@ -107,10 +107,11 @@ void fillMargins(QTableWidget* t, const std::vector<std::optional<dsp::LoopMargi
 
 void addValidityBand(widgets::BodePlot* plot, const dsp::FrequencyResponse& frf)
 {
-    const auto it = frf.metadata.find("fs_Hz");
-    if (it == frf.metadata.end() || frf.empty())
+    // Only a band on the plot: a missing or unreadable rate draws none.
+    const auto parsed = model::metadataNumber(frf.metadata, "fs_Hz");
+    if (!parsed || frf.empty())
         return;
-    const double fs = std::atof(it->second.c_str());
+    const double fs = *parsed;
     if (fs > 0.0 && frf.freqHz.back() > 0.5 * fs)
         plot->addBand(0.5 * fs, std::min(fs, frf.freqHz.back() * 1.05), widgets::BodePlot::BandKind::MultiSweepOnly);
 }

@@ -53,6 +53,8 @@ const char* const kLabels[] = {
     QT_TRANSLATE_NOOP("Parameter", "Suppression filter frequency f0"),
     QT_TRANSLATE_NOOP("Parameter", "Suppression filter damping zeta"),
     QT_TRANSLATE_NOOP("Parameter", "F_L time constant tau"),
+    QT_TRANSLATE_NOOP("Parameter", "Reversal compensation pulse amplitude (velocity command)"),
+    QT_TRANSLATE_NOOP("Parameter", "Reversal compensation pulse time constant"),
 };
 // clang-format on
 }  // namespace

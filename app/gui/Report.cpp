@@ -4,6 +4,7 @@
 #include "app/gui/Report.h"
 
 #include "app/gui/BallBarText.h"
+#include "core/io/AtomicFile.h"
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
 #include "core/store/FrfCapture.h"
@@ -16,7 +17,6 @@
 #include <QFile>
 #include <QPageSize>
 #include <QPrinter>
-#include <QSaveFile>
 #include <QTemporaryDir>
 #include <QTextDocument>
 #include <QUrl>
@@ -508,16 +508,12 @@ QString SessionReport::standaloneHtml() const
 
 bool SessionReport::saveHtml(const QString& path, QString* error) const
 {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
+    const QByteArray bytes = standaloneHtml().toUtf8();
+    if (auto st = io::writeFileAtomic(path.toStdString(),
+                                      std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        !st) {
         if (error)
-            *error = tr("Cannot write %1: %2").arg(path, f.errorString());
-        return false;
-    }
-    f.write(standaloneHtml().toUtf8());
-    if (!f.commit()) {
-        if (error)
-            *error = tr("Cannot write %1: %2").arg(path, f.errorString());
+            *error = tr("Cannot write %1: %2").arg(path, QString::fromStdString(st.error().detail));
         return false;
     }
     return true;
@@ -525,15 +521,22 @@ bool SessionReport::saveHtml(const QString& path, QString* error) const
 
 bool SessionReport::savePdf(const QString& path, QString* error) const
 {
-    QPrinter printer(QPrinter::HighResolution);
-    printer.setOutputFormat(QPrinter::PdfFormat);
-    printer.setPageSize(QPageSize(QPageSize::A4));
-    printer.setOutputFileName(path);
-    printer.setDocName(tr("AxisTune session %1").arg(m_record.info.id));
-    std::unique_ptr<QTextDocument> doc(createDocument());
-    doc->print(&printer);
-    QFile f(path);
-    if (!f.exists() || f.size() == 0) {
+    // Printed to a temporary file next to `path`, then renamed over it (core/io/AtomicFile.h).
+    const auto st = io::writeFileAtomicVia(path.toStdString(), [&](const std::string& tmpPath) -> Status {
+        const QString tmp = QString::fromStdString(tmpPath);
+        QPrinter printer(QPrinter::HighResolution);
+        printer.setOutputFormat(QPrinter::PdfFormat);
+        printer.setPageSize(QPageSize(QPageSize::A4));
+        printer.setOutputFileName(tmp);
+        printer.setDocName(tr("AxisTune session %1").arg(m_record.info.id));
+        std::unique_ptr<QTextDocument> doc(createDocument());
+        doc->print(&printer);
+        QFile f(tmp); // QPrinter does not report write errors: check the file
+        if (!f.exists() || f.size() == 0)
+            return makeError(ErrorCode::Io, "the PDF writer failed");
+        return Status::success();
+    });
+    if (!st) {
         if (error)
             *error = tr("Cannot write %1").arg(path);
         return false;

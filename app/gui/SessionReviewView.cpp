@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/SessionReviewView.h"
-#include "app/gui/WidgetUtil.h"
 
+#include "app/gui/WidgetUtil.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
+#include "core/model/Number.h"
 #include "core/store/FrfCapture.h"
 #include "widgets/BodePlot.h"
 #include "widgets/TimeTracePlot.h"
@@ -101,7 +102,9 @@ int addFrfWithBands(widgets::BodePlot& plot, const dsp::FrequencyResponse& frf, 
     const auto method = frf.metadata.find("method");
     if (fs != frf.metadata.end() && method != frf.metadata.end() && !frf.empty() &&
         (method->second == "multisweep" || method->second == "multisine" || method->second == "sine-stream-mixed")) {
-        const double fsHz = std::atof(fs->second.c_str());
+        // Only a band on the plot: an unreadable rate draws none.
+        const auto parsed = model::metadataNumber(frf.metadata, "fs_Hz");
+        const double fsHz = parsed ? *parsed : 0.0;
         if (fsHz > 0.0 && frf.freqHz.back() > fsHz / 2.0)
             plot.addBand(fsHz / 2.0, std::min(fsHz, frf.freqHz.back()), widgets::BodePlot::BandKind::MultiSweepOnly);
     }

@@ -7,14 +7,14 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/model/Constants.h"
 #include "core/store/FrfCapture.h"
 
 #include <QLabel>
 #include <QVBoxLayout>
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 namespace axistune {
@@ -22,7 +22,7 @@ namespace gui {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 
 const WizardRegistrar kRegistrar{"two-inertia", QT_TRANSLATE_NOOP("Wizards", "Two-inertia vibration suppression…"), 60,
                                  [](AppContext& ctx, QWidget* parent) -> QWizard* {
@@ -84,10 +84,10 @@ void TwoInertiaSavePage::initializePage()
     if (m_d.loadAfter.maxAbs > 0.0)
         text += "\n" + tr("Maximum load error of the profile: measured %1° with the filter (%2° before the change); "
                           "predicted %3° without and %4° with the filter.")
-                           .arg(m_d.loadAfter.maxAbs * 180.0 / std::numbers::pi, 0, 'f', 3)
-                           .arg(m_d.loadBefore.maxAbs * 180.0 / std::numbers::pi, 0, 'f', 3)
-                           .arg(m_d.predictedLoadWithout * 180.0 / std::numbers::pi, 0, 'f', 3)
-                           .arg(m_d.predictedLoadWith * 180.0 / std::numbers::pi, 0, 'f', 3);
+                           .arg(m_d.loadAfter.maxAbs * model::kDegPerRad, 0, 'f', 3)
+                           .arg(m_d.loadBefore.maxAbs * model::kDegPerRad, 0, 'f', 3)
+                           .arg(m_d.predictedLoadWithout * model::kDegPerRad, 0, 'f', 3)
+                           .arg(m_d.predictedLoadWith * model::kDegPerRad, 0, 'f', 3);
     if (!m_ctx.drive().isConnected())
         text += "\n" + tr("Not connected: applying the filter and verifying with the profile need a connection.");
     else if (!m_apply->applied())

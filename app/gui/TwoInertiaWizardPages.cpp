@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Pages of the two-inertia wizard (TwoInertiaWizard.h; docs/wizards/two-inertia.md): source, fit,
 // filter and prediction, verification. Method: spec/lost-motion-and-two-inertia.md §2.2–2.10, TI-1..TI-6.
+#include "app/gui/AppContext.h"
 #include "app/gui/TwoInertiaWizard.h"
 #include "app/gui/WidgetUtil.h"
-
-#include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
+#include "core/model/Constants.h"
 #include "core/store/FrfCapture.h"
 #include "widgets/BodePlot.h"
 #include "widgets/CurvePlot.h"
@@ -34,8 +34,8 @@ namespace gui {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+using model::kDegPerRad;
+using model::kTwoPi;
 
 /// Full precision, independent of the locale.
 std::string exact(double v) { return QString::number(v, 'g', 17).toStdString(); }
@@ -317,7 +317,7 @@ void TwoInertiaFitPage::showResults()
             const auto ratio = hm / m_d.plant->h[i];
             rf.push_back(f);
             rMag.push_back(20.0 * std::log10(std::abs(ratio)));
-            rPh.push_back(std::arg(ratio) * kRadToDeg);
+            rPh.push_back(std::arg(ratio) * kDegPerRad);
         }
     }
     m_bode->addResponse(model, tr("two-inertia model"), QColor(200, 60, 0), Qt::DashLine);
@@ -448,8 +448,8 @@ void TwoInertiaFilterPage::update()
     double maxWithout = 0.0, maxWith = 0.0;
     std::vector<double> a, b;
     for (std::size_t i = 0; i < m_d.loadError.tS.size(); ++i) {
-        a.push_back(m_d.loadError.withoutFilter[i] * kRadToDeg);
-        b.push_back(m_d.loadError.withFilter[i] * kRadToDeg);
+        a.push_back(m_d.loadError.withoutFilter[i] * kDegPerRad);
+        b.push_back(m_d.loadError.withFilter[i] * kDegPerRad);
         maxWithout = std::max(maxWithout, std::abs(a.back()));
         maxWith = std::max(maxWith, std::abs(b.back()));
     }
@@ -555,7 +555,7 @@ std::vector<double> degrees(const std::vector<double>& rad)
     std::vector<double> out;
     out.reserve(rad.size());
     for (double v : rad)
-        out.push_back(v * kRadToDeg);
+        out.push_back(v * kDegPerRad);
     return out;
 }
 
@@ -629,21 +629,21 @@ void TwoInertiaVerifyPage::initializePage()
     m_d.idealMaxTwist = tuning::predictLoadError(params, semi, m_d.profile).maxErrorWithoutFilter;
     QString text = tr("Maximum load error y_L − y* of the profile: measured with the filter %1°; predicted (ideal "
                       "motor tracking) %2° without and %3° with the filter.")
-                       .arg(m_d.loadAfter.maxAbs * kRadToDeg, 0, 'f', 3)
-                       .arg(m_d.predictedLoadWithout * kRadToDeg, 0, 'f', 3)
-                       .arg(m_d.predictedLoadWith * kRadToDeg, 0, 'f', 3);
+                       .arg(m_d.loadAfter.maxAbs * kDegPerRad, 0, 'f', 3)
+                       .arg(m_d.predictedLoadWithout * kDegPerRad, 0, 'f', 3)
+                       .arg(m_d.predictedLoadWith * kDegPerRad, 0, 'f', 3);
     if (m_d.beforeJog)
-        text += " " + tr("Measured before the change: %1° (ratio with/before %2).")
-                          .arg(m_d.loadBefore.maxAbs * kRadToDeg, 0, 'f', 3)
-                          .arg(m_d.loadBefore.maxAbs > 0.0 ? m_d.loadAfter.maxAbs / m_d.loadBefore.maxAbs : 0.0, 0,
-                               'f', 3);
+        text +=
+            " " + tr("Measured before the change: %1° (ratio with/before %2).")
+                      .arg(m_d.loadBefore.maxAbs * kDegPerRad, 0, 'f', 3)
+                      .arg(m_d.loadBefore.maxAbs > 0.0 ? m_d.loadAfter.maxAbs / m_d.loadBefore.maxAbs : 0.0, 0, 'f', 3);
     if (m_d.predictedLoadWithout > 0.0)
         text += " " + tr("Measured with the filter / predicted without: %1 (the thesis reached 0.086, its criterion "
                          "for a working filter is at most 0.2).")
                           .arg(m_d.loadAfter.maxAbs / m_d.predictedLoadWithout, 0, 'f', 3);
     text += "\n" + tr("Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°.")
-                       .arg(m_d.measuredMaxTwist * kRadToDeg, 0, 'f', 3)
-                       .arg(m_d.predictedMaxTwist * kRadToDeg, 0, 'f', 3);
+                       .arg(m_d.measuredMaxTwist * kDegPerRad, 0, 'f', 3)
+                       .arg(m_d.predictedMaxTwist * kDegPerRad, 0, 'f', 3);
     m_result->setText(text);
 }
 

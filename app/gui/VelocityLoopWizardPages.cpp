@@ -3,9 +3,10 @@
 // source and rule, design with prediction, verification. Method: spec/lost-motion-and-two-inertia.md
 // §2.8 (corrected 5.13), TI-5 §4.12 (margins), §4.11 (position gain).
 #include "app/gui/AppContext.h"
-#include "app/gui/WidgetUtil.h"
 #include "app/gui/VelocityLoopWizard.h"
+#include "app/gui/WidgetUtil.h"
 #include "app/gui/WizardPages.h"
+#include "core/model/Constants.h"
 #include "core/store/FrfCapture.h"
 #include "core/tuning/TwoInertiaPrediction.h"
 #include "widgets/BodePlot.h"
@@ -35,7 +36,7 @@ namespace gui {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 constexpr double kPositionGainMarginDb = 6.0;
 
 void addRow(QTableWidget* t, const QString& a, const QString& b, const QString& c)

@@ -7,11 +7,13 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/ParameterInspector.h"
 #include "app/gui/SettingsDialog.h"
+#include "core/io/AtomicFile.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
 #include <QLocale>
+#include <QPixmap>
 #include <QSettings>
 #include <QTimer>
 
@@ -62,7 +64,12 @@ int main(int argc, char** argv)
                 return;
             timer->stop();
             QApplication::processEvents();
-            const bool ok = w.grab().save(file);
+            const QPixmap shotPixmap = w.grab();
+            const bool ok = axistune::io::writeFileAtomicVia(file.toStdString(), [&](const std::string& tmp) {
+                                return shotPixmap.save(QString::fromStdString(tmp), "PNG")
+                                           ? axistune::Status::success()
+                                           : axistune::makeError(axistune::ErrorCode::Io, "the PNG writer failed");
+                            }).ok();
             delete clock;
             QApplication::exit(ok && ready ? 0 : 1);
         });

@@ -2,12 +2,12 @@
 // axistune-simdrive: serves a simulated machine over Modbus TCP on 127.0.0.1 (docs/modbus.md).
 #include "app/simdrive/RegisterMapTemplate.h"
 #include "core/device/SimDriveServer.h"
+#include "core/io/AtomicFile.h"
 
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <csignal>
 #include <ctime>
-#include <fstream>
 #include <iostream>
 
 namespace {
@@ -61,9 +61,11 @@ int main(int argc, char** argv)
         return app.exit(e) == 0 ? 0 : 2;
     }
     if (!writeMap.empty()) {
-        std::ofstream f(writeMap);
-        f << simdrive::simRegisterMapJson();
-        return f ? 0 : 1;
+        if (auto st = io::writeFileAtomic(writeMap, simdrive::simRegisterMapJson()); !st) {
+            std::cerr << "axistune-simdrive: " << st.error().detail << "\n";
+            return exitCodeFor(st.error().code);
+        }
+        return 0;
     }
     auto fi = device::parseFaultModes(faults);
     if (!fi) {

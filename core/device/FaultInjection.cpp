@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/device/FaultInjection.h"
 
+#include "core/model/Number.h"
+
 #include <cmath>
 #include <cstdlib>
 
@@ -11,11 +13,10 @@ constexpr const char* kForms = "drop-after:N (1..100000), delay:MS (1..10000), i
 
 bool parseNumber(const std::string& s, double& out)
 {
-    if (s.empty())
-        return false;
-    char* end = nullptr;
-    out = std::strtod(s.c_str(), &end);
-    return end && *end == '\0' && std::isfinite(out);
+    const auto v = model::parseNumber(s);
+    if (v)
+        out = *v;
+    return v.has_value();
 }
 
 } // namespace

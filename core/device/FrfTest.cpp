@@ -10,22 +10,20 @@
 #include "core/dsp/Excitation.h"
 #include "core/dsp/InjectionHold.h"
 #include "core/dsp/Welch.h"
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::device {
 namespace {
 
 std::string num(double v)
 {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
+    return model::formatNumber(v, 10);
 }
 
 /// The frequency of the window grid nearest to f: f' = (p + c)·fs/M with M ≥ mMin, p ≥ pMin.
@@ -75,17 +73,17 @@ struct HoldPeriods {
 };
 Result<HoldPeriods> holdPeriods(const FrfPlan& plan, const model::Capture& trace)
 {
-    auto meta = [&trace](const char* key) {
-        auto it = trace.metadata.find(key);
-        if (it == trace.metadata.end())
-            return 0.0;
-        char* end = nullptr;
-        const double v = std::strtod(it->second.c_str(), &end);
-        return end && *end == '\0' && std::isfinite(v) ? v : 0.0;
-    };
-    HoldPeriods p;
-    p.currentS = plan.currentPeriodS > 0.0 ? plan.currentPeriodS : meta("current_period_s");
-    p.velocityS = plan.velocityPeriodS > 0.0 ? plan.velocityPeriodS : meta("velocity_period_s");
+    // A period the plan does not know comes from the trace; a missing one is refused below.
+    HoldPeriods p{plan.currentPeriodS, plan.velocityPeriodS};
+    for (auto [key, value] :
+         {std::pair{"current_period_s", &p.currentS}, std::pair{"velocity_period_s", &p.velocityS}}) {
+        if (*value > 0.0)
+            continue;
+        const auto v = model::optionalMetadataNumber(trace.metadata, key);
+        if (!v)
+            return makeError(ErrorCode::BadInput, "FRF trace: " + v.error().detail);
+        *value = v->value_or(0.0);
+    }
     if (!(p.currentS > 0.0) || !(p.velocityS > 0.0))
         return makeError(ErrorCode::BadInput, "FRF trace: the injection-hold correction needs the current and velocity "
                                               "periods (trace metadata current_period_s, velocity_period_s)");
@@ -266,7 +264,7 @@ double frfExcitation(const FrfPlan& plan, double s)
     if (it == plan.segments.end())
         return 0.0;
     const double cycles = std::fmod(it->freqHz * (s - static_cast<double>(it->windowStart)) / plan.fsHz, 1.0);
-    return plan.amplitudeNm * std::sin(2.0 * std::numbers::pi * cycles + it->phaseOffsetDeg * std::numbers::pi / 180.0);
+    return plan.amplitudeNm * std::sin(model::kTwoPi * cycles + it->phaseOffsetDeg * model::kRadPerDeg);
 }
 
 Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace)

@@ -3,6 +3,7 @@
 #include "core/device/ModbusDrive.h"
 
 #include "core/device/MultisineTest.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -76,26 +77,19 @@ Result<ModbusUri> parseModbusUri(const std::string& uri)
     if (colon == std::string::npos || colon == 0)
         return bad("host and port are required");
     u.host = rest.substr(0, colon);
-    try {
-        std::size_t used = 0;
-        u.port = std::stoi(rest.substr(colon + 1), &used);
-        if (used != rest.size() - colon - 1 || u.port < 1 || u.port > 65535)
-            return bad("port must be a number in 1..65535");
-    } catch (const std::exception&) {
+    const auto port = model::parseInteger(rest.substr(colon + 1));
+    if (!port || *port < 1 || *port > 65535)
         return bad("port must be a number in 1..65535");
-    }
+    u.port = static_cast<int>(*port);
     std::stringstream qs(query);
     for (std::string kv; std::getline(qs, kv, '&');) {
         const auto eq = kv.find('=');
         const std::string k = kv.substr(0, eq), v = eq == std::string::npos ? "" : kv.substr(eq + 1);
         if (k == "timeout_ms") {
-            try {
-                u.timeoutMs = std::stoi(v);
-            } catch (const std::exception&) {
-                u.timeoutMs = -1;
-            }
-            if (u.timeoutMs < 10 || u.timeoutMs > 60000)
+            const auto ms = model::parseInteger(v);
+            if (!ms || *ms < 10 || *ms > 60000)
                 return bad("timeout_ms must lie in 10..60000");
+            u.timeoutMs = static_cast<int>(*ms);
         } else if (k == "map" && !v.empty()) {
             u.family = v;
         } else {

@@ -2,10 +2,10 @@
 // Paged readout of the Modbus drive: trace channels, texts and the FRF through the trace window
 // (function code 23: select and read in one round trip); format in docs/modbus.md.
 #include "core/device/ModbusDrive.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <modbus/modbus.h>
 #include <sstream>
@@ -68,14 +68,15 @@ Result<model::Capture> ModbusDrive::readTrace()
     }
     // The trace's rate: the velocity-loop divider or, for a current step, the current-loop rate.
     if (!cap.metadata.count("fs_Hz") && rateHz > 0.0) {
-        char buf[40];
-        std::snprintf(buf, sizeof buf, "%.17g", rateHz);
-        cap.metadata["fs_Hz"] = buf;
+        model::setMetadataNumber(cap.metadata, "fs_Hz", rateHz);
     } else if (cap.metadata.count("fs_Hz")) {
-        const double meta = std::strtod(cap.metadata["fs_Hz"].c_str(), nullptr);
-        if (!(std::abs(meta - rateHz) <= 1e-9 * std::abs(rateHz)))
+        const auto meta = model::metadataNumber(cap.metadata, "fs_Hz");
+        if (!meta)
+            return makeError(ErrorCode::Device, m_uri.text + ": trace " + meta.error().detail);
+        if (!(std::abs(*meta - rateHz) <= 1e-9 * std::abs(rateHz)))
             return makeError(ErrorCode::Device, m_uri.text + ": trace metadata says fs_Hz=" + cap.metadata["fs_Hz"] +
-                                                    " but status.trace_rate_hz is " + std::to_string(rateHz) + " Hz");
+                                                    " but status.trace_rate_hz is " + model::formatNumber(rateHz, 17) +
+                                                    " Hz");
     }
     if (static_cast<int>(cap.channels.size()) != channels)
         return makeError(ErrorCode::Device, m_uri.text + ": trace lists " + std::to_string(cap.channels.size()) +

@@ -6,20 +6,17 @@
 #include "core/device/MultisineTest.h"
 
 #include "core/dsp/InjectionHold.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace axistune::device {
 namespace {
 
 std::string num(double v)
 {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
+    return model::formatNumber(v, 10);
 }
 
 } // namespace

@@ -4,20 +4,23 @@
 // one SimulatedDrive per server, one unit id per axis, several clients at once, and the safety of a
 // real drive around it (amplitude, travel, speed and following-error limits, heartbeat watchdog,
 // no parameter write during a test, range checks answered with ILLEGAL DATA VALUE).
-// Single-threaded: serve() runs the network loop and the simulation; requestStop() may be called
-// from a signal handler or another thread.
+// Single-threaded: serve() runs the network loop (poll(), non-blocking sockets, every frame checked
+// before anything changes; docs/modbus.md "Under abuse") and the simulation; requestStop() may be
+// called from a signal handler or another thread.
 
 #include "core/device/FaultInjection.h"
 #include "core/device/RegisterMap.h"
 #include "core/device/SimulatedDrive.h"
 
-#include <atomic>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -57,14 +60,20 @@ public:
     Status serve();
     void requestStop() { m_stop.store(true); }
 
-    /// Answers every request read from the connected stream socket `fd` until the peer closes it or a
-    /// frame is malformed, as serve() does for one client (SimDriveServerStream.cpp). For in-process
-    /// tests and the Modbus fuzz target (raw bytes through a socketpair); `fd` stays open.
-    void serveStream(int fd);
+    /// Answers every complete frame of one client's byte stream in order (answer() and a simulation
+    /// step each), as serve() does for one connection, and stops at the first incomplete or invalid
+    /// frame (SimDriveServerStream.cpp). For the Modbus fuzz target. Returns the frames answered.
+    std::size_t serveBytes(std::span<const std::uint8_t> bytes);
 
     // The register engine (SimDriveServerRegisters.cpp); returns 0 or a Modbus exception code.
+    // A refused write changes nothing (registers, test configuration, heartbeat, trace selection).
     int readRegisters(int unitId, int address, int count, std::uint16_t* out);
     int writeRegisters(int unitId, int address, const std::uint16_t* values, int count);
+
+    /// One complete Modbus TCP frame (as delimited by scanMbapFrame) in, its answer out: decoded and
+    /// checked (ModbusTcpFrame.h), executed, encoded. `peer` names the client in the log. Public for
+    /// tests and fuzzing; serve() uses it for every frame.
+    std::vector<std::uint8_t> answer(std::span<const std::uint8_t> frame, const std::string& peer = "test");
 
 private:
     struct Axis {
@@ -89,8 +98,11 @@ private:
 
     SimDriveServer() = default;
     void log(const std::string& line) const;
-    /// Decodes one request (function codes 3, 6, 16, 23), runs it through the register engine, answers.
-    void reply(const std::uint8_t* query, int length);
+    int writeRegistersChecked(int ui, int address, const std::uint16_t* values, int count, bool& commandRan);
+    /// A refused write that touched test-block fields (test.*, circle.*) of unit index `ui`: they are
+    /// marked refused, and start_test is refused until each has been written again successfully.
+    void markRefusedConfig(int ui, int address, int count, const std::string& why);
+    Status listen(int port); ///< 127.0.0.1:port, non-blocking (SimDriveServerConnections.cpp)
     Status loadState();
     void saveState() const;
     // Simulation and safety (SimDriveServerSafety.cpp).
@@ -127,6 +139,9 @@ private:
     std::vector<Slot> m_slots;
 
     std::vector<TestConfig> m_config; ///< per unit
+    /// Per unit: test-block fields whose last write was refused (name → why); start_test refuses
+    /// while this is not empty.
+    std::vector<std::map<std::string, std::string>> m_refusedConfig;
     std::string m_state = "idle";
     std::string m_fault = "none";
     std::string m_message;
@@ -149,8 +164,6 @@ private:
 
     int m_port = 0;
     int m_listenFd = -1;
-    void* m_ctx = nullptr;     ///< modbus_t*
-    void* m_mapping = nullptr; ///< modbus_mapping_t*, the reply buffer
     std::atomic<bool> m_stop{false};
 };
 

@@ -2,7 +2,9 @@
 // The register engine of axistune-simdrive: field values encoded on read, writes validated as a
 // whole before anything changes, commands deduplicated by their sequence token (docs/modbus.md).
 #include "core/device/SimDriveServer.h"
+#include "core/model/Number.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -134,8 +136,9 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
     if (n == "status.trace_channels")
         return u16(m_trace ? static_cast<int>(m_trace->channels.size()) : 0);
     if (n == "status.trace_rate_hz") {
-        const double fs = m_trace && m_trace->metadata.count("fs_Hz") ? std::stod(m_trace->metadata.at("fs_Hz")) : 0.0;
-        return encodeF64(fs, o, buf);
+        // 0 when there is no trace (or its rate is unreadable): the client then refuses the trace.
+        const auto fs = m_trace ? model::metadataNumber(m_trace->metadata, "fs_Hz") : Result<double>(0.0);
+        return encodeF64(fs ? *fs : 0.0, o, buf);
     }
     if (n == "status.message")
         return text(m_message);
@@ -296,13 +299,55 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
     return 0;
 }
 
+void SimDriveServer::markRefusedConfig(int ui, int address, int count, const std::string& why)
+{
+    auto& refused = m_refusedConfig[static_cast<std::size_t>(ui)];
+    for (int a = std::max(0, address); a < address + count && a < static_cast<int>(m_owner.size()); ++a) {
+        const int si = m_owner[static_cast<std::size_t>(a)];
+        if (si < 0 || !m_slots[static_cast<std::size_t>(si)].field)
+            continue;
+        const std::string& n = m_slots[static_cast<std::size_t>(si)].field->name;
+        if (n.rfind("test.", 0) == 0 || n.rfind("circle.", 0) == 0)
+            refused[n] = why;
+    }
+}
+
 int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t* values, int count)
 {
     const int ui = unitId - m_map.unitIdBase;
     if (ui < 0 || ui >= static_cast<int>(m_axes.size()))
         return refuse(MODBUS_EXCEPTION_GATEWAY_TARGET, "no axis on unit id " + std::to_string(unitId));
-    if (address < 0 || address + count > static_cast<int>(m_owner.size()))
+    if (address < 0 || count < 1 || address + count > static_cast<int>(m_owner.size()))
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "registers beyond 65535");
+    // A write is all or nothing: what a refused write may have touched is put back.
+    const TestConfig config = m_config[static_cast<std::size_t>(ui)];
+    const auto heartbeat = m_heartbeat;
+    const auto lastHeartbeat = m_lastHeartbeat;
+    const auto selOffset = m_selOffset;
+    const auto selChannel = m_selChannel;
+    bool commandRan = false;
+    const int ex = writeRegistersChecked(ui, address, values, count, commandRan);
+    if (ex && !commandRan) {
+        m_config[static_cast<std::size_t>(ui)] = config;
+        m_heartbeat = heartbeat;
+        m_lastHeartbeat = lastHeartbeat;
+        m_selOffset = selOffset;
+        m_selChannel = selChannel;
+        markRefusedConfig(ui, address, count, m_message);
+    } else if (!ex || commandRan) {
+        // Fields written successfully are no longer refused.
+        auto& refused = m_refusedConfig[static_cast<std::size_t>(ui)];
+        for (int a = address; a < address + count && !refused.empty(); ++a) {
+            const int si = m_owner[static_cast<std::size_t>(a)];
+            if (si >= 0 && m_slots[static_cast<std::size_t>(si)].field)
+                refused.erase(m_slots[static_cast<std::size_t>(si)].field->name);
+        }
+    }
+    return ex;
+}
+
+int SimDriveServer::writeRegistersChecked(int ui, int address, const std::uint16_t* values, int count, bool& commandRan)
+{
     const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
     // First pass: every touched field must be written whole and be valid; nothing changes on an error.
     std::vector<const Slot*> slots;
@@ -360,6 +405,7 @@ int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t*
     }
     if (command) {
         const std::uint16_t* w = values + (command->address - address);
+        commandRan = true;
         return runCommand(ui, w[0], w[1]);
     }
     return 0;

@@ -4,6 +4,7 @@
 // excitation in % of rated torque, following error); heartbeat watchdog. A trip stops the motion and
 // restores the pre-test parameters (SimulatedDrive::abortTest).
 #include "core/device/SimDriveServer.h"
+#include "core/model/Constants.h"
 #include "core/model/Units.h"
 
 #include <cmath>
@@ -25,6 +26,19 @@ int SimDriveServer::startTest(int ui)
     const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
     const SafetyLimits& lim = m_opt.safety;
     const std::string type = m_map.name("test_type", c.type);
+    // A test never runs on a block the drive refused (it would run on what was there before); the
+    // circle block counts for circle tests only.
+    std::string refusedFields, refusedWhy;
+    for (const auto& [name, why] : m_refusedConfig[static_cast<std::size_t>(ui)]) {
+        if (name.rfind("circle.", 0) == 0 && type != "circle")
+            continue;
+        refusedFields += (refusedFields.empty() ? "" : ", ") + name;
+        refusedWhy = why;
+    }
+    if (!refusedFields.empty())
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test configuration refused earlier (" + refusedFields +
+                                                               ": " + refusedWhy +
+                                                               "); write a valid test block before start_test");
     TestRequest req;
     req.axis = ax.name;
     req.amplitude = c.amplitude;
@@ -57,13 +71,15 @@ int SimDriveServer::startTest(int ui)
         // The drive's own excitation limit in % of rated torque holds for the current step too; the
         // embedded drive adds its limits (fraction of max current, record length, speed reached).
         req.type = TestType::CurrentStep;
-        const double ratedTorque = ax.sim->parameter("motor.rated_current") * ax.sim->parameter("motor.torque_constant");
+        const double ratedTorque =
+            model::ratedTorqueNm(ax.sim->parameter("motor.rated_current"), ax.sim->parameter("motor.torque_constant"));
         const double torque = std::abs(c.amplitude) * ax.sim->parameter("motor.torque_constant");
-        if (!(torque <= lim.amplitudeLimitPct / 100.0 * ratedTorque))
+        const double torqueLimit = model::torqueNmFromRatedPct(lim.amplitudeLimitPct, ratedTorque);
+        if (!(torque <= torqueLimit))
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
-                          "current step " + num(c.amplitude) + " A means " + num(torque) + " Nm, above the drive's limit " +
-                              num(lim.amplitudeLimitPct) + " % of the rated torque (" +
-                              num(lim.amplitudeLimitPct / 100.0 * ratedTorque) + " Nm)");
+                          "current step " + num(c.amplitude) + " A means " + num(torque) +
+                              " Nm, above the drive's limit " + num(lim.amplitudeLimitPct) +
+                              " % of the rated torque (" + num(torqueLimit) + " Nm)");
     } else if (type == "frf") {
         req.type = TestType::Frf;
         const std::string method = m_map.name("frf_method", c.frfMethod);
@@ -134,8 +150,9 @@ void SimDriveServer::checkSafety()
     const sim::AxisSimulator& s = *ax.sim;
     const std::string u = ax.kind == "linear" ? " m" : " rad";
     const double machineS = s.time() - m_testStartMachineS;
-    const double ratedTorque = s.parameter("motor.rated_current") * s.parameter("motor.torque_constant");
-    const double torqueLimit = lim.amplitudeLimitPct / 100.0 * ratedTorque;
+    const double ratedTorque =
+        model::ratedTorqueNm(s.parameter("motor.rated_current"), s.parameter("motor.torque_constant"));
+    const double torqueLimit = model::torqueNmFromRatedPct(lim.amplitudeLimitPct, ratedTorque);
     const bool fullClosed = s.parameter("position.feedback") > 0.5;
     const std::string type = m_map.name("test_type", m_config[static_cast<std::size_t>(m_testUnit)].type);
     const bool positionTest = type == "jog" || type == "hold" || type == "circle"; // the position loop is closed only there

@@ -1,25 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// One client's byte stream through the server's request handling, without the network loop.
+// One client's byte stream through the server's request handling, without the network loop (fuzzing).
+#include "core/device/ModbusTcpFrame.h"
 #include "core/device/SimDriveServer.h"
-
-#include <modbus/modbus.h>
-#include <vector>
 
 namespace axistune::device {
 
-void SimDriveServer::serveStream(int fd)
+std::size_t SimDriveServer::serveBytes(std::span<const std::uint8_t> bytes)
 {
-    modbus_t* ctx = static_cast<modbus_t*>(m_ctx);
-    std::vector<std::uint8_t> query(MODBUS_TCP_MAX_ADU_LENGTH);
-    modbus_set_socket(ctx, fd);
-    while (true) {
-        const int rc = modbus_receive(ctx, query.data());
-        if (rc <= 0)
+    std::size_t at = 0;
+    std::size_t frames = 0;
+    while (at < bytes.size()) {
+        const auto scan = scanMbapFrame(bytes.subspan(at));
+        // NeedMore: the stream ended inside a frame; Invalid: serve() closes such a connection.
+        if (scan.status != FrameScan::Complete)
             break;
-        reply(query.data(), rc);
+        (void)answer(bytes.subspan(at, scan.length), "stream");
         step();
+        at += scan.length;
+        ++frames;
     }
-    modbus_set_socket(ctx, -1);
+    return frames;
 }
 
 } // namespace axistune::device

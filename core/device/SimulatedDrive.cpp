@@ -3,13 +3,14 @@
 // §1.2, §2.3 stepped with the velocity loop open; docs/simulator.md "Current-step test".
 #include "core/device/SimulatedDrive.h"
 
-#include "core/model/Units.h"
-
 #include "core/device/ModbusDrive.h"
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
+#include "core/model/Units.h"
+#include "core/sim/IdentifiedPlant.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -27,13 +28,68 @@ const char* testStateName(TestState s)
     return "?";
 }
 
+namespace {
+
+// "model=PATH[&axis=NAME]": the identified rigid-body model of `axistune-cli identify` as the
+// plant of one axis (docs/identification.md "Using the result"). The axis may be left out when the
+// machine has one axis of the model's kind.
+Status applySimQuery(sim::MachineDefinition& def, const std::string& query)
+{
+    std::string modelPath, axisName;
+    std::size_t start = 0;
+    while (start <= query.size()) {
+        const auto amp = query.find('&', start);
+        const std::string item = query.substr(start, amp == std::string::npos ? std::string::npos : amp - start);
+        const auto eq = item.find('=');
+        const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+        if (key == "model" && !value.empty())
+            modelPath = value;
+        else if (key == "axis" && !value.empty())
+            axisName = value;
+        else
+            return makeError(ErrorCode::BadInput,
+                             "unknown or empty option '" + item + "' (expected model=PATH and axis=NAME)");
+        if (amp == std::string::npos)
+            break;
+        start = amp + 1;
+    }
+    if (modelPath.empty())
+        return makeError(ErrorCode::BadInput, "axis=NAME needs model=PATH");
+    auto m = ident::readIdentifiedModelFile(modelPath);
+    if (!m)
+        return m.error();
+    const auto kind = m->motion == ident::AxisMotion::Linear ? sim::AxisKind::Linear : sim::AxisKind::Rotary;
+    sim::AxisDefinition* target = nullptr;
+    int candidates = 0;
+    for (auto& a : def.axes) {
+        if (axisName.empty() ? a.kind == kind : a.name == axisName) {
+            target = &a;
+            ++candidates;
+        }
+    }
+    if (target == nullptr)
+        return makeError(ErrorCode::NotFound, axisName.empty() ? "no axis of the model's kind on machine " + def.name
+                                                               : "no axis '" + axisName + "' on machine " + def.name);
+    if (candidates > 1)
+        return makeError(ErrorCode::BadInput, "machine " + def.name + " has several such axes: give axis=NAME");
+    return sim::applyIdentifiedModel(*target, *m, modelPath);
+}
+
+} // namespace
+
 Result<std::unique_ptr<Drive>> connect(const ConnectionSettings& settings)
 {
     const std::string prefix = "sim:";
     if (settings.uri.rfind(prefix, 0) == 0) {
-        auto def = sim::loadPreset(settings.uri.substr(prefix.size()));
+        const std::string rest = settings.uri.substr(prefix.size());
+        const auto q = rest.find('?');
+        auto def = sim::loadPreset(rest.substr(0, q));
         if (!def)
             return makeError(def.error().code, "connection '" + settings.uri + "': " + def.error().detail);
+        if (q != std::string::npos) {
+            if (auto st = applySimQuery(def.value(), rest.substr(q + 1)); !st)
+                return makeError(st.error().code, "connection '" + settings.uri + "': " + st.error().detail);
+        }
         auto d = SimulatedDrive::create(*def, settings.seed);
         if (!d)
             return d.error();
@@ -294,12 +350,12 @@ Result<FrfMeasurement> SimulatedDrive::readFrequencyResponse()
 Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestRequest& r)
 {
     const auto& v = sim.parameters();
-    const double rated = v.at("motor.rated_current") * v.at("motor.torque_constant");
+    const double rated = model::ratedTorqueNm(v.at("motor.rated_current"), v.at("motor.torque_constant"));
     if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0) || r.amplitudePct > kMaxFrfAmplitudePct) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "FRF amplitude %g %% of rated torque refused: it must lie in (0, %g] %% (rated torque %.4g Nm)",
-                      r.amplitudePct, kMaxFrfAmplitudePct, rated);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange, "FRF amplitude " + model::formatNumber(r.amplitudePct, 6) +
+                                                    " % of rated torque refused: it must lie in (0, " +
+                                                    model::formatNumber(kMaxFrfAmplitudePct, 6) + "] % (rated torque " +
+                                                    model::formatNumber(rated, 4) + " Nm)");
     }
     if (!(r.settleS >= 0.0) || !(r.minMeasureS >= 0.0))
         return makeError(ErrorCode::OutOfRange, "FRF settle and measure times must not be negative");
@@ -315,14 +371,14 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     if (r.minMeasureS > 0.0)
         timing.minMeasureS = r.minMeasureS;
     if (r.frfMethod == FrfMethod::Multisine)
-        return startMultisine(sim, r, r.amplitudePct / 100.0 * rated, timing);
+        return startMultisine(sim, r, model::torqueNmFromRatedPct(r.amplitudePct, rated), timing);
     FrfPlanOptions po;
     po.method = r.frfMethod;
     po.fsHz = 1.0 / sim.tracePeriod();
     po.fminHz = r.fminHz;
     po.fmaxHz = r.fmaxHz;
     po.points = r.points;
-    po.amplitudeNm = r.amplitudePct / 100.0 * rated;
+    po.amplitudeNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
     po.timing = timing;
     po.voltageLimitV = v.at("drive.max_voltage");
     auto plan = planFrfTest(po);
@@ -412,37 +468,33 @@ Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const T
     const auto& v = sim.parameters();
     const double iMax = v.at("motor.max_current"), kt = v.at("motor.torque_constant"), j = v.at("plant.inertia_motor");
     const double limitA = kMaxCurrentStepFraction * iMax;
-    char buf[320];
+    const auto g = [](double x) { return model::formatNumber(x, 6); }; // printf's %g
     if (!std::isfinite(r.amplitude) || r.amplitude == 0.0 || std::abs(r.amplitude) > limitA) {
-        std::snprintf(buf, sizeof buf,
-                      "current step %g A refused: it must be finite, non-zero and at most %g %% of motor.max_current "
-                      "(%g A)",
-                      r.amplitude, 100.0 * kMaxCurrentStepFraction, limitA);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange,
+                         "current step " + g(r.amplitude) + " A refused: it must be finite, non-zero and at most " +
+                             g(100.0 * kMaxCurrentStepFraction) + " % of motor.max_current (" + g(limitA) + " A)");
     }
     if (!std::isfinite(r.durationS) || !(r.durationS > 0.0) || r.durationS > kMaxCurrentStepS) {
-        std::snprintf(buf, sizeof buf, "current-step recording %g s refused: it must lie in (0, %g] s", r.durationS,
-                      kMaxCurrentStepS);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
+                                                    " s refused: it must lie in (0, " + g(kMaxCurrentStepS) + "] s");
     }
     const double h = sim.currentPeriod();
     const auto ticks = std::llround(r.durationS / h);
     const auto preTicks = std::max<long long>(1, std::llround(0.1 * r.durationS / h));
     if (ticks < preTicks + 2) {
-        std::snprintf(buf, sizeof buf, "current-step recording %g s refused: shorter than a few current periods (%g s)",
-                      r.durationS, h);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
+                                                    " s refused: shorter than a few current periods (" + g(h) + " s)");
     }
     // With the velocity loop open the motor accelerates freely: k_t·|I|·t / J_m at the end of the record, with
     // the rotor inertia alone (a motor datum; the coupled load can only make it slower).
     const double stepS = static_cast<double>(ticks - preTicks) * h;
     const double speed = j > 0.0 ? kt * std::abs(r.amplitude) * stepS / j : std::numeric_limits<double>::infinity();
     if (!(speed <= kMaxCurrentStepSpeedRadS)) {
-        std::snprintf(buf, sizeof buf,
-                      "current step %g A for %g s refused: the motor would reach about %.3g rad/s (k_t·I·t/J_m with the "
-                      "rotor inertia J_m %g kg·m²), above the %g rad/s a current step may reach; lower or shorten it",
-                      r.amplitude, stepS, speed, j, kMaxCurrentStepSpeedRadS);
-        return makeError(ErrorCode::OutOfRange, buf);
+        return makeError(ErrorCode::OutOfRange,
+                         "current step " + g(r.amplitude) + " A for " + g(stepS) +
+                             " s refused: the motor would reach about " + model::formatNumber(speed, 3) +
+                             " rad/s (k_t·I·t/J_m with the rotor inertia J_m " + g(j) + " kg·m²), above the " +
+                             g(kMaxCurrentStepSpeedRadS) + " rad/s a current step may reach; lower or shorten it");
     }
     // The record starts on a whole current tick; the step comes preTicks later and holds to the end.
     const double t0 = sim.time();
@@ -453,8 +505,7 @@ Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const T
     sim.startTrace(sim::TraceRate::Current);
     m_clampsAtStart = sim.voltageClampCount();
     m_recordEnd = t0 + static_cast<double>(ticks) * h;
-    std::snprintf(buf, sizeof buf, "%.17g", tStep);
-    m_stepStart = buf;
+    m_stepStart = model::formatNumber(tStep, 17);
     return static_cast<double>(ticks) * h + kCurrentStepHoldS;
 }
 
@@ -464,9 +515,7 @@ void SimulatedDrive::endCurrentStepRecord()
     m_trace = m_active->takeTrace();
     m_trace->metadata["test"] = "current_step";
     m_trace->metadata["step_start_s"] = m_stepStart;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", m_request ? m_request->amplitude : 0.0);
-    m_trace->metadata["step_amplitude_A"] = buf;
+    model::setMetadataNumber(m_trace->metadata, "step_amplitude_A", m_request ? m_request->amplitude : 0.0);
     m_trace->metadata["voltage_clamped_ticks"] = std::to_string(m_active->voltageClampCount() - m_clampsAtStart);
     m_active->setCurrentCommand({});
     m_active->holdPosition();

@@ -4,6 +4,8 @@
 // Xilinx XAPP052) and linear/exponential chirps (phase as the integral of the instantaneous frequency).
 #include "core/dsp/Excitation.h"
 
+#include "core/model/Constants.h"
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -67,7 +69,7 @@ double sineStreamValue(const SineStreamSegment& s, double amplitude, std::int64_
     // Phase reduced modulo one period in integer arithmetic would need rational f/fs; fmod of the
     // product keeps the argument small enough for full double accuracy at practical lengths.
     const double cycles = std::fmod(s.freqHz * static_cast<double>(k) / fsHz, 1.0);
-    return amplitude * std::sin(2.0 * std::numbers::pi * cycles + s.phaseOffsetDeg * std::numbers::pi / 180.0);
+    return amplitude * std::sin(model::kTwoPi * cycles + s.phaseOffsetDeg * model::kRadPerDeg);
 }
 
 std::size_t sineStreamLength(const std::vector<SineStreamSegment>& plan)

@@ -2,6 +2,8 @@
 // Frequency-response data type and Bode helpers (magnitude in dB, phase in degrees, unwrapping).
 #include "core/dsp/FrequencyResponse.h"
 
+#include "core/model/Constants.h"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -26,7 +28,7 @@ double magnitudeDb(std::complex<double> h)
 
 double phaseDeg(std::complex<double> h)
 {
-    const double p = std::arg(h) * 180.0 / std::numbers::pi;
+    const double p = std::arg(h) * model::kDegPerRad;
     return p == -180.0 ? 180.0 : p;
 }
 

@@ -4,10 +4,11 @@
 // derivation in docs/frequency-response-sim.md, "Injection hold").
 #include "core/dsp/InjectionHold.h"
 
+#include "core/model/Number.h"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::dsp {
 
@@ -50,11 +51,8 @@ Status correctInjectionHold(FrequencyResponse& frf, double currentPeriodS, int t
             frf.valid[i] = false;
         }
     }
-    std::ostringstream h;
-    h.precision(10);
-    h << currentPeriodS;
     frf.metadata["injection_hold_corrected"] = "true";
-    frf.metadata["injection_hold_period_s"] = h.str();
+    frf.metadata["injection_hold_period_s"] = model::formatNumber(currentPeriodS, 10);
     frf.metadata["injection_hold_ticks"] = std::to_string(ticksPerVelocity);
     return Status::success();
 }

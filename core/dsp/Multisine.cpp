@@ -9,27 +9,25 @@
 #include "core/dsp/Multisine.h"
 
 #include "core/dsp/Fft.h"
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <set>
-#include <sstream>
 
 namespace axistune::dsp {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 constexpr std::size_t kMaxWindow = std::size_t{1} << 20;
 constexpr std::size_t kMaxLines = 20000;
 
 std::string num(double v)
 {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
+    return model::formatNumber(v, 10);
 }
 
 /// X[m] = Σ_t x[t] e^{−2πimt/n} for all n bins, from two real FFTs (FFTW plans cached, dsp::RealFft).

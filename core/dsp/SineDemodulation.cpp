@@ -5,22 +5,24 @@
 // and (3.28) print the inverse ratio; the spec's correction is followed).
 #include "core/dsp/SineDemodulation.h"
 
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::dsp {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 // Σ y[i]·cos(ω k + ψ) and Σ y[i]·sin(ω k + ψ) with k = first + i, the angle reduced in cycles first
 // so that long windows keep full accuracy.
 void correlate(const SweepSamples& s, double cyclesPerSample, double& sc, double& ss)
 {
-    const double psi = s.phaseOffsetDeg * kDeg;
+    const double psi = s.phaseOffsetDeg * kRadPerDeg;
     for (std::size_t i = 0; i < s.y.size(); ++i) {
         const double k = static_cast<double>(s.firstSample + static_cast<std::int64_t>(i));
         const double c = std::fmod(cyclesPerSample * k, 1.0);
@@ -131,10 +133,7 @@ Result<FrequencyResponse> sineStreamFrf(const SweepRecording& rec)
         frf.push(f, dy->phasor() / dx->phasor(), std::nan(""), dy->valid);
     }
     frf.metadata["method"] = anyMulti && anyConventional ? "sine-stream-mixed" : anyMulti ? "multisweep" : "conventional";
-    std::ostringstream fs;
-    fs.precision(17);
-    fs << rec.fsHz;
-    frf.metadata["fs_Hz"] = fs.str();
+    model::setMetadataNumber(frf.metadata, "fs_Hz", rec.fsHz);
     return frf;
 }
 

@@ -3,14 +3,14 @@
 #include "core/io/BallBarCsv.h"
 
 #include "core/io/TextFile.h"
+#include "core/model/Constants.h"
 #include "core/model/InputLimits.h"
+#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <fstream>
-#include <iomanip>
 #include <limits>
 #include <numbers>
 #include <set>
@@ -19,7 +19,7 @@
 namespace axistune::io {
 namespace {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 std::string trim(std::string s)
 {
@@ -41,15 +41,10 @@ std::optional<double> parseNumber(const std::string& text)
     const std::string t = trim(text);
     if (t.empty())
         return std::nullopt;
-    double v = 0.0;
-    const char* first = t.data();
-    const char* last = t.data() + t.size();
-    if (*first == '+')
-        ++first;
-    auto [ptr, ec] = std::from_chars(first, last, v);
-    if (ec != std::errc() || ptr != last || model::isDenormal(v))
+    const auto x = model::parseNumber(t, true);
+    if (!x || model::isDenormal(*x))
         return std::nullopt;
-    return v;
+    return x;
 }
 
 struct MetaLine {
@@ -154,11 +149,10 @@ template <typename LineOf> Status checkSamples(const BallBarTrace& t, const std:
     const double sign = t.angleRad[1] > t.angleRad[0] ? 1.0 : -1.0;
     for (std::size_t i = 1; i < t.size(); ++i) {
         if (sign * (t.angleRad[i] - t.angleRad[i - 1]) <= 0.0) {
-            std::ostringstream os;
-            os << src << lineOf(i) << ", column 'angle_deg': angles must be strictly "
-               << (sign > 0 ? "increasing" : "decreasing") << " (" << t.angleRad[i - 1] / kDegToRad << " then "
-               << t.angleRad[i] / kDegToRad << ")";
-            return bad(os.str());
+            return bad(src + lineOf(i) + ", column 'angle_deg': angles must be strictly " +
+                       (sign > 0 ? "increasing" : "decreasing") + " (" +
+                       model::formatNumber(t.angleRad[i - 1] / kRadPerDeg, 6) + " then " +
+                       model::formatNumber(t.angleRad[i] / kRadPerDeg, 6) + ")");
         }
     }
     return Status::success();
@@ -228,7 +222,7 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
                 return bad(where + ", column '" + kCols[c] + "': not a finite number ('" + fields[c] + "')");
             v[c] = *n;
         }
-        t.angleRad.push_back(v[0] * kDegToRad);
+        t.angleRad.push_back(v[0] * kRadPerDeg);
         t.deviationM.push_back(v[1] * 1e-6);
         sampleLines.push_back(lineNo);
     }
@@ -263,17 +257,17 @@ Status writeBallBarCsv(std::ostream& out, const BallBarTrace& t)
     auto lineOf = [](std::size_t i) { return " sample " + std::to_string(i); };
     if (auto s = checkSamples(t, src, lineOf); !s)
         return s;
-    out << std::setprecision(17);
-    out << "# radius_mm=" << t.radiusM * 1e3 << '\n';
-    out << "# feed_mm_min=" << t.feedMPerS * 60.0e3 << '\n';
+    const auto g = [](double v) { return model::formatNumber(v, 17); };
+    out << "# radius_mm=" << g(t.radiusM * 1e3) << '\n';
+    out << "# feed_mm_min=" << g(t.feedMPerS * 60.0e3) << '\n';
     out << "# direction=" << (t.direction == CircleDirection::Ccw ? "ccw" : "cw") << '\n';
     out << "# plane=" << t.plane << '\n';
-    out << "# center_x_mm=" << t.centerXM * 1e3 << '\n';
-    out << "# center_y_mm=" << t.centerYM * 1e3 << '\n';
+    out << "# center_x_mm=" << g(t.centerXM * 1e3) << '\n';
+    out << "# center_y_mm=" << g(t.centerYM * 1e3) << '\n';
     if (t.dTxNm)
-        out << "# dT_x_Nm=" << *t.dTxNm << '\n';
+        out << "# dT_x_Nm=" << g(*t.dTxNm) << '\n';
     if (t.dTyNm)
-        out << "# dT_y_Nm=" << *t.dTyNm << '\n';
+        out << "# dT_y_Nm=" << g(*t.dTyNm) << '\n';
     static const std::set<std::string> kWritten{"radius_mm",   "feed_mm_min", "direction", "plane",
                                                 "center_x_mm", "center_y_mm", "dT_x_Nm",   "dT_y_Nm"};
     for (const auto& [k, v] : t.metadata) {
@@ -282,7 +276,7 @@ Status writeBallBarCsv(std::ostream& out, const BallBarTrace& t)
     }
     out << "angle_deg,deviation_um\n";
     for (std::size_t i = 0; i < t.size(); ++i)
-        out << t.angleRad[i] / kDegToRad << ',' << t.deviationM[i] * 1e6 << '\n';
+        out << g(t.angleRad[i] / kRadPerDeg) << ',' << g(t.deviationM[i] * 1e6) << '\n';
     if (!out)
         return makeError(ErrorCode::Io, src + ": write failed");
     return Status::success();

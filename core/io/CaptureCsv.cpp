@@ -4,12 +4,10 @@
 
 #include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
+#include "core/model/Number.h"
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
-#include <iomanip>
-#include <sstream>
 
 namespace axistune::io {
 namespace {
@@ -42,14 +40,11 @@ std::vector<std::string> splitComma(const std::string& line)
 
 bool parseDouble(std::string_view s, double& v)
 {
-    if (s.empty())
+    const auto x = model::parseNumber(s, true);
+    if (!x || model::isDenormal(*x))
         return false;
-    const char* b = s.data();
-    const char* e = s.data() + s.size();
-    if (*b == '+')
-        ++b;
-    auto [p, ec] = std::from_chars(b, e, v);
-    return ec == std::errc() && p == e && !model::isDenormal(v);
+    v = *x;
+    return true;
 }
 
 }  // namespace
@@ -143,13 +138,11 @@ Status writeCaptureCsv(std::ostream& out, const model::Capture& capture)
     for (std::size_t i = 0; i < capture.channels.size(); ++i)
         out << (i ? "," : "") << capture.channels[i].name;
     out << '\n';
-    char buf[32];
     for (std::size_t r = 0; r < n; ++r) {
         for (std::size_t i = 0; i < capture.channels.size(); ++i) {
-            auto [p, ec] = std::to_chars(buf, buf + sizeof buf, capture.channels[i].data[r]);
             if (i)
                 out << ',';
-            out.write(buf, p - buf);
+            out << model::formatShortest(capture.channels[i].data[r]);
         }
         out << '\n';
     }

@@ -4,8 +4,10 @@
 
 #include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
+#include "core/model/Units.h"
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -38,21 +40,16 @@ std::vector<std::string> splitCsvLine(const std::string& line)
 
 bool parseDouble(const std::string& cell, double& value)
 {
-    if (cell.empty())
+    const auto v = model::parseNumber(cell, true);
+    if (!v || model::isDenormal(*v))
         return false;
-    const char* b = cell.data();
-    const char* e = b + cell.size();
-    if (*b == '+')
-        ++b;
-    const auto r = std::from_chars(b, e, value);
-    return r.ec == std::errc() && r.ptr == e && !model::isDenormal(value);
+    value = *v;
+    return true;
 }
 
 std::string formatDouble(double v)
 {
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
+    return model::formatShortest(v);
 }
 
 bool parseMetadataLine(const std::string& line, std::string& key, std::string& value)
@@ -187,7 +184,7 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
                 return s.error();
             if (auto s = number(*cols->phaseDeg, "phase_deg", deg); !s)
                 return s.error();
-            h = std::polar(std::pow(10.0, db / 20.0), deg * std::numbers::pi / 180.0);
+            h = std::polar(std::pow(10.0, db / 20.0), deg * model::kRadPerDeg);
             if (!std::isfinite(h.real()) || !std::isfinite(h.imag()))
                 return makeError(ErrorCode::OutOfRange, where(sourceName, lineNo, "mag_dB") + ": " +
                                                             cells[*cols->magDb] + " dB does not fit a double");
@@ -215,7 +212,28 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
         return makeError(ErrorCode::BadInput, sourceName + ": no header line (expected " + kFrfCsvHeader + ")");
     if (frf.empty())
         return makeError(ErrorCode::BadInput, sourceName + ": no data rows");
+    if (auto it = frf.metadata.find("units"); it != frf.metadata.end()) {
+        const std::string unit = it->second;
+        if (auto st = convertFrfUnits(frf, unit, sourceName); !st)
+            return st.error();
+    }
     return frf;
+}
+
+Status convertFrfUnits(dsp::FrequencyResponse& frf, const std::string& unit, const std::string& sourceName)
+{
+    auto u = model::findUnit(unit);
+    if (!u) {
+        return makeError(ErrorCode::BadInput, sourceName + ": units '" + unit
+                                                  + "' is not a known unit (m/N, mm/N, um/N, nm/N, m/s/N, mm/s/N, m/s2/N, "
+                                                    "mm/s2/N, g/N, ...: docs/formats.md)");
+    }
+    for (auto& h : frf.h)
+        h *= u->toSi;
+    frf.metadata["units"] = std::string(u->si);
+    if (u->si != unit)
+        frf.metadata["units_in_file"] = unit;
+    return {};
 }
 
 Result<dsp::FrequencyResponse> readFrfCsvFile(const std::string& path)

@@ -7,6 +7,9 @@
 // too (the complex value is rebuilt from them). coherence and valid columns are optional (missing →
 // undefined / 1). Frequencies must be finite, non-negative and strictly increasing.
 // Errors name the source, the line and the column.
+// A "# units=<token>" line (m/N, um/N, mm/N, m/s/N, m/s2/N, g/N, ... : docs/formats.md) gives the unit of h;
+// the reader converts h to SI, sets units to the SI token and keeps the file's token in units_in_file. An
+// unknown token is refused. Without the key h is taken as it is (files written before the key existed).
 
 #include "core/dsp/FrequencyResponse.h"
 #include "core/model/Result.h"
@@ -24,6 +27,10 @@ inline constexpr const char* kFrfCsvHeader = "f_Hz,re,im,mag_dB,phase_deg,cohere
 /// Reads an FRF. `sourceName` is used in error messages (usually the file path).
 Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& sourceName);
 Result<dsp::FrequencyResponse> readFrfCsvFile(const std::string& path);
+
+/// Converts h from `unit` to SI (metadata units=<SI token>, units_in_file=<unit> when they differ);
+/// BadInput naming `sourceName` for an unknown unit.
+Status convertFrfUnits(dsp::FrequencyResponse& frf, const std::string& unit, const std::string& sourceName);
 
 /// Writes metadata lines, the header and the rows (17 significant digits, '.' decimal point).
 Status writeFrfCsv(std::ostream& out, const dsp::FrequencyResponse& frf);

@@ -3,6 +3,7 @@
 #include "core/io/NcExport.h"
 
 #include "core/model/InputLimits.h"
+#include "core/model/Number.h"
 #include "core/model/Units.h"
 
 #include <cmath>
@@ -106,9 +107,7 @@ Result<NcMapEntry> entryFromJson(const nlohmann::json& e, const std::string& whe
 
 std::string siText(double v)
 {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.9g", v);
-    return buf;
+    return model::formatNumber(v, 9);
 }
 
 }  // namespace
@@ -218,21 +217,18 @@ Result<std::string> formatNcValue(const NcMapEntry& entry, double valueSi)
     const double v = *converted * entry.scale;
     if (!std::isfinite(v))
         return makeError(ErrorCode::OutOfRange, "parameter '" + entry.key + "': NC value is not finite");
-    char buf[64];
     if (entry.decimals == 0) {
         const double r = std::round(v);
         if (std::fabs(r) > 2147483647.0)
             return makeError(ErrorCode::OutOfRange, "parameter '" + entry.key + "' = " + siText(valueSi) + " " + entry.siUnit
                                                         + " gives NC value " + siText(v) + ", outside a 32-bit integer");
-        std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(r));
-    } else {
-        std::snprintf(buf, sizeof buf, "%.*f", entry.decimals, v);
-        // "-0.000" is not a value an NC operator expects to read.
-        std::string s(buf);
-        if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos)
-            return s.substr(1);
+        return std::to_string(static_cast<long long>(r)); // an integer: no decimal point, no grouping
     }
-    return std::string(buf);
+    // "-0.000" is not a value an NC operator expects to read.
+    std::string s = model::formatFixed(v, entry.decimals);
+    if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos)
+        return s.substr(1);
+    return s;
 }
 
 std::string defaultNcMapPath(const std::string& family)

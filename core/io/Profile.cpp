@@ -3,6 +3,7 @@
 #include "core/io/Profile.h"
 
 #include "core/model/InputLimits.h"
+#include "core/model/Number.h"
 
 #include <charconv>
 #include <cmath>
@@ -45,14 +46,11 @@ std::vector<std::string> splitComma(const std::string& line)
 
 bool parseDouble(const std::string& s, double& v)
 {
-    if (s.empty())
+    const auto x = model::parseNumber(s);
+    if (!x || model::isDenormal(*x))
         return false;
-    const char* b = s.data();
-    const char* e = s.data() + s.size();
-    if (*b == '+')
-        ++b;
-    auto [p, ec] = std::from_chars(b, e, v);
-    return ec == std::errc() && p == e && std::isfinite(v) && !model::isDenormal(v);
+    v = *x;
+    return true;
 }
 
 Result<AxisProfile> axisFromJson(const nlohmann::json& a, const std::string& where)
@@ -198,25 +196,6 @@ Result<std::string> readTextFile(const std::string& path)
     return model::readInputFile(path);
 }
 
-Status writeTextFileAtomic(const std::string& path, const std::string& text)
-{
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f)
-            return makeError(ErrorCode::Io, path + ": cannot be opened for writing");
-        f << text;
-        f.flush();
-        if (!f)
-            return makeError(ErrorCode::Io, path + ": write failed");
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec)
-        return makeError(ErrorCode::Io, path + ": cannot replace the file (" + ec.message() + ")");
-    return Status::success();
-}
-
 Result<MachineProfile> readProfileFile(const std::string& path)
 {
     auto text = readTextFile(path);
@@ -241,9 +220,7 @@ std::string parametersToCsv(const MachineProfile& profile)
     os << "machine,axis,key,value\n";
     for (const auto& a : profile.axes) {
         for (const auto& [k, v] : a.parameters) {
-            char buf[40];
-            std::snprintf(buf, sizeof buf, "%.17g", v);
-            os << profile.name << ',' << a.name << ',' << k << ',' << buf << '\n';
+            os << profile.name << ',' << a.name << ',' << k << ',' << model::formatNumber(v, 17) << '\n';
         }
     }
     return os.str();

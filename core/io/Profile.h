@@ -5,6 +5,7 @@
 // The JSON form is documented in docs/formats-profile.md; the CSV parameter list is the flat
 // "machine,axis,key,value" form used by `axistune-cli export --format csv`.
 
+#include "core/io/AtomicFile.h"
 #include "core/model/Parameter.h"
 #include "core/model/Result.h"
 
@@ -55,7 +56,6 @@ Result<MachineProfile> parametersFromCsv(const std::string& text, const std::str
 
 /// Reads a whole file into a string; NotFound/Io errors name the path.
 Result<std::string> readTextFile(const std::string& path);
-/// Writes atomically: to "path.tmp", flushed, then renamed over `path`.
-Status writeTextFileAtomic(const std::string& path, const std::string& text);
+// writeTextFileAtomic: core/io/AtomicFile.h (included above).
 
 }  // namespace axistune::io

@@ -5,6 +5,7 @@
 #include "core/io/FrfCsv.h"
 #include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
+#include "core/model/Number.h"
 
 #include <charconv>
 #include <cmath>
@@ -105,15 +106,17 @@ Result<dsp::SweepRecording> readSweepCsv(std::istream& in, const std::string& sr
         return makeError(ErrorCode::BadInput, src + ": no header line (expected " + kSweepCsvHeader + ")");
     if (rec.blocks.empty())
         return makeError(ErrorCode::BadInput, src + ": no data rows");
-    auto fs = rec.metadata.find("fs_Hz");
-    if (fs == rec.metadata.end())
-        return makeError(ErrorCode::BadInput, src + ": missing metadata line '# fs_Hz=...'");
-    if (!detail::parseDouble(fs->second, rec.fsHz) || !(rec.fsHz > 0.0) || !std::isfinite(rec.fsHz))
-        return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz: not a positive number ('" + fs->second + "')");
-    if (auto a = rec.metadata.find("amplitude"); a != rec.metadata.end()) {
-        if (!detail::parseDouble(a->second, rec.amplitude) || !std::isfinite(rec.amplitude))
-            return makeError(ErrorCode::BadInput, src + ": metadata amplitude: " + model::badNumberText(a->second));
-    }
+    const auto fs = model::metadataNumber(rec.metadata, "fs_Hz");
+    if (!fs)
+        return makeError(ErrorCode::BadInput, src + ": " + fs.error().detail);
+    if (!(*fs > 0.0) || model::isDenormal(*fs))
+        return makeError(ErrorCode::BadInput,
+                         src + ": metadata 'fs_Hz' is not a positive number ('" + rec.metadata.at("fs_Hz") + "')");
+    rec.fsHz = *fs;
+    const auto amplitude = model::optionalMetadataNumber(rec.metadata, "amplitude");
+    if (!amplitude)
+        return makeError(ErrorCode::BadInput, src + ": " + amplitude.error().detail);
+    rec.amplitude = amplitude->value_or(rec.amplitude);
     return rec;
 }
 

@@ -44,8 +44,9 @@ Result<std::vector<ModalParameters>> modes(const json& j, const std::string& key
     if (!j.contains(key))
         return makeError(ErrorCode::BadInput, src + ": missing key '" + key + "'");
     const auto& arr = j.at(key);
-    if (!arr.is_array() || arr.empty())
-        return makeError(ErrorCode::BadInput, src + ", key '" + key + "': must be a non-empty list of modes");
+    if (!arr.is_array())
+        return makeError(ErrorCode::BadInput,
+                         src + ", key '" + key + "': must be a list of modes ([] for a rigid direction)");
     std::vector<ModalParameters> out;
     for (std::size_t i = 0; i < arr.size(); ++i) {
         const std::string where = src + ", " + key + "[" + std::to_string(i) + "]";

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Modal fit of a tool-tip receptance FRF (issue 10 item 1). Model: the independent-mode receptance of
-// spec/chatter-stability-and-spindle-speed.md §1.3, G(jω) = Σ 1/(k − mω² + jcω).
-// 1. Peak picking: the largest interior local maximum of −Im H gives ω_n; the half-power points of |H|
-//    around it give ζ = (ω₂ − ω₁)/(2ω_n); at resonance −Im H = 1/(c ω_n) gives c; m = c/(2ζω_n), k = mω_n².
-//    The mode is subtracted and the next peak is picked from the remainder.
-// 2. Levenberg–Marquardt (Marquardt's diagonal scaling) on r_i = H_model(ω_i)/H_i − 1 (real and imaginary
-//    parts) over p = log(m, c, k); analytic Jacobian dG/dk = −G², dG/dm = ω²G², dG/dc = −jωG².
+// Modal fit of a tool-tip receptance FRF (issue 10 item 1, issue 19 item 1). Model: the independent-mode
+// receptance of spec/chatter-stability-and-spindle-speed.md §1.3, G(jω) = Σ (ω_n²/k)/(ω_n² − ω² + 2jζω_nω)
+// (= 1/(k − mω² + jcω) with m = k/ω_n², c = 2ζ√(km)), plus residual terms R_u − L/ω² (Ewins, Modal
+// Testing, §4.4: the modes above the band act as a constant compliance, those below as a mass line).
+// Why not the relative error: on a measured FRF |H| spans three decades between the resonances and the
+// anti-resonances and the noise floor; weighting by 1/|H| makes the fit chase those (issue 19). The
+// absolute error weighted by √|H| keeps the resonances, which decide the limit depth, in charge.
 #include "core/machining/ToolModeFit.h"
 
-#include <Eigen/Dense>
+#include "core/model/Units.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <numbers>
 #include <string>
 
@@ -21,204 +21,309 @@ namespace axistune::machining {
 namespace {
 
 using cd = std::complex<double>;
+using model::formatNumber;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Peak detection and the gate; docs/machining.md lists them.
+constexpr double kMinPeakFraction = 0.05;          // a peak for an explicit mode count: ≥ 5 % of the largest −Im H
+constexpr double kSignificantPeakFraction = 0.25;  // a peak counted automatically: ≥ 25 %
+constexpr double kMaxPeakZeta = 0.25;              // half-power bandwidth of a resonance: ζ ≤ 0.25
+constexpr double kBandHalfWidths = 3.0;            // automatic band: 3 half-power half-widths beyond the peaks
+constexpr double kZetaMin = 1e-4, kZetaMax = 0.25; // plausible fitted damping ratios
+constexpr double kMinModePeakFraction = 0.05;      // a fitted mode's peak ≥ 5 % of the largest |H| in the band
+constexpr double kMaxLocalResidual = 0.35;         // ‖G − H‖/‖H‖ within f_n(1 ± ζ)
 
 struct Points {
-    std::vector<double> w;   // rad/s
-    std::vector<cd> h;       // m/N
+    std::vector<double> f; // Hz
+    std::vector<cd> h;     // m/N
 };
 
-// Largest interior local maximum of y (strictly greater than the left neighbour, not less than the right,
-// at least `floor`, and not masked); -1 if none.
-int largestPeak(const std::vector<double>& y, const std::vector<bool>& masked, double floor)
+Points collect(const dsp::FrequencyResponse& frf, double lo, double hi)
 {
-    int best = -1;
-    for (std::size_t i = 1; i + 1 < y.size(); ++i) {
-        if (masked[i] || !(y[i] > 0.0) || y[i] < floor || !(y[i] > y[i - 1]) || !(y[i] >= y[i + 1]))
+    Points p;
+    for (std::size_t i = 0; i < frf.size() && i < frf.h.size(); ++i) {
+        const bool isValid = i < frf.valid.size() ? frf.valid[i] : true;
+        const double f = frf.freqHz[i];
+        const cd h = frf.h[i];
+        if (!isValid || !(f > 0.0) || f < lo || f > hi || !std::isfinite(h.real()) || !std::isfinite(h.imag()) ||
+            h == 0.0)
             continue;
-        if (best < 0 || y[i] > y[static_cast<std::size_t>(best)])
-            best = static_cast<int>(i);
+        p.f.push_back(f);
+        p.h.push_back(h);
     }
-    return best;
+    return p;
 }
 
-// Frequency where |r| falls to level, searching from index i0 in direction dir; linear interpolation.
-// Returns NaN if the edge of the data is reached first.
-double halfPowerCrossing(const Points& p, const std::vector<cd>& r, int i0, int dir, double level)
+std::vector<double> movingAverage(const std::vector<double>& y, std::size_t half)
 {
-    for (int i = i0; i + dir >= 0 && i + dir < static_cast<int>(r.size()); i += dir) {
-        const double a = std::abs(r[static_cast<std::size_t>(i)]);
-        const double b = std::abs(r[static_cast<std::size_t>(i + dir)]);
-        if (b <= level) {
+    std::vector<double> out(y.size());
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        const std::size_t a = i >= half ? i - half : 0;
+        const std::size_t b = std::min(y.size() - 1, i + half);
+        double s = 0.0;
+        for (std::size_t j = a; j <= b; ++j)
+            s += y[j];
+        out[i] = s / static_cast<double>(b - a + 1);
+    }
+    return out;
+}
+
+// Frequency where mag falls below level walking from i0 in direction dir (linear interpolation); NaN at the edge.
+double crossing(const std::vector<double>& f, const std::vector<double>& mag, std::size_t i0, int dir, double level)
+{
+    for (auto i = static_cast<long>(i0); i + dir >= 0 && i + dir < static_cast<long>(mag.size()); i += dir) {
+        const double a = mag[static_cast<std::size_t>(i)];
+        const double b = mag[static_cast<std::size_t>(i + dir)];
+        if (b < level) {
             const double t = (a - level) / (a - b);
-            const double wa = p.w[static_cast<std::size_t>(i)];
-            const double wb = p.w[static_cast<std::size_t>(i + dir)];
-            return wa + t * (wb - wa);
+            return f[static_cast<std::size_t>(i)] +
+                   t * (f[static_cast<std::size_t>(i + dir)] - f[static_cast<std::size_t>(i)]);
         }
     }
     return std::numeric_limits<double>::quiet_NaN();
 }
 
-// A further mode must peak at ≥ kMinPeakFraction of the first mode's −Im H and outside
-// ω_j·(1 ± kExclusionZetas·ζ_j) of every mode found so far (what remains there is the start-value error).
-constexpr double kMinPeakFraction = 0.05;
-constexpr double kExclusionZetas = 5.0;
+struct Candidate {
+    ResonancePeak peak;
+    std::size_t index = 0;
+    double mag = 0.0; // smoothed |H| at the peak
+};
 
-Result<ModalParameters> pickMode(const Points& p, const std::vector<cd>& remainder, const std::vector<ModalParameters>& found,
-                                 double firstPeak)
+std::vector<ResonancePeak> peaksOf(const Points& p)
 {
-    std::vector<double> negIm(remainder.size());
-    std::vector<bool> masked(remainder.size(), false);
-    for (std::size_t i = 0; i < remainder.size(); ++i) {
-        negIm[i] = -remainder[i].imag();
-        for (const auto& m : found) {
-            const double wn = std::sqrt(m.stiffnessNPerM / m.massKg);
-            if (std::abs(p.w[i] - wn) <= kExclusionZetas * dampingRatio(m) * wn)
-                masked[i] = true;
-        }
-    }
-    const int ip = largestPeak(negIm, masked, kMinPeakFraction * firstPeak);
-    if (ip < 0)
-        return makeError(ErrorCode::BadInput,
-                         "tool FRF: no resonance peak for mode " + std::to_string(found.size() + 1)
-                             + (found.empty() ? std::string(" (no local maximum of -Im H inside the band)")
-                                              : std::string(" (no further local maximum of -Im H above 5 % of the first peak)")));
-    const auto i = static_cast<std::size_t>(ip);
-    // Parabolic interpolation of the peak frequency on a log-frequency axis.
-    double wn = p.w[i];
-    {
-        const double y0 = negIm[i - 1], y1 = negIm[i], y2 = negIm[i + 1];
-        const double den = y0 - 2.0 * y1 + y2;
-        if (den < 0.0) {
-            const double d = std::clamp(0.5 * (y0 - y2) / den, -0.5, 0.5);
-            const double l1 = std::log(p.w[i]);
-            const double step = d >= 0 ? std::log(p.w[i + 1]) - l1 : l1 - std::log(p.w[i - 1]);
-            wn = std::exp(l1 + d * step);
-        }
-    }
-    const double peakIm = negIm[i];
-    const double level = std::abs(remainder[i]) / std::sqrt(2.0);
-    const double w1 = halfPowerCrossing(p, remainder, ip, -1, level);
-    const double w2 = halfPowerCrossing(p, remainder, ip, +1, level);
-    double zeta = 0.02;  // fallback when a half-power point lies outside the band
-    if (std::isfinite(w1) && std::isfinite(w2) && w2 > w1)
-        zeta = (w2 - w1) / (2.0 * wn);
-    else if (std::isfinite(w1))
-        zeta = (wn - w1) / wn;
-    else if (std::isfinite(w2))
-        zeta = (w2 - wn) / wn;
-    zeta = std::clamp(zeta, 1e-4, 0.5);
-    ModalParameters m;
-    m.dampingNsPerM = 1.0 / (wn * peakIm);
-    m.massKg = m.dampingNsPerM / (2.0 * zeta * wn);
-    m.stiffnessNPerM = m.massKg * wn * wn;
-    return m;
-}
-
-cd modeG(const ModalParameters& m, double w)
-{
-    return 1.0 / cd(m.stiffnessNPerM - m.massKg * w * w, m.dampingNsPerM * w);
-}
-
-std::vector<ModalParameters> fromParams(const Eigen::VectorXd& x)
-{
-    std::vector<ModalParameters> modes(static_cast<std::size_t>(x.size() / 3));
-    for (std::size_t j = 0; j < modes.size(); ++j) {
-        const auto o = static_cast<Eigen::Index>(3 * j);
-        modes[j] = {std::exp(x[o]), std::exp(x[o + 1]), std::exp(x[o + 2])};
-    }
-    return modes;
-}
-
-// Residual vector (re, im interleaved) and optionally its Jacobian in log-parameters.
-void evaluate(const Points& p, const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* J)
-{
-    const auto modes = fromParams(x);
-    const auto n = p.w.size();
-    r.resize(static_cast<Eigen::Index>(2 * n));
-    if (J)
-        J->resize(static_cast<Eigen::Index>(2 * n), x.size());
+    const std::size_t n = p.f.size();
+    if (n < 5)
+        return {};
+    std::vector<double> negIm(n), mag(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const double w = p.w[i];
-        const cd inv = 1.0 / p.h[i];
-        cd sum = 0.0;
-        for (std::size_t j = 0; j < modes.size(); ++j) {
-            const cd g = modeG(modes[j], w);
-            sum += g;
-            if (J) {
-                const cd g2 = g * g * inv;
-                const cd dm = w * w * g2 * modes[j].massKg;
-                const cd dc = cd(0.0, -w) * g2 * modes[j].dampingNsPerM;
-                const cd dk = -g2 * modes[j].stiffnessNPerM;
-                const auto row = static_cast<Eigen::Index>(2 * i);
-                const auto col = static_cast<Eigen::Index>(3 * j);
-                (*J)(row, col) = dm.real();
-                (*J)(row + 1, col) = dm.imag();
-                (*J)(row, col + 1) = dc.real();
-                (*J)(row + 1, col + 1) = dc.imag();
-                (*J)(row, col + 2) = dk.real();
-                (*J)(row + 1, col + 2) = dk.imag();
+        negIm[i] = -p.h[i].imag();
+        mag[i] = std::abs(p.h[i]);
+    }
+    const std::size_t half = std::max<std::size_t>(1, n / 1000);
+    const auto sNegIm = movingAverage(negIm, half);
+    const auto sMag = movingAverage(mag, half);
+    std::vector<Candidate> cands;
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        if (!(sNegIm[i] > 0.0) || !(sNegIm[i] > sNegIm[i - 1]) || !(sNegIm[i] >= sNegIm[i + 1]))
+            continue;
+        const double level = sMag[i] / std::sqrt(2.0);
+        const double f1 = crossing(p.f, sMag, i, -1, level);
+        const double f2 = crossing(p.f, sMag, i, +1, level);
+        if (!std::isfinite(f1) || !std::isfinite(f2) || (f2 - f1) / (2.0 * p.f[i]) > kMaxPeakZeta)
+            continue; // not resolved inside the data, or too wide to be a resonance
+        // the raw −Im maximum near the smoothed one
+        std::size_t ip = i;
+        for (std::size_t j = i >= half ? i - half : 0; j <= std::min(n - 1, i + half); ++j)
+            if (negIm[j] > negIm[ip])
+                ip = j;
+        Candidate c;
+        c.peak = {p.f[ip], f1, f2, negIm[ip], 0.5 * (f2 - f1)};
+        c.index = i;
+        c.mag = sMag[i];
+        cands.push_back(c);
+    }
+    if (cands.empty())
+        return {};
+    double largest = 0.0;
+    for (const auto& c : cands)
+        largest = std::max(largest, c.peak.negIm);
+    std::erase_if(cands, [&](const Candidate& c) { return c.peak.negIm < kMinPeakFraction * largest; });
+    // Merge neighbours that the |H| between them does not separate by a half-power dip.
+    std::vector<Candidate> merged;
+    for (const auto& c : cands) {
+        if (!merged.empty()) {
+            auto& last = merged.back();
+            double dip = std::numeric_limits<double>::infinity();
+            for (std::size_t j = last.index; j <= c.index; ++j)
+                dip = std::min(dip, sMag[j]);
+            if (dip >= std::min(last.mag, c.mag) / std::sqrt(2.0)) {
+                ResonancePeak joined = c.peak.negIm > last.peak.negIm ? c.peak : last.peak;
+                joined.lowHz = std::min(last.peak.lowHz, c.peak.lowHz);
+                joined.highHz = std::max(last.peak.highHz, c.peak.highHz);
+                const bool takeNew = c.peak.negIm > last.peak.negIm;
+                last.peak = joined;
+                if (takeNew) {
+                    last.index = c.index;
+                    last.mag = c.mag;
+                }
+                continue;
             }
         }
-        const cd res = sum * inv - 1.0;
-        r[static_cast<Eigen::Index>(2 * i)] = res.real();
-        r[static_cast<Eigen::Index>(2 * i + 1)] = res.imag();
+        merged.push_back(c);
     }
+    std::vector<ResonancePeak> out;
+    for (const auto& c : merged)
+        out.push_back(c.peak);
+    std::sort(out.begin(), out.end(), [](const ResonancePeak& a, const ResonancePeak& b) { return a.negIm > b.negIm; });
+    return out;
 }
 
-}  // namespace
+// Parameters: per mode ln ω_n, q (ζ = 0.5/(1+e^−q)), ln k; then the residual terms a, b, c (scaled):
+// R = S·(a + jb) − S·c·(ω_ref/ω)².
+struct Model {
+    int modes = 0;
+    bool residuals = false;
+    double scale = 1.0; // S [m/N]
+    double omegaRef = 1.0;
+
+    static double zetaOf(double q) { return 0.5 / (1.0 + std::exp(-q)); }
+
+    cd eval(const Eigen::VectorXd& x, double w) const
+    {
+        cd g = 0.0;
+        for (int j = 0; j < modes; ++j) {
+            const double wn = std::exp(x[3 * j]);
+            const double z = zetaOf(x[3 * j + 1]);
+            const double k = std::exp(x[3 * j + 2]);
+            g += (wn * wn / k) / cd(wn * wn - w * w, 2.0 * z * wn * w);
+        }
+        if (residuals) {
+            const auto o = 3 * modes;
+            g += scale * cd(x[o], x[o + 1]) - scale * x[o + 2] * (omegaRef / w) * (omegaRef / w);
+        }
+        return g;
+    }
+};
+
+ModalParameters toModal(double wn, double zeta, double k)
+{
+    const double m = k / (wn * wn);
+    return {m, 2.0 * zeta * std::sqrt(k * m), k};
+}
+
+std::string hz(double f)
+{
+    return formatNumber(f, 5) + " Hz";
+}
+
+} // namespace
+
+std::vector<ResonancePeak> findResonancePeaks(const dsp::FrequencyResponse& frf, double minHz, double maxHz)
+{
+    const double lo = std::isnan(minHz) ? 0.0 : minHz;
+    const double hi = std::isnan(maxHz) ? std::numeric_limits<double>::infinity() : maxHz;
+    return peaksOf(collect(frf, lo, hi));
+}
+
+std::complex<double> fittedCompliance(const ToolModeFitResult& fit, double omegaRadS)
+{
+    return compliance(fit.modes, omegaRadS) + fit.upperResidual - fit.lowerResidual / (omegaRadS * omegaRadS);
+}
 
 Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const ToolModeFitOptions& options)
 {
-    if (options.modes < 1)
-        return makeError(ErrorCode::OutOfRange, "tool FRF fit: modes must be >= 1 (got " + std::to_string(options.modes) + ")");
-    Points p;
-    for (std::size_t i = 0; i < frf.size(); ++i) {
-        const bool isValid = i < frf.valid.size() ? frf.valid[i] : true;
-        const double f = frf.freqHz[i];
-        if (!isValid || !(f > 0.0) || f < options.minHz || f > options.maxHz || i >= frf.h.size())
-            continue;
-        const cd h = frf.h[i];
-        if (!std::isfinite(h.real()) || !std::isfinite(h.imag()) || h == 0.0)
-            continue;
-        p.w.push_back(2.0 * std::numbers::pi * f);
-        p.h.push_back(h);
-    }
-    const auto nParams = static_cast<std::size_t>(3 * options.modes);
-    if (p.w.size() < nParams + 1)
-        return makeError(ErrorCode::BadInput, "tool FRF: " + std::to_string(p.w.size()) + " valid points in the band, "
-                                                  + std::to_string(nParams + 1) + " needed for " + std::to_string(options.modes)
-                                                  + " mode(s)");
+    if (options.modes < 0 || options.modes > 20)
+        return makeError(ErrorCode::OutOfRange,
+                         "tool FRF fit: modes must be 0 (automatic) to 20 (got " + std::to_string(options.modes) + ")");
+    const bool automatic = std::isnan(options.minHz) && std::isnan(options.maxHz);
+    const double lo = std::isnan(options.minHz) ? 0.0 : options.minHz;
+    const double hi = std::isnan(options.maxHz) ? std::numeric_limits<double>::infinity() : options.maxHz;
+    if (!(hi > lo))
+        return makeError(ErrorCode::OutOfRange,
+                         "tool FRF fit: the band's upper edge must be above its lower edge (got " +
+                             formatNumber(lo, 6) + " to " + formatNumber(hi, 6) + " Hz)");
+    const Points all = collect(frf, lo, hi);
+    const std::size_t minPoints = static_cast<std::size_t>(3 * std::max(options.modes, 1) + 1);
+    if (all.f.size() < minPoints)
+        return makeError(ErrorCode::BadInput, "tool FRF: " + std::to_string(all.f.size()) +
+                                                  " valid points in the band, " + std::to_string(minPoints) +
+                                                  " needed for " + std::to_string(std::max(options.modes, 1)) +
+                                                  " mode(s)");
 
+    // 1. Peaks and the number of modes.
+    auto peaks = peaksOf(all);
+    if (peaks.empty())
+        return makeError(ErrorCode::BadInput, "tool FRF: no resonance peak for mode 1 (no maximum of -Im H with both "
+                                              "half-power points inside " +
+                                                  hz(all.f.front()) + " to " + hz(all.f.back()) + ")");
+    if (options.modes > 0) {
+        if (static_cast<int>(peaks.size()) < options.modes)
+            return makeError(ErrorCode::BadInput, "tool FRF: no resonance peak for mode " +
+                                                      std::to_string(peaks.size() + 1) + " (only " +
+                                                      std::to_string(peaks.size()) +
+                                                      " resonance peak(s) above 5 % of the largest -Im H between " +
+                                                      hz(all.f.front()) + " and " + hz(all.f.back()) + ")");
+        peaks.resize(static_cast<std::size_t>(options.modes));
+    } else {
+        const double largest = peaks.front().negIm;
+        std::erase_if(peaks, [&](const ResonancePeak& pk) { return pk.negIm < kSignificantPeakFraction * largest; });
+    }
+    std::sort(peaks.begin(), peaks.end(), [](const ResonancePeak& a, const ResonancePeak& b) { return a.hz < b.hz; });
+    const int nModes = static_cast<int>(peaks.size());
+
+    // 2. The band.
     ToolModeFitResult out;
-    out.points = p.w.size();
-    std::vector<cd> remainder = p.h;
-    double firstPeak = 0.0;
-    for (int j = 0; j < options.modes; ++j) {
-        auto m = pickMode(p, remainder, out.startModes, firstPeak);
-        if (!m)
-            return m.error();
-        if (j == 0)
-            firstPeak = 1.0 / (m->dampingNsPerM * std::sqrt(m->stiffnessNPerM / m->massKg));
-        out.startModes.push_back(*m);
-        for (std::size_t i = 0; i < remainder.size(); ++i)
-            remainder[i] -= modeG(*m, p.w[i]);
+    out.automaticBand = automatic;
+    out.bandMinHz = all.f.front();
+    out.bandMaxHz = all.f.back();
+    if (automatic) {
+        out.bandMinHz = std::max(out.bandMinHz, peaks.front().lowHz - kBandHalfWidths * peaks.front().halfWidthHz);
+        out.bandMaxHz = std::min(out.bandMaxHz, peaks.back().highHz + kBandHalfWidths * peaks.back().halfWidthHz);
     }
+    Points p;
+    for (std::size_t i = 0; i < all.f.size(); ++i)
+        if (all.f[i] >= out.bandMinHz && all.f[i] <= out.bandMaxHz) {
+            p.f.push_back(all.f[i]);
+            p.h.push_back(all.h[i]);
+        }
+    const bool residuals = options.residualTerms;
+    const int nParams = 3 * nModes + (residuals ? 3 : 0);
+    if (static_cast<int>(p.f.size()) < nParams + 1)
+        return makeError(ErrorCode::BadInput,
+                         "tool FRF: " + std::to_string(p.f.size()) + " valid points in the band " + hz(out.bandMinHz) +
+                             " to " + hz(out.bandMaxHz) + ", " + std::to_string(nParams + 1) + " needed for " +
+                             std::to_string(nModes) + " mode(s)" + (residuals ? " and the residual terms" : ""));
+    out.points = p.f.size();
+    out.peaks = peaks;
 
-    Eigen::VectorXd x(static_cast<Eigen::Index>(nParams));
-    for (std::size_t j = 0; j < out.startModes.size(); ++j) {
-        const auto& m = out.startModes[j];
-        if (!(m.massKg > 0.0) || !(m.dampingNsPerM > 0.0) || !(m.stiffnessNPerM > 0.0) || !std::isfinite(m.massKg)
-            || !std::isfinite(m.dampingNsPerM) || !std::isfinite(m.stiffnessNPerM))
-            return makeError(ErrorCode::BadInput, "tool FRF: peak picking gave no positive start values for mode " + std::to_string(j + 1));
-        const auto o = static_cast<Eigen::Index>(3 * j);
-        x[o] = std::log(m.massKg);
-        x[o + 1] = std::log(m.dampingNsPerM);
-        x[o + 2] = std::log(m.stiffnessNPerM);
+    // 3. Start values and the weighted least squares.
+    Model model;
+    model.modes = nModes;
+    model.residuals = residuals;
+    model.scale = 0.0;
+    for (const auto& h : p.h)
+        model.scale = std::max(model.scale, std::abs(h));
+    model.omegaRef = kTwoPi * p.f.front();
+    const double scale = model.scale;
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(nParams);
+    for (int j = 0; j < nModes; ++j) {
+        const auto& pk = peaks[static_cast<std::size_t>(j)];
+        const double zeta = std::clamp(pk.halfWidthHz / pk.hz, 0.002, 0.2);
+        const double k = 1.0 / (2.0 * zeta * pk.negIm);
+        x[3 * j] = std::log(kTwoPi * pk.hz);
+        x[3 * j + 1] = -std::log(0.5 / zeta - 1.0);
+        x[3 * j + 2] = std::log(k);
+        out.startModes.push_back(toModal(kTwoPi * pk.hz, zeta, k));
     }
-
+    const auto n = p.f.size();
+    std::vector<double> w(n), omega(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        w[i] = std::sqrt(std::abs(p.h[i]) / scale);
+        omega[i] = kTwoPi * p.f[i];
+    }
+    auto residualOf = [&](const Eigen::VectorXd& xx, Eigen::VectorXd& r) {
+        r.resize(static_cast<Eigen::Index>(2 * n));
+        for (std::size_t i = 0; i < n; ++i) {
+            const cd e = w[i] * (model.eval(xx, omega[i]) - p.h[i]) / scale;
+            r[static_cast<Eigen::Index>(2 * i)] = e.real();
+            r[static_cast<Eigen::Index>(2 * i + 1)] = e.imag();
+        }
+    };
+    auto jacobianOf = [&](const Eigen::VectorXd& xx, const Eigen::VectorXd& r0, Eigen::MatrixXd& J) {
+        J.resize(r0.size(), xx.size());
+        Eigen::VectorXd xp = xx, rp;
+        for (Eigen::Index c = 0; c < xx.size(); ++c) {
+            const double step = 1e-7 * std::max(1.0, std::abs(xx[c]));
+            xp[c] = xx[c] + step;
+            residualOf(xp, rp);
+            J.col(c) = (rp - r0) / step;
+            xp[c] = xx[c];
+        }
+    };
     Eigen::VectorXd r, rTry;
     Eigen::MatrixXd J;
-    evaluate(p, x, r, &J);
+    residualOf(x, r);
+    jacobianOf(x, r, J);
     double cost = r.squaredNorm();
     double lambda = 1e-3;
     int it = 0;
@@ -233,36 +338,117 @@ Result<ToolModeFitResult> fitToolModes(const dsp::FrequencyResponse& frf, const 
                 Ad(d, d) += lambda * std::max(A(d, d), 1e-12);
             const Eigen::VectorXd step = Ad.ldlt().solve(-g);
             const Eigen::VectorXd xTry = x + step;
-            evaluate(p, xTry, rTry, nullptr);
+            residualOf(xTry, rTry);
             const double costTry = rTry.squaredNorm();
-            if (std::isfinite(costTry) && costTry < cost) {
+            if (step.allFinite() && std::isfinite(costTry) && costTry < cost) {
                 const double gain = (cost - costTry) / std::max(cost, 1e-300);
                 x = xTry;
+                r = rTry;
                 cost = costTry;
                 lambda = std::max(lambda / 3.0, 1e-12);
                 accepted = true;
-                converged = gain < 1e-12 || step.cwiseAbs().maxCoeff() < 1e-12;
+                converged = gain < 1e-12 || step.cwiseAbs().maxCoeff() < 1e-10;
             } else {
                 lambda *= 4.0;
             }
         }
         if (!accepted)
-            break;  // no descent direction left: converged to the numerical floor
-        evaluate(p, x, r, &J);
+            break; // no descent direction left: converged to the numerical floor
+        jacobianOf(x, r, J);
     }
     out.iterations = it;
-    evaluate(p, x, r, nullptr);
-    out.modes = fromParams(x);
-    for (std::size_t j = 0; j < out.modes.size(); ++j) {
-        const auto& m = out.modes[j];
-        if (!std::isfinite(m.massKg) || !std::isfinite(m.dampingNsPerM) || !std::isfinite(m.stiffnessNPerM) || !(m.massKg > 0.0)
-            || !(m.stiffnessNPerM > 0.0) || !(m.dampingNsPerM > 0.0))
-            return makeError(ErrorCode::BadInput, "tool FRF: the fit gave a non-finite or non-positive mode " + std::to_string(j + 1));
+
+    // 4. Results and the quality gate.
+    struct Fitted {
+        double wn, zeta, k;
+        ResonancePeak peak;
+        ModalParameters start;
+    };
+    std::vector<Fitted> fitted;
+    for (int j = 0; j < nModes; ++j)
+        fitted.push_back({std::exp(x[3 * j]), Model::zetaOf(x[3 * j + 1]), std::exp(x[3 * j + 2]),
+                          peaks[static_cast<std::size_t>(j)], out.startModes[static_cast<std::size_t>(j)]});
+    std::sort(fitted.begin(), fitted.end(), [](const Fitted& a, const Fitted& b) { return a.wn < b.wn; });
+    out.modes.clear();
+    out.startModes.clear();
+    out.peaks.clear();
+    for (const auto& fm : fitted) {
+        out.modes.push_back(toModal(fm.wn, fm.zeta, fm.k));
+        out.startModes.push_back(fm.start);
+        out.peaks.push_back(fm.peak);
     }
-    std::sort(out.modes.begin(), out.modes.end(),
-              [](const ModalParameters& a, const ModalParameters& b) { return naturalFrequencyHz(a) < naturalFrequencyHz(b); });
-    out.rmsRelativeError = std::sqrt(r.squaredNorm() / static_cast<double>(p.w.size()));
+    if (residuals) {
+        const auto o = 3 * nModes;
+        out.upperResidual = scale * cd(x[o], x[o + 1]);
+        out.lowerResidual = scale * x[o + 2] * model.omegaRef * model.omegaRef;
+    }
+    double rel = 0.0, num = 0.0, den = 0.0, maxMag = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const cd g = model.eval(x, omega[i]);
+        rel += std::norm(g / p.h[i] - 1.0);
+        num += w[i] * w[i] * std::norm(g - p.h[i]);
+        den += w[i] * w[i] * std::norm(p.h[i]);
+        maxMag = std::max(maxMag, std::abs(p.h[i]));
+    }
+    out.rmsRelativeError = std::sqrt(rel / static_cast<double>(n));
+    out.residualRatio = std::sqrt(num / den);
+
+    const std::string where =
+        " (band " + hz(out.bandMinHz) + " to " + hz(out.bandMaxHz) + ", " + std::to_string(nModes) + " mode(s))";
+    for (std::size_t j = 0; j < fitted.size(); ++j) {
+        const auto& m = out.modes[j];
+        if (!std::isfinite(m.massKg) || !std::isfinite(m.dampingNsPerM) || !std::isfinite(m.stiffnessNPerM) ||
+            !(m.massKg > 0.0) || !(m.stiffnessNPerM > 0.0))
+            return makeError(ErrorCode::BadInput,
+                             "tool FRF fit refused: the fit diverged (mode " + std::to_string(j + 1) +
+                                 " has no finite mass, damping or stiffness)" + where +
+                                 "; the band holds more than these modes explain: choose a band around the "
+                                 "resonances or another number of modes");
+    }
+    if (!(out.residualRatio <= options.maxResidual))
+        return makeError(ErrorCode::BadInput,
+                         "tool FRF fit refused: the model misses the measured receptance by " +
+                             formatNumber(100.0 * out.residualRatio, 3) + " % (weighted residual; at most " +
+                             formatNumber(100.0 * options.maxResidual, 3) + " % accepted)" + where +
+                             "; choose a band around the resonances or another number of modes");
+    for (std::size_t j = 0; j < fitted.size(); ++j) {
+        const auto& fm = fitted[j];
+        const double fn = fm.wn / kTwoPi;
+        const std::string mode = "mode " + std::to_string(j + 1) + " (" + hz(fn) + ")";
+        if (fm.zeta > kZetaMax || fm.zeta < kZetaMin)
+            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " has damping ratio " +
+                                                      formatNumber(fm.zeta, 3) + ", outside the plausible " +
+                                                      formatNumber(kZetaMin, 2) + " to " + formatNumber(kZetaMax, 2) +
+                                                      where);
+        if (fn < out.bandMinHz || fn > out.bandMaxHz)
+            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " lies outside the band" + where);
+        if (1.0 / (2.0 * fm.zeta * fm.k) < kMinModePeakFraction * maxMag)
+            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode +
+                                                      " has a peak compliance below 5 % of the largest |H| "
+                                                      "in the band, it is not a resonance of the data" +
+                                                      where);
+        if (j > 0) {
+            const auto& prev = fitted[j - 1];
+            if (fm.wn - prev.wn < (fm.zeta * fm.wn + prev.zeta * prev.wn))
+                return makeError(ErrorCode::BadInput,
+                                 "tool FRF fit refused: modes " + std::to_string(j) + " and " + std::to_string(j + 1) +
+                                     " (" + hz(prev.wn / kTwoPi) + ", " + hz(fn) +
+                                     ") overlap within their half-power bandwidths: one resonance fitted twice" +
+                                     where);
+        }
+        double ln = 0.0, ld = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+            if (std::abs(omega[i] - fm.wn) <= fm.zeta * fm.wn) {
+                ln += std::norm(model.eval(x, omega[i]) - p.h[i]);
+                ld += std::norm(p.h[i]);
+            }
+        if (ld > 0.0 && std::sqrt(ln / ld) > kMaxLocalResidual)
+            return makeError(ErrorCode::BadInput, "tool FRF fit refused: " + mode + " misses the measured peak by " +
+                                                      formatNumber(100.0 * std::sqrt(ln / ld), 3) +
+                                                      " % within its half-power band (at most " +
+                                                      formatNumber(100.0 * kMaxLocalResidual, 3) + " %)" + where);
+    }
     return out;
 }
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

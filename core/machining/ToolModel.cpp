@@ -5,6 +5,8 @@
 // instead of the reference's 20-point quadrature.
 #include "core/machining/ToolModel.h"
 
+#include "core/model/Constants.h"
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -15,8 +17,6 @@ namespace {
 
 Status checkModes(const std::vector<ModalParameters>& modes, const char* key)
 {
-    if (modes.empty())
-        return makeError(ErrorCode::BadInput, std::string(key) + ": at least one mode is required");
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const auto& m = modes[i];
         const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
@@ -46,6 +46,9 @@ Prim prim(double p)
 
 Status validateTool(const ToolModes& tool)
 {
+    if (tool.modesX.empty() && tool.modesY.empty())
+        return makeError(ErrorCode::BadInput,
+                         "modes_x, modes_y: at least one mode is required (an empty list is a rigid direction)");
     if (auto s = checkModes(tool.modesX, "modes_x"); !s)
         return s;
     return checkModes(tool.modesY, "modes_y");
@@ -93,7 +96,7 @@ std::pair<double, double> engagementAngles(const CuttingConditions& cut)
 
 Eigen::Matrix2d integrateToothMatrix(const CuttingConditions& cut, double a, double b)
 {
-    constexpr double kTwoPi = 2.0 * std::numbers::pi;
+    using model::kTwoPi;
     const auto [st, en] = engagementAngles(cut);
     Eigen::Matrix2d sum = Eigen::Matrix2d::Zero();
     const long mLo = static_cast<long>(std::floor((a - en) / kTwoPi));

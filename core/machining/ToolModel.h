@@ -34,7 +34,8 @@ struct CuttingConditions {
     MillingDirection milling = MillingDirection::Down;
 };
 
-/// Checks every mode (mass > 0, damping ≥ 0, stiffness > 0, all finite, at least one mode per direction).
+/// Checks every mode (mass > 0, damping ≥ 0, stiffness > 0, all finite). A direction without modes is rigid
+/// (e.g. the one-direction milling benchmark: flexible in x only); at least one mode in all is required.
 Status validateTool(const ToolModes& tool);
 /// Checks teeth ≥ 1, K_t > 0, K_r ≥ 0, 0 < immersion ≤ 1.
 Status validateCut(const CuttingConditions& cut);

@@ -6,6 +6,7 @@
 
 #include "core/dsp/Fft.h"
 #include "core/machining/CorrelationChatterDetector.h"
+#include "core/model/Constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,7 @@
 namespace axistune::machining {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using model::kPi;
 
 Result<dsp::FilterCascade> butterworth(int order, double fc, double ts, bool high)
 {

@@ -4,24 +4,17 @@
 #include "core/model/Units.h"
 
 #include <cmath>
-#include <sstream>
 
 namespace axistune::model {
 
 std::string formatDisplay(const ParameterMeta& meta, double valueSi)
 {
     auto v = convertUnit(valueSi, meta.siUnit, meta.displayUnit);
-    std::ostringstream os;
-    os.precision(6);
     if (v) {
-        os << *v;
         const auto label = unitLabel(meta.displayUnit);
-        if (!label.empty())
-            os << ' ' << label;
-    } else {
-        os << valueSi << ' ' << unitLabel(meta.siUnit);
+        return formatNumber(*v, 6) + (label.empty() ? "" : " " + label);
     }
-    return os.str();
+    return formatNumber(valueSi, 6) + " " + unitLabel(meta.siUnit);
 }
 
 Status checkParameterValue(const ParameterMeta& meta, double valueSi)

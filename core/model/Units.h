@@ -4,6 +4,7 @@
 // A unit is named by an ASCII token ("mH", "um", "min^-1"); each token has a UTF-8 label for people
 // ("mH", "µm", "min⁻¹"), the SI token it converts to, and the factor to SI.
 
+#include "core/model/Number.h" // formatNumber, long declared here
 #include "core/model/Result.h"
 
 #include <string>
@@ -13,10 +14,10 @@
 namespace axistune::model {
 
 struct UnitInfo {
-    std::string_view token;  ///< ASCII name used in files and metadata
-    std::string_view label;  ///< UTF-8 label shown to people
-    std::string_view si;     ///< token of the SI unit of the same quantity
-    double toSi;             ///< value_si = value * toSi
+    std::string_view token; ///< ASCII name used in files and metadata
+    std::string_view label; ///< UTF-8 label shown to people
+    std::string_view si;    ///< token of the SI unit of the same quantity
+    double toSi;            ///< value_si = value * toSi
 };
 
 /// The unit with this token, or NotFound.
@@ -29,8 +30,4 @@ std::string unitLabel(std::string_view token);
 /// All known unit tokens (for documentation and tests).
 std::vector<UnitInfo> allUnits();
 
-/// `v` with `significant` digits in printf's %g form ("0.6102", "1e-06"; 17 digits round-trip a double),
-/// '.' as the decimal point whatever the locale: for messages and metadata.
-std::string formatNumber(double v, int significant);
-
-}  // namespace axistune::model
+} // namespace axistune::model

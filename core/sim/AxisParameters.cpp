@@ -86,6 +86,17 @@ std::vector<Def> buildDefs(AxisKind kind)
     d.push_back({P("suppression.f0", "Suppression filter frequency f0", "Hz", "Hz", 1, 500, "suppression"), 20.0});
     d.push_back({P("suppression.zeta", "Suppression filter damping zeta", "1", "1", 0, 1, "suppression"), 0.1});
     d.push_back({P("suppression.tau", "F_L time constant tau", "s", "ms", 0, 0.1, "suppression"), 0.01});
+    // Reversal (quadrant-glitch) compensation: at each reversal of the commanded velocity a pulse
+    // a·sgn(v_new)·exp(−t/τ) is added to the velocity command (docs/simulator.md). Amplitude 0 = off.
+    // Kept after every older drive parameter, so the register addresses of those do not move.
+    if (lin) {
+        d.push_back({P("reversal.amplitude", "Reversal compensation pulse amplitude (velocity command)", "m/s",
+                       "mm/min", 0, 0.05, "reversal"),
+                     0.0});
+        d.push_back(
+            {P("reversal.time_constant", "Reversal compensation pulse time constant", "s", "ms", 1e-4, 0.5, "reversal"),
+             0.01});
+    }
 
     // Plant (the machine itself), read-only through the drive.
     d.push_back({P("plant.motor.resistance", "Armature resistance", "ohm", "ohm", 1e-4, 1e3, "plant", false), 0.32});
@@ -110,6 +121,8 @@ std::vector<Def> buildDefs(AxisKind kind)
         d.push_back({P("plant.lost_motion_B", "Lost-motion compliance B", "1/Nm", "um/(Nm*m)", 0, 1e-2, "plant", false), 0.0});
         d.push_back({P("plant.screw_offset", "Screw length offset x0", "m", "mm", -10, 10, "plant", false), 0.0});
         d.push_back({P("plant.scale_resolution", "Linear-scale resolution (0 = ideal)", "m", "nm", 0, 1e-3, "plant", false), 0.0});
+        d.push_back(
+            {P("plant.backlash", "Backlash (play between nut and table)", "m", "um", 0, 1e-3, "plant", false), 0.0});
     } else {
         d.push_back({P("plant.encoder_load", "Load encoder resolution (0 = ideal)", "counts/rev", "counts/rev", 0, 1e12, "plant", false), 0.0});
     }

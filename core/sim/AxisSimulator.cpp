@@ -4,6 +4,9 @@
 // spec/lost-motion-and-two-inertia.md §1.7–1.9). The discrete-time equations are in docs/simulator.md.
 #include "core/sim/AxisSimulator.h"
 
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -12,7 +15,7 @@
 namespace axistune::sim {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 
 Result<int> integerRatio(double num, double den, const std::string& what)
 {
@@ -165,6 +168,9 @@ Status AxisSimulator::configure(const model::ParameterValues& v)
     p.compB = linear ? get("lostmotion.B") : 0.0;
     p.compOffset = linear ? get("lostmotion.screw_offset") : 0.0;
     p.backlash = linear ? get("lostmotion.backlash") : 0.0;
+    p.play = linear ? get("plant.backlash") : 0.0;
+    p.reversalAmp = linear ? get("reversal.amplitude") : 0.0;
+    p.reversalTau = linear ? get("reversal.time_constant") : 0.01;
     p.fullClosed = get("position.feedback") >= 1.0;
     m_p = p;
     m_hCurrent = h;
@@ -208,6 +214,9 @@ void AxisSimulator::reset(double position)
     m_currentInt = m_velInt = m_torqueCmd = m_torqueFf = m_velCmd = m_velCmdFromPos = m_velMeas = 0.0;
     m_posCmd = m_posFeedback = m_loopCmd = position;
     m_lmComp = m_lastDirection = m_currentCmd = m_voltage = m_injectionNow = 0.0;
+    m_table = tableBeforePlay();
+    m_reversalDir = m_reversalVel = 0.0;
+    m_reversalStart = -1.0;
     m_prevEncoder = quantize(m_plant->encoderAngle(m_x), m_p.encoderMotor);
     m_clampCount = m_currentLimitCount = 0;
     m_profile = MotionProfile(position);
@@ -268,7 +277,23 @@ double AxisSimulator::lostMotionDeflection() const
 
 double AxisSimulator::motorPosition() const { return screwLead() * PlantModel::motorAngle(m_x); }
 
-double AxisSimulator::tablePosition() const { return screwLead() * m_plant->loadAngle(m_x) - lostMotionDeflection(); }
+double AxisSimulator::tableBeforePlay() const
+{
+    return screwLead() * m_plant->loadAngle(m_x) - lostMotionDeflection();
+}
+
+double AxisSimulator::tablePosition() const
+{
+    return m_table;
+}
+
+void AxisSimulator::updatePlay()
+{
+    // Kinematic play (docs/simulator.md "Backlash"): the table stands still, held by its guideway, while
+    // the nut travels through the gap; at either end of the gap the nut takes the table along.
+    const double half = m_nl.backlash ? 0.5 * m_p.play : 0.0, nut = tableBeforePlay();
+    m_table = std::clamp(m_table, nut - half, nut + half);
+}
 
 void AxisSimulator::positionTick(double t, double feedbackPos)
 {
@@ -293,6 +318,12 @@ void AxisSimulator::positionTick(double t, double feedbackPos)
         }
     }
     m_lmComp = comp;
+    if (nc.velocity != 0.0) {
+        const double dir = sgn(nc.velocity);
+        if (m_reversalDir != 0.0 && dir != m_reversalDir)
+            m_reversalStart = t; // a commanded reversal: the compensation pulse starts
+        m_reversalDir = dir;
+    }
     const double r = screwLead();
     if (m_suppression.mode == SuppressionFilterMode::FullClosedFl) {
         // F_L on the feedback velocity command; on the feedforward F_L·(τs + 1)·s·y* = s·F_m·y*: the
@@ -338,6 +369,12 @@ void AxisSimulator::velocityTick(double t)
         m_torqueFf = 0.0;
     } else {
         m_velCmd = m_velCmdFromPos;
+        // Reversal compensation pulse a·sgn(v_new)·exp(−(t − t_rev)/τ) on the velocity command.
+        m_reversalVel = 0.0;
+        if (m_p.reversalAmp > 0.0 && m_reversalStart >= 0.0 && t - m_reversalStart < 30.0 * m_p.reversalTau)
+            m_reversalVel =
+                m_reversalDir * m_p.reversalAmp / screwLead() * std::exp(-(t - m_reversalStart) / m_p.reversalTau);
+        m_velCmd += m_reversalVel;
     }
     const double e = m_velCmd - m_velMeas;
     if (m_velTick % m_intDiv == 0)
@@ -410,6 +447,7 @@ void AxisSimulator::runTicks(std::int64_t ticks)
         }
         const double load = m_loadTorque ? m_loadTorque(t) : 0.0;
         m_plant->step(m_x, applied, -frictionMotor(), load - frictionLoad(), m_nl.inductanceDrop);
+        updatePlay();
         ++m_tick;
     }
 }
@@ -445,6 +483,8 @@ void AxisSimulator::holdPosition()
     m_profileStart = time();
     m_posCmd = m_posFeedback = pos;
     m_velInt = m_velCmd = m_velCmdFromPos = m_torqueFf = m_torqueCmd = 0.0;
+    m_reversalDir = m_reversalVel = 0.0;
+    m_reversalStart = -1.0;
     m_filters.reset();
 }
 
@@ -453,14 +493,10 @@ model::Capture AxisSimulator::takeTrace()
     model::Capture cap;
     const bool currentRate = m_traceRate == TraceRate::Current;
     const auto names = currentRate ? currentTraceChannelNames() : traceChannelNames();
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", 1.0 / (currentRate ? m_hCurrent : tracePeriod()));
-    cap.metadata["fs_Hz"] = buf;
+    model::setMetadataNumber(cap.metadata, "fs_Hz", 1.0 / (currentRate ? m_hCurrent : tracePeriod()));
     cap.metadata["axis"] = m_def.name;
-    std::snprintf(buf, sizeof buf, "%.17g", m_hCurrent);
-    cap.metadata["current_period_s"] = buf;
-    std::snprintf(buf, sizeof buf, "%.17g", velocityPeriod());
-    cap.metadata["velocity_period_s"] = buf;
+    model::setMetadataNumber(cap.metadata, "current_period_s", m_hCurrent);
+    model::setMetadataNumber(cap.metadata, "velocity_period_s", velocityPeriod());
     cap.metadata["seed"] = std::to_string(m_seed);
     for (std::size_t c = 0; c < names.size() && c < m_trace.size(); ++c)
         cap.channels.push_back({names[c], std::move(m_trace[c])});

@@ -40,6 +40,7 @@ struct Nonlinearities {
     bool quantization = true;         ///< encoder and scale resolution
     bool noise = true;                ///< measurement noise
     bool lostMotion = true;           ///< elastic lost motion of the ball screw
+    bool backlash = true;             ///< play between nut and table (plant.backlash)
 };
 
 class AxisSimulator {
@@ -98,7 +99,7 @@ public:
     // Instantaneous state (SI; positions in axis units).
     double motorVelocity() const { return PlantModel::motorVelocity(m_x); }
     double motorPosition() const;   ///< axis units from the rigid motor angle
-    double tablePosition() const;   ///< load side including elastic lost motion
+    double tablePosition() const;   ///< load side including elastic lost motion and backlash
     double torque() const { return m_plant->config().torqueConstantNmPerA * PlantModel::current(m_x); }
     double torqueCommand() const { return m_torqueCmd; }
     double positionCommand() const { return m_posCmd; }
@@ -126,6 +127,8 @@ private:
     double frictionMotor() const;
     double frictionLoad() const;
     double lostMotionDeflection() const;
+    double tableBeforePlay() const; ///< table position without the backlash
+    void updatePlay();
     double quantize(double value, double step) const;
     double screwLead() const;  ///< R [m/rad] for linear axes, 1 for rotary
 
@@ -137,6 +140,8 @@ private:
         double coulombMotor = 0, coulombLoad = 0, coulombVelocity = 0, jMotorSide = 0, jLoadSide = 0;
         double lead = 1, lmA = 0, lmB = 0, screwOffset = 0;
         double compA = 0, compB = 0, compOffset = 0, backlash = 0;
+        double play = 0;                            ///< plant.backlash [m]
+        double reversalAmp = 0, reversalTau = 0.01; ///< reversal.amplitude [m/s], reversal.time_constant [s]
         int compMode = 0;
         bool fullClosed = false;
     };
@@ -187,6 +192,10 @@ private:
     double m_loopCmd = 0.0;
     double m_posFeedback = 0.0;
     double m_lmComp = 0.0;
+    double m_table = 0.0;          ///< table position inside the play (plant.backlash)
+    double m_reversalDir = 0.0;    ///< direction of the last commanded motion (reversal compensation)
+    double m_reversalStart = -1.0; ///< time of the last commanded reversal [s]; < 0: none yet
+    double m_reversalVel = 0.0;    ///< reversal pulse on the velocity command now [rad/s motor]
     double m_lastDirection = 0.0;
     double m_currentCmd = 0.0;
     double m_voltage = 0.0;

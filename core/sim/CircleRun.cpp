@@ -5,31 +5,28 @@
 // Conventions: docs/ballbar.md "Simulated circle tests" and "Circle tests through the drive".
 #include "core/sim/CircleRun.h"
 
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/sim/AxisSimulator.h"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 namespace axistune::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using model::kPi;
+using model::kRadPerDeg;
 constexpr double kTailS = 0.2;  ///< recorded after the end of the path (the axes settle)
 
 std::string fmt(double v)
 {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
+    return model::formatNumber(v, 17);
 }
 
 std::string fmtShort(double v)
 {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return model::formatNumber(v, 10);
 }
 
 Status checkOptions(const CircleTestOptions& o)
@@ -41,6 +38,8 @@ Status checkOptions(const CircleTestOptions& o)
         return bad("feed must be positive (is " + fmtShort(o.feedMPerS) + " m/s)");
     if (!(o.leadArcDeg >= 10.0) || o.leadArcDeg > 360.0)
         return bad("lead arc must be 10..360 deg (is " + fmtShort(o.leadArcDeg) + ")");
+    if (!(o.dataArcDeg >= 30.0) || o.dataArcDeg > 360.0)
+        return bad("data arc must be 30..360 deg (is " + fmtShort(o.dataArcDeg) + ")");
     if (!std::isfinite(o.centerXM) || !std::isfinite(o.centerYM) || !std::isfinite(o.dataStartDeg))
         return bad("centre and start angle must be finite");
     if (!(o.dwellS >= 0.0) || !std::isfinite(o.dwellS) || !std::isfinite(o.squarenessPerM) ||
@@ -64,13 +63,13 @@ Result<CirclePath> CirclePath::plan(const CircleTestOptions& o)
     p.m_sigma = o.direction == model::CircleDirection::Ccw ? 1.0 : -1.0;
     p.m_dwell = o.dwellS;
     p.m_omega = o.feedMPerS / o.radiusM;
-    p.m_sAcc = 0.5 * o.leadArcDeg * kDeg;
+    p.m_sAcc = 0.5 * o.leadArcDeg * kRadPerDeg;
     p.m_alpha = p.m_omega * p.m_omega / (2.0 * p.m_sAcc);
     p.m_tAcc = p.m_omega / p.m_alpha;
-    p.m_sFrom = o.leadArcDeg * kDeg;
-    p.m_sTo = p.m_sFrom + 2.0 * kPi;
+    p.m_sFrom = o.leadArcDeg * kRadPerDeg;
+    p.m_sTo = p.m_sFrom + o.dataArcDeg * kRadPerDeg;
     p.m_tConst = (p.m_sTo + p.m_sFrom - 2.0 * p.m_sAcc) / p.m_omega;
-    p.m_phi0 = o.dataStartDeg * kDeg - p.m_sigma * p.m_sFrom;
+    p.m_phi0 = o.dataStartDeg * kRadPerDeg - p.m_sigma * p.m_sFrom;
     return p;
 }
 
@@ -199,14 +198,8 @@ Result<CircleTestOptions> circleOptionsFromTrace(const model::Capture& trace)
         return it->second;
     };
     auto number = [&](const char* key) -> Result<double> {
-        auto t = text(key);
-        if (!t)
-            return t.error();
-        char* end = nullptr;
-        const double v = std::strtod(t->c_str(), &end);
-        if (end == t->c_str() || *end != '\0' || !std::isfinite(v))
-            return bad(std::string("metadata '") + key + "' is not a number ('" + *t + "')");
-        return v;
+        auto v = model::metadataNumber(md, key);
+        return v ? v : bad(v.error().detail);
     };
     if (auto t = text("test"); !t || *t != "circle")
         return bad("not the trace of a circle test (metadata test=circle missing)");

@@ -6,6 +6,8 @@
 // conventions: docs/ballbar.md "Simulated circle tests".
 #include "core/sim/CircleTest.h"
 
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/sim/AxisSimulator.h"
 #include "core/sim/CircleRun.h"
 
@@ -17,8 +19,8 @@
 namespace axistune::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using model::kPi;
+using model::kRadPerDeg;
 
 double wrapPi(double a)
 {
@@ -27,9 +29,7 @@ double wrapPi(double a)
 
 std::string fmt(double v)
 {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return model::formatNumber(v, 10);
 }
 
 struct Samples {
@@ -41,7 +41,7 @@ double reversalTorqueChange(const Samples& d, const CircleTestOptions& o, double
                             double sFrom, double sTo)
 {
     const auto& torque = axis == 0 ? d.tx : d.ty;
-    const double ex = o.torqueExcludeDeg * kDeg, win = o.torqueWindowDeg * kDeg;
+    const double ex = o.torqueExcludeDeg * kRadPerDeg, win = o.torqueWindowDeg * kRadPerDeg;
     double sum = 0.0;
     int count = 0;
     for (int k = -2; k <= 6; ++k) {
@@ -118,7 +118,7 @@ Result<CircleTestResult> evaluateCircleTrace(const model::Capture& trace, const 
                        std::to_string(arc->data.size()));
     }
     if (arc->data.empty() || arc->data.back() < path->dataTo())
-        return bad("the trace ends before the 360 deg data arc (an aborted circle?)");
+        return bad("the trace ends before the " + fmt(o.dataArcDeg) + " deg data arc (an aborted circle?)");
     Samples d;
     d.s = arc->data;
     d.tx = tx->data;

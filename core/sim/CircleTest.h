@@ -28,6 +28,9 @@ struct CircleTestOptions {
     std::string axisY = "Y";
     double dataStartDeg = 45.0;  ///< geometric angle at which the 360° data arc begins
     double leadArcDeg = 90.0;    ///< lead-in and lead-out arc length (acceleration happens in its first half)
+    /// Length of the data arc [deg]: 360 for a ball-bar test; shorter arcs (30..360) are for model runs that
+    /// need only some reversals (tuning::tuneReversalCompensation). Drives always run 360.
+    double dataArcDeg = 360.0;
     double dwellS = 0.1;         ///< hold at the start before moving
     double squarenessPerM = 0.0; ///< γ [rad]: Y leans toward +X by γ per unit of Y (angle X–Y below 90° → γ > 0)
     double scaleX = 0.0;         ///< relative scale error of X (ratio, 1e-6 = 1 ppm)

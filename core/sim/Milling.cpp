@@ -4,6 +4,8 @@
 // loss-of-contact nonlinearity; modes integrated exactly under a zero-order hold of the force.
 #include "core/sim/Milling.h"
 
+#include "core/model/Constants.h"
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -11,12 +13,10 @@
 namespace axistune::sim {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 
 Status checkModes(const std::vector<MillingMode>& modes, const std::string& dir)
 {
-    if (modes.empty())
-        return makeError(ErrorCode::BadInput, "modes_" + dir + ": at least one mode is needed");
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const auto& m = modes[i];
         const std::string at = "modes_" + dir + "[" + std::to_string(i) + "]";
@@ -38,6 +38,9 @@ Status checkModes(const std::vector<MillingMode>& modes, const std::string& dir)
 
 Status validateMillingSetup(const MillingSetup& s)
 {
+    if (s.modesX.empty() && s.modesY.empty())
+        return makeError(ErrorCode::BadInput,
+                         "modes_x, modes_y: at least one mode is needed (an empty list is a rigid direction)");
     if (auto st = checkModes(s.modesX, "x"); !st)
         return st;
     if (auto st = checkModes(s.modesY, "y"); !st)
@@ -77,7 +80,7 @@ Result<MillingProcess> MillingProcess::create(const MillingSetup& setup)
     if (p.m_k < 8)
         p.m_k = 8;
     p.m_h = p.m_tau / p.m_k;
-    p.m_omega = kTwoPi * setup.spindleRpm / 60.0;
+    p.m_omega = setup.spindleRpm * model::kRadPerSPerRpm;
     const double r = setup.radialImmersion;
     if (setup.upMilling) {
         p.m_entry = 0.0;

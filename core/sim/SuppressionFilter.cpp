@@ -3,6 +3,8 @@
 // (y_m* = y* + LPF_{T1}(a*)/ω₀², spec/lost-motion-and-two-inertia.md §2.5 [DERIVED] decomposition and
 // §4.10) and F_L (5.9) by Tustin as in TI-4 (§4.11). The equations are in docs/simulator.md.
 #include "core/sim/SuppressionFilter.h"
+
+#include "core/model/Constants.h"
 #include "core/model/Units.h"
 
 #include <cmath>
@@ -13,7 +15,7 @@
 namespace axistune::sim {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 
 std::string num(double v) { return model::formatNumber(v, 6); }
 

@@ -7,15 +7,15 @@
 #include "core/store/Schema.h"
 
 #include <SQLiteCpp/SQLiteCpp.h>
-#include <sqlite3.h>
-
 #include <array>
 #include <bit>
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <sqlite3.h>
 
 namespace axistune::store {
 
@@ -300,6 +300,22 @@ Status checkFileHeader(const std::string& path)
 
 }  // namespace
 
+void removeFailedOpenLeftovers(const std::string& path, bool created)
+{
+    std::error_code ec;
+    const fs::path wal(path + "-wal"), shm(path + "-shm");
+    // A live WAL connection has a wal-index of at least one 32 KiB page; a 0-byte log holds no frame.
+    // Only such leftovers of a failed open are removed, never a log or index another connection uses.
+    const bool emptyWal = !fs::exists(wal, ec) || fs::file_size(wal, ec) == 0;
+    const bool deadShm = !fs::exists(shm, ec) || fs::file_size(shm, ec) < 32768;
+    if (emptyWal && deadShm) {
+        fs::remove(wal, ec);
+        fs::remove(shm, ec);
+    }
+    if (created && emptyWal && deadShm)
+        fs::remove(path, ec); // the store this call was creating
+}
+
 Database::Database(std::string path, std::unique_ptr<SQLite::Database> db) : m_path(std::move(path)), m_db(std::move(db)) {}
 Database::Database(Database&&) noexcept = default;
 Database& Database::operator=(Database&&) noexcept = default;
@@ -318,6 +334,20 @@ Result<Database> Database::open(const std::string& path, OpenMode mode)
             return st.error();
     }
     std::unique_ptr<SQLite::Database> db;
+    // A failed open leaves nothing behind: no new empty store, no -wal/-shm that SQLite made and could
+    // not use (e.g. a -shm it could not grow on a full disk).
+    auto failed = [&](Error e) {
+        const int sysErr = db ? sqlite3_system_errno(db->getHandle()) : 0;
+        db.reset();
+        removeFailedOpenLeftovers(path, !exists);
+        if (sysErr == ENOSPC)
+            return makeError(ErrorCode::Io, path + ": disk full while opening the store (nothing was saved)");
+        if (sysErr == EROFS || sysErr == EACCES || sysErr == EPERM)
+            return makeError(ErrorCode::Io, path +
+                                                ": the store is read-only (file, folder or file system not writable; " +
+                                                std::strerror(sysErr) + "); nothing can be saved in it");
+        return e;
+    };
     try {
         db = std::make_unique<SQLite::Database>(path, SQLite::OPEN_READWRITE | SQLite::OPEN_CREATE);
         db->setBusyTimeout(5000);
@@ -341,11 +371,14 @@ Result<Database> Database::open(const std::string& path, OpenMode mode)
             return makeError(ErrorCode::Io, path + ": cannot switch the store to WAL mode (journal mode '" + journal + "')");
         db->exec("PRAGMA synchronous = FULL");
     } catch (const std::exception& e) {
-        return detail::dbError(path, e, "opening the store");
+        return failed(detail::dbError(path, e, "opening the store"));
     }
     Database result(path, std::move(db));
-    if (auto st = result.migrate(); !st)
+    if (auto st = result.migrate(); !st) {
+        result.m_db.reset();
+        removeFailedOpenLeftovers(path, !exists);
         return st.error();
+    }
     return result;
 }
 
@@ -577,6 +610,21 @@ Result<std::int64_t> Database::importProfile(const io::MachineProfile& profile, 
     }
     rec.inputs["axes"] = rec.machineAxes;
     return recordSession(rec);
+}
+
+Status Database::checkWritable() const
+{
+    // SQLite silently opens a store it may not write (permissions, read-only file system) read-only.
+    if (sqlite3_db_readonly(m_db->getHandle(), "main") == 1)
+        return makeError(ErrorCode::Io, m_path + ": the store is read-only (file, folder or file system not writable); "
+                                                 "nothing can be saved in it");
+    try {
+        m_db->exec("BEGIN IMMEDIATE"); // takes the write lock, writes nothing
+        m_db->exec("ROLLBACK");
+    } catch (const std::exception& e) {
+        return detail::dbError(m_path, e, "checking that the store can be written");
+    }
+    return Status::success();
 }
 
 Result<std::string> Database::integrityCheck() const

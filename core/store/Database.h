@@ -115,6 +115,11 @@ struct SessionRecord {
     }
 };
 
+/// After a failed open or a failed first save: removes a 0-byte "-wal" and a "-shm" smaller than one
+/// wal-index page (what SQLite leaves when it cannot set up the log, e.g. on a full disk; no live
+/// connection has such files), and with `created` the store file itself (one this process was creating).
+void removeFailedOpenLeftovers(const std::string& path, bool created);
+
 enum class OpenMode {
     CreateIfMissing,  ///< creates a new, empty store when the file does not exist
     MustExist,        ///< NotFound when the file does not exist (read-only commands)
@@ -165,6 +170,12 @@ public:
     Result<std::int64_t> recordSession(const SessionRecord& record);
     Result<std::vector<SessionInfo>> listSessions(const std::string& machine = {}) const;
     Result<SessionRecord> loadSession(std::int64_t id) const;
+
+    /// Whether a save can succeed as far as can be known before one: the store is not opened
+    /// read-only (file, folder or file system) and its write lock can be taken. Callers check this
+    /// before measuring, so a test is never run for a session that cannot be saved. Io/Busy errors
+    /// name the file.
+    Status checkWritable() const;
 
     /// `PRAGMA integrity_check`: "ok" or the first problems found.
     Result<std::string> integrityCheck() const;

@@ -5,18 +5,20 @@
 // (ISO 230-4 least-squares circle for centre, radius and circularity).
 #include "core/tuning/BallBarDiagnostics.h"
 
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::tuning {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using model::kPi;
+using model::kRadPerDeg;
 constexpr std::size_t kMinSideSamples = 4;
 
 double wrapPi(double a)
@@ -51,11 +53,7 @@ const char* axisName(int axis)
 
 std::string fmt(double v, int prec = 2)
 {
-    std::ostringstream os;
-    os.setf(std::ios::fixed);
-    os.precision(prec);
-    os << v;
-    return os.str();
+    return model::formatFixed(v, prec);
 }
 
 /// Least squares with a design matrix; returns coefficients and the inverse normal matrix diagonal.
@@ -95,7 +93,8 @@ bool inAnySpikeZone(double theta, double sigma, double excludeRad)
     return false;
 }
 
-/// Spike = largest residual inside the spike zone; width = full width at half height (travel angle).
+/// Spike = largest residual against the step's transition inside the spike zone (fitReversal); width = full
+/// width at half height (travel angle).
 void findSpike(ReversalEvent& ev, const std::vector<std::pair<double, double>>& zone /* (d, resid) sorted by d */,
                double reversalAngle, double sigma)
 {
@@ -107,7 +106,7 @@ void findSpike(ReversalEvent& ev, const std::vector<std::pair<double, double>>& 
             k = i;
     }
     const double peak = zone[k].second;
-    const double threshold = std::max(4.0 * ev.noiseRmsM, 0.3e-6);
+    const double threshold = std::max(4.0 * ev.noiseRmsM, kMinSpikeM);
     if (std::abs(peak) <= threshold)
         return;
     const double half = 0.5 * peak;
@@ -177,8 +176,12 @@ Coverage coverageOf(const io::BallBarTrace& t)
 /// Arguments of the "full_circle" refusal: source, covered °, from °, to °, largest gap °, allowed gap °.
 std::vector<std::string> coverageArgs(const io::BallBarTrace& t, const Coverage& c, const BallBarOptions& opt)
 {
-    return {t.source,          fmt((2.0 * kPi - c.maxGap) / kDeg, 1), fmt(c.from / kDeg, 1), fmt(c.to / kDeg, 1),
-            fmt(c.maxGap / kDeg, 1), fmt(opt.maxGapDeg, 1)};
+    return {t.source,
+            fmt((2.0 * kPi - c.maxGap) / kRadPerDeg, 1),
+            fmt(c.from / kRadPerDeg, 1),
+            fmt(c.to / kRadPerDeg, 1),
+            fmt(c.maxGap / kRadPerDeg, 1),
+            fmt(opt.maxGapDeg, 1)};
 }
 
 } // namespace
@@ -186,7 +189,7 @@ std::vector<std::string> coverageArgs(const io::BallBarTrace& t, const Coverage&
 Status requireFullCircle(const io::BallBarTrace& t, const BallBarOptions& opt, const std::string& what)
 {
     const Coverage c = coverageOf(t);
-    if (c.maxGap <= opt.maxGapDeg * kDeg)
+    if (c.maxGap <= opt.maxGapDeg * kRadPerDeg)
         return Status::success();
     const auto a = coverageArgs(t, c, opt);
     return makeError(ErrorCode::BadInput, a[0] + ": " + what +
@@ -224,8 +227,8 @@ Result<double> circularityOf(std::span<const double> angle, std::span<const doub
 Result<ReversalEvent> fitReversal(const io::BallBarTrace& t, int axis, double rev, const BallBarOptions& opt)
 {
     const double sigma = t.directionSign();
-    const double ex = opt.excludeDeg * kDeg;
-    const double outer = ex + opt.fitWindowDeg * kDeg;
+    const double ex = opt.excludeDeg * kRadPerDeg;
+    const double outer = ex + opt.fitWindowDeg * kRadPerDeg;
     std::vector<std::size_t> fitIdx, zoneIdx;
     std::size_t before = 0, after = 0;
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -239,7 +242,7 @@ Result<ReversalEvent> fitReversal(const io::BallBarTrace& t, int axis, double re
     }
     if (before < kMinSideSamples || after < kMinSideSamples)
         return makeError(ErrorCode::BadInput,
-                         t.source + ": the " + axisName(axis) + " reversal at " + fmt(rev / kDeg, 0) +
+                         t.source + ": the " + axisName(axis) + " reversal at " + fmt(rev / kRadPerDeg, 0) +
                              "° is not covered (needs at least " + std::to_string(kMinSideSamples) + " samples from " +
                              fmt(opt.excludeDeg, 1) + "° to " + fmt(opt.excludeDeg + opt.fitWindowDeg, 1) +
                              "° on each side; found " + std::to_string(before) + " before, " + std::to_string(after) +
@@ -268,22 +271,39 @@ Result<ReversalEvent> fitReversal(const io::BallBarTrace& t, int axis, double re
     ev.stepStdErrM = ev.noiseRmsM * std::sqrt(f.varDiag(4));
     ev.poly = {f.coef(0), f.coef(1), f.coef(2), f.coef(3)};
 
-    std::vector<std::pair<double, double>> zone;
-    // The reversal instant is known only to within a sample: samples that close to it take whichever
-    // side of the step fits them better, so the step itself is never reported as a spike.
+    // Step and spike told apart inside the zone (docs/ballbar.md "Reversal spikes"): relative to the
+    // local smooth part, the deviation is at the level before the step, L0 = −h/2·|u_a|, until the
+    // reversal and ends at the level after it, L1 = +h/2·|u_a|. A backlash (or lost motion) moves it from
+    // L0 to L1 monotonically and stays there: the transition is the running extreme towards L1, clamped to
+    // [L0, L1]. A spike is what departs from that transition and comes back: the residual against it.
+    // Before the reversal (more than 1.5 samples, the uncertainty of the reversal instant) the transition
+    // has not started and the spike is the residual against L0.
     const double sampleStep = meanStepRad(t);
+    std::vector<std::pair<double, double>> rel; // (d, deviation − smooth part) sorted by d
     for (std::size_t i : zoneIdx) {
-        const auto r = row(i);
-        double res = t.deviationM[i] - r.dot(f.coef.transpose());
-        if (std::abs(r(1)) < 1.5 * sampleStep) {
-            const double smooth = f.coef(0) + r(1) * (f.coef(1) + r(1) * (f.coef(2) + r(1) * f.coef(3)));
-            const double half = 0.5 * f.coef(4) * std::abs(axisProjection(axis, t.angleRad[i]));
-            const double a1 = t.deviationM[i] - smooth - half, a2 = t.deviationM[i] - smooth + half;
-            res = std::abs(a1) < std::abs(a2) ? a1 : a2;
-        }
-        zone.emplace_back(r(1), res);
+        const double d = sigma * wrapPi(t.angleRad[i] - rev);
+        const double smooth = f.coef(0) + d * (f.coef(1) + d * (f.coef(2) + d * f.coef(3)));
+        rel.emplace_back(d, t.deviationM[i] - smooth);
     }
-    std::sort(zone.begin(), zone.end());
+    std::vector<std::size_t> order(rel.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+        order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rel[a].first < rel[b].first; });
+    std::vector<std::pair<double, double>> zone;
+    const double h = f.coef(4);
+    const double towards = h >= 0.0 ? 1.0 : -1.0; // direction from L0 to L1
+    double progress = 0.0;                        // running extreme of the transition, 0 (L0) … |h| (L1)
+    for (std::size_t k : order) {
+        const auto [d, r] = rel[k];
+        const double u = std::abs(axisProjection(axis, rev + sigma * d));
+        const double l0 = -0.5 * h * u;
+        if (d <= -1.5 * sampleStep) {
+            zone.emplace_back(d, r - l0);
+            continue;
+        }
+        progress = std::clamp(std::max(progress, towards * (r - l0)), 0.0, std::abs(h) * u);
+        zone.emplace_back(d, r - (l0 + towards * progress));
+    }
     findSpike(ev, zone, rev, sigma);
     return ev;
 }
@@ -472,7 +492,7 @@ Status jointFit(const io::BallBarTrace& t, const BallBarOptions& opt, RunDiagnos
 {
     std::vector<std::size_t> idx;
     for (std::size_t i = 0; i < t.size(); ++i) {
-        if (!inAnySpikeZone(t.angleRad[i], run.sigma, opt.excludeDeg * kDeg))
+        if (!inAnySpikeZone(t.angleRad[i], run.sigma, opt.excludeDeg * kRadPerDeg))
             idx.push_back(i);
     }
     constexpr Eigen::Index kSmooth = 9;

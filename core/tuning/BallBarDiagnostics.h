@@ -25,6 +25,10 @@
 
 namespace axistune::tuning {
 
+/// Smallest reversal step reported as a backlash and smallest reversal spike [m].
+inline constexpr double kMinBacklashM = 0.3e-6;
+inline constexpr double kMinSpikeM = 0.3e-6;
+
 struct BallBarOptions {
     double excludeDeg = 4.0;    ///< half-window around a reversal left out of the smooth fits (spike zone)
     double fitWindowDeg = 20.0; ///< width of each side window of the local step fit, beyond excludeDeg
@@ -41,7 +45,9 @@ struct ReversalEvent {
     double noiseRmsM = 0.0;       ///< rms residual of the local fit windows
     std::array<double, 4> poly{}; ///< local smooth part c0 + c1·d + c2·d² + c3·d³ (d = travel angle from reversal, rad)
     bool spike = false;           ///< a spike above the detection rule was found
-    double spikeHeightM = 0.0;  ///< signed peak of the residual in the spike zone (outward positive)
+    /// signed peak of the spike in the spike zone (outward positive): the residual against the step's
+    /// monotonic transition from the level before the reversal to the level after it (docs/ballbar.md)
+    double spikeHeightM = 0.0;
     double spikeAngleRad = 0.0; ///< angle of the peak
     double spikeWidthRad = 0.0; ///< full width at half height
 };
@@ -124,6 +130,10 @@ struct BallBarReport {
     std::optional<double> centerXM, centerYM;
     std::optional<double> radiusDeviationM;
     std::array<std::optional<double>, 2> backlashM;
+    /// A backlash (reversal step) is reported when |backlashM| > backlashThresholdM (4× its standard error,
+    /// at least kMinBacklashM); otherwise the step is noise or the tail of a spike.
+    std::array<bool, 2> backlashDetected{};
+    std::array<double, 2> backlashThresholdM{};
     std::vector<ReversalSpike> spikes;
     std::optional<double> scaleMismatch;  ///< εx − εy (ratio)
     std::optional<double> squarenessRad;  ///< γ

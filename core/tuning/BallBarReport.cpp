@@ -2,25 +2,23 @@
 // Ball-bar report: combines per-run diagnostics (BallBarDiagnostics.cpp) over CW and CCW runs.
 // Squareness and servo mismatch both give a sin2θ term; servo mismatch changes sign with the travel
 // direction (k = γR/2 + σvΔτ/2, docs/ballbar.md), so two directions separate them by least squares.
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::tuning {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using model::kRadPerDeg;
 
 std::string fmt(double v, int prec = 2)
 {
-    std::ostringstream os;
-    os.setf(std::ios::fixed);
-    os.precision(prec);
-    os << v;
-    return os.str();
+    return model::formatFixed(v, prec);
 }
 
 const char* axisName(int axis)
@@ -102,13 +100,14 @@ void combineCyclic(BallBarReport& rep, const std::vector<const RunDiagnostics*>&
 void combineReversals(BallBarReport& rep, const BallBarOptions& opt)
 {
     for (int axis = 0; axis < 2; ++axis) {
-        double sum = 0.0;
+        double sum = 0.0, var = 0.0;
         int n = 0;
         for (const auto& r : rep.runs) {
             for (const auto& ev : r.events) {
                 if (ev.axis != axis)
                     continue;
                 sum += ev.stepM;
+                var += ev.stepStdErrM * ev.stepStdErrM;
                 ++n;
                 if (ev.spike)
                     rep.spikes.push_back({axis, ev.spikeAngleRad, ev.spikeHeightM, ev.spikeWidthRad, r.source});
@@ -122,22 +121,34 @@ void combineReversals(BallBarReport& rep, const BallBarOptions& opt)
             continue;
         }
         rep.backlashM[axis] = sum / n;
-        const std::vector<std::string> args{std::to_string(n), axisName(axis), axis == 0 ? "0°/180°" : "90°/270°",
-                                            fmt(opt.excludeDeg, 1), fmt(opt.excludeDeg + opt.fitWindowDeg, 1)};
+        rep.backlashThresholdM[axis] = std::max(4.0 * std::sqrt(var) / n, kMinBacklashM);
+        const bool detected = std::abs(*rep.backlashM[axis]) > rep.backlashThresholdM[axis];
+        rep.backlashDetected[axis] = detected;
+        const std::vector<std::string> args{std::to_string(n),
+                                            axisName(axis),
+                                            axis == 0 ? "0°/180°" : "90°/270°",
+                                            fmt(opt.excludeDeg, 1),
+                                            fmt(opt.excludeDeg + opt.fitWindowDeg, 1),
+                                            fmt(rep.backlashThresholdM[axis] * 1e6, 2)};
         rep.findings.push_back({std::string("backlash_") + (axis == 0 ? "x" : "y"), *rep.backlashM[axis] * 1e6, "um",
                                 "mean radial step across " + args[0] + " " + args[1] + " reversal(s) (" + args[2] +
                                     "): joint fit of a cubic plus a step over " + args[3] + "–" + args[4] +
-                                    "° each side of the reversal; positive = outward step (lost motion), negative = "
-                                    "inward (over-compensation)",
-                                "backlash", args});
+                                    "° each side of the reversal, where a spike has decayed; positive = outward step "
+                                    "(lost motion), negative = inward (over-compensation); " +
+                                    (detected ? "a backlash: " : "no backlash: ") + "|step| " +
+                                    (detected ? "above " : "not above ") + args[5] +
+                                    " um (4× its standard error, at least 0.3 um)",
+                                detected ? "backlash" : "backlash.not_detected", args});
     }
     for (const auto& s : rep.spikes) {
-        const std::vector<std::string> args{fmt(s.angleRad / kDeg, 1), fmt(opt.excludeDeg, 1), axisName(s.axis),
-                                            fmt(s.widthRad / kDeg, 2)};
+        const std::vector<std::string> args{fmt(s.angleRad / kRadPerDeg, 1), fmt(opt.excludeDeg, 1), axisName(s.axis),
+                                            fmt(s.widthRad / kRadPerDeg, 2)};
         rep.findings.push_back({std::string("reversal_spike_") + (s.axis == 0 ? "x" : "y"), s.heightM * 1e6, "um",
-                                "peak residual at " + args[0] + "°, within ±" + args[1] + "° of a " + args[2] +
+                                "transient at " + args[0] + "°, within ±" + args[1] + "° of a " + args[2] +
                                     " reversal (width " + args[3] +
-                                    "° at half height) against the local step fit; reported when above 4× the "
+                                    "° at half height): the peak departure from the step's own transition (the level "
+                                    "before the reversal, then a monotonic move to the level after it, which a "
+                                    "backlash follows) that comes back to that level; reported when above 4× the "
                                     "fit-window noise and 0.3 um",
                                 "reversal_spike", args});
     }

@@ -8,6 +8,8 @@
 // (the printed one puts e^{−τs} on the s-term only); with τ = 0 both agree.
 #include "core/tuning/CurrentLoop.h"
 
+#include "core/model/Constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -18,7 +20,7 @@ namespace axistune::tuning {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using model::kPi;
 
 double gmFactor(double gainMarginDb) { return std::pow(10.0, -gainMarginDb / 20.0); }
 

@@ -4,26 +4,25 @@
 // of §1.8 instead of the printed (4.13), which is exact only for ΔT₁ = ΔT₂), §1.9/§4.5 (LM-3, eq. 4.14).
 #include "core/tuning/LostMotion.h"
 
+#include "core/model/Constants.h"
+#include "core/model/Number.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace axistune::tuning {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using model::kPi;
+using model::kRadPerDeg;
 constexpr double kDistinctXM = 1e-6;           ///< x values closer than this count as one position
 constexpr double kApparentThesisUmPerNmM = 17; ///< Fig. 4.4(a), spec §1.4
 
 std::string fmtG(double v)
 {
-    std::ostringstream os;
-    os.precision(3);
-    os << v;
-    return os.str();
+    return model::formatNumber(v, 3);
 }
 
 double wrapPi(double a)
@@ -218,7 +217,7 @@ double cutIn(const io::BallBarTrace& t, int axis, const BallBarOptions& opt)
             continue;
         for (std::size_t i = 0; i < t.size(); ++i) {
             const double d = sigma * wrapPi(t.angleRad[i] - rev);
-            if (d <= 0.0 || d >= opt.excludeDeg * kDeg)
+            if (d <= 0.0 || d >= opt.excludeDeg * kRadPerDeg)
                 continue;
             const auto& c = ev->poly;
             // Inward of the lower of the two levels either side of the step: a gradual transition
@@ -242,7 +241,7 @@ Result<CompensationPrediction> predictCompensation(const io::BallBarTrace& t, co
                                                   "' missing (needed to predict the compensation)");
     const int axis = setup.axis;
     const double sigma = t.directionSign();
-    const double ex = opt.excludeDeg * kDeg;
+    const double ex = opt.excludeDeg * kRadPerDeg;
     std::vector<ReversalEvent> events;
     for (double rev : axis == 0 ? std::array<double, 2>{0.0, kPi} : std::array<double, 2>{0.5 * kPi, 1.5 * kPi}) {
         if (auto ev = fitReversal(t, axis, rev, opt))

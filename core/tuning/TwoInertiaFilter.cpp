@@ -6,6 +6,8 @@
 // is integrated with RK4 (the jerk is piecewise constant, so a*, v*, y* are exact polynomials).
 #include "core/tuning/TwoInertiaFilter.h"
 
+#include "core/model/Constants.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,7 +17,7 @@
 namespace axistune::tuning {
 
 namespace {
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 constexpr double kHfGain = 2.5;
 }  // namespace
 

@@ -8,10 +8,10 @@
 //  * Levenberg–Marquardt on r = w·ln(H_model/H_meas) (real: log-magnitude, imaginary: phase), which
 //    weights every decade alike; w = √coherence where defined, else 1; parameters ln J_m, ln J_L,
 //    ln K, ln C (kept positive) and the delay in ms.
+#include "core/model/Constants.h"
 #include "core/tuning/TwoInertia.h"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -22,7 +22,7 @@ namespace axistune::tuning {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 
 struct Point {
     double fHz;

@@ -7,6 +7,7 @@
 
 #include "core/dsp/InjectionHold.h"
 #include "core/dsp/LoopAnalysis.h"
+#include "core/model/Constants.h"
 
 #include <algorithm>
 #include <array>
@@ -16,7 +17,7 @@
 namespace axistune::tuning {
 
 namespace {
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using model::kTwoPi;
 using State = std::array<double, 3>;
 
 State add(const State& s, const State& k, double c) { return {s[0] + c * k[0], s[1] + c * k[1], s[2] + c * k[2]}; }

@@ -4,6 +4,8 @@
 // position-gain stability limit on the fitted two-inertia model (§2.11 [DERIVED] limits, §4.11).
 #include "core/tuning/VelocityLoop.h"
 
+#include "core/model/Constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,8 +16,8 @@ namespace axistune::tuning {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kDeg = 180.0 / std::numbers::pi;
+using model::kDegPerRad;
+using model::kTwoPi;
 
 std::vector<double> unwrappedPhase(const std::vector<std::complex<double>>& h)
 {
@@ -75,7 +77,7 @@ LoopMargins loopMargins(const std::vector<double>& f, const std::vector<std::com
         if ((g0 >= 0.0) != (g1 >= 0.0)) {  // gain crossover; keep the highest one
             const double t = g0 / (g0 - g1);
             m.crossoverHz = std::exp(lf0 + t * (lf1 - lf0));
-            m.phaseMarginDeg = wrapDeg((ph[i - 1] + t * (ph[i] - ph[i - 1])) * kDeg + 180.0);
+            m.phaseMarginDeg = wrapDeg((ph[i - 1] + t * (ph[i] - ph[i - 1])) * kDegPerRad + 180.0);
         }
         const double im0 = L[i - 1].imag();
         const double im1 = L[i].imag();
@@ -120,14 +122,14 @@ Result<VelocityPi> velocityPiFromFrf(const dsp::FrequencyResponse& plant, double
     const std::size_t i0 = i1 - 1;
     const double t = (std::log(fc) - std::log(f[i0])) / (std::log(f[i1]) - std::log(f[i0]));
     const double mag = std::exp(std::log(std::abs(h[i0])) + t * (std::log(std::abs(h[i1])) - std::log(std::abs(h[i0]))));
-    const double phase = (ph[i0] + t * (ph[i1] - ph[i0])) * kDeg;
+    const double phase = (ph[i0] + t * (ph[i1] - ph[i0])) * kDegPerRad;
     const double d = wrapDeg(-180.0 + pmDeg - phase);  // phase the PI must contribute
     if (d > 0.0 || d <= -89.0) {
         return makeError(ErrorCode::OutOfRange, "a PI cannot give " + std::to_string(pmDeg) + " deg phase margin at " +
                                                     std::to_string(fc) + " Hz: it would need " + std::to_string(d) +
                                                     " deg (a PI gives 0 … −90 deg)");
     }
-    const double dRad = d / kDeg;
+    const double dRad = d / kDegPerRad;
     VelocityPi pi;
     pi.kpNmsPerRad = std::cos(dRad) / mag;
     pi.kiNmPerRad = pi.kpNmsPerRad * kTwoPi * fc * std::tan(-dRad);

@@ -4,8 +4,6 @@
 // Abort of a long FRF test (within 1 s, parameters restored), and a drive killed during a test (the
 // reply fails, connectionLost, not connected, the GUI event loop kept running).
 #include "app/gui/DriveController.h"
-#include "tests/app/cli/SimDriveProcess.h"
-#include "tests/gui/GuiTestUtil.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -13,6 +11,10 @@
 #include <QtTest>
 
 #include <optional>
+
+#include "tests/NumberText.h"
+#include "tests/app/cli/SimDriveProcess.h"
+#include "tests/gui/GuiTestUtil.h"
 
 using axistune::gui::DriveController;
 using axistune::gui::DriveReply;
@@ -111,7 +113,7 @@ private slots:
         for (const char* ch : {"t_s", "velocity_cmd_rad_s", "motor_vel_rad_s", "torque_cmd_Nm", "current_A"})
             QVERIFY2(r.capture->channel(ch), ch);
         // Length: duration × trace rate (metadata), ±1 sample.
-        const double fs = std::stod(r.capture->metadata.at("fs_Hz"));
+        const double fs = axistune::testutil::stod(r.capture->metadata.at("fs_Hz"));
         QVERIFY(std::abs(static_cast<double>(r.capture->size()) - 0.1 * fs) <= 1.0);
         const auto& cmd = r.capture->channel("velocity_cmd_rad_s")->data;
         QCOMPARE(cmd.front(), 0.0);

@@ -17,9 +17,9 @@
 #include "core/machining/ToolModel.h"
 #include "widgets/CurvePlot.h"
 
-#include <QCoreApplication>
 #include <QAbstractButton>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -33,6 +33,7 @@
 #include <utility>
 
 #include "tests/app/cli/CliRunner.h"
+#include "tests/core/machining/RealToolFrf.h"
 #include "tests/gui/GuiTestUtil.h"
 
 using namespace axistune;
@@ -120,6 +121,55 @@ private slots:
         QVERIFY(tool->isComplete());
         QVERIFY(!tool->fitToolFrfs(dir.filePath("missing.csv"), dir.filePath("y.csv"), 1));
         QVERIFY(tool->errorLabel()->text().contains("missing.csv"));
+    }
+
+    void realToolFrfFitAndRefusal()
+    {
+        // H11 of ../shared/data/real (a real tool holder, impact-hammer receptance, issue 19). The whole file
+        // with one or two modes is refused: the reason is shown, the table is emptied and Next is disabled (no
+        // lobes). The automatic band and mode count give the three modes the data's author published at
+        // 1074, 1961 and 2617 Hz (within 1.5 %; tests/core/machining/test_tool_fit_real.cpp checks ζ and k).
+        QTemporaryDir dir;
+        const auto frf = axistune::testing::readRealToolFrf(1);
+        QCOMPARE(frf.size(), std::size_t(5001));
+        const QString path = dir.filePath("h11.csv");
+        QVERIFY(io::writeFrfCsvFile(path.toStdString(), frf).ok());
+        AppContext ctx;
+        MachiningWizard w(ctx);
+        w.resize(1000, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* tool = w.toolPage();
+        tool->fitMinHz()->setText("0");
+        tool->fitMaxHz()->setText("5000");
+        for (int modes : {1, 2}) {
+            tool->fitModes()->setValue(modes);
+            QVERIFY(!tool->fitToolFrfs(path, path));
+            QVERIFY(!tool->isComplete());
+            QCOMPARE(tool->table()->rowCount(), 0);
+            QVERIFY(!w.button(QWizard::NextButton)->isEnabled());
+            QVERIFY2(tool->errorLabel()->isVisibleTo(&w) && tool->errorLabel()->text().contains("h11.csv") &&
+                         tool->errorLabel()->text().contains("refused"),
+                     qPrintable(tool->errorLabel()->text()));
+            if (modes == 1)
+                maybeScreenshot(&w, "machining-01c-tool-fit-refused");
+        }
+        tool->fitMinHz()->clear();
+        tool->fitMaxHz()->clear();
+        tool->fitModes()->setValue(0);
+        QVERIFY2(tool->fitToolFrfs(path, path), qPrintable(tool->errorLabel()->text()));
+        auto t = tool->tool();
+        QVERIFY(t.ok());
+        QCOMPARE(t->modesX.size(), std::size_t(3));
+        QCOMPARE(t->modesY.size(), std::size_t(3));
+        const double published[3] = {1074.0, 1961.0, 2617.0};
+        for (int j = 0; j < 3; ++j)
+            QVERIFY(std::abs(machining::naturalFrequencyHz(t->modesX[std::size_t(j)]) / published[j] - 1.0) < 0.015);
+        QVERIFY(tool->isComplete());
+        QVERIFY(w.button(QWizard::NextButton)->isEnabled());
+        QVERIFY(!tool->errorLabel()->isVisibleTo(&w));
+        QVERIFY(!tool->fitStatus()->text().isEmpty());
+        maybeScreenshot(&w, "machining-01b-tool-fit");
     }
 
     void badDataBlocksNextWithTheCoreMessage()

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // End-to-end: axistune-cli ballbar and lost-motion on the reference traces of tests/data/ballbar
 // (made by make_traces.py with the injected values in injected.json) and on malformed files.
+#include "core/model/Number.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -38,7 +40,8 @@ std::string circleRows(int n)
 {
     std::string s = "angle_deg,deviation_um\n";
     for (int i = 0; i < n; ++i)
-        s += std::to_string(i * 360.0 / n) + "," + std::to_string(0.1 * (i % 3)) + "\n";
+        s += axistune::model::formatShortest(i * 360.0 / n) + "," + axistune::model::formatShortest(0.1 * (i % 3)) +
+             "\n";
     return s;
 }
 

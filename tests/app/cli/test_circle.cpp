@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
 #include "tests/app/cli/SimDriveProcess.h"
 
@@ -229,7 +230,7 @@ TEST(CliCircle, ThreeCirclesThroughLostMotionGiveThePresetY)
         auto t = io::readBallBarCsvFile(path);
         ASSERT_TRUE(t.ok()) << t.error().detail;
         EXPECT_NEAR(t->radiusM, 0.05, 1e-12);
-        EXPECT_NEAR(t->centerYM, std::stod(cy) * 1e-3, 1e-12);
+        EXPECT_NEAR(t->centerYM, axistune::testutil::stod(cy) * 1e-3, 1e-12);
         files += " " + path;
     }
     auto r = runCli("lost-motion --ballbar" + files + " --axis y --screw-offset-m 0.2 --exclude-deg 8");

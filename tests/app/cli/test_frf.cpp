@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // End-to-end tests of `axistune-cli frf` (docs/frequency-response.md).
-#include "tests/app/cli/CliRunner.h"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <sstream>
 #include <vector>
+
+#include "tests/NumberText.h"
+#include "tests/app/cli/CliRunner.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::runCli;
@@ -41,7 +41,7 @@ std::vector<std::vector<double>> readRows(const std::string& path, std::vector<s
         }
         std::vector<double> r;
         for (const auto& c : cells)
-            r.push_back(c.empty() ? std::nan("") : std::stod(c));
+            r.push_back(c.empty() ? std::nan("") : axistune::testutil::stod(c));
         rows.push_back(r);
     }
     return rows;
@@ -227,10 +227,11 @@ TEST(CliFrf, MarginsOfAClosedLoopFrf)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto pm = r.out.find("\"phase_margin_deg\":");
     ASSERT_NE(pm, std::string::npos) << r.out;
-    EXPECT_NEAR(std::stod(r.out.substr(pm + 19)), 90.0, 1e-6);
+    EXPECT_NEAR(axistune::testutil::stod(r.out.substr(pm + 19)), 90.0, 1e-6);
     const auto pf = r.out.find("\"phase_margin_freq_Hz\":");
     ASSERT_NE(pf, std::string::npos);
-    EXPECT_NEAR(std::stod(r.out.substr(pf + 23)), 50.0, 1e-6);  // log|L| is linear in log f: interpolation is exact
+    EXPECT_NEAR(axistune::testutil::stod(r.out.substr(pf + 23)), 50.0,
+                1e-6); // log|L| is linear in log f: interpolation is exact
     EXPECT_NE(r.out.find("\"gain_margin_dB\":null"), std::string::npos) << r.out;
     std::filesystem::remove_all(dir);
 }

@@ -1,19 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // lobes --tool-frf-x/--tool-frf-y: tool modes fitted to a receptance FRF CSV give the same lobes as the
 // equivalent tool.json. The FRFs are written here analytically, H = Σ 1/(k − mω² + jcω) in m/N.
-#include "tests/app/cli/CliRunner.h"
-
-#include <gtest/gtest.h>
+#include "core/model/Number.h"
 
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/NumberText.h"
+#include "tests/app/cli/CliRunner.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::readFileText;
@@ -31,16 +33,15 @@ void writeFrfCsv(const std::filesystem::path& p, const std::vector<Mode>& modes)
 {
     std::ofstream f(p);
     f << "f_Hz,re,im,mag_dB,phase_deg,coherence,valid\n";
-    char line[256];
+    const auto g = [](double v) { return axistune::model::formatNumber(v, 17); };
     for (int i = 0; i < 400; ++i) {
         const double hz = 500.0 * std::pow(6.0, i / 399.0);
         const double w = 2.0 * std::numbers::pi * hz;
         std::complex<double> h = 0.0;
         for (const auto& m : modes)
             h += 1.0 / std::complex<double>(m.k - m.m * w * w, m.c * w);
-        std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,,1\n", hz, h.real(), h.imag(),
-                      20.0 * std::log10(std::abs(h)), std::arg(h) * 180.0 / std::numbers::pi);
-        f << line;
+        f << g(hz) << ',' << g(h.real()) << ',' << g(h.imag()) << ',' << g(20.0 * std::log10(std::abs(h))) << ','
+          << g(std::arg(h) * 180.0 / std::numbers::pi) << ",,1\n";
     }
 }
 
@@ -57,7 +58,7 @@ double firstLimit(const std::string& csvText)
     std::string line;
     std::getline(csv, line);
     std::getline(csv, line);
-    return std::stod(line.substr(line.find(',') + 1));
+    return axistune::testutil::stod(line.substr(line.find(',') + 1));
 }
 
 }  // namespace
@@ -131,5 +132,22 @@ TEST(CliLobesToolFrf, BadFilesExitWith2)
     r = runCli("lobes" + common);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("--tool"), std::string::npos) << r.err;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CliLobesToolFrf, RigidYToolJsonIsAccepted)
+{
+    // The Insperger–Stépán one-direction benchmark (modes_y: []; m = 0.03993 kg, f_n = 922 Hz, ζ = 0.011 →
+    // k = m(2πf_n)², c = 2ζ√(km)) at 7500 min⁻¹, the bottom of a lobe:
+    // tests/data/machining/insperger_1dof_ref.out gives 0.3218 mm (120 steps); 3 % as in
+    // tests/core/machining/test_one_direction_benchmark.cpp.
+    const auto dir = makeTempDir("lobesrigidy");
+    writeFile(dir / "tool.json", R"({"modes_x":[{"mass_kg":0.03993,"damping_Ns_per_m":5.0890,"stiffness_N_per_m":1.34005e6}],
+                                     "modes_y":[]})");
+    writeFile(dir / "cut.json", R"({"teeth":2,"Kt_N_per_m2":6e8,"Kr_N_per_m2":2e8,"radial_immersion":1.0,"milling":"down"})");
+    auto r = runCli("lobes --tool " + (dir / "tool.json").string() + " --cut " + (dir / "cut.json").string() +
+                    " --rpm-min 7500 --rpm-max 7500 --rpm-step 10 --steps-per-period 120 --out " + (dir / "l.csv").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NEAR(firstLimit(readFileText(dir / "l.csv")), 0.3218e-3, 0.03 * 0.3218e-3);
     std::filesystem::remove_all(dir);
 }

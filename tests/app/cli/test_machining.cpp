@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // End-to-end tests of the machining subcommands: lobes, spindle-speed, cutting-force, chatter-detect.
-#include "tests/app/cli/CliRunner.h"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/NumberText.h"
+#include "tests/app/cli/CliRunner.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::readFileText;
@@ -42,7 +42,8 @@ TEST(CliMachining, LobesWritesCsvWithReferenceValues)
     std::vector<std::pair<double, double>> rows;
     while (std::getline(csv, line)) {
         const auto comma = line.find(',');
-        rows.emplace_back(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
+        rows.emplace_back(axistune::testutil::stod(line.substr(0, comma)),
+                          axistune::testutil::stod(line.substr(comma + 1)));
     }
     ASSERT_EQ(rows.size(), 2u);
     EXPECT_DOUBLE_EQ(rows[0].first, 2800.0);
@@ -84,7 +85,7 @@ TEST(CliMachining, SpindleSpeedPocketRule)
     EXPECT_NE(r.out.find("\"lobe\": 7"), std::string::npos) << r.out;
     const auto p = r.out.find("\"pocket_rpm\": ");
     ASSERT_NE(p, std::string::npos);
-    EXPECT_NEAR(std::stod(r.out.substr(p + 14)), 2978.57, 0.01);
+    EXPECT_NEAR(axistune::testutil::stod(r.out.substr(p + 14)), 2978.57, 0.01);
     EXPECT_EQ(runCli("spindle-speed --chatter-hz -5 --rpm 2800 --teeth 4").exitCode, 2);
     EXPECT_EQ(runCli("spindle-speed --rpm 2800 --teeth 4").exitCode, 2);
 }
@@ -96,5 +97,5 @@ TEST(CliMachining, SpindleSpeedWithLobeDiagram)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto p = r.out.find("\"cost_optimal_rpm\": ");
     ASSERT_NE(p, std::string::npos) << r.out;
-    EXPECT_NEAR(std::stod(r.out.substr(p + 20)), 2900.0, 30.0);  // spec §5.1: argmin J_8 ≈ 2895–2905 rpm
+    EXPECT_NEAR(axistune::testutil::stod(r.out.substr(p + 20)), 2900.0, 30.0); // spec §5.1: argmin J_8 ≈ 2895–2905 rpm
 }

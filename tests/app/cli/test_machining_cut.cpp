@@ -4,6 +4,8 @@
 //   axistune-cli lobes --tool resources/samples/tool-table1.json --cut resources/samples/cut-table1.json
 //       --rpm-min 1000 --rpm-max 3500 --rpm-step 50 --steps-per-period 160
 // gives 1.07 mm at 1500 rpm. Stable: 0.5 mm (0.47 × limit); chattering: 2.0 mm (1.9 × limit).
+#include "core/model/Number.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
 
 using axistune::testing::makeTempDir;
@@ -27,8 +30,8 @@ const std::string kSamples = std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resou
 std::string cutArgs(double depthM, const std::filesystem::path& out)
 {
     return "simulate-cut --machine vmc --axis X --tool " + kSamples + "tool-table1.json --cut " + kSamples +
-           "cut-table1.json --rpm 1500 --depth-m " + std::to_string(depthM) + " --duration-s 1.2 --seed 3 --out " +
-           out.string();
+           "cut-table1.json --rpm 1500 --depth-m " + axistune::model::formatShortest(depthM) +
+           " --duration-s 1.2 --seed 3 --out " + out.string();
 }
 
 /// Column `name` of a capture CSV (skips "# " metadata lines).
@@ -55,7 +58,7 @@ std::vector<double> column(const std::filesystem::path& p, const std::string& na
                 return {};
             continue;
         }
-        out.push_back(std::stod(cells.at(static_cast<std::size_t>(idx))));
+        out.push_back(axistune::testutil::stod(cells.at(static_cast<std::size_t>(idx))));
     }
     return out;
 }

@@ -13,7 +13,9 @@
 #include <sys/wait.h>
 #include <thread>
 
+#include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
+#include "tests/app/cli/ModbusTestUtil.h"
 #include "tests/app/cli/SimDriveProcess.h"
 
 using namespace axistune;
@@ -23,45 +25,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using axistune::testing::SimDrive;
-
-
-nlohmann::json registerMap()
-{
-    return nlohmann::json::parse(
-        readFileText(std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/drives/axistune-sim.json"));
-}
-
-int parameterAddress(const std::string& key)
-{
-    const auto map = registerMap();
-    for (const auto& p : map["parameters"]) {
-        if (p["key"] == key)
-            return p["address"].get<int>();
-    }
-    return -1;
-}
-
-/// Runs mbpoll once (1 s timeout) and returns its stdout and stderr.
-std::string mbpoll(int port, const std::string& args)
-{
-    const std::string cmd = "mbpoll -m tcp -0 -1 -o 1 -p " + std::to_string(port) + " " + args + " 2>&1";
-    std::string out;
-    if (FILE* f = popen(cmd.c_str(), "r")) {
-        char buf[512];
-        while (fgets(buf, sizeof buf, f))
-            out += buf;
-        pclose(f);
-    }
-    return out;
-}
-
-/// The value mbpoll printed for reference `address` ("[1020]: \t0.8").
-double mbpollValue(const std::string& out, int address)
-{
-    const std::string tag = "[" + std::to_string(address) + "]:";
-    const auto at = out.find(tag);
-    return at == std::string::npos ? std::nan("") : std::strtod(out.c_str() + at + tag.size(), nullptr);
-}
 
 double paramsValue(const std::string& uri, const std::string& key, const std::string& axis = "X")
 {

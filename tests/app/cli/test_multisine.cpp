@@ -9,6 +9,7 @@
 #include <fstream>
 #include <gtest/gtest.h>
 
+#include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
 #include "tests/app/cli/SimDriveProcess.h"
 
@@ -22,7 +23,7 @@ namespace {
 double jsonNumber(const std::string& json, const std::string& key)
 {
     const auto p = json.find("\"" + key + "\": ");
-    return p == std::string::npos ? std::nan("") : std::stod(json.substr(p + key.size() + 4));
+    return p == std::string::npos ? std::nan("") : axistune::testutil::stod(json.substr(p + key.size() + 4));
 }
 
 } // namespace

@@ -17,9 +17,9 @@
 #include <numbers>
 #include <thread>
 
-#include "tests/core/sim/LiftedModel.h"
-
+#include "tests/NumberText.h"
 #include "tests/core/device/DriveTestUtil.h"
+#include "tests/core/sim/LiftedModel.h"
 
 using namespace axistune;
 using namespace axistune::device;
@@ -41,7 +41,7 @@ std::complex<double> reference(const simtest::LiftedInjectionLoop& model, const 
     std::complex<double> ref = model.closedLoop(f);
     if (dsp::isInjectionHoldCorrected(frf)) {
         const int n = std::stoi(frf.metadata.at("injection_hold_ticks"));
-        ref /= dsp::injectionHoldFactor(f, std::stod(frf.metadata.at("injection_hold_period_s")), n);
+        ref /= dsp::injectionHoldFactor(f, axistune::testutil::stod(frf.metadata.at("injection_hold_period_s")), n);
     }
     return ref;
 }
@@ -195,8 +195,8 @@ TEST(SimulatedDriveMultisine, TracedInjectionPeakIsTheRequestedPeak)
     for (double x : d->data)
         peak = std::max(peak, std::abs(x));
     EXPECT_LE(peak, limit * (1.0 + 1e-12));
-    EXPECT_NEAR(std::stod(m.frf.metadata.at("peak_Nm")), limit, 1e-9 * limit);
-    EXPECT_LT(std::stod(m.frf.metadata.at("crest_factor")), 2.0);
+    EXPECT_NEAR(axistune::testutil::stod(m.frf.metadata.at("peak_Nm")), limit, 1e-9 * limit);
+    EXPECT_LT(axistune::testutil::stod(m.frf.metadata.at("crest_factor")), 2.0);
     EXPECT_EQ(m.relativeNoise.size(), m.frf.size());
 }
 

@@ -5,15 +5,16 @@
 #include "core/dsp/Excitation.h"
 #include "core/dsp/Welch.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <map>
 #include <numbers>
 #include <sstream>
 #include <string>
+
+#include "tests/NumberText.h"
 
 using namespace axistune;
 using namespace axistune::dsp;
@@ -43,7 +44,7 @@ std::map<std::string, std::vector<double>> readTable(const std::string& path)
         }
         for (std::size_t i = 0; i < cells.size(); ++i) {
             std::size_t used = 0;
-            const double v = std::stod(cells[i], &used);  // the reference files hold Python repr() floats
+            const double v = axistune::testutil::stod(cells[i], &used); // the reference files hold Python repr() floats
             EXPECT_EQ(used, cells[i].size()) << path << ": " << line;
             t[names[i]].push_back(v);
         }

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/FrfCsv.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <sstream>
+
+#include "tests/NumberText.h"
 
 using namespace axistune;
 
@@ -38,8 +39,8 @@ TEST(FrfCsv, HeaderAndRowFormat)
     ASSERT_EQ(cells.size(), 7u);
     EXPECT_EQ(cells[5], "");
     EXPECT_EQ(cells[6], "1");
-    EXPECT_NEAR(std::stod(cells[3]), 10.0 * std::log10(1.01), 1e-12);
-    EXPECT_NEAR(std::stod(cells[4]), -5.710593137499643, 1e-12);
+    EXPECT_NEAR(axistune::testutil::stod(cells[3]), 10.0 * std::log10(1.01), 1e-12);
+    EXPECT_NEAR(axistune::testutil::stod(cells[4]), -5.710593137499643, 1e-12);
 }
 
 TEST(FrfCsv, RoundTripIsExact)

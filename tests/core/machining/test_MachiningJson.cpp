@@ -91,7 +91,8 @@ TEST(MachiningJson, LobeInputsAreValidated)
     c.krNPerM2 = 0.294e9;
     c.radialImmersion = 0.5;
     LobeOptions o;
-    EXPECT_FALSE(stabilityLobes({{m}, {}}, c, {3000.0}, o).ok());
+    EXPECT_FALSE(stabilityLobes({{}, {}}, c, {3000.0}, o).ok()); // rigid in x and y
+    EXPECT_TRUE(stabilityLobes({{m}, {}}, c, {3000.0}, o).ok()); // rigid in y only (issue 19)
     EXPECT_FALSE(stabilityLobes({{m}, {m}}, c, {-3000.0}, o).ok());
     o.stepsPerPeriod = 1;
     EXPECT_FALSE(stabilityLobes({{m}, {m}}, c, {3000.0}, o).ok());
@@ -126,4 +127,20 @@ TEST(StabilityLobes, ParallelEqualsSerialAndModesAdd)
     auto two = monodromySpectralRadius({{half, half}, {half, half}}, c, 2800.0, 1e-3, 40);
     ASSERT_TRUE(one.ok() && two.ok());
     EXPECT_NEAR(*one, *two, 1e-9);
+}
+
+TEST(MachiningJson, EmptyModeListIsARigidDirection)
+{
+    // The one-direction benchmark (Insperger–Stépán): flexible in x only.
+    auto t = parseToolJson(R"({"modes_x":[{"mass_kg":0.03993,"damping_Ns_per_m":2.0,"stiffness_N_per_m":1.34e6}],
+                               "modes_y":[]})",
+                           "src.json");
+    ASSERT_TRUE(t.ok()) << t.error().detail;
+    EXPECT_EQ(t->modesX.size(), 1u);
+    EXPECT_TRUE(t->modesY.empty());
+    // Rigid in both directions leaves nothing to compute; a list that is not a list is still an error.
+    expectError(parseToolJson(R"({"modes_x":[],"modes_y":[]})", "src.json").error(), ErrorCode::BadInput,
+                "at least one mode");
+    expectError(parseToolJson(R"({"modes_x":[],"modes_y":{"mass_kg":1}})", "src.json").error(), ErrorCode::BadInput,
+                "modes_y");
 }

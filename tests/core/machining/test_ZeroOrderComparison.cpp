@@ -5,61 +5,32 @@
 // Valid where K_f(t) stays close to its mean: full slotting with four teeth, single-mode tool.
 #include "core/machining/StabilityLobes.h"
 
-#include <gtest/gtest.h>
-
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
-
 #include <cmath>
 #include <complex>
+#include <gtest/gtest.h>
 #include <numbers>
+
+#include "tests/core/machining/ZeroOrderReference.h"
 
 using namespace axistune::machining;
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Mean over one spindle revolution of Σ_j g_j M(φ_j), midpoint rule on the spec's element formulas.
-Eigen::Matrix2d meanCuttingMatrix(int teeth, double kt, double kr, double st, double en)
-{
-    const int n = 200000;
-    Eigen::Matrix2d sum = Eigen::Matrix2d::Zero();
-    for (int i = 0; i < n; ++i) {
-        const double p = st + (en - st) * (i + 0.5) / n;
-        const double s = std::sin(p), c = std::cos(p);
-        Eigen::Matrix2d m;
-        m << (kt * c + kr * s) * s, (kt * c + kr * s) * c, (-kt * s + kr * c) * s, (-kt * s + kr * c) * c;
-        sum += m;
-    }
-    // each tooth spends (en − st)/(2π) of the revolution in the cut
-    return sum / n * (en - st) / (2.0 * kPi) * teeth;
-}
-
-struct ZoaBottom {
-    double depthM;
-    double omegaC;
-    double psi;
-};
+using axistune::testing::meanCuttingMatrix;
+using axistune::testing::ZoaBottom;
 
 ZoaBottom zoaMinimum(const ModalParameters& m, const Eigen::Matrix2d& k0)
 {
-    ZoaBottom best{1e9, 0.0, 0.0};
     const double wn = std::sqrt(m.stiffnessNPerM / m.massKg);
-    for (double w = 0.9 * wn; w < 1.2 * wn; w += 1e-5 * wn) {
-        const std::complex<double> g = 1.0 / std::complex<double>(m.stiffnessNPerM - m.massKg * w * w, m.dampingNsPerM * w);
-        Eigen::ComplexEigenSolver<Eigen::Matrix2cd> es(k0.cast<std::complex<double>>() * g);
-        for (int e = 0; e < 2; ++e) {
-            const std::complex<double> target = -1.0 / es.eigenvalues()(e);
-            if (target.real() <= 0.0)
-                continue;
-            const double psi = kPi - 2.0 * std::arg(target);
-            const double a = std::abs(target) / (2.0 * std::sin(0.5 * psi));
-            if (a < best.depthM)
-                best = {a, w, psi};
-        }
-    }
-    return best;
+    return axistune::testing::zoaMinimum(
+        [&](const auto& visit) {
+            for (double w = 0.9 * wn; w < 1.2 * wn; w += 1e-5 * wn)
+                visit(w, 1.0 / std::complex<double>(m.stiffnessNPerM - m.massKg * w * w, m.dampingNsPerM * w));
+        },
+        k0);
 }
 
 }  // namespace

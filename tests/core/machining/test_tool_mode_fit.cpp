@@ -49,7 +49,14 @@ TEST(ToolModeFit, RecoversTable1ToolWithinHalfPercent)
     ASSERT_EQ(fit->modes.size(), 1u);
     expectMode(fit->modes[0], kTable1, 0.005);
     EXPECT_LT(fit->rmsRelativeError, 1e-6);
-    EXPECT_EQ(fit->points, 400u);
+    // Automatic band: the half-power points of the one peak (f_n(1 ± ζ), ζ = 0.01196) widened by three
+    // half-widths on each side, i.e. about f_n(1 ± 4ζ) = 1314.5 .. 1446.7 Hz.
+    EXPECT_TRUE(fit->automaticBand);
+    const double fn = naturalFrequencyHz(kTable1), z = dampingRatio(kTable1);
+    EXPECT_NEAR(fit->bandMinHz, fn * (1.0 - 4.0 * z), 0.01 * fn);
+    EXPECT_NEAR(fit->bandMaxHz, fn * (1.0 + 4.0 * z), 0.01 * fn);
+    EXPECT_GT(fit->points, 20u);
+    EXPECT_LT(fit->points, 40u); // 400 log-spaced points over 500–3000 Hz: 0.45 % apart
 }
 
 TEST(ToolModeFit, RecoversTwoModesWithinTwoPercent)
@@ -74,9 +81,10 @@ TEST(ToolModeFit, OnePercentComplexNoiseWithinThreePercent)
     ASSERT_EQ(fit->modes.size(), 2u);
     expectMode(fit->modes[0], kTable1, 0.03);
     expectMode(fit->modes[1], kSecond, 0.03);
-    // rms of |noise| with 1 % per component is 1.41 %; the fit cannot be better than the noise by much.
-    EXPECT_GT(fit->rmsRelativeError, 0.010);
-    EXPECT_LT(fit->rmsRelativeError, 0.018);
+    // rms of |noise| with 1 % per component is 1.41 % of |H| at every point, so also of the √|H|-weighted
+    // norm; the fit cannot be better than the noise by much.
+    EXPECT_GT(fit->residualRatio, 0.010);
+    EXPECT_LT(fit->residualRatio, 0.018);
 }
 
 TEST(ToolModeFit, BandAndValidFlagSelectPoints)
@@ -144,9 +152,19 @@ TEST(ToolModeFit, SecondModeOfASingleModeFrfIsNamedError)
     EXPECT_NE(fit.error().detail.find("no resonance peak for mode 2"), std::string::npos) << fit.error().detail;
 }
 
-TEST(ToolModeFit, ZeroModesIsOutOfRange)
+TEST(ToolModeFit, AutomaticModeCountFindsBothModes)
 {
-    auto fit = fitToolModes(analyticFrf({kTable1}), {.modes = 0});
+    // The second mode's −Im peak (1/(c ω_n) = 0.913 µm/N) is 66 % of the first's (1.389 µm/N): significant.
+    auto fit = fitToolModes(analyticFrf({kTable1, kSecond}));
+    ASSERT_TRUE(fit.ok()) << fit.error().detail;
+    ASSERT_EQ(fit->modes.size(), 2u);
+    expectMode(fit->modes[0], kTable1, 0.005);
+    expectMode(fit->modes[1], kSecond, 0.005);
+}
+
+TEST(ToolModeFit, NegativeModesIsOutOfRange)
+{
+    auto fit = fitToolModes(analyticFrf({kTable1}), {.modes = -1});
     ASSERT_FALSE(fit.ok());
     EXPECT_EQ(fit.error().code, ErrorCode::OutOfRange);
 }

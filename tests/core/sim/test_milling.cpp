@@ -153,3 +153,24 @@ TEST(Milling, LoadTorqueHookIsHeldByThePositionLoop)
     sim.run(1.0);
     EXPECT_NEAR(sim.torque(), 0.0, 0.005 * load);
 }
+
+TEST(Milling, RigidDirectionHasNoModes)
+{
+    // modes_y = [] (issue 19): the tool does not move in y; rigid in both directions is refused.
+    auto s = table1(1500, 0.5e-3);
+    s.modesY.clear();
+    auto p = MillingProcess::create(s);
+    ASSERT_TRUE(p) << p.error().detail;
+    auto proc = p.value();
+    double maxX = 0.0;
+    for (double t = 50e-6; t <= 0.05; t += 50e-6) {
+        proc.advanceTo(t);
+        maxX = std::max(maxX, std::abs(proc.toolX()));
+        ASSERT_EQ(proc.toolY(), 0.0);
+    }
+    EXPECT_GT(maxX, 0.0);
+    s.modesX.clear();
+    auto none = MillingProcess::create(s);
+    ASSERT_FALSE(none);
+    EXPECT_NE(none.error().detail.find("at least one mode"), std::string::npos) << none.error().detail;
+}

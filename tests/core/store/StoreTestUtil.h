@@ -3,6 +3,7 @@
 // Helpers for the store tests: temporary folders and deterministic captures.
 
 #include "core/model/Capture.h"
+#include "core/model/Number.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -24,7 +25,7 @@ inline model::Capture makeCapture(std::size_t channels, std::size_t samples, dou
 {
     model::Capture c;
     c.metadata["fs_Hz"] = "4000";
-    c.metadata["seed"] = std::to_string(seed);
+    c.metadata["seed"] = model::formatShortest(seed);
     for (std::size_t k = 0; k < channels; ++k) {
         model::Channel ch;
         ch.name = "ch" + std::to_string(k) + "_Nm";
