@@ -3,6 +3,7 @@
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/io/FrfCsv.h"
+#include "core/machining/ExponentialWindow.h"
 #include "core/machining/MachiningJson.h"
 #include "core/machining/StabilityLobes.h"
 #include "core/machining/ToolModeFit.h"
@@ -73,6 +74,10 @@ Result<std::vector<machining::ModalParameters>> fitDirection(const LobesArgs& a,
     auto fit = machining::fitToolModes(*frf, opt);
     if (!fit)
         return makeError(fit.error().code, path + ": " + fit.error().detail);
+    // A tap-test FRF measured with an exponential window (frf --impact --exp-tau) carries its decay σ:
+    // the damping the window added is taken out of the fitted modes, as the tap page does.
+    if (auto st = machining::removeExponentialWindow(fit->modes, *frf); !st)
+        return makeError(st.error().code, path + ": " + st.error().detail);
     std::cerr << "lobes: " << dir << " from " << path << ": " << fit->modes.size() << " mode(s) in the "
               << (fit->automaticBand ? "automatic" : "given") << " band " << formatNumber(fit->bandMinHz, 6) << " to "
               << formatNumber(fit->bandMaxHz, 6) << " Hz, " << fit->points << " points, weighted residual "

@@ -151,3 +151,42 @@ TEST(CliLobesToolFrf, RigidYToolJsonIsAccepted)
     EXPECT_NEAR(firstLimit(readFileText(dir / "l.csv")), 0.3218e-3, 0.03 * 0.3218e-3);
     std::filesystem::remove_all(dir);
 }
+
+// A tap-test FRF measured with an exponential window exp(−σt) is H(jω + σ) (docs/machining.md "Tap test");
+// lobes takes the window's damping 2mσ back out of the fitted mode when the file carries
+// exp_window_decay_1_s, so the lobes equal those of the unwindowed tool. Without the key the same file
+// gives lobes ~10 % too optimistic (c_w = 83 + 2·0.40·10 = 91 N·s/m), which shows the correction acts.
+TEST(CliLobesToolFrf, ExponentialWindowDampingIsRemovedFromTheFit)
+{
+    const auto dir = makeTempDir("lobesexp");
+    const Mode mode{0.40, 83.0, 30.1e6};
+    const double sigma = 10.0;
+    auto write = [&](const std::filesystem::path& p, bool withKey) {
+        std::ofstream f(p);
+        if (withKey)
+            f << "# exp_window_decay_1_s=" << axistune::model::formatNumber(sigma, 17) << "\n";
+        f << "f_Hz,re,im,mag_dB,phase_deg,coherence,valid\n";
+        const auto g = [](double v) { return axistune::model::formatNumber(v, 17); };
+        for (int i = 0; i < 400; ++i) {
+            const double hz = 500.0 * std::pow(6.0, i / 399.0);
+            const std::complex<double> s(sigma, 2.0 * std::numbers::pi * hz);
+            const std::complex<double> h = 1.0 / (mode.m * s * s + mode.c * s + mode.k);
+            f << g(hz) << ',' << g(h.real()) << ',' << g(h.imag()) << ',' << g(20.0 * std::log10(std::abs(h))) << ','
+              << g(std::arg(h) * 180.0 / std::numbers::pi) << ",,1\n";
+        }
+    };
+    write(dir / "w.csv", true);
+    write(dir / "w_nokey.csv", false);
+    const std::string common = " --cut " + kSamples + "cut-table1.json --rpm-min 2800 --rpm-max 2800 --rpm-step 10 --steps-per-period 40";
+    auto ref = runCli("lobes --tool " + kSamples + "tool-table1.json" + common + " --out " + (dir / "ref.csv").string());
+    ASSERT_EQ(ref.exitCode, 0) << ref.err;
+    auto fit = runCli("lobes --tool-frf-x " + (dir / "w.csv").string() + " --tool-frf-y " + (dir / "w.csv").string() +
+                      common + " --out " + (dir / "fit.csv").string());
+    ASSERT_EQ(fit.exitCode, 0) << fit.err;
+    auto raw = runCli("lobes --tool-frf-x " + (dir / "w_nokey.csv").string() + " --tool-frf-y " +
+                      (dir / "w_nokey.csv").string() + common + " --out " + (dir / "raw.csv").string());
+    ASSERT_EQ(raw.exitCode, 0) << raw.err;
+    const double a = firstLimit(readFileText(dir / "ref.csv"));
+    EXPECT_NEAR(firstLimit(readFileText(dir / "fit.csv")), a, 0.01 * a);
+    EXPECT_GT(firstLimit(readFileText(dir / "raw.csv")), 1.05 * a);
+}
