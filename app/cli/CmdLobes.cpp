@@ -76,14 +76,15 @@ Result<std::vector<machining::ModalParameters>> fitDirection(const LobesArgs& a,
         return makeError(fit.error().code, path + ": " + fit.error().detail);
     // A tap-test FRF measured with an exponential window (frf --impact --exp-tau) carries its decay σ:
     // the damping the window added is taken out of the fitted modes, as the tap page does.
-    if (auto st = machining::removeExponentialWindow(fit->modes, *frf); !st)
+    std::vector<machining::ModalParameters> modes = fit->modes;
+    if (auto st = machining::removeExponentialWindow(modes, *frf); !st)
         return makeError(st.error().code, path + ": " + st.error().detail);
     std::cerr << "lobes: " << dir << " from " << path << ": " << fit->modes.size() << " mode(s) in the "
               << (fit->automaticBand ? "automatic" : "given") << " band " << formatNumber(fit->bandMinHz, 6) << " to "
               << formatNumber(fit->bandMaxHz, 6) << " Hz, " << fit->points << " points, weighted residual "
               << formatNumber(100.0 * fit->residualRatio, 3) << " % (accepted up to "
               << formatNumber(100.0 * opt.maxResidual, 3) << " %)\n";
-    for (const auto& m : fit->modes)
+    for (const auto& m : modes)
         std::cerr << "  mass_kg=" << formatNumber(m.massKg, 6)
                   << " damping_Ns_per_m=" << formatNumber(m.dampingNsPerM, 6)
                   << " stiffness_N_per_m=" << formatNumber(m.stiffnessNPerM, 6) << " ("
@@ -92,7 +93,7 @@ Result<std::vector<machining::ModalParameters>> fitDirection(const LobesArgs& a,
     std::cerr << "  residual terms (not used by the lobes): upper " << formatNumber(fit->upperResidual.real(), 4)
               << " + j·" << formatNumber(fit->upperResidual.imag(), 4) << " m/N, lower "
               << formatNumber(fit->lowerResidual, 4) << " m/N·(rad/s)^2\n";
-    return fit->modes;
+    return modes;
 }
 
 Result<machining::ToolModes> loadTool(const LobesArgs& a)
