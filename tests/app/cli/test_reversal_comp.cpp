@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"
 #include "tests/app/cli/SimDriveProcess.h"
 
@@ -36,7 +37,7 @@ std::vector<double> deviations(const std::string& path)
         if (!data || line.empty())
             continue;
         const auto comma = line.find(',');
-        out.push_back(std::stod(line.substr(comma + 1)));
+        out.push_back(axistune::testutil::stod(line.substr(comma + 1)));
     }
     return out;
 }
