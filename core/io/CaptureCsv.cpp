@@ -12,15 +12,7 @@
 namespace axistune::io {
 namespace {
 
-std::string_view trimView(std::string_view s)
-{
-    std::size_t b = 0, e = s.size();
-    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
-        ++b;
-    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
-        --e;
-    return s.substr(b, e - b);
-}
+std::string_view trimView(std::string_view s) { return trimBlanks(s); }
 
 std::string trim(std::string_view s) { return std::string(trimView(s)); }
 

@@ -2,6 +2,7 @@
 // Machine profile JSON and the flat parameter CSV (schema: docs/formats-profile.md).
 #include "core/io/Profile.h"
 
+#include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
 #include "core/model/Number.h"
 
@@ -22,15 +23,7 @@ Error bad(const std::string& source, const std::string& what)
     return makeError(ErrorCode::BadInput, source + ": " + what);
 }
 
-std::string trim(const std::string& s)
-{
-    std::size_t b = 0, e = s.size();
-    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
-        ++b;
-    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
-        --e;
-    return s.substr(b, e - b);
-}
+std::string trim(const std::string& s) { return std::string(trimBlanks(s)); }
 
 std::vector<std::string> splitComma(const std::string& line)
 {

@@ -22,12 +22,7 @@ namespace {
 
 std::string trimCell(std::string_view s)
 {
-    std::size_t b = 0, e = s.size();
-    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
-        ++b;
-    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
-        --e;
-    std::string out(s.substr(b, e - b));
+    std::string out(trimBlanks(s));
     if (out.size() >= 2 && out.front() == '"' && out.back() == '"')
         out = out.substr(1, out.size() - 2);
     return out;

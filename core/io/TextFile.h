@@ -12,8 +12,21 @@
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 namespace axistune::io {
+
+/// `s` without leading and trailing blanks (space, tab, carriage return): the cell trimming of every
+/// text reader (CSV, UFF, tables, profiles).
+inline std::string_view trimBlanks(std::string_view s)
+{
+    std::size_t b = 0, e = s.size();
+    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
+        ++b;
+    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
+        --e;
+    return s.substr(b, e - b);
+}
 
 /// Calls `write(std::ostream&) -> Status` into memory, then writes `path` atomically.
 template <typename WriteFn>

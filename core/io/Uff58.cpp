@@ -15,15 +15,7 @@ namespace axistune::io {
 
 namespace {
 
-std::string trim(std::string_view s)
-{
-    std::size_t b = 0, e = s.size();
-    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
-        ++b;
-    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
-        --e;
-    return std::string(s.substr(b, e - b));
-}
+std::string trim(std::string_view s) { return std::string(trimBlanks(s)); }
 
 std::string field(const std::string& line, std::size_t pos, std::size_t width)
 {
