@@ -15,9 +15,9 @@ import os
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-REAL = os.path.normpath(os.path.join(HERE, "..", "..", "..", "..", "shared", "data", "real"))
-if not os.path.isdir(REAL):
-    REAL = "/work/shared/data/real"
+# shared/data/real beside the repository, as the tests find it; AXISTUNE_REAL_DATA_DIR overrides it.
+REAL = os.environ.get("AXISTUNE_REAL_DATA_DIR") or os.path.normpath(
+    os.path.join(HERE, "..", "..", "..", "..", "shared", "data", "real"))
 
 d = np.loadtxt(os.path.join(REAL, "impact_test_raw_time.csv"), delimiter=",", comments="#", skiprows=4)
 force, accel = d[:, 1], d[:, 2]
