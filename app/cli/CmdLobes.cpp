@@ -10,7 +10,6 @@
 #include "core/model/Number.h"
 #include "core/model/Units.h"
 
-#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -36,9 +35,11 @@ struct LobesArgs {
 Result<std::pair<double, double>> parseBand(const std::string& text)
 {
     const auto colon = text.find(':');
-    auto num = [&](std::string_view t, double& v) {
-        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-        return ec == std::errc() && end == t.data() + t.size() && std::isfinite(v);
+    auto num = [](std::string_view t, double& v) {
+        const auto x = model::parseNumber(t);
+        if (x)
+            v = *x;
+        return x.has_value();
     };
     double lo = 0.0, hi = 0.0;
     const std::string_view all(text);

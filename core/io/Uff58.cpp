@@ -4,12 +4,13 @@
 
 #include "core/io/FrfCsv.h"
 #include "core/io/TextFile.h"
+#include "core/model/Number.h"
 #include "core/model/Units.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 
 namespace axistune::io {
 
@@ -57,13 +58,10 @@ bool isDelimiter(const std::string& line)
 Status parseInt(const std::string& text, const std::string& where, const char* what, int& v)
 {
     const std::string t = trim(text);
-    const char* b = t.data();
-    const char* e = b + t.size();
-    if (b != e && *b == '+')
-        ++b;
-    const auto r = std::from_chars(b, e, v);
-    if (t.empty() || r.ec != std::errc() || r.ptr != e)
+    const auto x = model::parseInteger(t.size() > 1 && t.front() == '+' ? std::string_view(t).substr(1) : t);
+    if (!x || *x < std::numeric_limits<int>::min() || *x > std::numeric_limits<int>::max())
         return makeError(ErrorCode::BadInput, where + ", " + what + ": '" + t + "' is not an integer");
+    v = static_cast<int>(*x);
     return {};
 }
 
