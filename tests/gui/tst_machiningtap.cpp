@@ -27,8 +27,6 @@ namespace {
 
 QString realData(const QString& name)
 {
-    if (const char* dir = std::getenv("AXISTUNE_SHARED_DIR"))
-        return QString::fromLocal8Bit(dir) + "/data/real/" + name;
     return QString(AXISTUNE_REAL_DATA_DIR) + "/" + name;
 }
 

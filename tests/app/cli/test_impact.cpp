@@ -16,8 +16,6 @@ namespace {
 
 std::string realData(const std::string& name)
 {
-    if (const char* dir = std::getenv("AXISTUNE_SHARED_DIR"))
-        return std::string(dir) + "/data/real/" + name;
     return std::string(AXISTUNE_REAL_DATA_DIR) + "/" + name;
 }
 

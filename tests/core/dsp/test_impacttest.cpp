@@ -24,10 +24,7 @@ constexpr double kPi = std::numbers::pi;
 
 std::string realData(const std::string& name)
 {
-    // shared/ lies beside the repository (CI copies it there; AXISTUNE_SHARED_DIR names another place);
-    // a missing file fails the test loudly
-    if (const char* dir = std::getenv("AXISTUNE_SHARED_DIR"))
-        return std::string(dir) + "/data/real/" + name;
+    // shared/data/real beside the repository (CMake cache AXISTUNE_REAL_DATA_DIR); a missing file fails loudly
     return std::string(AXISTUNE_REAL_DATA_DIR) + "/" + name;
 }
 

@@ -7,7 +7,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
@@ -18,8 +17,6 @@ namespace {
 
 std::string realData(const std::string& name)
 {
-    if (const char* dir = std::getenv("AXISTUNE_SHARED_DIR"))
-        return std::string(dir) + "/data/real/" + name;
     return std::string(AXISTUNE_REAL_DATA_DIR) + "/" + name;
 }
 
