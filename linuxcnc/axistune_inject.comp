@@ -22,7 +22,7 @@ param rw float limit = 0.0 "Largest |excitation| accepted; 0: refuse every excit
 param rw float maxerror = 0.0 "Largest |error| during the injection; 0: not watched";
 
 variable unsigned lastBeat = 0;
-variable double age = 1e9;
+variable rtapi_s64 lastBeatNs = 0;
 variable int latched = 0;
 
 function _ "Add the guarded injection";
@@ -32,12 +32,15 @@ author "AxisTune";
 #include <rtapi_math.h>
 
 FUNCTION(_) {
-    if (heartbeat != lastBeat) {
+    /* The age of the heartbeat in wall-clock time, not in servo periods: a thread that runs late catches up with
+       several periods in a row, which says nothing about whether AxisTune still runs. */
+    rtapi_s64 now = rtapi_get_time();
+    double age;
+    if (heartbeat != lastBeat || lastBeatNs == 0) {
         lastBeat = heartbeat;
-        age = 0.0;
-    } else {
-        age += fperiod;
+        lastBeatNs = now;
     }
+    age = (now - lastBeatNs) * 1e-9;
     if (!enable) {
         latched = 0;
         trip = 0;

@@ -8,6 +8,8 @@
 #pragma GCC diagnostic pop
 
 #include <chrono>
+#include <pthread.h>
+#include <sched.h>
 
 namespace axistune::device::hal {
 
@@ -36,6 +38,12 @@ Result<std::unique_ptr<HalClient>> HalClient::open(const std::string& name, int 
             std::this_thread::sleep_for(std::chrono::milliseconds(heartbeatPeriodMs));
         }
     });
+    // The heartbeat must keep beating while the machine is busy: a thread starved for the injection's timeout
+    // trips it (a false stop, never a false run). Real-time priority where the user may have it (root, or an
+    // rtprio limit as LinuxCNC installations grant); otherwise normal scheduling.
+    sched_param sp{};
+    sp.sched_priority = 1;
+    c->m_realtimeHeartbeat = pthread_setschedparam(c->m_thread.native_handle(), SCHED_FIFO, &sp) == 0;
     return c;
 }
 

@@ -32,6 +32,9 @@ public:
     const std::string& name() const { return m_name; }
     std::string heartbeatPin() const { return m_name + ".heartbeat"; }
     int componentId() const { return m_comp; }
+    /// Whether the heartbeat thread got real-time priority (SCHED_FIFO); without it a heavily loaded machine can
+    /// starve it past the injection's timeout, which stops the test (docs/linuxcnc.md "Safety").
+    bool realtimeHeartbeat() const { return m_realtimeHeartbeat; }
 
     /// The value of a float, bit, s32 or u32 pin as double; NotFound when HAL has no such pin.
     Result<double> readPin(const std::string& pin) const;
@@ -42,6 +45,7 @@ private:
     int m_comp = -1;
     void* m_heartbeat = nullptr; ///< hal_u32_t* in HAL shared memory
     std::atomic<bool> m_stop{false};
+    bool m_realtimeHeartbeat = false;
     std::thread m_thread;
 };
 

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Position PID design for an NC-closed position loop (core/tuning/PositionPid), on analytic plants.
+#include "core/tuning/PositionPid.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <numbers>
+
+using namespace axistune;
+using namespace axistune::tuning;
+using cd = std::complex<double>;
+
+namespace {
+
+constexpr double kT = 1e-3; // 1 kHz servo thread
+
+/// Rigid body 1/(J s²) + viscous b, held for a period (ZOH) and read one period later: the exact discrete response
+/// of a double integrator under zero-order hold is T²(z+1)/(2J(z−1)²) without friction; with b the continuous
+/// response is sampled on the unit circle through its exact ZOH form computed here from the state matrices.
+cd rigidBody(double j, double b, double fHz)
+{
+    const cd z = std::polar(1.0, 2.0 * std::numbers::pi * fHz * kT);
+    if (b == 0.0)
+        return kT * kT * (z + 1.0) / (2.0 * j * (z - 1.0) * (z - 1.0)) / z;
+    // x = (position, velocity), v' = (u − b v)/J: exact ZOH with a = b/J.
+    const double a = b / j, e = std::exp(-a * kT);
+    const double ad12 = (1.0 - e) / a, ad22 = e;
+    const double bd1 = (kT - (1.0 - e) / a) / (j * a), bd2 = (1.0 - e) / (j * a);
+    // H(z) = [1 0] (zI − Ad)⁻¹ Bd with Ad = [[1, ad12], [0, ad22]]
+    const cd det = (z - 1.0) * (z - ad22);
+    return ((z - ad22) * bd1 + ad12 * bd2) / det / z;
+}
+
+std::vector<double> lines(double f0, double f1, double df)
+{
+    std::vector<double> f;
+    for (double x = f0; x <= f1 + 1e-9; x += df)
+        f.push_back(x);
+    return f;
+}
+
+} // namespace
+
+TEST(PositionPid, DiscreteControllerMatchesLinuxCncsDifferenceEquation)
+{
+    // Run LinuxCNC's pid recurrence on a sine error and compare the steady output phasor with pidResponse.
+    const PositionPid pid{2.0, 10.0, 0.047, 0.0, 0.0};
+    const double f = 37.0, w = 2.0 * std::numbers::pi * f;
+    double ei = 0.0, prev = 0.0;
+    cd acc = 0.0;
+    const int n0 = 2000, n = 27000; // 27 s: whole number of periods of 37 Hz at 1 kHz (999 cycles)
+    for (int k = 0; k < n0 + n; ++k) {
+        const double e = std::sin(w * k * kT);
+        ei += e * kT;
+        const double ed = (e - prev) / kT;
+        prev = e;
+        const double out = pid.p * e + pid.i * ei + pid.d * ed;
+        if (k >= n0)
+            acc += out * std::polar(1.0, -w * k * kT);
+    }
+    // The integrator's constant offset from the start adds nothing at 37 Hz over whole cycles.
+    const cd measured = acc * 2.0 / static_cast<double>(n) * cd(0.0, 1.0); // sin → phasor −j
+    const cd expected = pidResponse(pid, kT, f);
+    EXPECT_NEAR(std::abs(measured / expected), 1.0, 1e-3);
+    EXPECT_NEAR(std::arg(measured / expected), 0.0, 1e-3);
+}
+
+TEST(PositionPid, TorqueDriveMeetsItsMarginsAtTheCrossoverAndFindsTheInertia)
+{
+    const double j = 6e-4 * 2.0 * std::numbers::pi / 10.0; // N·m·s²/mm of a 6e-4 kg·m² axis, 10 mm lead
+    const double b = 0.002;
+    const auto f = lines(2.0, 450.0, 2.0);
+    std::vector<cd> p(f.size());
+    for (std::size_t k = 0; k < f.size(); ++k)
+        p[k] = rigidBody(j, b, f[k]);
+    auto input = driveInputFromSlope(f, p);
+    ASSERT_TRUE(input) << input.error().detail;
+    EXPECT_EQ(*input, DriveInput::Torque);
+
+    PositionPidOptions o;
+    o.phaseMarginDeg = 50.0;
+    o.gainMarginDb = 8.0;
+    auto d = designPositionPid(f, p, kT, o);
+    ASSERT_TRUE(d) << d.error().detail;
+    // At the chosen crossover |C P| = 1 and arg(C P) = −180° + PM (the definition the rule solves).
+    const std::size_t c = static_cast<std::size_t>(std::lround((d->crossoverHz - 2.0) / 2.0));
+    const cd l = pidResponse(d->gains, kT, f[c]) * p[c];
+    EXPECT_NEAR(std::abs(l), 1.0, 1e-9);
+    EXPECT_NEAR(std::arg(l) * 180.0 / std::numbers::pi, -180.0 + 50.0, 1e-6);
+    EXPECT_GE(d->predicted.phaseMarginDeg, 49.5);
+    EXPECT_GE(d->predicted.gainMarginDb, 8.0);
+    EXPECT_GT(d->gains.d, 0.0);
+    // The rigid-body fit returns J and b of the analytic plant; the loop's 1.5 periods of delay (ZOH and the
+    // period of reading) enter only through the fit's first-order delay term: 2 % allowed on J, 5 % on b.
+    EXPECT_NEAR(d->inertia / j, 1.0, 0.02);
+    EXPECT_NEAR(d->viscous / b, 1.0, 0.05);
+    EXPECT_DOUBLE_EQ(d->gains.ff2, d->inertia);
+    EXPECT_EQ(d->rules.size(), 6u); // crossover, P, I, D, FF2, FF1: one rule per number
+}
+
+TEST(PositionPid, VelocityDriveHasNoDerivativeAndFeedsForwardOneOverK)
+{
+    const double kv = 50.0; // mm/s per unit of command
+    const auto f = lines(2.0, 450.0, 2.0);
+    std::vector<cd> p(f.size());
+    for (std::size_t k = 0; k < f.size(); ++k) {
+        const cd z = std::polar(1.0, 2.0 * std::numbers::pi * f[k] * kT);
+        p[k] = kv * kT / (z - 1.0); // exact ZOH integrator, y[k] from u[k−1]
+    }
+    auto input = driveInputFromSlope(f, p);
+    ASSERT_TRUE(input) << input.error().detail;
+    EXPECT_EQ(*input, DriveInput::Velocity);
+    PositionPidOptions o;
+    o.input = DriveInput::Velocity;
+    auto d = designPositionPid(f, p, kT, o);
+    ASSERT_TRUE(d) << d.error().detail;
+    EXPECT_EQ(d->gains.d, 0.0);
+    EXPECT_NEAR(d->gains.ff1 * kv, 1.0, 0.02);
+    EXPECT_GE(d->predicted.phaseMarginDeg, 49.5);
+}
+
+TEST(PositionPid, RefusesWhatItCannotTrust)
+{
+    const auto f = lines(2.0, 20.0, 2.0);
+    std::vector<cd> p(f.size(), cd(1.0, 0.0));
+    p[3] = cd(std::nan(""), 0.0);
+    auto bad = designPositionPid(f, p, kT);
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().detail.find("line 3"), std::string::npos) << bad.error().detail;
+    // A flat plant is neither a torque nor a velocity drive.
+    std::vector<cd> flat(f.size(), cd(1.0, 0.0));
+    EXPECT_FALSE(driveInputFromSlope(f, flat));
+    EXPECT_FALSE(designPositionPid({1.0, 2.0}, {cd(1, 0), cd(1, 0)}, kT));
+}
