@@ -431,6 +431,52 @@ TEST_F(HalTestbed, ProposedGainsMeetTheMarginsTheyPredict)
     EXPECT_NEAR(getp("pid.x.FF2") / design->gains.ff2, 1.0, 1e-6);
 }
 
+// Issue 17: with Coulomb friction and encoder quantization on, the resonance and anti-resonance of the plant
+// measured through HAL lie within 2 % of those of the plant's exact linear response (the dip and the peak of
+// |H|·ω², found on a 0.01 Hz grid of the response computed from the component's equations).
+TEST_F(HalTestbed, ResonanceAndAntiResonanceWithFrictionAndQuantization)
+{
+    startBed(1000000);
+    halText({"setp", "plant.x.fc", "0.01"});           // N·m, 2.5 % of the excitation's peak
+    halText({"setp", "plant.x.resolution", "0.0005"}); // mm: a 0.5 µm encoder
+    const Plant p = readPlant();
+    double fa = 0.0, fr = 0.0, lo = 1e300, hi = -1e300;
+    for (double f = 30.0; f <= 200.0; f += 0.01) {
+        const double v = std::abs(exactResponse(p, 1e-3, f)) * std::pow(2.0 * M_PI * f, 2);
+        if (v < lo)
+            lo = v, fa = f;
+        if (v > hi)
+            hi = v, fr = f;
+    }
+    RecordProperty("anti_resonance_model_Hz", model::formatShortest(fa));
+    RecordProperty("resonance_model_Hz", model::formatShortest(fr));
+    const LoopMeasurement m = measureLoop(0.4);
+    ASSERT_FALSE(m.freqHz.empty());
+    // |P|·ω² is flat for the rigid body: its dip is the anti-resonance, its peak the resonance. Refined by a
+    // parabola through the extreme line and its neighbours (in dB).
+    auto extreme = [&](bool peak) {
+        std::size_t best = 0;
+        double bestV = peak ? -1e300 : 1e300;
+        std::vector<double> db(m.freqHz.size());
+        for (std::size_t k = 0; k < m.freqHz.size(); ++k) {
+            const double w = 2.0 * M_PI * m.freqHz[k];
+            db[k] = 20.0 * std::log10(std::abs(m.plant[k]) * w * w);
+            if (m.freqHz[k] >= 30.0 && m.freqHz[k] <= 200.0 && (peak ? db[k] > bestV : db[k] < bestV)) {
+                bestV = db[k];
+                best = k;
+            }
+        }
+        const double a = db[best - 1], b = db[best], c = db[best + 1];
+        const double shift = 0.5 * (a - c) / (a - 2.0 * b + c);
+        return m.freqHz[best] + shift * (m.freqHz[best + 1] - m.freqHz[best]);
+    };
+    const double faMeasured = extreme(false), frMeasured = extreme(true);
+    RecordProperty("anti_resonance_Hz", model::formatShortest(faMeasured));
+    RecordProperty("resonance_Hz", model::formatShortest(frMeasured));
+    EXPECT_NEAR(faMeasured / fa, 1.0, 0.02) << "model " << fa << " Hz";
+    EXPECT_NEAR(frMeasured / fr, 1.0, 0.02) << "model " << fr << " Hz";
+}
+
 TEST_F(HalTestbed, InjectionAboveHalfOfMaxOutputIsRefusedAndNothingChanges)
 {
     startBed(1000000);
