@@ -24,10 +24,18 @@ struct BallBarCliOptions {
     std::string outPath;
 };
 
-nlohmann::json opt(const std::optional<double>& v, double scale)
+/// j[key] = v·scale, or the key left out and named with `reason` (docs/formats.md "Undefined values").
+void opt(nlohmann::json& j, const std::string& key, const std::optional<double>& v, double scale,
+         const std::string& reason)
 {
-    return v ? nlohmann::json(*v * scale) : nlohmann::json(nullptr);
+    if (v)
+        j[key] = *v * scale;
+    else
+        model::putUndefined(j, key, reason);
 }
+
+constexpr const char* kNoFullCircle = "no full-circle run among the traces";
+constexpr const char* kNoBothDirections = "needs full-circle runs in both directions (CW and CCW)";
 
 const char* axisKey(int axis)
 {
@@ -68,18 +76,23 @@ nlohmann::json runJson(const tuning::RunDiagnostics& r)
 nlohmann::json reportJson(const tuning::BallBarReport& rep)
 {
     nlohmann::json j;
-    j["circularity_um"] = opt(rep.circularityM, 1e6);
-    j["center_um"] =
-        rep.centerXM ? nlohmann::json{{"x", *rep.centerXM * 1e6}, {"y", *rep.centerYM * 1e6}} : nlohmann::json(nullptr);
-    j["radius_deviation_um"] = opt(rep.radiusDeviationM, 1e6);
-    j["backlash_x_um"] = opt(rep.backlashM[0], 1e6);
-    j["backlash_y_um"] = opt(rep.backlashM[1], 1e6);
+    opt(j, "circularity_um", rep.circularityM, 1e6, kNoFullCircle);
+    if (rep.centerXM)
+        j["center_um"] = {{"x", *rep.centerXM * 1e6}, {"y", *rep.centerYM * 1e6}};
+    else
+        model::putUndefined(j, "center_um", kNoFullCircle);
+    opt(j, "radius_deviation_um", rep.radiusDeviationM, 1e6, kNoFullCircle);
     for (int axis = 0; axis < 2; ++axis) {
         const std::string a = axisKey(axis);
-        j["backlash_detected_" + a] =
-            rep.backlashM[axis] ? nlohmann::json(rep.backlashDetected[axis]) : nlohmann::json(nullptr);
-        j["backlash_threshold_" + a + "_um"] =
-            rep.backlashM[axis] ? nlohmann::json(rep.backlashThresholdM[axis] * 1e6) : nlohmann::json(nullptr);
+        const std::string noReversal = "no " + std::string(axis == 0 ? "X" : "Y") + " reversal in the trace(s)";
+        opt(j, "backlash_" + a + "_um", rep.backlashM[axis], 1e6, noReversal);
+        if (rep.backlashM[axis]) {
+            j["backlash_detected_" + a] = rep.backlashDetected[axis];
+            j["backlash_threshold_" + a + "_um"] = rep.backlashThresholdM[axis] * 1e6;
+        } else {
+            model::putUndefined(j, "backlash_detected_" + a, noReversal);
+            model::putUndefined(j, "backlash_threshold_" + a + "_um", noReversal);
+        }
     }
     nlohmann::json spikes = nlohmann::json::array();
     for (const auto& s : rep.spikes) {
@@ -90,9 +103,9 @@ nlohmann::json reportJson(const tuning::BallBarReport& rep)
                           {"file", s.source}});
     }
     j["reversal_spikes"] = spikes;
-    j["scale_mismatch_ppm"] = opt(rep.scaleMismatch, 1e6);
-    j["squareness_um_per_m"] = opt(rep.squarenessRad, 1e6);
-    j["servo_mismatch_ms"] = opt(rep.servoMismatchS, 1e3);
+    opt(j, "scale_mismatch_ppm", rep.scaleMismatch, 1e6, kNoFullCircle);
+    opt(j, "squareness_um_per_m", rep.squarenessRad, 1e6, kNoFullCircle);
+    opt(j, "servo_mismatch_ms", rep.servoMismatchS, 1e3, kNoBothDirections);
     if (rep.cyclic[0]) {
         nlohmann::json c;
         for (int axis = 0; axis < 2; ++axis) {
@@ -104,7 +117,7 @@ nlohmann::json reportJson(const tuning::BallBarReport& rep)
         }
         j["cyclic_error_um"] = c;
     } else {
-        j["cyclic_error_um"] = nullptr;
+        model::putUndefined(j, "cyclic_error_um", kNoFullCircle);
     }
     nlohmann::json findings = nlohmann::json::array();
     for (const auto& f : rep.findings)

@@ -64,9 +64,9 @@ int runCurrentLoop(const CurrentLoopOptions& o)
             r["rise_time_s"] = row.riseTimeS;
             r["overshoot"] = row.overshoot;
         } else {
-            r["ki_V_per_As"] = nullptr;
-            r["kp_V_per_A"] = nullptr;
-            r["rise_time_s"] = nullptr;
+            // Left out and named (docs/formats.md "Undefined values"): no gains meet the constraints.
+            for (const char* key : {"ki_V_per_As", "kp_V_per_A", "rise_time_s"})
+                model::putUndefined(r, key, "infeasible: no gains at this alpha meet the active constraints");
         }
         r["active_constraints"] = row.activeConstraints;
         j["table"].push_back(r);

@@ -13,15 +13,15 @@
 #include "core/io/FrfCsv.h"
 #include "core/io/SampleTime.h"
 #include "core/io/SweepCsv.h"
+#include "core/model/InputLimits.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -231,20 +231,24 @@ nlohmann::json frfJson(const dsp::FrequencyResponse& f)
 {
     nlohmann::json j;
     j["metadata"] = f.metadata;
-    auto col = [&](auto get) {
-        nlohmann::json a = nlohmann::json::array();
-        for (std::size_t i = 0; i < f.size(); ++i) {
-            const double v = get(i);
-            a.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
-        }
-        return a;
-    };
-    j["f_Hz"] = col([&](std::size_t i) { return f.freqHz[i]; });
-    j["re"] = col([&](std::size_t i) { return f.h[i].real(); });
-    j["im"] = col([&](std::size_t i) { return f.h[i].imag(); });
-    j["mag_dB"] = col([&](std::size_t i) { return dsp::magnitudeDb(f.h[i]); });
-    j["phase_deg"] = col([&](std::size_t i) { return dsp::phaseDeg(f.h[i]); });
-    j["coherence"] = col([&](std::size_t i) { return f.coherence[i]; });
+    // A column with a value that is not finite is left out and named in "undefined" (docs/formats.md
+    // "Undefined values"); f, re and im are finite in every FRF the estimators accept.
+    const std::size_t n = f.size();
+    std::vector<double> re(n), im(n), mag(n), phase(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        re[i] = f.h[i].real();
+        im[i] = f.h[i].imag();
+        mag[i] = dsp::magnitudeDb(f.h[i]);
+        phase[i] = dsp::phaseDeg(f.h[i]);
+    }
+    const char* notFinite = "not a finite number";
+    model::putNumbers(j, "f_Hz", f.freqHz, notFinite);
+    model::putNumbers(j, "re", re, notFinite);
+    model::putNumbers(j, "im", im, notFinite);
+    model::putNumbers(j, "mag_dB", mag, "|H| = 0 has no level in dB; use re and im");
+    model::putNumbers(j, "phase_deg", phase, "|H| = 0 has no phase; use re and im");
+    model::putNumbers(j, "coherence", f.coherence,
+                      "coherence not estimated (a sine sweep has none) or not defined (no input power)");
     j["valid"] = nlohmann::json::array();
     for (bool v : f.valid)
         j["valid"].push_back(v ? 1 : 0);
@@ -258,15 +262,18 @@ nlohmann::json marginsJson(const dsp::FrequencyResponse& frf, const std::string&
                                                                            : kind == "sensitivity" ? dsp::LoopMeasurement::Sensitivity
                                                                                                    : dsp::LoopMeasurement::NegComplementary);
     const auto m = dsp::loopMargins(open);
-    auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-    nlohmann::json j{{"measurement", kind},
-                     {"phase_margin_deg", num(m.phaseMarginDeg)},
-                     {"phase_margin_freq_Hz", m.gainCrossovers.empty() ? nlohmann::json(nullptr) : num(m.phaseMarginFreqHz)},
-                     {"gain_margin_dB", num(m.gainMarginDb)},
-                     {"gain_margin_freq_Hz", m.phaseCrossovers.empty() ? nlohmann::json(nullptr) : num(m.gainMarginFreqHz)},
-                     {"peak_sensitivity", num(m.peakSensitivity)},
-                     {"peak_sensitivity_dB", num(m.peakSensitivityDb)},
-                     {"peak_sensitivity_freq_Hz", num(m.peakSensitivityFreqHz)}};
+    // Undefined margins are left out and named with the reason (docs/formats.md "Undefined values").
+    nlohmann::json j{{"measurement", kind}};
+    const double inf = std::numeric_limits<double>::infinity();
+    model::putNumber(j, "phase_margin_deg", m.phaseMarginDeg, dsp::kNoGainCrossover);
+    model::putNumber(j, "phase_margin_freq_Hz", m.gainCrossovers.empty() ? inf : m.phaseMarginFreqHz,
+                     dsp::kNoGainCrossover);
+    model::putNumber(j, "gain_margin_dB", m.gainMarginDb, dsp::kNoPhaseCrossover);
+    model::putNumber(j, "gain_margin_freq_Hz", m.phaseCrossovers.empty() ? inf : m.gainMarginFreqHz,
+                     dsp::kNoPhaseCrossover);
+    model::putNumber(j, "peak_sensitivity", m.peakSensitivity, dsp::kNoValidPoint);
+    model::putNumber(j, "peak_sensitivity_dB", m.peakSensitivityDb, dsp::kNoValidPoint);
+    model::putNumber(j, "peak_sensitivity_freq_Hz", m.peakSensitivityFreqHz, dsp::kNoValidPoint);
     j["gain_crossovers_Hz"] = nlohmann::json::array();
     for (const auto& c : m.gainCrossovers)
         j["gain_crossovers_Hz"].push_back(c.freqHz);

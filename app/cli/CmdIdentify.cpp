@@ -7,8 +7,8 @@
 #include "core/ident/IdentificationJson.h"
 #include "core/ident/MotionIdentification.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/InputLimits.h"
 
-#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -33,13 +33,11 @@ Result<ident::PositionController> controllerFor(const IdentifyOptions& o)
         if (anyOption)
             return makeError(ErrorCode::BadInput,
                              "give the controller either as --controller FILE or as --kp/--kv/--saturation, not both");
-        std::ifstream f(o.controllerPath);
-        if (!f)
-            return makeError(ErrorCode::NotFound, o.controllerPath + ": cannot open the file");
-        auto j = nlohmann::json::parse(f, nullptr, false);
-        if (j.is_discarded())
-            return makeError(ErrorCode::BadInput, o.controllerPath + ": not valid JSON");
-        return ident::controllerFromJson(j, o.controllerPath);
+        // Regular file, size, depth and number limits (docs/robustness.md).
+        auto j = model::readJsonFile(o.controllerPath);
+        if (!j)
+            return j.error();
+        return ident::controllerFromJson(*j, model::displayPath(o.controllerPath));
     }
     if (!(o.kp > 0.0) || !(o.kv > 0.0) || !(o.saturation > 0.0))
         return makeError(ErrorCode::BadInput, "--validate needs the record's controller: --controller FILE.json or "
@@ -148,7 +146,7 @@ CliRegistrar reg{
              auto j = run(*o);
              if (!j)
                  return reportError("identify", j.error());
-             return writeResult("identify", j->dump(2) + "\n", o->outPath);
+             return writeJsonResult("identify", *j, o->outPath);
          };
      }}};
 

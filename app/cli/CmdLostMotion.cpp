@@ -50,11 +50,6 @@ Status writeCompensated(const std::string& path, const std::vector<tuning::Compe
     return io::writeFileAtomic(path, f.view());
 }
 
-nlohmann::json optJson(const std::optional<double>& v, double scale = 1.0)
-{
-    return v ? nlohmann::json(*v * scale) : nlohmann::json(nullptr);
-}
-
 /// A, B, the points with residuals, the guards and the optional material-model comparison.
 nlohmann::json fitJson(const LostMotionCliOptions& o, const tuning::LostMotionFit& fitv,
                        const std::vector<tuning::LostMotionPoint>& points)
@@ -67,8 +62,16 @@ nlohmann::json fitJson(const LostMotionCliOptions& o, const tuning::LostMotionFi
     j["B_per_Nm"] = fit->bPerNm;
     j["A_um_per_Nm"] = fit->aMPerNm * 1e6;
     j["B_um_per_Nm_m"] = fit->bPerNm * 1e6;
-    j["A_stderr_m_per_Nm"] = optJson(fit->aStdErr);
-    j["B_stderr_per_Nm"] = optJson(fit->bStdErr);
+    // Left out and named when not defined (docs/formats.md "Undefined values").
+    const char* noStdErr = "no standard error: the fit has no more points than unknowns";
+    if (fit->aStdErr)
+        j["A_stderr_m_per_Nm"] = *fit->aStdErr;
+    else
+        model::putUndefined(j, "A_stderr_m_per_Nm", noStdErr);
+    if (fit->bStdErr)
+        j["B_stderr_per_Nm"] = *fit->bStdErr;
+    else
+        model::putUndefined(j, "B_stderr_per_Nm", noStdErr);
     if (fit->printedA)
         j["printed_two_point"] = {{"A_m_per_Nm", *fit->printedA}, {"B_per_Nm", *fit->printedB}};
     nlohmann::json pts = nlohmann::json::array();
@@ -88,7 +91,10 @@ nlohmann::json fitJson(const LostMotionCliOptions& o, const tuning::LostMotionFi
         const double slope =
             tuning::materialComplianceSlope(*o.leadMm * 1e-3, *o.rootDiameterMm * 1e-3, o.shearModulusGpa * 1e9);
         j["material_B_per_Nm"] = slope;
-        j["material_ratio_m"] = fit->bPerNm != 0.0 ? nlohmann::json(slope / fit->bPerNm) : nlohmann::json(nullptr);
+        if (fit->bPerNm != 0.0)
+            j["material_ratio_m"] = slope / fit->bPerNm;
+        else
+            model::putUndefined(j, "material_ratio_m", "the fitted B is 0");
     }
     j["warnings"] = fit->warnings;
     return j;

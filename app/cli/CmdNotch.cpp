@@ -28,8 +28,6 @@ struct NotchCliOptions {
     tuning::ResonanceOptions res;
 };
 
-nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
 Result<std::vector<dsp::NotchSpec>> readExisting(const std::string& path)
 {
     auto parsed = model::readJsonFile(path);
@@ -56,16 +54,6 @@ Result<std::vector<dsp::NotchSpec>> readExisting(const std::string& path)
         out.push_back(n);
     }
     return out;
-}
-
-nlohmann::json marginsJson(const dsp::LoopMargins& m)
-{
-    return {{"gain_margin_dB", finiteOrNull(m.gainMarginDb)},
-            {"gain_margin_Hz", std::isfinite(m.gainMarginDb) ? nlohmann::json(m.gainMarginFreqHz) : nlohmann::json(nullptr)},
-            {"phase_margin_deg", finiteOrNull(m.phaseMarginDeg)},
-            {"phase_margin_Hz", std::isfinite(m.phaseMarginDeg) ? nlohmann::json(m.phaseMarginFreqHz) : nlohmann::json(nullptr)},
-            {"peak_sensitivity_dB", finiteOrNull(m.peakSensitivityDb)},
-            {"peak_sensitivity_Hz", m.peakSensitivityFreqHz}};
 }
 
 int runNotch(NotchCliOptions o)
@@ -159,8 +147,8 @@ int runNotch(NotchCliOptions o)
     j["skipped"] = nlohmann::json::array();
     for (const auto& s : proposal->skipped)
         j["skipped"].push_back({{"f_Hz", s.freqHz}, {"reason", s.reason}});
-    j["margins_before"] = marginsJson(pred->before);
-    j["margins_after"] = marginsJson(pred->after);
+    j["margins_before"] = dsp::loopMarginsJson(pred->before);
+    j["margins_after"] = dsp::loopMarginsJson(pred->after);
     if (!o.outFrf.empty())
         j["predicted_frf"] = o.outFrf;
     return writeJsonResult(cmd, j, "");

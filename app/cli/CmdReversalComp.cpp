@@ -129,7 +129,7 @@ int runReversalComp(const ReversalCompCliOptions& o)
         j["axes"].push_back(axisJson(a));
     j["written"] = false;
     if (o.dryRun)
-        return writeResult(cmd, j.dump(2) + "\n", o.out);
+        return writeJsonResult(cmd, j, o.out);
     // 3. Write the pulse (range-checked and read back by the drive).
     for (const auto& a : tuned->axes) {
         const model::ParameterValues v{{"reversal.amplitude", a.amplitudeMPerS},
@@ -153,11 +153,12 @@ int runReversalComp(const ReversalCompCliOptions& o)
         const double verified = (*spikes)[k].worstM;
         auto& ja = j["axes"][k];
         ja["verified_spike_um"] = verified * 1e6;
-        ja["measured_reduction_pct"] = a.measuredSpikeM > 0.0
-                                           ? nlohmann::json((1.0 - verified / a.measuredSpikeM) * 100.0)
-                                           : nlohmann::json(nullptr);
+        if (a.measuredSpikeM > 0.0)
+            ja["measured_reduction_pct"] = (1.0 - verified / a.measuredSpikeM) * 100.0;
+        else
+            model::putUndefined(ja, "measured_reduction_pct", "no reversal spike measured before the compensation");
     }
-    return writeResult(cmd, j.dump(2) + "\n", o.out);
+    return writeJsonResult(cmd, j, o.out);
 }
 
 const CliRegistrar kRegistrar{

@@ -126,7 +126,7 @@ int runSpindle(const SpindleArgs& a)
                 lobe["lambda"] = c->lambdaAtBest;
                 lobe["sigma"] = c->sigmaAtBest;
             } else {
-                lobe["cost_optimal_rpm"] = nullptr;  // unstable everywhere in this lobe at this depth
+                model::putUndefined(lobe, "cost_optimal_rpm", "unstable everywhere in this lobe at this depth");
             }
         }
         out["lobe_diagram"] = lobe;

@@ -77,8 +77,6 @@ Result<dsp::FrequencyResponse> plantFromComplementary(const dsp::FrequencyRespon
     return p;
 }
 
-nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
 int runTwoInertia(const TwoInertiaOptions& o)
 {
     const std::string cmd = "two-inertia";
@@ -141,12 +139,15 @@ int runTwoInertia(const TwoInertiaOptions& o)
                         {"k", o.staticGain},
                         {"kp_Nms_per_rad", pi.kpNmsPerRad},
                         {"ki_Nm_per_rad", pi.kiNmPerRad}};
-    j["position_gain"] = {{"mode", o.mode},
-                          {"limit_per_s", finiteOrNull(posPlain.limitPerS)},
-                          {"limit_with_filter_per_s", finiteOrNull(posFilter.limitPerS)},
-                          {"recommended_per_s", finiteOrNull(mode == tuning::SuppressionMode::Full
-                                                                 ? posFilter.recommendedPerS
-                                                                 : posPlain.recommendedPerS)}};
+    // A limit that does not exist is left out and named (docs/formats.md "Undefined values").
+    const char* noLimit = "no stability limit of the position gain below 1e5 1/s";
+    nlohmann::json pg{{"mode", o.mode}};
+    model::putNumber(pg, "limit_per_s", posPlain.limitPerS, noLimit);
+    model::putNumber(pg, "limit_with_filter_per_s", posFilter.limitPerS, noLimit);
+    model::putNumber(pg, "recommended_per_s",
+                     mode == tuning::SuppressionMode::Full ? posFilter.recommendedPerS : posPlain.recommendedPerS,
+                     noLimit);
+    j["position_gain"] = pg;
     j["load_error"] = {{"profile", {{"vmax_rad_s", o.profile.vMax}, {"accel_rad_s2", o.profile.aMax},
                                     {"jerk_rad_s3", o.profile.jerk}}},
                        {"without_filter_rad", loadError.maxErrorWithoutFilter},

@@ -7,12 +7,12 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/model/InputLimits.h"
 
 #include <QLabel>
 #include <QVBoxLayout>
 
 #include <cmath>
-
 #include <nlohmann/json.hpp>
 
 namespace axistune {
@@ -256,28 +256,30 @@ void CurrentLoopWizard::saveSession(bool aborted, const QString& reason)
                          {"ki_V_per_As", d.readKi},
                          {"alpha", d.readAlpha},
                          {"predicted_overshoot", d.verifyOvershoot},
-                         {"predicted_rise_time_s", d.verifyRiseS},
-                         {"measured", nullptr}};
+                         {"predicted_rise_time_s", d.verifyRiseS}};
         std::vector<model::Channel> arrays{{"t_s", d.verifyStep.timeS}, {"delay_inclusive", d.verifyStep.discrete}};
         if (d.measured) {
-            auto fin = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-            v["measured"] = {{"capture", "current_step"},
+            // A figure the step does not reach is left out and named (docs/formats.md "Undefined values").
+            const char* notReached = "not reached within the recorded step";
+            auto figures = [notReached](nlohmann::json& o, const std::string& prefix, double riseS, double overshoot) {
+                model::putNumber(o, prefix + "rise_time_s", riseS, notReached);
+                model::putNumber(o, prefix + "overshoot", overshoot, notReached);
+            };
+            nlohmann::json m{{"capture", "current_step"},
                              {"step_A", d.measured->amplitudeA},
-                             {"rise_time_s", fin(d.measuredFigures.riseTimeS)},
-                             {"overshoot", fin(d.measuredFigures.overshoot)},
-                             {"design_rise_time_s", fin(d.designFigures.riseTimeS)},
-                             {"design_overshoot", fin(d.designFigures.overshoot)},
-                             {"predicted_rise_time_s", fin(d.predictedFigures.riseTimeS)},
-                             {"predicted_overshoot", fin(d.predictedFigures.overshoot)},
                              {"max_abs_difference", d.difference.maxAbs},
                              {"rms_difference", d.difference.rms},
                              {"samples_compared", d.difference.samples},
                              {"verdict", d.measuredVerdict.toStdString()}};
-            if (d.before)
-                v["measured_before"] = {{"capture", "current_step_before"},
-                                        {"step_A", d.before->amplitudeA},
-                                        {"rise_time_s", fin(d.beforeFigures.riseTimeS)},
-                                        {"overshoot", fin(d.beforeFigures.overshoot)}};
+            figures(m, "", d.measuredFigures.riseTimeS, d.measuredFigures.overshoot);
+            figures(m, "design_", d.designFigures.riseTimeS, d.designFigures.overshoot);
+            figures(m, "predicted_", d.predictedFigures.riseTimeS, d.predictedFigures.overshoot);
+            v["measured"] = m;
+            if (d.before) {
+                nlohmann::json b{{"capture", "current_step_before"}, {"step_A", d.before->amplitudeA}};
+                figures(b, "", d.beforeFigures.riseTimeS, d.beforeFigures.overshoot);
+                v["measured_before"] = b;
+            }
             arrays = {{"t_s", d.measured->tS},
                       {"measured", d.measured->normalised},
                       {"delay_inclusive", d.measuredPrediction.discrete},
@@ -285,6 +287,7 @@ void CurrentLoopWizard::saveSession(bool aborted, const QString& reason)
         } else {
             v["note"] = d.measure ? "no measured current step: " + d.measureError.toStdString()
                                   : std::string("no current step was measured (not chosen)");
+            model::putUndefined(v, "measured", v["note"].get<std::string>());
         }
         rec.results.push_back({"verification", v, arrays});
     }

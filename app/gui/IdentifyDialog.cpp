@@ -5,7 +5,9 @@
 #include "app/gui/WidgetUtil.h"
 #include "core/ident/IdentificationInput.h"
 #include "core/ident/IdentificationJson.h"
+#include "core/io/AtomicFile.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/InputLimits.h"
 #include "widgets/TimeTracePlot.h"
 
 #include <QCheckBox>
@@ -240,12 +242,10 @@ void IdentifyDialog::selectColumns(const QString& position, const QString& force
 
 bool IdentifyDialog::loadController(const QString& path)
 {
-    std::ifstream f(path.toStdString());
-    auto j = nlohmann::json::parse(f, nullptr, false);
-    auto c =
-        j.is_discarded()
-            ? Result<ident::PositionController>(makeError(ErrorCode::BadInput, path.toStdString() + ": not valid JSON"))
-            : ident::controllerFromJson(j, path.toStdString());
+    // Through the input limits (docs/robustness.md): a FIFO, device or directory is refused, not read.
+    auto j = model::readJsonFile(path.toStdString());
+    auto c = j ? ident::controllerFromJson(*j, model::displayPath(path.toStdString()))
+               : Result<ident::PositionController>(j.error());
     if (!c) {
         setStatus(QString::fromStdString(c.error().detail), true);
         return false;
@@ -377,10 +377,14 @@ bool IdentifyDialog::saveTo(const QString& path, QString* error) const
         *error = tr("Nothing to save: run the identification first.");
         return false;
     }
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        f.write(QByteArray::fromStdString(m_result->dump(2) + "\n")) < 0) {
-        *error = tr("%1 cannot be written: %2").arg(path, f.errorString());
+    // No NaN, Inf or null in the file (dumpResultJson), written to a temporary file and renamed.
+    auto text = model::dumpResultJson(*m_result);
+    if (!text) {
+        *error = QString::fromStdString(text.error().detail);
+        return false;
+    }
+    if (auto st = io::writeFileAtomic(QFile::encodeName(path).toStdString(), *text + "\n"); !st) {
+        *error = tr("%1 cannot be written: %2").arg(path, QString::fromStdString(st.error().detail));
         return false;
     }
     return true;

@@ -3,11 +3,12 @@
 // docs/wizards/lost-motion.md). Method: spec/lost-motion-and-two-inertia.md §1.7–1.10, §4.2–4.6.
 #include "app/gui/LostMotionWizard.h"
 
-#include "app/gui/BallBarText.h"
 #include "app/gui/AbortGuard.h"
 #include "app/gui/AppContext.h"
+#include "app/gui/BallBarText.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/model/InputLimits.h"
 
 #include <QLabel>
 #include <QVBoxLayout>
@@ -19,7 +20,14 @@ namespace gui {
 
 namespace {
 
-nlohmann::json optJson(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+/// obj[key] = *v, or the key left out and named with the reason (docs/formats.md "Undefined values").
+void putOptional(nlohmann::json& obj, const char* key, const std::optional<double>& v, const char* reason)
+{
+    if (v)
+        obj[key] = *v;
+    else
+        model::putUndefined(obj, key, reason);
+}
 
 /// Full precision, independent of the locale.
 std::string exact(double v) { return QString::number(v, 'g', 17).toStdString(); }
@@ -176,27 +184,29 @@ void LostMotionWizard::saveSession(bool aborted, const QString& reason)
                            {"dx_m", d.points[i].dxM},
                            {"residual_m", i < d.fit->residualsM.size() ? d.fit->residualsM[i] : 0.0},
                            {"source", d.points[i].source}});
-        rec.results.push_back({"fit",
-                               {{"A_m_per_Nm", d.fit->aMPerNm},
-                                {"B_per_Nm", d.fit->bPerNm},
-                                {"method", tuning::lostMotionMethodName(d.fit->method)},
-                                {"residual_rms_m", d.fit->residualRmsM},
-                                {"A_stderr_m_per_Nm", optJson(d.fit->aStdErr)},
-                                {"B_stderr_per_Nm", optJson(d.fit->bStdErr)},
-                                {"warnings", d.fit->warnings},
-                                {"points", pts},
-                                {"conventional_backlash_m", d.conventionalBacklashM}},
-                               {}});
+        nlohmann::json fit{{"A_m_per_Nm", d.fit->aMPerNm},
+                           {"B_per_Nm", d.fit->bPerNm},
+                           {"method", tuning::lostMotionMethodName(d.fit->method)},
+                           {"residual_rms_m", d.fit->residualRmsM},
+                           {"warnings", d.fit->warnings},
+                           {"points", pts},
+                           {"conventional_backlash_m", d.conventionalBacklashM}};
+        const char* noStdErr = "no standard error: the fit has no more points than unknowns";
+        putOptional(fit, "A_stderr_m_per_Nm", d.fit->aStdErr, noStdErr);
+        putOptional(fit, "B_stderr_per_Nm", d.fit->bStdErr, noStdErr);
+        rec.results.push_back({"fit", fit, {}});
         if (!d.predictions.empty()) {
             const auto& p = d.predictions.back();
+            nlohmann::json pj{{"trace", d.traces.back().source},
+                              {"measured_cut_in_m", p.measuredCutInM},
+                              {"proposed_cut_in_m", p.proposedCutInM},
+                              {"conventional_cut_in_m", p.conventionalCutInM}};
+            const char* noCircle = "the trace is not a full circle";
+            putOptional(pj, "measured_circularity_m", p.measuredCircularityM, noCircle);
+            putOptional(pj, "proposed_circularity_m", p.proposedCircularityM, noCircle);
+            putOptional(pj, "conventional_circularity_m", p.conventionalCircularityM, noCircle);
             rec.results.push_back({"prediction",
-                                   {{"trace", d.traces.back().source},
-                                    {"measured_circularity_m", optJson(p.measuredCircularityM)},
-                                    {"proposed_circularity_m", optJson(p.proposedCircularityM)},
-                                    {"conventional_circularity_m", optJson(p.conventionalCircularityM)},
-                                    {"measured_cut_in_m", p.measuredCutInM},
-                                    {"proposed_cut_in_m", p.proposedCutInM},
-                                    {"conventional_cut_in_m", p.conventionalCutInM}},
+                                   pj,
                                    {{"angle_rad", p.angleRad},
                                     {"measured_m", p.measuredM},
                                     {"proposed_m", p.proposedM},
@@ -219,15 +229,18 @@ void LostMotionWizard::saveSession(bool aborted, const QString& reason)
                                    {"screw_sign", d.screwSign}}});
         }
     }
-    if (d.verification)
-        rec.results.push_back({"verification",
-                               {{"step_before_m", optJson(d.stepBeforeM)},
-                                {"step_after_m", optJson(d.stepAfterM)},
-                                {"predicted_step_after_m", optJson(d.predictedStepAfterM)},
-                                {"circularity_before_m", optJson(d.circularityBeforeM)},
-                                {"circularity_after_m", optJson(d.circularityAfterM)},
-                                {"predicted_circularity_m", optJson(d.predictedCircularityM)}},
-                               {}});
+    if (d.verification) {
+        nlohmann::json v = nlohmann::json::object();
+        const char* noStep = "no reversal step measured";
+        const char* noCircle = "no full-circle trace measured";
+        putOptional(v, "step_before_m", d.stepBeforeM, noStep);
+        putOptional(v, "step_after_m", d.stepAfterM, noStep);
+        putOptional(v, "predicted_step_after_m", d.predictedStepAfterM, noStep);
+        putOptional(v, "circularity_before_m", d.circularityBeforeM, noCircle);
+        putOptional(v, "circularity_after_m", d.circularityAfterM, noCircle);
+        putOptional(v, "predicted_circularity_m", d.predictedCircularityM, noCircle);
+        rec.results.push_back({"verification", v, {}});
+    }
     if (m_apply->applied()) {
         rec.parameterSets.push_back(
             {0, rec.info.axis, store::ParameterSource::Applied, {}, "lost-motion wizard", m_apply->readBack()});

@@ -263,6 +263,7 @@ MachiningAdvicePage::MachiningAdvicePage(const MachiningCutPage& cut, const Mach
     auto* estimate = new QPushButton(tr("Estimate from a capture…"), this);
     estimate->setObjectName("machEstimate");
     m_estimate = new QLabel(this);
+    m_estimate->setObjectName("machEstimateText");
     m_estimate->setWordWrap(true);
     m_text = new QLabel(this);
     m_text->setObjectName("machAdviceText");

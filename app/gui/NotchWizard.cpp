@@ -7,7 +7,8 @@
 
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardRegistry.h"
-
+#include "core/dsp/LoopAnalysis.h"
+#include "core/model/InputLimits.h"
 #include "core/store/FrfCapture.h"
 
 #include <QBoxLayout>
@@ -26,18 +27,14 @@ namespace {
 const WizardRegistrar kRegistrar{"notch", QT_TRANSLATE_NOOP("Wizards", "Notch filters…"), 20,
                                  [](AppContext& ctx, QWidget* parent) -> QWizard* { return new NotchWizard(ctx, parent); }};
 
-nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-nlohmann::json marginsJson(const std::optional<dsp::LoopMargins>& m)
+/// Margins before/predicted/verified; one not measured is left out and named (docs/formats.md
+/// "Undefined values", never null).
+void putMargins(nlohmann::json& j, const char* key, const std::optional<dsp::LoopMargins>& m)
 {
-    if (!m)
-        return nullptr;
-    return {{"gain_margin_dB", finiteOrNull(m->gainMarginDb)},
-            {"gain_margin_Hz", std::isfinite(m->gainMarginDb) ? nlohmann::json(m->gainMarginFreqHz) : nlohmann::json(nullptr)},
-            {"phase_margin_deg", finiteOrNull(m->phaseMarginDeg)},
-            {"phase_margin_Hz", std::isfinite(m->phaseMarginDeg) ? nlohmann::json(m->phaseMarginFreqHz) : nlohmann::json(nullptr)},
-            {"peak_sensitivity_dB", finiteOrNull(m->peakSensitivityDb)},
-            {"peak_sensitivity_Hz", m->peakSensitivityFreqHz}};
+    if (m)
+        j[key] = dsp::loopMarginsJson(*m);
+    else
+        model::putUndefined(j, key, "not measured");
 }
 
 QLabel* addNote(TestRunPage* page, const QString& name)
@@ -368,27 +365,29 @@ void NotchWizard::saveSession(store::SessionStatus status, const QString& note)
         rec.results.push_back({"resonances", res, {}});
         rec.results.push_back({"notches", {{"notches", notches}, {"skipped", skipped}}, {}});
     }
-    if (m_before)
-        rec.results.push_back({"margins",
-                               {{"before", marginsJson(m_before)},
-                                {"predicted", marginsJson(m_after)},
-                                {"verified", marginsJson(m_verified)}},
-                               {}});
+    if (m_before) {
+        nlohmann::json margins = nlohmann::json::object();
+        putMargins(margins, "before", m_before);
+        putMargins(margins, "predicted", m_after);
+        putMargins(margins, "verified", m_verified);
+        rec.results.push_back({"margins", margins, {}});
+    }
     if (!m_verification.empty()) {
         nlohmann::json peaks = nlohmann::json::array();
-        for (const auto& r : m_rows)
-            peaks.push_back({{"center_Hz", r.spec.centerHz},
-                             {"measured_dB", finiteOrNull(tuning::peakMagnitudeDb(m_measured, r.spec.centerHz, 0.05))},
-                             {"predicted_dB", finiteOrNull(tuning::peakMagnitudeDb(m_predicted, r.spec.centerHz, 0.05))},
-                             {"verified_dB", finiteOrNull(tuning::peakMagnitudeDb(m_verification, r.spec.centerHz, 0.05))}});
-        rec.results.push_back({"verification",
-                               {{"max_abs_deviation_dB", finiteOrNull(m_deviation.maxAbsDb)},
-                                {"max_deviation_at_Hz", finiteOrNull(m_deviation.maxAtHz)},
-                                {"rms_deviation_dB", finiteOrNull(m_deviation.rmsDb)},
-                                {"compared_points", m_deviation.points},
-                                {"floor_dB", -50.0},
-                                {"peaks", peaks}},
-                               {}});
+        for (const auto& r : m_rows) {
+            const char* noPoint = "no valid point within 5 % of the centre";
+            nlohmann::json p{{"center_Hz", r.spec.centerHz}};
+            model::putNumber(p, "measured_dB", tuning::peakMagnitudeDb(m_measured, r.spec.centerHz, 0.05), noPoint);
+            model::putNumber(p, "predicted_dB", tuning::peakMagnitudeDb(m_predicted, r.spec.centerHz, 0.05), noPoint);
+            model::putNumber(p, "verified_dB", tuning::peakMagnitudeDb(m_verification, r.spec.centerHz, 0.05), noPoint);
+            peaks.push_back(p);
+        }
+        nlohmann::json v{{"compared_points", m_deviation.points}, {"floor_dB", -50.0}, {"peaks", peaks}};
+        const char* noCompared = "no point above the floor to compare";
+        model::putNumber(v, "max_abs_deviation_dB", m_deviation.maxAbsDb, noCompared);
+        model::putNumber(v, "max_deviation_at_Hz", m_deviation.maxAtHz, noCompared);
+        model::putNumber(v, "rms_deviation_dB", m_deviation.rmsDb, noCompared);
+        rec.results.push_back({"verification", v, {}});
     }
     if (!m_rows.empty()) {
         store::ParameterSet ps;

@@ -8,6 +8,8 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/dsp/LoopAnalysis.h"
+#include "core/model/InputLimits.h"
 #include "core/store/FrfCapture.h"
 
 #include <QLabel>
@@ -27,12 +29,14 @@ const WizardRegistrar kRegistrar{
 
 nlohmann::json marginsJson(const tuning::LoopMargins& m)
 {
-    auto fin = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-    return {{"crossover_Hz", fin(m.crossoverHz)},
-            {"phase_margin_deg", fin(m.phaseMarginDeg)},
-            {"gain_margin_dB", fin(m.gainMarginDb)},
-            {"phase_crossover_Hz", fin(m.phaseCrossoverHz)},
-            {"peak_sensitivity_dB", fin(m.peakSensitivityDb)}};
+    // Not defined: left out and named (docs/formats.md "Undefined values", never null).
+    nlohmann::json j = nlohmann::json::object();
+    model::putNumber(j, "crossover_Hz", m.crossoverHz, dsp::kNoGainCrossover);
+    model::putNumber(j, "phase_margin_deg", m.phaseMarginDeg, dsp::kNoGainCrossover);
+    model::putNumber(j, "gain_margin_dB", m.gainMarginDb, dsp::kNoPhaseCrossover);
+    model::putNumber(j, "phase_crossover_Hz", m.phaseCrossoverHz, dsp::kNoPhaseCrossover);
+    model::putNumber(j, "peak_sensitivity_dB", m.peakSensitivityDb, dsp::kNoValidPoint);
+    return j;
 }
 
 } // namespace
@@ -195,17 +199,16 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
         }
         rec.captures.push_back({"predicted_open_loop", store::frfAsCapture(l)});
         rec.captures.push_back({"predicted", store::frfAsCapture(t)});
-        auto fin = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-        rec.results.push_back({"proposal",
-                               {{"velocity_kp_Nms_per_rad", d.proposed.kpNmsPerRad},
+        nlohmann::json proposal{{"velocity_kp_Nms_per_rad", d.proposed.kpNmsPerRad},
                                 {"velocity_ki_Nm_per_rad", d.proposed.kiNmPerRad},
                                 {"rule", d.rule.toStdString()},
                                 {"margins_before", marginsJson(d.marginsBefore)},
                                 {"margins", marginsJson(d.marginsAfter)},
-                                {"position_gain_limit_per_s", fin(d.position.limitPerS)},
-                                {"position_gain_limit_Hz", d.position.limitFrequencyHz},
-                                {"position_gain_per_s", fin(d.position.recommendedPerS)}},
-                               {}});
+                                {"position_gain_limit_Hz", d.position.limitFrequencyHz}};
+        const char* noLimit = "no stability limit of the position gain below 1e5 1/s";
+        model::putNumber(proposal, "position_gain_limit_per_s", d.position.limitPerS, noLimit);
+        model::putNumber(proposal, "position_gain_per_s", d.position.recommendedPerS, noLimit);
+        rec.results.push_back({"proposal", proposal, {}});
         if (d.predictedAfter)
             rec.results.push_back(
                 {"step_prediction",

@@ -6,10 +6,10 @@
 
 #include "core/device/ModbusTcpFrame.h"
 #include "core/io/AtomicFile.h"
+#include "core/model/InputLimits.h"
 #include "core/sim/MachineDefinition.h"
 
 #include <algorithm>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -81,20 +81,29 @@ Status SimDriveServer::loadState()
 {
     if (m_opt.stateFile.empty())
         return Status::success();
-    std::ifstream f(m_opt.stateFile);
-    if (!f)
-        return Status::success(); // first run: the preset's values
-    try {
-        const auto j = nlohmann::json::parse(f);
-        for (const auto& [axis, values] : j.items()) {
-            model::ParameterValues v;
-            for (const auto& [k, x] : values.items())
-                v[k] = x.get<double>();
-            if (auto st = m_drive->writeParameters(axis, v); !st)
-                return makeError(st.error().code, "state file " + m_opt.stateFile + ": " + st.error().detail);
+    // Through the input limits like every other reader (docs/robustness.md): a regular file (no FIFO,
+    // device or directory), bounded size, depth and numbers. A missing file is the first run.
+    auto parsed = model::readJsonFile(m_opt.stateFile);
+    if (!parsed) {
+        if (parsed.error().code == ErrorCode::NotFound)
+            return Status::success(); // first run: the preset's values
+        return makeError(parsed.error().code, "state file " + parsed.error().detail);
+    }
+    const std::string src = "state file " + model::displayPath(m_opt.stateFile);
+    const nlohmann::json& j = *parsed;
+    if (!j.is_object())
+        return makeError(ErrorCode::BadInput, src + ": expected an object {axis: {parameter: value}}");
+    for (const auto& [axis, values] : j.items()) {
+        if (!values.is_object())
+            return makeError(ErrorCode::BadInput, src + ", axis '" + axis + "': expected an object {parameter: value}");
+        model::ParameterValues v;
+        for (const auto& [k, x] : values.items()) {
+            if (!x.is_number())
+                return makeError(ErrorCode::BadInput, src + ", axis '" + axis + "', key '" + k + "': not a number");
+            v[k] = x.get<double>();
         }
-    } catch (const nlohmann::json::exception& e) {
-        return makeError(ErrorCode::BadInput, "state file " + m_opt.stateFile + ": " + e.what());
+        if (auto st = m_drive->writeParameters(axis, v); !st)
+            return makeError(st.error().code, src + ": " + st.error().detail);
     }
     log("parameters restored from " + m_opt.stateFile);
     return Status::success();

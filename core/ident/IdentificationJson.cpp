@@ -2,16 +2,15 @@
 // Identification result and controller JSON (docs/formats.md "Identification result").
 #include "core/ident/IdentificationJson.h"
 
+#include "core/model/InputLimits.h"
+
 #include <cmath>
-#include <fstream>
 
 namespace axistune::ident {
 namespace {
 
-nlohmann::json finite(double v)
-{
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
+// A value that is not finite is left out and named with the reason (docs/formats.md "Undefined values").
+constexpr const char* kSingular = "not defined: the regression is singular";
 
 Result<double> number(const nlohmann::json& j, const std::string& key, const std::string& src)
 {
@@ -41,7 +40,11 @@ nlohmann::json unitsJson(AxisMotion m)
 
 nlohmann::json estimateJson(const Estimate& e)
 {
-    return {{"value", finite(e.value)}, {"std", finite(e.std)}, {"std_pct", finite(e.stdPct())}};
+    nlohmann::json j = nlohmann::json::object();
+    model::putNumber(j, "value", e.value, kSingular);
+    model::putNumber(j, "std", e.std, "not defined: no residual degrees of freedom or a singular covariance");
+    model::putNumber(j, "std_pct", e.stdPct(), "not defined: the value is 0 or has no standard deviation");
+    return j;
 }
 
 nlohmann::json identificationToJson(const IdentificationResult& r, AxisMotion motion)
@@ -56,10 +59,10 @@ nlohmann::json identificationToJson(const IdentificationResult& r, AxisMotion mo
     j["viscous"] = estimateJson(r.viscous);
     j["coulomb"] = estimateJson(r.coulomb);
     j["offset"] = estimateJson(r.offset);
-    j["condition_number"] = finite(r.condition);
-    j["condition_number_scaled"] = finite(r.scaledCondition);
-    j["residual_rms"] = finite(r.residualRms);
-    j["residual_rel_pct"] = finite(r.residualRelPct);
+    model::putNumber(j, "condition_number", r.condition, kSingular);
+    model::putNumber(j, "condition_number_scaled", r.scaledCondition, kSingular);
+    model::putNumber(j, "residual_rms", r.residualRms, kSingular);
+    model::putNumber(j, "residual_rel_pct", r.residualRelPct, "not defined: the force has no variation");
     j["method"] = {{"sample_rate_Hz", r.sampleRateHz},
                    {"decimation", r.decimation},
                    {"border_samples", r.borderSamples},
@@ -77,21 +80,26 @@ nlohmann::json identificationToJson(const IdentificationResult& r, AxisMotion mo
                            {"viscous_positive", estimateJson(a.viscousPositive)},
                            {"viscous_negative", estimateJson(a.viscousNegative)},
                            {"coulomb_positive", estimateJson(a.coulombPositive)},
-                           {"coulomb_negative", estimateJson(a.coulombNegative)},
-                           {"residual_rms", finite(a.residualRms)},
-                           {"condition_number_scaled", finite(a.scaledCondition)}};
+                           {"coulomb_negative", estimateJson(a.coulombNegative)}};
+        model::putNumber(j["asymmetric"], "residual_rms", a.residualRms, kSingular);
+        model::putNumber(j["asymmetric"], "condition_number_scaled", a.scaledCondition, kSingular);
     }
     return j;
 }
 
 nlohmann::json validationToJson(const ValidationResult& v)
 {
-    return {{"first_sample", v.firstSample},
-            {"position_error_rms", finite(v.positionErrorRms)},
-            {"position_error_max", finite(v.positionErrorMax)},
-            {"position_error_pct_of_motion_rms", finite(v.positionErrorPctOfMotion)},
-            {"benchmark_rel_err_position_pct", finite(v.benchmarkPositionPct)},
-            {"benchmark_rel_err_force_pct", finite(v.benchmarkForcePct)}};
+    nlohmann::json j{{"first_sample", v.firstSample}};
+    const char* diverged = "not defined: the simulation did not give finite positions";
+    model::putNumber(j, "position_error_rms", v.positionErrorRms, diverged);
+    model::putNumber(j, "position_error_max", v.positionErrorMax, diverged);
+    model::putNumber(j, "position_error_pct_of_motion_rms", v.positionErrorPctOfMotion,
+                     "not defined: the record has no motion");
+    model::putNumber(j, "benchmark_rel_err_position_pct", v.benchmarkPositionPct,
+                     "not defined: the measured position has no energy");
+    model::putNumber(j, "benchmark_rel_err_force_pct", v.benchmarkForcePct,
+                     "not defined: the measured force has no energy");
+    return j;
 }
 
 nlohmann::json controllerToJson(const PositionController& c)
@@ -128,13 +136,18 @@ Result<PositionController> controllerFromJson(const nlohmann::json& j, const std
 
 Result<IdentifiedModel> identifiedModelFromJson(const nlohmann::json& j, const std::string& src)
 {
-    if (!j.is_object() || j.value("format", std::string()) != kIdentificationFormat)
+    // Typed look-ups only: json::value() throws when the key holds another type.
+    const auto text = [&j](const char* key) {
+        return j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>() : std::string();
+    };
+    if (!j.is_object() || text("format") != kIdentificationFormat)
         return makeError(ErrorCode::BadInput,
                          src + ": not an identification result (format must be '" + kIdentificationFormat + "')");
-    if (j.value("version", 0) != kIdentificationVersion)
+    if (!j.contains("version") || !j.at("version").is_number_integer() ||
+        j.at("version").get<long long>() != kIdentificationVersion)
         return makeError(ErrorCode::BadInput, src + ": unsupported identification version");
     IdentifiedModel m;
-    const std::string axis = j.value("axis", std::string());
+    const std::string axis = text("axis");
     if (axis != "linear" && axis != "rotary")
         return makeError(ErrorCode::BadInput, src + ": 'axis' must be linear or rotary");
     m.motion = axis == "linear" ? AxisMotion::Linear : AxisMotion::Rotary;
@@ -156,13 +169,11 @@ Result<IdentifiedModel> identifiedModelFromJson(const nlohmann::json& j, const s
 
 Result<IdentifiedModel> readIdentifiedModelFile(const std::string& path)
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
-    nlohmann::json j = nlohmann::json::parse(f, nullptr, false);
-    if (j.is_discarded())
-        return makeError(ErrorCode::BadInput, path + ": not valid JSON");
-    return identifiedModelFromJson(j, path);
+    // Regular file, size, depth and number limits (docs/robustness.md).
+    auto j = model::readJsonFile(path);
+    if (!j)
+        return j.error();
+    return identifiedModelFromJson(*j, model::displayPath(path));
 }
 
 } // namespace axistune::ident

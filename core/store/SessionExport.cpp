@@ -4,6 +4,7 @@
 
 #include "core/io/CaptureCsv.h"
 #include "core/io/Profile.h"
+#include "core/model/InputLimits.h"
 
 #include <cctype>
 #include <filesystem>
@@ -64,9 +65,13 @@ nlohmann::json sessionSummaryJson(const SessionRecord& r)
         j["models"].push_back({{"axis", m.axis}, {"kind", m.kind}, {"time", m.time}, {"data", m.data}});
     j["journal"] = nlohmann::json::array();
     for (const auto& e : r.journal) {
-        j["journal"].push_back({{"axis", e.axis}, {"key", e.key},
-                                {"old", e.oldValue ? nlohmann::json(*e.oldValue) : nlohmann::json(nullptr)},
-                                {"new", e.newValue}, {"time", e.time}});
+        nlohmann::json je{{"axis", e.axis}, {"key", e.key}, {"new", e.newValue}, {"time", e.time}};
+        // No null in result JSON (docs/formats.md "Undefined values"): a first write has no old value.
+        if (e.oldValue)
+            je["old"] = *e.oldValue;
+        else
+            model::putUndefined(je, "old", "no value before this write");
+        j["journal"].push_back(je);
     }
     return j;
 }

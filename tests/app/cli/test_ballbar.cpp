@@ -82,8 +82,12 @@ TEST(CliBallBar, PartialArcRefusesFullCircleDiagnosticsWithReason)
     auto r = runCli("ballbar --in " + kData + "partial.csv");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
-    EXPECT_TRUE(j["circularity_um"].is_null());
-    EXPECT_TRUE(j["squareness_um_per_m"].is_null());
+    // Not defined: left out and named with the reason (docs/formats.md "Undefined values"), never null.
+    EXPECT_FALSE(j.contains("circularity_um"));
+    EXPECT_FALSE(j.contains("squareness_um_per_m"));
+    EXPECT_EQ(j["undefined"]["circularity_um"], "no full-circle run among the traces");
+    EXPECT_EQ(j["undefined"]["squareness_um_per_m"], "no full-circle run among the traces");
+    EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
     ASSERT_FALSE(j["refused"].empty());
     EXPECT_NE(
         j["refused"][0].get<std::string>().find("refused: requires a full 360° circle, but the trace is a partial arc"),

@@ -120,7 +120,10 @@ TEST(CliFrf, SweepMultiSweepAndConventional)
     const auto j = runCli("frf --sweep " + in);
     ASSERT_EQ(j.exitCode, 0) << j.err;
     EXPECT_NE(j.out.find("\"f_Hz\":[500.0,2900.0]"), std::string::npos) << j.out;
-    EXPECT_NE(j.out.find("\"coherence\":[null,null]"), std::string::npos);
+    // A sweep has no coherence: the column is left out and named (docs/formats.md "Undefined values").
+    EXPECT_EQ(j.out.find("\"coherence\":["), std::string::npos) << j.out;
+    EXPECT_NE(j.out.find("\"undefined\":{\"coherence\":\"coherence not estimated"), std::string::npos) << j.out;
+    EXPECT_EQ(j.out.find("null"), std::string::npos) << j.out;
     std::filesystem::remove_all(dir);
 }
 
@@ -232,6 +235,9 @@ TEST(CliFrf, MarginsOfAClosedLoopFrf)
     ASSERT_NE(pf, std::string::npos);
     EXPECT_NEAR(axistune::testutil::stod(r.out.substr(pf + 23)), 50.0,
                 1e-6); // log|L| is linear in log f: interpolation is exact
-    EXPECT_NE(r.out.find("\"gain_margin_dB\":null"), std::string::npos) << r.out;
+    // No phase crossover: no gain margin, left out and named (docs/formats.md "Undefined values").
+    EXPECT_EQ(r.out.find("\"gain_margin_dB\":"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"gain_margin_dB\":\"no phase crossover"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
     std::filesystem::remove_all(dir);
 }

@@ -132,6 +132,39 @@ TEST(InputLimits, ResultJsonRefusesNanAndInfAndSurvivesInvalidUtf8)
     EXPECT_EQ(*rp, "{\"path\":\"a\xEF\xBF\xBD.csv\",\"v\":1.5}");
 }
 
+TEST(InputLimits, ResultJsonRefusesNullAndPutNumberLeavesUndefinedValuesOut)
+{
+    nlohmann::json n{{"m", {{"gain_margin_dB", nullptr}}}};
+    auto rn = dumpResultJson(n);
+    ASSERT_FALSE(rn);
+    EXPECT_EQ(rn.error().code, ErrorCode::Internal);
+    EXPECT_NE(rn.error().detail.find("result value /m/gain_margin_dB is not a finite number (NaN, Inf or null)"),
+              std::string::npos)
+        << rn.error().detail;
+
+    nlohmann::json j = nlohmann::json::object();
+    putNumber(j, "a", 1.5, "unused");
+    putNumber(j, "b", std::numeric_limits<double>::infinity(), "no crossover");
+    putNumber(j, "c", std::nan(""), "singular");
+    putNumbers(j, "v", {1.0, 2.0}, "unused");
+    putNumbers(j, "w", {1.0, std::nan(""), -std::numeric_limits<double>::infinity()}, "|H| = 0");
+    EXPECT_FALSE(j.contains("b"));
+    EXPECT_EQ(j["undefined"]["b"], "no crossover");
+    putNumber(j, "b", 3.0, "unused"); // defined later: present, and no longer in "undefined"
+    EXPECT_EQ(j["a"], 1.5);
+    EXPECT_EQ(j["b"], 3.0);
+    EXPECT_FALSE(j["undefined"].contains("b"));
+    EXPECT_FALSE(j.contains("c"));
+    EXPECT_FALSE(j.contains("w"));
+    EXPECT_EQ(j["v"], nlohmann::json({1.0, 2.0}));
+    EXPECT_EQ(j["undefined"]["c"], "singular");
+    EXPECT_EQ(j["undefined"]["w"], "|H| = 0 (first at index 1)");
+    putUndefined(j, "a", "withdrawn");
+    EXPECT_FALSE(j.contains("a"));
+    EXPECT_EQ(j["undefined"]["a"], "withdrawn");
+    EXPECT_TRUE(dumpResultJson(j));
+}
+
 TEST(InputLimits, CsvLineLimits)
 {
     EXPECT_TRUE(checkCsvLine("c.csv", 7, kMaxLineBytes));
