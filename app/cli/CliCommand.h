@@ -3,7 +3,6 @@
 // Subcommand registry of axistune-cli. Each Cmd*.cpp defines one subcommand and registers it with a
 // static CliRegistrar, so adding a command never touches main.cpp.
 
-#include "core/model/InputLimits.h"
 #include "core/model/Result.h"
 
 #include <CLI/CLI.hpp>
@@ -33,9 +32,8 @@ int reportError(const std::string& command, const Error& error);
 /// Writes a command's text result to `outPath`, or to stdout when it is empty; returns the exit code.
 int writeResult(const std::string& command, const std::string& text, const std::string& outPath);
 
-/// The output boundary for JSON results: refuses (Internal error, nothing written) a result holding NaN,
-/// Inf or null; otherwise writes the dump (indent < 0: one line) and a newline. A value that is not
-/// defined is left out and named in the object's "undefined" member (model::putNumber, docs/formats.md).
+/// The output boundary for JSON results: refuses (Internal error, nothing written) a result holding NaN
+/// or Inf, which JSON would show as null; otherwise writes the dump (indent < 0: one line) and a newline.
 int writeJsonResult(const std::string& command, const nlohmann::json& result, const std::string& outPath,
                     int indent = 2);
 

@@ -4,6 +4,7 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/io/BallBarCsv.h"
 #include "core/model/Constants.h"
+#include "core/model/ResultJson.h"
 #include "core/tuning/BallBarDiagnostics.h"
 
 #include <fstream>

@@ -2,13 +2,13 @@
 // axistune-cli current-loop: PI ratio α and current gains from motor data (docs/tuning.md).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/model/ResultJson.h"
 #include "core/tuning/CurrentLoop.h"
-
-#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 

@@ -7,14 +7,15 @@
 #include "core/dsp/ImpactTest.h"
 #include "core/dsp/InjectionHold.h"
 #include "core/dsp/LoopAnalysis.h"
+#include "core/dsp/LoopMarginsJson.h"
 #include "core/dsp/SineDemodulation.h"
 #include "core/dsp/Welch.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
 #include "core/io/SampleTime.h"
 #include "core/io/SweepCsv.h"
-#include "core/model/InputLimits.h"
 #include "core/model/Number.h"
+#include "core/model/ResultJson.h"
 #include "core/model/Units.h"
 
 #include <algorithm>

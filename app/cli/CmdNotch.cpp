@@ -3,6 +3,7 @@
 // execution rate's limits and the free drive slots, predicted FRF and margins (docs/notch.md).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/dsp/LoopMarginsJson.h"
 #include "core/io/FrfCsv.h"
 #include "core/model/InputLimits.h"
 #include "core/tuning/Notch.h"

@@ -7,6 +7,7 @@
 #include "app/cli/CliCommand.h"
 #include "core/device/Drive.h"
 #include "core/io/BallBarCsv.h"
+#include "core/model/ResultJson.h"
 #include "core/sim/AxisParameters.h"
 #include "core/sim/MachineDefinition.h"
 #include "core/tuning/ReversalCompensation.h"

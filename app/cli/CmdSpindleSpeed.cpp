@@ -8,6 +8,7 @@
 #include "core/machining/MachiningJson.h"
 #include "core/machining/SpindleSpeed.h"
 #include "core/model/Number.h"
+#include "core/model/ResultJson.h"
 
 #include <cmath>
 #include <iostream>

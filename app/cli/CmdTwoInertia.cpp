@@ -7,6 +7,7 @@
 #include "core/dsp/LoopAnalysis.h"
 #include "core/io/FrfCsv.h"
 #include "core/model/Constants.h"
+#include "core/model/ResultJson.h"
 #include "core/tuning/TwoInertia.h"
 #include "core/tuning/TwoInertiaFilter.h"
 #include "core/tuning/VelocityLoop.h"

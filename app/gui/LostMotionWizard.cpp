@@ -8,7 +8,7 @@
 #include "app/gui/BallBarText.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
-#include "core/model/InputLimits.h"
+#include "core/model/ResultJson.h"
 
 #include <QLabel>
 #include <QVBoxLayout>

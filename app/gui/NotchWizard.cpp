@@ -8,7 +8,8 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/dsp/LoopAnalysis.h"
-#include "core/model/InputLimits.h"
+#include "core/dsp/LoopMarginsJson.h"
+#include "core/model/ResultJson.h"
 #include "core/store/FrfCapture.h"
 
 #include <QBoxLayout>

@@ -4,8 +4,6 @@
 // the closed-loop velocity FRF of spec/current-loop-and-multisweep-frf.md §3.2 (3.1).
 #include "core/dsp/LoopAnalysis.h"
 
-#include "core/model/InputLimits.h"
-
 #include <cmath>
 
 namespace axistune::dsp {
@@ -102,21 +100,6 @@ LoopMargins loopMargins(const FrequencyResponse& L)
         }
     }
     return r;
-}
-
-nlohmann::json loopMarginsJson(const LoopMargins& m)
-{
-    nlohmann::json j = nlohmann::json::object();
-    const double inf = std::numeric_limits<double>::infinity();
-    model::putNumber(j, "gain_margin_dB", m.gainMarginDb, kNoPhaseCrossover);
-    model::putNumber(j, "gain_margin_Hz", std::isfinite(m.gainMarginDb) ? m.gainMarginFreqHz : inf, kNoPhaseCrossover);
-    model::putNumber(j, "phase_margin_deg", m.phaseMarginDeg, kNoGainCrossover);
-    model::putNumber(j, "phase_margin_Hz", std::isfinite(m.phaseMarginDeg) ? m.phaseMarginFreqHz : inf,
-                     kNoGainCrossover);
-    model::putNumber(j, "peak_sensitivity_dB", m.peakSensitivityDb, kNoValidPoint);
-    model::putNumber(j, "peak_sensitivity_Hz", std::isfinite(m.peakSensitivityDb) ? m.peakSensitivityFreqHz : inf,
-                     kNoValidPoint);
-    return j;
 }
 
 }  // namespace axistune::dsp

@@ -17,7 +17,6 @@
 #include "core/dsp/FrequencyResponse.h"
 
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <vector>
 
 namespace axistune::dsp {
@@ -49,18 +48,5 @@ struct LoopMargins {
 
 /// Margins of an open loop L.
 LoopMargins loopMargins(const FrequencyResponse& openLoop);
-
-/// Why a margin is not defined (the "undefined" member of result JSON, docs/formats.md).
-inline constexpr const char* kNoGainCrossover =
-    "no gain crossover: |L| does not cross 0 dB in the measured band, so there is no phase margin";
-inline constexpr const char* kNoPhaseCrossover =
-    "no phase crossover: the phase of L does not reach -180 deg in the measured band, so the gain margin is "
-    "unbounded";
-inline constexpr const char* kNoValidPoint = "no valid point in the FRF";
-
-/// The margins as result JSON of `notch` and the notch wizard: gain_margin_dB/_Hz, phase_margin_deg/_Hz,
-/// peak_sensitivity_dB/_Hz; a margin that is not defined is left out and named with its reason in
-/// "undefined" (never null).
-nlohmann::json loopMarginsJson(const LoopMargins& m);
 
 }  // namespace axistune::dsp

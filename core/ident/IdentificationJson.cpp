@@ -3,6 +3,7 @@
 #include "core/ident/IdentificationJson.h"
 
 #include "core/model/InputLimits.h"
+#include "core/model/ResultJson.h"
 
 #include <cmath>
 

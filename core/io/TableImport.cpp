@@ -2,11 +2,10 @@
 // Delimited-table, halscope-log and FRF-column imports (core/io/TableImport.h, docs/formats.md "Imports").
 #include "core/io/TableImport.h"
 
-#include "core/model/Constants.h"
-
 #include "core/io/FrfCsv.h"
 #include "core/io/TextFile.h"
 #include "core/io/Uff58.h"
+#include "core/model/Constants.h"
 #include "core/model/Units.h"
 
 #include <charconv>
@@ -15,6 +14,7 @@
 #include <numbers>
 #include <optional>
 #include <set>
+#include <sys/stat.h>
 
 namespace axistune::io {
 
@@ -323,9 +323,16 @@ std::string detectImportFormat(const std::string& path)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == "unv" || ext == "uff")
         return "uff";
-    std::ifstream f(path);
-    std::string first;
-    if (f && std::getline(f, first) && looksLikeHalscope(first))
+    // Sniff only a regular file, and only its first bytes: a FIFO would block here and /dev/zero has no
+    // line end. Anything else goes to the CSV reader, which refuses it with the reason (readInputFile).
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+        return "csv";
+    std::ifstream f(path, std::ios::binary);
+    char head[64] = {};
+    f.read(head, sizeof head);
+    const std::string first(head, static_cast<std::size_t>(f.gcount()));
+    if (looksLikeHalscope(first))
         return "halscope";
     return "csv";
 }

@@ -5,6 +5,7 @@
 // (core/io/AtomicFile.h): a failed or interrupted write never leaves half a file.
 
 #include "core/io/AtomicFile.h"
+#include "core/model/InputLimits.h"
 #include "core/model/Result.h"
 
 #include <fstream>
@@ -40,14 +41,16 @@ Status writeTextFile(const std::string& path, WriteFn&& write)
     return writeFileAtomic(path, text.view());
 }
 
-/// Opens `path` for reading and returns `read(std::istream&, path)`; NotFound naming the path when it cannot
-/// be opened. Shared by the import readers (table, halscope, UFF58).
+/// Reads `path` through the input limits (model::readInputFile: a regular file, not a FIFO, device or
+/// directory, at most kMaxInputFileBytes; errors name the path) and returns `read(std::istream&, path)`.
+/// Shared by the import readers (table, halscope, UFF58).
 template <typename ReadFn>
 auto readFromFile(const std::string& path, ReadFn&& read) -> decltype(read(std::declval<std::istream&>(), path))
 {
-    std::ifstream f(path);
-    if (!f)
-        return makeError(ErrorCode::NotFound, path + ": cannot open the file");
+    auto text = model::readInputFile(path);
+    if (!text)
+        return text.error();
+    std::istringstream f(std::move(text).value());
     return read(static_cast<std::istream&>(f), path);
 }
 

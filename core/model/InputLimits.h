@@ -5,9 +5,7 @@
 // every JSON input through parseJsonText (nesting depth, numbers that fit a double and are not
 // denormal, any nlohmann exception turned into an error naming the file, the line and the key).
 // CSV readers check kMaxLineBytes and kMaxCsvLines per line. Result JSON leaves the program through
-// dumpResultJson, which refuses NaN, Inf and null: a value that is not defined is left out and named,
-// with the reason, in its object's "undefined" member (putNumber, putUndefined; docs/formats.md
-// "Undefined values").
+// dumpResultJson, which refuses NaN and Inf instead of writing them as null.
 
 #include "core/model/Result.h"
 
@@ -15,7 +13,6 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace axistune::model {
 
@@ -42,22 +39,12 @@ Result<nlohmann::json> parseJsonText(const std::string& text, const std::string&
 /// readInputFile + parseJsonText.
 Result<nlohmann::json> readJsonFile(const std::string& path);
 
-/// True, with the JSON pointer of the first value in `j` that is a NaN or infinite number or null.
+/// The JSON pointer of the first number in `j` that is NaN or infinite ("" when none).
 bool findNonFinite(const nlohmann::json& j, std::string& pointer);
 
 /// j.dump(indent) with invalid UTF-8 replaced; Internal error naming the JSON pointer when a number
-/// is NaN or infinite (nlohmann would write it as null) or a value is null.
+/// is NaN or infinite (nlohmann would write it as null).
 Result<std::string> dumpResultJson(const nlohmann::json& j, int indent = 2);
-
-/// The result-JSON form of a value that is not defined (docs/formats.md "Undefined values"): `key` is
-/// left out of the object `obj` and obj["undefined"][key] holds the reason, e.g.
-/// {"gain_margin_dB": 12.1, "undefined": {"phase_margin_deg": "no gain crossover"}}.
-void putUndefined(nlohmann::json& obj, const std::string& key, const std::string& reason);
-/// obj[key] = v when v is finite, else putUndefined(obj, key, reason).
-void putNumber(nlohmann::json& obj, const std::string& key, double v, const std::string& reason);
-/// An array of numbers when every one is finite; else the key is left out (putUndefined) with the
-/// reason and the index of the first value that is not finite.
-void putNumbers(nlohmann::json& obj, const std::string& key, const std::vector<double>& v, const std::string& reason);
 
 /// True for a subnormal double (non-zero, below 2.2e-308 in magnitude): refused wherever read.
 bool isDenormal(double v);

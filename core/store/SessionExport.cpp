@@ -4,7 +4,7 @@
 
 #include "core/io/CaptureCsv.h"
 #include "core/io/Profile.h"
-#include "core/model/InputLimits.h"
+#include "core/model/ResultJson.h"
 
 #include <cctype>
 #include <filesystem>

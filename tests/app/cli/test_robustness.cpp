@@ -57,6 +57,14 @@ TEST_F(Robustness, FifoWithoutWriterIsRefusedNotWaitedOn)
     expectRefused(runCli("current-loop --motor " + fifo), {fifo + ": is not a regular file"});
     expectRefused(runCli("ballbar --in " + fifo), {fifo + ": is not a regular file"});
     expectRefused(runCli("notch --frf " + fifo), {fifo + ": is not a regular file"});
+    // The format sniffing of `frf --in` (halscope or CSV) used to read the first line of any file.
+    expectRefused(runCli("frf --in " + fifo + " --input x --output y"), {fifo + ": is not a regular file"});
+    // identify: the record and the controller file.
+    expectRefused(runCli("identify --in " + fifo + " --position x_m --force f_N"), {fifo + ": is not a regular file"});
+    const auto rec = std::string(AXISTUNE_TEST_DATA_DIR) + "/ident/fuzz-seed-motion.csv";
+    expectRefused(runCli("identify --in " + rec + " --position x_m --force f_N --validate " + rec +
+                         " --reference x_m --controller " + fifo),
+                  {fifo + ": is not a regular file"});
 }
 
 TEST_F(Robustness, DevZeroAsJsonIsRefused)

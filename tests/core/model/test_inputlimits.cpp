@@ -3,6 +3,7 @@
 // files, oversized files, JSON numbers outside the double range or denormal, deep nesting, invalid
 // UTF-8 in paths, and the NaN check at the JSON output boundary.
 #include "core/model/InputLimits.h"
+#include "core/model/ResultJson.h"
 
 #include <cmath>
 #include <filesystem>

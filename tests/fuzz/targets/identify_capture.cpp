@@ -41,5 +41,5 @@ AXISTUNE_FUZZ_TARGET(identify_capture)
     fuzz::requireFinite(res->coulomb.value, "coulomb");
     fuzz::requireFinite(res->offset.value, "offset");
     auto text = model::dumpResultJson(ident::identificationToJson(*res, ident::AxisMotion::Linear));
-    fuzz::require(text.has_value(), "result JSON refused: " + (text ? std::string() : text.error().detail));
+    fuzz::require(text.ok(), "result JSON refused: " + (text ? std::string() : text.error().detail));
 }
