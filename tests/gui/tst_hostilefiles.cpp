@@ -24,6 +24,7 @@
 
 #include <sys/stat.h>
 
+#include "tests/app/cli/CliRunner.h"
 #include "tests/gui/GuiTestUtil.h"
 
 using namespace axistune;
@@ -176,9 +177,15 @@ private slots:
             QVERIFY2(!analysis->analysed(), qPrintable(p));
             QVERIFY2(namesFile(analysis->summary()->text(), p), qPrintable(p + " → " + analysis->summary()->text()));
         }
-        // Still usable: the sample capture is analysed with the sample stage.
+        // Still usable: a cut simulated by the CLI (as tst_machiningwizard does) is analysed with the sample stage.
+        const QString cutCsv = csv.dir.filePath("stable.csv");
+        const auto r = testing::runCli("simulate-cut --machine vmc --axis X --tool " + kSamples.toStdString() +
+                                       "tool-table1.json --cut " + kSamples.toStdString() +
+                                       "cut-table1.json --rpm 1500 --depth-m 0.5e-3 --duration-s 1.2 --seed 3 --out " +
+                                       cutCsv.toStdString());
+        QVERIFY2(r.exitCode == 0, r.err.c_str());
         analysis->stagePath()->setText(kSamples + "stage.json");
-        analysis->loadCapture(kSamples + "capture-step-vmc-x.csv");
+        analysis->loadCapture(cutCsv);
         QVERIFY(finished());
         QVERIFY2(analysis->analysed(), qPrintable(analysis->summary()->text()));
 
