@@ -25,16 +25,6 @@ struct BallBarCliOptions {
     std::string outPath;
 };
 
-/// j[key] = v·scale, or the key left out and named with `reason` (docs/formats.md "Undefined values").
-void opt(nlohmann::json& j, const std::string& key, const std::optional<double>& v, double scale,
-         const std::string& reason)
-{
-    if (v)
-        j[key] = *v * scale;
-    else
-        model::putUndefined(j, key, reason);
-}
-
 constexpr const char* kNoFullCircle = "no full-circle run among the traces";
 constexpr const char* kNoBothDirections = "needs full-circle runs in both directions (CW and CCW)";
 
@@ -77,16 +67,16 @@ nlohmann::json runJson(const tuning::RunDiagnostics& r)
 nlohmann::json reportJson(const tuning::BallBarReport& rep)
 {
     nlohmann::json j;
-    opt(j, "circularity_um", rep.circularityM, 1e6, kNoFullCircle);
+    model::putOptional(j, "circularity_um", rep.circularityM, 1e6, kNoFullCircle);
     if (rep.centerXM)
         j["center_um"] = {{"x", *rep.centerXM * 1e6}, {"y", *rep.centerYM * 1e6}};
     else
         model::putUndefined(j, "center_um", kNoFullCircle);
-    opt(j, "radius_deviation_um", rep.radiusDeviationM, 1e6, kNoFullCircle);
+    model::putOptional(j, "radius_deviation_um", rep.radiusDeviationM, 1e6, kNoFullCircle);
     for (int axis = 0; axis < 2; ++axis) {
         const std::string a = axisKey(axis);
         const std::string noReversal = "no " + std::string(axis == 0 ? "X" : "Y") + " reversal in the trace(s)";
-        opt(j, "backlash_" + a + "_um", rep.backlashM[axis], 1e6, noReversal);
+        model::putOptional(j, "backlash_" + a + "_um", rep.backlashM[axis], 1e6, noReversal);
         if (rep.backlashM[axis]) {
             j["backlash_detected_" + a] = rep.backlashDetected[axis];
             j["backlash_threshold_" + a + "_um"] = rep.backlashThresholdM[axis] * 1e6;
@@ -104,9 +94,9 @@ nlohmann::json reportJson(const tuning::BallBarReport& rep)
                           {"file", s.source}});
     }
     j["reversal_spikes"] = spikes;
-    opt(j, "scale_mismatch_ppm", rep.scaleMismatch, 1e6, kNoFullCircle);
-    opt(j, "squareness_um_per_m", rep.squarenessRad, 1e6, kNoFullCircle);
-    opt(j, "servo_mismatch_ms", rep.servoMismatchS, 1e3, kNoBothDirections);
+    model::putOptional(j, "scale_mismatch_ppm", rep.scaleMismatch, 1e6, kNoFullCircle);
+    model::putOptional(j, "squareness_um_per_m", rep.squarenessRad, 1e6, kNoFullCircle);
+    model::putOptional(j, "servo_mismatch_ms", rep.servoMismatchS, 1e3, kNoBothDirections);
     if (rep.cyclic[0]) {
         nlohmann::json c;
         for (int axis = 0; axis < 2; ++axis) {

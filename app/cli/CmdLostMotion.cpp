@@ -51,16 +51,6 @@ Status writeCompensated(const std::string& path, const std::vector<tuning::Compe
     return io::writeFileAtomic(path, f.view());
 }
 
-/// obj[key] = *v·scale, or the key left out and named with the reason (docs/formats.md "Undefined values").
-void putOptional(nlohmann::json& obj, const std::string& key, const std::optional<double>& v, double scale,
-                 const std::string& reason)
-{
-    if (v)
-        obj[key] = *v * scale;
-    else
-        model::putUndefined(obj, key, reason);
-}
-
 constexpr const char* kNoFullCircle = "the trace is not a full circle";
 
 /// A, B, the points with residuals, the guards and the optional material-model comparison.
@@ -77,8 +67,8 @@ nlohmann::json fitJson(const LostMotionCliOptions& o, const tuning::LostMotionFi
     j["B_um_per_Nm_m"] = fit->bPerNm * 1e6;
     // Left out and named when not defined (docs/formats.md "Undefined values").
     const char* noStdErr = "no standard error: the fit has no more points than unknowns";
-    putOptional(j, "A_stderr_m_per_Nm", fit->aStdErr, 1.0, noStdErr);
-    putOptional(j, "B_stderr_per_Nm", fit->bStdErr, 1.0, noStdErr);
+    model::putOptional(j, "A_stderr_m_per_Nm", fit->aStdErr, 1.0, noStdErr);
+    model::putOptional(j, "B_stderr_per_Nm", fit->bStdErr, 1.0, noStdErr);
     if (fit->printedA)
         j["printed_two_point"] = {{"A_m_per_Nm", *fit->printedA}, {"B_per_Nm", *fit->printedB}};
     nlohmann::json pts = nlohmann::json::array();
@@ -151,15 +141,15 @@ int runLostMotion(const LostMotionCliOptions& o)
                          {"measured_cut_in_um", p->measuredCutInM * 1e6},
                          {"proposed_cut_in_um", p->proposedCutInM * 1e6},
                          {"conventional_cut_in_um", p->conventionalCutInM * 1e6}};
-        putOptional(e, "measured_circularity_um", p->measuredCircularityM, 1e6, kNoFullCircle);
-        putOptional(e, "proposed_circularity_um", p->proposedCircularityM, 1e6, kNoFullCircle);
-        putOptional(e, "conventional_circularity_um", p->conventionalCircularityM, 1e6, kNoFullCircle);
+        model::putOptional(e, "measured_circularity_um", p->measuredCircularityM, 1e6, kNoFullCircle);
+        model::putOptional(e, "proposed_circularity_um", p->proposedCircularityM, 1e6, kNoFullCircle);
+        model::putOptional(e, "conventional_circularity_um", p->conventionalCircularityM, 1e6, kNoFullCircle);
         pj.push_back(e);
         if (p->proposedCircularityM)
             worst = std::max(worst.value_or(0.0), *p->proposedCircularityM);
         preds.push_back(std::move(p).value());
     }
-    putOptional(j, "predicted_circularity_um", worst, 1e6, "no trace is a full circle");
+    model::putOptional(j, "predicted_circularity_um", worst, 1e6, "no trace is a full circle");
     j["conventional_backlash_um"] = xbl * 1e6;
     j["predictions"] = pj;
     if (!o.compensatedOut.empty()) {

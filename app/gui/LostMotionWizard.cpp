@@ -20,15 +20,6 @@ namespace gui {
 
 namespace {
 
-/// obj[key] = *v, or the key left out and named with the reason (docs/formats.md "Undefined values").
-void putOptional(nlohmann::json& obj, const char* key, const std::optional<double>& v, const char* reason)
-{
-    if (v)
-        obj[key] = *v;
-    else
-        model::putUndefined(obj, key, reason);
-}
-
 /// Full precision, independent of the locale.
 std::string exact(double v) { return QString::number(v, 'g', 17).toStdString(); }
 
@@ -192,8 +183,8 @@ void LostMotionWizard::saveSession(bool aborted, const QString& reason)
                            {"points", pts},
                            {"conventional_backlash_m", d.conventionalBacklashM}};
         const char* noStdErr = "no standard error: the fit has no more points than unknowns";
-        putOptional(fit, "A_stderr_m_per_Nm", d.fit->aStdErr, noStdErr);
-        putOptional(fit, "B_stderr_per_Nm", d.fit->bStdErr, noStdErr);
+        model::putOptional(fit, "A_stderr_m_per_Nm", d.fit->aStdErr, 1.0, noStdErr);
+        model::putOptional(fit, "B_stderr_per_Nm", d.fit->bStdErr, 1.0, noStdErr);
         rec.results.push_back({"fit", fit, {}});
         if (!d.predictions.empty()) {
             const auto& p = d.predictions.back();
@@ -202,9 +193,9 @@ void LostMotionWizard::saveSession(bool aborted, const QString& reason)
                               {"proposed_cut_in_m", p.proposedCutInM},
                               {"conventional_cut_in_m", p.conventionalCutInM}};
             const char* noCircle = "the trace is not a full circle";
-            putOptional(pj, "measured_circularity_m", p.measuredCircularityM, noCircle);
-            putOptional(pj, "proposed_circularity_m", p.proposedCircularityM, noCircle);
-            putOptional(pj, "conventional_circularity_m", p.conventionalCircularityM, noCircle);
+            model::putOptional(pj, "measured_circularity_m", p.measuredCircularityM, 1.0, noCircle);
+            model::putOptional(pj, "proposed_circularity_m", p.proposedCircularityM, 1.0, noCircle);
+            model::putOptional(pj, "conventional_circularity_m", p.conventionalCircularityM, 1.0, noCircle);
             rec.results.push_back({"prediction",
                                    pj,
                                    {{"angle_rad", p.angleRad},
@@ -233,12 +224,12 @@ void LostMotionWizard::saveSession(bool aborted, const QString& reason)
         nlohmann::json v = nlohmann::json::object();
         const char* noStep = "no reversal step measured";
         const char* noCircle = "no full-circle trace measured";
-        putOptional(v, "step_before_m", d.stepBeforeM, noStep);
-        putOptional(v, "step_after_m", d.stepAfterM, noStep);
-        putOptional(v, "predicted_step_after_m", d.predictedStepAfterM, noStep);
-        putOptional(v, "circularity_before_m", d.circularityBeforeM, noCircle);
-        putOptional(v, "circularity_after_m", d.circularityAfterM, noCircle);
-        putOptional(v, "predicted_circularity_m", d.predictedCircularityM, noCircle);
+        model::putOptional(v, "step_before_m", d.stepBeforeM, 1.0, noStep);
+        model::putOptional(v, "step_after_m", d.stepAfterM, 1.0, noStep);
+        model::putOptional(v, "predicted_step_after_m", d.predictedStepAfterM, 1.0, noStep);
+        model::putOptional(v, "circularity_before_m", d.circularityBeforeM, 1.0, noCircle);
+        model::putOptional(v, "circularity_after_m", d.circularityAfterM, 1.0, noCircle);
+        model::putOptional(v, "predicted_circularity_m", d.predictedCircularityM, 1.0, noCircle);
         rec.results.push_back({"verification", v, {}});
     }
     if (m_apply->applied()) {

@@ -2,6 +2,7 @@
 #include "core/model/ResultJson.h"
 
 #include <cmath>
+#include <limits>
 
 namespace axistune::model {
 
@@ -46,6 +47,12 @@ void putNumbers(nlohmann::json& obj, const std::string& key, const std::vector<d
     }
     clearUndefined(obj, key);
     obj[key] = v;
+}
+
+void putOptional(nlohmann::json& obj, const std::string& key, const std::optional<double>& v, double scale,
+                 const std::string& reason)
+{
+    putNumber(obj, key, v ? *v * scale : std::numeric_limits<double>::quiet_NaN(), reason);
 }
 
 } // namespace axistune::model

@@ -8,6 +8,7 @@
 // and null anywhere.
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,5 +21,8 @@ void putNumber(nlohmann::json& obj, const std::string& key, double v, const std:
 /// An array of numbers when every one is finite; else the key is left out (putUndefined) with the
 /// reason and the index of the first value that is not finite.
 void putNumbers(nlohmann::json& obj, const std::string& key, const std::vector<double>& v, const std::string& reason);
+/// obj[key] = *v · scale when v holds a finite value, else putUndefined(obj, key, reason).
+void putOptional(nlohmann::json& obj, const std::string& key, const std::optional<double>& v, double scale,
+                 const std::string& reason);
 
 } // namespace axistune::model

@@ -6,8 +6,10 @@
 #include "core/io/Profile.h"
 #include "core/model/ResultJson.h"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <functional>
 
 namespace axistune::store {
 
@@ -42,11 +44,47 @@ nlohmann::json sessionInfoJson(const SessionInfo& info)
             {"note", info.note},       {"captures", info.captureCount}, {"results", info.resultCount}};
 }
 
+namespace {
+
+/// What the store holds, as result JSON without null (docs/formats.md "Undefined values"): a result
+/// without data is an empty object; a null member, or an array member with a null element, recorded by
+/// an earlier version is left out and named in "undefined".
+nlohmann::json storedJson(const nlohmann::json& j)
+{
+    if (j.is_null())
+        return nlohmann::json::object();
+    nlohmann::json out = j;
+    const std::function<void(nlohmann::json&)> fix = [&fix](nlohmann::json& o) {
+        if (o.is_array()) {
+            for (auto& e : o)
+                fix(e);
+            return;
+        }
+        if (!o.is_object())
+            return;
+        std::vector<std::string> undefined;
+        for (auto it = o.begin(); it != o.end(); ++it) {
+            const bool nullInArray =
+                it->is_array() && std::any_of(it->begin(), it->end(), [](const auto& e) { return e.is_null(); });
+            if (it->is_null() || nullInArray)
+                undefined.push_back(it.key());
+            else
+                fix(*it);
+        }
+        for (const auto& k : undefined)
+            model::putUndefined(o, k, "stored without a value");
+    };
+    fix(out);
+    return out;
+}
+
+} // namespace
+
 nlohmann::json sessionSummaryJson(const SessionRecord& r)
 {
     nlohmann::json j;
     j["session"] = sessionInfoJson(r.info);
-    j["inputs"] = r.inputs;
+    j["inputs"] = storedJson(r.inputs);
     j["captures"] = nlohmann::json::array();
     for (const auto& c : r.captures) {
         j["captures"].push_back({{"name", c.name}, {"metadata", c.capture.metadata}, {"samples", c.capture.size()},
@@ -54,7 +92,8 @@ nlohmann::json sessionSummaryJson(const SessionRecord& r)
     }
     j["results"] = nlohmann::json::array();
     for (const auto& res : r.results)
-        j["results"].push_back({{"name", res.name}, {"data", res.data}, {"arrays", channelsJson(res.arrays)}});
+        j["results"].push_back(
+            {{"name", res.name}, {"data", storedJson(res.data)}, {"arrays", channelsJson(res.arrays)}});
     j["parameter_sets"] = nlohmann::json::array();
     for (const auto& s : r.parameterSets) {
         j["parameter_sets"].push_back({{"axis", s.axis}, {"source", toString(s.source)}, {"time", s.time},
@@ -62,7 +101,7 @@ nlohmann::json sessionSummaryJson(const SessionRecord& r)
     }
     j["models"] = nlohmann::json::array();
     for (const auto& m : r.models)
-        j["models"].push_back({{"axis", m.axis}, {"kind", m.kind}, {"time", m.time}, {"data", m.data}});
+        j["models"].push_back({{"axis", m.axis}, {"kind", m.kind}, {"time", m.time}, {"data", storedJson(m.data)}});
     j["journal"] = nlohmann::json::array();
     for (const auto& e : r.journal) {
         nlohmann::json je{{"axis", e.axis}, {"key", e.key}, {"new", e.newValue}, {"time", e.time}};
