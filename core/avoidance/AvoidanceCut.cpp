@@ -2,6 +2,8 @@
 // Simulated cut with chatter avoidance in the loop (AvoidanceCut.h).
 #include "core/avoidance/AvoidanceCut.h"
 
+#include "core/model/Number.h"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -116,7 +118,7 @@ Result<AvoidanceCutResult> runAvoidanceCut(const sim::AxisDefinition& axis, cons
     md["avoid"] = methodName(o.method);
     if (o.method != Method::None) {
         md["avoid_sensor"] = dob ? "dob" : "accelerometer";
-        md["avoid_sample_period_s"] = std::to_string(ts);
+        md["avoid_sample_period_s"] = model::formatNumber(ts, 17);
         md["avoid_signal_unit"] = dob ? "N" : "m/s^2";
         md["avoid_power_unit"] = dob ? "N^2" : "(m/s^2)^2";
     }
