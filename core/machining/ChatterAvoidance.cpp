@@ -42,8 +42,8 @@ Result<double> multiModeCost(int rho, const std::vector<double>& freqsHz, const 
         if (j > 0 && weights[j] > weights[j - 1])
             return makeError(ErrorCode::OutOfRange, "J_chat: weights must not increase (w_j >= w_j+1)");
     }
-    double j = 0.0;
-    for (std::size_t i = 0; i < freqsHz.size(); ++i) {
+    double j = 0.0; // r_1 = ρ exactly: the first term is zero by definition (ρ f_1/f_1 could leave one ulp)
+    for (std::size_t i = 1; i < freqsHz.size(); ++i) {
         const double r = rho * freqsHz[i] / freqsHz[0];
         const double d = r - std::floor(r + 0.5);
         j += weights[i] * d * d;

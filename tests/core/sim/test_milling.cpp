@@ -178,3 +178,22 @@ TEST(Milling, RigidDirectionHasNoModes)
     ASSERT_FALSE(none);
     EXPECT_NE(none.error().detail.find("at least one mode"), std::string::npos) << none.error().detail;
 }
+
+TEST(Milling, DelayFollowsTheActualSpindleSpeed)
+{
+    // Eq. (1-7): the delay is the time the spindle took for the last 2π/N. At constant speed it is one tooth
+    // period 60/(n N); after a command change and the spindle's settling (T = 2 ms) it is that of the new speed.
+    auto p = MillingProcess::create(table1(2800, 0.5e-3));
+    ASSERT_TRUE(p);
+    auto proc = p.value();
+    proc.advanceTo(0.05);
+    EXPECT_NEAR(proc.delayS(), 60.0 / (2800.0 * 4), 1e-9);
+    proc.setSpindleCommandRpm(3000.0);
+    proc.advanceTo(0.15);
+    EXPECT_NEAR(proc.spindleRpm(), 3000.0, 1e-6);
+    EXPECT_NEAR(proc.delayS(), 60.0 / (3000.0 * 4), 1e-8);
+    // Commands beyond the spindle limits are limited and counted, never passed on.
+    proc.setSpindleCommandRpm(1e6);
+    EXPECT_DOUBLE_EQ(proc.spindleCommandRpm(), 20000.0);
+    EXPECT_EQ(proc.commandLimitCount(), 1u);
+}
