@@ -221,22 +221,21 @@ nlohmann::json summaryJson(const SimulateCutArgs& a, const avoidance::AvoidanceC
     if (av.method == avoidance::Method::None)
         return j;
     j["sensor"] = av.sensor == machining::AvoidanceSensor::Dob ? "dob" : "accelerometer";
-    // onset: the trigger (adaptive, multimode) or the ESC start; stable: the moving RMS (50 ms) of the tool
-    // acceleration stays below twice its level over the last 0.3 s from then on
+    // onset: the trigger (adaptive, multimode) or the ESC start. Stable: the vibration fell (the level over the
+    // last 0.3 s is at most 40 % of the largest 50 ms RMS after the onset) and from `settled_s` on the 50 ms RMS
+    // stays below twice that final level; otherwise settled_s is null (no stable speed reached).
     const double onset = av.method == avoidance::Method::Esc ? av.esc.startS : r.triggerTimeS;
+    j["onset_s"] = onset >= 0.0 ? nlohmann::json(onset) : nlohmann::json(nullptr);
+    j["settled_s"] = nullptr;
     if (onset >= 0.0) {
-        j["onset_s"] = onset;
-        if (auto rms = avoidance::channelRms(cap, "tool_accel_y_m_s2", t0, end)) {
-            auto settled = avoidance::settledFrom(cap, "tool_accel_y_m_s2", onset, 0.05, 2.0 * *rms);
-            if (settled) {
+        const double peak = avoidance::peakMovingRms(cap, "tool_accel_y_m_s2", std::max(0.0, onset - 0.05), 0.05);
+        j["peak_rms_after_onset_m_s2"] = peak;
+        if (auto rms = avoidance::channelRms(cap, "tool_accel_y_m_s2", t0, end); rms && *rms <= 0.4 * peak) {
+            if (auto settled = avoidance::settledFrom(cap, "tool_accel_y_m_s2", onset, 0.05, 2.0 * *rms)) {
                 j["settled_s"] = *settled;
                 j["onset_to_settled_s"] = std::max(0.0, *settled - onset);
-            } else {
-                j["settled_s"] = nullptr;
             }
         }
-    } else {
-        j["onset_s"] = nullptr; // never triggered
     }
     if (av.method == avoidance::Method::Esc) {
         j["esc"] = {{"h_c_rad_s", r.escDesign.hcRadS},

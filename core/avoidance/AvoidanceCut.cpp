@@ -152,6 +152,26 @@ Result<double> channelRms(const model::Capture& cap, const std::string& channel,
     return std::sqrt(s / static_cast<double>(n));
 }
 
+double peakMovingRms(const model::Capture& cap, const std::string& channel, double t0, double windowS)
+{
+    const auto* t = cap.channel("t_s");
+    const auto* c = cap.channel(channel);
+    if (!t || !c || t->data.size() < 4)
+        return 0.0;
+    const double dt = t->data[1] - t->data[0];
+    const auto w = std::max<std::size_t>(2, static_cast<std::size_t>(std::llround(windowS / dt)));
+    const std::size_t n = std::min(t->data.size(), c->data.size());
+    double sum = 0.0, peak = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        sum += c->data[i] * c->data[i];
+        if (i >= w)
+            sum -= c->data[i - w] * c->data[i - w];
+        if (i + 1 >= w && t->data[i + 1 - w] >= t0)
+            peak = std::max(peak, std::sqrt(std::max(sum, 0.0) / static_cast<double>(w)));
+    }
+    return peak;
+}
+
 std::optional<double> settledFrom(const model::Capture& cap, const std::string& channel, double t0, double windowS,
                                   double limit)
 {

@@ -50,6 +50,9 @@ Result<AvoidanceCutResult> runAvoidanceCut(const sim::AxisDefinition& axis, cons
 /// RMS of a channel over [t0, t1] of the capture's t_s; error when the channel or samples are missing.
 Result<double> channelRms(const model::Capture& cap, const std::string& channel, double t0, double t1);
 
+/// Largest moving RMS (window windowS) of `channel` from t0 on; 0 when there are too few samples.
+double peakMovingRms(const model::Capture& cap, const std::string& channel, double t0, double windowS);
+
 /// First time ≥ t0 from which the moving RMS of `channel` over `windowS` stays below `limit` to the end of the
 /// capture (the "stable from" instant); empty when it never settles.
 std::optional<double> settledFrom(const model::Capture& cap, const std::string& channel, double t0, double windowS,
