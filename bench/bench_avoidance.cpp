@@ -12,7 +12,6 @@
 #include "core/sim/MachineDefinition.h"
 
 #include <benchmark/benchmark.h>
-
 #include <chrono>
 #include <cmath>
 #include <numbers>

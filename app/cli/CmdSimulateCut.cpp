@@ -107,26 +107,9 @@ Status applyAvoidanceOptions(const SimulateCutArgs& a, avoidance::AvoidanceCutOp
         else
             return makeError(ErrorCode::BadInput, "--sensor '" + a.sensor + "': must be dob or accel");
     }
-    av.sensor = sensor;
     if (auto st = refuse(dobOnly, sensor == AvoidanceSensor::Dob, "needs --sensor dob"); !st)
         return st;
-    if (av.method == Method::Adaptive)
-        av.adaptive =
-            sensor == AvoidanceSensor::Dob ? machining::adaptiveTable4Dob() : machining::adaptiveTable3Accelerometer();
-    if (av.method == Method::MultiMode) {
-        av.adaptive = machining::multiModeTable5Accelerometer();
-        if (sensor == AvoidanceSensor::Dob) {
-            const auto t4 = machining::adaptiveTable4Dob();
-            av.adaptive.samplePeriodS = t4.samplePeriodS;
-            av.adaptive.thresholdPower = t4.thresholdPower;
-            av.adaptive.highPassHz = t4.highPassHz;
-            av.adaptive.lowPassHz = t4.lowPassHz;
-        }
-    }
-    if (av.method == Method::Esc && sensor == AvoidanceSensor::Dob) {
-        av.dob.qCutoffHz = 2500.0; // Ch.6: DOB LPF 2500 Hz, G_F high-pass above 1000 Hz
-        av.dob.bandHighHz = 0.0;
-    }
+    avoidance::applyMethodDefaults(av, av.method, sensor);
     auto& o = av.adaptive;
     if (a.given("--ts-s"))
         o.samplePeriodS = a.ts;

@@ -241,21 +241,9 @@ void MachiningAvoidancePage::start()
     o.cut.engageS = 0.1;
     o.cut.seed = 3;
     const QString method = m_method->currentData().toString();
-    o.method = avoidance::parseMethod(method.toStdString()).value();
     const bool dob = m_sensor->currentData().toString() == "dob";
-    o.sensor = dob ? machining::AvoidanceSensor::Dob : machining::AvoidanceSensor::Accelerometer;
-    if (o.method == avoidance::Method::Adaptive)
-        o.adaptive = dob ? machining::adaptiveTable4Dob() : machining::adaptiveTable3Accelerometer();
-    if (o.method == avoidance::Method::MultiMode) {
-        o.adaptive = machining::multiModeTable5Accelerometer();
-        if (dob) {
-            const auto t4 = machining::adaptiveTable4Dob();
-            o.adaptive.samplePeriodS = t4.samplePeriodS;
-            o.adaptive.thresholdPower = t4.thresholdPower;
-            o.adaptive.highPassHz = t4.highPassHz;
-            o.adaptive.lowPassHz = t4.lowPassHz;
-        }
-    }
+    avoidance::applyMethodDefaults(o, avoidance::parseMethod(method.toStdString()).value(),
+                                   dob ? machining::AvoidanceSensor::Dob : machining::AvoidanceSensor::Accelerometer);
     if (o.method == avoidance::Method::Esc) {
         const auto lo = machiningNumber(m_escMin->text()), hi = machiningNumber(m_escMax->text());
         const auto st = machiningNumber(m_escStart->text()), cv = machiningNumber(m_escCurv->text());
@@ -268,10 +256,6 @@ void MachiningAvoidancePage::start()
         o.esc.maxRpm = *hi;
         o.esc.startS = *st;
         o.esc.curvature = *cv;
-        if (dob) {
-            o.dob.qCutoffHz = 2500.0;
-            o.dob.bandHighHz = 0.0;
-        }
     }
     m_durationRun = *dur;
     m_done->store(0.0);

@@ -44,6 +44,30 @@ Result<Method> parseMethod(const std::string& t)
     return makeError(ErrorCode::BadInput, "--avoid '" + t + "': must be none, adaptive, multimode or esc");
 }
 
+void applyMethodDefaults(AvoidanceCutOptions& o, Method method, AvoidanceSensor sensor)
+{
+    o.method = method;
+    o.sensor = sensor;
+    const bool dob = sensor == AvoidanceSensor::Dob;
+    o.dob = machining::StageDobOptions{};
+    if (method == Method::Adaptive)
+        o.adaptive = dob ? machining::adaptiveTable4Dob() : machining::adaptiveTable3Accelerometer();
+    if (method == Method::MultiMode) {
+        o.adaptive = machining::multiModeTable5Accelerometer();
+        if (dob) {
+            const auto t4 = machining::adaptiveTable4Dob();
+            o.adaptive.samplePeriodS = t4.samplePeriodS;
+            o.adaptive.thresholdPower = t4.thresholdPower;
+            o.adaptive.highPassHz = t4.highPassHz;
+            o.adaptive.lowPassHz = t4.lowPassHz;
+        }
+    }
+    if (method == Method::Esc && dob) {
+        o.dob.qCutoffHz = 2500.0; // Ch.6: DOB LPF 2500 Hz, G_F high-pass above 1000 Hz
+        o.dob.bandHighHz = 0.0;
+    }
+}
+
 Result<AvoidanceCutResult> runAvoidanceCut(const sim::AxisDefinition& axis, const AvoidanceCutOptions& o)
 {
     sim::CutSimulationOptions cut = o.cut;

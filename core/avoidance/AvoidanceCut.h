@@ -44,6 +44,11 @@ struct AvoidanceCutResult {
     std::uint64_t escBoundHits = 0; ///< esc only: controller samples held at a speed bound
 };
 
+/// Sets `o.method`, `o.sensor` and the method's table defaults (adaptive: Table 4 with the DOB, Table 3 with the
+/// accelerometer; multimode: Table 5, with the DOB Table 4's t_s, σ_th and band; esc: Table 6, with the DOB the
+/// Ch.6 observer (Q 2500 Hz, high-pass 1000 Hz)). The cut and the ESC bounds are left as they are.
+void applyMethodDefaults(AvoidanceCutOptions& o, Method method, machining::AvoidanceSensor sensor);
+
 /// Errors name the option at fault (the controller's create() message).
 Result<AvoidanceCutResult> runAvoidanceCut(const sim::AxisDefinition& axis, const AvoidanceCutOptions& options);
 
