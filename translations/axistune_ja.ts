@@ -6607,4 +6607,257 @@
         <translation>%1 に書き込めません: %2</translation>
     </message>
 </context>
+<context>
+    <name>axistune::gui::MachiningAvoidancePage</name>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Chatter avoidance in the loop</source>
+        <translation>ループ内のびびり振動回避</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Runs this cut on the simulated vmc X axis while an avoidance method changes the spindle speed: the adaptive stable-pocket rule, the multi-resonance search or extremum seeking.</source>
+        <translation>回避手法が主軸回転数を変えながら、シミュレーションした vmc の X 軸でこの切削を行います: 適応的な安定ポケット則、複数共振の探索、または極値探索制御。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>none (constant speed)</source>
+        <translation>なし (一定回転数)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>adaptive (stable pocket)</source>
+        <translation>適応 (安定ポケット)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>multimode (J_chat search)</source>
+        <translation>複数モード (J_chat 探索)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>ESC (extremum seeking)</source>
+        <translation>ESC (極値探索制御)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>accelerometer on the spindle</source>
+        <translation>主軸の加速度センサ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>feed-stage disturbance observer</source>
+        <translation>送りステージの外乱オブザーバ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Assumed curvature f&apos;&apos; of the cost near its minimum; the seed&apos;s 1e5 belongs to its own signal levels</source>
+        <translation>最小点付近の評価関数の仮定曲率 f&apos;&apos;。シードの 1e5 はシード自身の信号レベルに対する値です</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Run cut</source>
+        <translation>切削を実行</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Frequency</source>
+        <translation>周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>PSD of the acceleration</source>
+        <translation>加速度の PSD</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>(m/s²)²/Hz</source>
+        <translation>(m/s²)²/Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Spindle speed</source>
+        <translation>主軸回転数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>min⁻¹</source>
+        <translation>min⁻¹</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Limit depth</source>
+        <translation>限界切込み</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Moves the operating point on the lobes through the cut</source>
+        <translation>切削中の動作点を安定限界線図上で動かします</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Method</source>
+        <translation>手法</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Sensor</source>
+        <translation>センサ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>duration [s]</source>
+        <translation>時間 [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>ESC from [s]</source>
+        <translation>ESC 開始 [s]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>ESC bounds [min⁻¹]</source>
+        <translation>ESC 範囲 [min⁻¹]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>ESC f&apos;&apos;</source>
+        <translation>ESC f&apos;&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>The tool or cut data are not valid.</source>
+        <translation>工具または切削条件のデータが不正です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>duration: a number of seconds in [0.3, 20]</source>
+        <translation>時間: 0.3～20 の秒数を入力してください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>ESC: the start time (before the end of the cut), both speed bounds and f&apos;&apos; must be numbers</source>
+        <translation>ESC: 開始時刻 (切削終了前)、回転数の上下限、f&apos;&apos; はいずれも数値で入力してください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Running…</source>
+        <translation>実行中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Aborted: %1</source>
+        <translation>中止しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Error: %1</source>
+        <translation>エラー: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>tool acceleration y</source>
+        <translation>工具加速度 y</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>spindle speed</source>
+        <translation>主軸回転数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>spindle speed command</source>
+        <translation>主軸回転数指令</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>estimated chatter frequency</source>
+        <translation>推定びびり周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>cost (signal squared)</source>
+        <translation>評価関数 (信号の二乗)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>self-excited power</source>
+        <translation>自励振動パワー</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>start of the cut</source>
+        <translation>切削開始時</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>last 0.3 s</source>
+        <translation>最後の 0.3 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Final spindle speed %1 min⁻¹.</source>
+        <translation>最終の主軸回転数 %1 min⁻¹。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Acceleration RMS over the last 0.3 s: %1 m/s² (constant speed %2 m/s², %3 % lower).</source>
+        <translation>最後の 0.3 s の加速度 RMS: %1 m/s² (一定回転数では %2 m/s²、%3 % 低減)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>ESC: dither %1 Hz, h_c %2 Hz, k_c %3 1/s; %4 samples held at a bound.</source>
+        <translation>ESC: 摂動 %1 Hz、h_c %2 Hz、k_c %3 1/s。上下限で保持したサンプル数 %4。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>limit depth</source>
+        <translation>限界切込み</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>operating point path</source>
+        <translation>動作点の軌跡</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>now</source>
+        <translation>現在</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Triggered at %1 s; %n adaptation step(s).</source>
+        <translation>
+            <numerusform>%1 s で起動しました。適応ステップ %n 回。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>the vmc preset has no X axis</source>
+        <translation>vmc プリセットに X 軸がありません</translation>
+    </message>
+</context>
 </TS>

@@ -5,6 +5,7 @@
 #include "app/gui/MachiningWizard.h"
 
 #include "app/gui/AppContext.h"
+#include "app/gui/MachiningAvoidancePage.h"
 #include "app/gui/MachiningTapPage.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/io/FrfCsv.h"
@@ -500,6 +501,8 @@ MachiningWizard::MachiningWizard(AppContext& ctx, QWidget* parent) : QWizard(par
     setPage(SaveId, m_save);
     m_tap = new MachiningTapPage(*m_tool, this);
     setPage(TapId, m_tap);
+    m_avoid = new MachiningAvoidancePage(*m_tool, *m_cut, *m_lobes, this);
+    setPage(AvoidId, m_avoid);
     setButtonText(QWizard::CustomButton1, tr("Tap test…"));
     button(QWizard::CustomButton1)->setObjectName("machTapTest");
     button(QWizard::CustomButton1)->setToolTip(tr("Measure the tool-tip receptance with an impact hammer"));
@@ -528,6 +531,10 @@ int MachiningWizard::nextId() const
         return m_tapRequested ? int(TapId) : int(CutId);
     case TapId:
         return CutId;
+    case AnalysisId:
+        return AvoidId;
+    case AvoidId:
+        return SaveId;
     case SaveId:
         return -1;
     default:

@@ -10,6 +10,7 @@
 //                 estimator) the lobe number and the stable-pocket speed (core/machining/SpindleSpeed);
 //   5. analysis — a captured cut (capture CSV) or a cut simulated on the vmc X axis with this tool and cut:
 //                 the cutting-force observer estimate and the chatter intervals (seed 004 detector);
+//   5b. avoidance — the cut with a chatter-avoidance method in the loop (MachiningAvoidancePage.h);
 //   6. save     — the session (kind "machining"): inputs, lobes, advice, intervals, the analysed cut.
 
 #include "core/machining/SpindleSpeed.h"
@@ -256,7 +257,7 @@ class MachiningWizard : public QWizard {
     Q_OBJECT
 public:
     /// TapId is reached only from the tool page's "Tap test…" button (nextId()).
-    enum PageId { ToolId, CutId, LobesId, AdviceId, AnalysisId, SaveId, TapId };
+    enum PageId { ToolId, CutId, LobesId, AdviceId, AnalysisId, SaveId, TapId, AvoidId };
 
     explicit MachiningWizard(AppContext& ctx, QWidget* parent = nullptr);
 
@@ -266,6 +267,7 @@ public:
     MachiningAdvicePage* advicePage() const { return m_advice; }
     MachiningAnalysisPage* analysisPage() const { return m_analysis; }
     MachiningSavePage* savePage() const { return m_save; }
+    class MachiningAvoidancePage* avoidancePage() const { return m_avoid; }
     class MachiningTapPage* tapPage() const { return m_tap; }
     /// From the tool page: opens the tap-test page.
     void openTapTest();
@@ -286,6 +288,7 @@ private:
     MachiningAdvicePage* m_advice = nullptr;
     MachiningAnalysisPage* m_analysis = nullptr;
     MachiningSavePage* m_save = nullptr;
+    class MachiningAvoidancePage* m_avoid = nullptr;
     class MachiningTapPage* m_tap = nullptr;
     bool m_tapRequested = false;
     std::int64_t m_sessionId = 0;

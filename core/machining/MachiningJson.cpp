@@ -68,7 +68,7 @@ Result<std::string> slurp(const std::string& path)
     return model::readInputFile(path);
 }
 
-}  // namespace
+} // namespace
 
 Result<ToolModes> parseToolJson(const std::string& text, const std::string& src)
 {
@@ -116,7 +116,27 @@ Result<CuttingConditions> parseCutJson(const std::string& text, const std::strin
     else if (mode == "up")
         c.milling = MillingDirection::Up;
     else
-        return makeError(ErrorCode::BadInput, src + ", key 'milling': must be \"down\" or \"up\" (got \"" + mode + "\")");
+        return makeError(ErrorCode::BadInput,
+                         src + ", key 'milling': must be \"down\" or \"up\" (got \"" + mode + "\")");
+    if (j->contains("spindle")) {
+        const auto& sp = j->at("spindle");
+        const std::string where = src + ", spindle";
+        if (!sp.is_object())
+            return makeError(ErrorCode::BadInput, where + ": must be an object {time_constant_s, min_rpm, max_rpm}");
+        auto tc = number(sp, "time_constant_s", where);
+        auto lo = number(sp, "min_rpm", where);
+        auto hi = number(sp, "max_rpm", where);
+        for (const auto* r : {&tc, &lo, &hi})
+            if (!*r)
+                return r->error();
+        if (*tc < 0.0 || *tc > 10.0)
+            return makeError(ErrorCode::OutOfRange, where + ", key 'time_constant_s': must be in [0, 10] s");
+        if (!(*lo > 0.0) || !(*hi >= *lo))
+            return makeError(ErrorCode::OutOfRange, where + ": need 0 < min_rpm <= max_rpm");
+        c.spindleTimeConstantS = *tc;
+        c.spindleMinRpm = *lo;
+        c.spindleMaxRpm = *hi;
+    }
     if (auto s = validateCut(c); !s)
         return makeError(s.error().code, src + ": " + s.error().detail);
     return c;
@@ -138,4 +158,4 @@ Result<CuttingConditions> readCutJsonFile(const std::string& path)
     return parseCutJson(*t, path);
 }
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

@@ -7,7 +7,6 @@
 #include "core/model/Result.h"
 
 #include <Eigen/Core>
-
 #include <complex>
 #include <vector>
 
@@ -32,6 +31,11 @@ struct CuttingConditions {
     double krNPerM2 = 0.0;        ///< radial specific cutting force
     double radialImmersion = 0.0; ///< a_e / D, 0 < r ≤ 1
     MillingDirection milling = MillingDirection::Down;
+    /// Spindle speed loop of a simulated cut (cut.json optional "spindle" object, docs/chatter-avoidance.md):
+    /// first-order time constant (2 ms ≈ the seed's 80 Hz speed loop, spec §4.3) and the speed limits.
+    double spindleTimeConstantS = 0.002;
+    double spindleMinRpm = 100.0;
+    double spindleMaxRpm = 20000.0;
 };
 
 /// Checks every mode (mass > 0, damping ≥ 0, stiffness > 0, all finite). A direction without modes is rigid
@@ -56,4 +60,4 @@ Eigen::Matrix2d integrateToothMatrix(const CuttingConditions& cut, double a, dou
 /// (tooth j at θ + 2πj/N_t). Units N/m².
 Eigen::Matrix2d averageCuttingMatrix(const CuttingConditions& cut, double thetaA, double thetaB);
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

@@ -11,18 +11,22 @@
 //    simulated by the wizard itself) at least one;
 //  - the session (kind "machining") is stored with inputs, lobes, advice, intervals and the cut.
 #include "app/gui/AppContext.h"
+#include "app/gui/MachiningAvoidancePage.h"
 #include "app/gui/MachiningWizard.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/io/FrfCsv.h"
 #include "core/machining/ToolModel.h"
 #include "widgets/CurvePlot.h"
+#include "widgets/TimeTracePlot.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QLabel>
 #include <QLineEdit>
+#include <QProgressBar>
 #include <QPushButton>
+#include <QSlider>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -58,7 +62,6 @@ void setCell(QTableWidget* t, int row, int col, const QString& text)
 
 } // namespace
 
-
 namespace {
 /// The text of a message in the running language up to its first remaining placeholder (so the
 /// test passes in English and with AXISTUNE_LANG=ja for the Japanese screenshots).
@@ -70,12 +73,87 @@ QString trPrefix(const char* context, const char* source, int firstArg)
     const int cut = t.indexOf('%');
     return (cut < 0 ? t : t.left(cut)).trimmed();
 }
-}  // namespace
+} // namespace
 
 class TestMachiningWizard : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { axistune::testing::installLanguageFromEnv(); }
+
+    void avoidancePageRunsAdaptiveAndEsc()
+    {
+        // The avoidance page on the Table 1 tool, a_e 7 mm, 1.5 mm from 2800 min⁻¹ (unstable, SDM limit 0.958 mm):
+        // the adaptive method with the accelerometer ends in the 2955–3000 min⁻¹ pocket (issue 22; the same
+        // figure as tests/core/avoidance), the plots carry acceleration, speed, command, chatter frequency and
+        // power, the spectrum two curves, the lobes the path and the operating point; Abort stops a long cut.
+        AppContext ctx;
+        MachiningWizard w(ctx);
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.toolPage()->loadToolFile(QString::fromStdString(kSamples + "tool-table1.json")));
+        w.next();
+        auto* cut = w.cutPage();
+        QVERIFY(cut->loadCutFile(QString::fromStdString(kSamples + "cut-table1.json")));
+        cut->rpm()->setText("2800");
+        cut->depthMm()->setText("1.5");
+        cut->rpmMin()->setText("2400");
+        cut->rpmMax()->setText("3400");
+        cut->rpmStep()->setText("25");
+        cut->stepsPerPeriod()->setValue(40);
+        w.next();
+        QVERIFY(waitUntil([&] { return w.lobesPage()->isComplete(); }, 60000));
+        w.next();
+        w.next();
+        w.next();
+        QCOMPARE(w.currentId(), int(MachiningWizard::AvoidId));
+        auto* page = w.avoidancePage();
+        page->method()->setCurrentIndex(page->method()->findData("adaptive"));
+        page->sensor()->setCurrentIndex(page->sensor()->findData("accel"));
+        page->durationS()->setText(QLocale().toString(1.0));
+        page->start();
+        QVERIFY(page->busy());
+        QVERIFY(waitUntil([&] { return !page->busy(); }, 60000));
+        QVERIFY2(page->run().result != nullptr, qPrintable(page->summary()->text()));
+        const auto& cap = page->run().result->capture;
+        const double finalRpm = cap.channel("spindle_speed_rpm")->data.back();
+        QVERIFY2(finalRpm >= 2955.0 && finalRpm <= 3000.0, qPrintable(QString::number(finalRpm)));
+        QCOMPARE(page->tracePlot()->seriesNames().size(), 5);
+        QCOMPARE(page->spectrumPlot()->curveCount(), 2);
+        QCOMPARE(page->lobesPlot()->curveCount(), 2); // lobes + operating point path
+        QCOMPARE(page->lobesPlot()->pointCount(), 1);
+        page->timeSlider()->setValue(0);
+        QCOMPARE(page->lobesPlot()->pointCount(), 1);
+        page->timeSlider()->setValue(1000);
+        QVERIFY(page->summary()->text().contains(QLocale().toString(finalRpm, 'f', 0)));
+        maybeScreenshot(&w, "machining-05b-avoidance-adaptive");
+        // ESC from 0.5 s within ±30 % of 2800 min⁻¹: the speed stays inside the bounds.
+        page->method()->setCurrentIndex(page->method()->findData("esc"));
+        page->escStartS()->setText(QLocale().toString(0.5));
+        page->escMinRpm()->setText("2500");
+        page->escMaxRpm()->setText("3100");
+        page->start();
+        QVERIFY(waitUntil([&] { return !page->busy(); }, 60000));
+        QVERIFY2(page->run().result != nullptr, qPrintable(page->summary()->text()));
+        for (double v : page->run().result->capture.channel("spindle_speed_rpm")->data)
+            QVERIFY(v >= 2500.0 - 1e-6 && v <= 3100.0 + 1e-6);
+        maybeScreenshot(&w, "machining-05c-avoidance-esc");
+        // Abort: a 20 s cut stops early with the reason shown, nothing plotted as a result.
+        page->durationS()->setText(QLocale().toString(20.0));
+        page->method()->setCurrentIndex(page->method()->findData("adaptive"));
+        page->start();
+        QVERIFY(page->abortButton()->isEnabled());
+        QTest::qWait(200);
+        page->abort();
+        QVERIFY(waitUntil([&] { return !page->busy(); }, 30000));
+        QVERIFY(page->run().aborted);
+        QVERIFY(page->run().result == nullptr);
+        // Bad input: a duration out of range is refused with the reason, no run.
+        page->durationS()->setText("abc");
+        page->start();
+        QVERIFY(!page->busy());
+        QVERIFY(!page->summary()->text().isEmpty());
+    }
 
     void registeredAndWorksOffline()
     {
@@ -286,7 +364,9 @@ private slots:
         QCOMPARE(lobes->plot()->curveCount(), 1);
         QCOMPARE(lobes->plot()->pointCount(), 1);
         // 1.5 mm is above the limit: unstable (spec §5.1).
-        QVERIFY2(lobes->status()->text().contains(QCoreApplication::translate("axistune::gui::MachiningLobesPage", "UNSTABLE (chatter expected)")), qPrintable(lobes->status()->text()));
+        QVERIFY2(lobes->status()->text().contains(
+                     QCoreApplication::translate("axistune::gui::MachiningLobesPage", "UNSTABLE (chatter expected)")),
+                 qPrintable(lobes->status()->text()));
         maybeScreenshot(&w, "machining-03-lobes");
         w.next();
         // Step 4: advice for 1390 Hz (just above the tool mode, 1380.6 Hz) at 2800 min⁻¹, 4 teeth, computed
@@ -354,8 +434,13 @@ private slots:
         QVERIFY2(analysis->analysed(), qPrintable(analysis->summary()->text()));
         QVERIFY(!analysis->analysis().chatter->intervals.empty());
         QVERIFY(analysis->intervalTable()->rowCount() >= 1);
-        QVERIFY(analysis->summary()->text().contains(trPrefix("axistune::gui::MachiningAnalysisPage", "CHATTER: %n interval(s) detected (vibration mode %1 Hz).", 0)));
+        QVERIFY(analysis->summary()->text().contains(trPrefix(
+            "axistune::gui::MachiningAnalysisPage", "CHATTER: %n interval(s) detected (vibration mode %1 Hz).", 0)));
         maybeScreenshot(&w, "machining-05-analysis");
+        w.next();
+        // Step 5b: chatter avoidance in the loop (may be skipped).
+        QCOMPARE(w.currentId(), int(MachiningWizard::AvoidId));
+        QVERIFY(w.avoidancePage()->isComplete());
         w.next();
         // Step 6: the session.
         QCOMPARE(w.currentId(), int(MachiningWizard::SaveId));
@@ -404,7 +489,8 @@ private slots:
         lobes->cancelButton()->click();
         QVERIFY(waitUntil([&] { return lobes->cancelButton()->isEnabled() == false; }, 30000));
         QVERIFY(!lobes->isComplete());
-        QVERIFY(lobes->status()->text().contains(QCoreApplication::translate("axistune::gui::MachiningLobesPage", "Cancelled: no lobe diagram. Press Compute again.")));
+        QVERIFY(lobes->status()->text().contains(QCoreApplication::translate(
+            "axistune::gui::MachiningLobesPage", "Cancelled: no lobe diagram. Press Compute again.")));
         // Compute again, then Back (cancels) and Next with a short range: the lobes of the new range follow.
         lobes->findChild<QPushButton*>("machLobeAgain")->click();
         w.back();
