@@ -37,4 +37,7 @@ int writeResult(const std::string& command, const std::string& text, const std::
 int writeJsonResult(const std::string& command, const nlohmann::json& result, const std::string& outPath,
                     int indent = 2);
 
+/// Help text of --connect: "drive to use: " and the registered URI forms (core/device/DriveRegistry.h).
+std::string connectOptionHelp();
+
 }  // namespace axistune::cli

@@ -257,6 +257,11 @@ int runCapture(const CaptureOptions& o)
         return reportError(cmd, makeError(ErrorCode::BadInput, "--sweep-out is only for --test frf"));
     if (auto st = prepareDrive(**drive, o); !st)
         return reportError(cmd, st.error());
+    // The drive plans the test first (Drive::planTest): a request beyond its limits is refused with the
+    // drive's own words before anything moves, and the planned motion time is reported.
+    auto plan = (*drive)->planTest(req);
+    if (!plan)
+        return reportError(cmd, plan.error());
     if (auto st = (*drive)->startTest(req); !st)
         return reportError(cmd, st.error());
     while (true) {
@@ -288,14 +293,15 @@ int runCapture(const CaptureOptions& o)
     if (auto st = io::writeCaptureCsvFile(o.out, cap); !st)
         return reportError(cmd, st.error());
     std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << cap.size() << ", \"fs_Hz\": " << cap.metadata["fs_Hz"]
-              << "}\n";
+              << ", \"planned_motion_s\": " << model::formatNumber(plan->motionTimeS, 10)
+              << ", \"planned_samples\": " << plan->recordSamples << "}\n";
     return 0;
 }
 
 const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the trace as a capture CSV",
     [](CLI::App& sub) {
         auto o = std::make_shared<CaptureOptions>();
-        sub.add_option("--connect", o->connect, "sim:PRESET (vmc, dd-table, two-inertia)")->capture_default_str();
+        sub.add_option("--connect", o->connect, connectOptionHelp())->capture_default_str();
         sub.add_option("--axis", o->axis, "axis name, e.g. X (all tests but circle)");
         sub.add_option("--test", o->test, "step | jog | hold | current-step | frf | circle")->capture_default_str();
         sub.add_option("--amplitude", o->amplitude, "step: motor velocity step [rad/s]; current-step: q-axis current step [A]");

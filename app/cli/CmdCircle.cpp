@@ -208,7 +208,7 @@ namespace {
 const CliRegistrar kRegistrar{
     {"circle", "Ball-bar circle test (simulated machine or a drive), written as a ball-bar CSV", [](CLI::App& sub) {
          auto o = std::make_shared<CircleCliOptions>();
-         sub.add_option("--connect", o->connect, "sim:PRESET with two linear axes (vmc), or modbus://HOST:PORT")
+         sub.add_option("--connect", o->connect, connectOptionHelp() + "; two linear axes (sim:vmc)")
              ->capture_default_str();
          sub.add_option("--plane", o->plane, "the two axes, first = x role")->capture_default_str();
          sub.add_option("--radius-mm", o->radiusMm, "circle radius [mm]")

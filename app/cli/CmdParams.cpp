@@ -101,7 +101,7 @@ int runParams(const ParamsOptions& o)
 const CliRegistrar kRegistrar{
     {"params", "Read (JSON, SI units) and write drive parameters with read-back", [](CLI::App& sub) {
          auto o = std::make_shared<ParamsOptions>();
-         sub.add_option("--connect", o->connect, "sim:PRESET or modbus://HOST:PORT[?timeout_ms=N]")
+         sub.add_option("--connect", o->connect, connectOptionHelp())
              ->capture_default_str();
          sub.add_option("--axis", o->axis, "axis name, e.g. X")->required();
          sub.add_option("--set", o->set,

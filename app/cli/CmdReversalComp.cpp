@@ -5,6 +5,7 @@
 // with a new circle.
 #include "app/cli/CircleCommand.h"
 #include "app/cli/CliCommand.h"
+#include "core/device/DriveRegistry.h"
 #include "core/device/Drive.h"
 #include "core/io/BallBarCsv.h"
 #include "core/model/ResultJson.h"
@@ -98,9 +99,9 @@ int runReversalComp(const ReversalCompCliOptions& o)
     if (o.circle.plane.size() != 2)
         return reportError(
             cmd, makeError(ErrorCode::BadInput, "--plane '" + o.circle.plane + "': two axis letters, e.g. XY"));
-    if (o.circle.connect.rfind("sim:", 0) != 0 && o.circle.connect.rfind("modbus://", 0) != 0)
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--connect '" + o.circle.connect +
-                                                                   "': expected sim:PRESET or modbus://HOST:PORT"));
+    if (!device::findBackend(o.circle.connect))
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--connect '" + o.circle.connect + "': expected " +
+                                                                   device::registeredUriForms()));
     const sim::CircleTestOptions c = circleOptions(o.circle);
     auto drive = device::connect({o.circle.connect, o.circle.seed});
     if (!drive)
@@ -169,7 +170,7 @@ const CliRegistrar kRegistrar{
      [](CLI::App& sub) {
          auto o = std::make_shared<ReversalCompCliOptions>();
          auto& c = o->circle;
-         sub.add_option("--connect", c.connect, "sim:PRESET or modbus://HOST:PORT")->capture_default_str();
+         sub.add_option("--connect", c.connect, connectOptionHelp())->capture_default_str();
          sub.add_option("--plane", c.plane, "the two axes, first = x role")->capture_default_str();
          sub.add_option("--radius-mm", c.radiusMm, "circle radius [mm]")
              ->capture_default_str()

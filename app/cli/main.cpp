@@ -2,6 +2,7 @@
 // axistune-cli: every analysis and capture without the GUI. Results as JSON on stdout (or --out),
 // errors on stderr with exit codes 2 (bad input), 3 (device error), 4 (safety stop).
 #include "app/cli/CliCommand.h"
+#include "core/device/DriveRegistry.h"
 #include "core/io/AtomicFile.h"
 #include "core/model/InputLimits.h"
 
@@ -14,6 +15,11 @@ std::vector<CliCommand>& commandRegistry()
 {
     static std::vector<CliCommand> registry;
     return registry;
+}
+
+std::string connectOptionHelp()
+{
+    return "drive to connect to: " + device::registeredUriForms() + " (axistune-cli drive --list-backends)";
 }
 
 int reportError(const std::string& command, const Error& error)

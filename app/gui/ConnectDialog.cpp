@@ -3,12 +3,16 @@
 
 #include "app/gui/AppContext.h"
 
-#include "core/sim/MachineDefinition.h"
+#include "core/device/DriveRegistry.h"
 
+#include <QButtonGroup>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QEvent>
+#include <QFileDialog>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -21,68 +25,106 @@
 namespace axistune {
 namespace gui {
 
+namespace {
+
+QString trBackend(const std::string& text)
+{
+    return text.empty() ? QString() : QCoreApplication::translate("DriveRegistry", text.c_str());
+}
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+}  // namespace
+
+QString backendKey(const device::DriveBackend& backend)
+{
+    QString k = qs(backend.scheme);
+    k.remove(':').remove('/');
+    return k;
+}
+
 ConnectDialog::ConnectDialog(AppContext& ctx, QWidget* parent) : QDialog(parent), m_ctx(ctx)
 {
     setObjectName("connectDialog");
     auto* lay = new QVBoxLayout(this);
-    m_simRadio = new QRadioButton(this);
-    m_simRadio->setObjectName("simRadio");
-    m_modbusRadio = new QRadioButton(this);
-    m_modbusRadio->setObjectName("modbusRadio");
-    lay->addWidget(m_simRadio);
-    lay->addWidget(m_modbusRadio);
-
+    m_group = new QButtonGroup(this);
     m_stack = new QStackedWidget(this);
-    auto* simPage = new QWidget(m_stack);
-    auto* simForm = new QFormLayout(simPage);
-    m_preset = new QComboBox(simPage);
-    m_preset->setObjectName("presetCombo");
-    for (const auto& p : sim::presetNames())
-        m_preset->addItem(QString::fromStdString(p));
-    m_seed = new QSpinBox(simPage);
-    m_seed->setObjectName("seedSpin");
-    m_seed->setRange(0, 999999);
-    m_seed->setValue(1);
-    m_presetLabel = new QLabel(simPage);
-    m_seedLabel = new QLabel(simPage);
-    simForm->addRow(m_presetLabel, m_preset);
-    simForm->addRow(m_seedLabel, m_seed);
-    // An identified rigid-body model as one axis's plant (docs/identification.md "Using the result").
-    m_model = new QLineEdit(simPage);
-    m_model->setObjectName("modelEdit");
-    m_modelAxis = new QLineEdit(simPage);
-    m_modelAxis->setObjectName("modelAxisEdit");
-    m_modelLabel = new QLabel(simPage);
-    m_modelAxisLabel = new QLabel(simPage);
-    simForm->addRow(m_modelLabel, m_model);
-    simForm->addRow(m_modelAxisLabel, m_modelAxis);
-    m_stack->addWidget(simPage);
-
-    auto* mbPage = new QWidget(m_stack);
-    auto* mbForm = new QFormLayout(mbPage);
-    m_host = new QLineEdit("127.0.0.1", mbPage);
-    m_host->setObjectName("hostEdit");
-    m_port = new QSpinBox(mbPage);
-    m_port->setObjectName("portSpin");
-    m_port->setRange(1, 65535);
-    m_port->setValue(502);
-    m_timeout = new QSpinBox(mbPage);
-    m_timeout->setRange(50, 60000);
-    m_timeout->setValue(1000);
-    m_timeout->setSuffix(" ms");
-    m_map = new QLineEdit("axistune-sim", mbPage);
-    m_hostLabel = new QLabel(mbPage);
-    m_portLabel = new QLabel(mbPage);
-    m_timeoutLabel = new QLabel(mbPage);
-    m_mapLabel = new QLabel(mbPage);
-    m_unitNote = new QLabel(mbPage);
-    m_unitNote->setWordWrap(true);
-    mbForm->addRow(m_hostLabel, m_host);
-    mbForm->addRow(m_portLabel, m_port);
-    mbForm->addRow(m_timeoutLabel, m_timeout);
-    mbForm->addRow(m_mapLabel, m_map);
-    mbForm->addRow(m_unitNote);
-    m_stack->addWidget(mbPage);
+    QSettings saved;
+    for (const auto& b : device::registeredBackends()) {
+        Page p;
+        p.backend = &b;
+        const QString key = backendKey(b);
+        p.radio = new QRadioButton(this);
+        p.radio->setObjectName("backendRadio_" + key);
+        m_group->addButton(p.radio, static_cast<int>(m_pages.size()));
+        lay->addWidget(p.radio);
+        auto* page = new QWidget(m_stack);
+        auto* form = new QFormLayout(page);
+        p.form = new QLabel(page);
+        p.form->setWordWrap(true);
+        p.form->setObjectName("backendForm_" + key);
+        form->addRow(p.form);
+        for (const auto& s : b.settings) {
+            Field f;
+            f.label = new QLabel(page);
+            const QString name = "setting_" + key + "_" + qs(s.name);
+            const QString stored = saved.value("connect/" + key + "/" + qs(s.name), qs(s.defaultValue)).toString();
+            switch (s.type) {
+            case device::BackendSetting::Type::Integer: {
+                auto* spin = new QSpinBox(page);
+                spin->setRange(static_cast<int>(s.minimum), static_cast<int>(s.maximum));
+                spin->setValue(stored.toInt());
+                if (!s.unit.empty())
+                    spin->setSuffix(" " + qs(s.unit));
+                f.editor = spin;
+                break;
+            }
+            case device::BackendSetting::Type::Choice: {
+                auto* combo = new QComboBox(page);
+                for (const auto& c : s.choices)
+                    combo->addItem(qs(c));
+                combo->setCurrentIndex(std::max(0, combo->findText(stored)));
+                f.editor = combo;
+                break;
+            }
+            case device::BackendSetting::Type::File: {
+                auto* row = new QWidget(page);
+                auto* h = new QHBoxLayout(row);
+                h->setContentsMargins(0, 0, 0, 0);
+                auto* edit = new QLineEdit(stored, row);
+                edit->setObjectName(name);
+                auto* browse = new QPushButton(row);
+                browse->setObjectName(name + "_browse");
+                h->addWidget(edit, 1);
+                h->addWidget(browse);
+                connect(browse, &QPushButton::clicked, this, [this, edit, label = s.label] {
+                    const QString chosen = QFileDialog::getOpenFileName(this, trBackend(label), edit->text());
+                    if (!chosen.isEmpty())
+                        edit->setText(chosen);
+                });
+                f.editor = row;
+                break;
+            }
+            case device::BackendSetting::Type::Text:
+                f.editor = new QLineEdit(stored, page);
+                break;
+            }
+            if (s.type != device::BackendSetting::Type::File)
+                f.editor->setObjectName(name);
+            form->addRow(f.label, f.editor);
+            p.fields.push_back(f);
+        }
+        if (b.usesSeed) {
+            p.seed = new QSpinBox(page);
+            p.seed->setObjectName("seed_" + key);
+            p.seed->setRange(0, 999999);
+            p.seed->setValue(1);
+            p.seedLabel = new QLabel(page);
+            form->addRow(p.seedLabel, p.seed);
+        }
+        m_stack->addWidget(page);
+        m_pages.push_back(p);
+    }
     lay->addWidget(m_stack);
 
     m_status = new QLabel(this);
@@ -96,16 +138,14 @@ ConnectDialog::ConnectDialog(AppContext& ctx, QWidget* parent) : QDialog(parent)
     m_connectButton->setDefault(true);
     lay->addWidget(m_buttons);
 
-    // The last choice is the default; the simulated machine the first time.
-    QSettings s;
-    m_simRadio->setChecked(s.value("connect/mode", "sim").toString() != "modbus");
-    m_modbusRadio->setChecked(!m_simRadio->isChecked());
-    const int idx = m_preset->findText(s.value("connect/preset", "vmc").toString());
-    m_preset->setCurrentIndex(std::max(0, idx));
-    m_host->setText(s.value("connect/host", "127.0.0.1").toString());
-    m_port->setValue(s.value("connect/port", 502).toInt());
+    // The last choice is the default; the first registered backend (the simulated machine) the first time.
+    if (!m_pages.empty() && !selectBackend(saved.value("connect/scheme").toString()))
+        m_pages.front().radio->setChecked(true);
 
-    connect(m_simRadio, &QRadioButton::toggled, this, &ConnectDialog::updateMode);
+    connect(m_group, &QButtonGroup::idToggled, this, [this](int, bool on) {
+        if (on)
+            updateMode();
+    });
     connect(m_buttons, &QDialogButtonBox::accepted, this, &ConnectDialog::startConnect);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(&m_ctx.drive(), &DriveController::replied, this, &ConnectDialog::onReply);
@@ -116,19 +156,23 @@ ConnectDialog::ConnectDialog(AppContext& ctx, QWidget* parent) : QDialog(parent)
 void ConnectDialog::retranslateUi()
 {
     setWindowTitle(tr("Connect"));
-    m_simRadio->setText(tr("Built-in simulated machine"));
-    m_modbusRadio->setText(tr("Drive over Modbus TCP"));
-    m_presetLabel->setText(tr("Machine preset:"));
-    m_seedLabel->setText(tr("Noise seed:"));
-    m_modelLabel->setText(tr("Identified model (optional):"));
-    m_model->setPlaceholderText(tr("result JSON of Identify from motion"));
-    m_modelAxisLabel->setText(tr("Axis of the model:"));
-    m_hostLabel->setText(tr("Host:"));
-    m_portLabel->setText(tr("Port:"));
-    m_timeoutLabel->setText(tr("Response timeout:"));
-    m_mapLabel->setText(tr("Register map:"));
-    m_unitNote->setText(tr("Unit ids: one per axis, from the register map (axis i answers on unit id base + i; "
-                           "see docs/modbus.md)."));
+    for (auto& p : m_pages) {
+        p.radio->setText(trBackend(p.backend->label));
+        p.form->setText(tr("Address form: %1").arg(qs(p.backend->uriForm)));
+        for (std::size_t i = 0; i < p.fields.size(); ++i) {
+            const auto& s = p.backend->settings[i];
+            p.fields[i].label->setText(tr("%1:").arg(trBackend(s.label)));
+            if (auto* e = qobject_cast<QLineEdit*>(p.fields[i].editor))
+                e->setPlaceholderText(trBackend(s.hint));
+            if (auto* b = p.fields[i].editor->findChild<QPushButton*>()) {
+                b->setText(tr("Browse…"));
+                if (auto* e = p.fields[i].editor->findChild<QLineEdit*>())
+                    e->setPlaceholderText(trBackend(s.hint));
+            }
+        }
+        if (p.seedLabel)
+            p.seedLabel->setText(tr("Noise seed:"));
+    }
     m_connectButton->setText(tr("Connect"));
 }
 
@@ -139,42 +183,116 @@ void ConnectDialog::changeEvent(QEvent* event)
     QDialog::changeEvent(event);
 }
 
-void ConnectDialog::updateMode() { m_stack->setCurrentIndex(m_simRadio->isChecked() ? 0 : 1); }
+int ConnectDialog::current() const { return m_group->checkedId(); }
+
+void ConnectDialog::updateMode() { m_stack->setCurrentIndex(std::max(0, current())); }
+
+QString ConnectDialog::value(const Page& page, std::size_t i) const
+{
+    QWidget* e = page.fields[i].editor;
+    if (auto* spin = qobject_cast<QSpinBox*>(e))
+        return QString::number(spin->value());
+    if (auto* combo = qobject_cast<QComboBox*>(e))
+        return combo->currentText();
+    if (auto* edit = qobject_cast<QLineEdit*>(e))
+        return edit->text().trimmed();
+    if (auto* edit = e->findChild<QLineEdit*>())
+        return edit->text().trimmed();
+    return {};
+}
+
+void ConnectDialog::setValue(Page& page, std::size_t i, const QString& v)
+{
+    QWidget* e = page.fields[i].editor;
+    if (auto* spin = qobject_cast<QSpinBox*>(e))
+        spin->setValue(v.toInt());
+    else if (auto* combo = qobject_cast<QComboBox*>(e))
+        combo->setCurrentIndex(std::max(0, combo->findText(v)));
+    else if (auto* edit = qobject_cast<QLineEdit*>(e))
+        edit->setText(v);
+    else if (auto* inner = e->findChild<QLineEdit*>())
+        inner->setText(v);
+}
+
+QString ConnectDialog::settingsError() const
+{
+    if (current() < 0)
+        return tr("Choose a connection.");
+    const Page& p = m_pages[static_cast<std::size_t>(current())];
+    device::SettingValues v;
+    for (std::size_t i = 0; i < p.fields.size(); ++i)
+        v[p.backend->settings[i].name] = value(p, i).toStdString();
+    // The backend's own check names the setting by its English label; the form names it translated.
+    for (std::size_t i = 0; i < p.fields.size(); ++i) {
+        const auto& s = p.backend->settings[i];
+        if (s.required && value(p, i).isEmpty())
+            return tr("Enter %1.").arg(trBackend(s.label));
+    }
+    auto u = p.backend->uriFromSettings(v);
+    return u ? QString() : qs(u.error().detail);
+}
 
 QString ConnectDialog::uri() const
 {
-    if (m_simRadio->isChecked()) {
-        QString u = "sim:" + m_preset->currentText();
-        if (!m_model->text().trimmed().isEmpty()) {
-            u += "?model=" + m_model->text().trimmed();
-            if (!m_modelAxis->text().trimmed().isEmpty())
-                u += "&axis=" + m_modelAxis->text().trimmed();
-        }
-        return u;
-    }
-    QString u = QString("modbus://%1:%2").arg(m_host->text().trimmed()).arg(m_port->value());
-    QStringList query;
-    if (m_timeout->value() != 1000)
-        query << QString("timeout_ms=%1").arg(m_timeout->value());
-    if (!m_map->text().trimmed().isEmpty() && m_map->text().trimmed() != "axistune-sim")
-        query << "map=" + m_map->text().trimmed();
-    return query.isEmpty() ? u : u + "?" + query.join('&');
+    if (current() < 0)
+        return {};
+    const Page& p = m_pages[static_cast<std::size_t>(current())];
+    device::SettingValues v;
+    for (std::size_t i = 0; i < p.fields.size(); ++i)
+        v[p.backend->settings[i].name] = value(p, i).toStdString();
+    auto u = p.backend->uriFromSettings(v);
+    return u ? qs(*u) : QString();
 }
 
-quint64 ConnectDialog::seed() const { return static_cast<quint64>(m_seed->value()); }
+quint64 ConnectDialog::seed() const
+{
+    if (current() < 0)
+        return 1;
+    const Page& p = m_pages[static_cast<std::size_t>(current())];
+    return p.seed ? static_cast<quint64>(p.seed->value()) : 1;
+}
+
+bool ConnectDialog::selectBackend(const QString& scheme)
+{
+    for (auto& p : m_pages) {
+        if (qs(p.backend->scheme) == scheme) {
+            p.radio->setChecked(true);
+            updateMode();
+            return true;
+        }
+    }
+    return false;
+}
+
+bool ConnectDialog::setSetting(const QString& name, const QString& v)
+{
+    if (current() < 0)
+        return false;
+    Page& p = m_pages[static_cast<std::size_t>(current())];
+    for (std::size_t i = 0; i < p.fields.size(); ++i) {
+        if (qs(p.backend->settings[i].name) == name) {
+            setValue(p, i, v);
+            return true;
+        }
+    }
+    return false;
+}
 
 void ConnectDialog::setSimulated(const QString& preset, quint64 seed)
 {
-    m_simRadio->setChecked(true);
-    m_preset->setCurrentIndex(std::max(0, m_preset->findText(preset)));
-    m_seed->setValue(static_cast<int>(seed));
+    if (!selectBackend("sim:"))
+        return;
+    setSetting("preset", preset);
+    if (auto& p = m_pages[static_cast<std::size_t>(current())]; p.seed)
+        p.seed->setValue(static_cast<int>(seed));
 }
 
 void ConnectDialog::setModbus(const QString& host, int port)
 {
-    m_modbusRadio->setChecked(true);
-    m_host->setText(host);
-    m_port->setValue(port);
+    if (!selectBackend("modbus://"))
+        return;
+    setSetting("host", host);
+    setSetting("port", QString::number(port));
 }
 
 QString ConnectDialog::errorText() const { return m_failed ? m_status->text() : QString(); }
@@ -183,10 +301,10 @@ void ConnectDialog::startConnect()
 {
     if (m_request >= 0)
         return;
-    if (m_modbusRadio->isChecked() && m_host->text().trimmed().isEmpty()) {
+    if (const QString why = settingsError(); !why.isEmpty()) {
         m_failed = true;
         m_status->setStyleSheet("color: #b00020;");
-        m_status->setText(tr("Enter the host name or address of the drive."));
+        m_status->setText(why);
         return;
     }
     m_failed = false;
@@ -208,11 +326,12 @@ void ConnectDialog::onReply(const DriveReply& reply)
         m_status->setText(tr("The connection failed: %1").arg(reply.error));
         return;
     }
+    // Remembered per backend: the choice and every setting.
     QSettings s;
-    s.setValue("connect/mode", m_simRadio->isChecked() ? "sim" : "modbus");
-    s.setValue("connect/preset", m_preset->currentText());
-    s.setValue("connect/host", m_host->text().trimmed());
-    s.setValue("connect/port", m_port->value());
+    const Page& p = m_pages[static_cast<std::size_t>(current())];
+    s.setValue("connect/scheme", qs(p.backend->scheme));
+    for (std::size_t i = 0; i < p.fields.size(); ++i)
+        s.setValue("connect/" + backendKey(*p.backend) + "/" + qs(p.backend->settings[i].name), value(p, i));
     accept();
 }
 

@@ -34,7 +34,7 @@ namespace gui {
 /// The answer to one request. `ok` false: `error` says why (already translated where it comes from
 /// the GUI; drive messages are passed on verbatim) and `code` classifies it.
 struct DriveReply {
-    enum class Kind { Connect, Disconnect, Metadata, ReadParameters, WriteParameters, Test };
+    enum class Kind { Connect, Disconnect, Metadata, ReadParameters, WriteParameters, Test, Describe, Plan };
     int id = 0;
     Kind kind = Kind::Connect;
     bool ok = false;
@@ -51,6 +51,11 @@ struct DriveReply {
     device::TestState testState = device::TestState::Idle;
     std::shared_ptr<const model::Capture> capture;          ///< trace (not for Frf tests)
     std::shared_ptr<const device::FrfMeasurement> frf;      ///< Frf tests
+    // Describe: what the drive offers on the axis and the limits it enforces (DriveControllerDescribe.cpp)
+    std::optional<device::DriveCapabilities> capabilities;
+    std::optional<device::DriveLimits> limits;
+    // Plan: the drive's plan of a test request (motion time, record length)
+    std::optional<device::TestPlan> plan;
 };
 
 class DriveWorker;
@@ -72,6 +77,11 @@ public:
     int writeParameters(const QString& axis, const model::ParameterValues& values);
     /// Starts a test and polls it to its end; the reply carries the trace or the FRF.
     int runTest(const device::TestRequest& request);
+    /// The drive's capabilities and limits on an axis (reply kind Describe; DriveControllerDescribe.cpp).
+    int describeAxis(const QString& axis);
+    /// The drive's plan of a request before it runs (reply kind Plan): motion time and record length, or
+    /// the drive's reason to refuse the request.
+    int planTest(const device::TestRequest& request);
     /// Stops the running test at once (thread-safe; no-op when none runs).
     void abort();
 
@@ -116,6 +126,8 @@ public:
     DriveReply doRead(int id, const QString& axis, const QStringList& keys);
     DriveReply doWrite(int id, const QString& axis, const model::ParameterValues& values);
     DriveReply doTest(int id, const device::TestRequest& request);
+    DriveReply doDescribe(int id, const QString& axis);
+    DriveReply doPlan(int id, const device::TestRequest& request);
 
 signals:
     void progress(int id, double fraction, const QString& detail);

@@ -2,10 +2,10 @@
 #pragma once
 // The frequency-response wizard (issue 8 item 4, docs/wizards/frf.md):
 //   1. safety   — axis, the limits that matter for a torque injection, the excitation amplitude in %
-//                 of rated torque (refused above device::kMaxFrfAmplitudePct), confirmation;
+//                 of rated torque (refused above the drive's own limit, Drive::limits), confirmation;
 //   2. method   — multi-sweep sine stream (default), conventional sine stream, PRBS with Welch,
 //                 multisine, band fmin..fmax and points, estimated motion time
-//                 (device::planFrfTest / planMultisineTest from the drive's own parameters);
+//                 (the drive's own plan, DriveController::planTest → Drive::planTest);
 //   3. run      — one device::TestRequest of type Frf on the shared TestRunPage (progress, Abort);
 //   4. result   — Bode plot of the measured closed loop with coherence, the validity bands
 //                 ("valid only by multi-sweep" fs/2..fs, "not measurable" at invalid points and above
@@ -48,6 +48,10 @@ class AppContext;
 struct FrfDriveInfo {
     QString axis;
     model::ParameterValues values;
+    std::optional<device::DriveLimits> limits;  ///< the drive's own limits (Drive::limits); unset: unknown
+    QString limitsError;                        ///< why the limits are unknown
+    /// The drive's FRF amplitude limit [% of rated torque] (NaN when unknown).
+    double maxAmplitudePct() const;
     double ratedTorqueNm() const;  ///< motor.rated_current × motor.torque_constant (NaN when unknown)
     double traceRateHz() const;    ///< 1 / (trace.divider × velocity.period) (NaN when unknown)
 };
@@ -73,6 +77,8 @@ private:
     AppContext& m_ctx;
     FrfDriveInfo m_info;
     int m_request = 0;
+    int m_describeRequest = 0;
+    int m_answersPending = 0;
     bool m_infoPending = false;
     QDoubleSpinBox* m_amplitude = nullptr;
     QLabel* m_amplitudeText = nullptr;
@@ -103,7 +109,7 @@ private:
     QSpinBox* m_points = nullptr;
     QLabel* m_validity = nullptr;
     QLabel* m_estimate = nullptr;
-    QFutureWatcher<std::pair<double, QString>>* m_watcher = nullptr;
+    int m_planRequest = -1;  ///< the drive's planTest request under way (DriveController::planTest)
     int m_generation = 0;
     int m_pendingGeneration = -1;
     bool m_planOk = false;

@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Pages of the frequency-response wizard (FrfWizard.h, docs/wizards/frf.md). The maths lives in
-// core: the motion time comes from the drive's own test plan (device::planFrfTest /
-// planMultisineTest with the timing of device::loopTimingFromParameters), the open loop from
+// core: the amplitude limit and the motion time come from the drive itself (Drive::limits and
+// Drive::planTest through DriveController, docs/drive-seam.md), the open loop from
 // dsp::openLoopFromClosedLoop and the resonances from tuning::findResonances
 // (spec/current-loop-and-multisweep-frf.md §4.3 step 7).
 #include "app/gui/AppContext.h"
 #include "app/gui/FrfWizard.h"
-#include "core/device/FrfTest.h"
-#include "core/device/MultisineTest.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
@@ -44,50 +42,6 @@ double valueOr(const model::ParameterValues& v, const char* key, double fallback
     return it == v.end() ? fallback : it->second;
 }
 
-/// Motion time of the test the drive would plan for this request, or the drive's reason to refuse it.
-std::pair<double, QString> planMotionTime(const model::ParameterValues& v, const device::TestRequest& r)
-{
-    const double rated =
-        model::ratedTorqueNm(valueOr(v, "motor.rated_current", kNaN), valueOr(v, "motor.torque_constant", kNaN));
-    const double period = valueOr(v, "velocity.period", kNaN) * valueOr(v, "trace.divider", kNaN);
-    const double h = valueOr(v, "current.period", kNaN);
-    if (!std::isfinite(rated) || !std::isfinite(period) || !(period > 0.0))
-        return {kNaN, QCoreApplication::translate("FrfConfigPage", "The drive's ratings or trace rate are unknown.")};
-    auto timing = device::loopTimingFromParameters(v);
-    if (!timing)
-        return {kNaN, QString::fromStdString(timing.error().detail)};
-    const double amplitudeNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
-    if (r.frfMethod == device::FrfMethod::Multisine) {
-        if (!(h > 0.0))
-            return {kNaN, QCoreApplication::translate("FrfConfigPage", "The current-loop period is unknown.")};
-        device::MultisinePlanOptions o;
-        o.fsHz = 1.0 / period;
-        o.ticksPerSample = static_cast<int>(std::llround(period / h));
-        o.currentPeriodS = h;
-        o.ticksPerVelocity = static_cast<int>(std::llround(valueOr(v, "velocity.period", h) / h));
-        o.bands = device::multisineBandsOf(r);
-        o.phases = r.multisinePhases;
-        o.peakNm = amplitudeNm;
-        o.timing = *timing;
-        auto plan = device::planMultisineTest(o);
-        if (!plan)
-            return {kNaN, QString::fromStdString(plan.error().detail)};
-        return {plan->durationS(), {}};
-    }
-    device::FrfPlanOptions o;
-    o.method = r.frfMethod;
-    o.fsHz = 1.0 / period;
-    o.fminHz = r.fminHz;
-    o.fmaxHz = r.fmaxHz;
-    o.points = r.points;
-    o.amplitudeNm = amplitudeNm;
-    o.timing = *timing;
-    auto plan = device::planFrfTest(o);
-    if (!plan)
-        return {kNaN, QString::fromStdString(plan.error().detail)};
-    return {plan->durationS(), {}};
-}
-
 QString hz(double f) { return QCoreApplication::translate("FrfResultPage", "%1 Hz").arg(f, 0, 'f', f < 100 ? 1 : 0); }
 }  // namespace
 
@@ -96,6 +50,8 @@ double FrfDriveInfo::ratedTorqueNm() const
     return model::ratedTorqueNm(valueOr(values, "motor.rated_current", kNaN),
                                 valueOr(values, "motor.torque_constant", kNaN));
 }
+
+double FrfDriveInfo::maxAmplitudePct() const { return limits ? limits->frfAmplitudeMaxPct : kNaN; }
 
 double FrfDriveInfo::traceRateHz() const
 {
@@ -141,10 +97,17 @@ FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx,
     if (auto* axisBox = findChild<QComboBox*>())
         connect(axisBox, &QComboBox::currentTextChanged, this, [this] { readInfo(); });
     connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id != m_request)
+        if (!m_infoPending || (r.id != m_request && r.id != m_describeRequest))
             return;
         m_info.axis = r.axis;
-        m_info.values = r.ok ? r.values : model::ParameterValues{};
+        if (r.id == m_request) {
+            m_info.values = r.ok ? r.values : model::ParameterValues{};
+        } else {
+            m_info.limits = r.ok ? r.limits : std::nullopt;
+            m_info.limitsError = r.ok ? QString() : r.error;
+        }
+        if (--m_answersPending > 0)
+            return;
         m_infoPending = false;
         showAmplitude();
         emit driveInfoChanged();
@@ -164,35 +127,51 @@ void FrfSafetyPage::readInfo()
     m_info = {};
     showAmplitude();
     m_infoPending = m_ctx.drive().isConnected() && !axis().isEmpty();
-    if (m_infoPending)
+    if (m_infoPending) {
+        // The drive's values and its own limits (the wizard never assumes the simulator's).
+        m_answersPending = 2;
         m_request = m_ctx.drive().readParameters(axis());
+        m_describeRequest = m_ctx.drive().describeAxis(axis());
+    }
     emit completeChanged();
 }
 
 void FrfSafetyPage::showAmplitude()
 {
     const double pct = m_amplitude->value();
-    if (pct > device::kMaxFrfAmplitudePct) {
+    const double maxPct = m_info.maxAmplitudePct();
+    if (!m_infoPending && !m_info.axis.isEmpty() && !std::isfinite(maxPct)) {
+        m_amplitudeText->setText(tr("<span style='color:#b00000'>The drive does not state its amplitude limit: "
+                                    "%1</span>")
+                                     .arg(m_info.limitsError.toHtmlEscaped()));
+        return;
+    }
+    if (!std::isfinite(maxPct)) {
+        m_amplitudeText->setText(tr("%1 % of rated torque (reading the drive's limit…).").arg(pct));
+        return;
+    }
+    if (pct > maxPct) {
         m_amplitudeText->setText(tr("<span style='color:#b00000'>Refused: the drive allows at most %1 % of rated "
                                     "torque.</span>")
-                                     .arg(device::kMaxFrfAmplitudePct));
+                                     .arg(maxPct));
         return;
     }
     const double rated = m_info.ratedTorqueNm();
     if (!std::isfinite(rated)) {
-        m_amplitudeText->setText(tr("%1 % of rated torque (at most %2 %).").arg(pct).arg(device::kMaxFrfAmplitudePct));
+        m_amplitudeText->setText(tr("%1 % of rated torque (at most %2 %).").arg(pct).arg(maxPct));
         return;
     }
     m_amplitudeText->setText(tr("%1 % of the rated torque %2 N·m = %3 N·m peak of the injected torque (at most %4 %).")
                                  .arg(pct)
                                  .arg(rated, 0, 'g', 4)
                                  .arg(model::torqueNmFromRatedPct(pct, rated), 0, 'g', 4)
-                                 .arg(device::kMaxFrfAmplitudePct));
+                                 .arg(maxPct));
 }
 
 bool FrfSafetyPage::isComplete() const
 {
-    return SafetyPage::isComplete() && !m_infoPending && m_amplitude->value() <= device::kMaxFrfAmplitudePct;
+    // An unknown limit (NaN) fails the comparison: the drive must state it before the test is offered.
+    return SafetyPage::isComplete() && !m_infoPending && m_amplitude->value() <= m_info.maxAmplitudePct();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -245,20 +224,22 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
     registerField("fminHz", m_fmin, "value", SIGNAL(valueChanged(double)));
     registerField("fmaxHz", m_fmax, "value", SIGNAL(valueChanged(double)));
     registerField("points", m_points);
-    m_watcher = new QFutureWatcher<std::pair<double, QString>>(this);
-    connect(m_watcher, &QFutureWatcherBase::finished, this, [this] {
-        const auto [motion, why] = m_watcher->result();
+    // The drive plans the test (Drive::planTest): its motion time, or its reason to refuse the request.
+    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+        if (r.id != m_planRequest)
+            return;
+        m_planRequest = -1;
         const bool stale = m_pendingGeneration != m_generation;
         m_pendingGeneration = -1;
         if (stale) {  // the settings changed meanwhile
             updateEstimate();
             return;
         }
-        m_planOk = why.isEmpty();
-        m_motionS = m_planOk ? motion : kNaN;
-        m_estimate->setText(m_planOk ? tr("Estimated motion time: %1 s (settling included).").arg(motion, 0, 'f', 1)
+        m_planOk = r.ok && r.plan.has_value();
+        m_motionS = m_planOk ? r.plan->motionTimeS : kNaN;
+        m_estimate->setText(m_planOk ? tr("Estimated motion time: %1 s (settling included).").arg(m_motionS, 0, 'f', 1)
                                      : tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>")
-                                           .arg(why.toHtmlEscaped()));
+                                           .arg(r.error.toHtmlEscaped()));
         emit completeChanged();
     });
     auto changed = [this] {
@@ -308,11 +289,14 @@ void FrfConfigPage::updateEstimate()
     auto* w = qobject_cast<FrfWizard*>(wizard());
     if (!w)
         return;
+    if (!m_ctx.drive().isConnected()) {
+        m_estimate->setText(tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>")
+                                .arg(tr("not connected")));
+        return;
+    }
     m_estimate->setText(tr("Estimating the motion time…"));
     m_pendingGeneration = m_generation;
-    const auto values = m_safety.driveInfo().values;
-    const auto request = w->request();
-    m_watcher->setFuture(QtConcurrent::run([values, request] { return planMotionTime(values, request); }));
+    m_planRequest = m_ctx.drive().planTest(w->request());
 }
 
 bool FrfConfigPage::isComplete() const { return m_planOk && m_pendingGeneration < 0; }

@@ -102,6 +102,25 @@ std::string simRegisterMapJson()
     add("circle.center_y", 354, "f64", 4, "circle: centre, position of the second axis [m]");
     add("circle.data_start_deg", 358, "f64", 4, "circle: angle at which the 360 deg data arc begins [deg]");
     add("circle.lead_arc_deg", 362, "f64", 4, "circle: lead-in and lead-out arc [deg]");
+    // The drive describes itself (docs/drive-seam.md, docs/modbus.md "Capabilities, limits and plans").
+    add("describe.test_types", 600, "u16", 1, "bit i: the axis runs test_type i");
+    add("describe.frf_methods", 601, "u16", 1, "bit i: frf_method i is offered");
+    add("describe.flags", 602, "u16", 1, "bit set of enum describe_flag");
+    add("describe.reserved", 603, "u16", 1, "reserved, reads 0");
+    add("describe.trace_rate_hz", 604, "f64", 4, "fastest velocity-loop trace rate (trace divider 1) [Hz]");
+    add("describe.current_trace_rate_hz", 608, "f64", 4, "trace rate of a current step [Hz]");
+    add("limits.frf_amplitude_max_pct", 612, "f64", 4, "largest FRF excitation (multisine: its peak) [% of rated torque]");
+    add("limits.current_step_max_a", 616, "f64", 4, "largest q-axis current step [A]");
+    add("limits.current_step_max_s", 620, "f64", 4, "longest current-step record [s]");
+    add("limits.current_step_max_speed_rad_s", 624, "f64", 4, "motor speed a current step may reach [rad/s]");
+    add("limits.motor_speed_max_rad_s", 628, "f64", 4, "step amplitude, jog and circle speeds at the motor [rad/s]");
+    add("limits.test_duration_max_s", 632, "f64", 4, "longest step, hold or current-step record, jog dwell [s]");
+    add("limits.travel_window", 636, "f64", 4, "|position| of jog targets and circles [m or rad]; +inf: none");
+    add("plan.token", 640, "u16", 1, "command.token of the plan_test command the plan block answers");
+    add("plan.reserved", 641, "u16", 1, "reserved, reads 0");
+    add("plan.record_samples", 642, "u32", 2, "samples per channel the planned test records");
+    add("plan.motion_s", 644, "f64", 4, "machine time of the planned test, start to completion [s]");
+    add("plan.trace_rate_hz", 648, "f64", 4, "sample rate of the planned test's trace [Hz]");
     add("trace.select_offset", 400, "u32", 2, "first sample (or byte, for the text channels) of the window");
     add("trace.select_channel", 402, "u16", 1, "trace channel index, or enum trace_channel");
     add("trace.window", 410, "window", 124,
@@ -118,7 +137,8 @@ std::string simRegisterMapJson()
           {"heartbeat_lost", 5},
           {"drive_fault", 6},
           {"aborted", 7}}},
-        {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}}},
+        {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}, {"plan_test", 4}}},
+        {"describe_flag", {{"evaluates_frf", 1}, {"writes_parameters", 2}}},
         {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}, {"current_step", 4}, {"circle", 5}}},
         {"circle_direction", {{"ccw", 0}, {"cw", 1}}},
         {"frf_method", {{"multisweep", 0}, {"conventional", 1}, {"prbs", 2}, {"multisine", 3}}},

@@ -7,6 +7,7 @@
 // The client turns the trace into a ball-bar trace with sim::ballBarFromCircleTrace.
 
 #include "core/device/Drive.h"
+#include "core/device/SimulatedDriveLimits.h"
 #include "core/model/Result.h"
 #include "core/sim/CircleTest.h"
 
@@ -24,7 +25,7 @@ inline constexpr double kCircleMaxDurationS = 600.0;          ///< positioning, 
 
 /// Limits a circle must respect; the embedded drive uses the defaults (those of axistune-simdrive).
 struct CircleLimits {
-    double travelWindowM = 0.5;  ///< |position| of either axis, programmed path and start point
+    double travelWindowM = kTravelWindowM;  ///< |position| of either axis, programmed path and start point
     double maxMotorSpeedRadS = kMaxMotorSpeedRadS;  ///< feed and positioning speed at the motor
 };
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The drive seam (STYLE.md "A device seam"): synchronous, created and used on one I/O thread.
-// Implementations: the embedded simulated drive (SimulatedDrive) and, later, the Modbus TCP client.
+// Implementations register in DriveRegistry.h (docs/drive-seam.md): sim:, modbus://, replay:.
 
 #include "core/dsp/FrequencyResponse.h"
 #include "core/dsp/Multisine.h"
@@ -35,21 +35,10 @@ enum class TestType {
     /// q-axis current step (docs/simulator.md "Current-step test"): velocity and position loops open, the
     /// current command steps from 0 to `amplitude` [A] 10 % into the recording and holds; `durationS` is the
     /// recording length, traced at every current-loop period (fs = 1/current.period). Afterwards the axis
-    /// holds its position again. Refused above kMaxCurrentStepFraction of motor.max_current, beyond
-    /// kMaxCurrentStepS, or when the step would take the motor past kMaxCurrentStepSpeedRadS.
+    /// holds its position again. Refused beyond the drive's limits (DriveLimits: current, record length,
+    /// motor speed reached).
     CurrentStep,
 };
-
-/// Largest current step as a fraction of motor.max_current.
-inline constexpr double kMaxCurrentStepFraction = 0.5;
-/// Longest current-step recording [s].
-inline constexpr double kMaxCurrentStepS = 0.05;
-/// Largest motor speed a current step may reach [rad/s], estimated as k_t·|I|·t / J_m with the rotor inertia
-/// alone: the motor accelerates freely while the velocity loop is open (about 190 min⁻¹).
-inline constexpr double kMaxCurrentStepSpeedRadS = 20.0;
-/// After a current-step record the axis holds its position this long before the test completes [s], so the
-/// next test starts at rest.
-inline constexpr double kCurrentStepHoldS = 0.3;
 
 /// Excitation and analysis of an FRF test (docs/frequency-response-sim.md).
 enum class FrfMethod {
@@ -60,9 +49,6 @@ enum class FrfMethod {
 };
 
 const char* frfMethodName(FrfMethod m);
-
-/// The embedded simulated drive's motor speed limit for steps and jogs: 6000 min⁻¹ [rad/s].
-inline constexpr double kMaxMotorSpeedRadS = 2.0 * 3.14159265358979323846 * 6000.0 / 60.0;
 
 struct TestRequest {
     std::string axis;
@@ -80,7 +66,7 @@ struct TestRequest {
     double fminHz = 10.0;
     double fmaxHz = 3900.0;
     int points = 60;
-    double amplitudePct = 5.0;   ///< % of rated torque; refused above kMaxFrfAmplitudePct
+    double amplitudePct = 5.0;   ///< % of rated torque; refused above DriveLimits::frfAmplitudeMaxPct
     double settleS = 0.0;        ///< settle per frequency; 0: from the loop's dynamics
     double minMeasureS = 0.0;    ///< measured time per frequency at least; 0: from the loop's dynamics
     // Frf with FrfMethod::Multisine (docs/multisine.md): amplitudePct is the PEAK of the multisine,
@@ -122,6 +108,44 @@ struct TestStatus {
 
 const char* testStateName(TestState s);
 
+/// What a drive offers on one axis (docs/drive-seam.md): the tests and FRF methods it runs, its
+/// trace rates, and whether it evaluates FRFs itself or only hands raw samples to the host.
+struct DriveCapabilities {
+    std::vector<TestType> testTypes;   ///< tests startTest() accepts
+    std::vector<FrfMethod> frfMethods; ///< methods of TestType::Frf (empty: no FRF test)
+    double traceRateHz = 0.0;          ///< fastest velocity-loop trace rate (trace divider 1) [Hz]; 0: none
+    double currentTraceRateHz = 0.0;   ///< trace rate of a current step [Hz]; 0: no current step
+    bool evaluatesFrf = false;         ///< readFrequencyResponse() answers; false: the host evaluates the trace
+    bool writesParameters = true;      ///< writeParameters() can change values (false: a read-only backend)
+    bool hasLink = true;               ///< a connection that can be lost (false: a file or an in-process drive)
+
+    bool offers(TestType t) const;
+    bool offers(FrfMethod m) const;
+};
+
+/// The limits a drive enforces on one axis before a test starts; +infinity: no limit of its own.
+struct DriveLimits {
+    double frfAmplitudeMaxPct = 0.0;      ///< FRF excitation (multisine: its peak) [% of rated torque]
+    double currentStepMaxA = 0.0;         ///< largest q-axis current step [A]
+    double currentStepMaxS = 0.0;         ///< longest current-step record [s]
+    double currentStepMaxSpeedRadS = 0.0; ///< motor speed a current step may reach [rad/s]
+    double motorSpeedMaxRadS = 0.0;       ///< step amplitude, jog and circle speeds at the motor [rad/s]
+    double testDurationMaxS = 0.0;        ///< step, hold and current-step record, jog dwell [s]
+    double travelWindow = 0.0;            ///< |position| of jog targets and circles [m or rad]
+};
+
+/// What a test request will do, before it runs (Drive::planTest).
+struct TestPlan {
+    double motionTimeS = 0.0;      ///< machine time from start to completion (settling, dwell, hold included)
+    std::size_t recordSamples = 0; ///< samples per channel of the trace the test records
+    double traceRateHz = 0.0;      ///< sample rate of that trace [Hz]
+};
+
+/// Trace metadata key of the machine time a completed test took [s]; planTest's motionTimeS predicts it.
+inline constexpr const char* kMotionTimeMetadataKey = "motion_time_s";
+
+const char* testTypeName(TestType t);
+
 class Drive {
 public:
     virtual ~Drive() = default;
@@ -143,14 +167,31 @@ public:
     {
         return makeError(ErrorCode::NotFound, "this drive does not evaluate frequency-response tests");
     }
+    /// Tests, methods and trace rates the drive offers on an axis.
+    virtual Result<DriveCapabilities> capabilities(const std::string& axis)
+    {
+        return makeError(ErrorCode::NotFound, "this drive does not describe its capabilities (axis " + axis + ")");
+    }
+    /// The limits the drive itself enforces on an axis.
+    virtual Result<DriveLimits> limits(const std::string& axis)
+    {
+        return makeError(ErrorCode::NotFound, "this drive does not describe its limits (axis " + axis + ")");
+    }
+    /// Checks a request as startTest() would and returns its plan without moving anything; a request
+    /// startTest() would refuse is refused here with the same message.
+    virtual Result<TestPlan> planTest(const TestRequest& request)
+    {
+        return makeError(ErrorCode::NotFound, "this drive cannot plan tests (axis " + request.axis + ")");
+    }
 };
 
 struct ConnectionSettings {
-    std::string uri;  ///< "sim:PRESET" (Modbus TCP "modbus://HOST:PORT" follows in a later issue)
+    std::string uri;  ///< "SCHEME:..." of a registered backend (DriveRegistry.h): sim:, modbus://, replay:
     std::uint64_t seed = 1;
 };
 
-/// Opens a connection from a URI; errors name the URI and what is wrong with it.
+/// Opens a connection from a URI through the backend registry (DriveRegistry.h); errors name the URI
+/// and what is wrong with it.
 Result<std::unique_ptr<Drive>> connect(const ConnectionSettings& settings);
 
 }  // namespace axistune::device

@@ -28,9 +28,6 @@
 
 namespace axistune::device {
 
-/// Amplitude limit of the FRF excitation, % of the rated torque (rated current × torque constant).
-inline constexpr double kMaxFrfAmplitudePct = 50.0;
-
 /// Timing derived from the velocity loop's own dynamics.
 struct LoopTiming {
     double timeConstantS = 0.0;  ///< slowest closed-loop time constant of J s² + k_p s + k_i

@@ -400,6 +400,19 @@ Status ModbusDrive::encodeMultisine(const TestRequest& request, const std::funct
 
 Status ModbusDrive::startTest(const TestRequest& request)
 {
+    auto unit = writeTestBlock(request);
+    if (!unit)
+        return unit.error();
+    if (auto st = command(*unit, "start_test"); !st)
+        return st;
+    m_testRunning = true;
+    m_testUnit = *unit;
+    m_lastHeartbeat = m_lastPoll = Clock::now();
+    return Status::success();
+}
+
+Result<int> ModbusDrive::writeTestBlock(const TestRequest& request)
+{
     auto a = axisInfo(request.axis);
     if (!a)
         return a.error();
@@ -459,23 +472,128 @@ Status ModbusDrive::startTest(const TestRequest& request)
         encodeF64(request.minMeasureS, o, at("test.min_measure"));
         if (request.frfMethod == FrfMethod::Multisine) {
             if (auto st = encodeMultisine(request, [&](const std::string& f) { return at(f); }); !st)
-                return st;
+                return st.error();
         }
     }
     if (auto st =
             writeRegs(a->unit, first.address, w.data(), static_cast<int>(w.size()), "writing the test configuration");
         !st)
-        return st;
+        return st.error();
     if (request.type == TestType::Circle) {
         if (auto st = writeCircleBlock(request, a->unit); !st)
-            return st;
+            return st.error();
     }
-    if (auto st = command(a->unit, "start_test"); !st)
-        return st;
-    m_testRunning = true;
-    m_testUnit = a->unit;
-    m_lastHeartbeat = m_lastPoll = Clock::now();
-    return Status::success();
+    return a->unit;
+}
+
+Result<std::vector<std::uint16_t>> ModbusDrive::readFields(int unit, const std::vector<std::string>& names, int& first,
+                                                           const std::string& what)
+{
+    int lo = 65536, hi = 0;
+    for (const auto& n : names) {
+        if (!m_map.fields.count(n))
+            return makeError(ErrorCode::NotFound, "drive family " + m_map.family + " has no field " + n + ": " + what +
+                                                      " is not available from this drive");
+        lo = std::min(lo, m_map.field(n).address);
+        hi = std::max(hi, m_map.field(n).address + m_map.field(n).count);
+    }
+    if (hi - lo > m_map.maxRegistersPerRead)
+        return makeError(ErrorCode::Internal, "register map " + m_map.family + ": " + what + " must fit one read");
+    std::vector<std::uint16_t> r(static_cast<std::size_t>(hi - lo));
+    if (auto st = readRegs(unit, lo, hi - lo, r.data(), "reading " + what); !st)
+        return st.error();
+    first = lo;
+    return r;
+}
+
+Result<DriveCapabilities> ModbusDrive::capabilities(const std::string& axis)
+{
+    auto a = axisInfo(axis);
+    if (!a)
+        return a.error();
+    int lo = 0;
+    auto r = readFields(a->unit,
+                        {"describe.test_types", "describe.frf_methods", "describe.flags", "describe.trace_rate_hz",
+                         "describe.current_trace_rate_hz"},
+                        lo, "the capabilities of axis " + axis);
+    if (!r)
+        return r.error();
+    auto at = [&](const char* f) { return &(*r)[static_cast<std::size_t>(m_map.field(f).address - lo)]; };
+    DriveCapabilities c;
+    for (const auto t : {TestType::Step, TestType::Jog, TestType::Hold, TestType::Frf, TestType::Circle,
+                         TestType::CurrentStep}) {
+        const int code = m_map.code("test_type", testTypeName(t));
+        if (code >= 0 && code < 16 && (*at("describe.test_types") >> code & 1))
+            c.testTypes.push_back(t);
+    }
+    for (const auto m : {FrfMethod::MultiSweep, FrfMethod::Conventional, FrfMethod::Prbs, FrfMethod::Multisine}) {
+        const int code = m_map.code("frf_method", frfMethodName(m));
+        if (code >= 0 && code < 16 && (*at("describe.frf_methods") >> code & 1))
+            c.frfMethods.push_back(m);
+    }
+    const int flags = *at("describe.flags");
+    c.evaluatesFrf = (flags & std::max(0, m_map.code("describe_flag", "evaluates_frf"))) != 0;
+    c.writesParameters = (flags & std::max(0, m_map.code("describe_flag", "writes_parameters"))) != 0;
+    c.hasLink = true;
+    c.traceRateHz = decodeF64(at("describe.trace_rate_hz"), m_map.wordOrder);
+    c.currentTraceRateHz = decodeF64(at("describe.current_trace_rate_hz"), m_map.wordOrder);
+    return c;
+}
+
+Result<DriveLimits> ModbusDrive::limits(const std::string& axis)
+{
+    auto a = axisInfo(axis);
+    if (!a)
+        return a.error();
+    const std::vector<std::pair<std::string, double DriveLimits::*>> fields{
+        {"limits.frf_amplitude_max_pct", &DriveLimits::frfAmplitudeMaxPct},
+        {"limits.current_step_max_a", &DriveLimits::currentStepMaxA},
+        {"limits.current_step_max_s", &DriveLimits::currentStepMaxS},
+        {"limits.current_step_max_speed_rad_s", &DriveLimits::currentStepMaxSpeedRadS},
+        {"limits.motor_speed_max_rad_s", &DriveLimits::motorSpeedMaxRadS},
+        {"limits.test_duration_max_s", &DriveLimits::testDurationMaxS},
+        {"limits.travel_window", &DriveLimits::travelWindow}};
+    std::vector<std::string> names;
+    for (const auto& [n, m] : fields)
+        names.push_back(n);
+    int lo = 0;
+    auto r = readFields(a->unit, names, lo, "the limits of axis " + axis);
+    if (!r)
+        return r.error();
+    DriveLimits l;
+    for (const auto& [n, member] : fields) {
+        const double v = decodeF64(&(*r)[static_cast<std::size_t>(m_map.field(n).address - lo)], m_map.wordOrder);
+        if (std::isnan(v) || v < 0.0)
+            return makeError(ErrorCode::Device, m_uri.text + ": " + n + " of axis " + axis + " reads " +
+                                                    model::formatNumber(v, 6) + ", not a limit");
+        l.*member = v;
+    }
+    return l;
+}
+
+Result<TestPlan> ModbusDrive::planTest(const TestRequest& request)
+{
+    if (m_map.code("command", "plan_test") < 0)
+        return makeError(ErrorCode::NotFound, "drive family " + m_map.family + " has no command plan_test");
+    auto unit = writeTestBlock(request);
+    if (!unit)
+        return unit.error();
+    if (auto st = command(*unit, "plan_test"); !st)
+        return st.error();
+    int lo = 0;
+    auto r = readFields(*unit, {"plan.token", "plan.record_samples", "plan.motion_s", "plan.trace_rate_hz"}, lo,
+                        "the test plan");
+    if (!r)
+        return r.error();
+    auto at = [&](const char* f) { return &(*r)[static_cast<std::size_t>(m_map.field(f).address - lo)]; };
+    if (*at("plan.token") != m_token)
+        return makeError(ErrorCode::Device, m_uri.text + ": the plan block answers command token " +
+                                                std::to_string(*at("plan.token")) + ", not " + std::to_string(m_token));
+    TestPlan p;
+    p.recordSamples = decodeU32(at("plan.record_samples"), m_map.wordOrder);
+    p.motionTimeS = decodeF64(at("plan.motion_s"), m_map.wordOrder);
+    p.traceRateHz = decodeF64(at("plan.trace_rate_hz"), m_map.wordOrder);
+    return p;
 }
 
 Status ModbusDrive::writeCircleBlock(const TestRequest& request, int unit)

@@ -49,6 +49,12 @@ public:
     Status abortTest() override;
     /// The FRF the drive evaluated for the last completed Frf test (float64 on the wire: exact).
     Result<FrfMeasurement> readFrequencyResponse() override;
+    /// From the describe.* and limits.* registers of the axis (docs/modbus.md "Capabilities, limits and
+    /// plans"); a map without them is answered with NotFound naming the missing field.
+    Result<DriveCapabilities> capabilities(const std::string& axis) override;
+    Result<DriveLimits> limits(const std::string& axis) override;
+    /// Writes the test block and sends plan_test; the drive answers in the plan.* registers.
+    Result<TestPlan> planTest(const TestRequest& request) override;
 
     /// Writes the heartbeat register now (pollTest() does this every kHeartbeatPeriod while a test runs).
     Status heartbeat();
@@ -78,6 +84,11 @@ private:
     Status readRegs(int unit, int address, int count, std::uint16_t* out, const std::string& what);
     Status writeRegs(int unit, int address, const std::uint16_t* values, int count, const std::string& what);
     Status command(int unit, const std::string& name);
+    /// The test block (and circle block) of a request written to the axis's unit.
+    Result<int> writeTestBlock(const TestRequest& request);
+    /// Reads a run of named fields of one unit in one request; fails naming a field the map lacks.
+    Result<std::vector<std::uint16_t>> readFields(int unit, const std::vector<std::string>& names, int& first,
+                                                  const std::string& what);
     /// The multisine fields of the test block (periods, phases, up to 4 bands); a shape is refused.
     Status encodeMultisine(const TestRequest& request, const std::function<std::uint16_t*(const std::string&)>& at) const;
     /// The circle fields (second axis, direction, radius, feed, centre, arcs) of a Circle request.

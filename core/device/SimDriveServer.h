@@ -110,6 +110,13 @@ private:
     void checkSafety();
     void trip(const std::string& fault, const std::string& message);
     int startTest(int unitIndex);
+    /// The request of the unit's test block with this server's safety checks; 0 or a Modbus exception.
+    int buildRequest(int unitIndex, TestRequest& request);
+    /// plan_test: the embedded drive's plan of the test block into the plan.* fields.
+    int planTest(int unitIndex, std::uint16_t token);
+    int refuseError(const Error& e);
+    DriveLimits axisLimits(int unitIndex);
+    bool encodeDescription(const RegisterField& f, int unitIndex, std::uint16_t* buf);
     int runCommand(int unitIndex, std::uint16_t code, std::uint16_t token);
     void takeTrace();
     void takeFrequencyResponse();
@@ -159,6 +166,9 @@ private:
     std::string m_traceNames, m_traceMeta;
     std::vector<double> m_frfBlob; ///< the FRF of the last FRF test, serialised (docs/modbus.md)
     std::string m_frfMeta;
+    TestPlan m_plan; ///< the last plan_test answer
+    std::uint16_t m_planToken = 0;
+    int m_planUnit = -1;
     std::uint32_t m_selOffset = 0;
     std::uint16_t m_selChannel = 0;
 

@@ -75,6 +75,70 @@ bool SimDriveServer::encodeIdentity(const RegisterField& f, int ui, std::uint16_
     return false;
 }
 
+bool SimDriveServer::encodeDescription(const RegisterField& f, int ui, std::uint16_t* buf)
+{
+    const std::string& n = f.name;
+    const WordOrder o = m_map.wordOrder;
+    const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
+    if (n.rfind("describe.", 0) == 0) {
+        auto caps = m_drive->capabilities(ax.name);
+        if (!caps)
+            return false;
+        int tests = 0, methods = 0;
+        for (const auto t : caps->testTypes)
+            tests |= 1 << std::max(0, m_map.code("test_type", testTypeName(t)));
+        for (const auto m : caps->frfMethods)
+            methods |= 1 << std::max(0, m_map.code("frf_method", frfMethodName(m)));
+        const int flags = (caps->evaluatesFrf ? m_map.code("describe_flag", "evaluates_frf") : 0) |
+                          (caps->writesParameters ? m_map.code("describe_flag", "writes_parameters") : 0);
+        if (n == "describe.test_types")
+            buf[0] = static_cast<std::uint16_t>(tests);
+        else if (n == "describe.frf_methods")
+            buf[0] = static_cast<std::uint16_t>(methods);
+        else if (n == "describe.flags")
+            buf[0] = static_cast<std::uint16_t>(flags);
+        else if (n == "describe.trace_rate_hz")
+            encodeF64(caps->traceRateHz, o, buf);
+        else if (n == "describe.current_trace_rate_hz")
+            encodeF64(caps->currentTraceRateHz, o, buf);
+        else
+            buf[0] = 0;
+        return true;
+    }
+    if (n.rfind("limits.", 0) == 0) {
+        const DriveLimits l = axisLimits(ui);
+        const std::pair<const char*, double> f64s[] = {{"limits.frf_amplitude_max_pct", l.frfAmplitudeMaxPct},
+                                                       {"limits.current_step_max_a", l.currentStepMaxA},
+                                                       {"limits.current_step_max_s", l.currentStepMaxS},
+                                                       {"limits.current_step_max_speed_rad_s", l.currentStepMaxSpeedRadS},
+                                                       {"limits.motor_speed_max_rad_s", l.motorSpeedMaxRadS},
+                                                       {"limits.test_duration_max_s", l.testDurationMaxS},
+                                                       {"limits.travel_window", l.travelWindow}};
+        for (const auto& [key, v] : f64s) {
+            if (n == key) {
+                encodeF64(v, o, buf);
+                return true;
+            }
+        }
+        return false;
+    }
+    if (n.rfind("plan.", 0) == 0) {
+        const bool mine = m_planUnit == ui;
+        if (n == "plan.token")
+            buf[0] = mine ? m_planToken : 0;
+        else if (n == "plan.record_samples")
+            encodeU32(mine ? static_cast<std::uint32_t>(m_plan.recordSamples) : 0u, o, buf);
+        else if (n == "plan.motion_s")
+            encodeF64(mine ? m_plan.motionTimeS : 0.0, o, buf);
+        else if (n == "plan.trace_rate_hz")
+            encodeF64(mine ? m_plan.traceRateHz : 0.0, o, buf);
+        else
+            buf[0] = 0;
+        return true;
+    }
+    return false;
+}
+
 void SimDriveServer::encodeWindow(const RegisterField& f, std::uint16_t* buf)
 {
     const WordOrder o = m_map.wordOrder;
@@ -110,6 +174,8 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
     auto u16 = [&](int v) { buf[0] = static_cast<std::uint16_t>(v); };
     auto text = [&](const std::string& s) { encodeString(s, f.count, buf); };
     if (n.rfind("identity.", 0) == 0 && encodeIdentity(f, ui, buf))
+        return;
+    if (encodeDescription(f, ui, buf))
         return;
     if (n == "status.state")
         return u16(m_map.code("state", m_state));
@@ -427,6 +493,8 @@ int SimDriveServer::runCommand(int ui, std::uint16_t code, std::uint16_t token)
             m_message = "aborted by the client";
             log("test aborted by the client; parameters restored");
         }
+    } else if (name == "plan_test") {
+        result = planTest(ui, token);
     } else if (name == "clear") {
         if (m_state != "running") {
             m_state = "idle";

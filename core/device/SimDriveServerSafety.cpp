@@ -18,10 +18,8 @@ std::string num(double v) { return model::formatNumber(v, 4); }
 
 } // namespace
 
-int SimDriveServer::startTest(int ui)
+int SimDriveServer::buildRequest(int ui, TestRequest& req)
 {
-    if (m_state == "running")
-        return refuse(MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY, "a test is already running");
     const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
     const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
     const SafetyLimits& lim = m_opt.safety;
@@ -39,7 +37,6 @@ int SimDriveServer::startTest(int ui)
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test configuration refused earlier (" + refusedFields +
                                                                ": " + refusedWhy +
                                                                "); write a valid test block before start_test");
-    TestRequest req;
     req.axis = ax.name;
     req.amplitude = c.amplitude;
     req.distance = c.distance;
@@ -110,15 +107,46 @@ int SimDriveServer::startTest(int ui)
     } else {
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test type '" + type + "' is not supported by this drive");
     }
-    if (auto st = m_drive->startTest(req); !st) {
-        const auto code = st.error().code;
-        const int ex = code == ErrorCode::Busy       ? MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY
-                       : code == ErrorCode::NotFound ? MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS
-                       : code == ErrorCode::OutOfRange || code == ErrorCode::BadInput
-                           ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
-                           : MODBUS_EXCEPTION_SLAVE_OR_SERVER_FAILURE;
-        return refuse(ex, st.error().detail);
-    }
+    return 0;
+}
+
+int SimDriveServer::refuseError(const Error& e)
+{
+    const auto code = e.code;
+    const int ex = code == ErrorCode::Busy       ? MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY
+                   : code == ErrorCode::NotFound ? MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS
+                   : code == ErrorCode::OutOfRange || code == ErrorCode::BadInput
+                       ? MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE
+                       : MODBUS_EXCEPTION_SLAVE_OR_SERVER_FAILURE;
+    return refuse(ex, e.detail);
+}
+
+int SimDriveServer::planTest(int ui, std::uint16_t token)
+{
+    TestRequest req;
+    if (const int ex = buildRequest(ui, req); ex != 0)
+        return ex;
+    auto plan = m_drive->planTest(req);
+    if (!plan)
+        return refuseError(plan.error());
+    m_plan = *plan;
+    m_planToken = token;
+    m_planUnit = ui;
+    return 0;
+}
+
+int SimDriveServer::startTest(int ui)
+{
+    if (m_state == "running")
+        return refuse(MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY, "a test is already running");
+    const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
+    const std::string type = m_map.name("test_type", m_config[static_cast<std::size_t>(ui)].type);
+    const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
+    TestRequest req;
+    if (const int ex = buildRequest(ui, req); ex != 0)
+        return ex;
+    if (auto st = m_drive->startTest(req); !st)
+        return refuseError(st.error());
     m_state = "running";
     m_fault = "none";
     m_message.clear();
@@ -132,6 +160,22 @@ int SimDriveServer::startTest(int ui)
     m_frfMeta.clear();
     log("test " + type + " started on axis " + ax.name);
     return 0;
+}
+
+DriveLimits SimDriveServer::axisLimits(int ui)
+{
+    // The embedded drive's limits, narrowed by this server's safety limits (SafetyLimits).
+    const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
+    const SafetyLimits& lim = m_opt.safety;
+    DriveLimits l = m_drive->limits(ax.name).value();
+    l.frfAmplitudeMaxPct = std::min(l.frfAmplitudeMaxPct, lim.amplitudeLimitPct);
+    // The torque limit in % of rated torque as a current: pct/100 · rated current.
+    l.currentStepMaxA = std::min(l.currentStepMaxA, lim.amplitudeLimitPct / 100.0 * ax.sim->parameter("motor.rated_current"));
+    l.motorSpeedMaxRadS = std::min(l.motorSpeedMaxRadS, lim.speedLimitRadS);
+    l.currentStepMaxSpeedRadS = std::min(l.currentStepMaxSpeedRadS, lim.speedLimitRadS);
+    if (ax.kind == "linear")
+        l.travelWindow = std::min(l.travelWindow, lim.travelLimit);
+    return l;
 }
 
 void SimDriveServer::trip(const std::string& fault, const std::string& message)

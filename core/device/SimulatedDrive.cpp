@@ -3,11 +3,9 @@
 // §1.2, §2.3 stepped with the velocity loop open; docs/simulator.md "Current-step test".
 #include "core/device/SimulatedDrive.h"
 
-#include "core/device/ModbusDrive.h"
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
-#include "core/sim/IdentifiedPlant.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,78 +24,6 @@ const char* testStateName(TestState s)
     case TestState::Faulted: return "faulted";
     }
     return "?";
-}
-
-namespace {
-
-// "model=PATH[&axis=NAME]": the identified rigid-body model of `axistune-cli identify` as the
-// plant of one axis (docs/identification.md "Using the result"). The axis may be left out when the
-// machine has one axis of the model's kind.
-Status applySimQuery(sim::MachineDefinition& def, const std::string& query)
-{
-    std::string modelPath, axisName;
-    std::size_t start = 0;
-    while (start <= query.size()) {
-        const auto amp = query.find('&', start);
-        const std::string item = query.substr(start, amp == std::string::npos ? std::string::npos : amp - start);
-        const auto eq = item.find('=');
-        const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
-        if (key == "model" && !value.empty())
-            modelPath = value;
-        else if (key == "axis" && !value.empty())
-            axisName = value;
-        else
-            return makeError(ErrorCode::BadInput,
-                             "unknown or empty option '" + item + "' (expected model=PATH and axis=NAME)");
-        if (amp == std::string::npos)
-            break;
-        start = amp + 1;
-    }
-    if (modelPath.empty())
-        return makeError(ErrorCode::BadInput, "axis=NAME needs model=PATH");
-    auto m = ident::readIdentifiedModelFile(modelPath);
-    if (!m)
-        return m.error();
-    const auto kind = m->motion == ident::AxisMotion::Linear ? sim::AxisKind::Linear : sim::AxisKind::Rotary;
-    sim::AxisDefinition* target = nullptr;
-    int candidates = 0;
-    for (auto& a : def.axes) {
-        if (axisName.empty() ? a.kind == kind : a.name == axisName) {
-            target = &a;
-            ++candidates;
-        }
-    }
-    if (target == nullptr)
-        return makeError(ErrorCode::NotFound, axisName.empty() ? "no axis of the model's kind on machine " + def.name
-                                                               : "no axis '" + axisName + "' on machine " + def.name);
-    if (candidates > 1)
-        return makeError(ErrorCode::BadInput, "machine " + def.name + " has several such axes: give axis=NAME");
-    return sim::applyIdentifiedModel(*target, *m, modelPath);
-}
-
-} // namespace
-
-Result<std::unique_ptr<Drive>> connect(const ConnectionSettings& settings)
-{
-    const std::string prefix = "sim:";
-    if (settings.uri.rfind(prefix, 0) == 0) {
-        const std::string rest = settings.uri.substr(prefix.size());
-        const auto q = rest.find('?');
-        auto def = sim::loadPreset(rest.substr(0, q));
-        if (!def)
-            return makeError(def.error().code, "connection '" + settings.uri + "': " + def.error().detail);
-        if (q != std::string::npos) {
-            if (auto st = applySimQuery(def.value(), rest.substr(q + 1)); !st)
-                return makeError(st.error().code, "connection '" + settings.uri + "': " + st.error().detail);
-        }
-        auto d = SimulatedDrive::create(*def, settings.seed);
-        if (!d)
-            return d.error();
-        return std::unique_ptr<Drive>(std::move(d).value());
-    }
-    if (settings.uri.rfind("modbus://", 0) == 0)
-        return connectModbus(settings);
-    return makeError(ErrorCode::BadInput, "connection '" + settings.uri + "': expected sim:PRESET or modbus://HOST:PORT");
 }
 
 Result<std::unique_ptr<SimulatedDrive>> SimulatedDrive::create(const sim::MachineDefinition& machine, std::uint64_t seed)
@@ -132,6 +58,8 @@ Result<sim::AxisSimulator*> SimulatedDrive::axisSim(const std::string& axis)
 
 Result<DriveIdentity> SimulatedDrive::identify()
 {
+    if (auto st = checkLink(); !st)
+        return st.error();
     DriveIdentity id{"AxisTune", "simulated drive", AXISTUNE_VERSION, m_machine.name, {}};
     for (const auto& a : m_machine.axes)
         id.axes.push_back(a.name);
@@ -140,6 +68,8 @@ Result<DriveIdentity> SimulatedDrive::identify()
 
 Result<std::vector<model::ParameterMeta>> SimulatedDrive::parameterMetadata(const std::string& axis)
 {
+    if (auto st = checkLink(); !st)
+        return st.error();
     auto s = axisSim(axis);
     if (!s)
         return s.error();
@@ -153,6 +83,8 @@ Result<std::vector<model::ParameterMeta>> SimulatedDrive::parameterMetadata(cons
 
 Result<model::ParameterValues> SimulatedDrive::readParameters(const std::string& axis, std::span<const std::string> keys)
 {
+    if (auto st = checkLink(); !st)
+        return st.error();
     auto s = axisSim(axis);
     if (!s)
         return s.error();
@@ -176,6 +108,8 @@ Result<model::ParameterValues> SimulatedDrive::readParameters(const std::string&
 
 Status SimulatedDrive::writeParameters(const std::string& axis, const model::ParameterValues& values)
 {
+    if (auto st = checkLink(); !st)
+        return st;
     auto s = axisSim(axis);
     if (!s)
         return s.error();
@@ -194,38 +128,28 @@ Status SimulatedDrive::writeParameters(const std::string& axis, const model::Par
     return (*s)->setParameters(values);
 }
 
-Status SimulatedDrive::startTest(const TestRequest& request)
+Status SimulatedDrive::checkLink()
 {
-    if (m_status.state == TestState::Running)
-        return makeError(ErrorCode::Busy, "a test is already running");
-    if (request.type == TestType::Circle)
-        return startCircle(request);
-    auto s = axisSim(request.axis);
-    if (!s)
-        return s.error();
-    sim::AxisSimulator& sim = **s;
-    if (request.type != TestType::Frf && (!(request.durationS > 0.0) || request.durationS > 600.0))
-        return makeError(ErrorCode::OutOfRange, "test duration must lie in (0, 600] s");
-    m_backup = sim.parameters();
-    if (request.traceDivider > 0) {
-        if (auto st = sim.setParameters({{"trace.divider", request.traceDivider}}); !st)
-            return st;
-    }
-    const double start = sim.positionCommand();
-    double length = request.durationS;
-    m_frfPlan.reset();
-    m_multisinePlan.reset();
-    m_frf.reset();
-    m_recordEnd = -1.0;
+    if (m_faults.dropAfterRequests > 0 && ++m_requests >= m_faults.dropAfterRequests)
+        return makeError(ErrorCode::Device, "connection lost: fault drop-after:" +
+                                                std::to_string(m_faults.dropAfterRequests) + " injected");
+    return Status::success();
+}
+
+Result<double> SimulatedDrive::checkMotion(const sim::AxisSimulator& sim, const TestRequest& request) const
+{
+    if (request.type != TestType::Frf && (!(request.durationS > 0.0) || request.durationS > kMaxTestDurationS))
+        return makeError(ErrorCode::OutOfRange, "test duration " + model::formatNumber(request.durationS, 6) +
+                                                    " s refused: it must lie in (0, " +
+                                                    model::formatNumber(kMaxTestDurationS, 6) + "] s");
     switch (request.type) {
-    case TestType::Step: {
+    case TestType::Step:
         if (!std::isfinite(request.amplitude) || std::abs(request.amplitude) > kMaxMotorSpeedRadS)
-            return makeError(ErrorCode::OutOfRange, "step amplitude must be finite and at most 628 rad/s (6000 min^-1)");
-        sim.setControlMode(sim::ControlMode::Velocity);
-        const double t0 = sim.time() + 0.01 * request.durationS, amp = request.amplitude;
-        sim.setVelocityCommand([t0, amp](double t) { return t >= t0 ? amp : 0.0; });
-        break;
-    }
+            return makeError(ErrorCode::OutOfRange, "step amplitude " + model::formatNumber(request.amplitude, 6) +
+                                                        " rad/s refused: it must be finite and at most " +
+                                                        model::formatNumber(kMaxMotorSpeedRadS, 4) +
+                                                        " rad/s (6000 min^-1)");
+        return request.durationS;
     case TestType::Jog: {
         if (!(request.velocity > 0.0) || !(request.acceleration > 0.0) || !std::isfinite(request.distance))
             return makeError(ErrorCode::OutOfRange, "jog needs a positive velocity and acceleration and a finite distance");
@@ -237,17 +161,62 @@ Status SimulatedDrive::startTest(const TestRequest& request)
         if (!(motorSpeed <= kMaxMotorSpeedRadS))
             return makeError(ErrorCode::OutOfRange,
                              "jog velocity " + model::formatNumber(request.velocity, 4) + (linear ? " m/s" : " rad/s") +
-                                 " means " + model::formatNumber(motorSpeed, 4) +
-                                 " rad/s at the motor, above the limit of 628.3 rad/s (6000 min^-1)");
-        sim::MotionProfile p(start);
-        p.dwell(request.durationS);
-        p.move(request.distance, request.velocity, request.acceleration, request.jerk);
-        if (request.returnToStart)
-            p.move(-request.distance, request.velocity, request.acceleration, request.jerk);
-        p.dwell(request.durationS);
+                                 " means " + model::formatNumber(motorSpeed, 4) + " rad/s at the motor, above the limit of " +
+                                 model::formatNumber(kMaxMotorSpeedRadS, 4) + " rad/s (6000 min^-1)");
+        return jogProfile(sim, request).duration();
+    }
+    default:
+        return request.durationS;
+    }
+}
+
+sim::MotionProfile SimulatedDrive::jogProfile(const sim::AxisSimulator& sim, const TestRequest& request)
+{
+    sim::MotionProfile p(sim.positionCommand());
+    p.dwell(request.durationS);
+    p.move(request.distance, request.velocity, request.acceleration, request.jerk);
+    if (request.returnToStart)
+        p.move(-request.distance, request.velocity, request.acceleration, request.jerk);
+    p.dwell(request.durationS);
+    return p;
+}
+
+Status SimulatedDrive::startTest(const TestRequest& request)
+{
+    if (auto st = checkLink(); !st)
+        return st;
+    if (m_status.state == TestState::Running)
+        return makeError(ErrorCode::Busy, "a test is already running");
+    if (request.type == TestType::Circle)
+        return startCircle(request);
+    auto s = axisSim(request.axis);
+    if (!s)
+        return s.error();
+    sim::AxisSimulator& sim = **s;
+    auto checked = checkMotion(sim, request);
+    if (!checked)
+        return checked.error();
+    m_backup = sim.parameters();
+    if (request.traceDivider > 0) {
+        if (auto st = sim.setParameters({{"trace.divider", request.traceDivider}}); !st)
+            return st;
+    }
+    const double start = sim.positionCommand();
+    double length = *checked;
+    m_frfPlan.reset();
+    m_multisinePlan.reset();
+    m_frf.reset();
+    m_recordEnd = -1.0;
+    switch (request.type) {
+    case TestType::Step: {
+        sim.setControlMode(sim::ControlMode::Velocity);
+        const double t0 = sim.time() + 0.01 * request.durationS, amp = request.amplitude;
+        sim.setVelocityCommand([t0, amp](double t) { return t >= t0 ? amp : 0.0; });
+        break;
+    }
+    case TestType::Jog: {
         sim.setControlMode(sim::ControlMode::Position);
-        sim.setPositionProfile(p);
-        length = p.duration();
+        sim.setPositionProfile(jogProfile(sim, request));
         break;
     }
     case TestType::Hold: {
@@ -291,6 +260,8 @@ Status SimulatedDrive::startTest(const TestRequest& request)
 
 Result<TestStatus> SimulatedDrive::pollTest()
 {
+    if (auto st = checkLink(); !st)
+        return st.error();
     if (m_circle && m_status.state == TestState::Running)
         return pollCircle();
     if (m_status.state != TestState::Running || !m_active)
@@ -305,6 +276,7 @@ Result<TestStatus> SimulatedDrive::pollTest()
         if (!m_trace)  // a current step took its trace at the end of its record
             m_trace = m_active->takeTrace();
         m_trace->metadata["machine"] = m_machine.name;
+        model::setMetadataNumber(m_trace->metadata, kMotionTimeMetadataKey, m_active->time() - m_startTime);
         m_active->setVelocityCommand({});
         m_active->setTorqueInjection({});
         (void)m_active->setParameters(m_backup);
@@ -335,6 +307,8 @@ Result<TestStatus> SimulatedDrive::pollTest()
 
 Result<model::Capture> SimulatedDrive::readTrace()
 {
+    if (auto st = checkLink(); !st)
+        return st.error();
     if (!m_trace)
         return makeError(ErrorCode::NotFound, "no trace: no test has completed");
     return *m_trace;
@@ -342,12 +316,14 @@ Result<model::Capture> SimulatedDrive::readTrace()
 
 Result<FrfMeasurement> SimulatedDrive::readFrequencyResponse()
 {
+    if (auto st = checkLink(); !st)
+        return st.error();
     if (!m_frf)
         return makeError(ErrorCode::NotFound, "no frequency response: no FRF test has completed");
     return *m_frf;
 }
 
-Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestRequest& r)
+Result<SimulatedDrive::FrfPlans> SimulatedDrive::planFrf(const sim::AxisSimulator& sim, const TestRequest& r) const
 {
     const auto& v = sim.parameters();
     const double rated = model::ratedTorqueNm(v.at("motor.rated_current"), v.at("motor.torque_constant"));
@@ -370,20 +346,54 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     }
     if (r.minMeasureS > 0.0)
         timing.minMeasureS = r.minMeasureS;
-    if (r.frfMethod == FrfMethod::Multisine)
-        return startMultisine(sim, r, model::torqueNmFromRatedPct(r.amplitudePct, rated), timing);
-    FrfPlanOptions po;
-    po.method = r.frfMethod;
-    po.fsHz = 1.0 / sim.tracePeriod();
-    po.fminHz = r.fminHz;
-    po.fmaxHz = r.fmaxHz;
-    po.points = r.points;
-    po.amplitudeNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
-    po.timing = timing;
-    po.voltageLimitV = v.at("drive.max_voltage");
-    auto plan = planFrfTest(po);
-    if (!plan)
-        return plan.error();
+    const double tracePeriod = sim.velocityPeriod() * (r.traceDivider > 0 ? r.traceDivider : v.at("trace.divider"));
+    const double peakNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
+    FrfPlans out;
+    if (r.frfMethod == FrfMethod::Multisine) {
+        // The multisine variant (MultisineTest.h): the limit in % of rated torque holds at its peak.
+        const double h = sim.currentPeriod();
+        MultisinePlanOptions po;
+        po.fsHz = 1.0 / tracePeriod;
+        po.ticksPerSample = static_cast<int>(std::llround(tracePeriod / h));
+        po.currentPeriodS = h;
+        po.ticksPerVelocity = static_cast<int>(std::llround(v.at("velocity.period") / h));
+        po.bands = multisineBandsOf(r);
+        po.shape = r.multisineShape;
+        po.phases = r.multisinePhases;
+        po.peakNm = peakNm;
+        po.timing = timing;
+        po.periods = r.multisinePeriods;
+        po.voltageLimitV = v.at("drive.max_voltage");
+        auto plan = planMultisineTest(po);
+        if (!plan)
+            return plan.error();
+        out.multisine = std::make_shared<const MultisinePlan>(std::move(plan).value());
+        out.durationS = out.multisine->durationS();
+    } else {
+        FrfPlanOptions po;
+        po.method = r.frfMethod;
+        po.fsHz = 1.0 / tracePeriod;
+        po.fminHz = r.fminHz;
+        po.fmaxHz = r.fmaxHz;
+        po.points = r.points;
+        po.amplitudeNm = peakNm;
+        po.timing = timing;
+        po.voltageLimitV = v.at("drive.max_voltage");
+        auto plan = planFrfTest(po);
+        if (!plan)
+            return plan.error();
+        out.sweep = std::make_shared<const FrfPlan>(std::move(plan).value());
+        out.durationS = out.sweep->durationS();
+    }
+    out.tracePeriodS = tracePeriod;
+    return out;
+}
+
+Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestRequest& r)
+{
+    auto plans = planFrf(sim, r);
+    if (!plans)
+        return plans.error();
     // The axis holds velocity 0 while the disturbance acts (spec §4.3 step 1).
     sim.setControlMode(sim::ControlMode::Velocity);
     sim.setVelocityCommand({});
@@ -393,55 +403,29 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     const auto now = std::llround(sim.time() / h);
     const auto first = (now + ticksPerSample - 1) / ticksPerSample * ticksPerSample;
     sim.runTicks(first - now);
-    auto shared = std::make_shared<const FrfPlan>(std::move(plan).value());
     const double t0 = static_cast<double>(first) * h;
-    const double sampleS = sim.tracePeriod();
-    sim.setTorqueInjection([shared, t0, sampleS, h](double t) {
-        // Whole current ticks from the first sample, as a fractional trace-sample position.
-        const double ticks = std::round((t - t0) / h);
-        return frfExcitation(*shared, ticks * h / sampleS);
-    });
-    m_frfPlan = shared;
-    return shared->durationS();
-}
-
-Result<double> SimulatedDrive::startMultisine(sim::AxisSimulator& sim, const TestRequest& r, double peakNm,
-                                              const LoopTiming& timing)
-{
-    const auto& v = sim.parameters();
-    const double h = sim.currentPeriod();
-    MultisinePlanOptions po;
-    po.fsHz = 1.0 / sim.tracePeriod();
-    po.ticksPerSample = static_cast<int>(std::llround(sim.tracePeriod() / h));
-    po.currentPeriodS = h;
-    po.ticksPerVelocity = static_cast<int>(std::llround(v.at("velocity.period") / h));
-    po.bands = multisineBandsOf(r);
-    po.shape = r.multisineShape;
-    po.phases = r.multisinePhases;
-    po.peakNm = peakNm;  // the limit in % of rated torque holds at the multisine's peak
-    po.timing = timing;
-    po.periods = r.multisinePeriods;
-    po.voltageLimitV = v.at("drive.max_voltage");
-    auto plan = planMultisineTest(po);
-    if (!plan)
-        return plan.error();
-    sim.setControlMode(sim::ControlMode::Velocity);
-    sim.setVelocityCommand({});
-    // Trace sample 0 on a current tick that is a traced velocity tick (as startFrf).
-    const auto ticksPerSample = std::llround(sim.tracePeriod() / h);
-    const auto now = std::llround(sim.time() / h);
-    const auto first = (now + ticksPerSample - 1) / ticksPerSample * ticksPerSample;
-    sim.runTicks(first - now);
-    auto shared = std::make_shared<const MultisinePlan>(std::move(plan).value());
-    const double t0 = static_cast<double>(first) * h;
-    sim.setTorqueInjection([shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
-    m_multisinePlan = shared;
-    m_clampsAtStart = sim.voltageClampCount();
-    return shared->durationS();
+    if (plans->multisine) {
+        auto shared = plans->multisine;
+        sim.setTorqueInjection([shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
+        m_multisinePlan = shared;
+        m_clampsAtStart = sim.voltageClampCount();
+    } else {
+        auto shared = plans->sweep;
+        const double sampleS = sim.tracePeriod();
+        sim.setTorqueInjection([shared, t0, sampleS, h](double t) {
+            // Whole current ticks from the first sample, as a fractional trace-sample position.
+            const double ticks = std::round((t - t0) / h);
+            return frfExcitation(*shared, ticks * h / sampleS);
+        });
+        m_frfPlan = shared;
+    }
+    return plans->durationS;
 }
 
 Status SimulatedDrive::abortTest()
 {
+    if (auto st = checkLink(); !st)
+        return st;
     if (m_circle && m_status.state == TestState::Running) {
         abortCircle("aborted by the user");
         return Status::success();
@@ -463,7 +447,88 @@ Status SimulatedDrive::abortTest()
     return Status::success();
 }
 
-Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const TestRequest& r)
+// ---------------------------------------------------------------------------------------------
+// The drive describes itself (docs/drive-seam.md).
+
+Result<DriveCapabilities> SimulatedDrive::capabilities(const std::string& axis)
+{
+    if (auto st = checkLink(); !st)
+        return st.error();
+    auto s = axisSim(axis);
+    if (!s)
+        return s.error();
+    DriveCapabilities c;
+    c.testTypes = {TestType::Step, TestType::Jog, TestType::Hold, TestType::Frf, TestType::CurrentStep};
+    if ((*s)->kind() == sim::AxisKind::Linear && m_axes.size() > 1)
+        c.testTypes.push_back(TestType::Circle);
+    c.frfMethods = {FrfMethod::MultiSweep, FrfMethod::Conventional, FrfMethod::Prbs, FrfMethod::Multisine};
+    c.traceRateHz = 1.0 / (*s)->velocityPeriod();
+    c.currentTraceRateHz = 1.0 / (*s)->currentPeriod();
+    c.evaluatesFrf = true;
+    c.writesParameters = true;
+    c.hasLink = false;
+    return c;
+}
+
+Result<DriveLimits> SimulatedDrive::limits(const std::string& axis)
+{
+    if (auto st = checkLink(); !st)
+        return st.error();
+    auto s = axisSim(axis);
+    if (!s)
+        return s.error();
+    DriveLimits l;
+    l.frfAmplitudeMaxPct = kMaxFrfAmplitudePct;
+    l.currentStepMaxA = kMaxCurrentStepFraction * (*s)->parameter("motor.max_current");
+    l.currentStepMaxS = kMaxCurrentStepS;
+    l.currentStepMaxSpeedRadS = kMaxCurrentStepSpeedRadS;
+    l.motorSpeedMaxRadS = kMaxMotorSpeedRadS;
+    l.testDurationMaxS = kMaxTestDurationS;
+    // Jogs of the embedded drive have no travel window; circles keep within kTravelWindowM.
+    l.travelWindow = (*s)->kind() == sim::AxisKind::Linear ? kTravelWindowM : std::numeric_limits<double>::infinity();
+    return l;
+}
+
+Result<TestPlan> SimulatedDrive::planTest(const TestRequest& request)
+{
+    if (auto st = checkLink(); !st)
+        return st.error();
+    if (request.type == TestType::Circle)
+        return planCircle(request);
+    auto s = axisSim(request.axis);
+    if (!s)
+        return s.error();
+    const sim::AxisSimulator& sim = **s;
+    auto length = checkMotion(sim, request);
+    if (!length)
+        return length.error();
+    const double tracePeriod =
+        sim.velocityPeriod() * (request.traceDivider > 0 ? request.traceDivider : sim.parameter("trace.divider"));
+    TestPlan p;
+    if (request.type == TestType::Frf) {
+        auto plans = planFrf(sim, request);
+        if (!plans)
+            return plans.error();
+        p.motionTimeS = plans->durationS;
+        p.traceRateHz = 1.0 / plans->tracePeriodS;
+        p.recordSamples = static_cast<std::size_t>(std::llround(plans->durationS / plans->tracePeriodS));
+    } else if (request.type == TestType::CurrentStep) {
+        auto c = planCurrentStep(sim, request);
+        if (!c)
+            return c.error();
+        p.motionTimeS = c->lengthS;
+        p.traceRateHz = 1.0 / c->h;
+        p.recordSamples = static_cast<std::size_t>(c->ticks);
+    } else {
+        p.motionTimeS = *length;
+        p.traceRateHz = 1.0 / tracePeriod;
+        p.recordSamples = static_cast<std::size_t>(std::llround(*length / tracePeriod));
+    }
+    return p;
+}
+
+Result<SimulatedDrive::CurrentStepTiming> SimulatedDrive::planCurrentStep(const sim::AxisSimulator& sim,
+                                                                          const TestRequest& r) const
 {
     const auto& v = sim.parameters();
     const double iMax = v.at("motor.max_current"), kt = v.at("motor.torque_constant"), j = v.at("plant.inertia_motor");
@@ -478,16 +543,17 @@ Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const T
         return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
                                                     " s refused: it must lie in (0, " + g(kMaxCurrentStepS) + "] s");
     }
-    const double h = sim.currentPeriod();
-    const auto ticks = std::llround(r.durationS / h);
-    const auto preTicks = std::max<long long>(1, std::llround(0.1 * r.durationS / h));
-    if (ticks < preTicks + 2) {
+    CurrentStepTiming c;
+    c.h = sim.currentPeriod();
+    c.ticks = std::llround(r.durationS / c.h);
+    c.preTicks = std::max<long long>(1, std::llround(0.1 * r.durationS / c.h));
+    if (c.ticks < c.preTicks + 2) {
         return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
-                                                    " s refused: shorter than a few current periods (" + g(h) + " s)");
+                                                    " s refused: shorter than a few current periods (" + g(c.h) + " s)");
     }
     // With the velocity loop open the motor accelerates freely: k_t·|I|·t / J_m at the end of the record, with
     // the rotor inertia alone (a motor datum; the coupled load can only make it slower).
-    const double stepS = static_cast<double>(ticks - preTicks) * h;
+    const double stepS = static_cast<double>(c.ticks - c.preTicks) * c.h;
     const double speed = j > 0.0 ? kt * std::abs(r.amplitude) * stepS / j : std::numeric_limits<double>::infinity();
     if (!(speed <= kMaxCurrentStepSpeedRadS)) {
         return makeError(ErrorCode::OutOfRange,
@@ -496,17 +562,27 @@ Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const T
                              " rad/s (k_t·I·t/J_m with the rotor inertia J_m " + g(j) + " kg·m²), above the " +
                              g(kMaxCurrentStepSpeedRadS) + " rad/s a current step may reach; lower or shorten it");
     }
+    c.lengthS = static_cast<double>(c.ticks) * c.h + kCurrentStepHoldS;
+    return c;
+}
+
+Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const TestRequest& r)
+{
+    auto c = planCurrentStep(sim, r);
+    if (!c)
+        return c.error();
+    const double h = c->h;
     // The record starts on a whole current tick; the step comes preTicks later and holds to the end.
     const double t0 = sim.time();
-    const double tStep = t0 + static_cast<double>(preTicks) * h;
+    const double tStep = t0 + static_cast<double>(c->preTicks) * h;
     const double amp = r.amplitude, half = 0.5 * h;
     sim.setControlMode(sim::ControlMode::Current);
     sim.setCurrentCommand([tStep, amp, half](double t) { return t >= tStep - half ? amp : 0.0; });
     sim.startTrace(sim::TraceRate::Current);
     m_clampsAtStart = sim.voltageClampCount();
-    m_recordEnd = t0 + static_cast<double>(ticks) * h;
+    m_recordEnd = t0 + static_cast<double>(c->ticks) * h;
     m_stepStart = model::formatNumber(tStep, 17);
-    return static_cast<double>(ticks) * h + kCurrentStepHoldS;
+    return c->lengthS;
 }
 
 void SimulatedDrive::endCurrentStepRecord()

@@ -5,8 +5,10 @@
 // and can abort between polls.
 
 #include "core/device/Drive.h"
+#include "core/device/FaultInjection.h"
 #include "core/device/FrfTest.h"
 #include "core/device/MultisineTest.h"
+#include "core/device/SimulatedDriveLimits.h"
 #include "core/sim/AxisSimulator.h"
 
 #include <map>
@@ -28,6 +30,13 @@ public:
     Result<model::Capture> readTrace() override;
     Status abortTest() override;
     Result<FrfMeasurement> readFrequencyResponse() override;
+    Result<DriveCapabilities> capabilities(const std::string& axis) override;
+    Result<DriveLimits> limits(const std::string& axis) override;
+    Result<TestPlan> planTest(const TestRequest& request) override;
+
+    /// Failure modes of the link for tests (FaultInjection.h): drop-after:N makes the N-th call and every
+    /// later one fail with ErrorCode::Device as a lost connection would ("sim:PRESET?fault=drop-after:N").
+    void setFaults(const FaultInjection& faults) { m_faults = faults; }
 
     /// Machine time advanced per pollTest() call [s].
     void setSliceSeconds(double s) { m_slice = s; }
@@ -36,15 +45,34 @@ public:
 private:
     SimulatedDrive() = default;
     Result<sim::AxisSimulator*> axisSim(const std::string& axis);
+    /// The plan of an FRF test: a sine-stream/PRBS plan or a multisine plan, its length and trace period.
+    struct FrfPlans {
+        std::shared_ptr<const FrfPlan> sweep;
+        std::shared_ptr<const MultisinePlan> multisine;
+        double durationS = 0.0;
+        double tracePeriodS = 0.0;
+    };
+    Result<FrfPlans> planFrf(const sim::AxisSimulator& sim, const TestRequest& request) const;
     /// Plans the FRF test, aligns to the trace grid and installs the injection; returns its length [s].
     Result<double> startFrf(sim::AxisSimulator& sim, const TestRequest& request);
-    /// The multisine variant of startFrf (MultisineTest.h), after the amplitude and timing checks.
-    Result<double> startMultisine(sim::AxisSimulator& sim, const TestRequest& request, double peakNm, const LoopTiming& timing);
+    /// Checks of every test but Frf, Circle and CurrentStep; returns the test length [s] (Step, Hold: the record).
+    Result<double> checkMotion(const sim::AxisSimulator& sim, const TestRequest& request) const;
+    static sim::MotionProfile jogProfile(const sim::AxisSimulator& sim, const TestRequest& request);
+    /// Fails when an injected fault has dropped the link (setFaults).
+    Status checkLink();
+    Result<TestPlan> planCircle(const TestRequest& request);
     // The circle test of two axes (SimulatedDriveCircle.cpp).
     struct CircleState;
     Status startCircle(const TestRequest& request);
     Result<TestStatus> pollCircle();
     void abortCircle(const std::string& why);
+    struct CurrentStepTiming {
+        double h = 0.0;          ///< current-loop period [s]
+        long long ticks = 0;     ///< record length [current periods]
+        long long preTicks = 0;  ///< record before the step [current periods]
+        double lengthS = 0.0;    ///< record and hold [s]
+    };
+    Result<CurrentStepTiming> planCurrentStep(const sim::AxisSimulator& sim, const TestRequest& request) const;
     /// Checks and installs a current step (TestType::CurrentStep); returns the test length [s] (record and hold).
     Result<double> startCurrentStep(sim::AxisSimulator& sim, const TestRequest& request);
     /// Current step: at the end of the record, takes the trace and closes the position loop again.
@@ -68,6 +96,8 @@ private:
     std::shared_ptr<CircleState> m_circle;  ///< the running circle test
     double m_recordEnd = -1.0;  ///< current step: machine time the record ends and the hold begins (< 0: none)
     std::string m_stepStart;    ///< current step: machine time of the step, as capture metadata
+    FaultInjection m_faults;
+    int m_requests = 0;
 };
 
 }  // namespace axistune::device

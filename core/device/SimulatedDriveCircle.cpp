@@ -112,6 +112,59 @@ struct SimulatedDrive::CircleState {
     double totalS = 0.0;        ///< positioning + circle + tail [s]
 };
 
+namespace {
+
+/// The move of one axis from where it stands to its start point on the path.
+sim::MotionProfile positioningProfile(const sim::AxisSimulator& s, const sim::CirclePath& path, bool second,
+                                      const TestRequest& r)
+{
+    sim::MotionProfile p(s.positionCommand());
+    p.move(path.startPosition(second) - s.positionCommand(), circlePositioningSpeed(r), circlePositioningAccel(r));
+    return p;
+}
+
+/// Positioning in whole position periods [s].
+double positioningS(const sim::AxisSimulator& x, const sim::AxisSimulator& y, const sim::CirclePath& path,
+                    const TestRequest& r)
+{
+    const double positioning =
+        std::max(positioningProfile(x, path, false, r).duration(), positioningProfile(y, path, true, r).duration());
+    const double tp = x.parameter("position.period");
+    return std::ceil(positioning / tp) * tp;
+}
+
+/// Positioning, then the run of the path with its tail in whole position periods (sim::CircleRun) [s].
+double circleLengthS(const sim::AxisSimulator& x, const sim::AxisSimulator& y, const sim::CirclePath& path,
+                     const TestRequest& r)
+{
+    const double tp = x.parameter("position.period");
+    return positioningS(x, y, path, r) + static_cast<double>(sim::CircleRun::sampleCount(path, tp)) * tp;
+}
+
+}  // namespace
+
+Result<TestPlan> SimulatedDrive::planCircle(const TestRequest& request)
+{
+    auto x = axisSim(request.axis);
+    if (!x)
+        return x.error();
+    if (request.secondAxis.empty())
+        return makeError(ErrorCode::BadInput, "circle test: the second plane axis is not named");
+    auto y = axisSim(request.secondAxis);
+    if (!y)
+        return y.error();
+    if (auto st = checkCircleRequest(request, **x, **y); !st)
+        return st.error();
+    auto path = sim::CirclePath::plan(circleOptionsOf(request));
+    if (!path)
+        return path.error();
+    TestPlan p;
+    p.motionTimeS = circleLengthS(**x, **y, *path, request);
+    p.traceRateHz = 1.0 / (*x)->parameter("position.period");
+    p.recordSamples = sim::CircleRun::sampleCount(*path, (*x)->parameter("position.period"));
+    return p;
+}
+
 Status SimulatedDrive::startCircle(const TestRequest& request)
 {
     auto x = axisSim(request.axis);
@@ -133,22 +186,17 @@ Status SimulatedDrive::startCircle(const TestRequest& request)
     c->backupX = c->x->parameters();
     c->backupY = c->y->parameters();
     c->path = *path;
+    c->startS = c->x->time();
+    c->totalS = circleLengthS(*c->x, *c->y, *path, request);
+    c->positionedS = c->startS + positioningS(*c->x, *c->y, *path, request);
     // Both axes move to the start point at once (each its own trapezoid), then the circle begins.
-    const double v = circlePositioningSpeed(request), a = circlePositioningAccel(request);
-    double positioning = 0.0;
     for (const auto& [sim, second] : {std::pair{c->x, false}, std::pair{c->y, true}}) {
-        sim::MotionProfile p(sim->positionCommand());
-        p.move(path->startPosition(second) - sim->positionCommand(), v, a);
-        positioning = std::max(positioning, p.duration());
+        auto p = positioningProfile(*sim, *path, second, request);
         sim->setControlMode(sim::ControlMode::Position);
         sim->setVelocityCommand({});
         sim->setTorqueInjection({});
         sim->setPositionProfile(p);
     }
-    const double tp = c->x->parameter("position.period");
-    c->startS = c->x->time();
-    c->positionedS = c->startS + std::ceil(positioning / tp) * tp;
-    c->totalS = (c->positionedS - c->startS) + path->duration() + 0.2;
     m_circle = c;
     m_request = request;
     m_active = nullptr;
@@ -189,6 +237,7 @@ Result<TestStatus> SimulatedDrive::pollCircle()
         return m_status;
     m_trace = c.run->trace();
     m_trace->metadata["machine"] = m_machine.name;
+    model::setMetadataNumber(m_trace->metadata, kMotionTimeMetadataKey, c.x->time() - c.startS);
     // The axes hold the end point of the path; the parameters from before the test return.
     c.x->setPositionProfile(sim::MotionProfile(c.path.endPosition(false)));
     c.y->setPositionProfile(sim::MotionProfile(c.path.endPosition(true)));

@@ -117,6 +117,11 @@ Status checkCirclePlane(const AxisSimulator& x, const AxisSimulator& y)
     return Status::success();
 }
 
+std::size_t CircleRun::sampleCount(const CirclePath& path, double positionPeriodS)
+{
+    return static_cast<std::size_t>(std::ceil((path.duration() + kTailS) / positionPeriodS));
+}
+
 Result<CircleRun> CircleRun::begin(AxisSimulator& x, AxisSimulator& y, const CirclePath& path)
 {
     if (auto st = checkCirclePlane(x, y); !st)
@@ -125,7 +130,7 @@ Result<CircleRun> CircleRun::begin(AxisSimulator& x, AxisSimulator& y, const Cir
     run.m_tp = x.parameter("position.period");
     run.m_ticksPerSample = std::llround(run.m_tp / x.currentPeriod());
     run.m_t0x = x.time();
-    run.m_total = static_cast<std::size_t>(std::ceil((path.duration() + kTailS) / run.m_tp));
+    run.m_total = sampleCount(path, run.m_tp);
     for (auto* v : {&run.m_t, &run.m_s, &run.m_cx, &run.m_px, &run.m_qx, &run.m_tx, &run.m_cy, &run.m_py, &run.m_qy,
                     &run.m_ty})
         v->reserve(run.m_total);

@@ -66,6 +66,8 @@ Status checkCirclePlane(const AxisSimulator& x, const AxisSimulator& y);
 class CircleRun {
 public:
     static Result<CircleRun> begin(AxisSimulator& x, AxisSimulator& y, const CirclePath& path);
+    /// Samples a run of this path records at this position period (the path and 0.2 s after its end).
+    static std::size_t sampleCount(const CirclePath& path, double positionPeriodS);
 
     /// Samples the run records: the path and 0.2 s after its end, one per position period.
     std::size_t totalSamples() const { return m_total; }

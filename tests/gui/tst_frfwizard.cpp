@@ -237,11 +237,47 @@ private slots:
         auto* s = w.safetyPage();
         s->confirmation()->setChecked(true);
         QVERIFY(waitUntil([&] { return w.button(QWizard::NextButton)->isEnabled(); }, 10000));
-        s->amplitude()->setValue(device::kMaxFrfAmplitudePct + 1.0);
-        QCOMPARE(s->amplitude()->value(), device::kMaxFrfAmplitudePct + 1.0);  // not clamped ...
+        // The limit is the drive's own (Drive::limits), as the wizard read it.
+        const double maxPct = s->driveInfo().maxAmplitudePct();
+        QVERIFY(std::isfinite(maxPct) && maxPct > 0.0);
+        s->amplitude()->setValue(maxPct + 1.0);
+        QCOMPARE(s->amplitude()->value(), maxPct + 1.0);  // not clamped ...
         s->confirmation()->setChecked(true);
         QVERIFY(!w.button(QWizard::NextButton)->isEnabled());  // ... but refused
         QVERIFY(s->findChild<QLabel*>("frfAmplitudeText")->text().contains("Refused"));
+    }
+
+    void amplitudeLimitAndMotionTimeComeFromTheDrive()
+    {
+        // axistune-simdrive with a narrower excitation limit than the embedded simulator's: the wizard shows
+        // and enforces the server's 20 %, and its motion time is the drive's own plan (plan_test).
+        testing::SimDrive server("--preset dd-table --amplitude-limit 20");
+        QVERIFY(server.port() > 0);
+        gui::AppContext ctx;
+        QVERIFY(connectTo(ctx, QString::fromStdString(server.uri())));
+        FrfWizard w(ctx);
+        w.show();
+        auto* s = w.safetyPage();
+        s->confirmation()->setChecked(true);
+        QVERIFY(waitUntil([&] { return w.button(QWizard::NextButton)->isEnabled(); }, 10000));
+        QCOMPARE(s->driveInfo().maxAmplitudePct(), 20.0);  // the server's --amplitude-limit, exact over f64
+        s->amplitude()->setValue(21.0);
+        s->confirmation()->setChecked(true);
+        QVERIFY(!w.button(QWizard::NextButton)->isEnabled());
+        QVERIFY(s->findChild<QLabel*>("frfAmplitudeText")->text().contains("20"));
+        s->amplitude()->setValue(5.0);
+        s->confirmation()->setChecked(true);
+        QVERIFY(waitUntil([&] { return w.button(QWizard::NextButton)->isEnabled(); }, 10000));
+        w.next();
+        auto* config = w.findChild<FrfConfigPage*>();
+        QVERIFY(config);
+        QVERIFY(waitUntil([&] { return std::isfinite(config->estimatedMotionS()) && config->isComplete(); }, 10000));
+        // The same request planned by the drive directly: the wizard shows exactly that number.
+        auto drive = device::connect({server.uri(), 1});
+        QVERIFY(drive.ok());
+        auto plan = (*drive)->planTest(w.request());
+        QVERIFY2(plan.ok(), plan.ok() ? "" : plan.error().detail.c_str());
+        QCOMPARE(config->estimatedMotionS(), plan->motionTimeS);
     }
 
     void ddTableSimulatedEndToEnd()

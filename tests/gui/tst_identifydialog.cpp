@@ -88,8 +88,8 @@ private slots:
         gui::ConnectDialog d(ctx);
         d.setSimulated("vmc");
         QCOMPARE(d.uri(), QStringLiteral("sim:vmc"));
-        d.findChild<QLineEdit*>("modelEdit")->setText("/tmp/result.json");
-        d.findChild<QLineEdit*>("modelAxisEdit")->setText("X");
+        d.findChild<QLineEdit*>("setting_sim_model")->setText("/tmp/result.json");
+        d.findChild<QLineEdit*>("setting_sim_axis")->setText("X");
         QCOMPARE(d.uri(), QStringLiteral("sim:vmc?model=/tmp/result.json&axis=X"));
     }
 };
