@@ -1248,82 +1248,115 @@
 <context>
     <name>axistune::gui::ConnectDialog</name>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="109" />
-        <location filename="../app/gui/ConnectDialog.cpp" line="120" />
         <source>Connect</source>
         <translation>接続</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="110" />
-        <source>Built-in simulated machine</source>
-        <translation>内蔵シミュレーション機</translation>
+        <source>Address form: %1</source>
+        <translation>アドレスの形式: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="111" />
-        <source>Drive over Modbus TCP</source>
-        <translation>Modbus TCP 経由のサーボアンプ</translation>
+        <source>%1:</source>
+        <translation>%1:</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="112" />
-        <source>Machine preset:</source>
-        <translation>機械のプリセット:</translation>
+        <source>Browse…</source>
+        <translation>参照…</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="113" />
         <source>Noise seed:</source>
         <translation>ノイズのシード:</translation>
     </message>
     <message>
-        <source>Identified model (optional):</source>
-        <translation>同定したモデル (任意):</translation>
+        <source>Choose a connection.</source>
+        <translation>接続先を選んでください。</translation>
+    </message>
+    <message>
+        <source>Enter %1.</source>
+        <translation>%1 を入力してください。</translation>
+    </message>
+    <message>
+        <source>Connecting to %1 …</source>
+        <translation>%1 に接続中…</translation>
+    </message>
+    <message>
+        <source>The connection failed: %1</source>
+        <translation>接続に失敗しました: %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveRegistry</name>
+    <message>
+        <source>Built-in simulated machine</source>
+        <translation>内蔵シミュレーション機</translation>
+    </message>
+    <message>
+        <source>Machine preset</source>
+        <translation>機械のプリセット</translation>
+    </message>
+    <message>
+        <source>Identified model (optional)</source>
+        <translation>同定したモデル (任意)</translation>
     </message>
     <message>
         <source>result JSON of Identify from motion</source>
         <translation>「動作からの同定」の結果 JSON</translation>
     </message>
     <message>
-        <source>Axis of the model:</source>
-        <translation>モデルを適用する軸:</translation>
+        <source>Axis of the model</source>
+        <translation>モデルを適用する軸</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="114" />
-        <source>Host:</source>
-        <translation>ホスト:</translation>
+        <source>Drive over Modbus TCP</source>
+        <translation>Modbus TCP 経由のサーボアンプ</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="115" />
-        <source>Port:</source>
-        <translation>ポート:</translation>
+        <source>Host</source>
+        <translation>ホスト</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="116" />
-        <source>Response timeout:</source>
-        <translation>応答タイムアウト:</translation>
+        <source>host name or address of the drive</source>
+        <translation>サーボアンプのホスト名またはアドレス</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="117" />
-        <source>Register map:</source>
-        <translation>レジスタマップ:</translation>
+        <source>Port</source>
+        <translation>ポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="118" />
-        <source>Unit ids: one per axis, from the register map (axis i answers on unit id base + i; see docs/modbus.md).</source>
-        <translation>ユニット ID: 軸ごとに 1 つ、レジスタマップによる (軸 i はユニット ID 基準値 + i で応答; docs/modbus.md 参照)。</translation>
+        <source>Response timeout</source>
+        <translation>応答タイムアウト</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="170" />
-        <source>Enter the host name or address of the drive.</source>
-        <translation>サーボアンプのホスト名またはアドレスを入力してください。</translation>
+        <source>Register map</source>
+        <translation>レジスタマップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="175" />
-        <source>Connecting to %1 …</source>
-        <translation>%1 に接続中…</translation>
+        <source>family of resources/drives/FAMILY.json</source>
+        <translation>resources/drives/FAMILY.json のファミリー名</translation>
     </message>
     <message>
-        <location filename="../app/gui/ConnectDialog.cpp" line="189" />
-        <source>The connection failed: %1</source>
-        <translation>接続に失敗しました: %1</translation>
+        <source>Replay of a recorded capture</source>
+        <translation>記録したキャプチャの再生</translation>
+    </message>
+    <message>
+        <source>Capture file</source>
+        <translation>キャプチャファイル</translation>
+    </message>
+    <message>
+        <source>capture CSV with test, axis and fs_Hz metadata</source>
+        <translation>test, axis, fs_Hz のメタデータを持つキャプチャ CSV</translation>
+    </message>
+    <message>
+        <source>The embedded simulated drive on a machine preset (docs/simulator.md); model=PATH puts an identified rigid-body model in place of one axis&apos;s plant.</source>
+        <translation>機械プリセット上の内蔵シミュレーションサーボアンプ (docs/simulator.md)。model=PATH で 1 軸のプラントを同定した剛体モデルに置き換えます。</translation>
+    </message>
+    <message>
+        <source>A drive speaking a register map of resources/drives/ over Modbus TCP (docs/modbus.md); axis i answers on unit id base + i of the map.</source>
+        <translation>resources/drives/ のレジスタマップで Modbus TCP により通信するサーボアンプ (docs/modbus.md)。軸 i はマップのユニット ID 基準値 + i で応答します。</translation>
+    </message>
+    <message>
+        <source>Plays back a capture CSV of `axistune-cli capture` as a drive: only the recorded test on the recorded axis, parameters read-only (docs/drive-seam.md).</source>
+        <translation>`axistune-cli capture` のキャプチャ CSV をサーボアンプとして再生します: 記録した軸の記録した試験のみ、パラメータは読み取り専用 (docs/drive-seam.md)。</translation>
     </message>
 </context>
 <context>
@@ -2085,6 +2118,10 @@
         <source>Estimating the motion time…</source>
         <translation>動作時間を推定中…</translation>
     </message>
+    <message>
+        <source>not connected</source>
+        <translation>未接続</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::FrfResultPage</name>
@@ -2197,6 +2234,14 @@
         <location filename="../app/gui/FrfWizardPages.cpp" line="184" />
         <source>%1 % of the rated torque %2 N·m = %3 N·m peak of the injected torque (at most %4 %).</source>
         <translation>定格トルク %2 N·m の %1 % = 注入トルクのピーク %3 N·m (最大 %4 %)。</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;The drive does not state its amplitude limit: %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;サーボアンプが振幅の上限を示していません: %1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>%1 % of rated torque (reading the drive&apos;s limit…).</source>
+        <translation>定格トルクの %1 % (サーボアンプの上限を読み取り中…)。</translation>
     </message>
 </context>
 <context>

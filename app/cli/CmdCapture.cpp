@@ -292,7 +292,8 @@ int runCapture(const CaptureOptions& o)
     cap.metadata["connection"] = o.connect;
     if (auto st = io::writeCaptureCsvFile(o.out, cap); !st)
         return reportError(cmd, st.error());
-    std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << cap.size() << ", \"fs_Hz\": " << cap.metadata["fs_Hz"]
+    std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << cap.size()
+              << ", \"fs_Hz\": " << cap.metadata["fs_Hz"]
               << ", \"planned_motion_s\": " << model::formatNumber(plan->motionTimeS, 10)
               << ", \"planned_samples\": " << plan->recordSamples << "}\n";
     return 0;

@@ -28,10 +28,14 @@ nlohmann::json limitJson(double v)
 const char* settingTypeName(device::BackendSetting::Type t)
 {
     switch (t) {
-    case device::BackendSetting::Type::Text: return "text";
-    case device::BackendSetting::Type::Integer: return "integer";
-    case device::BackendSetting::Type::Choice: return "choice";
-    case device::BackendSetting::Type::File: return "file";
+    case device::BackendSetting::Type::Text:
+        return "text";
+    case device::BackendSetting::Type::Integer:
+        return "integer";
+    case device::BackendSetting::Type::Choice:
+        return "choice";
+    case device::BackendSetting::Type::File:
+        return "file";
     }
     return "?";
 }
@@ -42,15 +46,22 @@ int listBackends()
     for (const auto& b : device::registeredBackends()) {
         nlohmann::json settings = nlohmann::json::array();
         for (const auto& s : b.settings) {
-            nlohmann::json j{{"name", s.name}, {"label", s.label}, {"type", settingTypeName(s.type)},
-                             {"default", s.defaultValue}, {"unit", s.unit}, {"required", s.required}};
+            nlohmann::json j{{"name", s.name},
+                             {"label", s.label},
+                             {"type", settingTypeName(s.type)},
+                             {"default", s.defaultValue},
+                             {"unit", s.unit},
+                             {"required", s.required}};
             if (!s.choices.empty())
                 j["choices"] = s.choices;
             if (s.type == device::BackendSetting::Type::Integer)
                 j["range"] = {s.minimum, s.maximum};
             settings.push_back(j);
         }
-        out.push_back({{"scheme", b.scheme}, {"uri", b.uriForm}, {"label", b.label}, {"description", b.description},
+        out.push_back({{"scheme", b.scheme},
+                       {"uri", b.uriForm},
+                       {"label", b.label},
+                       {"description", b.description},
                        {"settings", settings}});
     }
     return writeJsonResult("drive", {{"backends", out}}, "");
@@ -83,23 +94,22 @@ int runDrive(const DriveOptions& o)
             tests.emplace_back(device::testTypeName(t));
         for (const auto m : caps->frfMethods)
             methods.emplace_back(device::frfMethodName(m));
-        axesJson[a] = {
-            {"capabilities",
-             {{"tests", tests},
-              {"frf_methods", methods},
-              {"trace_rate_Hz", caps->traceRateHz},
-              {"current_trace_rate_Hz", caps->currentTraceRateHz},
-              {"evaluates_frf", caps->evaluatesFrf},
-              {"writes_parameters", caps->writesParameters},
-              {"has_link", caps->hasLink}}},
-            {"limits",
-             {{"frf_amplitude_max_pct", limitJson(lim->frfAmplitudeMaxPct)},
-              {"current_step_max_A", limitJson(lim->currentStepMaxA)},
-              {"current_step_max_s", limitJson(lim->currentStepMaxS)},
-              {"current_step_max_speed_rad_s", limitJson(lim->currentStepMaxSpeedRadS)},
-              {"motor_speed_max_rad_s", limitJson(lim->motorSpeedMaxRadS)},
-              {"test_duration_max_s", limitJson(lim->testDurationMaxS)},
-              {"travel_window", limitJson(lim->travelWindow)}}}};
+        axesJson[a] = {{"capabilities",
+                        {{"tests", tests},
+                         {"frf_methods", methods},
+                         {"trace_rate_Hz", caps->traceRateHz},
+                         {"current_trace_rate_Hz", caps->currentTraceRateHz},
+                         {"evaluates_frf", caps->evaluatesFrf},
+                         {"writes_parameters", caps->writesParameters},
+                         {"has_link", caps->hasLink}}},
+                       {"limits",
+                        {{"frf_amplitude_max_pct", limitJson(lim->frfAmplitudeMaxPct)},
+                         {"current_step_max_A", limitJson(lim->currentStepMaxA)},
+                         {"current_step_max_s", limitJson(lim->currentStepMaxS)},
+                         {"current_step_max_speed_rad_s", limitJson(lim->currentStepMaxSpeedRadS)},
+                         {"motor_speed_max_rad_s", limitJson(lim->motorSpeedMaxRadS)},
+                         {"test_duration_max_s", limitJson(lim->testDurationMaxS)},
+                         {"travel_window", limitJson(lim->travelWindow)}}}};
     }
     nlohmann::json out{{"connection", o.connect},
                        {"identity",
@@ -123,5 +133,5 @@ const CliRegistrar kRegistrar{
          return [o] { return runDrive(*o); };
      }}};
 
-}  // namespace
-}  // namespace axistune::cli
+} // namespace
+} // namespace axistune::cli

@@ -101,8 +101,7 @@ int runParams(const ParamsOptions& o)
 const CliRegistrar kRegistrar{
     {"params", "Read (JSON, SI units) and write drive parameters with read-back", [](CLI::App& sub) {
          auto o = std::make_shared<ParamsOptions>();
-         sub.add_option("--connect", o->connect, connectOptionHelp())
-             ->capture_default_str();
+         sub.add_option("--connect", o->connect, connectOptionHelp())->capture_default_str();
          sub.add_option("--axis", o->axis, "axis name, e.g. X")->required();
          sub.add_option("--set", o->set,
                         "KEY=VALUE in SI units (repeatable); checked against the limits before sending");

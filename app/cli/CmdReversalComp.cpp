@@ -5,8 +5,8 @@
 // with a new circle.
 #include "app/cli/CircleCommand.h"
 #include "app/cli/CliCommand.h"
-#include "core/device/DriveRegistry.h"
 #include "core/device/Drive.h"
+#include "core/device/DriveRegistry.h"
 #include "core/io/BallBarCsv.h"
 #include "core/model/ResultJson.h"
 #include "core/sim/AxisParameters.h"

@@ -2,7 +2,6 @@
 #include "app/gui/ConnectDialog.h"
 
 #include "app/gui/AppContext.h"
-
 #include "core/device/DriveRegistry.h"
 
 #include <QButtonGroup>
@@ -32,9 +31,12 @@ QString trBackend(const std::string& text)
     return text.empty() ? QString() : QCoreApplication::translate("DriveRegistry", text.c_str());
 }
 
-QString qs(const std::string& s) { return QString::fromStdString(s); }
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
 
-}  // namespace
+} // namespace
 
 QString backendKey(const device::DriveBackend& backend)
 {
@@ -62,6 +64,7 @@ ConnectDialog::ConnectDialog(AppContext& ctx, QWidget* parent) : QDialog(parent)
         auto* form = new QFormLayout(page);
         p.form = new QLabel(page);
         p.form->setWordWrap(true);
+        p.form->setTextFormat(Qt::PlainText);
         p.form->setObjectName("backendForm_" + key);
         form->addRow(p.form);
         for (const auto& s : b.settings) {
@@ -158,7 +161,7 @@ void ConnectDialog::retranslateUi()
     setWindowTitle(tr("Connect"));
     for (auto& p : m_pages) {
         p.radio->setText(trBackend(p.backend->label));
-        p.form->setText(tr("Address form: %1").arg(qs(p.backend->uriForm)));
+        p.form->setText(trBackend(p.backend->description) + "\n" + tr("Address form: %1").arg(qs(p.backend->uriForm)));
         for (std::size_t i = 0; i < p.fields.size(); ++i) {
             const auto& s = p.backend->settings[i];
             p.fields[i].label->setText(tr("%1:").arg(trBackend(s.label)));
@@ -183,9 +186,15 @@ void ConnectDialog::changeEvent(QEvent* event)
     QDialog::changeEvent(event);
 }
 
-int ConnectDialog::current() const { return m_group->checkedId(); }
+int ConnectDialog::current() const
+{
+    return m_group->checkedId();
+}
 
-void ConnectDialog::updateMode() { m_stack->setCurrentIndex(std::max(0, current())); }
+void ConnectDialog::updateMode()
+{
+    m_stack->setCurrentIndex(std::max(0, current()));
+}
 
 QString ConnectDialog::value(const Page& page, std::size_t i) const
 {
@@ -295,7 +304,10 @@ void ConnectDialog::setModbus(const QString& host, int port)
     setSetting("port", QString::number(port));
 }
 
-QString ConnectDialog::errorText() const { return m_failed ? m_status->text() : QString(); }
+QString ConnectDialog::errorText() const
+{
+    return m_failed ? m_status->text() : QString();
+}
 
 void ConnectDialog::startConnect()
 {
@@ -335,5 +347,5 @@ void ConnectDialog::onReply(const DriveReply& reply)
     accept();
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -67,7 +67,7 @@ private:
     struct Page {
         const device::DriveBackend* backend = nullptr;
         QRadioButton* radio = nullptr;
-        QLabel* form = nullptr;  ///< the URI form and description
+        QLabel* form = nullptr; ///< the URI form and description
         std::vector<Field> fields;
         QLabel* seedLabel = nullptr;
         QSpinBox* seed = nullptr;
@@ -93,5 +93,5 @@ private:
 /// A backend's key for object names and settings: its scheme without ':' and '/' ("sim", "modbus").
 QString backendKey(const device::DriveBackend& backend);
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -15,7 +15,8 @@ DriveReply DriveWorker::doDescribe(int id, const QString& axis)
     r.kind = DriveReply::Kind::Describe;
     r.axis = axis;
     if (!m_drive)
-        return fail(r, {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r,
+                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
     auto caps = m_drive->capabilities(axis.toStdString());
     if (!caps)
         return fail(r, caps.error());
@@ -35,7 +36,8 @@ DriveReply DriveWorker::doPlan(int id, const device::TestRequest& request)
     r.kind = DriveReply::Kind::Plan;
     r.axis = QString::fromStdString(request.axis);
     if (!m_drive)
-        return fail(r, {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r,
+                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
     auto plan = m_drive->planTest(request);
     if (!plan)
         return fail(r, plan.error());
@@ -58,5 +60,5 @@ int DriveController::planTest(const device::TestRequest& request)
     return id;
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -48,8 +48,8 @@ class AppContext;
 struct FrfDriveInfo {
     QString axis;
     model::ParameterValues values;
-    std::optional<device::DriveLimits> limits;  ///< the drive's own limits (Drive::limits); unset: unknown
-    QString limitsError;                        ///< why the limits are unknown
+    std::optional<device::DriveLimits> limits; ///< the drive's own limits (Drive::limits); unset: unknown
+    QString limitsError;                       ///< why the limits are unknown
     /// The drive's FRF amplitude limit [% of rated torque] (NaN when unknown).
     double maxAmplitudePct() const;
     double ratedTorqueNm() const;  ///< motor.rated_current × motor.torque_constant (NaN when unknown)
@@ -109,7 +109,7 @@ private:
     QSpinBox* m_points = nullptr;
     QLabel* m_validity = nullptr;
     QLabel* m_estimate = nullptr;
-    int m_planRequest = -1;  ///< the drive's planTest request under way (DriveController::planTest)
+    int m_planRequest = -1; ///< the drive's planTest request under way (DriveController::planTest)
     int m_generation = 0;
     int m_pendingGeneration = -1;
     bool m_planOk = false;

@@ -51,7 +51,10 @@ double FrfDriveInfo::ratedTorqueNm() const
                                 valueOr(values, "motor.torque_constant", kNaN));
 }
 
-double FrfDriveInfo::maxAmplitudePct() const { return limits ? limits->frfAmplitudeMaxPct : kNaN; }
+double FrfDriveInfo::maxAmplitudePct() const
+{
+    return limits ? limits->frfAmplitudeMaxPct : kNaN;
+}
 
 double FrfDriveInfo::traceRateHz() const
 {
@@ -290,8 +293,8 @@ void FrfConfigPage::updateEstimate()
     if (!w)
         return;
     if (!m_ctx.drive().isConnected()) {
-        m_estimate->setText(tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>")
-                                .arg(tr("not connected")));
+        m_estimate->setText(
+            tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>").arg(tr("not connected")));
         return;
     }
     m_estimate->setText(tr("Estimating the motion time…"));

@@ -109,7 +109,8 @@ std::string simRegisterMapJson()
     add("describe.reserved", 603, "u16", 1, "reserved, reads 0");
     add("describe.trace_rate_hz", 604, "f64", 4, "fastest velocity-loop trace rate (trace divider 1) [Hz]");
     add("describe.current_trace_rate_hz", 608, "f64", 4, "trace rate of a current step [Hz]");
-    add("limits.frf_amplitude_max_pct", 612, "f64", 4, "largest FRF excitation (multisine: its peak) [% of rated torque]");
+    add("limits.frf_amplitude_max_pct", 612, "f64", 4,
+        "largest FRF excitation (multisine: its peak) [% of rated torque]");
     add("limits.current_step_max_a", 616, "f64", 4, "largest q-axis current step [A]");
     add("limits.current_step_max_s", 620, "f64", 4, "longest current-step record [s]");
     add("limits.current_step_max_speed_rad_s", 624, "f64", 4, "motor speed a current step may reach [rad/s]");

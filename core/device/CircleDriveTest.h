@@ -25,7 +25,7 @@ inline constexpr double kCircleMaxDurationS = 600.0;          ///< positioning, 
 
 /// Limits a circle must respect; the embedded drive uses the defaults (those of axistune-simdrive).
 struct CircleLimits {
-    double travelWindowM = kTravelWindowM;  ///< |position| of either axis, programmed path and start point
+    double travelWindowM = kTravelWindowM;          ///< |position| of either axis, programmed path and start point
     double maxMotorSpeedRadS = kMaxMotorSpeedRadS;  ///< feed and positioning speed at the motor
 };
 

@@ -27,10 +27,10 @@ struct DriveIdentity {
 };
 
 enum class TestType {
-    Step,  ///< velocity step: amplitude [rad/s motor], duration [s]
-    Jog,   ///< position move: distance [axis units] at velocity [axis units/s], optional return
-    Hold,  ///< position hold for duration [s]
-    Frf,   ///< frequency response: torque injection in the closed velocity loop (FrfTest.h)
+    Step,   ///< velocity step: amplitude [rad/s motor], duration [s]
+    Jog,    ///< position move: distance [axis units] at velocity [axis units/s], optional return
+    Hold,   ///< position hold for duration [s]
+    Frf,    ///< frequency response: torque injection in the closed velocity loop (FrfTest.h)
     Circle, ///< ball-bar circle of two axes together (CircleDriveTest.h, docs/ballbar.md)
     /// q-axis current step (docs/simulator.md "Current-step test"): velocity and position loops open, the
     /// current command steps from 0 to `amplitude` [A] 10 % into the recording and holds; `durationS` is the
@@ -186,7 +186,7 @@ public:
 };
 
 struct ConnectionSettings {
-    std::string uri;  ///< "SCHEME:..." of a registered backend (DriveRegistry.h): sim:, modbus://, replay:
+    std::string uri; ///< "SCHEME:..." of a registered backend (DriveRegistry.h): sim:, modbus://, replay:
     std::uint64_t seed = 1;
 };
 

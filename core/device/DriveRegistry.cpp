@@ -79,7 +79,8 @@ Status checkSettings(const DriveBackend& backend, const SettingValues& values)
         }
         if (s.type == BackendSetting::Type::Choice &&
             std::find(s.choices.begin(), s.choices.end(), v) == s.choices.end())
-            return makeError(ErrorCode::BadInput, backend.label + ": " + s.label + " '" + v + "' is not one of the choices");
+            return makeError(ErrorCode::BadInput,
+                             backend.label + ": " + s.label + " '" + v + "' is not one of the choices");
     }
     return Status::success();
 }
@@ -106,19 +107,25 @@ Result<std::unique_ptr<Drive>> connect(const ConnectionSettings& settings)
 {
     if (const auto* b = findBackend(settings.uri))
         return b->open(settings);
-    return makeError(ErrorCode::BadInput, "connection '" + settings.uri + "': unknown scheme; expected " +
-                                              registeredUriForms());
+    return makeError(ErrorCode::BadInput,
+                     "connection '" + settings.uri + "': unknown scheme; expected " + registeredUriForms());
 }
 
 const char* testTypeName(TestType t)
 {
     switch (t) {
-    case TestType::Step: return "step";
-    case TestType::Jog: return "jog";
-    case TestType::Hold: return "hold";
-    case TestType::Frf: return "frf";
-    case TestType::Circle: return "circle";
-    case TestType::CurrentStep: return "current_step";
+    case TestType::Step:
+        return "step";
+    case TestType::Jog:
+        return "jog";
+    case TestType::Hold:
+        return "hold";
+    case TestType::Frf:
+        return "frf";
+    case TestType::Circle:
+        return "circle";
+    case TestType::CurrentStep:
+        return "current_step";
     }
     return "?";
 }
@@ -133,4 +140,4 @@ bool DriveCapabilities::offers(FrfMethod m) const
     return offers(TestType::Frf) && std::find(frfMethods.begin(), frfMethods.end(), m) != frfMethods.end();
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

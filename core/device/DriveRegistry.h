@@ -25,20 +25,20 @@ namespace axistune::device {
 /// text in the translation context "DriveRegistry" (docs/drive-seam.md "Translations").
 struct BackendSetting {
     enum class Type { Text, Integer, Choice, File };
-    std::string name;                 ///< key in the values given to DriveBackend::uriFromSettings
-    std::string label;                ///< "Machine preset"
+    std::string name;  ///< key in the values given to DriveBackend::uriFromSettings
+    std::string label; ///< "Machine preset"
     Type type = Type::Text;
-    std::string defaultValue;         ///< as text ("vmc", "502")
-    std::string unit;                 ///< "ms", or empty
-    std::vector<std::string> choices; ///< Type::Choice
+    std::string defaultValue;           ///< as text ("vmc", "502")
+    std::string unit;                   ///< "ms", or empty
+    std::vector<std::string> choices;   ///< Type::Choice
     long long minimum = 0, maximum = 0; ///< Type::Integer
-    bool required = false;            ///< an empty value is refused
-    std::string hint;                 ///< placeholder text or tool tip
+    bool required = false;              ///< an empty value is refused
+    std::string hint;                   ///< placeholder text or tool tip
 };
 
 /// A setting with its name, label, type, default and unit (the other members as they are).
-BackendSetting makeSetting(std::string name, std::string label, BackendSetting::Type type, std::string defaultValue = {},
-                           std::string unit = {});
+BackendSetting makeSetting(std::string name, std::string label, BackendSetting::Type type,
+                           std::string defaultValue = {}, std::string unit = {});
 
 using SettingValues = std::map<std::string, std::string>;
 
@@ -48,7 +48,7 @@ struct DriveBackend {
     std::string uriForm;     ///< "sim:PRESET[?model=PATH&axis=NAME]"
     std::string description; ///< one or two sentences for help texts
     std::vector<BackendSetting> settings;
-    bool usesSeed = false;   ///< ConnectionSettings::seed means something (the simulator's noise)
+    bool usesSeed = false; ///< ConnectionSettings::seed means something (the simulator's noise)
     /// The URI of a settings form (every setting present, defaults filled in); errors name the setting.
     std::function<Result<std::string>(const SettingValues&)> uriFromSettings;
     /// Opens the connection; errors name the URI and what is wrong with it.
@@ -70,4 +70,4 @@ Status checkSettings(const DriveBackend& backend, const SettingValues& values);
 /// The query of a URI ("a=1&b=2") as key → value; errors name the item that is not key=value.
 Result<SettingValues> parseUriQuery(const std::string& query);
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -12,19 +12,24 @@ DriveBackend modbusBackend()
     b.scheme = "modbus://";
     b.label = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Drive over Modbus TCP");
     b.uriForm = "modbus://HOST:PORT[?timeout_ms=N&map=FAMILY]";
-    b.description = "A drive speaking a register map of resources/drives/ over Modbus TCP (docs/modbus.md); "
-                    "axis i answers on unit id base + i of the map.";
-    BackendSetting host = makeSetting("host", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Host"), BackendSetting::Type::Text, "127.0.0.1");
+    b.description = AXISTUNE_TRANSLATE_NOOP(
+        "DriveRegistry", "A drive speaking a register map of resources/drives/ over Modbus TCP (docs/modbus.md); "
+                         "axis i answers on unit id base + i of the map.");
+    BackendSetting host =
+        makeSetting("host", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Host"), BackendSetting::Type::Text, "127.0.0.1");
     host.required = true;
     host.hint = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "host name or address of the drive");
-    BackendSetting port = makeSetting("port", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Port"), BackendSetting::Type::Integer, "502");
+    BackendSetting port =
+        makeSetting("port", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Port"), BackendSetting::Type::Integer, "502");
     port.minimum = 1;
     port.maximum = 65535;
     port.required = true;
-    BackendSetting timeout = makeSetting("timeout_ms", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Response timeout"), BackendSetting::Type::Integer, "1000", "ms");
+    BackendSetting timeout = makeSetting("timeout_ms", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Response timeout"),
+                                         BackendSetting::Type::Integer, "1000", "ms");
     timeout.minimum = 10;
     timeout.maximum = 60000;
-    BackendSetting map = makeSetting("map", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Register map"), BackendSetting::Type::Text, "axistune-sim");
+    BackendSetting map = makeSetting("map", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Register map"),
+                                     BackendSetting::Type::Text, "axistune-sim");
     map.hint = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "family of resources/drives/FAMILY.json");
     b.settings = {host, port, timeout, map};
     b.uriFromSettings = [b](const SettingValues& v) -> Result<std::string> {
@@ -42,4 +47,4 @@ DriveBackend modbusBackend()
     return b;
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

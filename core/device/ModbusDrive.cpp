@@ -520,8 +520,8 @@ Result<DriveCapabilities> ModbusDrive::capabilities(const std::string& axis)
         return r.error();
     auto at = [&](const char* f) { return &(*r)[static_cast<std::size_t>(m_map.field(f).address - lo)]; };
     DriveCapabilities c;
-    for (const auto t : {TestType::Step, TestType::Jog, TestType::Hold, TestType::Frf, TestType::Circle,
-                         TestType::CurrentStep}) {
+    for (const auto t :
+         {TestType::Step, TestType::Jog, TestType::Hold, TestType::Frf, TestType::Circle, TestType::CurrentStep}) {
         const int code = m_map.code("test_type", testTypeName(t));
         if (code >= 0 && code < 16 && (*at("describe.test_types") >> code & 1))
             c.testTypes.push_back(t);

@@ -47,7 +47,8 @@ Result<std::unique_ptr<Drive>> openSim(const ConnectionSettings& settings)
     if (q != std::string::npos) {
         auto parsed = parseUriQuery(rest.substr(q + 1));
         if (!parsed)
-            return fail(Error{ErrorCode::BadInput, parsed.error().detail + " (expected model=PATH, axis=NAME, fault=MODE)"});
+            return fail(
+                Error{ErrorCode::BadInput, parsed.error().detail + " (expected model=PATH, axis=NAME, fault=MODE)"});
         options = *parsed;
     }
     FaultInjection faults;
@@ -59,7 +60,8 @@ Result<std::unique_ptr<Drive>> openSim(const ConnectionSettings& settings)
             if (auto st = addFaultMode(faults, v); !st)
                 return fail(st.error());
             if (faults.delayMs > 0 || faults.illegalAddress || faults.driveFaultAfterS >= 0)
-                return fail(Error{ErrorCode::BadInput, "fault '" + v + "': the embedded drive injects drop-after:N only"});
+                return fail(
+                    Error{ErrorCode::BadInput, "fault '" + v + "': the embedded drive injects drop-after:N only"});
         }
     }
     if (options.count("axis") && !options.count("model"))
@@ -75,7 +77,7 @@ Result<std::unique_ptr<Drive>> openSim(const ConnectionSettings& settings)
     return std::unique_ptr<Drive>(std::move(d).value());
 }
 
-}  // namespace
+} // namespace
 
 DriveBackend simBackend()
 {
@@ -83,15 +85,19 @@ DriveBackend simBackend()
     b.scheme = "sim:";
     b.label = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Built-in simulated machine");
     b.uriForm = "sim:PRESET[?model=PATH&axis=NAME]";
-    b.description = "The embedded simulated drive on a machine preset (docs/simulator.md); model=PATH puts an "
-                    "identified rigid-body model in place of one axis's plant.";
+    b.description = AXISTUNE_TRANSLATE_NOOP(
+        "DriveRegistry", "The embedded simulated drive on a machine preset (docs/simulator.md); model=PATH puts an "
+                         "identified rigid-body model in place of one axis's plant.");
     b.usesSeed = true;
-    BackendSetting preset = makeSetting("preset", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Machine preset"), BackendSetting::Type::Choice, "vmc");
+    BackendSetting preset = makeSetting("preset", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Machine preset"),
+                                        BackendSetting::Type::Choice, "vmc");
     preset.choices = sim::presetNames();
     preset.required = true;
-    BackendSetting model = makeSetting("model", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Identified model (optional)"), BackendSetting::Type::File);
+    BackendSetting model = makeSetting("model", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Identified model (optional)"),
+                                       BackendSetting::Type::File);
     model.hint = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "result JSON of Identify from motion");
-    BackendSetting axis = makeSetting("axis", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Axis of the model"), BackendSetting::Type::Text);
+    BackendSetting axis =
+        makeSetting("axis", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Axis of the model"), BackendSetting::Type::Text);
     b.settings = {preset, model, axis};
     b.uriFromSettings = [b](const SettingValues& v) -> Result<std::string> {
         if (auto st = checkSettings(b, v); !st)
@@ -106,4 +112,4 @@ DriveBackend simBackend()
     return b;
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

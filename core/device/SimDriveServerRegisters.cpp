@@ -107,13 +107,14 @@ bool SimDriveServer::encodeDescription(const RegisterField& f, int ui, std::uint
     }
     if (n.rfind("limits.", 0) == 0) {
         const DriveLimits l = axisLimits(ui);
-        const std::pair<const char*, double> f64s[] = {{"limits.frf_amplitude_max_pct", l.frfAmplitudeMaxPct},
-                                                       {"limits.current_step_max_a", l.currentStepMaxA},
-                                                       {"limits.current_step_max_s", l.currentStepMaxS},
-                                                       {"limits.current_step_max_speed_rad_s", l.currentStepMaxSpeedRadS},
-                                                       {"limits.motor_speed_max_rad_s", l.motorSpeedMaxRadS},
-                                                       {"limits.test_duration_max_s", l.testDurationMaxS},
-                                                       {"limits.travel_window", l.travelWindow}};
+        const std::pair<const char*, double> f64s[] = {
+            {"limits.frf_amplitude_max_pct", l.frfAmplitudeMaxPct},
+            {"limits.current_step_max_a", l.currentStepMaxA},
+            {"limits.current_step_max_s", l.currentStepMaxS},
+            {"limits.current_step_max_speed_rad_s", l.currentStepMaxSpeedRadS},
+            {"limits.motor_speed_max_rad_s", l.motorSpeedMaxRadS},
+            {"limits.test_duration_max_s", l.testDurationMaxS},
+            {"limits.travel_window", l.travelWindow}};
         for (const auto& [key, v] : f64s) {
             if (n == key) {
                 encodeF64(v, o, buf);

@@ -170,7 +170,8 @@ DriveLimits SimDriveServer::axisLimits(int ui)
     DriveLimits l = m_drive->limits(ax.name).value();
     l.frfAmplitudeMaxPct = std::min(l.frfAmplitudeMaxPct, lim.amplitudeLimitPct);
     // The torque limit in % of rated torque as a current: pct/100 · rated current.
-    l.currentStepMaxA = std::min(l.currentStepMaxA, lim.amplitudeLimitPct / 100.0 * ax.sim->parameter("motor.rated_current"));
+    l.currentStepMaxA =
+        std::min(l.currentStepMaxA, lim.amplitudeLimitPct / 100.0 * ax.sim->parameter("motor.rated_current"));
     l.motorSpeedMaxRadS = std::min(l.motorSpeedMaxRadS, lim.speedLimitRadS);
     l.currentStepMaxSpeedRadS = std::min(l.currentStepMaxSpeedRadS, lim.speedLimitRadS);
     if (ax.kind == "linear")

@@ -152,7 +152,8 @@ Result<double> SimulatedDrive::checkMotion(const sim::AxisSimulator& sim, const 
         return request.durationS;
     case TestType::Jog: {
         if (!(request.velocity > 0.0) || !(request.acceleration > 0.0) || !std::isfinite(request.distance))
-            return makeError(ErrorCode::OutOfRange, "jog needs a positive velocity and acceleration and a finite distance");
+            return makeError(ErrorCode::OutOfRange,
+                             "jog needs a positive velocity and acceleration and a finite distance");
         if (!(request.jerk >= 0.0) || !std::isfinite(request.jerk))
             return makeError(ErrorCode::OutOfRange, "jog jerk must be finite and >= 0 (0: trapezoid)");
         // The velocity is in axis units: m/s on a linear axis (motor speed = v / R), rad/s on a rotary one.
@@ -161,7 +162,8 @@ Result<double> SimulatedDrive::checkMotion(const sim::AxisSimulator& sim, const 
         if (!(motorSpeed <= kMaxMotorSpeedRadS))
             return makeError(ErrorCode::OutOfRange,
                              "jog velocity " + model::formatNumber(request.velocity, 4) + (linear ? " m/s" : " rad/s") +
-                                 " means " + model::formatNumber(motorSpeed, 4) + " rad/s at the motor, above the limit of " +
+                                 " means " + model::formatNumber(motorSpeed, 4) +
+                                 " rad/s at the motor, above the limit of " +
                                  model::formatNumber(kMaxMotorSpeedRadS, 4) + " rad/s (6000 min^-1)");
         return jogProfile(sim, request).duration();
     }
@@ -406,7 +408,8 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     const double t0 = static_cast<double>(first) * h;
     if (plans->multisine) {
         auto shared = plans->multisine;
-        sim.setTorqueInjection([shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
+        sim.setTorqueInjection(
+            [shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
         m_multisinePlan = shared;
         m_clampsAtStart = sim.voltageClampCount();
     } else {
@@ -549,7 +552,8 @@ Result<SimulatedDrive::CurrentStepTiming> SimulatedDrive::planCurrentStep(const 
     c.preTicks = std::max<long long>(1, std::llround(0.1 * r.durationS / c.h));
     if (c.ticks < c.preTicks + 2) {
         return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
-                                                    " s refused: shorter than a few current periods (" + g(c.h) + " s)");
+                                                    " s refused: shorter than a few current periods (" + g(c.h) +
+                                                    " s)");
     }
     // With the velocity loop open the motor accelerates freely: k_t·|I|·t / J_m at the end of the record, with
     // the rotor inertia alone (a motor datum; the coupled load can only make it slower).

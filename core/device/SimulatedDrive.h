@@ -67,10 +67,10 @@ private:
     Result<TestStatus> pollCircle();
     void abortCircle(const std::string& why);
     struct CurrentStepTiming {
-        double h = 0.0;          ///< current-loop period [s]
-        long long ticks = 0;     ///< record length [current periods]
-        long long preTicks = 0;  ///< record before the step [current periods]
-        double lengthS = 0.0;    ///< record and hold [s]
+        double h = 0.0;         ///< current-loop period [s]
+        long long ticks = 0;    ///< record length [current periods]
+        long long preTicks = 0; ///< record before the step [current periods]
+        double lengthS = 0.0;   ///< record and hold [s]
     };
     Result<CurrentStepTiming> planCurrentStep(const sim::AxisSimulator& sim, const TestRequest& request) const;
     /// Checks and installs a current step (TestType::CurrentStep); returns the test length [s] (record and hold).

@@ -141,7 +141,7 @@ double circleLengthS(const sim::AxisSimulator& x, const sim::AxisSimulator& y, c
     return positioningS(x, y, path, r) + static_cast<double>(sim::CircleRun::sampleCount(path, tp)) * tp;
 }
 
-}  // namespace
+} // namespace
 
 Result<TestPlan> SimulatedDrive::planCircle(const TestRequest& request)
 {

@@ -27,4 +27,4 @@ inline constexpr double kMaxTestDurationS = 600.0;
 /// Travel window of jog targets and circles on a linear axis [m] (the simulated table's travel).
 inline constexpr double kTravelWindowM = 0.5;
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -11,17 +11,17 @@
 #include "core/device/DriveRegistry.h"
 #include "core/io/CaptureCsv.h"
 #include "core/model/Number.h"
-#include "tests/app/cli/SimDriveProcess.h"
-
-#include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <iostream>
 #include <limits>
 #include <memory>
+
+#include "tests/app/cli/SimDriveProcess.h"
 
 namespace axistune::device {
 namespace {
@@ -29,7 +29,10 @@ namespace {
 constexpr std::uint64_t kSeed = 7;
 using Clock = std::chrono::steady_clock;
 
-std::string errorText(const Error& e) { return e.detail; }
+std::string errorText(const Error& e)
+{
+    return e.detail;
+}
 
 /// A capture of a 0.2 s velocity step recorded from sim:vmc, written as `axistune-cli capture` does.
 std::string recordedCapture()
@@ -174,7 +177,7 @@ protected:
             break;
         }
         if (t == TestType::Step && GetParam() == "replay")
-            return r;  // the recorded test: whatever was asked
+            return r; // the recorded test: whatever was asked
         // Halve an amplitude the drive would refuse (a current step's speed limit depends on the motor).
         for (int i = 0; i < 6; ++i) {
             if (t == TestType::Circle) {
@@ -217,7 +220,7 @@ TEST_P(DriveConformance, Identity)
     if (GetParam() != "replay") {
         EXPECT_EQ(m_identity.machine, "vmc");
     } else {
-        EXPECT_EQ(m_identity.axes, std::vector<std::string>{"X"});  // the recorded axis only
+        EXPECT_EQ(m_identity.axes, std::vector<std::string>{"X"}); // the recorded axis only
     }
     // An unknown axis is refused by name.
     auto none = m_drive->parameterMetadata("no-such-axis");
@@ -318,7 +321,7 @@ TEST_P(DriveConformance, WriteAndReadBack)
     ASSERT_TRUE(p.has_value()) << "no writable parameter on axis " << m_axis;
     const std::vector<std::string> key{p->key};
     const double old = m_drive->readParameters(m_axis, key).value().at(p->key);
-    const double wanted = old + 0.1 * (p->maxSi - old);  // inside the range, not the value it had
+    const double wanted = old + 0.1 * (p->maxSi - old); // inside the range, not the value it had
     ASSERT_NE(wanted, old);
     auto st = m_drive->writeParameters(m_axis, {{p->key, wanted}});
     ASSERT_TRUE(st.ok()) << errorText(st.error());
@@ -372,7 +375,8 @@ TEST_P(DriveConformance, EveryAdvertisedTestRunsToCompletionAsPlanned)
     }
     ASSERT_FALSE(tests.empty());
     for (const auto& [t, method] : tests) {
-        const std::string what = std::string(testTypeName(t)) + (t == TestType::Frf ? std::string(" ") + frfMethodName(method) : "");
+        const std::string what =
+            std::string(testTypeName(t)) + (t == TestType::Frf ? std::string(" ") + frfMethodName(method) : "");
         SCOPED_TRACE(what);
         auto r = requestFor(t, method);
         ASSERT_TRUE(r.has_value()) << "no request within the drive's limits for " << what;
@@ -399,7 +403,8 @@ TEST_P(DriveConformance, EveryAdvertisedTestRunsToCompletionAsPlanned)
         // The motion time the run reports equals the plan's: the drive runs in whole current-loop periods, so
         // they agree within one current period (1 / currentTraceRateHz; 1 / traceRateHz where the drive
         // has no current trace).
-        const double tick = m_caps.currentTraceRateHz > 0.0 ? 1.0 / m_caps.currentTraceRateHz : 1.0 / m_caps.traceRateHz;
+        const double tick =
+            m_caps.currentTraceRateHz > 0.0 ? 1.0 / m_caps.currentTraceRateHz : 1.0 / m_caps.traceRateHz;
         double reported = std::numeric_limits<double>::quiet_NaN();
         if (t == TestType::Frf && m_caps.evaluatesFrf) {
             auto frf = m_drive->readFrequencyResponse();
@@ -420,8 +425,8 @@ TEST_P(DriveConformance, AbortMidTestRestoresTheParameters)
     const TestType t = m_caps.offers(TestType::Hold) ? TestType::Hold : m_caps.testTypes.front();
     TestRequest r = requestFor(t).value();
     if (t == TestType::Hold) {
-        r.durationS = 20.0;   // long enough to be running when the abort comes
-        r.traceDivider = 2;   // a parameter the test changes (trace.divider) and the abort must restore
+        r.durationS = 20.0; // long enough to be running when the abort comes
+        r.traceDivider = 2; // a parameter the test changes (trace.divider) and the abort must restore
     }
     ASSERT_TRUE(m_drive->startTest(r).ok());
     auto s = m_drive->pollTest();
@@ -448,11 +453,11 @@ TEST_P(DriveConformance, LostConnectionIsReportedWithinTheTimeout)
         ASSERT_TRUE(d.ok()) << errorText(d.error());
         auto r = requestFor(TestType::Hold).value();
         r.durationS = 20.0;
-        ASSERT_TRUE((*d)->startTest(r).ok());   // call 1
+        ASSERT_TRUE((*d)->startTest(r).ok()); // call 1
         for (int call = 2; call <= 4; ++call)
             ASSERT_TRUE((*d)->pollTest().ok()) << call;
         const auto t0 = Clock::now();
-        auto s = (*d)->pollTest();              // call 5
+        auto s = (*d)->pollTest(); // call 5
         ASSERT_FALSE(s.ok());
         EXPECT_EQ(s.error().code, ErrorCode::Device);
         EXPECT_NE(s.error().detail.find("connection lost"), std::string::npos) << s.error().detail;
@@ -540,5 +545,5 @@ TEST(DriveConformanceCross, SameFrfFromSimAndModbus)
     }
 }
 
-}  // namespace
-}  // namespace axistune::device
+} // namespace
+} // namespace axistune::device

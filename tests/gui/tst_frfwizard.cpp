@@ -241,7 +241,7 @@ private slots:
         const double maxPct = s->driveInfo().maxAmplitudePct();
         QVERIFY(std::isfinite(maxPct) && maxPct > 0.0);
         s->amplitude()->setValue(maxPct + 1.0);
-        QCOMPARE(s->amplitude()->value(), maxPct + 1.0);  // not clamped ...
+        QCOMPARE(s->amplitude()->value(), maxPct + 1.0); // not clamped ...
         s->confirmation()->setChecked(true);
         QVERIFY(!w.button(QWizard::NextButton)->isEnabled());  // ... but refused
         QVERIFY(s->findChild<QLabel*>("frfAmplitudeText")->text().contains("Refused"));
@@ -260,7 +260,7 @@ private slots:
         auto* s = w.safetyPage();
         s->confirmation()->setChecked(true);
         QVERIFY(waitUntil([&] { return w.button(QWizard::NextButton)->isEnabled(); }, 10000));
-        QCOMPARE(s->driveInfo().maxAmplitudePct(), 20.0);  // the server's --amplitude-limit, exact over f64
+        QCOMPARE(s->driveInfo().maxAmplitudePct(), 20.0); // the server's --amplitude-limit, exact over f64
         s->amplitude()->setValue(21.0);
         s->confirmation()->setChecked(true);
         QVERIFY(!w.button(QWizard::NextButton)->isEnabled());

@@ -29,8 +29,8 @@ Result<TestType> recordedTest(const std::string& name)
         return TestType::CurrentStep;
     if (name == "circle")
         return TestType::Circle;
-    return makeError(ErrorCode::BadInput, "metadata test=" + name +
-                                              " cannot be replayed (step, jog, hold, current-step or circle)");
+    return makeError(ErrorCode::BadInput,
+                     "metadata test=" + name + " cannot be replayed (step, jog, hold, current-step or circle)");
 }
 
 /// The SI unit of a metadata key from its suffix ("fs_Hz" → Hz, "current_period_s" → s).
@@ -46,7 +46,7 @@ std::string unitOfKey(const std::string& key)
 
 constexpr const char* kParameterPrefix = "capture.";
 
-}  // namespace
+} // namespace
 
 Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
 {
@@ -60,8 +60,9 @@ Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
     auto need = [&](const char* key) -> Result<std::string> {
         const auto it = md.find(key);
         if (it == md.end() || it->second.empty())
-            return makeError(ErrorCode::BadInput, path + ": metadata '" + key + "' is missing: a replayed capture needs "
-                                                                               "test, axis and fs_Hz");
+            return makeError(ErrorCode::BadInput, path + ": metadata '" + key +
+                                                      "' is missing: a replayed capture needs "
+                                                      "test, axis and fs_Hz");
         return it->second;
     };
     auto test = need("test");
@@ -91,13 +92,16 @@ Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
     return d;
 }
 
-double ReplayDrive::recordS() const { return static_cast<double>(m_capture.size()) / m_fsHz; }
+double ReplayDrive::recordS() const
+{
+    return static_cast<double>(m_capture.size()) / m_fsHz;
+}
 
 Status ReplayDrive::checkAxis(const std::string& axis) const
 {
     if (axis != m_axis)
-        return makeError(ErrorCode::NotFound, "no axis '" + axis + "' in the replayed capture " + m_path + " (axis: " +
-                                                  m_axis + ")");
+        return makeError(ErrorCode::NotFound,
+                         "no axis '" + axis + "' in the replayed capture " + m_path + " (axis: " + m_axis + ")");
     return Status::success();
 }
 
@@ -114,8 +118,8 @@ Status ReplayDrive::checkRequest(const TestRequest& request) const
 Result<DriveIdentity> ReplayDrive::identify()
 {
     const auto it = m_capture.metadata.find("machine");
-    return DriveIdentity{"AxisTune", "replay", AXISTUNE_VERSION,
-                         it == m_capture.metadata.end() ? m_path : it->second, {m_axis}};
+    return DriveIdentity{
+        "AxisTune", "replay", AXISTUNE_VERSION, it == m_capture.metadata.end() ? m_path : it->second, {m_axis}};
 }
 
 Result<std::vector<model::ParameterMeta>> ReplayDrive::parameterMetadata(const std::string& axis)
@@ -126,7 +130,7 @@ Result<std::vector<model::ParameterMeta>> ReplayDrive::parameterMetadata(const s
     for (const auto& [k, v] : m_capture.metadata) {
         auto x = model::parseNumber(v);
         if (!x || !std::isfinite(*x))
-            continue;  // text metadata (machine, connection) is in identify()
+            continue; // text metadata (machine, connection) is in identify()
         model::ParameterMeta m;
         m.key = kParameterPrefix + k;
         m.label = "Recorded " + k;
@@ -154,7 +158,8 @@ Result<model::ParameterValues> ReplayDrive::readParameters(const std::string& ax
     for (const auto& k : keys) {
         const auto it = out.find(k);
         if (it == out.end())
-            return makeError(ErrorCode::NotFound, "axis " + axis + ": unknown parameter '" + k + "' (replay " + m_path + ")");
+            return makeError(ErrorCode::NotFound,
+                             "axis " + axis + ": unknown parameter '" + k + "' (replay " + m_path + ")");
         some[k] = it->second;
     }
     return some;
@@ -246,9 +251,11 @@ DriveBackend replayBackend()
     b.scheme = kScheme;
     b.label = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Replay of a recorded capture");
     b.uriForm = "replay:FILE.csv";
-    b.description = "Plays back a capture CSV of `axistune-cli capture` as a drive: only the recorded test on the "
-                    "recorded axis, parameters read-only (docs/drive-seam.md).";
-    BackendSetting file = makeSetting("file", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Capture file"), BackendSetting::Type::File);
+    b.description = AXISTUNE_TRANSLATE_NOOP(
+        "DriveRegistry", "Plays back a capture CSV of `axistune-cli capture` as a drive: only the recorded test on the "
+                         "recorded axis, parameters read-only (docs/drive-seam.md).");
+    BackendSetting file =
+        makeSetting("file", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Capture file"), BackendSetting::Type::File);
     file.required = true;
     file.hint = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "capture CSV with test, axis and fs_Hz metadata");
     b.settings = {file};
@@ -269,4 +276,4 @@ DriveBackend replayBackend()
     return b;
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

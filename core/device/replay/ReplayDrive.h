@@ -49,11 +49,11 @@ private:
     std::string m_axis;
     TestType m_test = TestType::Step;
     double m_fsHz = 0.0;
-    double m_motionS = 0.0;   ///< recorded motion time (metadata motion_time_s, else the record's length)
+    double m_motionS = 0.0; ///< recorded motion time (metadata motion_time_s, else the record's length)
     double m_slice = 0.05;
     double m_played = 0.0;
     TestStatus m_status;
     bool m_haveTrace = false;
 };
 
-}  // namespace axistune::device
+} // namespace axistune::device

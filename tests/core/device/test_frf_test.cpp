@@ -306,7 +306,7 @@ TEST(SimulatedDriveFrf, AmplitudeAboveTheLimitIsRefusedAndAbortRestores)
     TestRequest r;
     r.axis = "A";
     r.type = TestType::Frf;
-    r.amplitudePct = drive->limits(r.axis).value().frfAmplitudeMaxPct + 1.0;  // the drive's own limit
+    r.amplitudePct = drive->limits(r.axis).value().frfAmplitudeMaxPct + 1.0; // the drive's own limit
     auto st = drive->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);

@@ -578,3 +578,93 @@ TEST(ModbusDrive, SuppressionFilterAndJerkLimitedJogAreTheEmbeddedOnes)
     for (const char* name : {"position_cmd_rad", "motor_pos_rad", "table_pos_rad"})
         EXPECT_EQ(tr->channel(name)->data, tl->channel(name)->data) << name;
 }
+
+namespace axistune::device {
+namespace {
+
+// The drive describes itself over Modbus (docs/modbus.md "Capabilities, limits and plans"): the limits
+// are the server's own (its safety limits narrow the embedded drive's), read from registers, not the
+// client's copy of the simulator's constants.
+TEST(ModbusDescribe, LimitsAreTheServersOwn)
+{
+    auto o = options("vmc");
+    o.safety.amplitudeLimitPct = 20.0;
+    o.safety.speedLimitRadS = 300.0;
+    o.safety.travelLimit = 0.25;
+    devtest::ServerThread server(o);
+    auto d = open(server.uri());
+    ASSERT_TRUE(d);
+    auto local = connect({"sim:vmc", 7});
+    ASSERT_TRUE(local.ok());
+    const auto embedded = (*local)->limits("X").value();
+    auto lim = d->limits("X");
+    ASSERT_TRUE(lim.ok()) << lim.error().detail;
+    EXPECT_EQ(lim->frfAmplitudeMaxPct, 20.0); // below the embedded drive's
+    EXPECT_EQ(lim->motorSpeedMaxRadS, 300.0);
+    EXPECT_EQ(lim->travelWindow, 0.25);
+    // 20 % of the rated torque as a current is 20 % of the rated current (torque = k_t · I).
+    const double ratedA =
+        d->readParameters("X", std::vector<std::string>{"motor.rated_current"}).value().at("motor.rated_current");
+    EXPECT_NEAR(lim->currentStepMaxA, std::min(embedded.currentStepMaxA, 0.2 * ratedA),
+                1e-6 * ratedA); // float32 rating
+    EXPECT_EQ(lim->currentStepMaxS, embedded.currentStepMaxS);
+    EXPECT_EQ(lim->testDurationMaxS, embedded.testDurationMaxS);
+    auto caps = d->capabilities("X");
+    ASSERT_TRUE(caps.ok()) << caps.error().detail;
+    EXPECT_EQ(caps->testTypes, (*local)->capabilities("X")->testTypes);
+    EXPECT_EQ(caps->frfMethods.size(), 4u);
+    EXPECT_TRUE(caps->evaluatesFrf && caps->writesParameters && caps->hasLink);
+    EXPECT_EQ(caps->traceRateHz, (*local)->capabilities("X")->traceRateHz);
+    // A plan beyond the server's limit is refused with the server's words; within it, the plan is the
+    // embedded drive's plan of the same request (the server asks its embedded drive).
+    TestRequest r;
+    r.axis = "X";
+    r.type = TestType::Frf;
+    r.fminHz = 50.0;
+    r.fmaxHz = 400.0;
+    r.points = 6;
+    r.amplitudePct = 30.0;
+    auto refused = d->planTest(r);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().code, ErrorCode::OutOfRange);
+    EXPECT_NE(refused.error().detail.find("above the drive's limit 20 %"), std::string::npos) << refused.error().detail;
+    r.amplitudePct = 5.0;
+    auto plan = d->planTest(r);
+    ASSERT_TRUE(plan.ok()) << plan.error().detail;
+    auto same = (*local)->planTest(r);
+    ASSERT_TRUE(same.ok());
+    EXPECT_EQ(plan->motionTimeS, same->motionTimeS); // f64 on the wire
+    EXPECT_EQ(plan->recordSamples, same->recordSamples);
+    EXPECT_EQ(plan->traceRateHz, same->traceRateHz);
+    // Planning moved nothing: the drive is idle and takes the test.
+    EXPECT_EQ(d->pollTest()->state, TestState::Idle);
+}
+
+TEST(ModbusDescribe, AMapWithoutTheDescriptionIsReportedByField)
+{
+    devtest::ServerThread server(options("vmc"));
+    auto uri = parseModbusUri(server.uri());
+    ASSERT_TRUE(uri.ok());
+    auto map = loadRegisterMap("axistune-sim");
+    ASSERT_TRUE(map.ok());
+    map->fields.erase("limits.travel_window");
+    map->fields.erase("describe.flags");
+    map->enums["command"].erase("plan_test");
+    auto d = ModbusDrive::open(*uri, *map);
+    ASSERT_TRUE(d.ok()) << d.error().detail;
+    auto caps = (*d)->capabilities("X");
+    ASSERT_FALSE(caps.ok());
+    EXPECT_NE(caps.error().detail.find("has no field describe.flags"), std::string::npos) << caps.error().detail;
+    auto lim = (*d)->limits("X");
+    ASSERT_FALSE(lim.ok());
+    EXPECT_NE(lim.error().detail.find("has no field limits.travel_window"), std::string::npos);
+    TestRequest r;
+    r.axis = "X";
+    r.type = TestType::Hold;
+    auto plan = (*d)->planTest(r);
+    ASSERT_FALSE(plan.ok());
+    EXPECT_NE(plan.error().detail.find("has no command plan_test"), std::string::npos);
+}
+
+} // namespace
+} // namespace axistune::device

@@ -153,7 +153,7 @@ TEST(SimulatedDriveMultisine, PeakAboveTheLimitIsRefusedAndAbortRestores)
 {
     auto drive = makeDrive("dd-table");
     TestRequest r = multisineRequest();
-    r.amplitudePct = drive->limits(r.axis).value().frfAmplitudeMaxPct + 1.0;  // the drive's own limit
+    r.amplitudePct = drive->limits(r.axis).value().frfAmplitudeMaxPct + 1.0; // the drive's own limit
     auto st = drive->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
