@@ -189,16 +189,6 @@
 </context>
 <context>
     <name>FrfConfigPage</name>
-    <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="54" />
-        <source>The drive's ratings or trace rate are unknown.</source>
-        <translation>サーボアンプの定格またはトレース周期が不明です。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="61" />
-        <source>The current-loop period is unknown.</source>
-        <translation>電流ループ周期が不明です。</translation>
-    </message>
 </context>
 <context>
     <name>FrfResultPage</name>
@@ -1842,13 +1832,25 @@
     </message>
     <message>
         <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="155" />
-        <source>Default %1 A: at most %2 % of I_max, and the voltage before the current can respond, (α k_p + (d + 1)·k_i T)·i* = %3 V with d dead-time periods, stays within %4 % of V_max (%5 V), so no voltage clamp acts and the inductance falls by only δ·i*/I_max = %6 %. The drive refuses more than 50 % of I_max, a recording beyond 50 ms and a step that would take the motor beyond 20 rad/s.</source>
-        <translation>既定値 %1 A: I_max の %2 % 以下で、電流が応答する前の電圧 (α k_p + (d + 1)·k_i T)·i* = %3 V (d はむだ時間の周期数) が V_max (%5 V) の %4 % 以内に収まるため、電圧クランプは働かず、インダクタンスの低下は δ·i*/I_max = %6 % にとどまります。サーボアンプは I_max の 50 % を超えるステップ、50 ms を超える記録、モータが 20 rad/s を超えるステップを拒否します。</translation>
+        <source>Default %1 A: at most %2 % of I_max, and the voltage before the current can respond, (α k_p + (d + 1)·k_i T)·i* = %3 V with d dead-time periods, stays within %4 % of V_max (%5 V), so no voltage clamp acts and the inductance falls by only δ·i*/I_max = %6 %.</source>
+        <translation>既定値 %1 A: I_max の %2 % 以下で、電流が応答する前の電圧 (α k_p + (d + 1)·k_i T)·i* = %3 V (d はむだ時間の周期数) が V_max (%5 V) の %4 % 以内に収まるため、電圧クランプは働かず、インダクタンスの低下は δ·i*/I_max = %6 % にとどまります。</translation>
     </message>
     <message>
         <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="176" />
         <source>A q-axis current step of %1 A recorded for %2 ms, twice: now with the gains the drive holds, and after applying the proposed ones. The velocity and position loops are open while it lasts: the motor accelerates freely, then the axis holds its position again.</source>
         <translation>q 軸電流を %1 A ステップさせて %2 ms 記録します。これを 2 回、現在のサーボアンプのゲインで今、提案したゲインを適用した後にもう一度行います。その間は速度ループと位置ループを開放するため、モータは自由に加速し、その後軸は再び位置を保持します。</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s limits…</source>
+        <translation>サーボアンプの上限を読み取り中…</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;The drive does not state its current-step limits: %1&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;サーボアンプが電流ステップの上限を示していません: %1&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>The drive refuses a step above %1 A, a recording beyond %2 ms and a step that would take the motor beyond %3 rad/s.</source>
+        <translation>サーボアンプは %1 A を超えるステップ、%2 ms を超える記録、モータが %3 rad/s を超えるステップを拒否します。</translation>
     </message>
 </context>
 <context>

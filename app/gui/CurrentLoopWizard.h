@@ -12,6 +12,7 @@
 // difference; the step before for comparison) → save (session kind "current-loop", the measured steps as
 // captures "current_step" and "current_step_before").
 
+#include "app/gui/DriveController.h"
 #include "app/gui/TuningWizard.h"
 #include "core/model/Capture.h"
 #include "core/tuning/CurrentLoop.h"
@@ -192,6 +193,11 @@ private:
     QDoubleSpinBox* m_amp = nullptr;
     QDoubleSpinBox* m_record = nullptr;
     QLabel* m_measureNote = nullptr;
+    /// The drive's limits of a current step (DriveController::describeAxis), read when the page opens.
+    void showLimits(const DriveReply& reply);
+    int m_limitsRequest = -1;
+    std::optional<device::DriveLimits> m_limits;
+    QString m_noteDefault;
 };
 
 /// Read back after apply and the prediction with the read-back gains.

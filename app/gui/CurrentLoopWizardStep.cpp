@@ -97,7 +97,7 @@ CurrentLoopStepPage::CurrentLoopStepPage(AppContext& ctx, CurrentLoopData& share
     form->addRow(tr("Step of the q-axis current command:"), m_amp);
     m_record = new QDoubleSpinBox(box);
     m_record->setObjectName("clStepRecord");
-    m_record->setRange(0.1, 50.0);
+    m_record->setRange(0.1, 1000.0);  // narrowed to the drive's limit when it is read (showLimits)
     m_record->setDecimals(2);
     m_record->setSuffix(" ms");
     form->addRow(tr("Recording (the step comes 10 % in):"), m_record);
@@ -109,6 +109,10 @@ CurrentLoopStepPage::CurrentLoopStepPage(AppContext& ctx, CurrentLoopData& share
     connect(m_measure, &QCheckBox::toggled, this, [this](bool on) {
         m_amp->setEnabled(on);
         m_record->setEnabled(on);
+    });
+    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+        if (r.id == m_limitsRequest)
+            showLimits(r);
     });
 }
 
@@ -149,20 +153,47 @@ void CurrentLoopStepPage::initializePage()
         m_ctx.setProposed(m_d.axis, v);
         const double amp = defaultStepAmplitude(m_d);
         m_amp->setValue(amp);
-        m_record->setValue(std::min(50.0, std::ceil(predictionLength(*c, m_d.drivePeriodS) / 0.9 * 1e4) / 10.0));
+        m_record->setValue(std::ceil(predictionLength(*c, m_d.drivePeriodS) / 0.9 * 1e4) / 10.0);
         const double first = earlyVoltagePerAmp(m_d, *c) * amp;
-        m_measureNote->setText(
+        m_noteDefault =
             tr("Default %1 A: at most %2 % of I_max, and the voltage before the current can respond, (α k_p + "
                "(d + 1)·k_i T)·i* = %3 V with d dead-time periods, stays within %4 % of V_max (%5 V), so no voltage "
-               "clamp acts and the inductance falls by only δ·i*/I_max = %6 %. The drive refuses more than 50 % of "
-               "I_max, a recording beyond 50 ms and a step that would take the motor beyond 20 rad/s.")
+               "clamp acts and the inductance falls by only δ·i*/I_max = %6 %.")
                 .arg(amp, 0, 'f', 1)
                 .arg(kStepCurrentShare * 100.0, 0, 'f', 0)
                 .arg(first, 0, 'f', 1)
                 .arg(kStepVoltageShare * 100.0, 0, 'f', 0)
                 .arg(m_d.motor.maxVoltageV, 0, 'f', 1)
-                .arg(m_d.motor.inductanceDropAtMax * amp / m_d.motor.maxCurrentA * 100.0, 0, 'f', 2));
+                .arg(m_d.motor.inductanceDropAtMax * amp / m_d.motor.maxCurrentA * 100.0, 0, 'f', 2);
+        // The current step's limits are the drive's own (Drive::limits, docs/drive-seam.md).
+        m_limits.reset();
+        m_measureNote->setText(m_noteDefault + " " + tr("Reading the drive's limits…"));
+        m_limitsRequest = m_ctx.drive().describeAxis(m_d.axis);
     }
+}
+
+void CurrentLoopStepPage::showLimits(const DriveReply& r)
+{
+    m_limitsRequest = -1;
+    if (!r.ok || !r.limits) {
+        m_measureNote->setText(m_noteDefault + " " +
+                               tr("<span style='color:#b00000'>The drive does not state its current-step limits: %1</span>")
+                                   .arg(r.error.toHtmlEscaped()));
+        m_measure->setChecked(false);
+        m_measure->setEnabled(false);
+        return;
+    }
+    m_limits = r.limits;
+    m_measure->setEnabled(true);
+    // The spin boxes end at the drive's limits; a default beyond them is brought inside.
+    m_amp->setMaximum(m_limits->currentStepMaxA);
+    m_record->setMaximum(m_limits->currentStepMaxS * 1e3);
+    m_measureNote->setText(m_noteDefault + " " +
+                           tr("The drive refuses a step above %1 A, a recording beyond %2 ms and a step that would take "
+                              "the motor beyond %3 rad/s.")
+                               .arg(m_limits->currentStepMaxA, 0, 'g', 4)
+                               .arg(m_limits->currentStepMaxS * 1e3, 0, 'g', 4)
+                               .arg(m_limits->currentStepMaxSpeedRadS, 0, 'g', 4));
 }
 
 bool CurrentLoopStepPage::validatePage()

@@ -61,6 +61,9 @@ private:
     /// Fails when an injected fault has dropped the link (setFaults).
     Status checkLink();
     Result<TestPlan> planCircle(const TestRequest& request);
+    /// The two axes of a circle request and its path, after checkCircleRequest (SimulatedDriveCircle.cpp).
+    struct CheckedCircle;
+    Result<CheckedCircle> checkCircle(const TestRequest& request);
     // The circle test of two axes (SimulatedDriveCircle.cpp).
     struct CircleState;
     Status startCircle(const TestRequest& request);

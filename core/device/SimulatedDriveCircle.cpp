@@ -143,7 +143,13 @@ double circleLengthS(const sim::AxisSimulator& x, const sim::AxisSimulator& y, c
 
 } // namespace
 
-Result<TestPlan> SimulatedDrive::planCircle(const TestRequest& request)
+struct SimulatedDrive::CheckedCircle {
+    sim::AxisSimulator* x = nullptr;
+    sim::AxisSimulator* y = nullptr;
+    sim::CirclePath path;
+};
+
+Result<SimulatedDrive::CheckedCircle> SimulatedDrive::checkCircle(const TestRequest& request)
 {
     auto x = axisSim(request.axis);
     if (!x)
@@ -158,31 +164,31 @@ Result<TestPlan> SimulatedDrive::planCircle(const TestRequest& request)
     auto path = sim::CirclePath::plan(circleOptionsOf(request));
     if (!path)
         return path.error();
+    return CheckedCircle{*x, *y, *path};
+}
+
+Result<TestPlan> SimulatedDrive::planCircle(const TestRequest& request)
+{
+    auto c = checkCircle(request);
+    if (!c)
+        return c.error();
+    const double tp = c->x->parameter("position.period");
     TestPlan p;
-    p.motionTimeS = circleLengthS(**x, **y, *path, request);
-    p.traceRateHz = 1.0 / (*x)->parameter("position.period");
-    p.recordSamples = sim::CircleRun::sampleCount(*path, (*x)->parameter("position.period"));
+    p.motionTimeS = circleLengthS(*c->x, *c->y, c->path, request);
+    p.traceRateHz = 1.0 / tp;
+    p.recordSamples = sim::CircleRun::sampleCount(c->path, tp);
     return p;
 }
 
 Status SimulatedDrive::startCircle(const TestRequest& request)
 {
-    auto x = axisSim(request.axis);
-    if (!x)
-        return x.error();
-    if (request.secondAxis.empty())
-        return makeError(ErrorCode::BadInput, "circle test: the second plane axis is not named");
-    auto y = axisSim(request.secondAxis);
-    if (!y)
-        return y.error();
-    if (auto st = checkCircleRequest(request, **x, **y); !st)
-        return st;
-    auto path = sim::CirclePath::plan(circleOptionsOf(request));
-    if (!path)
-        return path.error();
+    auto checked = checkCircle(request);
+    if (!checked)
+        return checked.error();
+    const sim::CirclePath* path = &checked->path;
     auto c = std::make_shared<CircleState>();
-    c->x = *x;
-    c->y = *y;
+    c->x = checked->x;
+    c->y = checked->y;
     c->backupX = c->x->parameters();
     c->backupY = c->y->parameters();
     c->path = *path;
