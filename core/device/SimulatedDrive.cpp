@@ -463,7 +463,7 @@ Result<DriveCapabilities> SimulatedDrive::capabilities(const std::string& axis)
     DriveCapabilities c;
     c.testTypes = {TestType::Step, TestType::Jog, TestType::Hold, TestType::Frf, TestType::CurrentStep};
     if ((*s)->kind() == sim::AxisKind::Linear && m_axes.size() > 1)
-        c.testTypes.push_back(TestType::Circle);
+        c.testTypes.insert(c.testTypes.end() - 1, TestType::Circle);  // in the order of TestType
     c.frfMethods = {FrfMethod::MultiSweep, FrfMethod::Conventional, FrfMethod::Prbs, FrfMethod::Multisine};
     c.traceRateHz = 1.0 / (*s)->velocityPeriod();
     c.currentTraceRateHz = 1.0 / (*s)->currentPeriod();

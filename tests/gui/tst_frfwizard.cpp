@@ -269,7 +269,7 @@ private slots:
         s->confirmation()->setChecked(true);
         QVERIFY(waitUntil([&] { return w.button(QWizard::NextButton)->isEnabled(); }, 10000));
         w.next();
-        auto* config = w.findChild<FrfConfigPage*>();
+        auto* config = w.findChild<gui::FrfConfigPage*>();
         QVERIFY(config);
         QVERIFY(waitUntil([&] { return std::isfinite(config->estimatedMotionS()) && config->isComplete(); }, 10000));
         // The same request planned by the drive directly: the wizard shows exactly that number.

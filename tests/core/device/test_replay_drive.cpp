@@ -101,13 +101,15 @@ TEST(ReplayDrive, RefusesWhatItCannotReplay)
     ASSERT_FALSE(w.ok());
     EXPECT_NE(w.error().detail.find("'capture.fs_Hz' is read-only"), std::string::npos) << w.error().detail;
     EXPECT_FALSE((*d)->readFrequencyResponse().ok());
-    // Abort mid-replay.
+    // Abort mid-replay (0.25 s recorded: five polls).
+    auto longer = connect({"replay:" + stepCapture(), 1});
+    ASSERT_TRUE(longer.ok());
     r.axis = "X";
-    ASSERT_TRUE((*d)->startTest(r).ok());
-    ASSERT_EQ((*d)->pollTest()->state, TestState::Running);
-    ASSERT_TRUE((*d)->abortTest().ok());
-    EXPECT_EQ((*d)->pollTest()->state, TestState::Aborted);
-    EXPECT_FALSE((*d)->readTrace().ok());
+    ASSERT_TRUE((*longer)->startTest(r).ok());
+    ASSERT_EQ((*longer)->pollTest()->state, TestState::Running);
+    ASSERT_TRUE((*longer)->abortTest().ok());
+    EXPECT_EQ((*longer)->pollTest()->state, TestState::Aborted);
+    EXPECT_FALSE((*longer)->readTrace().ok());
 }
 
 TEST(ReplayDrive, ABadCaptureIsNamedWithItsKey)
