@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QRadioButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTranslator>
@@ -29,6 +30,7 @@ private slots:
     void initTestCase()
     {
         QCoreApplication::setOrganizationName("axistune-test-connect");
+        QSettings().clear();  // the dialog remembers settings; every run starts from the defaults
         installLanguageFromEnv();
     }
 
