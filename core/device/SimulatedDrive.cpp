@@ -3,6 +3,7 @@
 // §1.2, §2.3 stepped with the velocity loop open; docs/simulator.md "Current-step test".
 #include "core/device/SimulatedDrive.h"
 
+#include "core/device/FrfRequestPlan.h"
 #include "core/device/ModbusDrive.h"
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
@@ -357,31 +358,11 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
                                                     model::formatNumber(kMaxFrfAmplitudePct, 6) + "] % (rated torque " +
                                                     model::formatNumber(rated, 4) + " Nm)");
     }
-    if (!(r.settleS >= 0.0) || !(r.minMeasureS >= 0.0))
-        return makeError(ErrorCode::OutOfRange, "FRF settle and measure times must not be negative");
-    LoopTiming timing;
-    if (auto t = loopTimingFromParameters(v); t)
-        timing = *t;
-    else if (r.settleS <= 0.0 || r.minMeasureS <= 0.0)
-        return t.error();
-    if (r.settleS > 0.0) {
-        timing.settleS = r.settleS;  // the caller's settle time replaces both rules
-        timing.settlePeriods = 0.0;
-    }
-    if (r.minMeasureS > 0.0)
-        timing.minMeasureS = r.minMeasureS;
-    if (r.frfMethod == FrfMethod::Multisine)
-        return startMultisine(sim, r, model::torqueNmFromRatedPct(r.amplitudePct, rated), timing);
-    FrfPlanOptions po;
-    po.method = r.frfMethod;
-    po.fsHz = 1.0 / sim.tracePeriod();
-    po.fminHz = r.fminHz;
-    po.fmaxHz = r.fmaxHz;
-    po.points = r.points;
-    po.amplitudeNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
-    po.timing = timing;
-    po.voltageLimitV = v.at("drive.max_voltage");
-    auto plan = planFrfTest(po);
+    AxisClock clock;
+    clock.currentPeriodS = sim.currentPeriod();
+    clock.ticksPerVelocity = static_cast<int>(std::llround(sim.velocityPeriod() / sim.currentPeriod()));
+    clock.traceDivider = static_cast<int>(std::llround(sim.tracePeriod() / sim.velocityPeriod()));
+    auto plan = planFrfRequest(r, v, clock);
     if (!plan)
         return plan.error();
     // The axis holds velocity 0 while the disturbance acts (spec §4.3 step 1).
@@ -393,8 +374,15 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     const auto now = std::llround(sim.time() / h);
     const auto first = (now + ticksPerSample - 1) / ticksPerSample * ticksPerSample;
     sim.runTicks(first - now);
-    auto shared = std::make_shared<const FrfPlan>(std::move(plan).value());
     const double t0 = static_cast<double>(first) * h;
+    if (plan->multisine) {
+        auto shared = plan->multisine;
+        sim.setTorqueInjection([shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
+        m_multisinePlan = shared;
+        m_clampsAtStart = sim.voltageClampCount();
+        return shared->durationS();
+    }
+    auto shared = plan->streams;
     const double sampleS = sim.tracePeriod();
     sim.setTorqueInjection([shared, t0, sampleS, h](double t) {
         // Whole current ticks from the first sample, as a fractional trace-sample position.
@@ -402,41 +390,6 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
         return frfExcitation(*shared, ticks * h / sampleS);
     });
     m_frfPlan = shared;
-    return shared->durationS();
-}
-
-Result<double> SimulatedDrive::startMultisine(sim::AxisSimulator& sim, const TestRequest& r, double peakNm,
-                                              const LoopTiming& timing)
-{
-    const auto& v = sim.parameters();
-    const double h = sim.currentPeriod();
-    MultisinePlanOptions po;
-    po.fsHz = 1.0 / sim.tracePeriod();
-    po.ticksPerSample = static_cast<int>(std::llround(sim.tracePeriod() / h));
-    po.currentPeriodS = h;
-    po.ticksPerVelocity = static_cast<int>(std::llround(v.at("velocity.period") / h));
-    po.bands = multisineBandsOf(r);
-    po.shape = r.multisineShape;
-    po.phases = r.multisinePhases;
-    po.peakNm = peakNm;  // the limit in % of rated torque holds at the multisine's peak
-    po.timing = timing;
-    po.periods = r.multisinePeriods;
-    po.voltageLimitV = v.at("drive.max_voltage");
-    auto plan = planMultisineTest(po);
-    if (!plan)
-        return plan.error();
-    sim.setControlMode(sim::ControlMode::Velocity);
-    sim.setVelocityCommand({});
-    // Trace sample 0 on a current tick that is a traced velocity tick (as startFrf).
-    const auto ticksPerSample = std::llround(sim.tracePeriod() / h);
-    const auto now = std::llround(sim.time() / h);
-    const auto first = (now + ticksPerSample - 1) / ticksPerSample * ticksPerSample;
-    sim.runTicks(first - now);
-    auto shared = std::make_shared<const MultisinePlan>(std::move(plan).value());
-    const double t0 = static_cast<double>(first) * h;
-    sim.setTorqueInjection([shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
-    m_multisinePlan = shared;
-    m_clampsAtStart = sim.voltageClampCount();
     return shared->durationS();
 }
 

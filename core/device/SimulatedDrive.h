@@ -38,8 +38,6 @@ private:
     Result<sim::AxisSimulator*> axisSim(const std::string& axis);
     /// Plans the FRF test, aligns to the trace grid and installs the injection; returns its length [s].
     Result<double> startFrf(sim::AxisSimulator& sim, const TestRequest& request);
-    /// The multisine variant of startFrf (MultisineTest.h), after the amplitude and timing checks.
-    Result<double> startMultisine(sim::AxisSimulator& sim, const TestRequest& request, double peakNm, const LoopTiming& timing);
     // The circle test of two axes (SimulatedDriveCircle.cpp).
     struct CircleState;
     Status startCircle(const TestRequest& request);
