@@ -209,7 +209,22 @@ CurrentLoopVerifyPage::CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& s
     m_text->setWordWrap(true);
     m_text->setTextInteractionFlags(Qt::TextSelectableByMouse);
     lay->addWidget(m_text);
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+}
+
+void CurrentLoopVerifyPage::initializePage()
+{
+    m_plot->clear();
+    m_d.verified = false;
+    if (!m_ctx.drive().isConnected() || m_d.axis.isEmpty()) {
+        m_text->setText(tr("Not connected: nothing to verify."));
+        return;
+    }
+    // Read back even without apply: the measured step ran with the gains the drive holds.
+    m_text->setText(tr("Reading back…"));
+    auto* req = m_ctx.drive().readParameters(
+        m_d.axis, {"current.kp", "current.ki", "current.alpha", "current.period", "current.dead_time"});
+    m_readRequest = req->id();
+    connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
         if (r.id != m_readRequest)
             return;
         m_readRequest = 0;
@@ -231,20 +246,6 @@ CurrentLoopVerifyPage::CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& s
         showResult();
         emit completeChanged();
     });
-}
-
-void CurrentLoopVerifyPage::initializePage()
-{
-    m_plot->clear();
-    m_d.verified = false;
-    if (!m_ctx.drive().isConnected() || m_d.axis.isEmpty()) {
-        m_text->setText(tr("Not connected: nothing to verify."));
-        return;
-    }
-    // Read back even without apply: the measured step ran with the gains the drive holds.
-    m_text->setText(tr("Reading back…"));
-    m_readRequest = m_ctx.drive().readParameters(
-        m_d.axis, {"current.kp", "current.ki", "current.alpha", "current.period", "current.dead_time"});
 }
 
 void CurrentLoopVerifyPage::showResult()

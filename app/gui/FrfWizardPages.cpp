@@ -140,16 +140,6 @@ FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx,
     });
     if (auto* axisBox = findChild<QComboBox*>())
         connect(axisBox, &QComboBox::currentTextChanged, this, [this] { readInfo(); });
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id != m_request)
-            return;
-        m_info.axis = r.axis;
-        m_info.values = r.ok ? r.values : model::ParameterValues{};
-        m_infoPending = false;
-        showAmplitude();
-        emit driveInfoChanged();
-        emit completeChanged();
-    });
     showAmplitude();
 }
 
@@ -164,8 +154,20 @@ void FrfSafetyPage::readInfo()
     m_info = {};
     showAmplitude();
     m_infoPending = m_ctx.drive().isConnected() && !axis().isEmpty();
-    if (m_infoPending)
-        m_request = m_ctx.drive().readParameters(axis());
+    if (m_infoPending) {
+        auto* req = m_ctx.drive().readParameters(axis());
+        m_request = req->id();
+        connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
+            if (r.id != m_request)
+                return;
+            m_info.axis = r.axis;
+            m_info.values = r.ok ? r.values : model::ParameterValues{};
+            m_infoPending = false;
+            showAmplitude();
+            emit driveInfoChanged();
+            emit completeChanged();
+        });
+    }
     emit completeChanged();
 }
 

@@ -377,7 +377,8 @@ Result<double> SimulatedDrive::startFrf(sim::AxisSimulator& sim, const TestReque
     const double t0 = static_cast<double>(first) * h;
     if (plan->multisine) {
         auto shared = plan->multisine;
-        sim.setTorqueInjection([shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
+        sim.setTorqueInjection(
+            [shared, t0, h](double t) { return multisineExcitation(*shared, std::llround((t - t0) / h)); });
         m_multisinePlan = shared;
         m_clampsAtStart = sim.voltageClampCount();
         return shared->durationS();

@@ -110,15 +110,6 @@ Result<TestRun> runTest(Drive& drive, const TestRequest& request, const RunOptio
     if (options.progress)
         options.progress(1.0, {});
     TestRun run;
-    if (options.readTrace || frf) {
-        auto trace = drive.readTrace();
-        if (!trace) {
-            if (options.readTrace)
-                return trace.error();
-        } else {
-            run.trace = std::move(trace).value();
-        }
-    }
     if (frf) {
         auto m = drive.readFrequencyResponse();
         if (m) {
@@ -127,19 +118,28 @@ Result<TestRun> runTest(Drive& drive, const TestRequest& request, const RunOptio
             return m.error();
         } else {
             // Samples only: the host evaluates the trace with the plan the drive ran.
-            if (!run.trace)
-                return makeError(ErrorCode::NotFound, "the drive neither evaluates the FRF nor hands out the trace");
             if (!planValues)
                 return makeError(ErrorCode::NotFound, "the drive does not evaluate the FRF and did not tell the "
                                                       "parameters to evaluate it on the host");
-            auto h = evaluateOnHost(request, *planValues, *run.trace);
+            auto trace = drive.readTrace();
+            if (!trace)
+                return makeError(trace.error().code,
+                                 "the drive does not evaluate the FRF and its trace could not be read: " +
+                                     trace.error().detail);
+            auto h = evaluateOnHost(request, *planValues, *trace);
             if (!h)
                 return h.error();
             run.frf = std::move(h).value();
             run.frfEvaluatedOnHost = true;
+            if (options.readTrace)
+                run.trace = std::move(trace).value();
         }
-        if (!options.readTrace)
-            run.trace.reset();
+    }
+    if (options.readTrace && !run.trace) {
+        auto trace = drive.readTrace();
+        if (!trace)
+            return trace.error();
+        run.trace = std::move(trace).value();
     }
     return run;
 }

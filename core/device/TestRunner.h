@@ -32,12 +32,13 @@ struct RunOptions {
     std::chrono::milliseconds stallTimeout{30000};
     /// Pause between polls (0: poll at once again; the simulated drive advances inside each poll).
     std::chrono::milliseconds pollInterval{0};
-    /// Read the trace of the completed test (an FRF evaluated on the host reads it in any case).
+    /// Read the trace of the completed test (an FRF evaluated on the host reads it in any case, but hands it
+    /// out only with this set).
     bool readTrace = true;
 };
 
 struct TestRun {
-    std::optional<model::Capture> trace; ///< when RunOptions::readTrace (or the FRF was evaluated on the host)
+    std::optional<model::Capture> trace; ///< when RunOptions::readTrace
     std::optional<FrfMeasurement> frf;   ///< Frf tests
     bool frfEvaluatedOnHost = false;     ///< the drive handed out samples only (metadata evaluated_by=host)
 };

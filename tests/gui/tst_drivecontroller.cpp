@@ -34,6 +34,7 @@ struct ReplyCatcher {
                 return r;
         return std::nullopt;
     }
+    DriveReply wait(axistune::gui::DriveRequest* request, int ms = 30000) const { return wait(request->id(), ms); }
     DriveReply wait(int id, int ms = 30000) const
     {
         waitUntil([&] { return find(id).has_value(); }, ms);
@@ -129,7 +130,7 @@ private slots:
         QVERIFY(before.ok);
         double lastProgress = 0.0;
         connect(&c, &DriveController::progress, this, [&](int, double f, const QString&) { lastProgress = f; });
-        const int id = c.runTest(longFrf("X"));
+        const int id = c.runTest(longFrf("X"))->id();
         QVERIFY(waitUntil([&] { return lastProgress > 0.01; }, 20000));
         QVERIFY2(!rc.find(id), "the test ended before Abort: make it longer");
         QElapsedTimer clock;
@@ -162,23 +163,14 @@ private slots:
         QVERIFY(p.ok);
 
         // The GUI thread's event loop: a timer ticking every 10 ms; the largest gap is measured.
-        QTimer ticker;
-        QElapsedTimer sinceTick;
-        qint64 maxGapMs = 0;
-        int ticks = 0;
-        connect(&ticker, &QTimer::timeout, this, [&] {
-            if (ticks++ > 0)
-                maxGapMs = std::max(maxGapMs, sinceTick.elapsed());
-            sinceTick.start();
-        });
-        ticker.start(10);
+        axistune::testing::TickMeter meter;
 
         double lastProgress = 0.0;
         connect(&c, &DriveController::progress, this, [&](int, double f, const QString&) { lastProgress = f; });
-        const int id = c.runTest(longFrf("X"));
+        const int id = c.runTest(longFrf("X"))->id();
         QVERIFY(waitUntil([&] { return lastProgress > 0.0; }, 30000));
         QVERIFY(!rc.find(id));
-        const int ticksBefore = ticks;
+        const int ticksBefore = meter.ticks();
         sd.stop(SIGKILL);
         QVERIFY(waitUntil([&] { return rc.find(id).has_value(); }, 30000));
         const DriveReply r = *rc.find(id);
@@ -187,8 +179,8 @@ private slots:
         QVERIFY(waitUntil([&] { return lost.count() > 0; }, 5000));
         QVERIFY(!c.isConnected());
         // The event loop kept running while the worker waited on the dead link.
-        QVERIFY(ticks > ticksBefore + 5);
-        QVERIFY2(maxGapMs < 500, qPrintable(QString("event loop stalled for %1 ms").arg(maxGapMs)));
+        QVERIFY(meter.ticks() > ticksBefore + 5);
+        QVERIFY2(meter.maxGapMs() < 500, qPrintable(QString("event loop stalled for %1 ms").arg(meter.maxGapMs())));
         // A request after the loss fails at once with a message, without hanging.
         const DriveReply again = rc.wait(c.readParameters("X"), 5000);
         QVERIFY(!again.ok);

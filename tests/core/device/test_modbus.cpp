@@ -3,7 +3,7 @@
 // loopback socket. The embedded SimulatedDrive with the same seed is the independent reference.
 #include "core/device/ModbusDrive.h"
 #include "core/device/SimDriveServer.h"
-#include "tests/core/device/ServerThread.h"
+#include "core/device/TestRunner.h"
 
 #include <chrono>
 #include <cmath>
@@ -12,6 +12,8 @@
 #include <modbus/modbus.h>
 #include <mutex>
 #include <thread>
+
+#include "tests/core/device/ServerThread.h"
 
 using namespace axistune;
 using namespace axistune::device;
@@ -377,13 +379,10 @@ TEST(ModbusDrive, FrfOverModbusIsTheEmbeddedFrf)
     r.amplitudePct = 5.0;
     std::vector<FrfMeasurement> m;
     for (Drive* d : {remote.get(), local.get()}) {
-        ASSERT_TRUE(d->startTest(r).ok());
-        auto s = finish(*d, 120.0);
-        ASSERT_TRUE(s.ok()) << s.error().detail;
-        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
-        auto f = d->readFrequencyResponse();
-        ASSERT_TRUE(f.ok()) << f.error().detail;
-        m.push_back(std::move(f).value());
+        auto run = runTest(*d, r);
+        ASSERT_TRUE(run.ok()) << run.error().detail;
+        ASSERT_FALSE(run->frfEvaluatedOnHost); // both drives evaluate their own FRF
+        m.push_back(std::move(*run->frf));
     }
     const auto& a = m[0].frf;
     const auto& b = m[1].frf;
