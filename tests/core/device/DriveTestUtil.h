@@ -7,8 +7,11 @@
 #include "core/sim/MachineDefinition.h"
 
 #include <gtest/gtest.h>
+#include <initializer_list>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace axistune::devtest {
 
@@ -39,6 +42,20 @@ inline device::FrfMeasurement runFrf(device::Drive& drive, const device::TestReq
     EXPECT_FALSE(run->frfEvaluatedOnHost);
     EXPECT_EQ(progress, 1.0);
     return *run->frf;
+}
+
+/// Runs the request to its end on each drive (device::runTest) and returns their traces (nullopt, reported as
+/// a failure, when a run fails).
+inline std::vector<std::optional<model::Capture>> tracesOfEach(std::initializer_list<device::Drive*> drives,
+                                                               const device::TestRequest& r)
+{
+    std::vector<std::optional<model::Capture>> out;
+    for (device::Drive* d : drives) {
+        auto run = device::runTest(*d, r);
+        EXPECT_TRUE(run.ok()) << (run.ok() ? "" : run.error().detail);
+        out.push_back(run.ok() ? run->trace : std::nullopt);
+    }
+    return out;
 }
 
 } // namespace axistune::devtest

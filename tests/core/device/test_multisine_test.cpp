@@ -223,13 +223,7 @@ TEST(ModbusMultisine, FrfOverModbusIsTheEmbeddedFrf)
     r.multisinePeriods = 3;
     r.multisinePhases = dsp::MultisinePhases::Schroeder;
     r.amplitudePct = 4.0;
-    std::vector<FrfMeasurement> m;
-    for (Drive* d : {remote->get(), local->get()}) {
-        auto run = runTest(*d, r);
-        ASSERT_TRUE(run.ok()) << run.error().detail;
-        ASSERT_FALSE(run->frfEvaluatedOnHost); // both drives evaluate their own FRF
-        m.push_back(std::move(*run->frf));
-    }
+    const std::vector<FrfMeasurement> m{runFrf(**remote, r), runFrf(**local, r)};
     const auto& a = m[0].frf;
     const auto& b = m[1].frf;
     ASSERT_EQ(b.size(), 18u + 35u); // 20 Hz lines 46.7 … 386.7 Hz, 100 Hz lines 406.7 … 3806.7 Hz
