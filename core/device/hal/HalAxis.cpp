@@ -1,0 +1,399 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/device/hal/HalAxis.h"
+
+#include "core/model/Number.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace axistune::device::hal {
+namespace {
+
+constexpr const char* kInject = "axistune-inject";
+constexpr const char* kPidOutNet = "axistune-pid-out";
+constexpr const char* kExcNet = "axistune-exc";
+constexpr const char* kValidNet = "axistune-valid";
+constexpr const char* kInjectedNet = "axistune-injected";
+constexpr const char* kErrorNet = "axistune-ferror";
+constexpr const char* kBeatNet = "axistune-heartbeat";
+
+Result<std::vector<HalPin>> pins(const HalSessionOptions& o)
+{
+    auto text = runHalcmd(o, {"-s", "show", "pin"});
+    if (!text)
+        return text.error();
+    return parsePins(*text);
+}
+
+Result<std::vector<HalSignal>> signals(const HalSessionOptions& o)
+{
+    auto text = runHalcmd(o, {"-s", "show", "sig"});
+    if (!text)
+        return text.error();
+    return parseSignals(*text);
+}
+
+double pinNumber(const std::vector<HalPin>& ps, const std::string& name)
+{
+    const HalPin* p = findPin(ps, name);
+    if (!p)
+        return 0.0;
+    return model::parseNumber(p->value).value_or(0.0);
+}
+
+std::string num(double v)
+{
+    return model::formatShortest(v);
+}
+
+void waitPeriods(std::int64_t periodNs)
+{
+    std::this_thread::sleep_for(std::max(std::chrono::nanoseconds(2 * periodNs), std::chrono::nanoseconds(20'000'000)));
+}
+
+} // namespace
+
+const char* halColumnName(HalColumn c)
+{
+    switch (c) {
+    case DriveInput:
+        return "drive_input";
+    case Feedback:
+        return "feedback";
+    case PidOutput:
+        return "pid_output";
+    case Injection:
+        return "injection";
+    case FollowingError:
+        return "following_error";
+    case kHalColumns:
+        break;
+    }
+    return "?";
+}
+
+Result<HalAxis> discoverAxis(const HalSessionOptions& options, const std::string& pid)
+{
+    auto ps = pins(options);
+    if (!ps)
+        return ps.error();
+    HalAxis a;
+    a.pid = pid;
+    const HalPin* out = findPin(*ps, pid + ".output");
+    if (!out)
+        return makeError(ErrorCode::NotFound, "HAL has no PID '" + pid + "' (no pin " + pid + ".output)");
+    if (out->signal.empty())
+        return makeError(ErrorCode::BadInput, pid + ".output drives no net: nothing to inject into");
+    a.outputSignal = out->signal;
+    const HalPin* fb = findPin(*ps, pid + ".feedback");
+    if (!fb || fb->signal.empty())
+        return makeError(ErrorCode::BadInput, pid + ".feedback is not linked to a net: no feedback to record");
+    a.feedbackSignal = fb->signal;
+    if (const HalPin* e = findPin(*ps, pid + ".error"))
+        a.errorSignal = e->signal;
+    a.maxOutput = std::abs(pinNumber(*ps, pid + ".maxoutput"));
+    a.maxError = std::abs(pinNumber(*ps, pid + ".maxerror"));
+
+    auto tt = runHalcmd(options, {"-s", "show", "thread"});
+    if (!tt)
+        return tt.error();
+    auto threads = parseThreads(*tt);
+    if (!threads)
+        return threads.error();
+    a.pidFunction = pid + ".do-pid-calcs";
+    for (const auto& t : *threads) {
+        if (std::find(t.functions.begin(), t.functions.end(), a.pidFunction) != t.functions.end()) {
+            a.thread = t.name;
+            a.periodNs = t.periodNs;
+        }
+    }
+    if (a.thread.empty())
+        return makeError(ErrorCode::BadInput, a.pidFunction + " runs on no thread");
+    return a;
+}
+
+Result<std::unique_ptr<HalInjection>> HalInjection::insert(const HalSessionOptions& options, const HalAxis& axis,
+                                                           const InjectionSettings& settings, const HalClient& client)
+{
+    if (!(settings.limit > 0.0) || !std::isfinite(settings.limit))
+        return makeError(ErrorCode::OutOfRange, "injection limit must be a positive number in the PID output's units");
+    if (axis.maxOutput > 0.0 && settings.limit > 0.5 * axis.maxOutput)
+        return makeError(ErrorCode::OutOfRange, "injection peak " + num(settings.limit) + " exceeds half of " +
+                                                    axis.pid + ".maxoutput (" + num(axis.maxOutput) + ")");
+    if (settings.fifoDepth < 64 || settings.fifoDepth > 1 << 20)
+        return makeError(ErrorCode::OutOfRange, "FIFO depth must be 64 to 1048576 rows");
+
+    std::unique_ptr<HalInjection> inj(new HalInjection);
+    inj->m_options = options;
+    inj->m_axis = axis;
+    inj->m_settings = settings;
+
+    // Function order in the thread: streamer before the PID, the injection right after it, sampler last.
+    auto tt = runHalcmd(options, {"-s", "show", "thread", axis.thread});
+    if (!tt)
+        return tt.error();
+    auto threads = parseThreads(*tt);
+    if (!threads || threads->empty())
+        return makeError(ErrorCode::Device, "cannot read thread " + axis.thread);
+    const auto& fns = threads->front().functions;
+    const auto it = std::find(fns.begin(), fns.end(), axis.pidFunction);
+    if (it == fns.end())
+        return makeError(ErrorCode::Device, axis.pidFunction + " is no longer on " + axis.thread);
+    const auto pidPos = static_cast<long>(it - fns.begin()) + 1; // 1-based
+
+    const double maxError = settings.maxError > 0.0 ? settings.maxError : axis.maxError;
+    const std::string depth = std::to_string(settings.fifoDepth);
+    struct Step {
+        std::vector<std::string> doArgs;
+        std::vector<std::string> undoArgs;
+    };
+    std::vector<Step> steps = {
+        {{"loadrt", "axistune_inject", std::string("names=") + kInject}, {"unloadrt", "axistune_inject"}},
+        {{"loadrt", "streamer", "depth=" + depth, "cfg=fb"}, {"unloadrt", "streamer"}},
+        {{"loadrt", "sampler", "depth=" + depth, "cfg=fffff"}, {"unloadrt", "sampler"}},
+        {{"setp", std::string(kInject) + ".limit", num(settings.limit)}, {}},
+        {{"setp", std::string(kInject) + ".maxerror", num(maxError)}, {}},
+        {{"setp", std::string(kInject) + ".timeout", num(settings.heartbeatTimeoutS)}, {}},
+        {{"addf", "streamer.0", axis.thread, std::to_string(pidPos)}, {"delf", "streamer.0", axis.thread}},
+        {{"addf", kInject, axis.thread, std::to_string(pidPos + 2)}, {"delf", kInject, axis.thread}},
+        {{"addf", "sampler.0", axis.thread}, {"delf", "sampler.0", axis.thread}},
+        {{"net", kBeatNet, client.heartbeatPin(), std::string(kInject) + ".heartbeat"}, {"delsig", kBeatNet}},
+        {{"net", kExcNet, "streamer.0.pin.0", std::string(kInject) + ".excitation"}, {"delsig", kExcNet}},
+        // sampler.0.enable starts TRUE, and a new net takes that value until the streamer writes its first row:
+        // the sampler would record rows of nothing while the insertion goes on.
+        {{"setp", "sampler.0.enable", "0"}, {}},
+        {{"net", kValidNet, "streamer.0.pin.1", "sampler.0.enable"}, {"delsig", kValidNet}},
+        {{"unlinkp", axis.pid + ".output"}, {"linkps", axis.pid + ".output", axis.outputSignal}},
+        {{"linkps", std::string(kInject) + ".out", axis.outputSignal}, {"unlinkp", std::string(kInject) + ".out"}},
+        {{"net", kPidOutNet, axis.pid + ".output", std::string(kInject) + ".in"}, {"delsig", kPidOutNet}},
+        {{"net", kInjectedNet, std::string(kInject) + ".injected", "sampler.0.pin.3"}, {"delsig", kInjectedNet}},
+        {{"linksp", axis.outputSignal, "sampler.0.pin.0"}, {"unlinkp", "sampler.0.pin.0"}},
+        {{"linksp", axis.feedbackSignal, "sampler.0.pin.1"}, {"unlinkp", "sampler.0.pin.1"}},
+        {{"linksp", kPidOutNet, "sampler.0.pin.2"}, {"unlinkp", "sampler.0.pin.2"}},
+    };
+    if (axis.errorSignal.empty()) {
+        steps.push_back({{"net", kErrorNet, axis.pid + ".error", std::string(kInject) + ".error", "sampler.0.pin.4"},
+                         {"delsig", kErrorNet}});
+    } else {
+        steps.push_back({{"linksp", axis.errorSignal, std::string(kInject) + ".error"},
+                         {"unlinkp", std::string(kInject) + ".error"}});
+        steps.push_back({{"linksp", axis.errorSignal, "sampler.0.pin.4"}, {"unlinkp", "sampler.0.pin.4"}});
+    }
+    for (auto& s : steps) {
+        auto r = runHalcmd(options, s.doArgs);
+        if (!r) {
+            (void)inj->remove();
+            std::string what;
+            for (const auto& a : s.doArgs)
+                what += (what.empty() ? "" : " ") + a;
+            return makeError(ErrorCode::Device, "inserting AxisTune's injection into " + axis.pid + " failed at '" +
+                                                    what + "' (nothing left changed): " + r.error().detail);
+        }
+        if (!s.undoArgs.empty())
+            inj->m_undo.push_back(std::move(s.undoArgs));
+    }
+    return inj;
+}
+
+HalInjection::~HalInjection()
+{
+    (void)remove();
+}
+
+Status HalInjection::remove()
+{
+    Status first;
+    // Disarm first so that nothing more is added while the nets change.
+    if (!m_undo.empty())
+        (void)runHalcmd(m_options, {"setp", std::string(kInject) + ".enable", "0"});
+    bool waited = false;
+    while (!m_undo.empty()) {
+        auto args = std::move(m_undo.back());
+        m_undo.pop_back();
+        if (args.front() == "unloadrt" && !waited) {
+            // A function taken off the thread may still be running this period: unloading frees the FIFO it
+            // reads (LinuxCNC's streamer and sampler then crash the servo thread). Wait two periods.
+            waitPeriods(m_axis.periodNs);
+            waited = true;
+        }
+        auto r = runHalcmd(m_options, args);
+        if (!r && first)
+            first = r.error();
+    }
+    return first;
+}
+
+Status removeLeftoverInjection(const HalSessionOptions& options)
+{
+    auto ps = pins(options);
+    if (!ps)
+        return ps.error();
+    const HalPin* injOut = findPin(*ps, std::string(kInject) + ".out");
+    if (!injOut)
+        return {};
+    auto sigs = signals(options);
+    if (!sigs)
+        return sigs.error();
+    std::vector<std::vector<std::string>> cmds;
+    cmds.push_back({"setp", std::string(kInject) + ".enable", "0"});
+    // The PID output sits on axistune-pid-out; its drive net is the one the injection writes.
+    const HalSignal* pidOut = findSignal(*sigs, kPidOutNet);
+    if (pidOut && !pidOut->writer.empty() && !injOut->signal.empty()) {
+        cmds.push_back({"unlinkp", std::string(kInject) + ".out"});
+        cmds.push_back({"unlinkp", pidOut->writer});
+        cmds.push_back({"linkps", pidOut->writer, injOut->signal});
+    }
+    for (const auto& s : *sigs)
+        if (s.name.rfind("axistune-", 0) == 0)
+            cmds.push_back({"delsig", s.name});
+    // Off the thread first; unloaded two periods later (see HalInjection::remove).
+    auto tt = runHalcmd(options, {"-s", "show", "thread"});
+    if (!tt)
+        return tt.error();
+    auto threads = parseThreads(*tt);
+    if (!threads)
+        return threads.error();
+    std::int64_t longestPeriod = 0;
+    const bool ours[] = {true, findSignal(*sigs, kExcNet) != nullptr, findSignal(*sigs, kValidNet) != nullptr};
+    const char* fns[] = {kInject, "streamer.0", "sampler.0"};
+    for (const auto& t : *threads)
+        for (std::size_t i = 0; i < 3; ++i)
+            if (ours[i] && std::find(t.functions.begin(), t.functions.end(), fns[i]) != t.functions.end()) {
+                cmds.push_back({"delf", fns[i], t.name});
+                longestPeriod = std::max(longestPeriod, t.periodNs);
+            }
+    for (const auto& c : cmds)
+        if (auto r = runHalcmd(options, c); !r)
+            return makeError(ErrorCode::Device, "removing a leftover AxisTune injection failed: " + r.error().detail);
+    cmds.clear();
+    waitPeriods(longestPeriod);
+    cmds.push_back({"unloadrt", "axistune_inject"});
+    // streamer and sampler are AxisTune's when they feed AxisTune's nets.
+    if (findPin(*ps, "streamer.0.pin.0") && findSignal(*sigs, kExcNet))
+        cmds.push_back({"unloadrt", "streamer"});
+    if (findPin(*ps, "sampler.0.pin.0") && findSignal(*sigs, kValidNet))
+        cmds.push_back({"unloadrt", "sampler"});
+    for (const auto& c : cmds)
+        if (auto r = runHalcmd(options, c); !r)
+            return makeError(ErrorCode::Device, "removing a leftover AxisTune injection failed: " + r.error().detail);
+    return {};
+}
+
+Result<HalRecord> runExcitation(HalClient& client, HalInjection& injection, std::span<const double> excitation,
+                                const HalRunControl& control)
+{
+    const auto& o = injection.options();
+    const auto& s = injection.settings();
+    const std::string inj = kInject;
+    if (excitation.empty())
+        return makeError(ErrorCode::BadInput, "empty excitation");
+    double peak = 0.0;
+    for (double v : excitation) {
+        if (!std::isfinite(v))
+            return makeError(ErrorCode::BadInput, "the excitation holds a value that is not a finite number");
+        peak = std::max(peak, std::abs(v));
+    }
+    if (peak > s.limit)
+        return makeError(ErrorCode::OutOfRange,
+                         "excitation peak " + num(peak) + " exceeds the injection limit " + num(s.limit));
+
+    auto writer = HalStream::attach(client, HalStream::Direction::ToHal, kStreamerKey, "fb");
+    if (!writer)
+        return writer.error();
+    auto reader = HalStream::attach(client, HalStream::Direction::FromHal, kSamplerKey, "fffff");
+    if (!reader)
+        return reader.error();
+    // The heartbeat must be seen before the injection is armed (the component latches a missing beat).
+    std::this_thread::sleep_for(std::chrono::duration<double>(2.0 * s.heartbeatTimeoutS));
+    // Rows recorded before this excitation (none, unless an earlier run left some) are not part of it.
+    {
+        std::vector<double> stale;
+        std::uint32_t n = 0;
+        while ((*reader)->read(stale, n)) {
+        }
+    }
+    if (auto r = runHalcmd(o, {"setp", inj + ".enable", "1"}); !r)
+        return r.error();
+    auto disarm = [&] { (void)runHalcmd(o, {"setp", inj + ".enable", "0"}); };
+
+    HalRecord rec;
+    rec.sampleRateHz = 1e9 / static_cast<double>(injection.axis().periodNs);
+    rec.columns.assign(kHalColumns, {});
+    for (auto& c : rec.columns)
+        c.reserve(excitation.size());
+    const int underrunsBefore = (*writer)->underruns();
+    std::size_t written = 0, read = 0;
+    std::uint32_t last = 0;
+    std::vector<double> row;
+    const double rowsEnd[2] = {0.0, 0.0};
+    bool endWritten = false;
+    auto nextCheck = std::chrono::steady_clock::now();
+    double lastProgress = -1.0;
+    while (read < excitation.size()) {
+        if (control.abort && control.abort->load()) {
+            disarm();
+            return makeError(ErrorCode::Aborted, "aborted; the injection was removed from " + injection.axis().pid);
+        }
+        bool moved = false;
+        while (written < excitation.size() && (*writer)->writable()) {
+            const double r[2] = {excitation[written], 1.0};
+            if (!(*writer)->write(r))
+                break;
+            ++written;
+            moved = true;
+        }
+        if (written == excitation.size() && !endWritten && (*writer)->writable())
+            endWritten = (*writer)->write(rowsEnd);
+        std::uint32_t n = 0;
+        while (read < excitation.size() && (*reader)->read(row, n)) {
+            if (read > 0 && n != last + 1) {
+                disarm();
+                return makeError(ErrorCode::Device, "lost " + std::to_string(static_cast<long long>(n) - last - 1) +
+                                                        " rows of the HAL sampler after sample " +
+                                                        std::to_string(last) +
+                                                        " (AxisTune did not read the FIFO in time)");
+            }
+            if (read == 0)
+                rec.firstSample = n;
+            last = n;
+            for (std::size_t c = 0; c < kHalColumns; ++c)
+                rec.columns[c].push_back(row[c]);
+            ++read;
+            moved = true;
+        }
+        if (written < excitation.size() && (*writer)->underruns() != underrunsBefore) {
+            disarm();
+            return makeError(ErrorCode::Device, "the HAL streamer ran empty after " + std::to_string(written) +
+                                                    " rows: AxisTune did not keep the excitation coming in time");
+        }
+        const auto now = std::chrono::steady_clock::now();
+        if (now >= nextCheck) {
+            nextCheck = now + std::chrono::milliseconds(10);
+            auto trip = client.readPin(inj + ".trip");
+            if (trip && *trip != 0.0) {
+                disarm();
+                const int t = static_cast<int>(*trip);
+                const char* why = t == 1   ? "the heartbeat was lost"
+                                  : t == 2 ? "the excitation exceeded its limit"
+                                           : "the following error exceeded maxerror";
+                return makeError(ErrorCode::Safety,
+                                 std::string("the injection tripped: ") + why + "; the test was stopped");
+            }
+            const double p = static_cast<double>(read) / static_cast<double>(excitation.size());
+            if (control.progress && p > lastProgress) {
+                control.progress(p);
+                lastProgress = p;
+            }
+        }
+        if (!moved)
+            std::this_thread::sleep_for(std::chrono::microseconds(500));
+    }
+    disarm();
+    if (control.progress)
+        control.progress(1.0);
+    return rec;
+}
+
+} // namespace axistune::device::hal

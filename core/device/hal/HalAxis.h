@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// One LinuxCNC servo axis seen through HAL: a `pid` instance, its nets and its servo thread; the run-time
+// insertion of AxisTune's guarded injection (linuxcnc/axistune_inject.comp) and a streamer/sampler pair at
+// the PID output; and one excitation streamed and recorded row by row (docs/linuxcnc.md).
+
+#include "core/device/hal/HalCmd.h"
+#include "core/device/hal/HalLink.h"
+#include "core/device/hal/HalText.h"
+#include "core/model/Result.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace axistune::device::hal {
+
+struct HalAxis {
+    std::string pid;            ///< instance, e.g. "pid.x" or "pid.0"
+    std::string pidFunction;    ///< "<pid>.do-pid-calcs"
+    std::string thread;         ///< the thread that runs it
+    std::int64_t periodNs = 0;  ///< its period
+    std::string outputSignal;   ///< net driven by <pid>.output: the drive input
+    std::string feedbackSignal; ///< net into <pid>.feedback
+    std::string errorSignal;    ///< net driven by <pid>.error; empty when unlinked
+    double maxOutput = 0.0;     ///< <pid>.maxoutput (0: unlimited)
+    double maxError = 0.0;      ///< <pid>.maxerror (0: unlimited)
+};
+
+/// Finds the pid instance, its thread and nets. Errors name what is missing (no such pid, its output or feedback
+/// not linked, its function on no thread).
+Result<HalAxis> discoverAxis(const HalSessionOptions& options, const std::string& pid);
+
+/// Columns the sampler records each servo period, in this order.
+enum HalColumn : std::size_t { DriveInput = 0, Feedback, PidOutput, Injection, FollowingError, kHalColumns };
+const char* halColumnName(HalColumn c);
+
+struct InjectionSettings {
+    int fifoDepth = 16384; ///< rows of the streamer and sampler FIFOs
+    double limit = 0.0;    ///< largest |excitation| in the PID output's units; the component trips above it
+    double maxError = 0.0; ///< following-error trip during the test; 0: the pid's maxerror
+    double heartbeatTimeoutS =
+        0.04; ///< the injection falls to zero this long after AxisTune stops (issue 17: within 50 ms)
+};
+
+/// AxisTune's components inserted into one axis; removed (every net restored) by remove() or the destructor.
+class HalInjection {
+public:
+    static Result<std::unique_ptr<HalInjection>> insert(const HalSessionOptions& options, const HalAxis& axis,
+                                                        const InjectionSettings& settings, const HalClient& client);
+    ~HalInjection();
+    HalInjection(const HalInjection&) = delete;
+    HalInjection& operator=(const HalInjection&) = delete;
+
+    /// Undoes the insertion in reverse order; the first failure is returned, the remaining steps still run.
+    Status remove();
+    const HalAxis& axis() const { return m_axis; }
+    const HalSessionOptions& options() const { return m_options; }
+    const InjectionSettings& settings() const { return m_settings; }
+
+private:
+    HalInjection() = default;
+    HalSessionOptions m_options;
+    HalAxis m_axis;
+    InjectionSettings m_settings;
+    std::vector<std::vector<std::string>> m_undo; ///< halcmd argument lists, run last first
+};
+
+/// Restores the nets of an injection left behind by an AxisTune that died (kill -9, power cut of the laptop):
+/// relinks the PID output to its net and unloads axistune_inject, streamer and sampler when they are AxisTune's.
+/// Succeeds with nothing to do when no injection is loaded.
+Status removeLeftoverInjection(const HalSessionOptions& options);
+
+struct HalRecord {
+    double sampleRateHz = 0.0;
+    std::uint32_t firstSample = 0;            ///< the sampler's number of the first row
+    std::vector<std::vector<double>> columns; ///< kHalColumns columns, one value per servo period
+};
+
+struct HalRunControl {
+    std::function<void(double)> progress;     ///< 0..1, monotone
+    const std::atomic<bool>* abort = nullptr; ///< set to stop: the injection is disarmed at once
+};
+
+/// Streams `excitation` (one value per servo period, PID output units) through the injection and records every
+/// column for each of those periods. Fails (injection disarmed) on a lost or repeated row (sample numbers), a
+/// streamer underrun while rows remain, a trip of the component (heartbeat, limit, following error), or abort.
+Result<HalRecord> runExcitation(HalClient& client, HalInjection& injection, std::span<const double> excitation,
+                                const HalRunControl& control = {});
+
+} // namespace axistune::device::hal

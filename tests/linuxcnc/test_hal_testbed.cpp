@@ -1,0 +1,357 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The HAL backend's measurement path on AxisTune's LinuxCNC test machine (scripts/hal-testbed: LinuxCNC's pid
+// around linuxcnc/axistune_plant.comp, a real HAL session started by each test; ctest runs these one at a time).
+#include "core/device/hal/HalAxis.h"
+#include "core/dsp/Multisine.h"
+#include "core/model/Number.h"
+
+#include <Eigen/Dense>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <csignal>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace axistune;
+using namespace axistune::device::hal;
+
+namespace {
+
+const std::string kScript = std::string(AXISTUNE_SOURCE_DIR) + "/scripts/hal-testbed";
+
+HalSessionOptions halOptions()
+{
+    HalSessionOptions o;
+    o.halcmd = {kScript, "halcmd"};
+    o.timeout = std::chrono::seconds(30);
+    return o;
+}
+
+Status runScript(const std::vector<std::string>& args)
+{
+    HalSessionOptions o;
+    o.halcmd = {kScript};
+    o.timeout = std::chrono::seconds(180);
+    auto r = runHalcmd(o, args);
+    if (!r)
+        return r.error();
+    return {};
+}
+
+/// `halcmd -s show sig` without the live values: names, types, writers and readers.
+std::string netsOf(const std::string& showSig)
+{
+    auto sigs = parseSignals(showSig);
+    EXPECT_TRUE(sigs) << (sigs ? "" : sigs.error().detail);
+    std::string out;
+    if (sigs)
+        for (const auto& s : *sigs) {
+            out += s.type + " " + s.name + " <== " + s.writer + " ==>";
+            for (const auto& r : s.readers)
+                out += " " + r;
+            out += "\n";
+        }
+    return out;
+}
+
+std::string halText(const std::vector<std::string>& args)
+{
+    auto r = runHalcmd(halOptions(), args);
+    EXPECT_TRUE(r) << (r ? "" : r.error().detail);
+    return r ? *r : std::string{};
+}
+
+double getp(const std::string& name)
+{
+    const std::string t = halText({"getp", name});
+    const auto v = model::parseNumber(t.substr(0, t.find_first_of(" \n")));
+    EXPECT_TRUE(v.has_value()) << name << ": '" << t << "'";
+    return v.value_or(std::nan(""));
+}
+
+/// The plant's exact discrete-time response from drive input to recorded feedback, from the component's own
+/// update equations (linuxcnc/axistune_plant.comp, friction and quantization off): per substep h
+///   ω_m ← ω_m + h (u − k(θ_m−θ_l) − c(ω_m−ω_l) − b_m ω_m)/J_m,  ω_l ← ω_l + h (k(θ_m−θ_l) + c(ω_m−ω_l) − b_l ω_l)/J_l,
+///   θ_m ← θ_m + h ω_m,  θ_l ← θ_l + h ω_l   (the new velocities, from the old state)
+/// so one servo period is x ← A x + B u with A = A₁ⁿ, B = Σ A₁ⁱ B₁. The sampler runs after the plant in the same
+/// period, so it records y[k] = C x[k+1] with u[k]: H(z) = z C (zI − A)⁻¹ B.
+struct Plant {
+    double jm, jl, k, c, bm, bl, lead;
+    int substeps;
+};
+
+Plant readPlant()
+{
+    return {getp("plant.x.jm"), getp("plant.x.jl"), getp("plant.x.k"),    getp("plant.x.c"),
+            getp("plant.x.bm"), getp("plant.x.bl"), getp("plant.x.lead"), static_cast<int>(getp("plant.x.substeps"))};
+}
+
+std::complex<double> exactResponse(const Plant& p, double periodS, double fHz)
+{
+    const double h = periodS / p.substeps;
+    Eigen::Matrix4d V = Eigen::Matrix4d::Identity(); // velocity update, state (θm, ωm, θl, ωl)
+    V.row(1) += h * Eigen::RowVector4d(-p.k / p.jm, -(p.c + p.bm) / p.jm, p.k / p.jm, p.c / p.jm);
+    V.row(3) += h * Eigen::RowVector4d(p.k / p.jl, p.c / p.jl, -p.k / p.jl, -(p.c + p.bl) / p.jl);
+    Eigen::Matrix4d P = Eigen::Matrix4d::Identity(); // position update with the new velocities
+    P(0, 1) = h;
+    P(2, 3) = h;
+    const Eigen::Matrix4d A1 = P * V;
+    const Eigen::Vector4d B1 = P * Eigen::Vector4d(0.0, h / p.jm, 0.0, 0.0);
+    Eigen::Matrix4d A = Eigen::Matrix4d::Identity();
+    Eigen::Vector4d B = Eigen::Vector4d::Zero();
+    for (int i = 0; i < p.substeps; ++i) {
+        B += A * B1;
+        A = A1 * A;
+    }
+    const std::complex<double> z = std::polar(1.0, 2.0 * M_PI * fHz * periodS);
+    const Eigen::Matrix4cd M = z * Eigen::Matrix4cd::Identity() - A.cast<std::complex<double>>();
+    const Eigen::Vector4cd x = M.partialPivLu().solve(B.cast<std::complex<double>>());
+    return z * (p.lead / (2.0 * M_PI)) * x(0);
+}
+
+class HalTestbed : public ::testing::Test {
+protected:
+    void startBed(long periodNs)
+    {
+        auto st = runScript({"start", "--period", std::to_string(periodNs)});
+        ASSERT_TRUE(st) << st.error().detail;
+        m_started = true;
+    }
+    void TearDown() override
+    {
+        if (m_started)
+            (void)runScript({"stop"});
+    }
+    bool m_started = false;
+};
+
+std::vector<double> repeatPeriods(const dsp::MultisineDesign& d, std::size_t periods)
+{
+    std::vector<double> x;
+    x.reserve(d.table.size() * periods);
+    for (std::size_t p = 0; p < periods; ++p)
+        x.insert(x.end(), d.table.begin(), d.table.end());
+    return x;
+}
+
+} // namespace
+
+TEST_F(HalTestbed, DiscoversThePidItsNetsAndItsThread)
+{
+    startBed(1000000);
+    auto axis = discoverAxis(halOptions(), "pid.x");
+    ASSERT_TRUE(axis) << axis.error().detail;
+    EXPECT_EQ(axis->thread, "servo-thread");
+    EXPECT_EQ(axis->periodNs, 1000000);
+    EXPECT_EQ(axis->outputSignal, "x-torque-cmd");
+    EXPECT_EQ(axis->feedbackSignal, "x-pos-fb");
+    EXPECT_DOUBLE_EQ(axis->maxOutput, 2.0); // linuxcnc/testbed/axistune-testbed.ini MAX_OUTPUT
+    auto none = discoverAxis(halOptions(), "pid.q");
+    ASSERT_FALSE(none);
+    EXPECT_NE(none.error().detail.find("pid.q"), std::string::npos) << none.error().detail;
+}
+
+// Issue 17: the multisine FRF of the plant through hal: equals the plant's exact discrete-time response within
+// 0.1 dB and 0.5° (friction and quantization off), no row lost, and the HAL exactly as before afterwards.
+TEST_F(HalTestbed, MultisinePlantFrfEqualsTheExactDiscreteResponse)
+{
+    startBed(1000000);
+    const std::string sigBefore = halText({"-s", "show", "sig"});
+    const std::string funBefore = halText({"-s", "show", "funct"});
+    const std::string thrBefore = halText({"-s", "show", "thread"});
+
+    auto axis = discoverAxis(halOptions(), "pid.x");
+    ASSERT_TRUE(axis) << axis.error().detail;
+    const double fs = 1e9 / static_cast<double>(axis->periodNs);
+    dsp::MultisineDesignOptions mo;
+    mo.fsHz = fs;
+    mo.bands = {{2.0, 0.45 * fs, 2.0}};
+    mo.peak = 0.2; // N·m, a tenth of maxoutput
+    auto design = dsp::designMultisine(mo);
+    ASSERT_TRUE(design) << design.error().detail;
+    const std::size_t settle = 1, periods = 3;
+    const auto excitation = repeatPeriods(*design, settle + periods);
+
+    Result<HalRecord> rec = makeError(ErrorCode::Internal, "not run");
+    {
+        auto client = HalClient::open("axistune-test");
+        ASSERT_TRUE(client) << client.error().detail;
+        InjectionSettings is;
+        is.limit = 0.25;
+        auto inj = HalInjection::insert(halOptions(), *axis, is, **client);
+        ASSERT_TRUE(inj) << inj.error().detail;
+        std::vector<double> progress;
+        HalRunControl ctl;
+        ctl.progress = [&](double p) { progress.push_back(p); };
+        rec = runExcitation(**client, **inj, excitation, ctl);
+        ASSERT_TRUE(rec) << rec.error().detail;
+        ASSERT_FALSE(progress.empty());
+        for (std::size_t i = 1; i < progress.size(); ++i)
+            EXPECT_GE(progress[i], progress[i - 1]);
+        EXPECT_DOUBLE_EQ(progress.back(), 1.0);
+        auto removed = (*inj)->remove();
+        EXPECT_TRUE(removed) << removed.error().detail;
+    }
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), netsOf(sigBefore));
+    EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
+    // The thread lists the same functions (its timing columns change while it runs).
+    auto tb = parseThreads(thrBefore), ta = parseThreads(halText({"-s", "show", "thread"}));
+    ASSERT_TRUE(tb && ta);
+    EXPECT_EQ(ta->front().functions, tb->front().functions);
+
+    ASSERT_EQ(rec->columns[DriveInput].size(), excitation.size());
+    // The injection the component added is the excitation, row for row.
+    std::size_t mismatched = 0, firstBad = excitation.size();
+    for (std::size_t i = 0; i < excitation.size(); ++i)
+        if (rec->columns[Injection][i] != excitation[i]) {
+            ++mismatched;
+            firstBad = std::min(firstBad, i);
+        }
+    EXPECT_EQ(mismatched, 0u) << "first at row " << firstBad << ": " << rec->columns[Injection][firstBad] << " "
+                              << excitation[firstBad];
+
+    const std::size_t skip = settle * design->table.size();
+    const std::span<const double> u(rec->columns[DriveInput].data() + skip, periods * design->table.size());
+    const std::span<const double> y(rec->columns[Feedback].data() + skip, periods * design->table.size());
+    auto an = dsp::analyzeMultisine(*design, u, y, periods);
+    ASSERT_TRUE(an) << an.error().detail;
+    const Plant plant = readPlant();
+    ASSERT_EQ(an->frf.freqHz.size(), design->freqHz.size());
+    double worstDb = 0.0, worstDeg = 0.0;
+    for (std::size_t i = 0; i < an->frf.freqHz.size(); ++i) {
+        const std::complex<double> exact = exactResponse(plant, 1.0 / fs, an->frf.freqHz[i]);
+        const std::complex<double> ratio = an->frf.h[i] / exact;
+        ASSERT_TRUE(std::isfinite(ratio.real()) && std::isfinite(ratio.imag()) && std::abs(exact) > 0.0)
+            << "line " << an->frf.freqHz[i] << " Hz";
+        worstDb = std::max(worstDb, std::abs(20.0 * std::log10(std::abs(ratio))));
+        worstDeg = std::max(worstDeg, std::abs(std::arg(ratio)) * 180.0 / M_PI);
+    }
+    EXPECT_LE(worstDb, 0.1);
+    EXPECT_LE(worstDeg, 0.5);
+    RecordProperty("worst_dB", model::formatShortest(worstDb));
+    RecordProperty("worst_deg", model::formatShortest(worstDeg));
+}
+
+// Issue 17: after kill -9 of AxisTune mid-test the injection is back at zero within 50 ms, and the leftover
+// components can be removed so that the HAL is as before.
+TEST_F(HalTestbed, InjectionFallsToZeroWithin50msAfterKill)
+{
+    startBed(1000000);
+    const std::string sigBefore = halText({"-s", "show", "sig"});
+    auto axis = discoverAxis(halOptions(), "pid.x");
+    ASSERT_TRUE(axis) << axis.error().detail;
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        // AxisTune: a 0.1 N·m square wave for 60 s, killed long before it ends.
+        auto client = HalClient::open("axistune-victim");
+        if (!client)
+            _exit(10);
+        InjectionSettings is;
+        is.limit = 0.2;
+        auto inj = HalInjection::insert(halOptions(), *axis, is, **client);
+        if (!inj)
+            _exit(11);
+        std::vector<double> x(60000);
+        for (std::size_t i = 0; i < x.size(); ++i)
+            x[i] = (i / 50) % 2 ? 0.1 : -0.1;
+        (void)runExcitation(**client, **inj, x);
+        _exit(12);
+    }
+    auto watcher = HalClient::open("axistune-watcher");
+    ASSERT_TRUE(watcher) << watcher.error().detail;
+    // Wait until the injection runs.
+    const auto t0 = std::chrono::steady_clock::now();
+    bool running = false;
+    while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(30)) {
+        auto armed = (*watcher)->readPin("axistune-inject.armed");
+        if (armed && *armed == 1.0) {
+            running = true;
+            break;
+        }
+        int status = 0;
+        ASSERT_EQ(waitpid(child, &status, WNOHANG), 0)
+            << "the injecting process ended early, exit " << WEXITSTATUS(status);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ASSERT_TRUE(running);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    auto injected = (*watcher)->readPin("axistune-inject.injected");
+    ASSERT_TRUE(injected);
+    EXPECT_NEAR(std::abs(*injected), 0.1, 1e-12);
+
+    ASSERT_EQ(kill(child, SIGKILL), 0);
+    const auto killed = std::chrono::steady_clock::now();
+    double zeroAfterMs = -1.0;
+    while (std::chrono::steady_clock::now() - killed < std::chrono::seconds(2)) {
+        auto v = (*watcher)->readPin("axistune-inject.injected");
+        ASSERT_TRUE(v);
+        if (*v == 0.0) {
+            zeroAfterMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - killed).count();
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_GE(zeroAfterMs, 0.0) << "the injection did not fall to zero";
+    EXPECT_LE(zeroAfterMs, 50.0);
+    RecordProperty("zero_after_ms", model::formatShortest(zeroAfterMs));
+    auto trip = (*watcher)->readPin("axistune-inject.trip");
+    ASSERT_TRUE(trip);
+    EXPECT_EQ(*trip, 1.0); // heartbeat lost
+
+    auto cleaned = removeLeftoverInjection(halOptions());
+    ASSERT_TRUE(cleaned) << cleaned.error().detail;
+    watcher = makeError(ErrorCode::Internal, "released");
+    // The dead client's component stays in HAL (its heartbeat pin on no net): the signals are as before.
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), netsOf(sigBefore));
+}
+
+TEST_F(HalTestbed, InjectionAboveHalfOfMaxOutputIsRefusedAndNothingChanges)
+{
+    startBed(1000000);
+    const std::string sigBefore = halText({"-s", "show", "sig"});
+    auto axis = discoverAxis(halOptions(), "pid.x");
+    ASSERT_TRUE(axis) << axis.error().detail;
+    auto client = HalClient::open("axistune-test");
+    ASSERT_TRUE(client) << client.error().detail;
+    InjectionSettings is;
+    is.limit = 1.5; // maxoutput 2.0
+    auto inj = HalInjection::insert(halOptions(), *axis, is, **client);
+    ASSERT_FALSE(inj);
+    EXPECT_EQ(inj.error().code, ErrorCode::OutOfRange);
+    EXPECT_NE(inj.error().detail.find("maxoutput"), std::string::npos) << inj.error().detail;
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), netsOf(sigBefore));
+}
+
+// Issue 17: zero lost rows over a 60 s capture at 1 kHz and at 4 kHz servo threads.
+class HalLongCapture : public HalTestbed, public ::testing::WithParamInterface<long> {};
+
+TEST_P(HalLongCapture, SixtySecondsWithoutALostRow)
+{
+    startBed(GetParam());
+    auto axis = discoverAxis(halOptions(), "pid.x");
+    ASSERT_TRUE(axis) << axis.error().detail;
+    const double fs = 1e9 / static_cast<double>(axis->periodNs);
+    std::vector<double> x(static_cast<std::size_t>(60.0 * fs));
+    for (std::size_t i = 0; i < x.size(); ++i)
+        x[i] = 0.05 * std::sin(2.0 * M_PI * 7.0 * static_cast<double>(i) / fs);
+    auto client = HalClient::open("axistune-test");
+    ASSERT_TRUE(client) << client.error().detail;
+    InjectionSettings is;
+    is.limit = 0.1;
+    auto inj = HalInjection::insert(halOptions(), *axis, is, **client);
+    ASSERT_TRUE(inj) << inj.error().detail;
+    auto rec = runExcitation(**client, **inj, x);
+    ASSERT_TRUE(rec) << rec.error().detail; // a lost, repeated or late row fails the run with its sample number
+    EXPECT_EQ(rec->columns[Feedback].size(), x.size());
+    EXPECT_DOUBLE_EQ(rec->sampleRateHz, fs);
+}
+
+INSTANTIATE_TEST_SUITE_P(ServoRates, HalLongCapture, ::testing::Values(1000000L, 250000L), [](const auto& param) {
+    return param.param == 1000000L ? std::string("1kHz") : std::string("4kHz");
+});
