@@ -14,10 +14,12 @@
 
 #include "tests/NumberText.h"
 #include "tests/app/cli/SimDriveProcess.h"
+#include "tests/gui/DriveTestRequests.h"
 #include "tests/gui/GuiTestUtil.h"
 
 using axistune::gui::DriveController;
 using axistune::gui::DriveReply;
+using axistune::testing::longFrf;
 using axistune::testing::waitUntil;
 
 namespace {
@@ -44,21 +46,6 @@ struct ReplyCatcher {
     std::vector<DriveReply> replies;
 };
 
-/// An FRF test that takes several seconds of wall time on the simulator (many slow low frequencies).
-axistune::device::TestRequest longFrf(const std::string& axis)
-{
-    axistune::device::TestRequest t;
-    t.axis = axis;
-    t.type = axistune::device::TestType::Frf;
-    t.frfMethod = axistune::device::FrfMethod::MultiSweep;
-    t.fminHz = 2.0;
-    t.fmaxHz = 1000.0;
-    t.points = 300;
-    t.amplitudePct = 3.0;
-    t.settleS = 0.5;
-    t.minMeasureS = 1.0;
-    return t;
-}
 }  // namespace
 
 class TestDriveController : public QObject {

@@ -16,12 +16,14 @@
 
 #include <optional>
 
+#include "tests/gui/DriveTestRequests.h"
 #include "tests/gui/GuiTestUtil.h"
 
 using axistune::gui::AppContext;
 using axistune::gui::DriveController;
 using axistune::gui::DriveReply;
 using axistune::gui::DriveRequest;
+using axistune::testing::longFrf;
 using axistune::testing::waitUntil;
 
 namespace {
@@ -44,21 +46,6 @@ DriveReply await(DriveRequest* r)
     Caught c(r);
     waitUntil([&] { return c.reply.has_value(); }, 30000);
     return c.reply ? *c.reply : DriveReply{};
-}
-
-/// An FRF test that takes several seconds of wall time on the simulator (as tst_drivecontroller).
-axistune::device::TestRequest longFrf(const std::string& axis)
-{
-    axistune::device::TestRequest t;
-    t.axis = axis;
-    t.type = axistune::device::TestType::Frf;
-    t.fminHz = 2.0;
-    t.fmaxHz = 1000.0;
-    t.points = 300;
-    t.amplitudePct = 3.0;
-    t.settleS = 0.5;
-    t.minMeasureS = 1.0;
-    return t;
 }
 
 /// The long FRF with trace divider 3: the test changes trace.divider while it runs.
