@@ -4,6 +4,7 @@
 // and a whole multi-sweep FRF test versus the embedded simulated drive. The server runs in-process on its own thread.
 #include "core/device/ModbusDrive.h"
 #include "core/device/SimDriveServer.h"
+#include "core/device/TestRunner.h"
 
 #include <benchmark/benchmark.h>
 #include <thread>
@@ -41,16 +42,11 @@ TestRequest stepRequest(double durationS)
     return r;
 }
 
-bool runTest(Drive& d, double durationS)
+bool runStep(Drive& d, double durationS)
 {
-    if (!d.startTest(stepRequest(durationS)))
-        return false;
-    for (int i = 0; i < 1000000; ++i) {
-        auto s = d.pollTest();
-        if (!s || s->state != TestState::Running)
-            return s && s->state == TestState::Completed;
-    }
-    return false;
+    RunOptions o;
+    o.readTrace = false; // the benchmarks read it themselves
+    return runTest(d, stepRequest(durationS), o).ok();
 }
 
 void BM_TraceReadout(benchmark::State& state)
@@ -58,7 +54,7 @@ void BM_TraceReadout(benchmark::State& state)
     Server srv;
     auto d = std::move(connectAny({srv.uri(), 1})).value();
     const double duration = static_cast<double>(state.range(0)) / 4000.0; // trace at 4 kHz
-    if (!runTest(*d, duration)) {
+    if (!runStep(*d, duration)) {
         state.SkipWithError("test failed");
         return;
     }
@@ -85,7 +81,7 @@ void BM_StepTest(benchmark::State& state, bool modbus)
         srv = std::make_unique<Server>();
     auto d = std::move(connectAny({modbus ? srv->uri() : "sim:vmc", 1})).value();
     for (auto _ : state) {
-        if (!runTest(*d, 1.0)) {
+        if (!runStep(*d, 1.0)) {
             state.SkipWithError("test failed");
             return;
         }
@@ -108,20 +104,15 @@ void BM_MultiSweep(benchmark::State& state, bool modbus)
     r.axis = d->identify()->axes.front();
     r.type = TestType::Frf;
     r.amplitudePct = 5.0;
+    RunOptions o;
+    o.readTrace = false;
     for (auto _ : state) {
-        bool ok = d->startTest(r).ok();
-        for (int i = 0; ok && i < 10000000; ++i) {
-            auto s = d->pollTest();
-            ok = s.ok() && s->state != TestState::Faulted && s->state != TestState::Aborted;
-            if (!ok || s->state == TestState::Completed)
-                break;
-        }
-        auto f = d->readFrequencyResponse();
-        if (!ok || !f) {
-            state.SkipWithError("FRF test failed");
+        auto run = runTest(*d, r, o);
+        if (!run) {
+            state.SkipWithError(("FRF test failed: " + run.error().detail).c_str());
             return;
         }
-        state.counters["motion_s"] = f->motionTimeS;
+        state.counters["motion_s"] = run->frf->motionTimeS;
     }
 }
 BENCHMARK_CAPTURE(BM_MultiSweep, embedded, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);

@@ -12,6 +12,7 @@
 // former 3.6e6 counts/rev encoder, which hid the kilohertz modes; the preset now has 2^29).
 // AXISTUNE_BENCH_DUMP=1 prints every line to stderr: f, dB error, phase error, valid, σ_H/|H|, |T| [dB].
 #include "core/device/SimulatedDrive.h"
+#include "core/device/TestRunner.h"
 #include "core/dsp/InjectionHold.h"
 
 #include <benchmark/benchmark.h>
@@ -86,18 +87,14 @@ void runFrf(benchmark::State& state, const std::string& kind, const TestRequest&
         (*drive)->simulator("C")->setNonlinearities(simulation(kind));
         (*drive)->setSliceSeconds(1.0);
         auto once = [&](const TestRequest& r) -> bool {
-            if (auto st = (*drive)->startTest(r); !st) {
-                state.SkipWithError(st.error().detail.c_str());
+            RunOptions o;
+            o.readTrace = false;
+            auto run = runTest(**drive, r, o);
+            if (!run) {
+                state.SkipWithError(run.error().detail.c_str());
                 return false;
             }
-            while ((*drive)->pollTest()->state == TestState::Running) {
-            }
-            auto m = (*drive)->readFrequencyResponse();
-            if (!m) {
-                state.SkipWithError(m.error().detail.c_str());
-                return false;
-            }
-            last = std::move(m).value();
+            last = std::move(*run->frf);
             motion += last.motionTimeS;
             return true;
         };

@@ -182,6 +182,11 @@
         <translation>ユーザーにより中止されました</translation>
     </message>
     <message>
+        <location filename="../app/gui/DriveController.cpp" line="155" />
+        <source>Aborted by the user before the test started</source>
+        <translation>テスト開始前にユーザーにより中止されました</translation>
+    </message>
+    <message>
         <location filename="../app/gui/DriveController.cpp" line="180" />
         <source>The test ended: %1</source>
         <translation>テストが終了しました: %1</translation>
@@ -3927,6 +3932,11 @@
         <location filename="../app/gui/MainWindow.cpp" line="317" />
         <source>Test running</source>
         <translation>テスト実行中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="195" />
+        <source>Saving session %p%</source>
+        <translation>セッション保存中 %p%</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="201" />

@@ -6,6 +6,7 @@
 #include "core/device/Drive.h"
 #include "core/device/MultisineTest.h"
 #include "core/device/SimulatedDrive.h"
+#include "core/device/TestRunner.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
 #include "core/io/SweepCsv.h"
@@ -163,12 +164,9 @@ Status multisineRequest(const CaptureOptions& o, device::TestRequest& req)
 }
 
 /// Writes the FRF (and the sine-stream recording) of a completed FRF test; prints a JSON summary.
-int writeFrfResult(const std::string& cmd, device::Drive& drive, const CaptureOptions& o)
+int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, const CaptureOptions& o)
 {
-    auto res = drive.readFrequencyResponse();
-    if (!res)
-        return reportError(cmd, res.error());
-    auto m = std::make_unique<device::FrfMeasurement>(std::move(res).value());
+    auto m = std::make_unique<device::FrfMeasurement>(std::move(measurement));
     m->frf.metadata["connection"] = o.connect;
     if (auto st = io::writeFrfCsvFile(o.out, m->frf); !st)
         return reportError(cmd, st.error());
@@ -262,32 +260,19 @@ int runCapture(const CaptureOptions& o)
     auto plan = (*drive)->planTest(req);
     if (!plan)
         return reportError(cmd, plan.error());
-    if (auto st = (*drive)->startTest(req); !st)
-        return reportError(cmd, st.error());
-    while (true) {
-        auto status = (*drive)->pollTest();
-        if (!status)
-            return reportError(cmd, status.error());
-        if (status->state == device::TestState::Completed)
-            break;
-        if (status->state != device::TestState::Running)
-            return reportError(cmd, makeError(ErrorCode::Safety, std::string("test ") + device::testStateName(status->state)
-                                                                     + ": " + status->detail));
-    }
+    device::RunOptions run;
+    run.readTrace = o.test != "frf" || !o.traceOut.empty();
+    auto done = device::runTest(**drive, req, run);
+    if (!done)
+        return reportError(cmd, done.error());
     if (o.test == "frf") {
         if (!o.traceOut.empty()) {
-            auto trace = (*drive)->readTrace();
-            if (!trace)
-                return reportError(cmd, trace.error());
-            if (auto st = io::writeCaptureCsvFile(o.traceOut, *trace); !st)
+            if (auto st = io::writeCaptureCsvFile(o.traceOut, *done->trace); !st)
                 return reportError(cmd, st.error());
         }
-        return writeFrfResult(cmd, **drive, o);
+        return writeFrfResult(cmd, std::move(*done->frf), o);
     }
-    auto trace = (*drive)->readTrace();
-    if (!trace)
-        return reportError(cmd, trace.error());
-    auto cap = std::move(trace).value();
+    auto cap = std::move(*done->trace);
     cap.metadata["test"] = o.test;
     cap.metadata["connection"] = o.connect;
     if (auto st = io::writeCaptureCsvFile(o.out, cap); !st)

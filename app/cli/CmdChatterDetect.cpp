@@ -4,6 +4,7 @@
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/io/CaptureCsv.h"
+#include "core/machining/StageFromParameters.h"
 #include "core/machining/StageJson.h"
 #include "core/sim/MachineDefinition.h"
 
@@ -37,16 +38,7 @@ Result<machining::StageDescription> stageFromCapture(const model::Capture& cap, 
     if (!a)
         return makeError(ErrorCode::BadInput,
                          src + ", metadata 'axis=" + ax->second + "': not an axis of " + m->second);
-    const auto v = [a](const char* k) { return a->values.at(k); };
-    machining::StageDescription d;
-    d.leadMPerRev = v("plant.screw_lead") * 2.0 * 3.14159265358979323846;
-    d.torqueConstantNmPerA = v("motor.torque_constant");
-    d.motor = {v("plant.inertia_motor"), v("plant.viscous_motor"), v("plant.coulomb_motor")};
-    d.load = {v("plant.inertia_load"), v("plant.viscous_load"), v("plant.coulomb_load")};
-    d.couplingStiffnessNmPerRad = v("plant.coupling_stiffness");
-    d.couplingDampingNmsPerRad = v("plant.coupling_damping");
-    d.hasCoupling = d.couplingStiffnessNmPerRad > 0.0;
-    return d;
+    return machining::stageFromAxisParameters(a->values);
 }
 
 int runChatterDetect(const ChatterDetectArgs& a)

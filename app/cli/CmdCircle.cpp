@@ -7,6 +7,7 @@
 #include "app/cli/CliCommand.h"
 #include "core/device/CircleDriveTest.h"
 #include "core/device/Drive.h"
+#include "core/device/TestRunner.h"
 #include "core/io/BallBarCsv.h"
 #include "core/io/CaptureCsv.h"
 #include "core/model/Number.h"
@@ -71,25 +72,10 @@ Result<SetItem> parseSet(const std::string& item, const std::string& plane)
 
 Result<DriveCircle> measureCircleOnDrive(device::Drive& drive, const sim::CircleTestOptions& c)
 {
-    const device::TestRequest r = device::circleRequestOf(c);
-    if (auto st = drive.startTest(r); !st)
-        return st.error();
-    for (;;) {
-        auto s = drive.pollTest();
-        if (!s) {
-            (void)drive.abortTest();
-            return s.error();
-        }
-        if (s->state == device::TestState::Running)
-            continue;
-        if (s->state != device::TestState::Completed)
-            return makeError(s->state == device::TestState::Faulted ? ErrorCode::Safety : ErrorCode::Aborted,
-                             "circle test " + std::string(device::testStateName(s->state)) + ": " + s->detail);
-        break;
-    }
-    auto trace = drive.readTrace();
-    if (!trace)
-        return trace.error();
+    auto run = device::runTest(drive, device::circleRequestOf(c));
+    if (!run)
+        return run.error();
+    auto& trace = run->trace;
     auto res = sim::evaluateCircleTrace(*trace, c);
     if (!res)
         return res.error();

@@ -21,11 +21,11 @@ AbortGuard::AbortGuard(AppContext& ctx, ApplyPage* apply, std::vector<TestRunPag
         m_ctx.log(tr("Restored %1 from before the write.").arg(m_what));
         done(tr("The previous values of %1 were restored on the drive and read back.").arg(m_what));
     });
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (m_restoring && r.kind == DriveReply::Kind::WriteParameters && !r.ok) {
-            m_restoring = false;
-            done(tr("Restoring %1 failed (%2): the applied values may still be active on the drive.").arg(m_what, r.error));
-        }
+    connect(m_apply, &ApplyPage::restoreFailed, this, [this](const QString& error) {
+        if (!m_restoring)
+            return;
+        m_restoring = false;
+        done(tr("Restoring %1 failed (%2): the applied values may still be active on the drive.").arg(m_what, error));
     });
     // A connection lost while nothing runs: nothing can be restored; the session records it.
     connect(&m_ctx.drive(), &DriveController::connectionLost, this, [this](const QString& why) {

@@ -16,6 +16,7 @@
 
 class QWidget;
 
+#include <functional>
 #include <map>
 #include <memory>
 
@@ -48,8 +49,16 @@ public:
     model::ParameterValues proposed(const QString& axis) const;
 
     /// Saves a session (fills machine, operator and axes of the machine when empty), logs the result
-    /// and emits sessionSaved. Errors are logged and returned.
+    /// and emits sessionSaved. Errors are logged and returned. The store is written on the store thread
+    /// (SessionSaver); `done` runs on the GUI thread with the answer unless `context` is gone.
+    void saveSessionAsync(store::SessionRecord record, QObject* context,
+                          std::function<void(Result<std::int64_t>)> done = {});
+    /// The same for callers that need the id at once: the GUI event loop keeps running (timers, repaints,
+    /// drive replies; user input waits) until the store thread answers, with the progress in
+    /// sessionSaveProgress.
     Result<std::int64_t> saveSession(store::SessionRecord record);
+    /// Blocks until every queued save is in the store (the main window calls it when it closes).
+    void waitForSaves();
 
     /// Asks the main window to show `widget` as a document tab in the centre (it takes ownership).
     /// Wizards use it for plots the user keeps after the wizard closes.
@@ -62,6 +71,9 @@ signals:
     void logged(const QString& timeStampedMessage);
     void proposedChanged(const QString& axis);
     void sessionSaved(qint64 id);
+    /// A session save in progress (fraction written 0..1), and whether saves are queued.
+    void sessionSaveProgress(double fraction);
+    void savingChanged(bool saving);
     /// Applied parameters (journal written) for an axis.
     void parametersApplied(const QString& axis);
     /// openDatabase() opened another store (or failed: database() is null).
@@ -71,6 +83,7 @@ signals:
 
 private:
     DriveController* m_drive = nullptr;
+    class SessionSaver* m_saver = nullptr;
     std::unique_ptr<store::Database> m_db;
     QString m_dbPath;
     QString m_operator;

@@ -151,7 +151,6 @@ ConnectDialog::ConnectDialog(AppContext& ctx, QWidget* parent) : QDialog(parent)
     });
     connect(m_buttons, &QDialogButtonBox::accepted, this, &ConnectDialog::startConnect);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    connect(&m_ctx.drive(), &DriveController::replied, this, &ConnectDialog::onReply);
     retranslateUi();
     updateMode();
 }
@@ -323,7 +322,9 @@ void ConnectDialog::startConnect()
     m_status->setStyleSheet(QString());
     m_status->setText(tr("Connecting to %1 …").arg(uri()));
     m_connectButton->setEnabled(false);
-    m_request = m_ctx.drive().connectTo(uri(), seed());
+    auto* req = m_ctx.drive().connectTo(uri(), seed());
+    m_request = req->id();
+    connect(req, &DriveRequest::finished, this, &ConnectDialog::onReply);
 }
 
 void ConnectDialog::onReply(const DriveReply& reply)

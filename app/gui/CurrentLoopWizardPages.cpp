@@ -134,7 +134,33 @@ CurrentLoopMotorPage::CurrentLoopMotorPage(AppContext& ctx, CurrentLoopData& sha
         });
     connect(m_read, &QPushButton::clicked, this, &CurrentLoopMotorPage::readFromDrive);
     connect(m_fromProfile, &QPushButton::clicked, this, &CurrentLoopMotorPage::takeFromProfile);
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+    updateCheck();
+}
+
+void CurrentLoopMotorPage::initializePage()
+{
+    m_axis->clear();
+    m_axis->addItems(m_ctx.axes());
+    const bool connected = m_ctx.drive().isConnected() && m_axis->count() > 0;
+    m_read->setEnabled(connected);
+    m_fromProfile->setEnabled(m_ctx.database() && !m_ctx.machine().isEmpty());
+    if (connected)
+        readFromDrive();
+    else
+        m_source->setText(tr("Not connected: enter the motor data (defaults: the rotary motor of Table 2.2, rms "
+                             "values). Apply needs a connection."));
+}
+
+void CurrentLoopMotorPage::readFromDrive()
+{
+    if (m_axis->currentText().isEmpty() || !m_ctx.drive().isConnected())
+        return;
+    m_read->setEnabled(false);
+    auto* req = m_ctx.drive().readParameters(m_axis->currentText(),
+                                             {"motor.max_current", "drive.max_voltage", "motor.rated_current",
+                                              "motor.torque_constant", "current.period", "current.dead_time"});
+    m_readRequest = req->id();
+    connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
         if (r.id != m_readRequest)
             return;
         m_readRequest = 0;
@@ -173,31 +199,6 @@ CurrentLoopMotorPage::CurrentLoopMotorPage(AppContext& ctx, CurrentLoopData& sha
                 .arg(m_d.driveDeadTimeS * 1e6, 0, 'f', 3));
         emit completeChanged();
     });
-    updateCheck();
-}
-
-void CurrentLoopMotorPage::initializePage()
-{
-    m_axis->clear();
-    m_axis->addItems(m_ctx.axes());
-    const bool connected = m_ctx.drive().isConnected() && m_axis->count() > 0;
-    m_read->setEnabled(connected);
-    m_fromProfile->setEnabled(m_ctx.database() && !m_ctx.machine().isEmpty());
-    if (connected)
-        readFromDrive();
-    else
-        m_source->setText(tr("Not connected: enter the motor data (defaults: the rotary motor of Table 2.2, rms "
-                             "values). Apply needs a connection."));
-}
-
-void CurrentLoopMotorPage::readFromDrive()
-{
-    if (m_axis->currentText().isEmpty() || !m_ctx.drive().isConnected())
-        return;
-    m_read->setEnabled(false);
-    m_readRequest = m_ctx.drive().readParameters(m_axis->currentText(),
-                                                 {"motor.max_current", "drive.max_voltage", "motor.rated_current",
-                                                  "motor.torque_constant", "current.period", "current.dead_time"});
     emit completeChanged();
 }
 

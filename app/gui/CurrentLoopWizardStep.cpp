@@ -110,10 +110,6 @@ CurrentLoopStepPage::CurrentLoopStepPage(AppContext& ctx, CurrentLoopData& share
         m_amp->setEnabled(on);
         m_record->setEnabled(on);
     });
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id == m_limitsRequest)
-            showLimits(r);
-    });
 }
 
 double CurrentLoopStepPage::defaultStepAmplitude(const CurrentLoopData& d)
@@ -168,7 +164,12 @@ void CurrentLoopStepPage::initializePage()
         // The current step's limits are the drive's own (Drive::limits, docs/drive-seam.md).
         m_limits.reset();
         m_measureNote->setText(m_noteDefault + " " + tr("Reading the drive's limits…"));
-        m_limitsRequest = m_ctx.drive().describeAxis(m_d.axis);
+        auto* req = m_ctx.drive().describeAxis(m_d.axis);
+        m_limitsRequest = req->id();
+        connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
+            if (r.id == m_limitsRequest)
+                showLimits(r);
+        });
     }
 }
 
@@ -240,7 +241,22 @@ CurrentLoopVerifyPage::CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& s
     m_text->setWordWrap(true);
     m_text->setTextInteractionFlags(Qt::TextSelectableByMouse);
     lay->addWidget(m_text);
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
+}
+
+void CurrentLoopVerifyPage::initializePage()
+{
+    m_plot->clear();
+    m_d.verified = false;
+    if (!m_ctx.drive().isConnected() || m_d.axis.isEmpty()) {
+        m_text->setText(tr("Not connected: nothing to verify."));
+        return;
+    }
+    // Read back even without apply: the measured step ran with the gains the drive holds.
+    m_text->setText(tr("Reading back…"));
+    auto* req = m_ctx.drive().readParameters(
+        m_d.axis, {"current.kp", "current.ki", "current.alpha", "current.period", "current.dead_time"});
+    m_readRequest = req->id();
+    connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
         if (r.id != m_readRequest)
             return;
         m_readRequest = 0;
@@ -262,20 +278,6 @@ CurrentLoopVerifyPage::CurrentLoopVerifyPage(AppContext& ctx, CurrentLoopData& s
         showResult();
         emit completeChanged();
     });
-}
-
-void CurrentLoopVerifyPage::initializePage()
-{
-    m_plot->clear();
-    m_d.verified = false;
-    if (!m_ctx.drive().isConnected() || m_d.axis.isEmpty()) {
-        m_text->setText(tr("Not connected: nothing to verify."));
-        return;
-    }
-    // Read back even without apply: the measured step ran with the gains the drive holds.
-    m_text->setText(tr("Reading back…"));
-    m_readRequest = m_ctx.drive().readParameters(
-        m_d.axis, {"current.kp", "current.ki", "current.alpha", "current.period", "current.dead_time"});
 }
 
 void CurrentLoopVerifyPage::showResult()

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/DriveController.h"
+
 #include "app/gui/WidgetUtil.h"
+#include "core/device/TestRunner.h"
 
 #include <QCoreApplication>
 #include <QMetaObject>
@@ -21,8 +23,6 @@ bool isConnectionError(ErrorCode code) { return code == ErrorCode::Device || cod
 
 // ---------------------------------------------------------------------------------------------
 // Worker (runs on the drive thread)
-
-DriveWorker::DriveWorker(std::shared_ptr<std::atomic<bool>> abortFlag) : m_abort(std::move(abortFlag)) {}
 
 DriveWorker::~DriveWorker() = default;
 
@@ -140,62 +140,51 @@ DriveReply DriveWorker::doWrite(int id, const QString& axis, const model::Parame
     return r;
 }
 
-DriveReply DriveWorker::doTest(int id, const device::TestRequest& request)
+DriveReply DriveWorker::doTest(int id, const device::TestRequest& request, std::shared_ptr<std::atomic<bool>> cancel)
 {
     DriveReply r;
     r.id = id;
     r.kind = DriveReply::Kind::Test;
     r.axis = qs(request.axis);
+    r.testState = device::TestState::Aborted;
+    if (cancel->load()) {
+        // Aborted while queued: never started, nothing changed on the drive.
+        r.code = ErrorCode::Aborted;
+        r.error = QCoreApplication::translate("DriveController", "Aborted by the user before the test started");
+        return r;
+    }
     if (!m_drive)
         return fail(r, {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
-    if (auto s = m_drive->startTest(request); !s)
-        return fail(r, s.error());
+    device::RunOptions o;
+    o.abort = cancel.get();
     double lastReported = -1.0;
-    for (;;) {
-        if (m_abort->load()) {
-            auto s = m_drive->abortTest();
-            r.testState = device::TestState::Aborted;
+    o.progress = [&](double f, const std::string& detail) {
+        if (f - lastReported >= 0.005 || f >= 1.0) {
+            lastReported = f;
+            emit progress(id, f, qs(detail));
+        }
+    };
+    auto run = device::runTest(*m_drive, request, o);
+    if (!run) {
+        if (cancel->load() && run.error().code == ErrorCode::Aborted) {
             r.code = ErrorCode::Aborted;
             r.error = QCoreApplication::translate("DriveController", "Aborted by the user");
-            if (!s)
-                return fail(r, s.error());
             return r;
         }
-        auto st = m_drive->pollTest();
-        if (!st) {
-            // Lost link or fault: stop the motion if the drive still listens, then report.
-            (void)m_drive->abortTest();
-            r.testState = device::TestState::Aborted;
-            return fail(r, st.error());
-        }
-        if (st->progress - lastReported >= 0.005 || st->state != device::TestState::Running) {
-            lastReported = st->progress;
-            emit progress(id, st->progress, qs(st->detail));
-        }
-        r.testState = st->state;
-        if (st->state == device::TestState::Running)
-            continue;
-        if (st->state != device::TestState::Completed) {
-            r.code = st->state == device::TestState::Faulted ? ErrorCode::Device : ErrorCode::Aborted;
-            r.error = st->detail.empty() ? QCoreApplication::translate("DriveController", "The test ended: %1")
-                                               .arg(qs(device::testStateName(st->state)))
-                                         : qs(st->detail);
-            (void)m_drive->abortTest();
+        r.testState = run.error().code == ErrorCode::Safety ? device::TestState::Faulted : device::TestState::Aborted;
+        // A fault stopped by the drive is a refused run, not a lost link.
+        if (run.error().code == ErrorCode::Safety) {
+            r.code = ErrorCode::Device;
+            r.error = qs(run.error().detail);
             return r;
         }
-        break;
+        return fail(r, run.error());
     }
-    if (request.type == device::TestType::Frf) {
-        auto f = m_drive->readFrequencyResponse();
-        if (!f)
-            return fail(r, f.error());
-        r.frf = std::make_shared<const device::FrfMeasurement>(std::move(f).value());
-    } else {
-        auto c = m_drive->readTrace();
-        if (!c)
-            return fail(r, c.error());
-        r.capture = std::make_shared<const model::Capture>(std::move(c).value());
-    }
+    r.testState = device::TestState::Completed;
+    if (run->frf)
+        r.frf = std::make_shared<const device::FrfMeasurement>(std::move(*run->frf));
+    else if (run->trace)
+        r.capture = std::make_shared<const model::Capture>(std::move(*run->trace));
     r.ok = true;
     return r;
 }
@@ -203,16 +192,29 @@ DriveReply DriveWorker::doTest(int id, const device::TestRequest& request)
 // ---------------------------------------------------------------------------------------------
 // Controller (GUI thread)
 
-DriveController::DriveController(QObject* parent)
-    : QObject(parent), m_abort(std::make_shared<std::atomic<bool>>(false))
+DriveRequest::DriveRequest(int id, DriveReply::Kind kind, QObject* parent) : QObject(parent), m_id(id), m_kind(kind) {}
+
+void DriveRequest::abort()
+{
+    m_cancel->store(true);
+}
+
+DriveController::DriveController(QObject* parent) : QObject(parent)
 {
     qRegisterMetaType<axistune::gui::DriveReply>();
     m_thread = new QThread(this);
     m_thread->setObjectName("drive");
-    m_worker = new DriveWorker(m_abort);
+    m_worker = new DriveWorker;
     m_worker->moveToThread(m_thread);
     connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
-    connect(m_worker, &DriveWorker::progress, this, &DriveController::progress, Qt::QueuedConnection);
+    connect(
+        m_worker, &DriveWorker::progress, this,
+        [this](int id, double f, const QString& detail) {
+            if (auto it = m_open.find(id); it != m_open.end() && it->second.request)
+                emit it->second.request->progress(f, detail);
+            emit progress(id, f, detail);
+        },
+        Qt::QueuedConnection);
     connect(
         m_worker, &DriveWorker::connectionLost, this,
         [this](const QString& reason) {
@@ -228,32 +230,35 @@ DriveController::DriveController(QObject* parent)
 
 DriveController::~DriveController()
 {
-    m_abort->store(true);
+    abort();
     m_thread->quit();
     m_thread->wait();
 }
 
-int DriveController::post(std::function<DriveReply(DriveWorker&)> job)
+DriveRequest* DriveController::post(DriveReply::Kind kind, std::function<DriveReply(DriveWorker&, int)> job)
 {
     const int id = m_nextId++;
+    auto* req = new DriveRequest(id, kind, this);
+    m_open[id] = {req, req->m_cancel};
     if (m_pending++ == 0)
         emit busyChanged(true);
     QPointer<DriveController> self(this);
     DriveWorker* w = m_worker;
     QMetaObject::invokeMethod(
         w,
-        [self, w, job = std::move(job)]() {
-            DriveReply r = job(*w);
+        [self, w, id, job = std::move(job)]() {
+            DriveReply r = job(*w, id);
             if (self)
                 QMetaObject::invokeMethod(
-                    self.data(), [self, r]() {
+                    self.data(),
+                    [self, r]() {
                         if (self)
                             self->onReply(r);
                     },
                     Qt::QueuedConnection);
         },
         Qt::QueuedConnection);
-    return id;
+    return req;
 }
 
 void DriveController::onReply(const DriveReply& reply)
@@ -270,54 +275,63 @@ void DriveController::onReply(const DriveReply& reply)
     }
     if (--m_pending == 0)
         emit busyChanged(false);
+    QPointer<DriveRequest> req;
+    if (auto it = m_open.find(reply.id); it != m_open.end()) {
+        req = it->second.request;
+        m_open.erase(it);
+    }
+    if (req) {
+        req->m_finished = true;
+        emit req->finished(reply);
+        req->deleteLater();
+    }
     emit replied(reply);
 }
 
-int DriveController::connectTo(const QString& uri, quint64 seed)
+DriveRequest* DriveController::connectTo(const QString& uri, quint64 seed)
 {
     m_uri = uri;
-    const int id = m_nextId;
-    post([id, uri, seed](DriveWorker& w) { return w.doConnect(id, uri, seed); });
-    return id;
+    return post(DriveReply::Kind::Connect, [uri, seed](DriveWorker& w, int id) { return w.doConnect(id, uri, seed); });
 }
 
-int DriveController::disconnectFrom()
+DriveRequest* DriveController::disconnectFrom()
 {
-    const int id = m_nextId;
-    post([id](DriveWorker& w) { return w.doDisconnect(id); });
-    return id;
+    return post(DriveReply::Kind::Disconnect, [](DriveWorker& w, int id) { return w.doDisconnect(id); });
 }
 
-int DriveController::readMetadata(const QString& axis)
+DriveRequest* DriveController::readMetadata(const QString& axis)
 {
-    const int id = m_nextId;
-    post([id, axis](DriveWorker& w) { return w.doMetadata(id, axis); });
-    return id;
+    return post(DriveReply::Kind::Metadata, [axis](DriveWorker& w, int id) { return w.doMetadata(id, axis); });
 }
 
-int DriveController::readParameters(const QString& axis, const QStringList& keys)
+DriveRequest* DriveController::readParameters(const QString& axis, const QStringList& keys)
 {
-    const int id = m_nextId;
-    post([id, axis, keys](DriveWorker& w) { return w.doRead(id, axis, keys); });
-    return id;
+    return post(DriveReply::Kind::ReadParameters,
+                [axis, keys](DriveWorker& w, int id) { return w.doRead(id, axis, keys); });
 }
 
-int DriveController::writeParameters(const QString& axis, const model::ParameterValues& values)
+DriveRequest* DriveController::writeParameters(const QString& axis, const model::ParameterValues& values)
 {
-    const int id = m_nextId;
-    post([id, axis, values](DriveWorker& w) { return w.doWrite(id, axis, values); });
-    return id;
+    return post(DriveReply::Kind::WriteParameters,
+                [axis, values](DriveWorker& w, int id) { return w.doWrite(id, axis, values); });
 }
 
-int DriveController::runTest(const device::TestRequest& request)
+DriveRequest* DriveController::runTest(const device::TestRequest& request)
 {
-    const int id = m_nextId;
-    m_abort->store(false);
-    post([id, request](DriveWorker& w) { return w.doTest(id, request); });
-    return id;
+    // The token exists before the job is queued: an abort() from now on reaches this test.
+    auto token = std::make_shared<std::atomic<bool>>(false);
+    DriveRequest* req =
+        post(DriveReply::Kind::Test, [request, token](DriveWorker& w, int id) { return w.doTest(id, request, token); });
+    req->m_cancel = token;
+    m_open[req->id()].cancel = token;
+    return req;
 }
 
-void DriveController::abort() { m_abort->store(true); }
+void DriveController::abort()
+{
+    for (const auto& [id, open] : m_open)
+        open.cancel->store(true);
+}
 
 }  // namespace gui
 }  // namespace axistune

@@ -2,12 +2,15 @@
 #pragma once
 // The drive link of the GUI (STYLE.md "A device seam"): a DriveWorker on its own QThread owns the
 // device::Drive (libmodbus contexts are not thread-safe); the DriveController is the GUI-side facade.
-// Every request returns an id at once; the result arrives as one `replied` signal with that id.
-// The GUI never blocks on the drive.
+// Every request returns its own DriveRequest at once, and the requester connects to that object's
+// `finished` (and, for tests, `progress`) signal: no listener filters the replies of others
+// (docs/architecture.md "The drive link of the GUI"). The GUI never blocks on the drive.
 //
-// Tests run on the worker in a poll loop: progress is relayed as `progress` signals, and abort()
-// sets an atomic flag that the loop checks between polls, so Abort stops the motion at once even
-// while the worker is busy (the drive's abortTest restores the parameters from before the test).
+// Tests run on the worker through device::runTest (core/device/TestRunner.h). Each test request has its
+// own cancel token, created when it is queued: DriveRequest::abort() (or DriveController::abort() for
+// every queued and running test) sets it, so an Abort that comes before the worker reaches the test
+// cancels it (it never starts; nothing changes on the drive), and one that comes while it runs stops the
+// motion at once (the drive's abortTest restores the parameters from before the test).
 // A device error during a test (lost connection, timeout, drive fault) aborts the test, and a lost
 // connection is announced by `connectionLost`.
 
@@ -17,11 +20,13 @@
 #include "core/model/Result.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 #include <QStringList>
 
 #include <atomic>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -60,6 +65,34 @@ struct DriveReply {
 
 class DriveWorker;
 
+/// One request to the drive and its answer. Created by the DriveController, which deletes it (deleteLater)
+/// after `finished`; keep a QPointer when it must outlive that. Connect at once after the call: the reply
+/// is delivered through the event loop, never before the caller returns.
+class DriveRequest : public QObject {
+    Q_OBJECT
+public:
+    int id() const { return m_id; }
+    DriveReply::Kind kind() const { return m_kind; }
+    bool isFinished() const { return m_finished; }
+    /// Tests: cancels the test while it is queued (it never starts) or stops it while it runs (thread-safe
+    /// flag, checked by device::runTest). Other requests: no effect.
+    void abort();
+
+signals:
+    /// Progress of a running test, 0..1 (never falling), with the drive's detail text.
+    void progress(double fraction, const QString& detail);
+    /// The answer; emitted once.
+    void finished(const axistune::gui::DriveReply& reply);
+
+private:
+    friend class DriveController;
+    DriveRequest(int id, DriveReply::Kind kind, QObject* parent);
+    int m_id = 0;
+    DriveReply::Kind m_kind = DriveReply::Kind::Connect;
+    bool m_finished = false;
+    std::shared_ptr<std::atomic<bool>> m_cancel = std::make_shared<std::atomic<bool>>(false);
+};
+
 class DriveController : public QObject {
     Q_OBJECT
 public:
@@ -67,22 +100,24 @@ public:
     ~DriveController() override;  ///< aborts a running test and joins the worker thread
 
     /// "sim:PRESET" or "modbus://HOST:PORT"; replaces an existing connection.
-    int connectTo(const QString& uri, quint64 seed = 1);
-    int disconnectFrom();
-    int readMetadata(const QString& axis);
+    DriveRequest* connectTo(const QString& uri, quint64 seed = 1);
+    DriveRequest* disconnectFrom();
+    DriveRequest* readMetadata(const QString& axis);
     /// Empty keys: every parameter of the axis.
-    int readParameters(const QString& axis, const QStringList& keys = {});
+    DriveRequest* readParameters(const QString& axis, const QStringList& keys = {});
     /// Writes (the drive range-checks everything before changing anything), then reads the written
     /// keys back; the reply fails with ErrorCode::Device when a read-back value differs.
-    int writeParameters(const QString& axis, const model::ParameterValues& values);
-    /// Starts a test and polls it to its end; the reply carries the trace or the FRF.
-    int runTest(const device::TestRequest& request);
+    DriveRequest* writeParameters(const QString& axis, const model::ParameterValues& values);
+    /// Queues a test and runs it to its end (device::runTest); the reply carries the trace and, for FRF
+    /// tests, the FRF (evaluated on the host when the drive only streams samples).
+    DriveRequest* runTest(const device::TestRequest& request);
     /// The drive's capabilities and limits on an axis (reply kind Describe; DriveControllerDescribe.cpp).
-    int describeAxis(const QString& axis);
+    DriveRequest* describeAxis(const QString& axis);
     /// The drive's plan of a request before it runs (reply kind Plan): motion time and record length, or
     /// the drive's reason to refuse the request.
-    int planTest(const device::TestRequest& request);
-    /// Stops the running test at once (thread-safe; no-op when none runs).
+    DriveRequest* planTest(const device::TestRequest& request);
+    /// Aborts every queued test (they never start) and the running one (stopped at once, parameters
+    /// restored). Tests queued after the call run normally.
     void abort();
 
     bool isConnected() const { return m_connected; }
@@ -91,8 +126,10 @@ public:
     const std::optional<device::DriveIdentity>& identity() const { return m_identity; }
 
 signals:
+    /// Every reply, after its request's own `finished`: for observers (the log, the status bar), not for
+    /// requesters, which connect to their DriveRequest.
     void replied(const axistune::gui::DriveReply& reply);
-    /// Progress of the running test, 0..1, with the drive's detail text.
+    /// Progress of the running test, 0..1, with the drive's detail text (observers; see DriveRequest).
     void progress(int id, double fraction, const QString& detail);
     void connectionChanged(bool connected, const QString& description);
     /// The connection failed during a request (the request itself also replies with an error).
@@ -100,12 +137,16 @@ signals:
     void busyChanged(bool busy);
 
 private:
-    int post(std::function<DriveReply(DriveWorker&)> job);
+    DriveRequest* post(DriveReply::Kind kind, std::function<DriveReply(DriveWorker&, int id)> job);
     void onReply(const axistune::gui::DriveReply& reply);
 
     QThread* m_thread = nullptr;
     DriveWorker* m_worker = nullptr;
-    std::shared_ptr<std::atomic<bool>> m_abort;
+    struct Open {
+        QPointer<DriveRequest> request;
+        std::shared_ptr<std::atomic<bool>> cancel; ///< the request's token (kept if the request is deleted)
+    };
+    std::map<int, Open> m_open; ///< requests without a reply yet
     int m_nextId = 1;
     int m_pending = 0;
     bool m_connected = false;
@@ -117,7 +158,7 @@ private:
 class DriveWorker : public QObject {
     Q_OBJECT
 public:
-    explicit DriveWorker(std::shared_ptr<std::atomic<bool>> abortFlag);
+    DriveWorker() = default;
     ~DriveWorker() override;
 
     DriveReply doConnect(int id, const QString& uri, quint64 seed);
@@ -125,7 +166,8 @@ public:
     DriveReply doMetadata(int id, const QString& axis);
     DriveReply doRead(int id, const QString& axis, const QStringList& keys);
     DriveReply doWrite(int id, const QString& axis, const model::ParameterValues& values);
-    DriveReply doTest(int id, const device::TestRequest& request);
+    /// Runs the test unless `cancel` is set; `cancel` aborts it while it runs.
+    DriveReply doTest(int id, const device::TestRequest& request, std::shared_ptr<std::atomic<bool>> cancel);
     DriveReply doDescribe(int id, const QString& axis);
     DriveReply doPlan(int id, const device::TestRequest& request);
 
@@ -136,8 +178,16 @@ signals:
 private:
     DriveReply fail(DriveReply r, const Error& e);
     std::unique_ptr<device::Drive> m_drive;
-    std::shared_ptr<std::atomic<bool>> m_abort;
 };
+
+/// Connects a request's reply to a member of the requester and returns the request's id (which pages keep to
+/// ignore the reply of a request a newer one has superseded).
+template <class Receiver>
+int connectReply(DriveRequest* request, Receiver* receiver, void (Receiver::*slot)(const DriveReply&))
+{
+    QObject::connect(request, &DriveRequest::finished, receiver, slot);
+    return request->id();
+}
 
 /// True for errors that mean the link to the drive is gone (not a refused request).
 bool isConnectionError(ErrorCode code);

@@ -46,18 +46,14 @@ DriveReply DriveWorker::doPlan(int id, const device::TestRequest& request)
     return r;
 }
 
-int DriveController::describeAxis(const QString& axis)
+DriveRequest* DriveController::describeAxis(const QString& axis)
 {
-    const int id = m_nextId;
-    post([id, axis](DriveWorker& w) { return w.doDescribe(id, axis); });
-    return id;
+    return post(DriveReply::Kind::Describe, [axis](DriveWorker& w, int id) { return w.doDescribe(id, axis); });
 }
 
-int DriveController::planTest(const device::TestRequest& request)
+DriveRequest* DriveController::planTest(const device::TestRequest& request)
 {
-    const int id = m_nextId;
-    post([id, request](DriveWorker& w) { return w.doPlan(id, request); });
-    return id;
+    return post(DriveReply::Kind::Plan, [request](DriveWorker& w, int id) { return w.doPlan(id, request); });
 }
 
 } // namespace gui

@@ -99,23 +99,6 @@ FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx,
     });
     if (auto* axisBox = findChild<QComboBox*>())
         connect(axisBox, &QComboBox::currentTextChanged, this, [this] { readInfo(); });
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (!m_infoPending || (r.id != m_request && r.id != m_describeRequest))
-            return;
-        m_info.axis = r.axis;
-        if (r.id == m_request) {
-            m_info.values = r.ok ? r.values : model::ParameterValues{};
-        } else {
-            m_info.limits = r.ok ? r.limits : std::nullopt;
-            m_info.limitsError = r.ok ? QString() : r.error;
-        }
-        if (--m_answersPending > 0)
-            return;
-        m_infoPending = false;
-        showAmplitude();
-        emit driveInfoChanged();
-        emit completeChanged();
-    });
     showAmplitude();
 }
 
@@ -133,8 +116,29 @@ void FrfSafetyPage::readInfo()
     if (m_infoPending) {
         // The drive's values and its own limits (the wizard never assumes the simulator's).
         m_answersPending = 2;
-        m_request = m_ctx.drive().readParameters(axis());
-        m_describeRequest = m_ctx.drive().describeAxis(axis());
+        auto onAnswer = [this](const DriveReply& r) {
+            if (!m_infoPending || (r.id != m_request && r.id != m_describeRequest))
+                return;
+            m_info.axis = r.axis;
+            if (r.id == m_request) {
+                m_info.values = r.ok ? r.values : model::ParameterValues{};
+            } else {
+                m_info.limits = r.ok ? r.limits : std::nullopt;
+                m_info.limitsError = r.ok ? QString() : r.error;
+            }
+            if (--m_answersPending > 0)
+                return;
+            m_infoPending = false;
+            showAmplitude();
+            emit driveInfoChanged();
+            emit completeChanged();
+        };
+        auto* read = m_ctx.drive().readParameters(axis());
+        m_request = read->id();
+        connect(read, &DriveRequest::finished, this, onAnswer);
+        auto* describe = m_ctx.drive().describeAxis(axis());
+        m_describeRequest = describe->id();
+        connect(describe, &DriveRequest::finished, this, onAnswer);
     }
     emit completeChanged();
 }
@@ -227,24 +231,7 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
     registerField("fminHz", m_fmin, "value", SIGNAL(valueChanged(double)));
     registerField("fmaxHz", m_fmax, "value", SIGNAL(valueChanged(double)));
     registerField("points", m_points);
-    // The drive plans the test (Drive::planTest): its motion time, or its reason to refuse the request.
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id != m_planRequest)
-            return;
-        m_planRequest = -1;
-        const bool stale = m_pendingGeneration != m_generation;
-        m_pendingGeneration = -1;
-        if (stale) {  // the settings changed meanwhile
-            updateEstimate();
-            return;
-        }
-        m_planOk = r.ok && r.plan.has_value();
-        m_motionS = m_planOk ? r.plan->motionTimeS : kNaN;
-        m_estimate->setText(m_planOk ? tr("Estimated motion time: %1 s (settling included).").arg(m_motionS, 0, 'f', 1)
-                                     : tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>")
-                                           .arg(r.error.toHtmlEscaped()));
-        emit completeChanged();
-    });
+
     auto changed = [this] {
         ++m_generation;
         m_planOk = false;
@@ -299,7 +286,26 @@ void FrfConfigPage::updateEstimate()
     }
     m_estimate->setText(tr("Estimating the motion time…"));
     m_pendingGeneration = m_generation;
-    m_planRequest = m_ctx.drive().planTest(w->request());
+    // The drive plans the test (Drive::planTest): its motion time, or its reason to refuse the request.
+    auto* req = m_ctx.drive().planTest(w->request());
+    m_planRequest = req->id();
+    connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
+        if (r.id != m_planRequest)
+            return;
+        m_planRequest = -1;
+        const bool stale = m_pendingGeneration != m_generation;
+        m_pendingGeneration = -1;
+        if (stale) {  // the settings changed meanwhile
+            updateEstimate();
+            return;
+        }
+        m_planOk = r.ok && r.plan.has_value();
+        m_motionS = m_planOk ? r.plan->motionTimeS : kNaN;
+        m_estimate->setText(m_planOk ? tr("Estimated motion time: %1 s (settling included).").arg(m_motionS, 0, 'f', 1)
+                                     : tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>")
+                                           .arg(r.error.toHtmlEscaped()));
+        emit completeChanged();
+    });
 }
 
 bool FrfConfigPage::isComplete() const { return m_planOk && m_pendingGeneration < 0; }

@@ -7,6 +7,7 @@
 #include "core/ident/IdentificationJson.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/Constants.h"
 #include "core/model/InputLimits.h"
 #include "widgets/TimeTracePlot.h"
 
@@ -349,7 +350,7 @@ void IdentifyDialog::showValidation(const ident::ValidationRecord& rec, const id
 {
     const bool linear = motion == ident::AxisMotion::Linear;
     // Linear: positions in mm and the error in µm; rotary: rad and the error in degrees (own strips).
-    const double posScale = linear ? 1e3 : 1.0, errScale = linear ? 1e6 : 180.0 / 3.14159265358979323846;
+    const double posScale = linear ? 1e3 : 1.0, errScale = linear ? 1e6 : model::kDegPerRad;
     const QString posUnit = linear ? QStringLiteral("mm") : QStringLiteral("rad");
     const QString errUnit = linear ? QStringLiteral("um") : QStringLiteral("deg");
     std::vector<double> t(rec.position.size()), q(t.size()), qs(t.size()), e(t.size());

@@ -83,20 +83,6 @@ std::optional<double> meanStep(const io::BallBarTrace& t, int axis, const tuning
 CircleRunner::CircleRunner(AppContext& ctx, QObject* parent)
     : QObject(parent), m_ctx(ctx), m_abort(std::make_shared<std::atomic<bool>>(false))
 {
-    connect(&m_ctx.drive(), &DriveController::progress, this, [this](int id, double fraction, const QString&) {
-        if (!m_running || id != m_currentId)
-            return;
-        const int n = static_cast<int>(m_circles.size());
-        const int done = static_cast<int>(m_traces.size());
-        emit progress(done * kProgressSteps + static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * kProgressSteps)),
-                      n * kProgressSteps, tr("Circle %1 of %2").arg(done + 1).arg(n));
-    });
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (!m_running || r.id != m_currentId)
-            return;
-        m_currentId = 0;
-        onCircle(r);
-    });
 }
 
 QString CircleRunner::unavailableReason() const
@@ -142,7 +128,23 @@ void CircleRunner::runNext()
     if (i >= n)
         return finish(true, {}, false);
     emit progress(i * kProgressSteps, n * kProgressSteps, tr("Circle %1 of %2").arg(i + 1).arg(n));
-    m_currentId = m_ctx.drive().runTest(device::circleRequestOf(m_circles[static_cast<std::size_t>(i)]));
+    auto* req = m_ctx.drive().runTest(device::circleRequestOf(m_circles[static_cast<std::size_t>(i)]));
+    m_currentId = req->id();
+    connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
+        if (!m_running || r.id != m_currentId)
+            return;
+        m_currentId = 0;
+        onCircle(r);
+    });
+    connect(req, &DriveRequest::progress, this, [this](double fraction, const QString&) {
+        if (!m_running)
+            return;
+        const int n = static_cast<int>(m_circles.size());
+        const int done = static_cast<int>(m_traces.size());
+        emit progress(done * kProgressSteps +
+                          static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * kProgressSteps)),
+                      n * kProgressSteps, tr("Circle %1 of %2").arg(done + 1).arg(n));
+    });
 }
 
 void CircleRunner::onCircle(const DriveReply& r)

@@ -5,6 +5,7 @@
 // correlation chatter detection (seed 004, same spec §2) of core/machining, off the GUI thread.
 #include "app/gui/MachiningWizard.h"
 #include "core/io/CaptureCsv.h"
+#include "core/machining/StageFromParameters.h"
 #include "core/machining/StageJson.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
@@ -54,17 +55,11 @@ Result<machining::StageDescription> stageOfPreset(const std::string& machine, co
     const auto* a = def->axis(axis);
     if (!a)
         return makeError(ErrorCode::NotFound, "machine " + machine + " has no axis " + axis);
-    const auto v = [a](const char* k) { return a->values.at(k); };
-    machining::StageDescription d;
-    d.leadMPerRev = v("plant.screw_lead") * 2.0 * 3.14159265358979323846;
-    d.torqueConstantNmPerA = v("motor.torque_constant");
-    d.motor = {v("plant.inertia_motor"), v("plant.viscous_motor"), v("plant.coulomb_motor")};
-    d.load = {v("plant.inertia_load"), v("plant.viscous_load"), v("plant.coulomb_load")};
-    d.couplingStiffnessNmPerRad = v("plant.coupling_stiffness");
-    d.couplingDampingNmsPerRad = v("plant.coupling_damping");
-    d.hasCoupling = d.couplingStiffnessNmPerRad > 0.0;
+    auto d = machining::stageFromAxisParameters(a->values);
+    if (!d)
+        return d.error();
     // A cut at constant feed is no identification opportunity (docs/machining.md): the nominal observer.
-    d.rls.method = machining::RlsMethod::Fixed;
+    d.value().rls.method = machining::RlsMethod::Fixed;
     return d;
 }
 

@@ -13,6 +13,7 @@
 #include "app/gui/WizardRegistry.h"
 
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QEvent>
@@ -31,6 +32,7 @@
 #include <QWizard>
 
 #include <algorithm>
+#include <cmath>
 
 namespace axistune {
 namespace gui {
@@ -54,6 +56,13 @@ MainWindow::MainWindow(const QString& storePath, QWidget* parent) : QMainWindow(
     connect(&m_ctx->drive(), &DriveController::replied, this, &MainWindow::onReply);
     connect(&m_ctx->drive(), &DriveController::progress, this, &MainWindow::onProgress);
     connect(m_ctx, &AppContext::sessionSaved, this, &MainWindow::populateTree);
+    connect(m_ctx, &AppContext::savingChanged, this, [this](bool saving) {
+        m_saveProgress->setValue(0);
+        m_saveProgress->setVisible(saving);
+    });
+    connect(m_ctx, &AppContext::sessionSaveProgress, this, [this](double f) {
+        m_saveProgress->setValue(static_cast<int>(std::lround(std::clamp(f, 0.0, 1.0) * 1000.0)));
+    });
     connect(m_ctx, &AppContext::databaseChanged, this, &MainWindow::populateTree);
     connect(m_ctx, &AppContext::documentRequested, this, &MainWindow::addDocument);
 
@@ -132,6 +141,12 @@ void MainWindow::buildUi()
     });
     statusBar()->addWidget(m_connection, 1);
     statusBar()->addPermanentWidget(m_axisState);
+    m_saveProgress = new QProgressBar(this);
+    m_saveProgress->setObjectName("saveProgress");
+    m_saveProgress->setRange(0, 1000);
+    m_saveProgress->setMaximumWidth(180);
+    m_saveProgress->setVisible(false);
+    statusBar()->addPermanentWidget(m_saveProgress);
     statusBar()->addPermanentWidget(m_progress);
     statusBar()->addPermanentWidget(m_abort);
     resize(1240, 760);
@@ -177,8 +192,15 @@ void MainWindow::rebuildWizardMenu()
     updateDriveActions();
 }
 
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    m_ctx->waitForSaves();
+    QMainWindow::closeEvent(event);
+}
+
 void MainWindow::retranslateUi()
 {
+    m_saveProgress->setFormat(tr("Saving session %p%"));
     setWindowTitle(tr("AxisTune"));
     m_machineMenu->setTitle(tr("&Machine"));
     m_connectAction->setText(tr("&Connect…"));
@@ -251,7 +273,7 @@ int MainWindow::connectSimulated(const QString& preset, quint64 seed) { return c
 int MainWindow::connectTo(const QString& uri, quint64 seed)
 {
     m_connectionRaw = "connecting";
-    m_connectRequest = m_ctx->drive().connectTo(uri, seed);
+    m_connectRequest = m_ctx->drive().connectTo(uri, seed)->id();
     setConnectionText(QString(), false);
     m_ctx->log(tr("Connecting to %1").arg(uri));
     return m_connectRequest;

@@ -79,6 +79,8 @@ public slots:
 
 protected:
     void changeEvent(QEvent* event) override;
+    /// Waits for the session saves still queued (nothing is lost when the window closes).
+    void closeEvent(QCloseEvent* event) override;
 
 private:
     void buildUi();
@@ -124,6 +126,7 @@ private:
     QLabel* m_connection = nullptr;
     QLabel* m_axisState = nullptr;
     QProgressBar* m_progress = nullptr;
+    QProgressBar* m_saveProgress = nullptr; ///< session save on the store thread
     QPushButton* m_abort = nullptr;
     QString m_connectionRaw;   ///< untranslated state for retranslation: "", "connected", "lost", "failed"
     QString m_connectionDetail;

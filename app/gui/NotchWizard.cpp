@@ -123,14 +123,6 @@ NotchWizard::NotchWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_
     hooks.saveAborted = [this](const QString& why) { saveSession(store::SessionStatus::Aborted, why); };
     hooks.close = [this] { QWizard::reject(); };
     m_guard = new AbortGuard(ctx, m_apply, {m_measureRun, m_verifyRun}, tr("the notch filters"), hooks, this);
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id == m_traceRequest && r.ok) {
-            const auto vp = r.values.find("velocity.period");
-            const auto div = r.values.find("trace.divider");
-            if (vp != r.values.end() && div != r.values.end() && vp->second > 0.0)
-                m_traceRateHz = 1.0 / (vp->second * std::max(1.0, div->second));
-        }
-    });
     connect(this, &QWizard::currentIdChanged, this, [this](int id) {
         if (id == kSafety && m_ctx.drive().isConnected())
             readTraceRate(m_axis.isEmpty() ? (m_ctx.axes().isEmpty() ? QString() : m_ctx.axes().front()) : m_axis);
@@ -168,7 +160,16 @@ void NotchWizard::readTraceRate(const QString& axis)
 {
     if (axis.isEmpty() || !m_ctx.drive().isConnected())
         return;
-    m_traceRequest = m_ctx.drive().readParameters(axis, {"velocity.period", "trace.divider"});
+    auto* req = m_ctx.drive().readParameters(axis, {"velocity.period", "trace.divider"});
+    m_traceRequest = req->id();
+    connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
+        if (r.id == m_traceRequest && r.ok) {
+            const auto vp = r.values.find("velocity.period");
+            const auto div = r.values.find("trace.divider");
+            if (vp != r.values.end() && div != r.values.end() && vp->second > 0.0)
+                m_traceRateHz = 1.0 / (vp->second * std::max(1.0, div->second));
+        }
+    });
 }
 
 tuning::LoopForm NotchWizard::loopForm() const

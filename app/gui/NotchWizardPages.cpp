@@ -368,7 +368,6 @@ NotchProposePage::NotchProposePage(NotchWizard& wizard, AppContext& ctx) : QWiza
     lay->addLayout(top, 1);
     lay->addLayout(bottom, 0);
 
-    connect(&m_ctx.drive(), &DriveController::replied, this, &NotchProposePage::onParameters);
     connect(&m_watcher, &QFutureWatcher<NotchAnalysis>::finished, this, [this] {
         m_busy = false;
         m_wizard.setAnalysis(m_watcher.result());
@@ -419,7 +418,8 @@ void NotchProposePage::initializePage()
         m_wizard.setAxis(field("axis").toString());
     if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_wizard.axis())) {
         m_status->setText(tr("Reading the existing filters and the execution rate of axis %1…").arg(m_wizard.axis()));
-        m_readRequest = m_ctx.drive().readParameters(m_wizard.axis());
+        m_readRequest =
+            connectReply(m_ctx.drive().readParameters(m_wizard.axis()), this, &NotchProposePage::onParameters);
         m_busy = true;
         emit completeChanged();
         return;

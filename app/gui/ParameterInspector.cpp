@@ -65,7 +65,6 @@ ParameterInspector::ParameterInspector(AppContext& ctx, QWidget* parent) : QWidg
     lay->addWidget(m_table);
     retranslateUi();
 
-    connect(&m_ctx.drive(), &DriveController::replied, this, &ParameterInspector::onReply);
     connect(&m_ctx, &AppContext::proposedChanged, this, [this](const QString& axis) {
         if (axis == m_axis) {
             m_proposed = m_ctx.proposed(m_axis);
@@ -147,8 +146,8 @@ void ParameterInspector::requestDevice()
     }
     m_deviceShown = false;
     if (!m_metaCache.count(m_axis))
-        m_metaRequest = m_ctx.drive().readMetadata(m_axis);
-    m_readRequest = m_ctx.drive().readParameters(m_axis);
+        m_metaRequest = connectReply(m_ctx.drive().readMetadata(m_axis), this, &ParameterInspector::onReply);
+    m_readRequest = connectReply(m_ctx.drive().readParameters(m_axis), this, &ParameterInspector::onReply);
 }
 
 void ParameterInspector::onReply(const DriveReply& reply)

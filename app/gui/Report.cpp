@@ -5,6 +5,7 @@
 
 #include "app/gui/BallBarText.h"
 #include "core/io/AtomicFile.h"
+#include "core/model/Constants.h"
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
 #include "core/store/FrfCapture.h"
@@ -258,7 +259,7 @@ struct Builder {
     /// The two-inertia wizard's vibration-suppression filter and the load error of its verification.
     template <class Row> void suppressionRows(Row& row)
     {
-        constexpr double deg = 180.0 / 3.14159265358979323846;
+        constexpr double deg = model::kDegPerRad;
         for (const auto& r : rec.results) {
             const auto& d = r.data;
             auto num = [&d](const char* k) { return d.contains(k) && d[k].is_number() ? d[k].get<double>() : 0.0; };

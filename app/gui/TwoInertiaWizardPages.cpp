@@ -185,28 +185,6 @@ TwoInertiaFitPage::TwoInertiaFitPage(AppContext& ctx, TwoInertiaData& shared, Te
     m_status = new QLabel(this);
     m_status->setWordWrap(true);
     lay->addWidget(m_status);
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id != m_readRequest)
-            return;
-        m_readRequest = 0;
-        if (r.ok) {
-            auto get = [&](const char* k, double fallback) {
-                auto it = r.values.find(k);
-                return it == r.values.end() ? fallback : it->second;
-            };
-            m_d.loopPi = {get("velocity.kp", m_d.loopPi.kpNmsPerRad), get("velocity.ki", m_d.loopPi.kiNmPerRad)};
-            m_d.velocityPeriodS = get("velocity.period", m_d.velocityPeriodS);
-            m_d.currentPeriodS = get("current.period", m_d.currentPeriodS);
-            if (!m_d.fromSession && m_d.measured) {
-                auto& md = m_d.measured->metadata;
-                md["loop_kp_Nms_per_rad"] = exact(m_d.loopPi.kpNmsPerRad);
-                md["loop_ki_Nm_per_rad"] = exact(m_d.loopPi.kiNmPerRad);
-                md["velocity_period_s"] = exact(m_d.velocityPeriodS);
-                md["current_period_s"] = exact(m_d.currentPeriodS);
-            }
-        }
-        analyse();
-    });
 }
 
 void TwoInertiaFitPage::initializePage()
@@ -247,10 +225,33 @@ void TwoInertiaFitPage::initializePage()
         m_d.velocityPeriodS = tv;
         m_d.currentPeriodS = h;
         analyse();
-    } else if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis))
-        m_readRequest = m_ctx.drive().readParameters(
-            m_d.axis, {"velocity.kp", "velocity.ki", "velocity.period", "current.period"});
-    else
+    } else if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis)) {
+        auto* req =
+            m_ctx.drive().readParameters(m_d.axis, {"velocity.kp", "velocity.ki", "velocity.period", "current.period"});
+        m_readRequest = req->id();
+        connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
+            if (r.id != m_readRequest)
+                return;
+            m_readRequest = 0;
+            if (r.ok) {
+                auto get = [&](const char* k, double fallback) {
+                    auto it = r.values.find(k);
+                    return it == r.values.end() ? fallback : it->second;
+                };
+                m_d.loopPi = {get("velocity.kp", m_d.loopPi.kpNmsPerRad), get("velocity.ki", m_d.loopPi.kiNmPerRad)};
+                m_d.velocityPeriodS = get("velocity.period", m_d.velocityPeriodS);
+                m_d.currentPeriodS = get("current.period", m_d.currentPeriodS);
+                if (!m_d.fromSession && m_d.measured) {
+                    auto& md = m_d.measured->metadata;
+                    md["loop_kp_Nms_per_rad"] = exact(m_d.loopPi.kpNmsPerRad);
+                    md["loop_ki_Nm_per_rad"] = exact(m_d.loopPi.kiNmPerRad);
+                    md["velocity_period_s"] = exact(m_d.velocityPeriodS);
+                    md["current_period_s"] = exact(m_d.currentPeriodS);
+                }
+            }
+            analyse();
+        });
+    } else
         analyse();
 }
 
@@ -400,23 +401,6 @@ TwoInertiaFilterPage::TwoInertiaFilterPage(AppContext& ctx, TwoInertiaData& shar
     for (auto* s : {m_tau, m_vmax, m_accel, m_jerk})
         connect(s, &QDoubleSpinBox::valueChanged, this, &TwoInertiaFilterPage::update);
     connect(m_mode, &QComboBox::currentIndexChanged, this, &TwoInertiaFilterPage::update);
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id != m_readRequest)
-            return;
-        m_readRequest = 0;
-        m_d.linearAxis = r.ok && r.values.count("lostmotion.mode") > 0;
-        auto it = r.values.find("position.feedback");
-        if (r.ok && it != r.values.end()) {
-            // The filter must match the feedback (the drive refuses F_m with full-closed and F_L with
-            // semi-closed feedback), so the mode follows the axis.
-            m_d.feedback = it->second >= 1.0 ? 1 : 0;
-            m_mode->setCurrentIndex(m_d.feedback);
-            m_mode->setEnabled(false);
-            m_mode->setToolTip(tr("Set by the axis's position.feedback"));
-        }
-        update();
-        emit completeChanged();
-    });
 }
 
 void TwoInertiaFilterPage::initializePage()
@@ -424,8 +408,28 @@ void TwoInertiaFilterPage::initializePage()
     m_mode->setEnabled(true);
     m_mode->setToolTip(QString());
     m_d.feedback = -1;
-    if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis))
-        m_readRequest = m_ctx.drive().readParameters(m_d.axis);  // all: position.feedback, and the axis kind
+    if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis)) {
+        // all: position.feedback, and the axis kind
+        auto* req = m_ctx.drive().readParameters(m_d.axis);
+        m_readRequest = req->id();
+        connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
+            if (r.id != m_readRequest)
+                return;
+            m_readRequest = 0;
+            m_d.linearAxis = r.ok && r.values.count("lostmotion.mode") > 0;
+            auto it = r.values.find("position.feedback");
+            if (r.ok && it != r.values.end()) {
+                // The filter must match the feedback (the drive refuses F_m with full-closed and F_L with
+                // semi-closed feedback), so the mode follows the axis.
+                m_d.feedback = it->second >= 1.0 ? 1 : 0;
+                m_mode->setCurrentIndex(m_d.feedback);
+                m_mode->setEnabled(false);
+                m_mode->setToolTip(tr("Set by the axis's position.feedback"));
+            }
+            update();
+            emit completeChanged();
+        });
+    }
     update();
 }
 

@@ -342,22 +342,6 @@ VelocityLoopDesignPage::VelocityLoopDesignPage(AppContext& ctx, VelocityLoopData
         m_d.applyPositionGain = on;
         updateProposal();
     });
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id != m_readRequest)
-            return;
-        m_readRequest = 0;
-        if (r.ok) {
-            auto get = [&](const char* k, double fallback) {
-                auto it = r.values.find(k);
-                return it == r.values.end() ? fallback : it->second;
-            };
-            m_d.before = {get("velocity.kp", m_d.before.kpNmsPerRad), get("velocity.ki", m_d.before.kiNmPerRad)};
-            m_d.positionKpBefore = get("position.kp", 0.0);
-            m_d.velocityPeriodS = get("velocity.period", m_d.velocityPeriodS);
-            m_d.currentPeriodS = get("current.period", m_d.currentPeriodS);
-        }
-        analyse();
-    });
 }
 
 void VelocityLoopDesignPage::initializePage()
@@ -372,10 +356,27 @@ void VelocityLoopDesignPage::initializePage()
             if (r.capture)
                 m_d.stepBefore = r.capture;
         }
-    if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis))
-        m_readRequest = m_ctx.drive().readParameters(
+    if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_d.axis)) {
+        auto* req = m_ctx.drive().readParameters(
             m_d.axis, {"velocity.kp", "velocity.ki", "velocity.period", "current.period", "position.kp"});
-    else
+        m_readRequest = req->id();
+        connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
+            if (r.id != m_readRequest)
+                return;
+            m_readRequest = 0;
+            if (r.ok) {
+                auto get = [&](const char* k, double fallback) {
+                    auto it = r.values.find(k);
+                    return it == r.values.end() ? fallback : it->second;
+                };
+                m_d.before = {get("velocity.kp", m_d.before.kpNmsPerRad), get("velocity.ki", m_d.before.kiNmPerRad)};
+                m_d.positionKpBefore = get("position.kp", 0.0);
+                m_d.velocityPeriodS = get("velocity.period", m_d.velocityPeriodS);
+                m_d.currentPeriodS = get("current.period", m_d.currentPeriodS);
+            }
+            analyse();
+        });
+    } else
         analyse();
     emit completeChanged();
 }

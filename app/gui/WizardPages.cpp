@@ -130,29 +130,32 @@ SafetyPage::SafetyPage(AppContext& ctx, QWidget* parent) : QWizardPage(parent), 
         emit completeChanged();
     });
     connect(&m_ctx.drive(), &DriveController::connectionChanged, this, [this] { initializePage(); });
-    connect(&m_ctx.drive(), &DriveController::replied, this, [this](const DriveReply& r) {
-        if (r.id == m_metaRequest && r.ok) {
-            m_metas = r.metadata;
-            m_readRequest = m_ctx.drive().readParameters(r.axis, m_limitKeys);
-        } else if (r.id == m_readRequest && r.ok) {
-            m_limits->setRowCount(0);
-            for (const auto& k : m_limitKeys) {
-                const auto* m = findMeta(m_metas, k.toStdString());
-                const auto it = r.values.find(k.toStdString());
-                if (!m || it == r.values.end())
-                    continue;
-                const int row = m_limits->rowCount();
-                m_limits->insertRow(row);
-                m_limits->setItem(row, 0, new QTableWidgetItem(parameterLabel(m->label)));
-                m_limits->setItem(row, 1, new QTableWidgetItem(displayParameterValue(*m, it->second)));
-                m_limits->setItem(row, 2, new QTableWidgetItem(tr("%1 … %2").arg(displayParameterValue(*m, m->minSi),
-                                                                                  displayParameterValue(*m, m->maxSi))));
-                m_limits->setItem(row, 3, new QTableWidgetItem(qs(model::unitLabel(m->displayUnit))));
-            }
-        } else if ((r.id == m_metaRequest || r.id == m_readRequest) && !r.ok) {
-            m_state->setText(tr("Reading the limits failed: %1").arg(r.error));
+}
+
+void SafetyPage::onReply(const DriveReply& r)
+{
+    if (r.id == m_metaRequest && r.ok) {
+        m_metas = r.metadata;
+        m_readRequest = connectReply(m_ctx.drive().readParameters(r.axis, m_limitKeys), this, &SafetyPage::onReply);
+    } else if (r.id == m_readRequest && r.ok) {
+        m_limits->setRowCount(0);
+        for (const auto& k : m_limitKeys) {
+            const auto* m = findMeta(m_metas, k.toStdString());
+            const auto it = r.values.find(k.toStdString());
+            if (!m || it == r.values.end())
+                continue;
+            const int row = m_limits->rowCount();
+            m_limits->insertRow(row);
+            m_limits->setItem(row, 0, new QTableWidgetItem(parameterLabel(m->label)));
+            m_limits->setItem(row, 1, new QTableWidgetItem(displayParameterValue(*m, it->second)));
+            m_limits->setItem(row, 2,
+                              new QTableWidgetItem(tr("%1 … %2").arg(displayParameterValue(*m, m->minSi),
+                                                                     displayParameterValue(*m, m->maxSi))));
+            m_limits->setItem(row, 3, new QTableWidgetItem(qs(model::unitLabel(m->displayUnit))));
         }
-    });
+    } else if ((r.id == m_metaRequest || r.id == m_readRequest) && !r.ok) {
+        m_state->setText(tr("Reading the limits failed: %1").arg(r.error));
+    }
 }
 
 void SafetyPage::setMotionDescription(const QString& text) { m_motion->setText(text); }
@@ -182,7 +185,7 @@ void SafetyPage::showLimits()
 {
     m_limits->setRowCount(0);
     if (m_ctx.drive().isConnected() && !m_axis->currentText().isEmpty() && !m_limitKeys.isEmpty())
-        m_metaRequest = m_ctx.drive().readMetadata(m_axis->currentText());
+        m_metaRequest = connectReply(m_ctx.drive().readMetadata(m_axis->currentText()), this, &SafetyPage::onReply);
 }
 
 bool SafetyPage::isComplete() const
@@ -218,13 +221,6 @@ TestRunPage::TestRunPage(AppContext& ctx, QWidget* parent) : QWizardPage(parent)
     lay->addWidget(m_log, 1);
     connect(m_abort, &QPushButton::clicked, this, &TestRunPage::abortRun);
     connect(m_retry, &QPushButton::clicked, this, &TestRunPage::start);
-    connect(&m_ctx.drive(), &DriveController::replied, this, &TestRunPage::onReply);
-    connect(&m_ctx.drive(), &DriveController::progress, this, [this](int id, double f, const QString&) {
-        if (id != m_request || m_requests.empty())
-            return;
-        const double total = (static_cast<double>(m_index) + f) / static_cast<double>(m_requests.size());
-        m_bar->setValue(static_cast<int>(std::lround(1000.0 * total)));
-    });
     connect(&m_ctx.drive(), &DriveController::connectionLost, this, [this](const QString& why) {
         m_log->appendPlainText(tr("Connection lost: %1").arg(why));
         if (m_running)
@@ -287,7 +283,14 @@ void TestRunPage::next()
     m_label->setText(what);
     m_log->appendPlainText(what);
     m_ctx.log(what);
-    m_request = m_ctx.drive().runTest(r);
+    DriveRequest* req = m_ctx.drive().runTest(r);
+    m_request = connectReply(req, this, &TestRunPage::onReply);
+    connect(req, &DriveRequest::progress, this, [this](double f, const QString&) {
+        if (m_requests.empty())
+            return;
+        const double total = (static_cast<double>(m_index) + f) / static_cast<double>(m_requests.size());
+        m_bar->setValue(static_cast<int>(std::lround(1000.0 * total)));
+    });
 }
 
 void TestRunPage::abortRun()
@@ -369,7 +372,6 @@ ApplyPage::ApplyPage(AppContext& ctx, QWidget* parent) : QWizardPage(parent), m_
     });
     connect(m_apply, &QPushButton::clicked, this, &ApplyPage::apply);
     connect(m_restore, &QPushButton::clicked, this, &ApplyPage::restore);
-    connect(&m_ctx.drive(), &DriveController::replied, this, &ApplyPage::onReply);
 }
 
 void ApplyPage::setProposal(const QString& axis, const model::ParameterValues& proposed)
@@ -396,7 +398,7 @@ void ApplyPage::initializePage()
         return;
     }
     m_status->setText(tr("Reading the device values…"));
-    m_metaRequest = m_ctx.drive().readMetadata(m_axis);
+    m_metaRequest = connectReply(m_ctx.drive().readMetadata(m_axis), this, &ApplyPage::onReply);
 }
 
 bool ApplyPage::isComplete() const { return m_applied || m_skip->isChecked(); }
@@ -436,7 +438,7 @@ void ApplyPage::apply()
     }
     m_apply->setEnabled(false);
     m_status->setText(tr("Writing…"));
-    m_writeRequest = m_ctx.drive().writeParameters(m_axis, m_proposed);
+    m_writeRequest = connectReply(m_ctx.drive().writeParameters(m_axis, m_proposed), this, &ApplyPage::onReply);
 }
 
 void ApplyPage::restore()
@@ -445,7 +447,7 @@ void ApplyPage::restore()
         return;
     m_restore->setEnabled(false);
     m_status->setText(tr("Restoring the previous values…"));
-    m_restoreRequest = m_ctx.drive().writeParameters(m_axis, m_previous);
+    m_restoreRequest = connectReply(m_ctx.drive().writeParameters(m_axis, m_previous), this, &ApplyPage::onReply);
 }
 
 std::vector<store::JournalEntry> ApplyPage::journal() const { return m_journal; }
@@ -474,7 +476,7 @@ void ApplyPage::onReply(const DriveReply& r)
         QStringList keys;
         for (const auto& [k, v] : m_proposed)
             keys << qs(k);
-        m_readRequest = m_ctx.drive().readParameters(m_axis, keys);
+        m_readRequest = connectReply(m_ctx.drive().readParameters(m_axis, keys), this, &ApplyPage::onReply);
     } else if (r.id == m_readRequest) {
         if (!r.ok) {
             m_status->setText(tr("Reading the parameters failed: %1").arg(r.error));
@@ -505,6 +507,7 @@ void ApplyPage::onReply(const DriveReply& r)
         if (!r.ok) {
             m_status->setText(tr("Restoring failed: %1").arg(r.error));
             m_restore->setEnabled(true);
+            emit restoreFailed(r.error);
             return;
         }
         addJournal(m_readBack, r.values);

@@ -67,6 +67,7 @@ public:
     int nextId() const override { return m_nextIdFn ? m_nextIdFn() : QWizardPage::nextId(); }
 
 private:
+    void onReply(const DriveReply& r);
     void showLimits();
     AppContext& m_ctx;
     QStringList m_limitKeys;
@@ -169,6 +170,8 @@ public slots:
 
 signals:
     void appliedChanged(bool applied);
+    /// restore() was refused or the link failed; the applied values may still be active.
+    void restoreFailed(const QString& error);
 
 private:
     void fillTable();

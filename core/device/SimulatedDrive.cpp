@@ -3,6 +3,7 @@
 // §1.2, §2.3 stepped with the velocity loop open; docs/simulator.md "Current-step test".
 #include "core/device/SimulatedDrive.h"
 
+#include "core/device/FrfRequestPlan.h"
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
@@ -337,57 +338,19 @@ Result<SimulatedDrive::FrfPlans> SimulatedDrive::planFrf(const sim::AxisSimulato
     }
     if (!(r.settleS >= 0.0) || !(r.minMeasureS >= 0.0))
         return makeError(ErrorCode::OutOfRange, "FRF settle and measure times must not be negative");
-    LoopTiming timing;
-    if (auto t = loopTimingFromParameters(v); t)
-        timing = *t;
-    else if (r.settleS <= 0.0 || r.minMeasureS <= 0.0)
-        return t.error();
-    if (r.settleS > 0.0) {
-        timing.settleS = r.settleS;  // the caller's settle time replaces both rules
-        timing.settlePeriods = 0.0;
-    }
-    if (r.minMeasureS > 0.0)
-        timing.minMeasureS = r.minMeasureS;
-    const double tracePeriod = sim.velocityPeriod() * (r.traceDivider > 0 ? r.traceDivider : v.at("trace.divider"));
-    const double peakNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
+    // The plan itself is the host's too (FrfRequestPlan.h): a drive that only streams samples is evaluated with it.
+    AxisClock clock;
+    clock.currentPeriodS = sim.currentPeriod();
+    clock.ticksPerVelocity = static_cast<int>(std::llround(sim.velocityPeriod() / sim.currentPeriod()));
+    clock.traceDivider = static_cast<int>(r.traceDivider > 0 ? r.traceDivider : std::llround(v.at("trace.divider")));
+    auto plan = planFrfRequest(r, v, clock);
+    if (!plan)
+        return plan.error();
     FrfPlans out;
-    if (r.frfMethod == FrfMethod::Multisine) {
-        // The multisine variant (MultisineTest.h): the limit in % of rated torque holds at its peak.
-        const double h = sim.currentPeriod();
-        MultisinePlanOptions po;
-        po.fsHz = 1.0 / tracePeriod;
-        po.ticksPerSample = static_cast<int>(std::llround(tracePeriod / h));
-        po.currentPeriodS = h;
-        po.ticksPerVelocity = static_cast<int>(std::llround(v.at("velocity.period") / h));
-        po.bands = multisineBandsOf(r);
-        po.shape = r.multisineShape;
-        po.phases = r.multisinePhases;
-        po.peakNm = peakNm;
-        po.timing = timing;
-        po.periods = r.multisinePeriods;
-        po.voltageLimitV = v.at("drive.max_voltage");
-        auto plan = planMultisineTest(po);
-        if (!plan)
-            return plan.error();
-        out.multisine = std::make_shared<const MultisinePlan>(std::move(plan).value());
-        out.durationS = out.multisine->durationS();
-    } else {
-        FrfPlanOptions po;
-        po.method = r.frfMethod;
-        po.fsHz = 1.0 / tracePeriod;
-        po.fminHz = r.fminHz;
-        po.fmaxHz = r.fmaxHz;
-        po.points = r.points;
-        po.amplitudeNm = peakNm;
-        po.timing = timing;
-        po.voltageLimitV = v.at("drive.max_voltage");
-        auto plan = planFrfTest(po);
-        if (!plan)
-            return plan.error();
-        out.sweep = std::make_shared<const FrfPlan>(std::move(plan).value());
-        out.durationS = out.sweep->durationS();
-    }
-    out.tracePeriodS = tracePeriod;
+    out.sweep = plan->streams;
+    out.multisine = plan->multisine;
+    out.durationS = plan->durationS();
+    out.tracePeriodS = clock.tracePeriodS();
     return out;
 }
 

@@ -12,10 +12,10 @@
 #include "core/model/Parameter.h"
 #include "core/model/Result.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -167,7 +167,9 @@ public:
                                        const std::string& note = {});
 
     // Sessions.
-    Result<std::int64_t> recordSession(const SessionRecord& record);
+    /// `progress` (optional) is called with the fraction written, 0..1 by the samples of the captures, never
+    /// falling, on the calling thread; 1 once the transaction is committed.
+    Result<std::int64_t> recordSession(const SessionRecord& record, const std::function<void(double)>& progress = {});
     Result<std::vector<SessionInfo>> listSessions(const std::string& machine = {}) const;
     Result<SessionRecord> loadSession(std::int64_t id) const;
 

@@ -56,8 +56,13 @@ std::int64_t insertSessionRow(SQLite::Database& db, const SessionInfo& info, std
     return db.getLastInsertRowid();
 }
 
-void insertCaptures(SQLite::Database& db, std::int64_t sessionId, const std::vector<NamedCapture>& captures)
+void insertCaptures(SQLite::Database& db, std::int64_t sessionId, const std::vector<NamedCapture>& captures,
+                    const std::function<void(double)>& progress)
 {
+    double total = 1.0, written = 0.0; // samples of every channel, + 1 for the rest of the session
+    for (const auto& c : captures)
+        for (const auto& ch : c.capture.channels)
+            total += static_cast<double>(ch.data.size());
     SQLite::Statement cap(db, "INSERT INTO captures(session_id, position, name, metadata, samples) VALUES(?, ?, ?, ?, ?)");
     SQLite::Statement ch(db, "INSERT INTO capture_channels(capture_id, position, name, data) VALUES(?, ?, ?, ?)");
     std::vector<char> scratch;
@@ -79,6 +84,9 @@ void insertCaptures(SQLite::Database& db, std::int64_t sessionId, const std::vec
             detail::bindFloat64Blob(ch, 4, c.capture.channels[k].data, scratch);
             ch.exec();
             ch.reset();
+            written += static_cast<double>(c.capture.channels[k].data.size());
+            if (progress)
+                progress(written / total);
         }
     }
 }
@@ -154,7 +162,7 @@ const char* kSessionColumns =
 
 }  // namespace
 
-Result<std::int64_t> Database::recordSession(const SessionRecord& r)
+Result<std::int64_t> Database::recordSession(const SessionRecord& r, const std::function<void(double)>& progress)
 {
     if (auto st = checkRecord(r); !st)
         return st.error();
@@ -169,7 +177,7 @@ Result<std::int64_t> Database::recordSession(const SessionRecord& r)
                 detail::ensureAxisId(*m_db, *mid, r.info.axis);
         }
         const auto sid = insertSessionRow(*m_db, r.info, mid, r.inputs);
-        insertCaptures(*m_db, sid, r.captures);
+        insertCaptures(*m_db, sid, r.captures, progress);
         insertResults(*m_db, sid, r.results);
         for (const auto& s : r.parameterSets) {
             detail::insertParameterSet(*m_db, detail::ensureAxisId(*m_db, *mid, s.axis), toString(s.source), s.time,
@@ -181,6 +189,8 @@ Result<std::int64_t> Database::recordSession(const SessionRecord& r)
         if (mid)
             insertJournal(*m_db, *mid, sid, r.journal);
         tx.commit();
+        if (progress)
+            progress(1.0);
         return sid;
     } catch (const std::exception& e) {
         return detail::dbError(m_path, e, "saving a '" + r.info.kind + "' session");

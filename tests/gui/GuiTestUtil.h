@@ -11,9 +11,11 @@
 #include <QString>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QTranslator>
 #include <QWidget>
 
+#include <algorithm>
 #include <functional>
 
 namespace axistune::testing {
@@ -27,6 +29,30 @@ inline bool waitUntil(const std::function<bool()>& pred, int timeoutMs = 60000)
         QTest::qWait(10);
     return pred();
 }
+
+/// A timer on the GUI thread (every 10 ms): how often it ticked and the largest gap between two ticks, i.e.
+/// how long the event loop stalled while it ran.
+class TickMeter {
+public:
+    explicit TickMeter(int periodMs = 10)
+    {
+        QObject::connect(&m_timer, &QTimer::timeout, [this] {
+            if (m_ticks++ > 0)
+                m_maxGapMs = std::max(m_maxGapMs, m_since.elapsed());
+            m_since.start();
+        });
+        m_timer.start(periodMs);
+    }
+    int ticks() const { return m_ticks; }
+    qint64 maxGapMs() const { return m_maxGapMs; }
+    void stop() { m_timer.stop(); }
+
+private:
+    QTimer m_timer;
+    QElapsedTimer m_since;
+    qint64 m_maxGapMs = 0;
+    int m_ticks = 0;
+};
 
 /// AXISTUNE_LANG=ja installs the Japanese translation (for Japanese screenshots); returns the code.
 inline QString installLanguageFromEnv()

@@ -280,7 +280,7 @@ private slots:
 
         // And on the drive itself.
         model::ParameterValues back;
-        const int id = ctx.drive().readParameters("X", {"current.kp", "current.ki", "current.alpha"});
+        const int id = ctx.drive().readParameters("X", {"current.kp", "current.ki", "current.alpha"})->id();
         connect(&ctx.drive(), &DriveController::replied, this, [&](const DriveReply& r) {
             if (r.id == id)
                 back = r.values;
@@ -367,7 +367,7 @@ private slots:
         w.reject();
         QVERIFY(waitUntil([&] { return !w.isVisible(); }, 10000));
         model::ParameterValues back;
-        const int id = ctx.drive().readParameters("X", {"current.kp", "current.ki"});
+        const int id = ctx.drive().readParameters("X", {"current.kp", "current.ki"})->id();
         connect(&ctx.drive(), &DriveController::replied, this, [&](const DriveReply& r) {
             if (r.id == id)
                 back = r.values;

@@ -14,10 +14,12 @@
 
 #include "tests/NumberText.h"
 #include "tests/app/cli/SimDriveProcess.h"
+#include "tests/gui/DriveTestRequests.h"
 #include "tests/gui/GuiTestUtil.h"
 
 using axistune::gui::DriveController;
 using axistune::gui::DriveReply;
+using axistune::testing::longFrf;
 using axistune::testing::waitUntil;
 
 namespace {
@@ -34,6 +36,7 @@ struct ReplyCatcher {
                 return r;
         return std::nullopt;
     }
+    DriveReply wait(axistune::gui::DriveRequest* request, int ms = 30000) const { return wait(request->id(), ms); }
     DriveReply wait(int id, int ms = 30000) const
     {
         waitUntil([&] { return find(id).has_value(); }, ms);
@@ -43,21 +46,6 @@ struct ReplyCatcher {
     std::vector<DriveReply> replies;
 };
 
-/// An FRF test that takes several seconds of wall time on the simulator (many slow low frequencies).
-axistune::device::TestRequest longFrf(const std::string& axis)
-{
-    axistune::device::TestRequest t;
-    t.axis = axis;
-    t.type = axistune::device::TestType::Frf;
-    t.frfMethod = axistune::device::FrfMethod::MultiSweep;
-    t.fminHz = 2.0;
-    t.fmaxHz = 1000.0;
-    t.points = 300;
-    t.amplitudePct = 3.0;
-    t.settleS = 0.5;
-    t.minMeasureS = 1.0;
-    return t;
-}
 }  // namespace
 
 class TestDriveController : public QObject {
@@ -129,7 +117,7 @@ private slots:
         QVERIFY(before.ok);
         double lastProgress = 0.0;
         connect(&c, &DriveController::progress, this, [&](int, double f, const QString&) { lastProgress = f; });
-        const int id = c.runTest(longFrf("X"));
+        const int id = c.runTest(longFrf("X"))->id();
         QVERIFY(waitUntil([&] { return lastProgress > 0.01; }, 20000));
         QVERIFY2(!rc.find(id), "the test ended before Abort: make it longer");
         QElapsedTimer clock;
@@ -162,23 +150,14 @@ private slots:
         QVERIFY(p.ok);
 
         // The GUI thread's event loop: a timer ticking every 10 ms; the largest gap is measured.
-        QTimer ticker;
-        QElapsedTimer sinceTick;
-        qint64 maxGapMs = 0;
-        int ticks = 0;
-        connect(&ticker, &QTimer::timeout, this, [&] {
-            if (ticks++ > 0)
-                maxGapMs = std::max(maxGapMs, sinceTick.elapsed());
-            sinceTick.start();
-        });
-        ticker.start(10);
+        axistune::testing::TickMeter meter;
 
         double lastProgress = 0.0;
         connect(&c, &DriveController::progress, this, [&](int, double f, const QString&) { lastProgress = f; });
-        const int id = c.runTest(longFrf("X"));
+        const int id = c.runTest(longFrf("X"))->id();
         QVERIFY(waitUntil([&] { return lastProgress > 0.0; }, 30000));
         QVERIFY(!rc.find(id));
-        const int ticksBefore = ticks;
+        const int ticksBefore = meter.ticks();
         sd.stop(SIGKILL);
         QVERIFY(waitUntil([&] { return rc.find(id).has_value(); }, 30000));
         const DriveReply r = *rc.find(id);
@@ -187,8 +166,8 @@ private slots:
         QVERIFY(waitUntil([&] { return lost.count() > 0; }, 5000));
         QVERIFY(!c.isConnected());
         // The event loop kept running while the worker waited on the dead link.
-        QVERIFY(ticks > ticksBefore + 5);
-        QVERIFY2(maxGapMs < 500, qPrintable(QString("event loop stalled for %1 ms").arg(maxGapMs)));
+        QVERIFY(meter.ticks() > ticksBefore + 5);
+        QVERIFY2(meter.maxGapMs() < 500, qPrintable(QString("event loop stalled for %1 ms").arg(meter.maxGapMs())));
         // A request after the loss fails at once with a message, without hanging.
         const DriveReply again = rc.wait(c.readParameters("X"), 5000);
         QVERIFY(!again.ok);

@@ -452,7 +452,7 @@ private slots:
         auto readAll = [&] {
             model::ParameterValues v;
             bool done = false;
-            const int id = ctx.drive().readParameters("C");
+            const int id = ctx.drive().readParameters("C")->id();
             auto c = connect(&ctx.drive(), &gui::DriveController::replied, this, [&](const gui::DriveReply& r) {
                 if (r.id == id) {
                     v = r.values;

@@ -61,7 +61,7 @@ axistune::model::ParameterValues readParams(AppContext& ctx, const QString& axis
             done = true;
         }
     });
-    id = ctx.drive().readParameters(axis, keys);
+    id = ctx.drive().readParameters(axis, keys)->id();
     waitUntil([&] { return done; }, 20000);
     QObject::disconnect(c);
     return out;

@@ -200,7 +200,7 @@ private slots:
         w.reject();
         QVERIFY(waitUntil([&] { return !w.isVisible(); }, 10000));
         model::ParameterValues back;
-        const int id = ctx.drive().readParameters("A", {"velocity.kp", "velocity.ki"});
+        const int id = ctx.drive().readParameters("A", {"velocity.kp", "velocity.ki"})->id();
         connect(&ctx.drive(), &DriveController::replied, this, [&](const DriveReply& r) {
             if (r.id == id)
                 back = r.values;

@@ -3,12 +3,15 @@
 // Shared by the simulated drive's FRF tests: a drive on a preset, and an FRF test run to its end.
 
 #include "core/device/SimulatedDrive.h"
+#include "core/device/TestRunner.h"
 #include "core/sim/MachineDefinition.h"
 
 #include <gtest/gtest.h>
-
+#include <initializer_list>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace axistune::devtest {
 
@@ -21,25 +24,38 @@ inline std::unique_ptr<device::SimulatedDrive> makeDrive(const std::string& pres
     return std::move(d).value();
 }
 
-/// Starts the test, polls it to its end (progress never falls; it must complete) and returns the FRF.
-inline device::FrfMeasurement runFrf(device::SimulatedDrive& drive, const device::TestRequest& r)
+/// Runs the test to its end with device::runTest (progress never falls; it must complete) and returns the
+/// FRF the drive evaluated.
+inline device::FrfMeasurement runFrf(device::Drive& drive, const device::TestRequest& r)
 {
-    auto st = drive.startTest(r);
-    EXPECT_TRUE(st.ok()) << (st.ok() ? "" : st.error().detail);
     double progress = 0.0;
-    while (true) {
-        auto s = drive.pollTest();
-        EXPECT_TRUE(s.ok());
-        EXPECT_GE(s->progress, progress);
-        progress = s->progress;
-        if (s->state != device::TestState::Running) {
-            EXPECT_EQ(s->state, device::TestState::Completed) << s->detail;
-            break;
-        }
-    }
-    auto m = drive.readFrequencyResponse();
-    EXPECT_TRUE(m.ok()) << (m.ok() ? "" : m.error().detail);
-    return std::move(m).value();
+    device::RunOptions o;
+    o.readTrace = false;
+    o.progress = [&progress](double f, const std::string&) {
+        EXPECT_GE(f, progress);
+        progress = f;
+    };
+    auto run = device::runTest(drive, r, o);
+    EXPECT_TRUE(run.ok()) << (run.ok() ? "" : run.error().detail);
+    if (!run.ok() || !run->frf)
+        return {};
+    EXPECT_FALSE(run->frfEvaluatedOnHost);
+    EXPECT_EQ(progress, 1.0);
+    return *run->frf;
 }
 
-}  // namespace axistune::devtest
+/// Runs the request to its end on each drive (device::runTest) and returns their traces (nullopt, reported as
+/// a failure, when a run fails).
+inline std::vector<std::optional<model::Capture>> tracesOfEach(std::initializer_list<device::Drive*> drives,
+                                                               const device::TestRequest& r)
+{
+    std::vector<std::optional<model::Capture>> out;
+    for (device::Drive* d : drives) {
+        auto run = device::runTest(*d, r);
+        EXPECT_TRUE(run.ok()) << (run.ok() ? "" : run.error().detail);
+        out.push_back(run.ok() ? run->trace : std::nullopt);
+    }
+    return out;
+}
+
+} // namespace axistune::devtest

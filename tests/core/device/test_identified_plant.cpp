@@ -7,6 +7,7 @@
 //    tanh-smoothed and its axis is a two-mass system, not exactly the identified model's form);
 //  * wrong kind, unknown option and missing file are refused with the reason.
 #include "core/device/SimulatedDrive.h"
+#include "core/device/TestRunner.h"
 #include "core/ident/IdentificationJson.h"
 #include "core/ident/MotionIdentification.h"
 
@@ -54,17 +55,9 @@ model::Capture jog(Drive& drive, double velocity)
     req.acceleration = 0.8;
     req.returnToStart = true;
     req.durationS = 0.2;
-    EXPECT_TRUE(drive.startTest(req).ok());
-    TestStatus st;
-    do {
-        auto p = drive.pollTest();
-        EXPECT_TRUE(p.ok());
-        st = *p;
-    } while (st.state == TestState::Running);
-    EXPECT_EQ(st.state, TestState::Completed);
-    auto t = drive.readTrace();
-    EXPECT_TRUE(t.ok());
-    return t.ok() ? *t : model::Capture{};
+    auto run = runTest(drive, req);
+    EXPECT_TRUE(run.ok()) << (run.ok() ? "" : run.error().detail);
+    return run.ok() ? *run->trace : model::Capture{};
 }
 
 } // namespace

@@ -3,7 +3,7 @@
 // loopback socket. The embedded SimulatedDrive with the same seed is the independent reference.
 #include "core/device/ModbusDrive.h"
 #include "core/device/SimDriveServer.h"
-#include "tests/core/device/ServerThread.h"
+#include "core/device/TestRunner.h"
 
 #include <chrono>
 #include <cmath>
@@ -12,6 +12,9 @@
 #include <modbus/modbus.h>
 #include <mutex>
 #include <thread>
+
+#include "tests/core/device/DriveTestUtil.h"
+#include "tests/core/device/ServerThread.h"
 
 using namespace axistune;
 using namespace axistune::device;
@@ -96,16 +99,10 @@ TEST(ModbusDrive, TraceOverModbusIsTheEmbeddedTraceBitForBit)
     auto remote = open(srv.uri());
     auto local = open("sim:vmc");
     ASSERT_TRUE(remote && local);
-    for (Drive* d : {remote.get(), local.get()}) {
-        ASSERT_TRUE(d->startTest(step("X", 20.0, 0.1)).ok());
-        auto s = finish(*d);
-        ASSERT_TRUE(s.ok()) << s.error().detail;
-        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
-    }
-    auto tr = remote->readTrace();
-    auto tl = local->readTrace();
-    ASSERT_TRUE(tr.ok()) << tr.error().detail;
-    ASSERT_TRUE(tl.ok());
+    const auto traces = devtest::tracesOfEach({remote.get(), local.get()}, step("X", 20.0, 0.1));
+    const auto& tr = traces[0];
+    const auto& tl = traces[1];
+    ASSERT_TRUE(tr && tl);
     ASSERT_EQ(tr->channels.size(), tl->channels.size());
     ASSERT_GT(tl->size(), 100u);
     EXPECT_EQ(tr->metadata, tl->metadata);
@@ -330,16 +327,10 @@ TEST(ModbusDrive, ReconnectsAndRetriesReadsWhenTheLinkDrops)
     auto remote = open(srv.uri());
     auto local = open("sim:vmc");
     ASSERT_TRUE(remote && local);
-    for (Drive* d : {remote.get(), local.get()}) {
-        ASSERT_TRUE(d->startTest(step("X", 20.0, 0.1)).ok());
-        auto s = finish(*d);
-        ASSERT_TRUE(s.ok()) << s.error().detail;
-        ASSERT_EQ(s->state, TestState::Completed);
-    }
-    auto tr = remote->readTrace();
-    ASSERT_TRUE(tr.ok()) << tr.error().detail;
-    auto tl = local->readTrace();
-    ASSERT_TRUE(tl.ok());
+    const auto traces = devtest::tracesOfEach({remote.get(), local.get()}, step("X", 20.0, 0.1));
+    const auto& tr = traces[0];
+    const auto& tl = traces[1];
+    ASSERT_TRUE(tr && tl);
     for (std::size_t c = 0; c < tl->channels.size(); ++c)
         EXPECT_EQ(tr->channels[c].data, tl->channels[c].data) << tl->channels[c].name;
     EXPECT_NE(srv.log().find("fault drop-after:120"), std::string::npos);
@@ -375,16 +366,7 @@ TEST(ModbusDrive, FrfOverModbusIsTheEmbeddedFrf)
     r.fmaxHz = 3000.0;
     r.points = 6;
     r.amplitudePct = 5.0;
-    std::vector<FrfMeasurement> m;
-    for (Drive* d : {remote.get(), local.get()}) {
-        ASSERT_TRUE(d->startTest(r).ok());
-        auto s = finish(*d, 120.0);
-        ASSERT_TRUE(s.ok()) << s.error().detail;
-        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
-        auto f = d->readFrequencyResponse();
-        ASSERT_TRUE(f.ok()) << f.error().detail;
-        m.push_back(std::move(f).value());
-    }
+    const std::vector<FrfMeasurement> m{devtest::runFrf(*remote, r), devtest::runFrf(*local, r)};
     const auto& a = m[0].frf;
     const auto& b = m[1].frf;
     ASSERT_EQ(a.size(), b.size());
@@ -437,16 +419,10 @@ TEST(ModbusDrive, CurrentStepOverModbusIsTheEmbeddedTrace)
     r.type = TestType::CurrentStep;
     r.amplitude = 4.0;
     r.durationS = 0.005;
-    for (Drive* d : {remote.get(), local.get()}) {
-        ASSERT_TRUE(d->startTest(r).ok());
-        auto s = finish(*d);
-        ASSERT_TRUE(s.ok()) << s.error().detail;
-        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
-    }
-    auto tr = remote->readTrace();
-    auto tl = local->readTrace();
-    ASSERT_TRUE(tr.ok()) << tr.error().detail;
-    ASSERT_TRUE(tl.ok());
+    const auto traces = devtest::tracesOfEach({remote.get(), local.get()}, r);
+    const auto& tr = traces[0];
+    const auto& tl = traces[1];
+    ASSERT_TRUE(tr && tl);
     EXPECT_EQ(tl->size(), 80u); // 5 ms at 62.5 µs
     EXPECT_EQ(tl->metadata.at("fs_Hz"), "16000");
     EXPECT_EQ(tr->metadata, tl->metadata);

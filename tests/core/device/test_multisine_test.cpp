@@ -7,8 +7,10 @@
 #include "core/device/MultisineTest.h"
 #include "core/device/SimDriveServer.h"
 #include "core/device/SimulatedDrive.h"
+#include "core/device/TestRunner.h"
 #include "core/dsp/FrequencyResponse.h"
 #include "core/dsp/InjectionHold.h"
+#include "core/model/Constants.h"
 
 #include <chrono>
 #include <cmath>
@@ -190,7 +192,8 @@ TEST(SimulatedDriveMultisine, TracedInjectionPeakIsTheRequestedPeak)
     ASSERT_NE(d, nullptr);
     auto def = sim::loadPreset("dd-table");
     const auto& v = def->axes.front().values;
-    const double limit = 0.05 * v.at("motor.rated_current") * v.at("motor.torque_constant");
+    const double limit = model::torqueNmFromRatedPct(
+        5.0, model::ratedTorqueNm(v.at("motor.rated_current"), v.at("motor.torque_constant")));
     double peak = 0.0;
     for (double x : d->data)
         peak = std::max(peak, std::abs(x));
@@ -220,20 +223,7 @@ TEST(ModbusMultisine, FrfOverModbusIsTheEmbeddedFrf)
     r.multisinePeriods = 3;
     r.multisinePhases = dsp::MultisinePhases::Schroeder;
     r.amplitudePct = 4.0;
-    std::vector<FrfMeasurement> m;
-    for (Drive* d : {remote->get(), local->get()}) {
-        auto st = d->startTest(r);
-        ASSERT_TRUE(st.ok()) << st.error().detail;
-        const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-        Result<TestStatus> s = d->pollTest();
-        while (s.ok() && s->state == TestState::Running && std::chrono::steady_clock::now() < end)
-            s = d->pollTest();
-        ASSERT_TRUE(s.ok()) << s.error().detail;
-        ASSERT_EQ(s->state, TestState::Completed) << s->detail;
-        auto f = d->readFrequencyResponse();
-        ASSERT_TRUE(f.ok()) << f.error().detail;
-        m.push_back(std::move(f).value());
-    }
+    const std::vector<FrfMeasurement> m{runFrf(**remote, r), runFrf(**local, r)};
     const auto& a = m[0].frf;
     const auto& b = m[1].frf;
     ASSERT_EQ(b.size(), 18u + 35u); // 20 Hz lines 46.7 … 386.7 Hz, 100 Hz lines 406.7 … 3806.7 Hz

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/device/SimulatedDrive.h"
-
-#include <gtest/gtest.h>
+#include "core/device/TestRunner.h"
 
 #include <cmath>
+#include <gtest/gtest.h>
 
 using namespace axistune;
 using namespace axistune::device;
@@ -62,17 +62,18 @@ TEST(SimulatedDrive, StepTestTracesAndRestoresAndRefusesWritesWhileRunning)
     req.type = TestType::Step;
     req.amplitude = 1.0;
     req.durationS = 0.3;
-    ASSERT_TRUE(drive.startTest(req).ok());
-    EXPECT_EQ(drive.writeParameters("A", {{"velocity.kp", 5.0}}).error().code, ErrorCode::Busy);
-    TestStatus st;
-    do {
-        auto p = drive.pollTest();
-        ASSERT_TRUE(p.ok());
-        st = *p;
-    } while (st.state == TestState::Running);
-    EXPECT_EQ(st.state, TestState::Completed);
-    auto trace = drive.readTrace();
-    ASSERT_TRUE(trace.ok());
+    bool checkedBusy = false;
+    RunOptions o;
+    o.progress = [&](double, const std::string&) {
+        if (!checkedBusy) // while the test runs
+            EXPECT_EQ(drive.writeParameters("A", {{"velocity.kp", 5.0}}).error().code, ErrorCode::Busy);
+        checkedBusy = true;
+    };
+    auto run = runTest(drive, req, o);
+    ASSERT_TRUE(run.ok()) << run.error().detail;
+    EXPECT_TRUE(checkedBusy);
+    const auto& trace = run->trace;
+    ASSERT_TRUE(trace);
     const auto* v = trace->channel("motor_vel_rad_s");
     ASSERT_NE(v, nullptr);
     EXPECT_EQ(trace->size(), 1200u);  // 0.3 s at 4 kHz

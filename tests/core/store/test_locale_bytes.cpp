@@ -5,6 +5,7 @@
 // in this process, and must be equal byte for byte. The simulated measurements run under each
 // locale too, so metadata the drive writes (fs_Hz, step_start_s, settle_s, ...) are covered.
 #include "core/device/SimulatedDrive.h"
+#include "core/device/TestRunner.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
 #include "core/io/NcExport.h"
@@ -42,19 +43,9 @@ std::string slurp(const fs::path& p)
 
 device::TestStatus runToEnd(device::Drive& d, const device::TestRequest& r)
 {
-    auto st = d.startTest(r);
-    EXPECT_TRUE(st.ok()) << (st.ok() ? "" : st.error().detail);
-    for (int i = 0; st.ok() && i < 1000000; ++i) {
-        auto s = d.pollTest();
-        if (!s.ok()) {
-            ADD_FAILURE() << s.error().detail;
-            break;
-        }
-        if (s->state != device::TestState::Running)
-            return *s;
-    }
-    ADD_FAILURE() << "the test did not end";
-    return {};
+    auto run = device::runTest(d, r, {});
+    EXPECT_TRUE(run.ok()) << (run.ok() ? "" : run.error().detail);
+    return {run.ok() ? device::TestState::Completed : device::TestState::Faulted, 1.0, {}};
 }
 
 /// Everything written under the locale `name` (the C library's LC_ALL, set for this call only).
