@@ -72,9 +72,14 @@ std::vector<double> linePhases(std::span<const double> x, const std::vector<std:
     RealFft f(x.size());
     std::copy(x.begin(), x.end(), f.input().begin());
     f.execute();
+    // A line above the grid's Nyquist bin (k > L/2: lines up to the trace rate on a grid of that rate) is read from
+    // its mirror, X[k] = conj(X[L − k]) for a real signal. The FFT holds only the bins 0..L/2.
+    const std::size_t n = x.size();
     std::vector<double> out(k.size());
-    for (std::size_t i = 0; i < k.size(); ++i)
-        out[i] = std::arg(f.output()[k[i]] * std::complex<double>(0.0, 1.0));
+    for (std::size_t i = 0; i < k.size(); ++i) {
+        const std::complex<double> xk = k[i] < f.bins() ? f.output()[k[i]] : std::conj(f.output()[n - k[i]]);
+        out[i] = std::arg(xk * std::complex<double>(0.0, 1.0));
+    }
     return out;
 }
 
