@@ -465,8 +465,17 @@ TEST_P(DriveConformance, LostConnectionIsReportedWithinTheTimeout)
         EXPECT_FALSE((*d)->identify().ok());
         return;
     }
-    if (!offered(m_caps.hasLink, "lost connection", "a connection that can be lost"))
-        GTEST_SKIP() << "backend " << GetParam() << " has no link to lose (capabilities: hasLink false)";
+    if (!offered(m_caps.hasLink, "lost connection", "a connection that can be lost")) {
+        // A backend without a link (replay: a file read when it opens) must never report one lost: it keeps
+        // answering, test after test.
+        for (int i = 0; i < 50; ++i) {
+            auto id = m_drive->identify();
+            ASSERT_TRUE(id.ok()) << "call " << i << ": " << errorText(id.error());
+            auto st = m_drive->pollTest();
+            ASSERT_TRUE(st.ok()) << "call " << i << ": " << errorText(st.error());
+        }
+        return;
+    }
     // modbus: the server is killed while a test runs. The client retries a read kMaxAttempts times with
     // 50 and 100 ms pauses, each attempt bounded by the response timeout (ModbusDrive.h), so the loss is
     // reported within kMaxAttempts × timeout + 150 ms; 0.5 s are added for the process scheduling.
