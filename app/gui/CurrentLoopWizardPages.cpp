@@ -3,6 +3,7 @@
 // design (k_p–k_i plane, rise time against α, schedule), step responses, verification.
 // Method: spec/current-loop-and-multisweep-frf.md chapter 2 (core/tuning/CurrentLoop.h).
 #include "app/gui/AppContext.h"
+#include "app/gui/ParameterLookup.h"
 #include "app/gui/WidgetUtil.h"
 #include "app/gui/CurrentLoopWizard.h"
 #include "app/gui/WizardPages.h"
@@ -170,10 +171,7 @@ void CurrentLoopMotorPage::readFromDrive()
             emit completeChanged();
             return;
         }
-        auto get = [&](const char* k, double fallback) {
-            auto it = r.values.find(k);
-            return it == r.values.end() ? fallback : it->second;
-        };
+        auto get = [&](const char* k, double fallback) { return parameterOr(r.values, k, fallback); };
         tuning::MotorData m = motorFromFields();
         // The drive offers the ratings; R_a, L_q and δ stay as entered (motor data sheet).
         m.maxCurrentA = get("motor.max_current", m.maxCurrentA);

@@ -2,6 +2,7 @@
 // Pages of the two-inertia wizard (TwoInertiaWizard.h; docs/wizards/two-inertia.md): source, fit,
 // filter and prediction, verification. Method: spec/lost-motion-and-two-inertia.md §2.2–2.10, TI-1..TI-6.
 #include "app/gui/AppContext.h"
+#include "app/gui/ParameterLookup.h"
 #include "app/gui/TwoInertiaWizard.h"
 #include "app/gui/WidgetUtil.h"
 #include "app/gui/WizardPages.h"
@@ -234,10 +235,7 @@ void TwoInertiaFitPage::initializePage()
                 return;
             m_readRequest = 0;
             if (r.ok) {
-                auto get = [&](const char* k, double fallback) {
-                    auto it = r.values.find(k);
-                    return it == r.values.end() ? fallback : it->second;
-                };
+                auto get = [&](const char* k, double fallback) { return parameterOr(r.values, k, fallback); };
                 m_d.loopPi = {get("velocity.kp", m_d.loopPi.kpNmsPerRad), get("velocity.ki", m_d.loopPi.kiNmPerRad)};
                 m_d.velocityPeriodS = get("velocity.period", m_d.velocityPeriodS);
                 m_d.currentPeriodS = get("current.period", m_d.currentPeriodS);

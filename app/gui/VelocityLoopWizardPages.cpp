@@ -3,6 +3,7 @@
 // source and rule, design with prediction, verification. Method: spec/lost-motion-and-two-inertia.md
 // §2.8 (corrected 5.13), TI-5 §4.12 (margins), §4.11 (position gain).
 #include "app/gui/AppContext.h"
+#include "app/gui/ParameterLookup.h"
 #include "app/gui/VelocityLoopWizard.h"
 #include "app/gui/WidgetUtil.h"
 #include "app/gui/WizardPages.h"
@@ -365,10 +366,7 @@ void VelocityLoopDesignPage::initializePage()
                 return;
             m_readRequest = 0;
             if (r.ok) {
-                auto get = [&](const char* k, double fallback) {
-                    auto it = r.values.find(k);
-                    return it == r.values.end() ? fallback : it->second;
-                };
+                auto get = [&](const char* k, double fallback) { return parameterOr(r.values, k, fallback); };
                 m_d.before = {get("velocity.kp", m_d.before.kpNmsPerRad), get("velocity.ki", m_d.before.kiNmPerRad)};
                 m_d.positionKpBefore = get("position.kp", 0.0);
                 m_d.velocityPeriodS = get("velocity.period", m_d.velocityPeriodS);
