@@ -8,23 +8,6 @@
 namespace axistune::device::hal {
 namespace {
 
-std::vector<std::string> words(std::string_view line)
-{
-    std::vector<std::string> out;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
-            ++i;
-        std::size_t j = i;
-        while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r')
-            ++j;
-        if (j > i)
-            out.emplace_back(line.substr(i, j - i));
-        i = j;
-    }
-    return out;
-}
-
 template <typename F> Status forEachLine(std::string_view text, F&& f)
 {
     std::size_t lineNo = 0;
@@ -32,7 +15,7 @@ template <typename F> Status forEachLine(std::string_view text, F&& f)
         const std::size_t nl = text.find('\n');
         const std::string_view line = text.substr(0, nl);
         ++lineNo;
-        const auto w = words(line);
+        const auto w = splitWords(line);
         if (!w.empty()) {
             if (auto st = f(w, lineNo); !st)
                 return st;
@@ -119,6 +102,23 @@ Result<std::vector<HalThread>> parseThreads(std::string_view text)
     if (!st)
         return st.error();
     return threads;
+}
+
+std::vector<std::string> splitWords(std::string_view line)
+{
+    std::vector<std::string> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+            ++i;
+        std::size_t j = i;
+        while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r')
+            ++j;
+        if (j > i)
+            out.emplace_back(line.substr(i, j - i));
+        i = j;
+    }
+    return out;
 }
 
 const HalPin* findPin(const std::vector<HalPin>& pins, std::string_view name)

@@ -35,6 +35,9 @@ struct HalThread {
     std::vector<std::string> functions; ///< in execution order
 };
 
+/// The blank-separated words of one line (blanks: space, tab, carriage return), as halcmd and HAL files split them.
+std::vector<std::string> splitWords(std::string_view line);
+
 /// `halcmd -s show pin`: one pin per line "owner type dir value name [==>|<==|<=> signal]".
 Result<std::vector<HalPin>> parsePins(std::string_view text);
 /// `halcmd -s show sig`: "type value name [<== writer] [==> reader]...".

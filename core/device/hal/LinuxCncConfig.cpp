@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/device/hal/LinuxCncConfig.h"
 
+#include "core/device/hal/HalText.h"
 #include "core/io/AtomicFile.h"
 #include "core/model/InputLimits.h"
 #include "core/model/Number.h"
@@ -24,23 +25,6 @@ std::string_view trim(std::string_view s)
     while (!s.empty() && isBlank(s.back()))
         s.remove_suffix(1);
     return s;
-}
-
-std::vector<std::string> words(std::string_view line)
-{
-    std::vector<std::string> out;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && isBlank(line[i]))
-            ++i;
-        std::size_t j = i;
-        while (j < line.size() && !isBlank(line[j]))
-            ++j;
-        if (j > i)
-            out.emplace_back(line.substr(i, j - i));
-        i = j;
-    }
-    return out;
 }
 
 std::string where(const std::string& path, std::size_t line)
@@ -211,7 +195,7 @@ Result<LinuxCncConfig> readLinuxCncConfig(const std::string& iniPath, const std:
             pos = nl == std::string_view::npos ? all.size() : nl + 1;
             if (const auto hash = line.find('#'); hash != std::string_view::npos)
                 line = line.substr(0, hash);
-            const auto w = words(line);
+            const auto w = splitWords(line);
             if (w.size() >= 2 && w[0] == "loadrt" && w[1] == "pid") {
                 std::vector<std::string> names;
                 long long count = 0;
