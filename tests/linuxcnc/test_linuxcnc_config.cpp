@@ -186,3 +186,30 @@ TEST_F(TempDir, MalformedIniAndMissingHalFilesNameFileAndLine)
     ASSERT_FALSE(none);
     EXPECT_NE(none.error().detail.find("HALFILE"), std::string::npos);
 }
+
+TEST(HalFileText, MalformedPidLinesAreRefusedWithLineAndOddSetpLinesIgnored)
+{
+    LinuxCncConfig cfg;
+    auto emptyName = addHalText(cfg, "m.hal", "# x\nloadrt pid names=pid_x,,pid_z\n", "XYZ");
+    ASSERT_FALSE(emptyName.ok());
+    EXPECT_NE(emptyName.error().detail.find("m.hal:2"), std::string::npos) << emptyName.error().detail;
+
+    auto zero = addHalText(cfg, "m.hal", "loadrt pid count=0\n", "XYZ");
+    ASSERT_FALSE(zero.ok());
+    EXPECT_NE(zero.error().detail.find("m.hal:1"), std::string::npos) << zero.error().detail;
+
+    // A pin ending in a dot names no gain; a setp of an unknown component is not a pid gain.
+    LinuxCncConfig ok;
+    ASSERT_TRUE(addHalText(ok, "n.hal",
+                           "loadrt pid names=pid_y\nsetp pid_y. 5\nsetp other.Pgain 3\nsetp pid_y.Pgain [JOINT_1]P\n",
+                           "XYZ")
+                    .ok());
+    ASSERT_EQ(ok.pids.size(), 1u);
+    ASSERT_EQ(ok.pids[0].gains.size(), 1u);
+    const auto& p = ok.pids[0].gains.at("Pgain");
+    EXPECT_EQ(p.section, "JOINT_1");
+    EXPECT_EQ(p.key, "P");
+    EXPECT_EQ(p.halLine, 4u);
+    EXPECT_EQ(ok.pids[0].joint, 1);
+    EXPECT_EQ(ok.pids[0].axisLetter, "Y");
+}

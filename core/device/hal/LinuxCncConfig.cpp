@@ -136,6 +136,79 @@ const PidInstance* LinuxCncConfig::findPid(std::string_view name) const
     return nullptr;
 }
 
+Status addHalText(LinuxCncConfig& cfg, const std::string& halPath, std::string_view text, std::string_view letters)
+{
+    std::size_t pos = 0, lineNo = 0;
+    const std::string_view all = text;
+    while (pos < all.size()) {
+        const std::size_t nl = all.find('\n', pos);
+        const std::size_t end = nl == std::string_view::npos ? all.size() : nl;
+        ++lineNo;
+        std::string_view line = all.substr(pos, end - pos);
+        pos = nl == std::string_view::npos ? all.size() : nl + 1;
+        if (const auto hash = line.find('#'); hash != std::string_view::npos)
+            line = line.substr(0, hash);
+        const auto w = splitWords(line);
+        if (w.size() >= 2 && w[0] == "loadrt" && w[1] == "pid") {
+            std::vector<std::string> names;
+            long long count = 0;
+            for (std::size_t i = 2; i < w.size(); ++i) {
+                if (w[i].rfind("names=", 0) == 0) {
+                    std::string_view list = std::string_view(w[i]).substr(6);
+                    while (!list.empty()) {
+                        const auto comma = list.find(',');
+                        if (comma == 0)
+                            return makeError(ErrorCode::BadInput,
+                                             where(halPath, lineNo) + ": loadrt pid names=: an empty name in the list");
+                        names.emplace_back(list.substr(0, comma));
+                        list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
+                    }
+                } else if (w[i].rfind("count=", 0) == 0 || w[i].rfind("num_chan=", 0) == 0) {
+                    const auto n = model::parseInteger(std::string_view(w[i]).substr(w[i].find('=') + 1));
+                    if (!n || *n < 1 || *n > 64)
+                        return makeError(ErrorCode::BadInput, where(halPath, lineNo) + ": pid count must be 1 to 64");
+                    count = *n;
+                }
+            }
+            if (names.empty()) {
+                for (long long i = 0; i < std::max(count, 1LL); ++i)
+                    names.push_back("pid." + std::to_string(i));
+            }
+            for (auto& n : names)
+                if (!cfg.findPid(n))
+                    cfg.pids.push_back(PidInstance{n, -1, {}, {}});
+        } else if (w.size() >= 3 && w[0] == "setp") {
+            const std::string& pin = w[1];
+            const auto dot = pin.rfind('.');
+            if (dot == std::string::npos || dot == 0 || dot + 1 == pin.size())
+                continue;
+            const std::string owner = pin.substr(0, dot);
+            auto it =
+                std::find_if(cfg.pids.begin(), cfg.pids.end(), [&](const PidInstance& p) { return p.name == owner; });
+            if (it == cfg.pids.end())
+                continue;
+            GainSource g;
+            g.pin = pin;
+            g.halFile = halPath;
+            g.halLine = lineNo;
+            const auto [section, key] = iniReference(w[2]);
+            if (!section.empty()) {
+                g.section = section;
+                g.key = key;
+                if (const int j = jointOfSection(section); j >= 0 && it->joint < 0) {
+                    it->joint = j;
+                    if (static_cast<std::size_t>(j) < letters.size())
+                        it->axisLetter = std::string(1, letters[static_cast<std::size_t>(j)]);
+                }
+            } else {
+                g.literal = w[2];
+            }
+            it->gains[pin.substr(dot + 1)] = std::move(g);
+        }
+    }
+    return Status::success();
+}
+
 Result<LinuxCncConfig> readLinuxCncConfig(const std::string& iniPath, const std::string& hallibDir)
 {
     namespace fs = std::filesystem;
@@ -185,72 +258,8 @@ Result<LinuxCncConfig> readLinuxCncConfig(const std::string& iniPath, const std:
         const std::string halPath = resolved.string();
         cfg.halFiles.push_back(halPath);
 
-        std::size_t pos = 0, lineNo = 0;
-        const std::string_view all = *text;
-        while (pos < all.size()) {
-            const std::size_t nl = all.find('\n', pos);
-            const std::size_t end = nl == std::string_view::npos ? all.size() : nl;
-            ++lineNo;
-            std::string_view line = all.substr(pos, end - pos);
-            pos = nl == std::string_view::npos ? all.size() : nl + 1;
-            if (const auto hash = line.find('#'); hash != std::string_view::npos)
-                line = line.substr(0, hash);
-            const auto w = splitWords(line);
-            if (w.size() >= 2 && w[0] == "loadrt" && w[1] == "pid") {
-                std::vector<std::string> names;
-                long long count = 0;
-                for (std::size_t i = 2; i < w.size(); ++i) {
-                    if (w[i].rfind("names=", 0) == 0) {
-                        std::string_view list = std::string_view(w[i]).substr(6);
-                        while (!list.empty()) {
-                            const auto comma = list.find(',');
-                            names.emplace_back(list.substr(0, comma));
-                            list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
-                        }
-                    } else if (w[i].rfind("count=", 0) == 0 || w[i].rfind("num_chan=", 0) == 0) {
-                        const auto n = model::parseInteger(std::string_view(w[i]).substr(w[i].find('=') + 1));
-                        if (!n || *n < 1 || *n > 64)
-                            return makeError(ErrorCode::BadInput,
-                                             where(halPath, lineNo) + ": pid count must be 1 to 64");
-                        count = *n;
-                    }
-                }
-                if (names.empty()) {
-                    for (long long i = 0; i < std::max(count, 1LL); ++i)
-                        names.push_back("pid." + std::to_string(i));
-                }
-                for (auto& n : names)
-                    if (!cfg.findPid(n))
-                        cfg.pids.push_back(PidInstance{n, -1, {}, {}});
-            } else if (w.size() >= 3 && w[0] == "setp") {
-                const std::string& pin = w[1];
-                const auto dot = pin.rfind('.');
-                if (dot == std::string::npos)
-                    continue;
-                const std::string owner = pin.substr(0, dot);
-                auto it = std::find_if(cfg.pids.begin(), cfg.pids.end(),
-                                       [&](const PidInstance& p) { return p.name == owner; });
-                if (it == cfg.pids.end())
-                    continue;
-                GainSource g;
-                g.pin = pin;
-                g.halFile = halPath;
-                g.halLine = lineNo;
-                const auto [section, key] = iniReference(w[2]);
-                if (!section.empty()) {
-                    g.section = section;
-                    g.key = key;
-                    if (const int j = jointOfSection(section); j >= 0 && it->joint < 0) {
-                        it->joint = j;
-                        if (static_cast<std::size_t>(j) < letters.size())
-                            it->axisLetter = std::string(1, letters[static_cast<std::size_t>(j)]);
-                    }
-                } else {
-                    g.literal = w[2];
-                }
-                it->gains[pin.substr(dot + 1)] = std::move(g);
-            }
-        }
+        if (auto added = addHalText(cfg, halPath, *text, letters); !added.ok())
+            return added.error();
     }
     if (cfg.pids.empty())
         cfg.notes.push_back(iniPath + ": its HAL files load no pid component");

@@ -69,6 +69,12 @@ struct LinuxCncConfig {
 Result<LinuxCncConfig> readLinuxCncConfig(const std::string& iniPath,
                                           const std::string& hallibDir = "/usr/share/linuxcnc/hallib");
 
+/// Reads one HAL file's text into `cfg`: `loadrt pid` lines add pid instances (names= or count=/num_chan=,
+/// 1 to 64), `setp <pid>.<gain> VALUE` lines record where each gain comes from ([SECTION]KEY or a literal);
+/// `letters` are the coordinate letters of trivial kinematics (joint n is letters[n]). Every other line is left
+/// alone (HAL files hold much else). A malformed pid line is refused naming `halPath` and the line.
+Status addHalText(LinuxCncConfig& cfg, const std::string& halPath, std::string_view text, std::string_view letters);
+
 /// A gain to persist: pid pin suffix (Pgain …) and its new value.
 struct GainChange {
     std::string pid;
