@@ -1342,6 +1342,14 @@
         <translation>test, axis, fs_Hz のメタデータを持つキャプチャ CSV</translation>
     </message>
     <message>
+        <source>LinuxCNC HAL session</source>
+        <translation>LinuxCNC の HAL セッション</translation>
+    </message>
+    <message>
+        <source>Attaches to the running HAL session of LinuxCNC (or a bare HAL loop): an axis is a pid instance, units are the HAL&apos;s; halcmd from AXISTUNE_HALCMD (docs/linuxcnc.md).</source>
+        <translation>動作中の LinuxCNC の HAL セッション (または HAL だけのループ) に接続します。軸は pid インスタンス、単位は HAL のものです。halcmd は AXISTUNE_HALCMD で指定できます (docs/linuxcnc.md)。</translation>
+    </message>
+    <message>
         <source>The embedded simulated drive on a machine preset (docs/simulator.md); model=PATH puts an identified rigid-body model in place of one axis&apos;s plant.</source>
         <translation>機械プリセット上の内蔵シミュレーションサーボアンプ (docs/simulator.md)。model=PATH で 1 軸のプラントを同定した剛体モデルに置き換えます。</translation>
     </message>

@@ -180,13 +180,16 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
     for (bool v : m->frf.valid)
         valid += v ? 1 : 0;
     std::cout << "{\"out\": \"" << o.out << "\", \"method\": \"" << o.method << "\", \"points\": " << m->frf.size()
-              << ", \"valid_points\": " << valid << ", \"motion_time_s\": " << m->motionTimeS
-              << ", \"amplitude_Nm\": " << m->frf.metadata["amplitude_Nm"] << ", \"fs_Hz\": " << m->frf.metadata["fs_Hz"];
-    if (o.method == "multisine") {
-        std::cout << ", \"crest_factor\": " << m->frf.metadata["crest_factor"] << ", \"rms_Nm\": " << m->frf.metadata["rms_Nm"]
-                  << ", \"spacing_Hz\": " << m->frf.metadata["spacing_Hz"] << ", \"periods\": " << m->frf.metadata["periods"]
-                  << ", \"settle_s\": " << m->frf.metadata["settle_s"];
+              << ", \"valid_points\": " << valid << ", \"motion_time_s\": " << m->motionTimeS;
+    // Numbers of the drive's metadata, those it gave (hal: states its amplitude in the PID output's units).
+    for (const char* key : {"amplitude_Nm", "amplitude_peak", "fs_Hz", "crest_factor", "rms_Nm", "amplitude_rms",
+                            "spacing_Hz", "periods", "settle_s"}) {
+        const auto it = m->frf.metadata.find(key);
+        if (it != m->frf.metadata.end() && model::parseNumber(it->second))
+            std::cout << ", \"" << key << "\": " << it->second;
     }
+    if (const auto q = m->frf.metadata.find("quantity"); q != m->frf.metadata.end())
+        std::cout << ", \"quantity\": \"" << q->second << "\"";
     std::cout << "}\n";
     return 0;
 }
@@ -246,6 +249,7 @@ int runCapture(const CaptureOptions& o)
         req.fmaxHz = o.fmax;
         req.points = o.points;
         req.amplitudePct = o.amplitudePct;
+        req.amplitudePeak = o.amplitude; // 0 unless given: the peak in the injection point's own units (hal:)
         req.settleS = o.settle;
         req.minMeasureS = o.minMeasure;
     } else {
@@ -290,7 +294,8 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         sub.add_option("--connect", o->connect, connectOptionHelp())->capture_default_str();
         sub.add_option("--axis", o->axis, "axis name, e.g. X (all tests but circle)");
         sub.add_option("--test", o->test, "step | jog | hold | current-step | frf | circle")->capture_default_str();
-        sub.add_option("--amplitude", o->amplitude, "step: motor velocity step [rad/s]; current-step: q-axis current step [A]");
+        sub.add_option("--amplitude", o->amplitude, "step: motor velocity step [rad/s]; current-step: q-axis current step [A]; "
+                                                    "frf on hal:: the multisine's peak in the PID output's units (instead of --amplitude-pct)");
         sub.add_option("--distance", o->distance, "jog: distance [m or rad]");
         sub.add_option("--velocity", o->velocity, "jog: velocity [m/s or rad/s]");
         sub.add_option("--acceleration", o->acceleration, "jog: acceleration [m/s^2 or rad/s^2]")->capture_default_str();

@@ -192,6 +192,9 @@ int ConnectDialog::current() const
 
 void ConnectDialog::updateMode()
 {
+    // A refusal or failure belongs to the form it was about: another backend's form starts without it.
+    if (m_stack->currentIndex() != std::max(0, current()))
+        m_status->clear();
     m_stack->setCurrentIndex(std::max(0, current()));
 }
 

@@ -67,6 +67,10 @@ struct TestRequest {
     double fmaxHz = 3900.0;
     int points = 60;
     double amplitudePct = 5.0;   ///< % of rated torque; refused above DriveLimits::frfAmplitudeMaxPct
+    /// The excitation's peak in the units of the drive's injection point instead of amplitudePct (0: not given).
+    /// Only drives whose capabilities say frfPeakInOutputUnits take it (hal:: the PID output's units); the others
+    /// refuse a request that gives it.
+    double amplitudePeak = 0.0;
     double settleS = 0.0;        ///< settle per frequency; 0: from the loop's dynamics
     double minMeasureS = 0.0;    ///< measured time per frequency at least; 0: from the loop's dynamics
     // Frf with FrfMethod::Multisine (docs/multisine.md): amplitudePct is the PEAK of the multisine,
@@ -118,6 +122,9 @@ struct DriveCapabilities {
     bool evaluatesFrf = false;         ///< readFrequencyResponse() answers; false: the host evaluates the trace
     bool writesParameters = true;      ///< writeParameters() can change values (false: a read-only backend)
     bool hasLink = true;               ///< a connection that can be lost (false: a file or an in-process drive)
+    /// FRF amplitudes in the injection point's own units (TestRequest::amplitudePeak; hal:: the PID output's
+    /// units, amplitudePct then is % of the pid's maxoutput); false: % of rated torque only.
+    bool frfPeakInOutputUnits = false;
 
     bool offers(TestType t) const;
     bool offers(FrfMethod m) const;

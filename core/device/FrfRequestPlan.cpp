@@ -72,6 +72,9 @@ Result<FrfRequestPlan> planFrfRequest(const TestRequest& r, const model::Paramet
         return makeError(ErrorCode::BadInput,
                          "FRF plan: the rated torque (motor.rated_current × motor.torque_constant) "
                          "must be positive");
+    if (r.amplitudePeak != 0.0)
+        return makeError(ErrorCode::BadInput, "FRF amplitude: this drive takes it in % of rated torque (amplitudePct, --amplitude-pct), not as a peak "
+                         "in output units (amplitudePeak, --amplitude)");
     if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0))
         return makeError(ErrorCode::OutOfRange, "FRF amplitude must be a positive % of the rated torque");
     if (!(r.settleS >= 0.0) || !(r.minMeasureS >= 0.0))

@@ -71,8 +71,9 @@ private slots:
         d.startConnect(); // refused before anything is sent, with the translated label
         QVERIFY(d.errorText().contains(QCoreApplication::translate("DriveRegistry", "Host")));
         maybeScreenshot(&d, "connect-dialog-modbus");
-        // Simulated machine: the presets as a list, the seed.
+        // Simulated machine: the presets as a list, the seed. The Modbus form's refusal does not follow.
         d.setSimulated("dd-table", 3);
+        QVERIFY(d.errorText().isEmpty());
         auto* preset = d.findChild<QComboBox*>("setting_sim_preset");
         QVERIFY(preset);
         QVERIFY(preset->count() >= 3);
@@ -88,6 +89,11 @@ private slots:
         QVERIFY(d.setSetting("file", "/data/step.csv"));
         QCOMPARE(d.uri(), QStringLiteral("replay:/data/step.csv"));
         maybeScreenshot(&d, "connect-dialog-replay");
+        // LinuxCNC HAL: nothing to fill in (the running HAL session), no seed.
+        QVERIFY(d.selectBackend("hal:"));
+        QVERIFY(!d.findChild<QSpinBox*>("seed_hal"));
+        QCOMPARE(d.uri(), QStringLiteral("hal:"));
+        maybeScreenshot(&d, "connect-dialog-hal");
     }
 
     void labelsAreTranslated()

@@ -330,6 +330,11 @@ Result<HalRecord> runExcitation(HalClient& client, HalInjection& injection, std:
     const double rowsEnd[2] = {0.0, 0.0};
     bool endWritten = false;
     auto nextCheck = std::chrono::steady_clock::now();
+    // A HAL session that stops (or a thread that no longer runs) delivers no rows: after this long without one the
+    // test fails instead of waiting forever.
+    const auto stallLimit = std::max(std::chrono::nanoseconds(std::chrono::seconds(1)),
+                                     std::chrono::nanoseconds(200 * injection.axis().periodNs));
+    auto lastRow = std::chrono::steady_clock::now();
     double lastProgress = -1.0;
     while (read < excitation.size()) {
         if (control.abort && control.abort->load()) {
@@ -362,6 +367,7 @@ Result<HalRecord> runExcitation(HalClient& client, HalInjection& injection, std:
                 rec.columns[c].push_back(row[c]);
             ++read;
             moved = true;
+            lastRow = std::chrono::steady_clock::now();
         }
         if (written < excitation.size() && (*writer)->underruns() != underrunsBefore) {
             disarm();
@@ -369,6 +375,13 @@ Result<HalRecord> runExcitation(HalClient& client, HalInjection& injection, std:
                                                     " rows: AxisTune did not keep the excitation coming in time");
         }
         const auto now = std::chrono::steady_clock::now();
+        if (now - lastRow > stallLimit) {
+            disarm();
+            return makeError(ErrorCode::Device, "the HAL sampler delivered no row for " +
+                                                    num(std::chrono::duration<double>(now - lastRow).count()) +
+                                                    " s: the HAL session stopped or " + injection.axis().thread +
+                                                    " no longer runs");
+        }
         if (now >= nextCheck) {
             nextCheck = now + std::chrono::milliseconds(10);
             auto trip = client.readPin(inj + ".trip");

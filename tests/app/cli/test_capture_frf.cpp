@@ -82,4 +82,10 @@ TEST(CliCaptureFrf, BadOptionsGiveExitCode2)
     EXPECT_EQ(r.exitCode, 2);
     r = runCli("capture --connect sim:vmc --axis X --test step --amplitude 1 --sweep-out /tmp/s.csv --out /tmp/axistune_simfrf_bad.csv");
     EXPECT_EQ(r.exitCode, 2);
+    // A peak in output units is hal:'s (docs/linuxcnc.md); the simulated drive takes % of rated torque and says so.
+    for (const char* method : {"multisweep", "multisine"}) {
+        r = runCli(base + "--method " + method + " --amplitude 0.5");
+        EXPECT_EQ(r.exitCode, 2) << method;
+        EXPECT_NE(r.err.find("--amplitude-pct"), std::string::npos) << r.err;
+    }
 }

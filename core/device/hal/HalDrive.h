@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The `hal:` backend (docs/linuxcnc.md "The hal: connection"): a running HAL session (LinuxCNC, or a bare HAL
+// loop such as scripts/hal-testbed) seen as a drive. An axis is a `pid` instance whose do-pid-calcs runs on a
+// thread; the drive input is the net driven by <pid>.output, the feedback the net into <pid>.feedback; units
+// are the HAL's. Parameters are the pid's gain pins (setp with read-back). Tests: FRF by multisine through
+// AxisTune's guarded injection (HalAxis.h), evaluated here with core's DSP as the plant
+// feedback / (PID output + injection). Nothing is inserted between tests; every test removes what it inserted.
+
+#include "core/device/Drive.h"
+#include "core/device/DriveRegistry.h"
+#include "core/device/hal/HalAxis.h"
+#include "core/dsp/Multisine.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace axistune::device::hal {
+
+/// The gain and limit pins of a LinuxCNC `pid` AxisTune offers as parameters (those the instance has).
+std::vector<model::ParameterMeta> pidParameterMetadata();
+
+/// An FRF test of a `hal:` axis as planned from the request and the axis: the multisine, how many periods settle
+/// and how many are averaged, and the excitation streamed one value per servo period.
+struct HalFrfPlan {
+    HalAxis axis;
+    dsp::MultisineDesign design;
+    std::size_t settlePeriods = 1;
+    std::size_t periods = 3;
+    double fsHz = 0.0;
+    std::size_t totalSamples() const { return (settlePeriods + periods) * design.periodSamples(); }
+};
+
+/// Checks a request against the axis (multisine only, band below half the servo rate, peak at most half of
+/// maxoutput, at most HalDrive::kMaxTestS of motion) and plans it. Errors name the field and the limit.
+Result<HalFrfPlan> planHalFrf(const TestRequest& request, const HalAxis& axis);
+
+/// The plant FRF feedback / drive input of a completed record of that plan, with its metadata.
+Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& record);
+
+class HalDrive : public Drive {
+public:
+    static constexpr double kMaxTestS = 600.0;     ///< longest test [s]
+    static constexpr double kMaxAmplitudePct = 50; ///< FRF peak, % of the pid's maxoutput (the injection's limit)
+
+    /// Attaches to the HAL session halcmd reaches; removes an injection a dead AxisTune left behind. Errors say that
+    /// no HAL session answers, quoting halcmd.
+    static Result<std::unique_ptr<HalDrive>> open(const HalSessionOptions& options);
+    ~HalDrive() override;
+
+    Result<DriveIdentity> identify() override;
+    Result<std::vector<model::ParameterMeta>> parameterMetadata(const std::string& axis) override;
+    Result<model::ParameterValues> readParameters(const std::string& axis, std::span<const std::string> keys) override;
+    Status writeParameters(const std::string& axis, const model::ParameterValues& values) override;
+    Status startTest(const TestRequest& request) override;
+    Result<TestStatus> pollTest() override;
+    Result<model::Capture> readTrace() override;
+    Status abortTest() override;
+    Result<FrfMeasurement> readFrequencyResponse() override;
+    Result<DriveCapabilities> capabilities(const std::string& axis) override;
+    Result<DriveLimits> limits(const std::string& axis) override;
+    Result<TestPlan> planTest(const TestRequest& request) override;
+
+private:
+    explicit HalDrive(HalSessionOptions options) : m_options(std::move(options)) {}
+    Result<std::vector<std::string>> pidNames() const;
+    Status checkAxis(const std::string& axis) const;
+    void joinWorker();
+    void run(HalFrfPlan plan, std::vector<double> excitation);
+
+    HalSessionOptions m_options;
+    std::thread m_worker;
+    mutable std::mutex m_mutex;
+    std::condition_variable m_changed;
+    TestStatus m_status; ///< guarded by m_mutex
+    std::atomic<bool> m_abort{false};
+    std::optional<HalFrfPlan> m_plan;  ///< of the last test
+    std::optional<HalRecord> m_record; ///< of the last completed test
+    bool m_linkLost = false;           ///< the last test failed and HAL no longer answers (guarded by m_mutex)
+    std::string m_firmware;
+};
+
+} // namespace axistune::device::hal
+
+namespace axistune::device {
+/// The registry entry of `hal:` (Backends.def).
+DriveBackend halBackend();
+} // namespace axistune::device
