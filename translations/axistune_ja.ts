@@ -1342,6 +1342,22 @@
         <translation>test, axis, fs_Hz のメタデータを持つキャプチャ CSV</translation>
     </message>
     <message>
+        <source>LinuxCNC machine (INI file)</source>
+        <translation>LinuxCNC の機械 (INI ファイル)</translation>
+    </message>
+    <message>
+        <source>Attaches to a LinuxCNC running from this INI: its joints&apos; pid instances and the INI keys that feed their gains are read from its HAL files; axes by their letters (docs/linuxcnc.md).</source>
+        <translation>この INI で動作中の LinuxCNC に接続します。各ジョイントの pid インスタンスと、そのゲインを与える INI キーを HAL ファイルから読み取ります。軸は軸名の文字で指定します (docs/linuxcnc.md)。</translation>
+    </message>
+    <message>
+        <source>INI file</source>
+        <translation>INI ファイル</translation>
+    </message>
+    <message>
+        <source>the INI LinuxCNC was started from</source>
+        <translation>LinuxCNC を起動した INI</translation>
+    </message>
+    <message>
         <source>LinuxCNC HAL session</source>
         <translation>LinuxCNC の HAL セッション</translation>
     </message>

@@ -114,14 +114,17 @@ protected:
             const std::string file = recordedCapture();
             ASSERT_FALSE(file.empty()) << "recording the capture to replay failed";
             m_uri = "replay:" + file;
-        } else if (b == "hal") {
+        } else if (b == "hal" || b == "linuxcnc") {
 #ifdef AXISTUNE_SOURCE_DIR
             // The repository's LinuxCNC test machine: LinuxCNC's pid around AxisTune's plant (docs/linuxcnc.md).
             const std::string script = std::string(AXISTUNE_SOURCE_DIR) + "/scripts/hal-testbed";
             ASSERT_EQ(std::system((script + " start >/dev/null 2>&1").c_str()), 0) << script << " start failed";
             m_halScript = script;
             ::setenv("AXISTUNE_HALCMD", (script + " halcmd").c_str(), 1);
-            m_uri = "hal:";
+            // linuxcnc: the test machine's own INI, the configuration the HAL session was started from.
+            m_uri = b == "hal"
+                        ? std::string("hal:")
+                        : "linuxcnc:" + std::string(AXISTUNE_SOURCE_DIR) + "/linuxcnc/testbed/axistune-testbed.ini";
 #else
             FAIL() << "the hal backend's rules need AXISTUNE_SOURCE_DIR (tests/linuxcnc)";
 #endif
@@ -220,6 +223,11 @@ protected:
         return std::nullopt;
     }
 
+    bool halBackend() const
+    {
+        return GetParam() == "hal" || GetParam() == "linuxcnc";
+    }
+
     std::string m_uri;
     std::string m_halScript; ///< hal: the test machine's script, stopped after the rule
     std::unique_ptr<testing::SimDrive> m_server;
@@ -244,6 +252,9 @@ TEST_P(DriveConformance, Identity)
     if (GetParam() == "hal") {
         EXPECT_EQ(m_identity.machine, "hal");
         EXPECT_EQ(m_identity.axes, std::vector<std::string>{"pid.x"}); // the test machine's one pid
+    } else if (GetParam() == "linuxcnc") {
+        EXPECT_EQ(m_identity.machine, "AxisTune test machine");    // [EMC]MACHINE
+        EXPECT_EQ(m_identity.axes, std::vector<std::string>{"X"}); // joint 0, [TRAJ]COORDINATES
     } else if (GetParam() != "replay") {
         EXPECT_EQ(m_identity.machine, "vmc");
     } else {
@@ -353,7 +364,7 @@ TEST_P(DriveConformance, WriteAndReadBack)
     const double old = m_drive->readParameters(m_axis, key).value().at(p->key);
     // Inside the range, not the value it had. hal:'s pid pins have no upper limit of their own (1e9 stands for
     // none): a tenth of that would be a gain that throws the test machine's loop; a small deadband step is written.
-    const double wanted = GetParam() == "hal" ? old + 1e-3 : old + 0.1 * (p->maxSi - old);
+    const double wanted = halBackend() ? old + 1e-3 : old + 0.1 * (p->maxSi - old);
     ASSERT_NE(wanted, old);
     auto st = m_drive->writeParameters(m_axis, {{p->key, wanted}});
     ASSERT_TRUE(st.ok()) << errorText(st.error());
@@ -361,7 +372,7 @@ TEST_P(DriveConformance, WriteAndReadBack)
     // Parameters travel as float32 over Modbus (docs/modbus.md): the read-back is the value rounded to
     // float32, a relative error of at most 2^-24; the embedded drive keeps the double exactly. halcmd shows a
     // pin with seven significant digits (hal:): half a unit of the seventh digit.
-    const double tolerance = GetParam() == "hal" ? 5e-7 * std::abs(wanted) : std::ldexp(std::abs(wanted), -24);
+    const double tolerance = halBackend() ? 5e-7 * std::abs(wanted) : std::ldexp(std::abs(wanted), -24);
     EXPECT_LE(std::abs(back - wanted), tolerance) << p->key;
     ASSERT_TRUE(m_drive->writeParameters(m_axis, {{p->key, old}}).ok());
 }
@@ -513,7 +524,7 @@ TEST_P(DriveConformance, LostConnectionIsReportedWithinTheTimeout)
         }
         return;
     }
-    if (GetParam() == "hal") {
+    if (halBackend()) {
         // The HAL session stops while a test runs: the sampler delivers no more rows, and the loss is reported
         // by pollTest as a Device error within the stall limit (1 s, HalAxis.cpp runExcitation) plus the halcmd
         // calls that find HAL gone; 2 s are allowed for them on a loaded machine.
@@ -531,7 +542,7 @@ TEST_P(DriveConformance, LostConnectionIsReportedWithinTheTimeout)
         const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
         ASSERT_FALSE(s.ok()) << "state " << testStateName(s->state) << ": " << s->detail;
         EXPECT_EQ(s.error().code, ErrorCode::Device);
-        EXPECT_NE(s.error().detail.find("hal:"), std::string::npos) << s.error().detail;
+        EXPECT_NE(s.error().detail.find(GetParam() + ":"), std::string::npos) << s.error().detail;
         EXPECT_LT(elapsed, 1.0 + 2.0) << s.error().detail;
         EXPECT_FALSE(m_drive->identify().ok());
         return;

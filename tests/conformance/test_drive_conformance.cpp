@@ -13,8 +13,8 @@ INSTANTIATE_TEST_SUITE_P(Backends, DriveConformance, ::testing::Values("sim", "m
 // Every registered backend is in the suite: a new registration without an instantiation above fails.
 TEST(DriveConformanceCoverage, EveryRegisteredBackendIsInstantiated)
 {
-    // hal: is instantiated in tests/linuxcnc/test_hal_conformance.cpp.
-    const std::vector<std::string> covered{"sim:", "modbus://", "replay:", "hal:"};
+    // hal: and linuxcnc: are instantiated in tests/linuxcnc/test_hal_conformance.cpp.
+    const std::vector<std::string> covered{"sim:", "modbus://", "replay:", "hal:", "linuxcnc:"};
     for (const auto& b : registeredBackends()) {
         EXPECT_NE(std::find(covered.begin(), covered.end(), b.scheme), covered.end())
             << b.scheme << " is registered but not run by the conformance suite";

@@ -7,7 +7,7 @@
 namespace axistune::device {
 namespace {
 
-INSTANTIATE_TEST_SUITE_P(Backends, DriveConformance, ::testing::Values("hal"),
+INSTANTIATE_TEST_SUITE_P(Backends, DriveConformance, ::testing::Values("hal", "linuxcnc"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 } // namespace

@@ -14,6 +14,8 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <thread>
@@ -574,4 +576,52 @@ TEST_F(HalTestbed, CliCaptureThroughHalWritesThePlantFrf)
     EXPECT_EQ(WEXITSTATUS(unlimited), 4); // a safety refusal (docs/cli.md exit codes)
     EXPECT_FALSE(std::filesystem::exists(refused));
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+}
+
+// Issue 17 item 3, Persist: a gain changed live (setp through the hal: connection) is written by `axistune-cli
+// persist --from-hal` into exactly the INI key that feeds it (one line differs, the backup is the original), and a
+// HAL session started from the persisted INI reads the new gain; a dry run writes nothing; an unknown axis is exit 2.
+TEST_F(HalTestbed, PersistedGainsAreReadByTheNextStart)
+{
+    startBed(1000000);
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "persist-testbed";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path src = std::filesystem::path(AXISTUNE_SOURCE_DIR) / "linuxcnc/testbed";
+    for (const char* f : {"axistune-testbed.ini", "axistune-testbed.hal"})
+        std::filesystem::copy_file(src / f, dir / f);
+    const std::string ini = (dir / "axistune-testbed.ini").string();
+    auto slurp = [](const std::string& p) {
+        std::ifstream f(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(f), {});
+    };
+    const std::string original = slurp(ini);
+    const std::string cli = std::string(AXISTUNE_CLI);
+    ASSERT_EQ(std::system((cli + " params --connect linuxcnc:" + ini + " --axis X --set Pgain=3.25 >/dev/null").c_str()),
+              0);
+    EXPECT_DOUBLE_EQ(getp("pid.x.Pgain"), 3.25);
+
+    ASSERT_EQ(std::system((cli + " persist --ini " + ini + " --axis X --from-hal --dry-run >/dev/null").c_str()), 0);
+    EXPECT_EQ(slurp(ini), original);
+    ASSERT_EQ(std::system((cli + " persist --ini " + ini + " --axis X --from-hal >/dev/null").c_str()), 0);
+    const std::string persisted = slurp(ini);
+    EXPECT_EQ(slurp(ini + ".axistune-backup"), original);
+    // Line by line: only [JOINT_0]P differs, and it reads 3.25.
+    std::istringstream a(original), b(persisted);
+    std::string la, lb;
+    std::vector<std::pair<std::string, std::string>> changed;
+    while (std::getline(a, la) && std::getline(b, lb))
+        if (la != lb)
+            changed.emplace_back(la, lb);
+    EXPECT_FALSE(std::getline(b, lb)) << "the persisted INI has more lines";
+    ASSERT_EQ(changed.size(), 1u);
+    EXPECT_EQ(changed[0].first, "P = 2.0");
+    EXPECT_EQ(changed[0].second, "P = 3.25");
+    EXPECT_EQ(WEXITSTATUS(std::system((cli + " persist --ini " + ini + " --axis Y --set Pgain=1 2>/dev/null").c_str())), 2);
+
+    // The next start from the persisted INI: the pid gets 3.25 from [JOINT_0]P.
+    ASSERT_TRUE(runScript({"stop"}));
+    ASSERT_TRUE(runScript({"start", "--ini", ini}));
+    EXPECT_DOUBLE_EQ(getp("pid.x.Pgain"), 3.25);
 }

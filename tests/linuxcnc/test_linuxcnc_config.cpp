@@ -139,6 +139,7 @@ TEST_F(TempDir, TheTestMachineConfigurationIsALinuxCncConfiguration)
     const PidInstance* p = cfg->findPid("pid.x");
     ASSERT_NE(p, nullptr);
     EXPECT_EQ(p->joint, 0);
+    EXPECT_EQ(p->axisLetter, "X"); // [TRAJ]COORDINATES with trivkins
     EXPECT_EQ(p->gains.at("Pgain").key, "P");
     EXPECT_EQ(p->gains.at("maxerror").key, "FERROR");
 }

@@ -61,17 +61,21 @@ Status noTestRunning(const TestStatus& s, const char* what)
     return Status::success();
 }
 
-std::vector<std::string> halcmdFromEnvironment()
+} // namespace
+
+Result<HalSessionOptions> halSessionFromEnvironment()
 {
     // AXISTUNE_HALCMD: the halcmd command line, words separated by blanks (scripts/hal-testbed halcmd for the
     // repository's test machine run as root, docs/linuxcnc.md).
+    HalSessionOptions o;
     const char* env = std::getenv("AXISTUNE_HALCMD");
-    if (!env || !*env)
-        return {"halcmd"};
-    return splitWords(env);
+    if (env && *env) {
+        o.halcmd = splitWords(env);
+        if (o.halcmd.empty())
+            return makeError(ErrorCode::BadInput, "AXISTUNE_HALCMD is blank");
+    }
+    return o;
 }
-
-} // namespace
 
 std::vector<model::ParameterMeta> pidParameterMetadata()
 {
@@ -204,8 +208,9 @@ Result<std::unique_ptr<HalDrive>> HalDrive::open(const HalSessionOptions& option
     var.halcmd = {"linuxcnc_var"};
     var.timeout = std::chrono::milliseconds(5000);
     auto version = runHalcmd(var, {"LINUXCNCVERSION"});
-    const auto words = version ? splitWords(*version) : std::vector<std::string>{};
-    d->m_firmware = words.empty() ? "LinuxCNC (version not stated)" : "LinuxCNC " + words.front();
+    const std::string first =
+        version ? version->substr(0, std::min(version->find_first_of(" \t\r\n"), version->size())) : std::string();
+    d->m_firmware = first.empty() ? "LinuxCNC (version not stated)" : "LinuxCNC " + first;
     return d;
 }
 
@@ -589,11 +594,10 @@ DriveBackend halBackend()
     b.open = [](const ConnectionSettings& s) -> Result<std::unique_ptr<Drive>> {
         if (s.uri != kScheme)
             return makeError(ErrorCode::BadInput, "connection '" + s.uri + "': expected hal: (nothing after it)");
-        HalSessionOptions o;
-        o.halcmd = halcmdFromEnvironment();
-        if (o.halcmd.empty())
-            return makeError(ErrorCode::BadInput, "AXISTUNE_HALCMD is blank");
-        auto d = HalDrive::open(o);
+        auto o = halSessionFromEnvironment();
+        if (!o)
+            return o.error();
+        auto d = HalDrive::open(*o);
         if (!d)
             return makeError(d.error().code, "connection '" + s.uri + "': " + d.error().detail);
         return std::unique_ptr<Drive>(std::move(d).value());

@@ -23,6 +23,10 @@
 
 namespace axistune::device::hal {
 
+/// halcmd from the environment: AXISTUNE_HALCMD (the command line, words separated by blanks; e.g.
+/// "scripts/hal-testbed halcmd" for the repository's test machine run as root), else `halcmd`.
+Result<HalSessionOptions> halSessionFromEnvironment();
+
 /// The gain and limit pins of a LinuxCNC `pid` AxisTune offers as parameters (those the instance has).
 std::vector<model::ParameterMeta> pidParameterMetadata();
 

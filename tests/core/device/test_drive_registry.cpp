@@ -25,9 +25,9 @@ TEST(DriveRegistry, ListsTheBackendsInRegistrationOrder)
         EXPECT_EQ(b.uriForm.rfind(b.scheme, 0), 0u) << b.uriForm;
         EXPECT_TRUE(b.open && b.uriFromSettings) << b.scheme;
     }
-    EXPECT_EQ(schemes, (std::vector<std::string>{"sim:", "modbus://", "replay:", "hal:"}));
+    EXPECT_EQ(schemes, (std::vector<std::string>{"sim:", "modbus://", "replay:", "hal:", "linuxcnc:"}));
     EXPECT_EQ(registeredUriForms(), "sim:PRESET[?model=PATH&axis=NAME], modbus://HOST:PORT[?timeout_ms=N&map=FAMILY], "
-                                    "replay:FILE.csv or hal:");
+                                    "replay:FILE.csv, hal: or linuxcnc:PATH/machine.ini");
 }
 
 TEST(DriveRegistry, ConnectDispatchesByScheme)

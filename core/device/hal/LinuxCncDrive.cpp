@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/device/hal/LinuxCncDrive.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace axistune::device::hal {
+namespace {
+
+const std::string kScheme = "linuxcnc:";
+
+std::string axisList(const std::vector<std::pair<std::string, std::string>>& axes)
+{
+    std::string out;
+    for (const auto& [name, pid] : axes)
+        out += (out.empty() ? "" : ", ") + name + " (" + pid + ")";
+    return out.empty() ? std::string("none") : out;
+}
+
+} // namespace
+
+std::string linuxCncAxisName(const PidInstance& pid)
+{
+    if (!pid.axisLetter.empty())
+        return pid.axisLetter;
+    if (pid.joint >= 0)
+        return "joint" + std::to_string(pid.joint);
+    return pid.name;
+}
+
+Result<std::unique_ptr<LinuxCncDrive>> LinuxCncDrive::open(const std::string& iniPath, const HalSessionOptions& options)
+{
+    auto cfg = readLinuxCncConfig(iniPath);
+    if (!cfg)
+        return cfg.error();
+    auto hal = HalDrive::open(options);
+    if (!hal)
+        return hal.error();
+    auto id = (*hal)->identify();
+    if (!id)
+        return id.error();
+    std::unique_ptr<LinuxCncDrive> d(new LinuxCncDrive);
+    d->m_config = std::move(cfg).value();
+    d->m_hal = std::move(hal).value();
+    std::vector<const PidInstance*> pids;
+    for (const auto& p : d->m_config.pids)
+        pids.push_back(&p);
+    std::stable_sort(pids.begin(), pids.end(), [](const PidInstance* a, const PidInstance* b) {
+        return (a->joint < 0 ? 1000 : a->joint) < (b->joint < 0 ? 1000 : b->joint);
+    });
+    for (const PidInstance* p : pids)
+        if (std::find(id->axes.begin(), id->axes.end(), p->name) != id->axes.end())
+            d->m_axes.emplace_back(linuxCncAxisName(*p), p->name);
+    if (d->m_axes.empty()) {
+        std::string configured;
+        for (const auto& p : d->m_config.pids)
+            configured += (configured.empty() ? "" : ", ") + p.name;
+        return makeError(ErrorCode::NotFound, iniPath + ": none of its pid instances (" +
+                                                  (configured.empty() ? std::string("none") : configured) +
+                                                  ") runs in the HAL session: is LinuxCNC running from this INI?");
+    }
+    const IniEntry* machine = d->m_config.ini.find("EMC", "MACHINE");
+    d->m_machine = machine && !machine->value.empty() ? machine->value : std::filesystem::path(iniPath).stem().string();
+    return d;
+}
+
+Result<std::string> LinuxCncDrive::pidOf(const std::string& axis) const
+{
+    for (const auto& [name, pid] : m_axes)
+        if (name == axis)
+            return pid;
+    return makeError(ErrorCode::NotFound,
+                     "axis '" + axis + "': not an axis of " + m_config.ini.path + " (" + axisList(m_axes) + ")");
+}
+
+Result<TestRequest> LinuxCncDrive::onPid(const TestRequest& request) const
+{
+    auto pid = pidOf(request.axis);
+    if (!pid)
+        return pid.error();
+    TestRequest r = request;
+    r.axis = *pid;
+    return r;
+}
+
+Result<DriveIdentity> LinuxCncDrive::identify()
+{
+    auto id = m_hal->identify();
+    if (!id)
+        return id.error();
+    DriveIdentity out;
+    out.vendor = id->vendor;
+    out.model = "LinuxCNC configuration";
+    out.firmware = id->firmware;
+    out.machine = m_machine;
+    for (const auto& [name, pid] : m_axes)
+        out.axes.push_back(name);
+    return out;
+}
+
+Result<std::vector<model::ParameterMeta>> LinuxCncDrive::parameterMetadata(const std::string& axis)
+{
+    auto pid = pidOf(axis);
+    if (!pid)
+        return pid.error();
+    auto read = m_hal->parameterMetadata(*pid);
+    if (!read)
+        return read.error();
+    auto metas = std::move(read).value();
+    // Where each gain comes from: the INI key Persist writes, or the HAL file that holds it as a literal.
+    if (const PidInstance* p = m_config.findPid(*pid)) {
+        for (auto& m : metas) {
+            const auto g = p->gains.find(m.key);
+            if (g == p->gains.end())
+                continue;
+            if (!g->second.key.empty())
+                m.description += "; INI [" + g->second.section + "]" + g->second.key;
+            else
+                m.description += "; a literal in " + g->second.halFile + ":" + std::to_string(g->second.halLine);
+        }
+    }
+    return metas;
+}
+
+Result<model::ParameterValues> LinuxCncDrive::readParameters(const std::string& axis, std::span<const std::string> keys)
+{
+    auto pid = pidOf(axis);
+    if (!pid)
+        return pid.error();
+    return m_hal->readParameters(*pid, keys);
+}
+
+Status LinuxCncDrive::writeParameters(const std::string& axis, const model::ParameterValues& values)
+{
+    auto pid = pidOf(axis);
+    if (!pid)
+        return pid.error();
+    return m_hal->writeParameters(*pid, values);
+}
+
+Status LinuxCncDrive::startTest(const TestRequest& request)
+{
+    auto r = onPid(request);
+    if (!r)
+        return r.error();
+    m_lastAxis = request.axis;
+    return m_hal->startTest(*r);
+}
+
+Result<TestStatus> LinuxCncDrive::pollTest()
+{
+    auto s = m_hal->pollTest();
+    if (!s)
+        return makeError(s.error().code, kScheme + m_config.ini.path + ": " + s.error().detail);
+    return s;
+}
+
+Result<model::Capture> LinuxCncDrive::readTrace()
+{
+    auto read = m_hal->readTrace();
+    if (!read)
+        return read;
+    auto c = std::move(read).value();
+    c.metadata["pid"] = c.metadata["axis"];
+    c.metadata["axis"] = m_lastAxis;
+    c.metadata["ini"] = m_config.ini.path;
+    return c;
+}
+
+Status LinuxCncDrive::abortTest()
+{
+    return m_hal->abortTest();
+}
+
+Result<FrfMeasurement> LinuxCncDrive::readFrequencyResponse()
+{
+    auto read = m_hal->readFrequencyResponse();
+    if (!read)
+        return read;
+    auto m = std::move(read).value();
+    m.frf.metadata["axis"] = m_lastAxis;
+    m.frf.metadata["ini"] = m_config.ini.path;
+    if (const IniEntry* u = m_config.ini.find("TRAJ", "LINEAR_UNITS"))
+        m.frf.metadata["linear_units"] = u->value;
+    return m;
+}
+
+Result<DriveCapabilities> LinuxCncDrive::capabilities(const std::string& axis)
+{
+    auto pid = pidOf(axis);
+    if (!pid)
+        return pid.error();
+    return m_hal->capabilities(*pid);
+}
+
+Result<DriveLimits> LinuxCncDrive::limits(const std::string& axis)
+{
+    auto pid = pidOf(axis);
+    if (!pid)
+        return pid.error();
+    return m_hal->limits(*pid);
+}
+
+Result<TestPlan> LinuxCncDrive::planTest(const TestRequest& request)
+{
+    auto r = onPid(request);
+    if (!r)
+        return r.error();
+    return m_hal->planTest(*r);
+}
+
+} // namespace axistune::device::hal
+
+namespace axistune::device {
+
+DriveBackend linuxcncBackend()
+{
+    using namespace hal;
+    DriveBackend b;
+    b.scheme = kScheme;
+    b.label = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "LinuxCNC machine (INI file)");
+    b.uriForm = "linuxcnc:PATH/machine.ini";
+    b.description = AXISTUNE_TRANSLATE_NOOP(
+        "DriveRegistry",
+        "Attaches to a LinuxCNC running from this INI: its joints' pid instances and the INI keys "
+        "that feed their gains are read from its HAL files; axes by their letters (docs/linuxcnc.md).");
+    BackendSetting file =
+        makeSetting("file", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "INI file"), BackendSetting::Type::File);
+    file.required = true;
+    file.hint = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "the INI LinuxCNC was started from");
+    b.settings = {file};
+    b.uriFromSettings = [b](const SettingValues& v) -> Result<std::string> {
+        if (auto st = checkSettings(b, v); !st)
+            return st.error();
+        return kScheme + v.at("file");
+    };
+    b.open = [](const ConnectionSettings& s) -> Result<std::unique_ptr<Drive>> {
+        const std::string path = s.uri.substr(kScheme.size());
+        if (path.empty())
+            return makeError(ErrorCode::BadInput, "connection '" + s.uri + "': expected linuxcnc:PATH/machine.ini");
+        auto o = halSessionFromEnvironment();
+        if (!o)
+            return o.error();
+        auto d = LinuxCncDrive::open(path, *o);
+        if (!d)
+            return makeError(d.error().code, "connection '" + s.uri + "': " + d.error().detail);
+        return std::unique_ptr<Drive>(std::move(d).value());
+    };
+    return b;
+}
+
+} // namespace axistune::device
