@@ -40,6 +40,7 @@ struct CaptureOptions {
     double fmax = 3900.0;
     int points = 60;
     double amplitudePct = 5.0;
+    std::string quantity = "default";
     double settle = 0.0;
     double minMeasure = 0.0;
     std::string sweepOut;
@@ -250,6 +251,13 @@ int runCapture(const CaptureOptions& o)
         req.points = o.points;
         req.amplitudePct = o.amplitudePct;
         req.amplitudePeak = o.amplitude; // 0 unless given: the peak in the injection point's own units (hal:)
+        if (o.quantity == "plant")
+            req.frfQuantity = device::FrfQuantity::Plant;
+        else if (o.quantity == "open-loop")
+            req.frfQuantity = device::FrfQuantity::OpenLoop;
+        else if (o.quantity != "default")
+            return reportError(cmd, makeError(ErrorCode::BadInput, "--quantity must be default, plant or open-loop (got '" +
+                                                                       o.quantity + "')"));
         req.settleS = o.settle;
         req.minMeasureS = o.minMeasure;
     } else {
@@ -308,6 +316,8 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         sub.add_option("--fmin", o->fmin, "frf: lowest frequency [Hz]")->capture_default_str();
         sub.add_option("--fmax", o->fmax, "frf: highest frequency [Hz] (below fs; prbs: at most fs/2)")->capture_default_str();
         sub.add_option("--points", o->points, "frf: log-spaced frequencies")->capture_default_str();
+        sub.add_option("--quantity", o->quantity,
+                       "frf: default (the drive's own), plant or open-loop (hal:, linuxcnc:)")->capture_default_str();
         sub.add_option("--amplitude-pct", o->amplitudePct, "frf: excitation amplitude (multisine: its peak), % of rated torque (at most 50)")
             ->capture_default_str();
         sub.add_option("--spacing-hz", o->spacing, "multisine: line spacing from --fmin to --fmax [Hz] (0: fmin/2)");

@@ -92,6 +92,9 @@ int runDrive(const DriveOptions& o)
         std::vector<std::string> tests, methods;
         for (const auto t : caps->testTypes)
             tests.emplace_back(device::testTypeName(t));
+        std::vector<std::string> quantities;
+        for (const auto q : caps->frfQuantities)
+            quantities.emplace_back(q == device::FrfQuantity::OpenLoop ? "open-loop" : "plant");
         for (const auto m : caps->frfMethods)
             methods.emplace_back(device::frfMethodName(m));
         axesJson[a] = {{"capabilities",
@@ -102,7 +105,8 @@ int runDrive(const DriveOptions& o)
                          {"evaluates_frf", caps->evaluatesFrf},
                          {"writes_parameters", caps->writesParameters},
                          {"has_link", caps->hasLink},
-                         {"frf_peak_in_output_units", caps->frfPeakInOutputUnits}}},
+                         {"frf_peak_in_output_units", caps->frfPeakInOutputUnits},
+                         {"frf_quantities", quantities}}},
                        {"limits",
                         {{"frf_amplitude_max_pct", limitJson(lim->frfAmplitudeMaxPct)},
                          {"current_step_max_A", limitJson(lim->currentStepMaxA)},

@@ -50,6 +50,13 @@ enum class FrfMethod {
 
 const char* frfMethodName(FrfMethod m);
 
+/// What an FRF test reports (a drive states in DriveCapabilities::frfQuantities which ones it offers).
+enum class FrfQuantity {
+    Default,  ///< the drive's own: the closed velocity loop (sim:, modbus://), the plant (hal:)
+    Plant,    ///< feedback / drive input (hal:: the drive input is the PID output plus the injection)
+    OpenLoop, ///< −(controller output) / drive input: the open position loop with the running gains (hal:)
+};
+
 struct TestRequest {
     std::string axis;
     TestType type = TestType::Step;
@@ -71,6 +78,7 @@ struct TestRequest {
     /// Only drives whose capabilities say frfPeakInOutputUnits take it (hal:: the PID output's units); the others
     /// refuse a request that gives it.
     double amplitudePeak = 0.0;
+    FrfQuantity frfQuantity = FrfQuantity::Default; ///< refused unless in DriveCapabilities::frfQuantities
     double settleS = 0.0;        ///< settle per frequency; 0: from the loop's dynamics
     double minMeasureS = 0.0;    ///< measured time per frequency at least; 0: from the loop's dynamics
     // Frf with FrfMethod::Multisine (docs/multisine.md): amplitudePct is the PEAK of the multisine,
@@ -125,6 +133,7 @@ struct DriveCapabilities {
     /// FRF amplitudes in the injection point's own units (TestRequest::amplitudePeak; hal:: the PID output's
     /// units, amplitudePct then is % of the pid's maxoutput); false: % of rated torque only.
     bool frfPeakInOutputUnits = false;
+    std::vector<FrfQuantity> frfQuantities; ///< quantities besides Default an FRF test can report (hal:: plant, open loop)
 
     bool offers(TestType t) const;
     bool offers(FrfMethod m) const;

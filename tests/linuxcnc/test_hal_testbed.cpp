@@ -17,6 +17,7 @@
 #include <fstream>
 #include <sstream>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -624,4 +625,32 @@ TEST_F(HalTestbed, PersistedGainsAreReadByTheNextStart)
     ASSERT_TRUE(runScript({"stop"}));
     ASSERT_TRUE(runScript({"start", "--ini", ini}));
     EXPECT_DOUBLE_EQ(getp("pid.x.Pgain"), 3.25);
+}
+
+// Issue 17 item 4 from the command line: `axistune-cli pid-tune --connect hal: --apply` measures the open loop,
+// proposes gains with a rule for each, applies them and verifies: the measured margins meet the issue's (PM ≥ 45°,
+// GM ≥ 6 dB) and lie within 3° / 1 dB of the prediction; the gains in HAL are the proposed ones.
+TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
+{
+    startBed(1000000);
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::string out = ::testing::TempDir() + "/pid-tune.json";
+    ASSERT_EQ(std::system((std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x --amplitude 0.2 --pm 50 "
+                                                       "--gm 8 --apply --out " + out + " 2>/dev/null").c_str()),
+              0);
+    std::ifstream f(out);
+    const auto j = nlohmann::json::parse(f);
+    EXPECT_TRUE(j.at("applied").get<bool>());
+    EXPECT_EQ(j.at("drive_input"), "torque");
+    const auto& predicted = j.at("proposed").at("predicted");
+    const auto& measured = j.at("verified").at("measured");
+    EXPECT_GE(measured.at("phase_margin_deg").get<double>(), 45.0);
+    EXPECT_GE(measured.at("gain_margin_dB").get<double>(), 6.0);
+    EXPECT_NEAR(measured.at("phase_margin_deg").get<double>(), predicted.at("phase_margin_deg").get<double>(), 3.0);
+    EXPECT_NEAR(measured.at("gain_margin_dB").get<double>(), predicted.at("gain_margin_dB").get<double>(), 1.0);
+    EXPECT_EQ(j.at("proposed").at("rules").size(), 6u); // crossover, P, I, D, FF2, FF1
+    for (const char* k : {"Pgain", "Igain", "Dgain", "FF1", "FF2"}) {
+        const double proposed = j.at("proposed").at("gains").at(k).get<double>();
+        EXPECT_NEAR(getp(std::string("pid.x.") + k) / proposed, 1.0, 1e-6) << k; // halcmd shows 7 digits
+    }
 }

@@ -107,6 +107,7 @@ Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
         return makeError(ErrorCode::BadInput, axis.thread + " has no period");
     HalFrfPlan plan;
     plan.axis = axis;
+    plan.quantity = r.frfQuantity == FrfQuantity::OpenLoop ? FrfQuantity::OpenLoop : FrfQuantity::Plant;
     plan.fsHz = 1e9 / static_cast<double>(axis.periodNs);
     if (!(axis.maxOutput > 0.0))
         return makeError(ErrorCode::Safety, axis.pid + ".maxoutput is 0 (no output limit): AxisTune bounds its "
@@ -172,7 +173,15 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     const std::size_t skip = plan.settlePeriods * plan.design.periodSamples();
     const std::size_t len = plan.periods * plan.design.periodSamples();
     const std::span<const double> u(record.columns[DriveInput].data() + skip, len);
-    const std::span<const double> y(record.columns[Feedback].data() + skip, len);
+    const bool openLoop = plan.quantity == FrfQuantity::OpenLoop;
+    std::vector<double> minusPid;
+    if (openLoop) {
+        minusPid.resize(len);
+        for (std::size_t i = 0; i < len; ++i)
+            minusPid[i] = -record.columns[PidOutput][skip + i];
+    }
+    const std::span<const double> y = openLoop ? std::span<const double>(minusPid)
+                                               : std::span<const double>(record.columns[Feedback].data() + skip, len);
     auto a = dsp::analyzeMultisine(plan.design, u, y, plan.periods);
     if (!a)
         return a.error();
@@ -181,9 +190,9 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     out.relativeNoise = std::move(a->stats.relativeNoise);
     out.motionTimeS = static_cast<double>(n) / plan.fsHz;
     auto& md = out.frf.metadata;
-    md["quantity"] = "plant";
+    md["quantity"] = openLoop ? "open-loop" : "plant";
     md["input"] = "drive_input"; // <pid>.output + injection: what the drive receives
-    md["output"] = "feedback";
+    md["output"] = openLoop ? "-pid_output" : "feedback";
     md["hal_units"] = "feedback per PID-output unit (the configuration's units)";
     md["pid"] = plan.axis.pid;
     md["thread"] = plan.axis.thread;
@@ -385,6 +394,7 @@ Result<DriveCapabilities> HalDrive::capabilities(const std::string& axis)
     c.writesParameters = true;
     c.hasLink = true;
     c.frfPeakInOutputUnits = true;
+    c.frfQuantities = {FrfQuantity::Plant, FrfQuantity::OpenLoop};
     return c;
 }
 

@@ -38,6 +38,7 @@ struct HalFrfPlan {
     std::size_t settlePeriods = 1;
     std::size_t periods = 3;
     double fsHz = 0.0;
+    FrfQuantity quantity = FrfQuantity::Plant;
     std::size_t totalSamples() const { return (settlePeriods + periods) * design.periodSamples(); }
 };
 
@@ -45,7 +46,8 @@ struct HalFrfPlan {
 /// maxoutput, at most HalDrive::kMaxTestS of motion) and plans it. Errors name the field and the limit.
 Result<HalFrfPlan> planHalFrf(const TestRequest& request, const HalAxis& axis);
 
-/// The plant FRF feedback / drive input of a completed record of that plan, with its metadata.
+/// The FRF of a completed record of that plan with its metadata: the plant feedback / drive input, or the open
+/// loop −(PID output) / drive input.
 Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& record);
 
 class HalDrive : public Drive {

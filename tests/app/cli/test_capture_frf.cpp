@@ -87,5 +87,11 @@ TEST(CliCaptureFrf, BadOptionsGiveExitCode2)
         r = runCli(base + "--method " + method + " --amplitude 0.5");
         EXPECT_EQ(r.exitCode, 2) << method;
         EXPECT_NE(r.err.find("--amplitude-pct"), std::string::npos) << r.err;
+        // The plant and the open position loop are quantities of a PID the NC closes (hal:), not of this drive.
+        r = runCli(base + "--method " + method + " --quantity open-loop");
+        EXPECT_EQ(r.exitCode, 2) << method;
+        EXPECT_NE(r.err.find("--quantity"), std::string::npos) << r.err;
     }
+    r = runCli(base + "--quantity closed");
+    EXPECT_EQ(r.exitCode, 2);
 }

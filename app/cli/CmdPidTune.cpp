@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// axistune-cli pid-tune: tunes a position PID that the NC closes (LinuxCNC's `pid`, through hal: or linuxcnc:),
+// docs/linuxcnc.md "Tuning from the command line": measures the open loop with the running gains (multisine), takes
+// the effective plant L/C, proposes P, I, D, FF1, FF2 for the margins asked (core/tuning/PositionPid.h) with the rule
+// behind each number, and with --apply writes them live and measures again: the measured margins against the
+// prediction. If the measured loop misses the margins, the gains from before are put back (exit 4).
+#include "app/cli/CliCommand.h"
+#include "core/device/Drive.h"
+#include "core/device/TestRunner.h"
+#include "core/model/Number.h"
+#include "core/model/ResultJson.h"
+#include "core/tuning/PositionPid.h"
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+namespace axistune::cli {
+namespace {
+
+struct PidTuneOptions {
+    std::string connect;
+    std::string axis;
+    double fmin = 2.0;
+    double fmax = 0.0;
+    double amplitude = 0.0;
+    double amplitudePct = 0.0;
+    int periods = 0;
+    std::string driveInput = "auto";
+    double phaseMarginDeg = 50.0;
+    double gainMarginDb = 8.0;
+    bool apply = false;
+    std::string out;
+};
+
+const std::vector<std::string> kGainKeys{"Pgain", "Igain", "Dgain", "FF1", "FF2"};
+
+/// The open loop measured with the running gains (multisine, FrfQuantity::OpenLoop).
+Result<device::FrfMeasurement> measureOpenLoop(device::Drive& drive, const PidTuneOptions& o, double fmaxHz)
+{
+    device::TestRequest r;
+    r.axis = o.axis;
+    r.type = device::TestType::Frf;
+    r.frfMethod = device::FrfMethod::Multisine;
+    r.frfQuantity = device::FrfQuantity::OpenLoop;
+    r.fminHz = o.fmin;
+    r.fmaxHz = fmaxHz;
+    r.amplitudePeak = o.amplitude;
+    r.amplitudePct = o.amplitudePct > 0.0 ? o.amplitudePct : 5.0;
+    r.multisinePeriods = o.periods;
+    auto plan = drive.planTest(r);
+    if (!plan)
+        return plan.error();
+    device::RunOptions run;
+    run.readTrace = false;
+    auto done = device::runTest(drive, r, run);
+    if (!done)
+        return done.error();
+    if (!done->frf)
+        return makeError(ErrorCode::Device, "the drive returned no frequency response");
+    return std::move(*done->frf);
+}
+
+nlohmann::json gainsJson(const tuning::PositionPid& g)
+{
+    return {{"Pgain", g.p}, {"Igain", g.i}, {"Dgain", g.d}, {"FF1", g.ff1}, {"FF2", g.ff2}};
+}
+
+nlohmann::json marginsJson(const tuning::PositionLoopMargins& m)
+{
+    nlohmann::json j = nlohmann::json::object();
+    model::putNumber(j, "crossover_Hz", m.crossoverHz, "no gain crossover in the measured band");
+    model::putNumber(j, "phase_margin_deg", m.phaseMarginDeg, "no gain crossover in the measured band");
+    model::putNumber(j, "gain_margin_dB", m.gainMarginDb,
+                     "the phase never crosses -180 deg where |L| < 1 in the measured band");
+    model::putNumber(j, "gain_margin_freq_Hz", std::isfinite(m.gainMarginDb) ? m.gainMarginFreqHz : NAN,
+                     "the phase never crosses -180 deg where |L| < 1 in the measured band");
+    return j;
+}
+
+int runPidTune(const PidTuneOptions& o)
+{
+    const std::string cmd = "pid-tune";
+    if (o.amplitude <= 0.0 && o.amplitudePct <= 0.0)
+        return reportError(cmd,
+                           makeError(ErrorCode::BadInput,
+                                     "give the excitation: --amplitude PEAK (PID output units) or --amplitude-pct P"));
+    if (!(o.phaseMarginDeg >= 30.0 && o.phaseMarginDeg <= 80.0) || !(o.gainMarginDb >= 3.0 && o.gainMarginDb <= 20.0))
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--pm must lie in 30..80 deg and --gm in 3..20 dB"));
+    auto drive = device::connect({o.connect, 1});
+    if (!drive)
+        return reportError(cmd, drive.error());
+    auto caps = (*drive)->capabilities(o.axis);
+    if (!caps)
+        return reportError(cmd, caps.error());
+    if (std::find(caps->frfQuantities.begin(), caps->frfQuantities.end(), device::FrfQuantity::OpenLoop) ==
+        caps->frfQuantities.end())
+        return reportError(
+            cmd, makeError(ErrorCode::BadInput, o.connect + " does not measure the open position loop: "
+                                                            "pid-tune is for a PID the NC closes (hal:, linuxcnc:)"));
+    const double fs = caps->traceRateHz;
+    const double periodS = 1.0 / fs;
+    const double fmaxHz = o.fmax > 0.0 ? o.fmax : 0.45 * fs;
+    auto before = (*drive)->readParameters(o.axis, kGainKeys);
+    if (!before)
+        return reportError(cmd, before.error());
+    const tuning::PositionPid running{before->at("Pgain"), before->at("Igain"), before->at("Dgain"), before->at("FF1"),
+                                      before->at("FF2")};
+
+    std::cerr << "pid-tune: measuring the open loop with the running gains\n";
+    auto measured = measureOpenLoop(**drive, o, fmaxHz);
+    if (!measured)
+        return reportError(cmd, measured.error());
+    const auto& f = measured->frf;
+    std::vector<double> freq;
+    std::vector<std::complex<double>> loop;
+    for (std::size_t i = 0; i < f.size(); ++i)
+        if (f.valid[i]) {
+            freq.push_back(f.freqHz[i]);
+            loop.push_back(f.h[i]);
+        }
+    auto plant = tuning::effectivePlant(freq, loop, running, periodS);
+    if (!plant)
+        return reportError(cmd, plant.error());
+    tuning::PositionPidOptions po;
+    po.phaseMarginDeg = o.phaseMarginDeg;
+    po.gainMarginDb = o.gainMarginDb;
+    std::string inputRule;
+    if (o.driveInput == "auto") {
+        auto input = tuning::driveInputFromSlope(freq, *plant);
+        if (!input)
+            return reportError(cmd, makeError(input.error().code,
+                                              input.error().detail + "; choose it with --drive-input torque|velocity"));
+        po.input = *input;
+        inputRule = "read from the slope of the measured plant over its lowest decade";
+    } else if (o.driveInput == "torque" || o.driveInput == "velocity") {
+        po.input = o.driveInput == "torque" ? tuning::DriveInput::Torque : tuning::DriveInput::Velocity;
+        inputRule = "given by --drive-input";
+    } else {
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--drive-input must be auto, torque or velocity"));
+    }
+    auto design = tuning::designPositionPid(freq, *plant, periodS, po);
+    if (!design)
+        return reportError(cmd, design.error());
+
+    nlohmann::json out;
+    out["connection"] = o.connect;
+    out["axis"] = o.axis;
+    out["servo_rate_Hz"] = fs;
+    out["band_Hz"] = {o.fmin, fmaxHz};
+    out["drive_input"] = po.input == tuning::DriveInput::Torque ? "torque" : "velocity";
+    out["drive_input_rule"] = inputRule;
+    out["running"] = {{"gains", gainsJson(running)},
+                      {"margins", marginsJson(tuning::positionLoopMargins(freq, loop))},
+                      {"motion_time_s", measured->motionTimeS}};
+    out["proposed"] = {
+        {"gains", gainsJson(design->gains)}, {"predicted", marginsJson(design->predicted)}, {"rules", design->rules}};
+    int rc = 0;
+    if (o.apply) {
+        const model::ParameterValues gains{{"Pgain", design->gains.p},
+                                           {"Igain", design->gains.i},
+                                           {"Dgain", design->gains.d},
+                                           {"FF1", design->gains.ff1},
+                                           {"FF2", design->gains.ff2}};
+        if (auto st = (*drive)->writeParameters(o.axis, gains); !st)
+            return reportError(cmd, st.error());
+        std::cerr << "pid-tune: gains applied; measuring the open loop again\n";
+        auto after = measureOpenLoop(**drive, o, fmaxHz);
+        tuning::PositionLoopMargins m;
+        std::string refusal;
+        if (!after) {
+            refusal = "the verifying measurement failed: " + after.error().detail;
+        } else {
+            std::vector<double> fa;
+            std::vector<std::complex<double>> la;
+            for (std::size_t i = 0; i < after->frf.size(); ++i)
+                if (after->frf.valid[i]) {
+                    fa.push_back(after->frf.freqHz[i]);
+                    la.push_back(after->frf.h[i]);
+                }
+            m = tuning::positionLoopMargins(fa, la);
+            out["verified"] = {{"measured", marginsJson(m)}, {"motion_time_s", after->motionTimeS}};
+            if (!(m.phaseMarginDeg >= o.phaseMarginDeg - 3.0) || !(m.gainMarginDb >= o.gainMarginDb - 1.0))
+                refusal = "the measured loop misses the margins asked (phase margin " +
+                          model::formatNumber(m.phaseMarginDeg, 4) + " deg, gain margin " +
+                          model::formatNumber(m.gainMarginDb, 4) + " dB)";
+        }
+        if (!refusal.empty()) {
+            // Put back what ran before: nothing this command did stays on a loop it could not verify.
+            (void)(*drive)->writeParameters(o.axis, *before);
+            out["applied"] = false;
+            out["refused"] = refusal + "; the gains from before were restored";
+            rc = exitCodeFor(ErrorCode::Safety);
+        } else {
+            out["applied"] = true;
+        }
+    } else {
+        out["applied"] = false;
+    }
+    if (const int w = writeJsonResult(cmd, out, o.out); w != 0)
+        return w;
+    if (rc != 0)
+        std::cerr << "axistune-cli pid-tune: " << out["refused"].get<std::string>() << "\n";
+    return rc;
+}
+
+const CliRegistrar kRegistrar{
+    {"pid-tune", "Tune a position PID the NC closes (LinuxCNC): measure, propose with rules, apply and verify",
+     [](CLI::App& sub) {
+         auto o = std::make_shared<PidTuneOptions>();
+         sub.add_option("--connect", o->connect, "hal: or linuxcnc:PATH/machine.ini")->required();
+         sub.add_option("--axis", o->axis, "pid instance (hal:) or axis letter (linuxcnc:)")->required();
+         sub.add_option("--fmin", o->fmin, "lowest line [Hz]")->capture_default_str();
+         sub.add_option("--fmax", o->fmax, "highest line [Hz]; 0: 0.45 × servo rate")->capture_default_str();
+         sub.add_option("--amplitude", o->amplitude, "multisine peak in the PID output's units");
+         sub.add_option("--amplitude-pct", o->amplitudePct, "multisine peak, % of the pid's maxoutput (at most 50)");
+         sub.add_option("--periods", o->periods, "averaged periods; 0: 3")->capture_default_str();
+         sub.add_option("--drive-input", o->driveInput, "auto, torque or velocity")->capture_default_str();
+         sub.add_option("--pm", o->phaseMarginDeg, "phase margin asked [deg]")->capture_default_str();
+         sub.add_option("--gm", o->gainMarginDb, "gain margin asked [dB]")->capture_default_str();
+         sub.add_flag("--apply", o->apply, "write the gains live (setp, read back) and verify by measuring again");
+         sub.add_option("--out", o->out, "result JSON (also printed)");
+         return [o] { return runPidTune(*o); };
+     }}};
+
+} // namespace
+} // namespace axistune::cli
