@@ -7,6 +7,9 @@
 #include "app/cli/CliCommand.h"
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"
+#include "core/device/hal/HalAxis.h"
+#include "core/device/hal/HalDrive.h"
+#include "core/device/hal/LinuxCncDrive.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 #include "core/tuning/PositionPid.h"
@@ -15,6 +18,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace axistune::cli {
 namespace {
@@ -31,6 +35,8 @@ struct PidTuneOptions {
     double phaseMarginDeg = 50.0;
     double gainMarginDb = 8.0;
     bool apply = false;
+    std::string notch = "auto";
+    bool removeNotch = false;
     std::string out;
 };
 
@@ -62,6 +68,25 @@ Result<device::FrfMeasurement> measureOpenLoop(device::Drive& drive, const PidTu
     return std::move(*done->frf);
 }
 
+/// Runs `fn` with the HAL session and the axis's pid (hal: names the pid, linuxcnc: maps the letter to it).
+template <typename Fn> Status withHalAxis(device::Drive& drive, const PidTuneOptions& o, Fn&& fn)
+{
+    auto session = device::hal::halSessionFromEnvironment();
+    if (!session)
+        return session.error();
+    std::string pid = o.axis;
+    if (auto* lc = dynamic_cast<device::hal::LinuxCncDrive*>(&drive)) {
+        auto p = lc->pidOf(o.axis);
+        if (!p)
+            return p.error();
+        pid = *p;
+    }
+    auto axis = device::hal::discoverAxis(*session, pid);
+    if (!axis)
+        return axis.error();
+    return fn(*session, *axis);
+}
+
 nlohmann::json gainsJson(const tuning::PositionPid& g)
 {
     return {{"Pgain", g.p}, {"Igain", g.i}, {"Dgain", g.d}, {"FF1", g.ff1}, {"FF2", g.ff2}};
@@ -82,7 +107,7 @@ nlohmann::json marginsJson(const tuning::PositionLoopMargins& m)
 int runPidTune(const PidTuneOptions& o)
 {
     const std::string cmd = "pid-tune";
-    if (o.amplitude <= 0.0 && o.amplitudePct <= 0.0)
+    if (!o.removeNotch && o.amplitude <= 0.0 && o.amplitudePct <= 0.0)
         return reportError(cmd,
                            makeError(ErrorCode::BadInput,
                                      "give the excitation: --amplitude PEAK (PID output units) or --amplitude-pct P"));
@@ -91,6 +116,15 @@ int runPidTune(const PidTuneOptions& o)
     auto drive = device::connect({o.connect, 1});
     if (!drive)
         return reportError(cmd, drive.error());
+    if (o.removeNotch) {
+        auto st = withHalAxis(**drive, o, [](const device::hal::HalSessionOptions& s, const device::hal::HalAxis&) {
+            return device::hal::removeNotch(s);
+        });
+        if (!st)
+            return reportError(cmd, st.error());
+        std::cout << "{\"notch_removed\": true}\n";
+        return 0;
+    }
     auto caps = (*drive)->capabilities(o.axis);
     if (!caps)
         return reportError(cmd, caps.error());
@@ -144,6 +178,39 @@ int runPidTune(const PidTuneOptions& o)
     if (!design)
         return reportError(cmd, design.error());
 
+    // A notch at the plant's strongest resonance above the crossover, when it lets the crossover rise by 10 % or more
+    // (LinuxCNC's biquad: 0.5 ≤ Q ≤ 2; the Q with the highest crossover is taken).
+    std::optional<tuning::BiquadNotch> notch;
+    std::string notchRule;
+    if (o.notch == "auto") {
+        const auto resonance = tuning::plantResonanceHz(freq, *plant, po.input, 1.5 * design->crossoverHz);
+        if (!resonance) {
+            notchRule = "no resonance stands 6 dB above the plant's median above 1.5 × the crossover: no notch";
+        } else {
+            double bestCrossover = design->crossoverHz;
+            for (const double q : {2.0, 1.4, 1.0, 0.7, 0.5}) {
+                const tuning::BiquadNotch candidate{*resonance, q};
+                std::vector<std::complex<double>> notched(plant->size());
+                for (std::size_t k = 0; k < notched.size(); ++k)
+                    notched[k] = (*plant)[k] * tuning::biquadNotchResponse(candidate, periodS, freq[k]);
+                auto d = tuning::designPositionPid(freq, notched, periodS, po);
+                if (d && d->crossoverHz >= 1.1 * bestCrossover) {
+                    bestCrossover = d->crossoverHz;
+                    notch = candidate;
+                    design = std::move(d);
+                }
+            }
+            notchRule = notch ? "notch at the resonance " + model::formatNumber(*resonance, 5) + " Hz (peak of |P|·ω²" +
+                                    std::string(po.input == tuning::DriveInput::Torque ? "" : "/ω") + "), Q " +
+                                    model::formatNumber(notch->q, 3) +
+                                    ": the Q of 0.5–2 that lets the crossover rise most"
+                              : "a notch at the resonance " + model::formatNumber(*resonance, 5) +
+                                    " Hz would not raise the crossover by 10 %: no notch";
+        }
+    } else if (o.notch != "none") {
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--notch must be auto or none"));
+    }
+
     nlohmann::json out;
     out["connection"] = o.connect;
     out["axis"] = o.axis;
@@ -156,6 +223,10 @@ int runPidTune(const PidTuneOptions& o)
                       {"motion_time_s", measured->motionTimeS}};
     out["proposed"] = {
         {"gains", gainsJson(design->gains)}, {"predicted", marginsJson(design->predicted)}, {"rules", design->rules}};
+    if (!notchRule.empty())
+        out["proposed"]["notch_rule"] = notchRule;
+    if (notch)
+        out["proposed"]["notch"] = {{"f0_Hz", notch->f0Hz}, {"Q", notch->q}};
     int rc = 0;
     if (o.apply) {
         const model::ParameterValues gains{{"Pgain", design->gains.p},
@@ -163,6 +234,14 @@ int runPidTune(const PidTuneOptions& o)
                                            {"Dgain", design->gains.d},
                                            {"FF1", design->gains.ff1},
                                            {"FF2", design->gains.ff2}};
+        if (notch) {
+            auto st =
+                withHalAxis(**drive, o, [&](const device::hal::HalSessionOptions& s, const device::hal::HalAxis& a) {
+                    return device::hal::insertNotch(s, a, notch->f0Hz, notch->q);
+                });
+            if (!st)
+                return reportError(cmd, st.error());
+        }
         if (auto st = (*drive)->writeParameters(o.axis, gains); !st)
             return reportError(cmd, st.error());
         std::cerr << "pid-tune: gains applied; measuring the open loop again\n";
@@ -189,6 +268,10 @@ int runPidTune(const PidTuneOptions& o)
         if (!refusal.empty()) {
             // Put back what ran before: nothing this command did stays on a loop it could not verify.
             (void)(*drive)->writeParameters(o.axis, *before);
+            if (notch)
+                (void)withHalAxis(**drive, o, [](const device::hal::HalSessionOptions& s, const device::hal::HalAxis&) {
+                    return device::hal::removeNotch(s);
+                });
             out["applied"] = false;
             out["refused"] = refusal + "; the gains from before were restored";
             rc = exitCodeFor(ErrorCode::Safety);
@@ -219,7 +302,12 @@ const CliRegistrar kRegistrar{
          sub.add_option("--drive-input", o->driveInput, "auto, torque or velocity")->capture_default_str();
          sub.add_option("--pm", o->phaseMarginDeg, "phase margin asked [deg]")->capture_default_str();
          sub.add_option("--gm", o->gainMarginDb, "gain margin asked [dB]")->capture_default_str();
-         sub.add_flag("--apply", o->apply, "write the gains live (setp, read back) and verify by measuring again");
+         sub.add_flag("--apply", o->apply,
+                      "write the gains live (setp, read back), insert the notch, and verify by measuring again");
+         sub.add_option("--notch", o->notch,
+                        "auto (a biquad notch at a resonance when it raises the crossover) or none")
+             ->capture_default_str();
+         sub.add_flag("--remove-notch", o->removeNotch, "remove AxisTune's notch from the HAL session and exit");
          sub.add_option("--out", o->out, "result JSON (also printed)");
          return [o] { return runPidTune(*o); };
      }}};

@@ -72,6 +72,40 @@ std::complex<double> pidResponse(const PositionPid& pid, double periodS, double 
     return pid.p + pid.i * periodS / (1.0 - zInv) + pid.d * (1.0 - zInv) / periodS;
 }
 
+std::complex<double> biquadNotchResponse(const BiquadNotch& n, double periodS, double fHz)
+{
+    const double w0 = kTwoPi * n.f0Hz * periodS;
+    const double alpha = std::sin(w0) / (2.0 * n.q);
+    const cd z1 = std::polar(1.0, -kTwoPi * fHz * periodS);
+    const cd z2 = z1 * z1;
+    return (1.0 - 2.0 * std::cos(w0) * z1 + z2) / ((1.0 + alpha) - 2.0 * std::cos(w0) * z1 + (1.0 - alpha) * z2);
+}
+
+std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
+                                       DriveInput input, double aboveHz, double minRiseDb)
+{
+    std::vector<double> f, v;
+    for (std::size_t k = 0; k < freqHz.size() && k < plant.size(); ++k) {
+        if (!(freqHz[k] > aboveHz))
+            continue;
+        const double w = kTwoPi * freqHz[k];
+        const double x = std::abs(plant[k]) * (input == DriveInput::Torque ? w * w : w);
+        if (!std::isfinite(x) || !(x > 0.0))
+            continue;
+        f.push_back(freqHz[k]);
+        v.push_back(x);
+    }
+    if (v.size() < 5)
+        return std::nullopt;
+    std::vector<double> sorted = v;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    const auto peak = std::max_element(v.begin(), v.end());
+    if (!(20.0 * std::log10(*peak / median) >= minRiseDb))
+        return std::nullopt;
+    return f[static_cast<std::size_t>(peak - v.begin())];
+}
+
 Result<std::vector<std::complex<double>>> effectivePlant(const std::vector<double>& freqHz,
                                                          const std::vector<std::complex<double>>& openLoop,
                                                          const PositionPid& running, double periodS)

@@ -16,6 +16,7 @@
 #include "core/model/Result.h"
 
 #include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,16 @@ std::complex<double> pidResponse(const PositionPid& pid, double periodS, double 
 Result<std::vector<std::complex<double>>> effectivePlant(const std::vector<double>& freqHz,
                                                          const std::vector<std::complex<double>>& openLoop,
                                                          const PositionPid& running, double periodS);
+
+/// LinuxCNC's `biquad` component with type 2, a notch: the second-order IIR notch of the audio-EQ cookbook (zero at
+/// f0, bandwidth set by Q) that the component computes from f0 and Q on a rising edge of its enable pin. The component
+/// accepts 0.5 ≤ Q ≤ 2 and f0 below half the servo rate.
+struct BiquadNotch {
+    double f0Hz = 0.0;
+    double q = 1.0;
+};
+/// N(e^{j2πfT}) = (1 − 2cos w0·z⁻¹ + z⁻²) / ((1+α) − 2cos w0·z⁻¹ + (1−α)·z⁻²), w0 = 2π f0 T, α = sin w0 / (2Q).
+std::complex<double> biquadNotchResponse(const BiquadNotch& notch, double periodS, double fHz);
 
 /// What the PID output commands at the drive.
 enum class DriveInput {
@@ -79,6 +90,12 @@ struct PositionPidDesign {
     double viscous = 0.0;                       ///< … its b; velocity drives: the gain K of P ≈ K/(jω)
     std::vector<std::string> rules;             ///< one sentence per number: which rule chose it
 };
+
+/// The strongest resonance of a measured plant above `aboveHz`: the line where |P|·ω² (torque drive: flat for the
+/// rigid body) or |P|·ω (velocity drive) peaks, when that peak stands at least `minRiseDb` above the median of the
+/// same quantity over the lines above `aboveHz`; nullopt when there is none (or fewer than 5 lines there).
+std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
+                                       DriveInput input, double aboveHz, double minRiseDb = 6.0);
 
 /// The highest crossover at which a PID meets both margins over every measured line. Errors: too few lines, a
 /// non-finite line, no crossover that meets the margins (the reason says which margin failed where).

@@ -628,18 +628,38 @@ TEST_F(HalTestbed, PersistedGainsAreReadByTheNextStart)
 }
 
 // Issue 17 item 4 from the command line: `axistune-cli pid-tune --connect hal: --apply` measures the open loop,
-// proposes gains with a rule for each, applies them and verifies: the measured margins meet the issue's (PM ≥ 45°,
-// GM ≥ 6 dB) and lie within 3° / 1 dB of the prediction; the gains in HAL are the proposed ones.
+// proposes gains with a rule for each and a biquad notch at the plant's resonance, applies them and verifies: the
+// measured margins meet the issue's (PM ≥ 45°, GM ≥ 6 dB) and lie within 3° / 1 dB of the prediction; the gains in
+// HAL are the proposed ones; the notch sits within 2 % of the exact plant's resonance and raises the crossover by at
+// least the 10 % its rule asks against the proposal without it; `--remove-notch` leaves the nets and functions as
+// they were.
 TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
 {
     startBed(1000000);
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
+    const std::string funBefore = halText({"-s", "show", "funct"});
+    // The exact plant's resonance: the peak of |H|·ω² on a 0.01 Hz grid (as in the resonance test below).
+    const Plant pl = readPlant();
+    double fr = 0.0, hi = -1.0;
+    for (double f = 30.0; f <= 200.0; f += 0.01) {
+        const double v = std::abs(exactResponse(pl, 1e-3, f)) * std::pow(2.0 * M_PI * f, 2);
+        if (v > hi)
+            hi = v, fr = f;
+    }
+    const std::string cli = std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x --amplitude 0.2 --pm 50 "
+                                                        "--gm 8 ";
+    auto readJson = [](const std::string& path) {
+        std::ifstream f(path);
+        return nlohmann::json::parse(f);
+    };
+    const std::string plain = ::testing::TempDir() + "/pid-tune-plain.json";
+    ASSERT_EQ(std::system((cli + "--notch none --out " + plain + " 2>/dev/null").c_str()), 0);
+    const double plainCrossover = readJson(plain).at("proposed").at("predicted").at("crossover_Hz").get<double>();
+
     const std::string out = ::testing::TempDir() + "/pid-tune.json";
-    ASSERT_EQ(std::system((std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x --amplitude 0.2 --pm 50 "
-                                                       "--gm 8 --apply --out " + out + " 2>/dev/null").c_str()),
-              0);
-    std::ifstream f(out);
-    const auto j = nlohmann::json::parse(f);
+    ASSERT_EQ(std::system((cli + "--apply --out " + out + " 2>/dev/null").c_str()), 0);
+    const auto j = readJson(out);
     EXPECT_TRUE(j.at("applied").get<bool>());
     EXPECT_EQ(j.at("drive_input"), "torque");
     const auto& predicted = j.at("proposed").at("predicted");
@@ -649,8 +669,22 @@ TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
     EXPECT_NEAR(measured.at("phase_margin_deg").get<double>(), predicted.at("phase_margin_deg").get<double>(), 3.0);
     EXPECT_NEAR(measured.at("gain_margin_dB").get<double>(), predicted.at("gain_margin_dB").get<double>(), 1.0);
     EXPECT_EQ(j.at("proposed").at("rules").size(), 6u); // crossover, P, I, D, FF2, FF1
+    ASSERT_TRUE(j.at("proposed").contains("notch")) << j.dump(2);
+    EXPECT_NEAR(j.at("proposed").at("notch").at("f0_Hz").get<double>() / fr, 1.0, 0.02);
+    EXPECT_GE(predicted.at("crossover_Hz").get<double>(), 1.1 * plainCrossover);
+    EXPECT_GE(measured.at("crossover_Hz").get<double>(), 1.1 * plainCrossover);
+    RecordProperty("crossover_without_notch_Hz", model::formatShortest(plainCrossover));
+    RecordProperty("crossover_with_notch_Hz", model::formatShortest(measured.at("crossover_Hz").get<double>()));
     for (const char* k : {"Pgain", "Igain", "Dgain", "FF1", "FF2"}) {
         const double proposed = j.at("proposed").at("gains").at(k).get<double>();
-        EXPECT_NEAR(getp(std::string("pid.x.") + k) / proposed, 1.0, 1e-6) << k; // halcmd shows 7 digits
+        // halcmd shows 7 significant digits; a gain of 0 reads back 0.
+        EXPECT_NEAR(getp(std::string("pid.x.") + k), proposed, 1e-6 * std::abs(proposed)) << k;
     }
+    EXPECT_NEAR(getp("axistune-notch.f0"), j.at("proposed").at("notch").at("f0_Hz").get<double>(), 1e-4);
+
+    ASSERT_EQ(std::system((std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x --remove-notch "
+                                                       ">/dev/null").c_str()),
+              0);
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+    EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
 }

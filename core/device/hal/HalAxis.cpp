@@ -225,6 +225,138 @@ Status HalInjection::remove()
     return first;
 }
 
+Status removeNotch(const HalSessionOptions& options)
+{
+    auto ps = pins(options);
+    if (!ps)
+        return ps.error();
+    const std::string notch = kNotchComponent;
+    const HalPin* out = findPin(*ps, notch + ".out");
+    const HalPin* in = findPin(*ps, notch + ".in");
+    if (!out)
+        return Status::success();
+    // The pid whose output feeds the notch: the writer of the notch's input net.
+    std::string pidOutput;
+    if (in && !in->signal.empty()) {
+        auto sigs = signals(options);
+        if (!sigs)
+            return sigs.error();
+        if (const HalSignal* s = findSignal(*sigs, in->signal))
+            pidOutput = s->writer;
+    }
+    std::vector<std::vector<std::string>> cmds;
+    cmds.push_back({"setp", notch + ".enable", "0"});
+    const std::string drove = out->signal;
+    if (!drove.empty())
+        cmds.push_back({"unlinkp", notch + ".out"});
+    if (in && !in->signal.empty()) {
+        cmds.push_back({"unlinkp", notch + ".in"});
+        if (!pidOutput.empty())
+            cmds.push_back({"unlinkp", pidOutput});
+        cmds.push_back({"delsig", in->signal});
+    }
+    if (!drove.empty() && !pidOutput.empty())
+        cmds.push_back({"linkps", pidOutput, drove});
+    for (const auto& c : cmds)
+        if (auto r = runHalcmd(options, c); !r)
+            return r.error();
+    // Off its thread, two periods, then unloaded (as the injection).
+    auto tt = runHalcmd(options, {"-s", "show", "thread"});
+    if (!tt)
+        return tt.error();
+    auto threads = parseThreads(*tt);
+    if (!threads)
+        return threads.error();
+    std::int64_t period = 0;
+    for (const auto& t : *threads)
+        if (std::find(t.functions.begin(), t.functions.end(), notch) != t.functions.end()) {
+            if (auto r = runHalcmd(options, {"delf", notch, t.name}); !r)
+                return r.error();
+            period = std::max(period, t.periodNs);
+        }
+    waitPeriods(period);
+    if (auto r = runHalcmd(options, {"unloadrt", "biquad"}); !r)
+        return r.error();
+    return Status::success();
+}
+
+Status insertNotch(const HalSessionOptions& options, const HalAxis& axis, double f0Hz, double q)
+{
+    const double fs = axis.periodNs > 0 ? 1e9 / static_cast<double>(axis.periodNs) : 0.0;
+    if (!(f0Hz > 0.0) || !(f0Hz < 0.5 * fs))
+        return makeError(ErrorCode::OutOfRange, "notch at " + num(f0Hz) +
+                                                    " Hz refused: it must lie below half the servo "
+                                                    "rate (" +
+                                                    num(0.5 * fs) + " Hz)");
+    if (!(q >= 0.5 && q <= 2.0))
+        return makeError(ErrorCode::OutOfRange, "notch Q " + num(q) + " refused: LinuxCNC's biquad takes 0.5 to 2");
+    auto ps = pins(options);
+    if (!ps)
+        return ps.error();
+    const std::string notch = kNotchComponent;
+    if (findPin(*ps, notch + ".out")) {
+        if (auto st = removeNotch(options); !st)
+            return st;
+        auto again = discoverAxis(options, axis.pid);
+        if (!again)
+            return again.error();
+        return insertNotch(options, *again, f0Hz, q);
+    }
+    for (const auto& p : *ps)
+        if (p.owner == "biquad")
+            return makeError(ErrorCode::BadInput, "this configuration loads biquad itself (" + p.name +
+                                                      "): AxisTune's notch needs the component; add the notch to the "
+                                                      "configuration's own biquad instead");
+    auto tt = runHalcmd(options, {"-s", "show", "thread", axis.thread});
+    if (!tt)
+        return tt.error();
+    auto threads = parseThreads(*tt);
+    if (!threads || threads->empty())
+        return makeError(ErrorCode::Device, "cannot read thread " + axis.thread);
+    const auto& fns = threads->front().functions;
+    const auto it = std::find(fns.begin(), fns.end(), axis.pidFunction);
+    if (it == fns.end())
+        return makeError(ErrorCode::Device, axis.pidFunction + " is no longer on " + axis.thread);
+    const auto after = static_cast<long>(it - fns.begin()) + 2; // 1-based position right after the pid
+    const std::string inNet = "axistune-notch-in";
+    const std::vector<std::vector<std::string>> steps = {
+        {"loadrt", "biquad", "names=" + notch},
+        {"setp", notch + ".type", "2"},
+        {"setp", notch + ".f0", num(f0Hz)},
+        {"setp", notch + ".Q", num(q)},
+        {"setp", notch + ".enable", "0"},
+        {"addf", notch, axis.thread, std::to_string(after)},
+        {"unlinkp", axis.pid + ".output"},
+        {"linkps", notch + ".out", axis.outputSignal},
+        {"net", inNet, axis.pid + ".output", notch + ".in"},
+        {"setp", notch + ".enable", "1"},
+    };
+    for (const auto& s : steps) {
+        if (auto r = runHalcmd(options, s); !r) {
+            (void)removeNotch(options);
+            // removeNotch relinks only what it finds; a failure before the relink leaves the pid output unlinked.
+            auto check = pins(options);
+            if (check)
+                if (const HalPin* o = findPin(*check, axis.pid + ".output"); o && o->signal.empty())
+                    (void)runHalcmd(options, {"linkps", axis.pid + ".output", axis.outputSignal});
+            std::string what;
+            for (const auto& a : s)
+                what += (what.empty() ? "" : " ") + a;
+            return makeError(ErrorCode::Device, "inserting the notch after " + axis.pid + " failed at '" + what +
+                                                    "' (removed again): " + r.error().detail);
+        }
+    }
+    // The component computes its coefficients on the enable edge in the next period; valid says whether it could.
+    waitPeriods(axis.periodNs);
+    auto valid = runHalcmd(options, {"getp", notch + ".valid"});
+    if (!valid || valid->find("TRUE") == std::string::npos) {
+        (void)removeNotch(options);
+        return makeError(ErrorCode::Device, "LinuxCNC's biquad refused the notch at " + num(f0Hz) + " Hz, Q " + num(q) +
+                                                " (valid is FALSE); it was removed again");
+    }
+    return Status::success();
+}
+
 Status removeLeftoverInjection(const HalSessionOptions& options)
 {
     auto ps = pins(options);
@@ -331,8 +463,9 @@ Result<HalRecord> runExcitation(HalClient& client, HalInjection& injection, std:
     bool endWritten = false;
     auto nextCheck = std::chrono::steady_clock::now();
     // A HAL session that stops (or a thread that no longer runs) delivers no rows: after this long without one the
-    // test fails instead of waiting forever.
-    const auto stallLimit = std::max(std::chrono::nanoseconds(std::chrono::seconds(1)),
+    // test fails instead of waiting forever. 1 s was too short on the 2-core machine at load 7 (a non-realtime servo
+    // thread starved that long); the injection's own heartbeat watchdog is what keeps the axis safe meanwhile.
+    const auto stallLimit = std::max(std::chrono::nanoseconds(std::chrono::seconds(3)),
                                      std::chrono::nanoseconds(200 * injection.axis().periodNs));
     auto lastRow = std::chrono::steady_clock::now();
     double lastProgress = -1.0;

@@ -75,6 +75,20 @@ private:
 /// Succeeds with nothing to do when no injection is loaded.
 Status removeLeftoverInjection(const HalSessionOptions& options);
 
+/// AxisTune's notch: LinuxCNC's `biquad` (type 2) loaded as `axistune-notch`, run right after the pid, between
+/// <pid>.output and the net it drove (docs/linuxcnc.md "Notches"). It stays until removeNotch() or the HAL session
+/// ends: a notch is configuration, not part of a test. One per HAL session (LinuxCNC loads a component once).
+inline constexpr const char* kNotchComponent = "axistune-notch";
+
+/// Inserts (or moves and retunes) the notch at `f0Hz` with `q` on the axis. Refused when f0 is not below half the
+/// servo rate or q lies outside [0.5, 2] (the component's own limits), when the configuration loads `biquad`
+/// itself, or when the component reports its coefficients invalid. Nothing is left changed on a failure.
+Status insertNotch(const HalSessionOptions& options, const HalAxis& axis, double f0Hz, double q);
+
+/// Removes AxisTune's notch and relinks <pid>.output to the net the notch drove. Succeeds with nothing to do when
+/// there is no notch.
+Status removeNotch(const HalSessionOptions& options);
+
 struct HalRecord {
     double sampleRateHz = 0.0;
     std::uint32_t firstSample = 0;            ///< the sampler's number of the first row

@@ -132,3 +132,44 @@ TEST(PositionPid, RefusesWhatItCannotTrust)
     EXPECT_FALSE(driveInputFromSlope(f, flat));
     EXPECT_FALSE(designPositionPid({1.0, 2.0}, {cd(1, 0), cd(1, 0)}, kT));
 }
+
+// LinuxCNC's biquad notch (type 2) equals the analog notch prototype (s² + 1)/(s² + s/Q + 1) under the bilinear
+// transform prewarped at f0, s = (1 − z⁻¹)/((1 + z⁻¹)·tan(w0/2)) — an independent derivation of the same filter:
+// within 1e-12 everywhere; zero at f0; unity at DC and at half the sampling rate.
+TEST(BiquadNotch, EqualsThePrewarpedBilinearAnalogNotch)
+{
+    const double T = 1e-3;
+    for (const double q : {0.5, 1.0, 2.0}) {
+        const tuning::BiquadNotch n{104.0, q};
+        const double w0 = 2.0 * M_PI * n.f0Hz * T;
+        for (double f = 1.0; f < 500.0; f += 7.3) {
+            const std::complex<double> z1 = std::polar(1.0, -2.0 * M_PI * f * T);
+            const std::complex<double> s = (1.0 - z1) / ((1.0 + z1) * std::tan(w0 / 2.0));
+            const std::complex<double> analog = (s * s + 1.0) / (s * s + s / q + 1.0);
+            EXPECT_LT(std::abs(tuning::biquadNotchResponse(n, T, f) - analog), 1e-12) << f << " Hz, Q " << q;
+        }
+        EXPECT_LT(std::abs(tuning::biquadNotchResponse(n, T, n.f0Hz)), 1e-12);
+        EXPECT_NEAR(std::abs(tuning::biquadNotchResponse(n, T, 0.0)), 1.0, 1e-12);
+        EXPECT_NEAR(std::abs(tuning::biquadNotchResponse(n, T, 500.0)), 1.0, 1e-12);
+    }
+}
+
+// The resonance finder: a rigid body 1/(J s²) with one mode at 120 Hz (ζ 0.02) and an anti-resonance at 80 Hz;
+// |P|·ω² peaks at the mode (within one 1 Hz line); a rigid body alone has no resonance.
+TEST(PlantResonance, FindsTheModeOfATwoMassPlantAndNoneOnARigidBody)
+{
+    std::vector<double> f;
+    std::vector<std::complex<double>> twoMass, rigid;
+    const double J = 1e-3, wa = 2 * M_PI * 80.0, wr = 2 * M_PI * 120.0, za = 0.02, zr = 0.02;
+    for (double x = 2.0; x <= 450.0; x += 1.0) {
+        const std::complex<double> s(0.0, 2 * M_PI * x);
+        f.push_back(x);
+        rigid.push_back(1.0 / (J * s * s));
+        twoMass.push_back(rigid.back() * (wr * wr / (wa * wa)) * (s * s + 2.0 * za * wa * s + wa * wa) /
+                          (s * s + 2.0 * zr * wr * s + wr * wr));
+    }
+    const auto r = tuning::plantResonanceHz(f, twoMass, tuning::DriveInput::Torque, 20.0);
+    ASSERT_TRUE(r.has_value());
+    EXPECT_NEAR(*r, 120.0, 1.0);
+    EXPECT_FALSE(tuning::plantResonanceHz(f, rigid, tuning::DriveInput::Torque, 20.0).has_value());
+}
