@@ -2,6 +2,7 @@
 // The HAL backend's measurement path on AxisTune's LinuxCNC test machine (scripts/hal-testbed: LinuxCNC's pid
 // around linuxcnc/axistune_plant.comp, a real HAL session started by each test; ctest runs these one at a time).
 #include "core/device/hal/HalAxis.h"
+#include "core/device/hal/LinuxCncConfig.h"
 #include "core/dsp/Multisine.h"
 #include "core/io/FrfCsv.h"
 #include "core/model/Number.h"
@@ -14,6 +15,8 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
+#include <set>
 #include <fstream>
 #include <sstream>
 #include <gtest/gtest.h>
@@ -687,4 +690,74 @@ TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
               0);
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
     EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
+}
+
+// Issue 17 item 7: the NC export for LinuxCNC, checked by loading it. From the sample profile of the test machine,
+// `export --format linuxcnc-hal` gives setp lines that halcmd loads into the running session, and `export --format
+// linuxcnc` gives [JOINT_0] keys that a session started from an INI beginning with them reads (LinuxCNC takes the
+// first value of a key); in both, every pid gain in HAL equals the profile's within halcmd's seven digits.
+TEST_F(HalTestbed, NcExportForLinuxCncLoadsIntoHal)
+{
+    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "lcnc-export";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::filesystem::permissions(dir, std::filesystem::perms::all); // the HAL user reads the files
+    const std::string profilePath = std::string(AXISTUNE_SOURCE_DIR) + "/resources/samples/linuxcnc-profile.json";
+    const std::string db = (dir / "s.db").string();
+    const std::string cli = std::string(AXISTUNE_CLI);
+    ASSERT_EQ(std::system((cli + " profile import --db " + db + " --in " + profilePath + " >/dev/null").c_str()), 0);
+    for (const char* f : {"linuxcnc", "linuxcnc-hal"})
+        ASSERT_EQ(std::system((cli + " export --db " + db + " --machine lcnc-testbed --format " + f + " --out " +
+                               (dir / f).string() + " >/dev/null 2>&1")
+                                  .c_str()),
+                  0)
+            << f;
+    std::ifstream pf(profilePath);
+    const auto profile = nlohmann::json::parse(pf);
+    const auto& params = profile.at("axes").at(0).at("parameters");
+    auto expectGains = [&](const char* what) {
+        for (const auto& [k, v] : params.items())
+            EXPECT_NEAR(getp("pid.x." + k), v.get<double>(), 5e-7 * std::abs(v.get<double>())) << what << " " << k;
+    };
+
+    startBed(1000000);
+    halText({"-f", (dir / "linuxcnc-hal").string()});
+    expectGains("setp lines");
+
+    std::ifstream fi(dir / "linuxcnc"), ti(std::string(AXISTUNE_SOURCE_DIR) + "/linuxcnc/testbed/axistune-testbed.ini");
+    const std::string fragment((std::istreambuf_iterator<char>(fi)), {});
+    const std::string testbed((std::istreambuf_iterator<char>(ti)), {});
+    // Merged as a user merges it: each exported [JOINT_0] key replaces that key's line in the machine's [JOINT_0]
+    // section (LinuxCNC reads only the first section of a name), keys the section lacks are added at its start.
+    auto exported = device::hal::parseIni("export", fragment);
+    ASSERT_TRUE(exported) << exported.error().detail;
+    std::istringstream lines(testbed);
+    std::string merged, line, section;
+    std::set<std::string> written;
+    while (std::getline(lines, line)) {
+        if (!line.empty() && line.front() == '[') {
+            section = line.substr(1, line.find(']') - 1);
+            merged += line + "\n";
+            if (section == "JOINT_0")
+                for (const auto& e : exported->entries)
+                    if (e.section == "JOINT_0" && !std::regex_search(testbed, std::regex("\\n" + e.key + " = ")))
+                        merged += e.key + " = " + e.value + "\n", written.insert(e.key);
+            continue;
+        }
+        const auto eq = line.find(" = ");
+        const std::string key = eq == std::string::npos ? std::string() : line.substr(0, eq);
+        const auto* e = section == "JOINT_0" && !key.empty() ? exported->find("JOINT_0", key) : nullptr;
+        merged += (e ? key + " = " + e->value : line) + "\n";
+        if (e)
+            written.insert(key);
+    }
+    EXPECT_EQ(written.size(), exported->entries.size());
+    const std::string ini = (dir / "exported.ini").string();
+    {
+        std::ofstream o(ini);
+        o << merged;
+    }
+    ASSERT_TRUE(runScript({"stop"}));
+    ASSERT_TRUE(runScript({"start", "--ini", ini}));
+    expectGains("INI keys");
 }
