@@ -162,6 +162,10 @@ inline constexpr const char* kMotionTimeMetadataKey = "motion_time_s";
 
 const char* testTypeName(TestType t);
 
+/// For a drive that takes FRF amplitudes in % of rated torque and measures its own quantity only (sim:, modbus://):
+/// refuses a request that gives amplitudePeak or asks for another FrfQuantity, naming the CLI option.
+Status checkRatedTorqueFrfRequest(const TestRequest& request);
+
 class Drive {
 public:
     virtual ~Drive() = default;

@@ -72,12 +72,8 @@ Result<FrfRequestPlan> planFrfRequest(const TestRequest& r, const model::Paramet
         return makeError(ErrorCode::BadInput,
                          "FRF plan: the rated torque (motor.rated_current × motor.torque_constant) "
                          "must be positive");
-    if (r.frfQuantity != FrfQuantity::Default)
-        return makeError(ErrorCode::BadInput, "FRF quantity: this drive measures its own quantity only (the closed velocity loop); plant and "
-                         "open-loop quantities are hal:'s (--quantity)");
-    if (r.amplitudePeak != 0.0)
-        return makeError(ErrorCode::BadInput, "FRF amplitude: this drive takes it in % of rated torque (amplitudePct, --amplitude-pct), not as a peak "
-                         "in output units (amplitudePeak, --amplitude)");
+    if (auto st = checkRatedTorqueFrfRequest(r); !st)
+        return st.error();
     if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0))
         return makeError(ErrorCode::OutOfRange, "FRF amplitude must be a positive % of the rated torque");
     if (!(r.settleS >= 0.0) || !(r.minMeasureS >= 0.0))

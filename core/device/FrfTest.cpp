@@ -125,6 +125,17 @@ Status correctHold(FrfMeasurement& out, const FrfPlan& plan, const HoldPeriods& 
 
 }  // namespace
 
+Status checkRatedTorqueFrfRequest(const TestRequest& r)
+{
+    if (r.frfQuantity != FrfQuantity::Default)
+        return makeError(ErrorCode::BadInput, "FRF quantity: this drive measures its own quantity only (the closed "
+                                              "velocity loop); plant and open-loop quantities are hal:'s (--quantity)");
+    if (r.amplitudePeak != 0.0)
+        return makeError(ErrorCode::BadInput, "FRF amplitude: this drive takes it in % of rated torque (amplitudePct, "
+                                              "--amplitude-pct), not as a peak in output units (amplitudePeak, --amplitude)");
+    return Status::success();
+}
+
 const char* frfMethodName(FrfMethod m)
 {
     switch (m) {

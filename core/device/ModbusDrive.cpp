@@ -454,12 +454,8 @@ Result<int> ModbusDrive::writeTestBlock(const TestRequest& request)
     if (request.type == TestType::Jog)
         encodeF64(request.jerk, o, at("test.amplitude"));  // jog: the jerk limit (0: trapezoid)
     if (request.type == TestType::Frf) {
-        if (request.frfQuantity != FrfQuantity::Default)
-            return makeError(ErrorCode::BadInput, "FRF quantity: this drive measures its own quantity only (the closed velocity loop); plant and "
-                         "open-loop quantities are hal:'s (--quantity)");
-        if (request.amplitudePeak != 0.0)
-            return makeError(ErrorCode::BadInput, "FRF amplitude: this drive takes it in % of rated torque (amplitudePct, --amplitude-pct), not as a peak "
-                         "in output units (amplitudePeak, --amplitude)");
+        if (auto st = checkRatedTorqueFrfRequest(request); !st)
+            return st.error();
         const char* method = request.frfMethod == FrfMethod::Prbs           ? "prbs"
                              : request.frfMethod == FrfMethod::Conventional ? "conventional"
                              : request.frfMethod == FrfMethod::Multisine    ? "multisine"

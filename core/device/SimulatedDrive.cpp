@@ -330,12 +330,8 @@ Result<SimulatedDrive::FrfPlans> SimulatedDrive::planFrf(const sim::AxisSimulato
 {
     const auto& v = sim.parameters();
     const double rated = model::ratedTorqueNm(v.at("motor.rated_current"), v.at("motor.torque_constant"));
-    if (r.frfQuantity != FrfQuantity::Default)
-        return makeError(ErrorCode::BadInput, "FRF quantity: this drive measures its own quantity only (the closed velocity loop); plant and "
-                         "open-loop quantities are hal:'s (--quantity)");
-    if (r.amplitudePeak != 0.0)
-        return makeError(ErrorCode::BadInput, "FRF amplitude: this drive takes it in % of rated torque (amplitudePct, --amplitude-pct), not as a peak "
-                         "in output units (amplitudePeak, --amplitude)");
+    if (auto st = checkRatedTorqueFrfRequest(r); !st)
+        return st.error();
     if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0) || r.amplitudePct > kMaxFrfAmplitudePct) {
         return makeError(ErrorCode::OutOfRange, "FRF amplitude " + model::formatNumber(r.amplitudePct, 6) +
                                                     " % of rated torque refused: it must lie in (0, " +

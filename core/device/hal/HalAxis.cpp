@@ -53,6 +53,22 @@ void waitPeriods(std::int64_t periodNs)
     std::this_thread::sleep_for(std::max(std::chrono::nanoseconds(2 * periodNs), std::chrono::nanoseconds(20'000'000)));
 }
 
+/// The 1-based position of the axis's pid function in its thread (halcmd addf takes positions from 1).
+Result<long> pidPlace(const HalSessionOptions& options, const HalAxis& axis)
+{
+    auto tt = runHalcmd(options, {"-s", "show", "thread", axis.thread});
+    if (!tt)
+        return tt.error();
+    auto threads = parseThreads(*tt);
+    if (!threads || threads->empty())
+        return makeError(ErrorCode::Device, "cannot read thread " + axis.thread);
+    const auto& fns = threads->front().functions;
+    const auto it = std::find(fns.begin(), fns.end(), axis.pidFunction);
+    if (it == fns.end())
+        return makeError(ErrorCode::Device, axis.pidFunction + " is no longer on " + axis.thread);
+    return static_cast<long>(it - fns.begin()) + 1;
+}
+
 } // namespace
 
 const char* halColumnName(HalColumn c)
@@ -131,17 +147,10 @@ Result<std::unique_ptr<HalInjection>> HalInjection::insert(const HalSessionOptio
     inj->m_settings = settings;
 
     // Function order in the thread: streamer before the PID, the injection right after it, sampler last.
-    auto tt = runHalcmd(options, {"-s", "show", "thread", axis.thread});
-    if (!tt)
-        return tt.error();
-    auto threads = parseThreads(*tt);
-    if (!threads || threads->empty())
-        return makeError(ErrorCode::Device, "cannot read thread " + axis.thread);
-    const auto& fns = threads->front().functions;
-    const auto it = std::find(fns.begin(), fns.end(), axis.pidFunction);
-    if (it == fns.end())
-        return makeError(ErrorCode::Device, axis.pidFunction + " is no longer on " + axis.thread);
-    const auto pidPos = static_cast<long>(it - fns.begin()) + 1; // 1-based
+    auto place = pidPlace(options, axis);
+    if (!place)
+        return place.error();
+    const long pidPos = *place;
 
     const double maxError = settings.maxError > 0.0 ? settings.maxError : axis.maxError;
     const std::string depth = std::to_string(settings.fifoDepth);
@@ -307,17 +316,10 @@ Status insertNotch(const HalSessionOptions& options, const HalAxis& axis, double
             return makeError(ErrorCode::BadInput, "this configuration loads biquad itself (" + p.name +
                                                       "): AxisTune's notch needs the component; add the notch to the "
                                                       "configuration's own biquad instead");
-    auto tt = runHalcmd(options, {"-s", "show", "thread", axis.thread});
-    if (!tt)
-        return tt.error();
-    auto threads = parseThreads(*tt);
-    if (!threads || threads->empty())
-        return makeError(ErrorCode::Device, "cannot read thread " + axis.thread);
-    const auto& fns = threads->front().functions;
-    const auto it = std::find(fns.begin(), fns.end(), axis.pidFunction);
-    if (it == fns.end())
-        return makeError(ErrorCode::Device, axis.pidFunction + " is no longer on " + axis.thread);
-    const auto after = static_cast<long>(it - fns.begin()) + 2; // 1-based position right after the pid
+    auto place = pidPlace(options, axis);
+    if (!place)
+        return place.error();
+    const long after = *place + 1; // right after the pid
     const std::string inNet = "axistune-notch-in";
     const std::vector<std::vector<std::string>> steps = {
         {"loadrt", "biquad", "names=" + notch},

@@ -408,12 +408,17 @@ Result<DriveLimits> HalDrive::limits(const std::string& axis)
     return l;
 }
 
-Result<TestPlan> HalDrive::planTest(const TestRequest& request)
+Result<HalFrfPlan> HalDrive::plan(const TestRequest& request) const
 {
     auto a = discoverAxis(m_options, request.axis);
     if (!a)
         return a.error();
-    auto plan = planHalFrf(request, *a);
+    return planHalFrf(request, *a);
+}
+
+Result<TestPlan> HalDrive::planTest(const TestRequest& request)
+{
+    auto plan = this->plan(request);
     if (!plan)
         return plan.error();
     TestPlan p;
@@ -431,10 +436,7 @@ Status HalDrive::startTest(const TestRequest& request)
             return st;
     }
     joinWorker();
-    auto a = discoverAxis(m_options, request.axis);
-    if (!a)
-        return a.error();
-    auto plan = planHalFrf(request, *a);
+    auto plan = this->plan(request);
     if (!plan)
         return plan.error();
     // An injection already loaded is a test of another AxisTune, or one left behind by an AxisTune that died: an

@@ -77,6 +77,7 @@ private:
     explicit HalDrive(HalSessionOptions options) : m_options(std::move(options)) {}
     Result<std::vector<std::string>> pidNames() const;
     Status checkAxis(const std::string& axis) const;
+    Result<HalFrfPlan> plan(const TestRequest& request) const;
     void joinWorker();
     void run(HalFrfPlan plan, std::vector<double> excitation);
 
