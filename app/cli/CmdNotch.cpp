@@ -8,6 +8,7 @@
 #include "core/model/InputLimits.h"
 #include "core/tuning/Notch.h"
 #include "core/tuning/Resonance.h"
+#include "core/tuning/VelocityLoopDesign.h"
 
 #include <cmath>
 #include <fstream>
@@ -60,16 +61,11 @@ Result<std::vector<dsp::NotchSpec>> readExisting(const std::string& path)
 int runNotch(NotchCliOptions o)
 {
     const std::string cmd = "notch";
-    tuning::LoopForm form;
-    if (o.loop == "open")
-        form.open = true;
-    else if (o.loop == "complementary")
-        form.closed = dsp::LoopMeasurement::Complementary;
-    else if (o.loop == "neg-complementary")
-        form.closed = dsp::LoopMeasurement::NegComplementary;
-    else if (o.loop == "sensitivity")
-        form.closed = dsp::LoopMeasurement::Sensitivity;
-    else
+    // One parser of loop measurements (core/tuning/VelocityLoopDesign.h); a plant is not a loop form.
+    const auto kind = tuning::parseLoopMeasurement(o.loop);
+    const auto parsedForm = kind ? tuning::loopFormOf(*kind) : Result<tuning::LoopForm>(kind.error());
+    const tuning::LoopForm form = parsedForm ? *parsedForm : tuning::LoopForm{};
+    if (!parsedForm)
         return reportError(cmd, makeError(ErrorCode::BadInput, "--loop must be open, complementary, neg-complementary or "
                                                                "sensitivity (got '" + o.loop + "')"));
     if (!(o.notch.execRateHz > 0.0) || !std::isfinite(o.notch.execRateHz))

@@ -139,17 +139,8 @@ NotchAnalysis analyseNotchFrf(const dsp::FrequencyResponse& measured, const tuni
         return a;
     }
     a.proposal = *prop;
-    std::vector<int> freeSlots;
-    for (int s = 1; s <= notchOptions.slotCount; ++s)
-        if (!existing.count(s))
-            freeSlots.push_back(s);
-    const int k = static_cast<int>(existing.size());
     std::vector<dsp::NotchSpec> added;
-    for (auto n : a.proposal.notches) {
-        const int idx = n.slot - k - 1;
-        if (idx < 0 || idx >= static_cast<int>(freeSlots.size()))
-            continue;
-        n.slot = freeSlots[static_cast<std::size_t>(idx)];
+    for (const auto& n : tuning::allocateNotchSlots(a.proposal, existing, notchOptions.slotCount)) {
         const tuning::Resonance* r = nullptr;
         for (const auto& c : a.resonances)
             if (std::abs(c.freqHz - n.resonanceHz) < 1e-9)
@@ -162,7 +153,6 @@ NotchAnalysis analyseNotchFrf(const dsp::FrequencyResponse& measured, const tuni
         a.rows.push_back(row);
         added.push_back(n.spec);
     }
-    std::sort(a.rows.begin(), a.rows.end(), [](const NotchRow& x, const NotchRow& y) { return x.slot < y.slot; });
     auto pred = tuning::predictWithNotches(measured, form, added, notchOptions.execRateHz);
     if (!pred) {
         a.error = QString::fromStdString(pred.error().detail);

@@ -8,6 +8,7 @@
 #include "app/gui/WizardPages.h"
 #include "core/model/Constants.h"
 #include "core/store/FrfCapture.h"
+#include "core/tuning/VelocityLoopDesign.h"
 #include "widgets/BodePlot.h"
 #include "widgets/CurvePlot.h"
 
@@ -277,16 +278,15 @@ void TwoInertiaFitPage::analyse()
     });
     watcher->setFuture(QtConcurrent::run([measured, pi, tv, h, opts]() {
         Out out;
-        dsp::FrequencyResponse plant = measured;
-        auto it = measured.metadata.find("measurement");
-        if (it != measured.metadata.end() && it->second == "complementary") {
-            auto p = tuning::plantFromVelocityLoop(measured, pi, tv, h);
-            if (!p) {
-                out.error = qs(p.error().detail);
-                return out;
-            }
-            plant = std::move(p).value();
+        // One parser of loop measurements (core/tuning/VelocityLoopDesign.h): no key is a plant FRF.
+        auto kind = tuning::loopMeasurementOf(measured, tuning::LoopMeasurementKind::Plant);
+        auto p = kind ? tuning::plantFromMeasurement(measured, *kind, pi, tv, h)
+                      : Result<dsp::FrequencyResponse>(kind.error());
+        if (!p) {
+            out.error = qs(p.error().detail);
+            return out;
         }
+        const dsp::FrequencyResponse plant = std::move(p).value();
         out.plant = plant;
         auto fit = tuning::fitTwoInertia(plant, opts);
         if (!fit)
@@ -459,7 +459,8 @@ void TwoInertiaFilterPage::update()
     m_plot->addCurve(tr("without filter"), m_d.loadError.tS, a, QColor(200, 60, 0));
     m_plot->addCurve(tr("with F_m"), m_d.loadError.tS, b, QColor(0, 150, 60));
     m_plot->rescale();
-    m_d.proposedPi = tuning::velocityPiFromInertia(p.jmKgm2, kTwoPi * 24.0, 10.0);
+    m_d.proposedPi = tuning::velocityPiFromInertia(p.jmKgm2, kTwoPi * tuning::kDefaultVelocityBandwidthHz,
+                                                   tuning::kDefaultVelocityGainFactor);
     // The drive's filter (suppression.*) and the loop structure TI-3 needs for y_m ≈ y_m*: velocity
     // feedforward and the torque feedforward J·a* with J = J_m + J_L of the fit (spec §4.10).
     m_d.proposal = {{"velocity.kp", m_d.proposedPi.kpNmsPerRad},

@@ -151,4 +151,24 @@ Result<NotchPrediction> predictWithNotches(const dsp::FrequencyResponse& measure
     return p;
 }
 
+std::vector<ProposedNotch> allocateNotchSlots(const NotchProposal& proposal,
+                                              const std::map<int, dsp::NotchSpec>& existing, int slotCount)
+{
+    std::vector<int> freeSlots;
+    for (int s = 1; s <= slotCount; ++s)
+        if (!existing.count(s))
+            freeSlots.push_back(s);
+    const int k = static_cast<int>(existing.size());
+    std::vector<ProposedNotch> out;
+    for (auto n : proposal.notches) {
+        const int idx = n.slot - k - 1;
+        if (idx < 0 || idx >= static_cast<int>(freeSlots.size()))
+            continue;
+        n.slot = freeSlots[static_cast<std::size_t>(idx)];
+        out.push_back(n);
+    }
+    std::sort(out.begin(), out.end(), [](const ProposedNotch& a, const ProposedNotch& b) { return a.slot < b.slot; });
+    return out;
+}
+
 }  // namespace axistune::tuning

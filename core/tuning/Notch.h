@@ -27,6 +27,7 @@
 #include "core/model/Result.h"
 #include "core/tuning/Resonance.h"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,6 +71,12 @@ Status checkExistingNotch(const dsp::NotchSpec& n, double execRateHz, const std:
 /// Proposes notches for `resonances` (found on the open loop, so levelDb is |L_r|).
 Result<NotchProposal> proposeNotches(const std::vector<Resonance>& resonances, const std::vector<dsp::NotchSpec>& existing,
                                      const NotchOptions& options);
+
+/// The drive slots of a proposal: proposeNotches numbers the added notches k+1, k+2, … after the k existing ones;
+/// here they go to the drive's free slots (1..slotCount not in `existing`, increasing), and a notch beyond the
+/// free slots is left out. Sorted by slot.
+std::vector<ProposedNotch> allocateNotchSlots(const NotchProposal& proposal,
+                                              const std::map<int, dsp::NotchSpec>& existing, int slotCount);
 
 /// Drive width parameter whose digital −3 dB width is exactly `digitalWidthHz` (< execRateHz/2).
 double notchWidthParameter(double centerHz, double digitalWidthHz, double execRateHz);
