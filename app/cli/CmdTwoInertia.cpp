@@ -107,8 +107,9 @@ int runTwoInertia(const TwoInertiaOptions& o)
     }
     const auto& p = fit->params;
     const auto mode = o.mode == "full" ? tuning::SuppressionMode::Full : tuning::SuppressionMode::Semi;
-    const auto filter = tuning::suppressionFilterFromModel(p, mode, o.tauS);
-    const auto pi = tuning::velocityPiFromInertia(p.jmKgm2, kTwoPi * o.bandwidthHz, o.staticGain);
+    const auto proposal = tuning::twoInertiaProposal(p, mode, o.tauS, o.bandwidthHz, o.staticGain);
+    const auto& filter = proposal.filter;
+    const auto& pi = proposal.pi;
     const auto fbMode = mode == tuning::SuppressionMode::Full ? tuning::FeedbackMode::Full : tuning::FeedbackMode::Semi;
     const auto posPlain = tuning::positionGain(p, pi, fbMode, std::nullopt, false, tuning::kPositionGainMarginDb);
     std::optional<tuning::SuppressionFilter> inLoop;
@@ -150,6 +151,11 @@ int runTwoInertia(const TwoInertiaOptions& o)
                      mode == tuning::SuppressionMode::Full ? posFilter.recommendedPerS : posPlain.recommendedPerS,
                      noLimit);
     j["position_gain"] = pg;
+    // What the two-inertia wizard writes to the drive (keys as `params` names them).
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& [key, v] : proposal.parameters)
+        params[key] = v;
+    j["parameters"] = params;
     j["load_error"] = {{"profile", {{"vmax_rad_s", o.profile.vMax}, {"accel_rad_s2", o.profile.aMax},
                                     {"jerk_rad_s3", o.profile.jerk}}},
                        {"without_filter_rad", loadError.maxErrorWithoutFilter},

@@ -216,6 +216,27 @@ model::ParameterValues velocityLoopParameters(const VelocityLoopDesign& design, 
     return v;
 }
 
+TwoInertiaProposal twoInertiaProposal(const TwoInertiaParams& p, SuppressionMode mode, double tauS, double bandwidthHz,
+                                      double k)
+{
+    TwoInertiaProposal out;
+    out.filter = suppressionFilterFromModel(p, mode, tauS);
+    out.pi = velocityPiFromInertia(p.jmKgm2, kTwoPi * bandwidthHz, k);
+    // The drive's filter (suppression.*) and the loop structure TI-3 needs for y_m ≈ y_m*: velocity feedforward and
+    // the torque feedforward J·a* with J = J_m + J_L of the fit (spec §4.10).
+    out.parameters = {{"velocity.kp", out.pi.kpNmsPerRad},
+                      {"velocity.ki", out.pi.kiNmPerRad},
+                      {"suppression.mode", mode == SuppressionMode::Full ? 2.0 : 1.0},
+                      {"suppression.f0", out.filter.f0Hz},
+                      {"suppression.zeta", out.filter.zeta},
+                      {"position.velocity_ff", 1.0},
+                      {"position.torque_ff", 1.0},
+                      {"velocity.inertia", p.jmKgm2 + p.jlKgm2}};
+    if (mode == SuppressionMode::Full)
+        out.parameters["suppression.tau"] = out.filter.tauS;
+    return out;
+}
+
 NormalisedStep normalisedStep(const model::Capture& cap, double step)
 {
     NormalisedStep out;

@@ -18,6 +18,7 @@
 #include "core/tuning/CurrentLoop.h"
 #include "core/tuning/Notch.h"
 #include "core/tuning/TwoInertia.h"
+#include "core/tuning/TwoInertiaFilter.h"
 #include "core/tuning/VelocityLoop.h"
 #include "core/tuning/VelocityStep.h"
 
@@ -116,6 +117,23 @@ Result<VelocityLoopDesign> designVelocityLoop(const VelocityLoopRequest& request
 
 /// The drive parameters of a design: velocity.kp, velocity.ki, and position.kp when asked and finite and > 0.
 model::ParameterValues velocityLoopParameters(const VelocityLoopDesign& design, bool withPositionGain);
+
+// ---------------------------------------------------------------------------------------------
+// The two-inertia proposal (spec §4.10, TI-3/TI-5): what the two-inertia wizard writes to the drive
+
+struct TwoInertiaProposal {
+    SuppressionFilter filter; ///< F_m (semi) or F_L (full) from the fitted model
+    VelocityPi pi;            ///< chapter 5 rule on the fitted J_m
+    /// velocity.kp/ki, suppression.mode (1 semi, 2 full), suppression.f0/zeta (and tau when full), the velocity
+    /// and torque feedforward the method needs (position.velocity_ff = position.torque_ff = 1) and the torque
+    /// feedforward inertia velocity.inertia = J_m + J_L.
+    model::ParameterValues parameters;
+};
+
+/// The proposal for a fitted model. tauS: F_L's time constant (0: suppressionFilterFromModel's default).
+TwoInertiaProposal twoInertiaProposal(const TwoInertiaParams& p, SuppressionMode mode, double tauS,
+                                      double bandwidthHz = kDefaultVelocityBandwidthHz,
+                                      double k = kDefaultVelocityGainFactor);
 
 // ---------------------------------------------------------------------------------------------
 // Velocity steps: measured or predicted, normalised to the step

@@ -243,3 +243,28 @@ TEST(VelocityLoopDesign, StepOvershootOfACapture)
     EXPECT_NEAR(*stepOvershootPct(s), 25.0, 1e-12);
     EXPECT_FALSE(stepOvershootPct(normalisedStep(cap, 0.0)));
 }
+
+TEST(VelocityLoopDesign, TwoInertiaProposalOnTable51)
+{
+    // Table 5.1 (spec/lost-motion-and-two-inertia.md §2.8): J_m 0.00527, J_L 0.0105 kg·m², K 200 N·m/rad,
+    // C 0.27 N·m·s/rad; the thesis rule with ω_l = 2π·24, k = 10 gives K_P = 11.24 N·m·s/rad, K_I = 1198 N·m/rad
+    // (the spec's printed figures: tolerance half a unit of their last digit).
+    const TwoInertiaParams p{0.00527, 0.0105, 200.0, 0.27, 1.1e-3};
+    const auto semi = twoInertiaProposal(p, SuppressionMode::Semi, 0.0);
+    EXPECT_NEAR(semi.pi.kpNmsPerRad, 11.24, 0.005);
+    EXPECT_NEAR(semi.pi.kiNmPerRad, 1198.0, 0.5);
+    EXPECT_EQ(semi.parameters.at("velocity.kp"), semi.pi.kpNmsPerRad);
+    EXPECT_EQ(semi.parameters.at("suppression.mode"), 1.0);
+    EXPECT_EQ(semi.parameters.at("position.velocity_ff"), 1.0);
+    EXPECT_EQ(semi.parameters.at("position.torque_ff"), 1.0);
+    EXPECT_NEAR(semi.parameters.at("velocity.inertia"), 0.00527 + 0.0105, 1e-15);
+    // F_m's f0 is the anti-resonance √(K/J_L)/2π = 21.96 Hz (spec §2.9); its zeta is the model's zero damping.
+    EXPECT_NEAR(semi.parameters.at("suppression.f0"), std::sqrt(200.0 / 0.0105) / (2.0 * std::numbers::pi), 1e-9);
+    EXPECT_FALSE(semi.parameters.count("suppression.tau"));
+    const auto full = twoInertiaProposal(p, SuppressionMode::Full, 0.013);
+    EXPECT_EQ(full.parameters.at("suppression.mode"), 2.0);
+    EXPECT_NEAR(full.parameters.at("suppression.tau"), 0.013, 1e-15);
+    // The policy's options: ω_l and k (the CLI's --bandwidth-hz, --k).
+    const auto soft = twoInertiaProposal(p, SuppressionMode::Semi, 0.0, 12.0, 5.0);
+    EXPECT_NEAR(soft.pi.kpNmsPerRad, 11.24 / 4.0, 0.005 / 4.0);
+}
