@@ -13,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -89,19 +90,19 @@ int runNotch(NotchCliOptions o)
     auto frf = io::readFrfCsvFile(o.frfPath);
     if (!frf)
         return reportError(cmd, frf.error());
-    const auto openLoop = tuning::openLoopOf(*frf, form);
-    auto res = tuning::findResonances(openLoop, o.res);
-    if (!res)
-        return reportError(cmd, Error{res.error().code, o.frfPath + ": " + res.error().detail});
-    auto proposal = tuning::proposeNotches(*res, existing, o.notch);
-    if (!proposal)
-        return reportError(cmd, proposal.error());
+    // The existing notches occupy slots 1..k; the analysis is the notch wizard's (tuning::analyseNotches).
+    std::map<int, dsp::NotchSpec> existingSlots;
+    for (std::size_t k = 0; k < existing.size(); ++k)
+        existingSlots[static_cast<int>(k) + 1] = existing[k];
+    auto analysis = tuning::analyseNotches(*frf, form, o.res, o.notch, existingSlots);
+    if (!analysis)
+        return reportError(cmd, Error{analysis.error().code, o.frfPath + ": " + analysis.error().detail});
+    const auto* res = &analysis->resonances;
+    const auto* proposal = &analysis->proposal;
+    const auto* pred = &analysis->prediction;
     std::vector<dsp::NotchSpec> added;
-    for (const auto& n : proposal->notches)
+    for (const auto& n : analysis->notches)
         added.push_back(n.spec);
-    auto pred = tuning::predictWithNotches(*frf, form, added, o.notch.execRateHz);
-    if (!pred)
-        return reportError(cmd, pred.error());
     if (!o.outFrf.empty()) {
         auto out = pred->measuredAfter;
         out.metadata["predicted_with_notches"] = std::to_string(added.size());
@@ -132,7 +133,7 @@ int runNotch(NotchCliOptions o)
                                  {"width_Hz", existing[k].widthHz},
                                  {"depth", existing[k].depth}});
     j["notches"] = nlohmann::json::array();
-    for (const auto& n : proposal->notches)
+    for (const auto& n : analysis->notches)
         j["notches"].push_back({{"slot", n.slot},
                                 {"center_Hz", n.spec.centerHz},
                                 {"width_Hz", n.spec.widthHz},

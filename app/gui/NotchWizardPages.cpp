@@ -122,25 +122,17 @@ NotchAnalysis analyseNotchFrf(const dsp::FrequencyResponse& measured, const tuni
                               const tuning::ResonanceOptions& resonanceOptions, const tuning::NotchOptions& notchOptions,
                               const std::map<int, dsp::NotchSpec>& existing)
 {
+    // The analysis is core's (tuning::analyseNotches); here only the rules are put into words.
     NotchAnalysis a;
-    const auto open = tuning::openLoopOf(measured, form);
-    auto res = tuning::findResonances(open, resonanceOptions);
-    if (!res) {
-        a.error = QString::fromStdString(res.error().detail);
+    auto core = tuning::analyseNotches(measured, form, resonanceOptions, notchOptions, existing);
+    if (!core) {
+        a.error = QString::fromStdString(core.error().detail);
         return a;
     }
-    a.resonances = *res;
-    std::vector<dsp::NotchSpec> packed;
-    for (const auto& [slot, n] : existing)
-        packed.push_back(n);
-    auto prop = tuning::proposeNotches(a.resonances, packed, notchOptions);
-    if (!prop) {
-        a.error = QString::fromStdString(prop.error().detail);
-        return a;
-    }
-    a.proposal = *prop;
-    std::vector<dsp::NotchSpec> added;
-    for (const auto& n : tuning::allocateNotchSlots(a.proposal, existing, notchOptions.slotCount)) {
+    a.resonances = core->resonances;
+    a.proposal = core->proposal;
+    a.prediction = core->prediction;
+    for (const auto& n : core->notches) {
         const tuning::Resonance* r = nullptr;
         for (const auto& c : a.resonances)
             if (std::abs(c.freqHz - n.resonanceHz) < 1e-9)
@@ -151,14 +143,7 @@ NotchAnalysis analyseNotchFrf(const dsp::FrequencyResponse& measured, const tuni
         row.resonanceHz = n.resonanceHz;
         row.rule = r ? ruleText(n, *r, notchOptions) : QString();
         a.rows.push_back(row);
-        added.push_back(n.spec);
     }
-    auto pred = tuning::predictWithNotches(measured, form, added, notchOptions.execRateHz);
-    if (!pred) {
-        a.error = QString::fromStdString(pred.error().detail);
-        return a;
-    }
-    a.prediction = *pred;
     return a;
 }
 

@@ -171,4 +171,31 @@ std::vector<ProposedNotch> allocateNotchSlots(const NotchProposal& proposal,
     return out;
 }
 
+Result<NotchAnalysis> analyseNotches(const dsp::FrequencyResponse& measured, const LoopForm& form,
+                                     const ResonanceOptions& resonanceOptions, const NotchOptions& notchOptions,
+                                     const std::map<int, dsp::NotchSpec>& existing)
+{
+    NotchAnalysis a;
+    auto res = findResonances(openLoopOf(measured, form), resonanceOptions);
+    if (!res)
+        return res.error();
+    a.resonances = std::move(res).value();
+    std::vector<dsp::NotchSpec> packed;
+    for (const auto& [slot, n] : existing)
+        packed.push_back(n);
+    auto prop = proposeNotches(a.resonances, packed, notchOptions);
+    if (!prop)
+        return prop.error();
+    a.proposal = std::move(prop).value();
+    a.notches = allocateNotchSlots(a.proposal, existing, notchOptions.slotCount);
+    std::vector<dsp::NotchSpec> added;
+    for (const auto& n : a.notches)
+        added.push_back(n.spec);
+    auto pred = predictWithNotches(measured, form, added, notchOptions.execRateHz);
+    if (!pred)
+        return pred.error();
+    a.prediction = std::move(pred).value();
+    return a;
+}
+
 }  // namespace axistune::tuning

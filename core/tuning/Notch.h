@@ -98,4 +98,17 @@ struct NotchPrediction {
 Result<NotchPrediction> predictWithNotches(const dsp::FrequencyResponse& measured, const LoopForm& form,
                                            const std::vector<dsp::NotchSpec>& notches, double execRateHz);
 
+/// The whole notch analysis of one measured FRF (the notch wizard and `axistune-cli notch`): resonances on the open
+/// loop, the proposal, the notches on the drive's free slots, the prediction with them.
+struct NotchAnalysis {
+    std::vector<Resonance> resonances;
+    NotchProposal proposal;             ///< as proposeNotches numbers it (after the existing ones)
+    std::vector<ProposedNotch> notches; ///< on the drive's slots (allocateNotchSlots), increasing slot
+    NotchPrediction prediction;         ///< the measured FRF with the added notches
+};
+/// Errors: those of findResonances, proposeNotches (an existing notch the rate cannot run) and predictWithNotches.
+Result<NotchAnalysis> analyseNotches(const dsp::FrequencyResponse& measured, const LoopForm& form,
+                                     const ResonanceOptions& resonanceOptions, const NotchOptions& notchOptions,
+                                     const std::map<int, dsp::NotchSpec>& existing);
+
 }  // namespace axistune::tuning
