@@ -7,9 +7,10 @@
 #include "core/tuning/Notch.h"
 #include "core/tuning/Resonance.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <complex>
-#include <gtest/gtest.h>
 #include <numbers>
 
 using namespace axistune;
@@ -75,7 +76,7 @@ std::vector<tuning::Resonance> resonancesOf(const dsp::FrequencyResponse& t)
 
 const tuning::LoopForm kComplementary{false, dsp::LoopMeasurement::Complementary};
 
-} // namespace
+}  // namespace
 
 TEST(Notch, ThreeResonancesNotchedAndMarginsImprove)
 {
@@ -151,8 +152,7 @@ TEST(Notch, OtherMeasuredFormsRoundTrip)
         dsp::FrequencyResponse m;
         for (std::size_t i = 0; i < t.size(); ++i) {
             const cd l = openLoop(t.freqHz[i]);
-            m.push(t.freqHz[i], kind == dsp::LoopMeasurement::Sensitivity ? 1.0 / (1.0 + l) : -l / (1.0 + l),
-                   std::nan(""), true);
+            m.push(t.freqHz[i], kind == dsp::LoopMeasurement::Sensitivity ? 1.0 / (1.0 + l) : -l / (1.0 + l), std::nan(""), true);
         }
         auto pred = tuning::predictWithNotches(m, {false, kind}, {n}, 16000.0);
         ASSERT_TRUE(pred.ok());
@@ -171,7 +171,7 @@ TEST(Notch, ExistingFiltersAreNeverRemovedOrChanged)
     auto p = tuning::proposeNotches(res, existing, {});
     ASSERT_TRUE(p.ok());
     EXPECT_EQ(p->slotsFree, 2);
-    ASSERT_EQ(p->notches.size(), 2U); // two free slots, three resonances
+    ASSERT_EQ(p->notches.size(), 2U);  // two free slots, three resonances
     EXPECT_EQ(p->notches[0].slot, 3);
     EXPECT_EQ(p->notches[1].slot, 4);
     ASSERT_EQ(p->skipped.size(), 1U);
@@ -221,7 +221,7 @@ TEST(Notch, MaxLimitsTheCount)
     auto p = tuning::proposeNotches(res, {}, o);
     ASSERT_TRUE(p.ok());
     ASSERT_EQ(p->notches.size(), 1U);
-    EXPECT_NEAR(p->notches[0].spec.centerHz, 1000.0, 20.0); // highest open-loop gain (≈ −9.9 dB)
+    EXPECT_NEAR(p->notches[0].spec.centerHz, 1000.0, 20.0);  // highest open-loop gain (≈ −9.9 dB)
     EXPECT_EQ(p->skipped.size(), 2U);
 }
 
@@ -233,7 +233,7 @@ TEST(Notch, WidthParameterGivesTheDigitalWidth)
         const double param = tuning::notchWidthParameter(f0, w, 16000.0);
         EXPECT_NEAR(digitalWidth({f0, param, 0.0}, 16000.0), w, 1e-9 * w) << f0;
         const double x = kPi * f0 / 16000.0;
-        if (f0 <= 3300.0) // the spec's correction agrees within 1 % where its small-angle form holds
+        if (f0 <= 3300.0)  // the spec's correction agrees within 1 % where its small-angle form holds
             EXPECT_NEAR(param, w * x / (std::sin(x) * std::cos(x)), 0.01 * param) << f0;
     }
 }
