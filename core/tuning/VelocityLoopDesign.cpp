@@ -104,16 +104,7 @@ Result<dsp::FrequencyResponse> plantFromMeasurement(const dsp::FrequencyResponse
     if (!form)
         return form.error();
     auto p = openLoopOf(measured, *form);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const std::complex<double> zInv = std::polar(1.0, -kTwoPi * p.freqHz[i] * velocityPeriodS);
-        const std::complex<double> c = running.kpNmsPerRad + running.kiNmPerRad * velocityPeriodS / (1.0 - zInv);
-        if (!p.valid[i] || std::abs(c) == 0.0) {
-            p.h[i] = 0.0;
-            p.valid[i] = false;
-        } else {
-            p.h[i] /= c;
-        }
-    }
+    divideByVelocityPi(p, running, velocityPeriodS);
     p.metadata["measurement"] = "plant";
     p.metadata["loop"] = "plant-from-" + std::string(loopMeasurementName(kind));
     return p;

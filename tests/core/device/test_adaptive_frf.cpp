@@ -22,6 +22,7 @@
 #include <numbers>
 
 #include "tests/NumberText.h"
+#include "tests/core/device/DriveTestUtil.h"
 #include "tests/core/sim/LiftedModel.h"
 
 using namespace axistune;
@@ -31,24 +32,11 @@ namespace {
 
 /// Forwards everything to a drive; optionally hides readFrequencyResponse (a drive that streams samples only, the
 /// host evaluates) and refuses a shaped multisine (as the Modbus register map does).
-class WrappedDrive : public Drive {
+class WrappedDrive : public devtest::ForwardingDrive {
 public:
     WrappedDrive(Drive& inner, bool samplesOnly, bool refuseShape)
-        : m_inner(inner), m_samplesOnly(samplesOnly), m_refuseShape(refuseShape)
+        : ForwardingDrive(inner), m_samplesOnly(samplesOnly), m_refuseShape(refuseShape)
     {
-    }
-    Result<DriveIdentity> identify() override { return m_inner.identify(); }
-    Result<std::vector<model::ParameterMeta>> parameterMetadata(const std::string& a) override
-    {
-        return m_inner.parameterMetadata(a);
-    }
-    Result<model::ParameterValues> readParameters(const std::string& a, std::span<const std::string> k) override
-    {
-        return m_inner.readParameters(a, k);
-    }
-    Status writeParameters(const std::string& a, const model::ParameterValues& v) override
-    {
-        return m_inner.writeParameters(a, v);
     }
     Status startTest(const TestRequest& r) override
     {
@@ -56,15 +44,10 @@ public:
             return st;
         return m_inner.startTest(r);
     }
-    Result<TestStatus> pollTest() override { return m_inner.pollTest(); }
-    Result<model::Capture> readTrace() override { return m_inner.readTrace(); }
-    Status abortTest() override { return m_inner.abortTest(); }
     Result<FrfMeasurement> readFrequencyResponse() override
     {
         return m_samplesOnly ? Drive::readFrequencyResponse() : m_inner.readFrequencyResponse();
     }
-    Result<DriveCapabilities> capabilities(const std::string& a) override { return m_inner.capabilities(a); }
-    Result<DriveLimits> limits(const std::string& a) override { return m_inner.limits(a); }
     Result<TestPlan> planTest(const TestRequest& r) override
     {
         if (auto st = refuse(r); !st)
@@ -79,7 +62,6 @@ private:
             return makeError(ErrorCode::BadInput, "a shaped multisine cannot be sent (test)");
         return Status::success();
     }
-    Drive& m_inner;
     bool m_samplesOnly, m_refuseShape;
 };
 
