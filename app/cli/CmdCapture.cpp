@@ -3,6 +3,7 @@
 #include "app/cli/CircleCommand.h"
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/device/AdaptiveFrf.h"
 #include "core/device/Drive.h"
 #include "core/device/MultisineTest.h"
 #include "core/device/SimulatedDrive.h"
@@ -11,6 +12,7 @@
 #include "core/io/FrfCsv.h"
 #include "core/io/SweepCsv.h"
 #include "core/model/Number.h"
+#include "core/model/ResultJson.h"
 
 #include <algorithm>
 #include <charconv>
@@ -52,6 +54,8 @@ struct CaptureOptions {
     std::string phases = "clipping";
     std::string shapeFrom;
     double shapeRangeDb = 20.0;
+    bool adaptive = false;    ///< re-excite the invalid lines (core/device/AdaptiveFrf.h)
+    double timeBudgetS = 5.0; ///< --adaptive: motion time of all passes
     // Parameters written before the test, and the simulator's linear switch (test/diagnostic).
     std::vector<std::string> set;
     bool linear = false;
@@ -165,7 +169,8 @@ Status multisineRequest(const CaptureOptions& o, device::TestRequest& req)
 }
 
 /// Writes the FRF (and the sine-stream recording) of a completed FRF test; prints a JSON summary.
-int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, const CaptureOptions& o)
+int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, const CaptureOptions& o,
+                   const device::AdaptiveFrfResult* adaptive = nullptr)
 {
     auto m = std::make_unique<device::FrfMeasurement>(std::move(measurement));
     m->frf.metadata["connection"] = o.connect;
@@ -188,6 +193,35 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
         const auto it = m->frf.metadata.find(key);
         if (it != m->frf.metadata.end() && model::parseNumber(it->second))
             std::cout << ", \"" << key << "\": " << it->second;
+    }
+    if (adaptive) {
+        nlohmann::json a;
+        a["time_budget_s"] = o.timeBudgetS;
+        a["valid_lines"] = adaptive->validLines;
+        a["passes"] = nlohmann::json::array();
+        for (const auto& p : adaptive->passes)
+            a["passes"].push_back({{"lines", p.lines},
+                                   {"bands", p.bands},
+                                   {"peak_pct", p.peakPct},
+                                   {"periods", p.periods},
+                                   {"motion_time_s", p.motionTimeS},
+                                   {"shaped", p.shaped},
+                                   {"voltage_limit_reached", p.voltageReached},
+                                   {"valid_after", p.validAfter},
+                                   {"limited_by", p.limitedBy}});
+        nlohmann::json counts = nlohmann::json::object();
+        for (const char* r : {"noise", "torque limit", "voltage limit", "nonlinearity"})
+            counts[r] = 0;
+        a["invalid_lines"] = nlohmann::json::array();
+        for (const auto& l : adaptive->invalid) {
+            counts[device::invalidReasonName(l.reason)] = counts[device::invalidReasonName(l.reason)].get<int>() + 1;
+            nlohmann::json line{{"f_Hz", l.freqHz}, {"reason", device::invalidReasonName(l.reason)}};
+            model::putNumber(line, "relative_noise", l.relativeNoise,
+                             "never measured below the voltage limit (every pass that excited it reached the limit)");
+            a["invalid_lines"].push_back(line);
+        }
+        a["invalid_by_reason"] = counts;
+        std::cout << ", \"adaptive\": " << a.dump();
     }
     if (const auto q = m->frf.metadata.find("quantity"); q != m->frf.metadata.end())
         std::cout << ", \"quantity\": \"" << q->second << "\"";
@@ -263,6 +297,19 @@ int runCapture(const CaptureOptions& o)
     } else {
         return reportError(cmd, makeError(ErrorCode::BadInput, "--test must be step, jog, hold, current-step, frf or circle (got '" + o.test + "')"));
     }
+    if (o.adaptive && (o.test != "frf" || o.method != "multisine"))
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--adaptive is only for --test frf --method multisine"));
+    if (!o.adaptive && o.timeBudgetS != 5.0)
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--time-budget is only for --adaptive"));
+    if (o.adaptive && !(o.timeBudgetS > 0.0 && std::isfinite(o.timeBudgetS)))
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--time-budget must be > 0 s"));
+    if (o.adaptive && !o.traceOut.empty())
+        return reportError(
+            cmd, makeError(ErrorCode::BadInput, "--trace-out is not available with --adaptive (one trace per pass)"));
+    if (o.adaptive && !o.shapeFrom.empty())
+        return reportError(cmd, makeError(ErrorCode::BadInput,
+                                          "--shape-from is not available with --adaptive (it shapes each "
+                                          "pass from what it measured)"));
     if (o.test != "frf" && !o.sweepOut.empty())
         return reportError(cmd, makeError(ErrorCode::BadInput, "--sweep-out is only for --test frf"));
     if (auto st = prepareDrive(**drive, o); !st)
@@ -273,6 +320,15 @@ int runCapture(const CaptureOptions& o)
     if (!plan)
         return reportError(cmd, plan.error());
     device::RunOptions run;
+    if (o.adaptive) {
+        device::AdaptiveFrfOptions ao;
+        ao.timeBudgetS = o.timeBudgetS;
+        auto res = device::runAdaptiveFrf(**drive, req, ao, run);
+        if (!res)
+            return reportError(cmd, res.error());
+        auto m = res->measurement;
+        return writeFrfResult(cmd, std::move(m), o, &*res);
+    }
     run.readTrace = o.test != "frf" || !o.traceOut.empty();
     auto done = device::runTest(**drive, req, run);
     if (!done)
@@ -326,6 +382,10 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         sub.add_option("--phases", o->phases, "multisine: clipping | schroeder")->capture_default_str();
         sub.add_option("--shape-from", o->shapeFrom, "multisine: amplitude shaped by 1/|H| of a previous FRF CSV");
         sub.add_option("--shape-range-db", o->shapeRangeDb, "multisine: range of the shaped amplitudes [dB]")->capture_default_str();
+        sub.add_flag("--adaptive", o->adaptive,
+                     "multisine: re-excite the invalid lines (1/|H| and noise shaped, more periods) "
+                     "until every line is valid or --time-budget is spent");
+        sub.add_option("--time-budget", o->timeBudgetS, "--adaptive: motion time of all passes [s] (default 5)");
         sub.add_option("--settle-s", o->settle, "frf: settle time per frequency [s] (0: from the loop dynamics)");
         sub.add_option("--min-measure-s", o->minMeasure, "frf: measured time per frequency at least [s] (0: from the loop dynamics)");
         sub.add_option("--sweep-out", o->sweepOut, "frf: sine-stream CSV of the excitation and response");

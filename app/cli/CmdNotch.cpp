@@ -8,10 +8,12 @@
 #include "core/model/InputLimits.h"
 #include "core/tuning/Notch.h"
 #include "core/tuning/Resonance.h"
+#include "core/tuning/VelocityLoopDesign.h"
 
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -60,16 +62,11 @@ Result<std::vector<dsp::NotchSpec>> readExisting(const std::string& path)
 int runNotch(NotchCliOptions o)
 {
     const std::string cmd = "notch";
-    tuning::LoopForm form;
-    if (o.loop == "open")
-        form.open = true;
-    else if (o.loop == "complementary")
-        form.closed = dsp::LoopMeasurement::Complementary;
-    else if (o.loop == "neg-complementary")
-        form.closed = dsp::LoopMeasurement::NegComplementary;
-    else if (o.loop == "sensitivity")
-        form.closed = dsp::LoopMeasurement::Sensitivity;
-    else
+    // One parser of loop measurements (core/tuning/VelocityLoopDesign.h); a plant is not a loop form.
+    const auto kind = tuning::parseLoopMeasurement(o.loop);
+    const auto parsedForm = kind ? tuning::loopFormOf(*kind) : Result<tuning::LoopForm>(kind.error());
+    const tuning::LoopForm form = parsedForm ? *parsedForm : tuning::LoopForm{};
+    if (!parsedForm)
         return reportError(cmd, makeError(ErrorCode::BadInput, "--loop must be open, complementary, neg-complementary or "
                                                                "sensitivity (got '" + o.loop + "')"));
     if (!(o.notch.execRateHz > 0.0) || !std::isfinite(o.notch.execRateHz))
@@ -93,19 +90,19 @@ int runNotch(NotchCliOptions o)
     auto frf = io::readFrfCsvFile(o.frfPath);
     if (!frf)
         return reportError(cmd, frf.error());
-    const auto openLoop = tuning::openLoopOf(*frf, form);
-    auto res = tuning::findResonances(openLoop, o.res);
-    if (!res)
-        return reportError(cmd, Error{res.error().code, o.frfPath + ": " + res.error().detail});
-    auto proposal = tuning::proposeNotches(*res, existing, o.notch);
-    if (!proposal)
-        return reportError(cmd, proposal.error());
+    // The existing notches occupy slots 1..k; the analysis is the notch wizard's (tuning::analyseNotches).
+    std::map<int, dsp::NotchSpec> existingSlots;
+    for (std::size_t k = 0; k < existing.size(); ++k)
+        existingSlots[static_cast<int>(k) + 1] = existing[k];
+    auto analysis = tuning::analyseNotches(*frf, form, o.res, o.notch, existingSlots);
+    if (!analysis)
+        return reportError(cmd, Error{analysis.error().code, o.frfPath + ": " + analysis.error().detail});
+    const auto* res = &analysis->resonances;
+    const auto* proposal = &analysis->proposal;
+    const auto* pred = &analysis->prediction;
     std::vector<dsp::NotchSpec> added;
-    for (const auto& n : proposal->notches)
+    for (const auto& n : analysis->notches)
         added.push_back(n.spec);
-    auto pred = tuning::predictWithNotches(*frf, form, added, o.notch.execRateHz);
-    if (!pred)
-        return reportError(cmd, pred.error());
     if (!o.outFrf.empty()) {
         auto out = pred->measuredAfter;
         out.metadata["predicted_with_notches"] = std::to_string(added.size());
@@ -136,7 +133,7 @@ int runNotch(NotchCliOptions o)
                                  {"width_Hz", existing[k].widthHz},
                                  {"depth", existing[k].depth}});
     j["notches"] = nlohmann::json::array();
-    for (const auto& n : proposal->notches)
+    for (const auto& n : analysis->notches)
         j["notches"].push_back({{"slot", n.slot},
                                 {"center_Hz", n.spec.centerHz},
                                 {"width_Hz", n.spec.widthHz},

@@ -11,6 +11,7 @@
 #include "core/tuning/TwoInertia.h"
 #include "core/tuning/TwoInertiaFilter.h"
 #include "core/tuning/VelocityLoop.h"
+#include "core/tuning/VelocityLoopDesign.h"
 
 #include <cmath>
 #include <complex>
@@ -32,8 +33,8 @@ struct TwoInertiaOptions {
     tuning::TwoInertiaFitOptions fit;
     std::string mode = "semi";
     double tauS = 0.0;
-    double bandwidthHz = 24.0;
-    double staticGain = 10.0;
+    double bandwidthHz = tuning::kDefaultVelocityBandwidthHz;
+    double staticGain = tuning::kDefaultVelocityGainFactor;
     tuning::MotionProfile profile;
     std::vector<double> loopPi;      ///< KP,KI: the FRF is T = PC/(1+PC) of this velocity PI; fit P
     double loopPeriodS = 250e-6;     ///< velocity-loop period of C(z)
@@ -106,15 +107,16 @@ int runTwoInertia(const TwoInertiaOptions& o)
     }
     const auto& p = fit->params;
     const auto mode = o.mode == "full" ? tuning::SuppressionMode::Full : tuning::SuppressionMode::Semi;
-    const auto filter = tuning::suppressionFilterFromModel(p, mode, o.tauS);
-    const auto pi = tuning::velocityPiFromInertia(p.jmKgm2, kTwoPi * o.bandwidthHz, o.staticGain);
+    const auto proposal = tuning::twoInertiaProposal(p, mode, o.tauS, o.bandwidthHz, o.staticGain);
+    const auto& filter = proposal.filter;
+    const auto& pi = proposal.pi;
     const auto fbMode = mode == tuning::SuppressionMode::Full ? tuning::FeedbackMode::Full : tuning::FeedbackMode::Semi;
-    const auto posPlain = tuning::positionGain(p, pi, fbMode, std::nullopt, false, 6.0);
+    const auto posPlain = tuning::positionGain(p, pi, fbMode, std::nullopt, false, tuning::kPositionGainMarginDb);
     std::optional<tuning::SuppressionFilter> inLoop;
     if (mode == tuning::SuppressionMode::Full) {
         inLoop = filter;
     }
-    const auto posFilter = tuning::positionGain(p, pi, fbMode, inLoop, false, 6.0);
+    const auto posFilter = tuning::positionGain(p, pi, fbMode, inLoop, false, tuning::kPositionGainMarginDb);
     const auto semiFilter = tuning::suppressionFilterFromModel(p, tuning::SuppressionMode::Semi, 0.0);
     const auto loadError = tuning::predictLoadError(p, semiFilter, o.profile);
 
@@ -149,6 +151,11 @@ int runTwoInertia(const TwoInertiaOptions& o)
                      mode == tuning::SuppressionMode::Full ? posFilter.recommendedPerS : posPlain.recommendedPerS,
                      noLimit);
     j["position_gain"] = pg;
+    // What the two-inertia wizard writes to the drive (keys as `params` names them).
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& [key, v] : proposal.parameters)
+        params[key] = v;
+    j["parameters"] = params;
     j["load_error"] = {{"profile", {{"vmax_rad_s", o.profile.vMax}, {"accel_rad_s2", o.profile.aMax},
                                     {"jerk_rad_s3", o.profile.jerk}}},
                        {"without_filter_rad", loadError.maxErrorWithoutFilter},

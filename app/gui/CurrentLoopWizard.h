@@ -17,11 +17,12 @@
 #include "core/model/Capture.h"
 #include "core/tuning/CurrentLoop.h"
 #include "core/tuning/CurrentStep.h"
+#include "core/tuning/VelocityLoopDesign.h"
 
 #include <QWizardPage>
 
-#include <numbers>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -43,8 +44,8 @@ class ApplyPage;
 class SafetyPage;
 class TestRunPage;
 
-/// Line-to-line rms volts per 1000 min⁻¹ from the q-axis peak constant [V·s/rad] (amplitude-invariant dq).
-inline constexpr double kKeToVPerKrpm = 1.2247448713915890 * 1000.0 * 2.0 * std::numbers::pi / 60.0;
+/// Line-to-line rms volts per 1000 min⁻¹ from the q-axis peak constant [V·s/rad] (core/tuning/VelocityLoopDesign.h).
+using tuning::kKeToVPerKrpm;
 
 struct CurrentLoopData {
     QString axis;

@@ -157,9 +157,10 @@ void CurrentLoopMotorPage::readFromDrive()
     if (m_axis->currentText().isEmpty() || !m_ctx.drive().isConnected())
         return;
     m_read->setEnabled(false);
-    auto* req = m_ctx.drive().readParameters(m_axis->currentText(),
-                                             {"motor.max_current", "drive.max_voltage", "motor.rated_current",
-                                              "motor.torque_constant", "current.period", "current.dead_time"});
+    QStringList keys;
+    for (const auto& k : tuning::motorParameterKeys())
+        keys << QString::fromStdString(k);
+    auto* req = m_ctx.drive().readParameters(m_axis->currentText(), keys);
     m_readRequest = req->id();
     connect(req, &DriveRequest::finished, this, [this](const DriveReply& r) {
         if (r.id != m_readRequest)
@@ -172,16 +173,8 @@ void CurrentLoopMotorPage::readFromDrive()
             return;
         }
         auto get = [&](const char* k, double fallback) { return parameterOr(r.values, k, fallback); };
-        tuning::MotorData m = motorFromFields();
-        // The drive offers the ratings; R_a, L_q and δ stay as entered (motor data sheet).
-        m.maxCurrentA = get("motor.max_current", m.maxCurrentA);
-        m.maxVoltageV = get("drive.max_voltage", m.maxVoltageV);
-        m.ratedCurrentA = get("motor.rated_current", m.ratedCurrentA);
-        // Amplitude-invariant dq: k_t = 1.5·k_e (k_e the q-axis back-EMF constant in V·s/rad, peak).
-        const double kt = get("motor.torque_constant", 0.0);
-        if (kt > 0.0)
-            m.backEmfVPerKrpm = kt / 1.5 * kKeToVPerKrpm;
-        setMotor(m);
+        // The drive offers the ratings and k_t (k_e = k_t/1.5); R_a, L_q and δ stay as entered (motor data sheet).
+        setMotor(tuning::motorFromDriveParameters(r.values, motorFromFields()));
         m_d.drivePeriodS = get("current.period", m_d.drivePeriodS);
         m_d.driveDeadTimeS = get("current.dead_time", m_d.driveDeadTimeS);
         // The paper designs with τ = the current-control period.

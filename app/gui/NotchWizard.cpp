@@ -11,6 +11,7 @@
 #include "core/dsp/LoopMarginsJson.h"
 #include "core/model/ResultJson.h"
 #include "core/store/FrfCapture.h"
+#include "core/tuning/VelocityLoopDesign.h"
 
 #include <QBoxLayout>
 #include <QCheckBox>
@@ -174,16 +175,13 @@ void NotchWizard::readTraceRate(const QString& axis)
 
 tuning::LoopForm NotchWizard::loopForm() const
 {
-    tuning::LoopForm f;
-    const auto it = m_measured.metadata.find("measurement");
-    const std::string m = it == m_measured.metadata.end() ? std::string("complementary") : it->second;
-    if (m == "open")
-        f.open = true;
-    else if (m == "neg-complementary")
-        f.closed = dsp::LoopMeasurement::NegComplementary;
-    else if (m == "sensitivity")
-        f.closed = dsp::LoopMeasurement::Sensitivity;
-    return f;
+    // One parser of loop measurements (core/tuning/VelocityLoopDesign.h); no key: the drives' complementary FRF.
+    // A value that is not a loop form (plant, unknown) is analysed as complementary, as before.
+    const auto kind = tuning::loopMeasurementOf(m_measured, tuning::LoopMeasurementKind::Complementary);
+    if (!kind)
+        return {};
+    auto f = tuning::loopFormOf(*kind);
+    return f ? *f : tuning::LoopForm{};
 }
 
 device::TestRequest NotchWizard::frfRequest() const

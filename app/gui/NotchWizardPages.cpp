@@ -122,34 +122,17 @@ NotchAnalysis analyseNotchFrf(const dsp::FrequencyResponse& measured, const tuni
                               const tuning::ResonanceOptions& resonanceOptions, const tuning::NotchOptions& notchOptions,
                               const std::map<int, dsp::NotchSpec>& existing)
 {
+    // The analysis is core's (tuning::analyseNotches); here only the rules are put into words.
     NotchAnalysis a;
-    const auto open = tuning::openLoopOf(measured, form);
-    auto res = tuning::findResonances(open, resonanceOptions);
-    if (!res) {
-        a.error = QString::fromStdString(res.error().detail);
+    auto core = tuning::analyseNotches(measured, form, resonanceOptions, notchOptions, existing);
+    if (!core) {
+        a.error = QString::fromStdString(core.error().detail);
         return a;
     }
-    a.resonances = *res;
-    std::vector<dsp::NotchSpec> packed;
-    for (const auto& [slot, n] : existing)
-        packed.push_back(n);
-    auto prop = tuning::proposeNotches(a.resonances, packed, notchOptions);
-    if (!prop) {
-        a.error = QString::fromStdString(prop.error().detail);
-        return a;
-    }
-    a.proposal = *prop;
-    std::vector<int> freeSlots;
-    for (int s = 1; s <= notchOptions.slotCount; ++s)
-        if (!existing.count(s))
-            freeSlots.push_back(s);
-    const int k = static_cast<int>(existing.size());
-    std::vector<dsp::NotchSpec> added;
-    for (auto n : a.proposal.notches) {
-        const int idx = n.slot - k - 1;
-        if (idx < 0 || idx >= static_cast<int>(freeSlots.size()))
-            continue;
-        n.slot = freeSlots[static_cast<std::size_t>(idx)];
+    a.resonances = core->resonances;
+    a.proposal = core->proposal;
+    a.prediction = core->prediction;
+    for (const auto& n : core->notches) {
         const tuning::Resonance* r = nullptr;
         for (const auto& c : a.resonances)
             if (std::abs(c.freqHz - n.resonanceHz) < 1e-9)
@@ -160,15 +143,7 @@ NotchAnalysis analyseNotchFrf(const dsp::FrequencyResponse& measured, const tuni
         row.resonanceHz = n.resonanceHz;
         row.rule = r ? ruleText(n, *r, notchOptions) : QString();
         a.rows.push_back(row);
-        added.push_back(n.spec);
     }
-    std::sort(a.rows.begin(), a.rows.end(), [](const NotchRow& x, const NotchRow& y) { return x.slot < y.slot; });
-    auto pred = tuning::predictWithNotches(measured, form, added, notchOptions.execRateHz);
-    if (!pred) {
-        a.error = QString::fromStdString(pred.error().detail);
-        return a;
-    }
-    a.prediction = *pred;
     return a;
 }
 

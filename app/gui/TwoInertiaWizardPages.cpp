@@ -8,6 +8,7 @@
 #include "app/gui/WizardPages.h"
 #include "core/model/Constants.h"
 #include "core/store/FrfCapture.h"
+#include "core/tuning/VelocityLoopDesign.h"
 #include "widgets/BodePlot.h"
 #include "widgets/CurvePlot.h"
 
@@ -277,16 +278,15 @@ void TwoInertiaFitPage::analyse()
     });
     watcher->setFuture(QtConcurrent::run([measured, pi, tv, h, opts]() {
         Out out;
-        dsp::FrequencyResponse plant = measured;
-        auto it = measured.metadata.find("measurement");
-        if (it != measured.metadata.end() && it->second == "complementary") {
-            auto p = tuning::plantFromVelocityLoop(measured, pi, tv, h);
-            if (!p) {
-                out.error = qs(p.error().detail);
-                return out;
-            }
-            plant = std::move(p).value();
+        // One parser of loop measurements (core/tuning/VelocityLoopDesign.h): no key is a plant FRF.
+        auto kind = tuning::loopMeasurementOf(measured, tuning::LoopMeasurementKind::Plant);
+        auto p = kind ? tuning::plantFromMeasurement(measured, *kind, pi, tv, h)
+                      : Result<dsp::FrequencyResponse>(kind.error());
+        if (!p) {
+            out.error = qs(p.error().detail);
+            return out;
         }
+        const dsp::FrequencyResponse plant = std::move(p).value();
         out.plant = plant;
         auto fit = tuning::fitTwoInertia(plant, opts);
         if (!fit)
@@ -440,7 +440,9 @@ void TwoInertiaFilterPage::update()
     const auto& p = m_d.fit->params;
     const auto mode = m_mode->currentIndex() == 1 ? tuning::SuppressionMode::Full : tuning::SuppressionMode::Semi;
     m_d.tauS = m_tau->value() * 1e-3;
-    m_d.filter = tuning::suppressionFilterFromModel(p, mode, m_d.tauS);
+    // The proposal is core's (tuning::twoInertiaProposal): filter, thesis PI, feedforward.
+    const auto proposal = tuning::twoInertiaProposal(p, mode, m_d.tauS);
+    m_d.filter = proposal.filter;
     m_d.profile.vMax = m_vmax->value() * kTwoPi;
     m_d.profile.aMax = m_accel->value() * kTwoPi;
     m_d.profile.jerk = m_jerk->value() * kTwoPi;
@@ -459,19 +461,8 @@ void TwoInertiaFilterPage::update()
     m_plot->addCurve(tr("without filter"), m_d.loadError.tS, a, QColor(200, 60, 0));
     m_plot->addCurve(tr("with F_m"), m_d.loadError.tS, b, QColor(0, 150, 60));
     m_plot->rescale();
-    m_d.proposedPi = tuning::velocityPiFromInertia(p.jmKgm2, kTwoPi * 24.0, 10.0);
-    // The drive's filter (suppression.*) and the loop structure TI-3 needs for y_m ≈ y_m*: velocity
-    // feedforward and the torque feedforward J·a* with J = J_m + J_L of the fit (spec §4.10).
-    m_d.proposal = {{"velocity.kp", m_d.proposedPi.kpNmsPerRad},
-                    {"velocity.ki", m_d.proposedPi.kiNmPerRad},
-                    {"suppression.mode", mode == tuning::SuppressionMode::Full ? 2.0 : 1.0},
-                    {"suppression.f0", m_d.filter.f0Hz},
-                    {"suppression.zeta", m_d.filter.zeta},
-                    {"position.velocity_ff", 1.0},
-                    {"position.torque_ff", 1.0},
-                    {"velocity.inertia", p.jmKgm2 + p.jlKgm2}};
-    if (mode == tuning::SuppressionMode::Full)
-        m_d.proposal["suppression.tau"] = m_d.filter.tauS;
+    m_d.proposedPi = proposal.pi;
+    m_d.proposal = proposal.parameters;
     m_table->setRowCount(0);
     addRow(m_table, {tr("Filter frequency f₀"), tr("%1 Hz").arg(m_d.filter.f0Hz, 0, 'f', 3)});
     addRow(m_table, {tr("Filter damping ζ"), QString::number(m_d.filter.zeta, 'f', 4)});

@@ -12,6 +12,7 @@
 #include "core/dsp/LoopMarginsJson.h"
 #include "core/model/ResultJson.h"
 #include "core/store/FrfCapture.h"
+#include "core/tuning/VelocityLoopDesignJson.h"
 
 #include <QLabel>
 #include <QVBoxLayout>
@@ -27,18 +28,6 @@ namespace {
 const WizardRegistrar kRegistrar{
     "velocity-loop", QT_TRANSLATE_NOOP("Wizards", "Velocity and position loop…"), 40,
     [](AppContext& ctx, QWidget* parent) -> QWizard* { return new VelocityLoopWizard(ctx, parent); }, false};
-
-nlohmann::json marginsJson(const tuning::LoopMargins& m)
-{
-    // Not defined: left out and named (docs/formats.md "Undefined values", never null).
-    nlohmann::json j = nlohmann::json::object();
-    model::putNumber(j, "crossover_Hz", m.crossoverHz, dsp::kNoGainCrossover);
-    model::putNumber(j, "phase_margin_deg", m.phaseMarginDeg, dsp::kNoGainCrossover);
-    model::putNumber(j, "gain_margin_dB", m.gainMarginDb, dsp::kNoPhaseCrossover);
-    model::putNumber(j, "phase_crossover_Hz", m.phaseCrossoverHz, dsp::kNoPhaseCrossover);
-    model::putNumber(j, "peak_sensitivity_dB", m.peakSensitivityDb, dsp::kNoValidPoint);
-    return j;
-}
 
 } // namespace
 
@@ -200,15 +189,8 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
         }
         rec.captures.push_back({"predicted_open_loop", store::frfAsCapture(l)});
         rec.captures.push_back({"predicted", store::frfAsCapture(t)});
-        nlohmann::json proposal{{"velocity_kp_Nms_per_rad", d.proposed.kpNmsPerRad},
-                                {"velocity_ki_Nm_per_rad", d.proposed.kiNmPerRad},
-                                {"rule", d.rule.toStdString()},
-                                {"margins_before", marginsJson(d.marginsBefore)},
-                                {"margins", marginsJson(d.marginsAfter)},
-                                {"position_gain_limit_Hz", d.position.limitFrequencyHz}};
-        const char* noLimit = "no stability limit of the position gain below 1e5 1/s";
-        model::putNumber(proposal, "position_gain_limit_per_s", d.position.limitPerS, noLimit);
-        model::putNumber(proposal, "position_gain_per_s", d.position.recommendedPerS, noLimit);
+        nlohmann::json proposal = d.design ? tuning::velocityLoopProposalJson(*d.design) : nlohmann::json::object();
+        proposal["rule"] = d.rule.toStdString(); // as the page showed it (translated)
         rec.results.push_back({"proposal", proposal, {}});
         if (d.predictedAfter)
             rec.results.push_back(
@@ -218,9 +200,8 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
                   {"after_rad_s", d.predictedAfter->motorVelRadS},
                   {"before_rad_s", d.predictedBefore ? d.predictedBefore->motorVelRadS : std::vector<double>{}}}});
         if (!m_ctx.machine().isEmpty() && !rec.info.axis.empty()) {
-            model::ParameterValues v{{"velocity.kp", d.proposed.kpNmsPerRad}, {"velocity.ki", d.proposed.kiNmPerRad}};
-            if (std::isfinite(d.position.recommendedPerS) && d.position.recommendedPerS > 0.0)
-                v["position.kp"] = d.position.recommendedPerS;
+            const model::ParameterValues v =
+                d.design ? tuning::velocityLoopParameters(*d.design, true) : model::ParameterValues{};
             rec.parameterSets.push_back(
                 {0, rec.info.axis, store::ParameterSource::Proposed, {}, "velocity-loop wizard", v});
         }

@@ -13,6 +13,7 @@
 #include "core/model/Capture.h"
 #include "core/tuning/TwoInertia.h"
 #include "core/tuning/VelocityLoop.h"
+#include "core/tuning/VelocityLoopDesign.h"
 #include "core/tuning/VelocityStep.h"
 
 #include <QWizardPage>
@@ -68,7 +69,8 @@ struct VelocityLoopData {
     // Step test.
     double stepRadS = 10.0, stepDurationS = 0.2;
     std::shared_ptr<const model::Capture> stepBefore, stepAfter;
-    // Proposal and prediction.
+    // Proposal and prediction (core's design; the fields below are its copies for the pages and the session).
+    std::optional<tuning::VelocityLoopDesign> design;
     tuning::VelocityPi proposed;
     QString rule;
     QString error;

@@ -9,7 +9,7 @@
 #include "app/gui/WizardPages.h"
 #include "core/model/Constants.h"
 #include "core/store/FrfCapture.h"
-#include "core/tuning/TwoInertiaPrediction.h"
+#include "core/tuning/VelocityLoopDesign.h"
 #include "widgets/BodePlot.h"
 #include "widgets/CurvePlot.h"
 
@@ -37,9 +37,6 @@ namespace gui {
 
 namespace {
 
-using model::kTwoPi;
-constexpr double kPositionGainMarginDb = 6.0;
-
 void addRow(QTableWidget* t, const QString& a, const QString& b, const QString& c)
 {
     const int r = t->rowCount();
@@ -49,70 +46,10 @@ void addRow(QTableWidget* t, const QString& a, const QString& b, const QString& 
     t->setItem(r, 2, new QTableWidgetItem(c));
 }
 
-/// The model used for the prediction: the two-inertia model of a session, else a rigid J_m; both with
-/// a delay of 1.5 velocity periods (sample and hold) for the margins and the position-gain limit.
-tuning::TwoInertiaParams predictionModel(const VelocityLoopData& d, bool& rigid)
+QString overshootText(const tuning::NormalisedStep& s)
 {
-    rigid = !d.model;
-    if (d.model) {
-        // The fitted delay is a measurement delay (§2.7); the loop's own is the sample and hold.
-        tuning::TwoInertiaParams p = *d.model;
-        p.delayS = 1.5 * d.velocityPeriodS;
-        return p;
-    }
-    // J_L tiny and K = C = 0: P_m = 1/(J_m s) (motorVelocityResponse), rigid in predictVelocityStep.
-    return {d.jmKgm2, 1e-9 * d.jmKgm2, 0.0, 0.0, 1.5 * d.velocityPeriodS};
-}
-
-/// Velocity trace of a step test: time from the step command, normalised to the step.
-struct StepTrace {
-    std::vector<double> tMs, y;
-};
-
-StepTrace normalisedStep(const model::Capture& cap, double step)
-{
-    StepTrace out;
-    const auto* t = cap.channel("t_s");
-    const auto* cmd = cap.channel("velocity_cmd_rad_s");
-    const auto* v = cap.channel("motor_vel_rad_s");
-    if (!t || !cmd || !v || step == 0.0)
-        return out;
-    std::size_t k0 = 0;
-    while (k0 < cmd->data.size() && std::abs(cmd->data[k0]) < 0.5 * std::abs(step))
-        ++k0;
-    if (k0 >= t->data.size())
-        return out;
-    for (std::size_t k = k0 > 0 ? k0 - 1 : 0; k < t->data.size(); ++k) {
-        out.tMs.push_back((t->data[k] - t->data[k0]) * 1e3);
-        out.y.push_back(v->data[k] / step);
-    }
-    return out;
-}
-
-StepTrace normalisedPrediction(const tuning::VelocityStepPrediction& p, double step, double stepTimeS)
-{
-    StepTrace out;
-    for (std::size_t k = 0; k < p.tS.size(); ++k) {
-        out.tMs.push_back((p.tS[k] - stepTimeS) * 1e3);
-        out.y.push_back(p.motorVelRadS[k] / step);
-    }
-    return out;
-}
-
-/// Overshoot [%] of a normalised step (after t = 0).
-double overshootPct(const StepTrace& s)
-{
-    double m = 0.0;
-    for (std::size_t k = 0; k < s.y.size(); ++k)
-        if (s.tMs[k] >= 0.0)
-            m = std::max(m, s.y[k]);
-    return std::max(0.0, m - 1.0) * 100.0;
-}
-
-QString overshootText(const StepTrace& s)
-{
-    return s.y.empty() ? QCoreApplication::translate("VelocityLoopWizard", "–")
-                       : QString::number(overshootPct(s), 'f', 1) + " %";
+    const auto pct = tuning::stepOvershootPct(s);
+    return pct ? QString::number(*pct, 'f', 1) + " %" : QCoreApplication::translate("VelocityLoopWizard", "–");
 }
 
 } // namespace
@@ -385,41 +322,32 @@ void VelocityLoopDesignPage::analyse()
     m_bode->clearResponses();
     m_step->clear();
     m_table->setRowCount(0);
-    bool rigid = true;
-    tuning::TwoInertiaParams model = predictionModel(d, rigid);
-    // The plant: from the measured response (closed loop → plant with the loop's PI), else the model.
-    d.plant.reset();
-    if (d.method == VelocityLoopData::Method::Frf && d.measured) {
-        auto it = d.measured->metadata.find("measurement");
-        if (it != d.measured->metadata.end() && it->second == "complementary") {
-            auto p = tuning::plantFromVelocityLoop(*d.measured, d.before, d.velocityPeriodS, d.currentPeriodS);
-            if (p)
-                d.plant = std::move(p).value();
-            else
-                d.error = qs(p.error().detail);
-        } else {
-            d.plant = d.measured;
-        }
-    }
-    // The proposal.
-    if (d.method == VelocityLoopData::Method::Inertia) {
-        d.proposed = tuning::velocityPiFromInertia(d.jmKgm2, kTwoPi * d.omegaLHz, d.k);
-        d.rule = tr("Chapter 5 rule (corrected 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m², K_I = k·ω_l²·J_m.")
-                     .arg(d.k, 0, 'g', 4)
-                     .arg(d.omegaLHz, 0, 'g', 4)
-                     .arg(d.jmKgm2, 0, 'g', 5);
-    } else if (d.plant) {
-        auto pi = tuning::velocityPiFromFrf(*d.plant, d.crossoverHz, d.phaseMarginDeg);
-        if (pi) {
-            d.proposed = *pi;
-            d.rule = tr("Margins on the measured plant: |C·P| = 1 and arg(C·P) = −180° + %1° at %2 Hz.")
-                         .arg(d.phaseMarginDeg, 0, 'f', 1)
-                         .arg(d.crossoverHz, 0, 'f', 1);
-        } else {
-            d.error = qs(pi.error().detail);
-        }
-    } else if (d.error.isEmpty()) {
+    // The design is core's (tuning::designVelocityLoop); the page shows it and says which rule chose it.
+    d.design.reset();
+    if (d.method == VelocityLoopData::Method::Frf && !d.measured)
         d.error = tr("No measured response.");
+    if (d.error.isEmpty()) {
+        tuning::VelocityLoopRequest req;
+        req.method = d.method == VelocityLoopData::Method::Frf ? tuning::VelocityLoopRequest::Method::Frf
+                                                               : tuning::VelocityLoopRequest::Method::Inertia;
+        req.jmKgm2 = d.jmKgm2;
+        req.omegaLHz = d.omegaLHz;
+        req.k = d.k;
+        req.model = d.model;
+        req.crossoverHz = d.crossoverHz;
+        req.phaseMarginDeg = d.phaseMarginDeg;
+        req.measured = d.measured;
+        req.running = d.before;
+        req.positionKpRunning = d.positionKpBefore;
+        req.velocityPeriodS = d.velocityPeriodS;
+        req.currentPeriodS = d.currentPeriodS;
+        req.stepRadS = d.stepRadS;
+        req.stepDurationS = d.stepDurationS;
+        auto design = tuning::designVelocityLoop(req);
+        if (design)
+            d.design = std::move(design).value();
+        else
+            d.error = qs(design.error().detail);
     }
     if (!d.error.isEmpty()) {
         m_status->setText(tr("No proposal: %1").arg(d.error));
@@ -427,67 +355,51 @@ void VelocityLoopDesignPage::analyse()
         emit completeChanged();
         return;
     }
-    // Frequency grid: the plant's, else log-spaced 1 Hz … 2 kHz on the model.
-    d.fHz.clear();
-    std::vector<std::complex<double>> plant;
-    if (d.plant) {
-        for (std::size_t i = 0; i < d.plant->size(); ++i)
-            if (d.plant->valid[i]) {
-                d.fHz.push_back(d.plant->freqHz[i]);
-                plant.push_back(d.plant->h[i]);
-            }
-    } else {
-        for (int i = 0; i < 300; ++i) {
-            d.fHz.push_back(std::pow(10.0, 0.0 + 3.3 * i / 299.0));
-            plant.push_back(tuning::motorVelocityResponse(model, d.fHz.back()));
-        }
-    }
-    std::vector<std::complex<double>> lBefore(d.fHz.size());
-    d.openLoop.assign(d.fHz.size(), {});
-    d.closedLoop.assign(d.fHz.size(), {});
+    const auto& g = *d.design;
+    d.proposed = g.proposed;
+    d.plant = g.plant;
+    d.position = g.position;
+    d.predictedBefore = g.predictedBefore;
+    d.predictedAfter = g.predictedAfter;
+    d.marginsBefore = g.marginsBefore;
+    d.marginsAfter = g.marginsAfter;
+    d.fHz = g.fHz;
+    d.openLoop = g.openLoop;
+    d.closedLoop = g.closedLoop;
+    if (d.method == VelocityLoopData::Method::Inertia)
+        d.rule = tr("Chapter 5 rule (corrected 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m², K_I = k·ω_l²·J_m.")
+                     .arg(d.k, 0, 'g', 4)
+                     .arg(d.omegaLHz, 0, 'g', 4)
+                     .arg(d.jmKgm2, 0, 'g', 5);
+    else
+        d.rule = tr("Margins on the measured plant: |C·P| = 1 and arg(C·P) = −180° + %1° at %2 Hz.")
+                     .arg(d.phaseMarginDeg, 0, 'f', 1)
+                     .arg(d.crossoverHz, 0, 'f', 1);
     dsp::FrequencyResponse lf, tf, pf;
-    for (std::size_t i = 0; i < d.fHz.size(); ++i) {
-        lBefore[i] = tuning::piResponse(d.before, d.fHz[i]) * plant[i];
-        d.openLoop[i] = tuning::piResponse(d.proposed, d.fHz[i]) * plant[i];
-        d.closedLoop[i] = d.openLoop[i] / (1.0 + d.openLoop[i]);
-        lf.push(d.fHz[i], d.openLoop[i], std::nan(""), true);
-        tf.push(d.fHz[i], d.closedLoop[i], std::nan(""), true);
-        pf.push(d.fHz[i], plant[i], std::nan(""), true);
+    for (std::size_t i = 0; i < g.fHz.size(); ++i) {
+        lf.push(g.fHz[i], g.openLoop[i], std::nan(""), true);
+        tf.push(g.fHz[i], g.closedLoop[i], std::nan(""), true);
+        pf.push(g.fHz[i], g.plantH[i], std::nan(""), true);
     }
-    d.marginsBefore = tuning::loopMargins(d.fHz, lBefore);
-    d.marginsAfter = tuning::loopMargins(d.fHz, d.openLoop);
     m_bode->addResponse(lf, tr("Open loop L (proposed)"), QColor(0, 90, 180));
     m_bode->addResponse(tf, tr("Closed loop T (proposed)"), QColor(200, 90, 0));
-    m_bode->addResponse(pf, d.plant ? tr("Plant P (measured)") : tr("Plant P (model)"), QColor(120, 120, 120),
+    m_bode->addResponse(pf, g.plant ? tr("Plant P (measured)") : tr("Plant P (model)"), QColor(120, 120, 120),
                         Qt::DashLine);
     if (d.marginsAfter.crossoverHz > 0.0)
         m_bode->addMarker(d.marginsAfter.crossoverHz, widgets::BodePlot::MarkerKind::Other,
                           tr("crossover %1 Hz").arg(d.marginsAfter.crossoverHz, 0, 'f', 1));
     m_bode->rescale();
-    // Position gain on the model (with the proposed PI).
-    d.position =
-        tuning::positionGain(model, d.proposed, tuning::FeedbackMode::Semi, std::nullopt, true, kPositionGainMarginDb);
-    // Step predictions before and after, on the model.
-    const double t0 = 0.01 * d.stepDurationS;
-    auto pb = tuning::predictVelocityStep(model, d.before, d.velocityPeriodS, d.stepRadS, t0, d.stepDurationS);
-    auto pa = tuning::predictVelocityStep(model, d.proposed, d.velocityPeriodS, d.stepRadS, t0, d.stepDurationS);
-    d.predictedBefore.reset();
-    d.predictedAfter.reset();
-    if (pb)
-        d.predictedBefore = *pb;
-    if (pa)
-        d.predictedAfter = *pa;
-    StepTrace before, sb, sa;
+    tuning::NormalisedStep before, sb, sa;
     if (d.stepBefore) {
-        before = normalisedStep(*d.stepBefore, d.stepRadS);
+        before = tuning::normalisedStep(*d.stepBefore, d.stepRadS);
         m_step->addCurve(tr("Measured before"), before.tMs, before.y, QColor(90, 90, 90));
     }
     if (d.predictedBefore) {
-        sb = normalisedPrediction(*d.predictedBefore, d.stepRadS, t0);
+        sb = tuning::normalisedStep(*d.predictedBefore, d.stepRadS, g.stepTimeS);
         m_step->addCurve(tr("Predicted before"), sb.tMs, sb.y, QColor(90, 90, 90), Qt::DashLine);
     }
     if (d.predictedAfter) {
-        sa = normalisedPrediction(*d.predictedAfter, d.stepRadS, t0);
+        sa = tuning::normalisedStep(*d.predictedAfter, d.stepRadS, g.stepTimeS);
         m_step->addCurve(tr("Predicted with the proposal"), sa.tMs, sa.y, QColor(0, 90, 180));
     }
     m_step->rescale();
@@ -517,8 +429,8 @@ void VelocityLoopDesignPage::analyse()
     QString status =
         d.rule + "\n" +
         tr("Position gain: recommended min(limit·10^(−%1/20), crossover·2π/5); %2.")
-            .arg(kPositionGainMarginDb, 0, 'f', 0)
-            .arg(rigid
+            .arg(tuning::kPositionGainMarginDb, 0, 'f', 0)
+            .arg(g.rigidModel
                      ? tr("rigid model J_m with a delay of 1.5 velocity periods — fit a two-inertia "
                           "model for the resonance")
                      : tr("two-inertia model of session %1 with a delay of 1.5 velocity periods").arg(d.modelSession));
@@ -535,9 +447,9 @@ void VelocityLoopDesignPage::analyse()
 void VelocityLoopDesignPage::updateProposal()
 {
     auto& d = m_d;
-    model::ParameterValues v{{"velocity.kp", d.proposed.kpNmsPerRad}, {"velocity.ki", d.proposed.kiNmPerRad}};
-    if (d.applyPositionGain && std::isfinite(d.position.recommendedPerS) && d.position.recommendedPerS > 0.0)
-        v["position.kp"] = d.position.recommendedPerS;
+    if (!d.design)
+        return;
+    const model::ParameterValues v = tuning::velocityLoopParameters(*d.design, d.applyPositionGain);
     if (m_ctx.drive().isConnected() && !d.axis.isEmpty()) {
         m_apply->setProposal(d.axis, v);
         m_ctx.setProposed(d.axis, v);
@@ -581,17 +493,17 @@ void VelocityLoopVerifyPage::initializePage()
     if (m_run->succeeded() && !m_run->replies().empty())
         m_d.stepAfter = m_run->replies().front().capture;
     const double t0 = 0.01 * m_d.stepDurationS;
-    StepTrace before, after, pred;
+    tuning::NormalisedStep before, after, pred;
     if (m_d.stepBefore) {
-        before = normalisedStep(*m_d.stepBefore, m_d.stepRadS);
+        before = tuning::normalisedStep(*m_d.stepBefore, m_d.stepRadS);
         m_plot->addCurve(tr("Measured before"), before.tMs, before.y, QColor(120, 120, 120));
     }
     if (m_d.stepAfter) {
-        after = normalisedStep(*m_d.stepAfter, m_d.stepRadS);
+        after = tuning::normalisedStep(*m_d.stepAfter, m_d.stepRadS);
         m_plot->addCurve(tr("Measured after"), after.tMs, after.y, QColor(200, 90, 0));
     }
     if (m_d.predictedAfter) {
-        pred = normalisedPrediction(*m_d.predictedAfter, m_d.stepRadS, t0);
+        pred = tuning::normalisedStep(*m_d.predictedAfter, m_d.stepRadS, t0);
         m_plot->addCurve(tr("Predicted after"), pred.tMs, pred.y, QColor(0, 90, 180), Qt::DashLine);
     }
     m_plot->rescale();

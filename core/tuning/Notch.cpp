@@ -151,4 +151,51 @@ Result<NotchPrediction> predictWithNotches(const dsp::FrequencyResponse& measure
     return p;
 }
 
+std::vector<ProposedNotch> allocateNotchSlots(const NotchProposal& proposal,
+                                              const std::map<int, dsp::NotchSpec>& existing, int slotCount)
+{
+    std::vector<int> freeSlots;
+    for (int s = 1; s <= slotCount; ++s)
+        if (!existing.count(s))
+            freeSlots.push_back(s);
+    const int k = static_cast<int>(existing.size());
+    std::vector<ProposedNotch> out;
+    for (auto n : proposal.notches) {
+        const int idx = n.slot - k - 1;
+        if (idx < 0 || idx >= static_cast<int>(freeSlots.size()))
+            continue;
+        n.slot = freeSlots[static_cast<std::size_t>(idx)];
+        out.push_back(n);
+    }
+    std::sort(out.begin(), out.end(), [](const ProposedNotch& a, const ProposedNotch& b) { return a.slot < b.slot; });
+    return out;
+}
+
+Result<NotchAnalysis> analyseNotches(const dsp::FrequencyResponse& measured, const LoopForm& form,
+                                     const ResonanceOptions& resonanceOptions, const NotchOptions& notchOptions,
+                                     const std::map<int, dsp::NotchSpec>& existing)
+{
+    NotchAnalysis a;
+    auto res = findResonances(openLoopOf(measured, form), resonanceOptions);
+    if (!res)
+        return res.error();
+    a.resonances = std::move(res).value();
+    std::vector<dsp::NotchSpec> packed;
+    for (const auto& [slot, n] : existing)
+        packed.push_back(n);
+    auto prop = proposeNotches(a.resonances, packed, notchOptions);
+    if (!prop)
+        return prop.error();
+    a.proposal = std::move(prop).value();
+    a.notches = allocateNotchSlots(a.proposal, existing, notchOptions.slotCount);
+    std::vector<dsp::NotchSpec> added;
+    for (const auto& n : a.notches)
+        added.push_back(n.spec);
+    auto pred = predictWithNotches(measured, form, added, notchOptions.execRateHz);
+    if (!pred)
+        return pred.error();
+    a.prediction = std::move(pred).value();
+    return a;
+}
+
 }  // namespace axistune::tuning

@@ -27,6 +27,7 @@
 #include "core/model/Result.h"
 #include "core/tuning/Resonance.h"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +72,12 @@ Status checkExistingNotch(const dsp::NotchSpec& n, double execRateHz, const std:
 Result<NotchProposal> proposeNotches(const std::vector<Resonance>& resonances, const std::vector<dsp::NotchSpec>& existing,
                                      const NotchOptions& options);
 
+/// The drive slots of a proposal: proposeNotches numbers the added notches k+1, k+2, … after the k existing ones;
+/// here they go to the drive's free slots (1..slotCount not in `existing`, increasing), and a notch beyond the
+/// free slots is left out. Sorted by slot.
+std::vector<ProposedNotch> allocateNotchSlots(const NotchProposal& proposal,
+                                              const std::map<int, dsp::NotchSpec>& existing, int slotCount);
+
 /// Drive width parameter whose digital −3 dB width is exactly `digitalWidthHz` (< execRateHz/2).
 double notchWidthParameter(double centerHz, double digitalWidthHz, double execRateHz);
 
@@ -90,5 +97,18 @@ struct NotchPrediction {
 /// The measured FRF with `notches` added in the torque-command path (run at execRateHz).
 Result<NotchPrediction> predictWithNotches(const dsp::FrequencyResponse& measured, const LoopForm& form,
                                            const std::vector<dsp::NotchSpec>& notches, double execRateHz);
+
+/// The whole notch analysis of one measured FRF (the notch wizard and `axistune-cli notch`): resonances on the open
+/// loop, the proposal, the notches on the drive's free slots, the prediction with them.
+struct NotchAnalysis {
+    std::vector<Resonance> resonances;
+    NotchProposal proposal;             ///< as proposeNotches numbers it (after the existing ones)
+    std::vector<ProposedNotch> notches; ///< on the drive's slots (allocateNotchSlots), increasing slot
+    NotchPrediction prediction;         ///< the measured FRF with the added notches
+};
+/// Errors: those of findResonances, proposeNotches (an existing notch the rate cannot run) and predictWithNotches.
+Result<NotchAnalysis> analyseNotches(const dsp::FrequencyResponse& measured, const LoopForm& form,
+                                     const ResonanceOptions& resonanceOptions, const NotchOptions& notchOptions,
+                                     const std::map<int, dsp::NotchSpec>& existing);
 
 }  // namespace axistune::tuning

@@ -43,6 +43,13 @@ Result<dsp::FrequencyResponse> plantFromVelocityLoop(const dsp::FrequencyRespons
             return st.error();
     }
     auto p = dsp::openLoopFromClosedLoop(corrected, dsp::LoopMeasurement::Complementary);
+    divideByVelocityPi(p, pi, velocityPeriodS);
+    p.metadata["loop"] = "plant-from-complementary";
+    return p;
+}
+
+void divideByVelocityPi(dsp::FrequencyResponse& p, const VelocityPi& pi, double velocityPeriodS)
+{
     for (std::size_t i = 0; i < p.size(); ++i) {
         const std::complex<double> zInv = std::polar(1.0, -kTwoPi * p.freqHz[i] * velocityPeriodS);
         const std::complex<double> c = pi.kpNmsPerRad + pi.kiNmPerRad * velocityPeriodS / (1.0 - zInv);
@@ -53,8 +60,6 @@ Result<dsp::FrequencyResponse> plantFromVelocityLoop(const dsp::FrequencyRespons
             p.h[i] /= c;
         }
     }
-    p.metadata["loop"] = "plant-from-complementary";
-    return p;
 }
 
 LoadErrorTraces loadErrorTraces(const TwoInertiaParams& p, const SuppressionFilter& f, const MotionProfile& prof,

@@ -25,6 +25,10 @@ namespace axistune::tuning {
 /// G = N/Σ_{m<N} e^{−jωmh}, N = T_v/h (dsp/InjectionHold.h). Points with T = 1 or C = 0 become invalid.
 /// BadInput: metadata measurement other than "complementary", gains negative or both 0, T_v ≤ 0,
 /// T_v not an integer multiple of h.
+/// P = L/C_d in place, C_d(z) = K_P + K_I·T_v/(1 − z⁻¹) of the running discrete PI, z = e^{jωT_v}; lines that are
+/// invalid or where C_d = 0 become invalid (h = 0).
+void divideByVelocityPi(dsp::FrequencyResponse& openLoop, const VelocityPi& pi, double velocityPeriodS);
+
 Result<dsp::FrequencyResponse> plantFromVelocityLoop(const dsp::FrequencyResponse& closedLoop, const VelocityPi& pi,
                                                      double velocityPeriodS, double currentPeriodS);
 

@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,36 @@ inline std::unique_ptr<device::SimulatedDrive> makeDrive(const std::string& pres
     EXPECT_TRUE(d.ok());
     return std::move(d).value();
 }
+
+/// Forwards every call of the seam to another drive; a test derives from it and overrides what it changes.
+class ForwardingDrive : public device::Drive {
+public:
+    explicit ForwardingDrive(device::Drive& inner) : m_inner(inner) {}
+    Result<device::DriveIdentity> identify() override { return m_inner.identify(); }
+    Result<std::vector<model::ParameterMeta>> parameterMetadata(const std::string& a) override
+    {
+        return m_inner.parameterMetadata(a);
+    }
+    Result<model::ParameterValues> readParameters(const std::string& a, std::span<const std::string> k) override
+    {
+        return m_inner.readParameters(a, k);
+    }
+    Status writeParameters(const std::string& a, const model::ParameterValues& v) override
+    {
+        return m_inner.writeParameters(a, v);
+    }
+    Status startTest(const device::TestRequest& r) override { return m_inner.startTest(r); }
+    Result<device::TestStatus> pollTest() override { return m_inner.pollTest(); }
+    Result<model::Capture> readTrace() override { return m_inner.readTrace(); }
+    Status abortTest() override { return m_inner.abortTest(); }
+    Result<device::FrfMeasurement> readFrequencyResponse() override { return m_inner.readFrequencyResponse(); }
+    Result<device::DriveCapabilities> capabilities(const std::string& a) override { return m_inner.capabilities(a); }
+    Result<device::DriveLimits> limits(const std::string& a) override { return m_inner.limits(a); }
+    Result<device::TestPlan> planTest(const device::TestRequest& r) override { return m_inner.planTest(r); }
+
+protected:
+    device::Drive& m_inner;
+};
 
 /// Runs the test to its end with device::runTest (progress never falls; it must complete) and returns the
 /// FRF the drive evaluated.

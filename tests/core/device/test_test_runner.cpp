@@ -24,22 +24,14 @@ namespace {
 
 /// Forwards everything to a drive but keeps the seam's default readFrequencyResponse (NotFound):
 /// a backend that hands raw samples to the host.
-class SamplesOnlyDrive : public Drive {
+class SamplesOnlyDrive : public devtest::ForwardingDrive {
 public:
-    explicit SamplesOnlyDrive(Drive& inner) : m_inner(inner) {}
-    Result<DriveIdentity> identify() override { return m_inner.identify(); }
-    Result<std::vector<model::ParameterMeta>> parameterMetadata(const std::string& a) override
-    {
-        return m_inner.parameterMetadata(a);
-    }
-    Result<model::ParameterValues> readParameters(const std::string& a, std::span<const std::string> k) override
-    {
-        return m_inner.readParameters(a, k);
-    }
-    Status writeParameters(const std::string& a, const model::ParameterValues& v) override
-    {
-        return m_inner.writeParameters(a, v);
-    }
+    explicit SamplesOnlyDrive(Drive& inner) : ForwardingDrive(inner) {}
+    // The seam's defaults, not the inner drive's: no FRF, no description of itself.
+    Result<FrfMeasurement> readFrequencyResponse() override { return Drive::readFrequencyResponse(); }
+    Result<DriveCapabilities> capabilities(const std::string& a) override { return Drive::capabilities(a); }
+    Result<DriveLimits> limits(const std::string& a) override { return Drive::limits(a); }
+    Result<TestPlan> planTest(const TestRequest& r) override { return Drive::planTest(r); }
     Status startTest(const TestRequest& r) override
     {
         ++starts;
@@ -56,7 +48,6 @@ public:
             return TestStatus{TestState::Faulted, 0.25, "following error too large (test)"};
         return m_inner.pollTest();
     }
-    Result<model::Capture> readTrace() override { return m_inner.readTrace(); }
     Status abortTest() override
     {
         ++aborts;
@@ -64,9 +55,6 @@ public:
     }
     int starts = 0, polls = 0, aborts = 0;
     int failAfterPolls = -1, stallAfterPolls = -1, faultAfterPolls = -1;
-
-private:
-    Drive& m_inner;
 };
 
 TestRequest frfRequest(FrfMethod method)

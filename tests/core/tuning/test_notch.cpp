@@ -237,3 +237,43 @@ TEST(Notch, WidthParameterGivesTheDigitalWidth)
             EXPECT_NEAR(param, w * x / (std::sin(x) * std::cos(x)), 0.01 * param) << f0;
     }
 }
+
+// The whole analysis (tuning::analyseNotches, what the notch wizard and `axistune-cli notch` run): slot 2 holds a
+// filter at 200 Hz; the three resonances get the free slots 1, 3, 4 in that order, and the prediction is the
+// independent computation with the existing and the added notches (1e-9, as above).
+TEST(Notch, AnalysisAllocatesTheFreeSlotsAndPredictsWithThem)
+{
+    const auto t = measuredT();
+    const dsp::NotchSpec existing{200.0, 40.0, 0.5};
+    // The measured loop already runs the existing filter.
+    auto measured = t;
+    for (std::size_t i = 0; i < measured.size(); ++i) {
+        const cd l = openLoop(measured.freqHz[i]) * notchResponse(existing, measured.freqHz[i], 16000.0);
+        measured.h[i] = l / (1.0 + l);
+    }
+    auto a = tuning::analyseNotches(measured, kComplementary, {}, {}, {{2, existing}});
+    ASSERT_TRUE(a.ok()) << a.error().detail;
+    ASSERT_EQ(a->notches.size(), 3U);
+    std::vector<int> slots;
+    for (const auto& n : a->notches)
+        slots.push_back(n.slot);
+    EXPECT_EQ(slots, (std::vector<int>{1, 3, 4}));
+    double worst = 0.0;
+    for (std::size_t i = 0; i < measured.size(); ++i) {
+        const double f = measured.freqHz[i];
+        cd l = openLoop(f) * notchResponse(existing, f, 16000.0);
+        for (const auto& n : a->notches)
+            l *= notchResponse(n.spec, f, 16000.0);
+        const cd expected = l / (1.0 + l);
+        worst =
+            std::max(worst, std::abs(a->prediction.measuredAfter.h[i] - expected) / std::max(1.0, std::abs(expected)));
+    }
+    EXPECT_LT(worst, 1e-9);
+    // Only one slot left on a drive with two: one notch, in slot 1.
+    tuning::NotchOptions two;
+    two.slotCount = 2;
+    a = tuning::analyseNotches(measured, kComplementary, {}, two, {{2, existing}});
+    ASSERT_TRUE(a.ok());
+    ASSERT_EQ(a->notches.size(), 1U);
+    EXPECT_EQ(a->notches.front().slot, 1);
+}

@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Adaptive multisine FRF (core/device/AdaptiveFrf.h, issue 18 item 2) on the realistic sim:dd-table axis C
+// (friction, quantization and noise on, as `axistune-cli capture --connect sim:dd-table` runs it):
+//  * within the 5 s budget it finds the 3.3 kHz mode within 2 % (the issue's criterion), makes more lines valid
+//    than the plain multisine with the same motion time (16 periods, the issue's comparison), and says why every
+//    line left is invalid;
+//  * its valid lines agree with the independent lifted model (tests/core/sim/LiftedModel.h) within the 0.5 dB / 3°
+//    of issue 11 above 100 Hz (below, the preset's Coulomb friction distorts every method);
+//  * through the seam: the host's evaluation of a drive that streams samples only gives the same result, and a
+//    drive that takes no spectrum (Modbus) gets flat bands;
+//  * refusals.
+#include "core/device/AdaptiveFrf.h"
+#include "core/device/Drive.h"
+#include "core/device/SimulatedDrive.h"
+#include "core/device/TestRunner.h"
+#include "core/dsp/InjectionHold.h"
+#include "core/sim/MachineDefinition.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <iostream>
+#include <numbers>
+
+#include "tests/NumberText.h"
+#include "tests/core/device/DriveTestUtil.h"
+#include "tests/core/sim/LiftedModel.h"
+
+using namespace axistune;
+using namespace axistune::device;
+
+namespace {
+
+/// Forwards everything to a drive; optionally hides readFrequencyResponse (a drive that streams samples only, the
+/// host evaluates) and refuses a shaped multisine (as the Modbus register map does).
+class WrappedDrive : public devtest::ForwardingDrive {
+public:
+    WrappedDrive(Drive& inner, bool samplesOnly, bool refuseShape)
+        : ForwardingDrive(inner), m_samplesOnly(samplesOnly), m_refuseShape(refuseShape)
+    {
+    }
+    Status startTest(const TestRequest& r) override
+    {
+        if (auto st = refuse(r); !st)
+            return st;
+        return m_inner.startTest(r);
+    }
+    Result<FrfMeasurement> readFrequencyResponse() override
+    {
+        return m_samplesOnly ? Drive::readFrequencyResponse() : m_inner.readFrequencyResponse();
+    }
+    Result<TestPlan> planTest(const TestRequest& r) override
+    {
+        if (auto st = refuse(r); !st)
+            return st.error();
+        return m_inner.planTest(r);
+    }
+
+private:
+    Status refuse(const TestRequest& r) const
+    {
+        if (m_refuseShape && !r.multisineShape.empty())
+            return makeError(ErrorCode::BadInput, "a shaped multisine cannot be sent (test)");
+        return Status::success();
+    }
+    bool m_samplesOnly, m_refuseShape;
+};
+
+std::unique_ptr<Drive> realisticDdTable()
+{
+    auto d = connect({"sim:dd-table", 1});
+    EXPECT_TRUE(d.ok()) << (d ? "" : d.error().detail);
+    return d ? std::move(d).value() : nullptr;
+}
+
+/// The first pass: what `capture --test frf --method multisine --fmin 20 --fmax 3900` runs (5 % peak, 10 Hz).
+TestRequest firstPass()
+{
+    TestRequest r;
+    r.axis = "C";
+    r.type = TestType::Frf;
+    r.frfMethod = FrfMethod::Multisine;
+    r.fminHz = 20.0;
+    r.fmaxHz = 3900.0;
+    r.amplitudePct = 5.0;
+    return r;
+}
+
+std::size_t validCount(const dsp::FrequencyResponse& f)
+{
+    return static_cast<std::size_t>(std::count(f.valid.begin(), f.valid.end(), true));
+}
+
+/// The largest valid |T| above 2.6 kHz (the 3.3 kHz mode, test_multisine_test.cpp), npos when none.
+std::size_t modePeak(const dsp::FrequencyResponse& f)
+{
+    std::size_t peak = std::string::npos;
+    for (std::size_t i = 0; i < f.size(); ++i)
+        if (f.valid[i] && f.freqHz[i] > 2600.0 && (peak == std::string::npos || std::abs(f.h[i]) > std::abs(f.h[peak])))
+            peak = i;
+    return peak;
+}
+
+} // namespace
+
+TEST(AdaptiveFrf, RealisticDdTableFindsTheModeWithinTheBudgetAndExplainsWhatIsLeft)
+{
+    auto drive = realisticDdTable();
+    ASSERT_TRUE(drive);
+    AdaptiveFrfOptions o; // 5 s of motion
+    auto res = runAdaptiveFrf(*drive, firstPass(), o);
+    ASSERT_TRUE(res.ok()) << res.error().detail;
+    const auto& f = res->measurement.frf;
+    ASSERT_EQ(f.size(), 388u); // the first pass's lines: 20 Hz … 3.9 kHz every 10 Hz
+    const double fraction = static_cast<double>(validCount(f)) / static_cast<double>(f.size());
+    std::cout << "adaptive: " << res->passes.size() << " passes, motion " << res->motionTimeS << " s, valid "
+              << validCount(f) << " of " << f.size() << " (" << fraction * 100.0 << " %)\n";
+    // The budget holds (the drive advances in whole current ticks: 62.5 µs).
+    EXPECT_LE(res->motionTimeS, 5.0 + 62.5e-6);
+    EXPECT_NEAR(res->measurement.motionTimeS, res->motionTimeS, 1e-12);
+    EXPECT_GE(res->passes.size(), 2u);
+    EXPECT_EQ(res->validLines, validCount(f));
+    // Every line left is named with a reason, and only those.
+    EXPECT_EQ(res->invalid.size() + res->validLines, f.size());
+    for (const auto& l : res->invalid) {
+        const auto it = std::find(f.freqHz.begin(), f.freqHz.end(), l.freqHz);
+        ASSERT_NE(it, f.freqHz.end());
+        EXPECT_FALSE(f.valid[static_cast<std::size_t>(it - f.freqHz.begin())]);
+    }
+    // The 3.3 kHz mode within 2 % (issue 18), a peak and not the end of a slope.
+    const auto peak = modePeak(f);
+    ASSERT_NE(peak, std::string::npos);
+    EXPECT_NEAR(f.freqHz[peak], 3300.0, 0.02 * 3300.0);
+    ASSERT_LT(peak + 1, f.size());
+    // More valid lines than the plain multisine with at least the same motion time: 16 periods (5.14 s), the
+    // issue's comparison, on a fresh drive with the same seed.
+    auto plainDrive = realisticDdTable();
+    auto plainReq = firstPass();
+    plainReq.multisinePeriods = 16;
+    auto plain = runTest(*plainDrive, plainReq);
+    ASSERT_TRUE(plain.ok() && plain->frf);
+    ASSERT_GE(plain->frf->motionTimeS, res->motionTimeS);
+    const std::size_t plainValid = validCount(plain->frf->frf);
+    std::cout << "plain multisine, 16 periods: motion " << plain->frf->motionTimeS << " s, valid " << plainValid
+              << "\n";
+    EXPECT_GT(validCount(f), plainValid + 20);
+}
+
+// The combined lines are right: on the preset with its noise only (friction, quantization, inductance drop and lost
+// motion off, so that the linear lifted model of tests/core/sim/LiftedModel.h is the truth), every valid line agrees
+// with the model within 3.5 times the validity limit σ_H/|H| = 0.03 (|ΔH| of a complex Gaussian exceeds 3.5σ with
+// probability e^(−12.25) ≈ 5e-6 per line; the limit and not a line's own σ, which comes from a few periods and is
+// uncertain by about ±40 %) plus the model's own 0.5 dB / 3° of issue 11 (≈ 6 % of |H|).
+TEST(AdaptiveFrf, ValidLinesAgreeWithTheLiftedModel)
+{
+    auto def = sim::loadPreset("dd-table");
+    ASSERT_TRUE(def.ok());
+    const auto model = simtest::buildLiftedInjectionLoop(def->axes.front());
+    auto created = SimulatedDrive::create(*def, 1);
+    ASSERT_TRUE(created.ok());
+    auto drive = std::move(created).value();
+    sim::Nonlinearities noiseOnly{false, false, false, false, false};
+    noiseOnly.noise = true;
+    drive->simulator("C")->setNonlinearities(noiseOnly);
+    auto res = runAdaptiveFrf(*drive, firstPass(), {});
+    ASSERT_TRUE(res.ok()) << res.error().detail;
+    const auto& m = res->measurement;
+    const auto& f = m.frf;
+    ASSERT_TRUE(dsp::isInjectionHoldCorrected(f));
+    ASSERT_EQ(m.relativeNoise.size(), f.size());
+    const int n = std::stoi(f.metadata.at("injection_hold_ticks"));
+    const double h = axistune::testutil::stod(f.metadata.at("injection_hold_period_s"));
+    std::size_t compared = 0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        if (!f.valid[i])
+            continue;
+        const auto ref = model.closedLoop(f.freqHz[i]) / dsp::injectionHoldFactor(f.freqHz[i], h, n);
+        const double rel = std::abs(f.h[i] / ref - 1.0);
+        EXPECT_LE(m.relativeNoise[i], 0.03) << f.freqHz[i] << " Hz";
+        EXPECT_LE(rel, 3.5 * 0.03 + 0.06) << f.freqHz[i] << " Hz";
+        worst = std::max(worst, rel);
+        if (rel > 0.05)
+            std::cout << "DBG " << f.freqHz[i] << " rel " << rel << " r " << m.relativeNoise[i] << " dB "
+                      << dsp::magnitudeDb(f.h[i] / ref) << " deg " << std::arg(f.h[i] / ref) * 57.3 << "\n";
+        ++compared;
+    }
+    std::cout << "noise-only: " << compared << " valid lines, worst |H/H_model - 1| " << worst << "\n";
+    EXPECT_GT(compared, 200u);
+}
+
+TEST(AdaptiveFrf, WorksThroughTheSeamHostEvaluatedAndWithoutAShapedSpectrum)
+{
+    // Host evaluation: the same passes and the same FRF as when the drive evaluates (same seed, same samples).
+    auto a = realisticDdTable();
+    auto b = realisticDdTable();
+    ASSERT_TRUE(a && b);
+    WrappedDrive samplesOnly(*b, true, false);
+    auto ra = runAdaptiveFrf(*a, firstPass(), {});
+    auto rb = runAdaptiveFrf(samplesOnly, firstPass(), {});
+    ASSERT_TRUE(ra.ok() && rb.ok());
+    ASSERT_EQ(ra->passes.size(), rb->passes.size());
+    ASSERT_EQ(ra->measurement.frf.size(), rb->measurement.frf.size());
+    EXPECT_EQ(ra->validLines, rb->validLines);
+    for (std::size_t i = 0; i < ra->measurement.frf.size(); ++i)
+        EXPECT_NEAR(std::abs(ra->measurement.frf.h[i] - rb->measurement.frf.h[i]), 0.0,
+                    1e-9 * std::abs(ra->measurement.frf.h[i]));
+    EXPECT_EQ(rb->measurement.frf.metadata.at("evaluated_by"), "host");
+
+    // A drive that takes no spectrum: the passes after the first are flat bands, and they still add lines.
+    auto c = realisticDdTable();
+    ASSERT_TRUE(c);
+    WrappedDrive flat(*c, false, true);
+    auto rc = runAdaptiveFrf(flat, firstPass(), {});
+    ASSERT_TRUE(rc.ok()) << rc.error().detail;
+    ASSERT_GE(rc->passes.size(), 2u);
+    for (std::size_t k = 1; k < rc->passes.size(); ++k) {
+        EXPECT_FALSE(rc->passes[k].shaped);
+        EXPECT_LE(rc->passes[k].bands, 4u);
+    }
+    EXPECT_GT(rc->validLines, rc->passes.front().validAfter);
+    EXPECT_LE(rc->motionTimeS, 5.0 + 62.5e-6);
+}
+
+TEST(AdaptiveFrf, Refusals)
+{
+    auto drive = realisticDdTable();
+    ASSERT_TRUE(drive);
+    auto r = firstPass();
+    r.frfMethod = FrfMethod::MultiSweep;
+    auto res = runAdaptiveFrf(*drive, r, {});
+    ASSERT_FALSE(res.ok());
+    EXPECT_EQ(res.error().code, ErrorCode::BadInput);
+    AdaptiveFrfOptions o;
+    o.timeBudgetS = 0.5; // the first pass alone takes 0.943 s
+    res = runAdaptiveFrf(*drive, firstPass(), o);
+    ASSERT_FALSE(res.ok());
+    EXPECT_NE(res.error().detail.find("time budget"), std::string::npos) << res.error().detail;
+    o.timeBudgetS = std::nan("");
+    EXPECT_FALSE(runAdaptiveFrf(*drive, firstPass(), o).ok());
+    // Beyond the drive's own amplitude limit: the drive's refusal, before anything moves.
+    r = firstPass();
+    r.amplitudePct = 80.0;
+    res = runAdaptiveFrf(*drive, r, {});
+    ASSERT_FALSE(res.ok());
+}
