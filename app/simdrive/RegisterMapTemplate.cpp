@@ -122,6 +122,37 @@ std::string simRegisterMapJson()
     add("plan.record_samples", 642, "u32", 2, "samples per channel the planned test records");
     add("plan.motion_s", 644, "f64", 4, "machine time of the planned test, start to completion [s]");
     add("plan.trace_rate_hz", 648, "f64", 4, "sample rate of the planned test's trace [Hz]");
+    // The scope (docs/scope.md, docs/modbus.md "Scope"): configuration 700-715 written in one request, then
+    // command arm_scope; status 720-757 read in one request; readout by function 23 (read_source, read_from
+    // written, window read).
+    add("scope.mode", 700, "u16", 1, "enum scope_mode");
+    add("scope.divider", 701, "u16", 1, "sample every N-th period of the fastest scope rate (1..scope.max_divider)");
+    add("scope.channel_mask", 702, "u32", 2, "bit i: trace scope channel i (the list read with read_source channels)");
+    add("scope.trigger_channel", 704, "u16", 1, "scope channel index of the trigger (one of the mask)");
+    add("scope.trigger_edge", 705, "u16", 1, "enum scope_edge");
+    add("scope.length", 706, "u32", 2, "rows per triggered capture");
+    add("scope.trigger_level", 708, "f64", 4, "trigger level in the trigger channel's unit");
+    add("scope.pre_trigger_pct", 712, "f64", 4, "share of the capture before the trigger row [%], 0..100");
+    add("scope.state", 720, "u16", 1, "enum scope_state");
+    add("scope.channel_count", 721, "u16", 1, "channels of the armed scope");
+    add("scope.captures", 722, "u32", 2, "complete triggered captures since the scope was armed");
+    add("scope.rate_hz", 724, "f64", 4, "sample rate of the armed scope [Hz]");
+    add("scope.next_sample", 728, "f64", 4, "sample number the next row will get (an integer)");
+    add("scope.oldest_sample", 732, "f64", 4, "oldest sample number still in the roll ring (an integer)");
+    add("scope.capture_first", 736, "f64", 4, "sample number of the first row of the last complete capture");
+    add("scope.capture_trigger", 740, "f64", 4, "sample number of its trigger row");
+    add("scope.capture_rows", 744, "u32", 2, "rows of the last complete capture");
+    add("scope.signal_count", 746, "u16", 1, "traceable scope channels of this axis (0: no scope)");
+    add("scope.max_channels", 747, "u16", 1, "channels traced at once");
+    add("scope.fastest_rate_hz", 748, "f64", 4, "scope rate at divider 1 [Hz]");
+    add("scope.max_values", 752, "u32", 2, "channels x rows of one triggered capture");
+    add("scope.ring_values", 754, "u32", 2, "channels x rows the roll ring holds");
+    add("scope.max_divider", 756, "u16", 1, "largest scope.divider");
+    add("scope.read_source", 757, "u16", 1, "enum scope_source: what scope.window shows");
+    add("scope.read_from", 758, "f64", 4, "first sample number (ring, capture) or byte offset (channels) of the window");
+    add("scope.window", 770, "window", 124,
+        "ring/capture: first sample (f64), rows (u16), capture number mod 65536 (u16), then rows x channels "
+        "float64, row by row; channels: 248 bytes of 'name TAB unit TAB description' lines");
     add("trace.select_offset", 400, "u32", 2, "first sample (or byte, for the text channels) of the window");
     add("trace.select_channel", 402, "u16", 1, "trace channel index, or enum trace_channel");
     add("trace.window", 410, "window", 124,
@@ -138,8 +169,12 @@ std::string simRegisterMapJson()
           {"heartbeat_lost", 5},
           {"drive_fault", 6},
           {"aborted", 7}}},
-        {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}, {"plan_test", 4}}},
-        {"describe_flag", {{"evaluates_frf", 1}, {"writes_parameters", 2}}},
+        {"command", {{"start_test", 1}, {"abort_test", 2}, {"clear", 3}, {"plan_test", 4}, {"arm_scope", 5}, {"stop_scope", 6}}},
+        {"describe_flag", {{"evaluates_frf", 1}, {"writes_parameters", 2}, {"scope", 4}}},
+        {"scope_mode", {{"single", 0}, {"normal", 1}, {"roll", 2}}},
+        {"scope_edge", {{"rising", 0}, {"falling", 1}, {"either", 2}}},
+        {"scope_state", {{"idle", 0}, {"filling", 1}, {"waiting", 2}, {"triggered", 3}, {"done", 4}, {"rolling", 5}}},
+        {"scope_source", {{"ring", 0}, {"capture", 1}, {"channels", 2}}},
         {"test_type", {{"step", 0}, {"jog", 1}, {"hold", 2}, {"frf", 3}, {"current_step", 4}, {"circle", 5}}},
         {"circle_direction", {{"ccw", 0}, {"cw", 1}}},
         {"frf_method", {{"multisweep", 0}, {"conventional", 1}, {"prbs", 2}, {"multisine", 3}}},

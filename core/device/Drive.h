@@ -3,6 +3,7 @@
 // The drive seam (STYLE.md "A device seam"): synchronous, created and used on one I/O thread.
 // Implementations register in DriveRegistry.h (docs/drive-seam.md): sim:, modbus://, replay:.
 
+#include "core/device/Scope.h"
 #include "core/dsp/FrequencyResponse.h"
 #include "core/dsp/Multisine.h"
 #include "core/dsp/SineDemodulation.h"
@@ -134,6 +135,7 @@ struct DriveCapabilities {
     /// units, amplitudePct then is % of the pid's maxoutput); false: % of rated torque only.
     bool frfPeakInOutputUnits = false;
     std::vector<FrfQuantity> frfQuantities; ///< quantities besides Default an FRF test can report (hal:: plant, open loop)
+    bool scope = false;                ///< the scope answers (Drive::scopeCapabilities, armScope; docs/scope.md)
 
     bool offers(TestType t) const;
     bool offers(FrfMethod m) const;
@@ -203,6 +205,36 @@ public:
     {
         return makeError(ErrorCode::NotFound, "this drive cannot plan tests (axis " + request.axis + ")");
     }
+
+    // The scope (core/device/Scope.h, docs/scope.md): one scope per drive, on one axis, independent of the
+    // tests (it keeps sampling while a test runs). A backend without one keeps these defaults, which refuse
+    // with NotFound, and reports DriveCapabilities::scope = false. A backend that only streams samples to the
+    // host (a LinuxCNC sampler on HAL pins) implements them with a ScopeRecorder on the host.
+    /// Traceable channels with units, the fastest rate and the sizes the scope takes.
+    virtual Result<ScopeCapabilities> scopeCapabilities(const std::string& axis)
+    {
+        return makeError(ErrorCode::NotFound, "this drive has no scope (axis " + axis + ")");
+    }
+    /// Arms a triggered capture or starts roll mode (checked as checkScopeRequest does); re-arming replaces
+    /// the running scope.
+    virtual Status armScope(const ScopeRequest& request)
+    {
+        return makeError(ErrorCode::NotFound, "this drive has no scope (axis " + request.axis + ")");
+    }
+    /// State, sample counter and captures. On a drive whose machine time advances with the calls (the
+    /// embedded simulator) it also lets the scope's axis run one slice while no test moves it.
+    virtual Result<ScopeStatus> pollScope() { return makeError(ErrorCode::NotFound, "this drive has no scope"); }
+    /// Roll mode: rows from sample `from` (firstSample > from: the ones before were overwritten, lost).
+    virtual Result<ScopeRows> readScopeRows(std::uint64_t from, std::size_t maxRows)
+    {
+        (void)from;
+        (void)maxRows;
+        return makeError(ErrorCode::NotFound, "this drive has no scope");
+    }
+    /// The last complete triggered capture, with its channels and units.
+    virtual Result<ScopeCapture> readScopeCapture() { return makeError(ErrorCode::NotFound, "this drive has no scope"); }
+    /// Stops sampling; a complete capture stays readable.
+    virtual Status stopScope() { return makeError(ErrorCode::NotFound, "this drive has no scope"); }
 };
 
 struct ConnectionSettings {

@@ -537,6 +537,8 @@ Result<DriveCapabilities> ModbusDrive::capabilities(const std::string& axis)
     c.evaluatesFrf = (flags & std::max(0, m_map.code("describe_flag", "evaluates_frf"))) != 0;
     c.writesParameters = (flags & std::max(0, m_map.code("describe_flag", "writes_parameters"))) != 0;
     c.hasLink = true;
+    c.scope = m_map.fields.count("scope.window") && m_map.code("describe_flag", "scope") > 0 &&
+              (flags & m_map.code("describe_flag", "scope")) != 0;
     c.traceRateHz = decodeF64(at("describe.trace_rate_hz"), m_map.wordOrder);
     c.currentTraceRateHz = decodeF64(at("describe.current_trace_rate_hz"), m_map.wordOrder);
     return c;

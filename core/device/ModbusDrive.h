@@ -56,6 +56,16 @@ public:
     /// Writes the test block and sends plan_test; the drive answers in the plan.* registers.
     Result<TestPlan> planTest(const TestRequest& request) override;
 
+    // The scope (docs/modbus.md "Scope"): scope.* configuration, status and window registers.
+    Result<ScopeCapabilities> scopeCapabilities(const std::string& axis) override;
+    Status armScope(const ScopeRequest& request) override;
+    Result<ScopeStatus> pollScope() override;
+    /// Pages of scope.window until maxRows rows or the newest row; stops at a gap (overwritten rows), so the
+    /// rows returned are consecutive.
+    Result<ScopeRows> readScopeRows(std::uint64_t from, std::size_t maxRows) override;
+    Result<ScopeCapture> readScopeCapture() override;
+    Status stopScope() override;
+
     /// Writes the heartbeat register now (pollTest() does this every kHeartbeatPeriod while a test runs).
     Status heartbeat();
     const RegisterMap& registerMap() const { return m_map; }
@@ -98,6 +108,8 @@ private:
     Result<std::string> readText(int unit, std::uint16_t channel);
     Result<std::vector<double>> readBlob(int unit, std::uint16_t channel);
     Error exceptionError(int unit, int exceptionCode, const std::string& what);
+    /// One scope.window page: source and first sample (or byte offset) written, the window read (function 23).
+    Status readScopePage(int unit, const std::string& source, std::uint64_t from, std::vector<std::uint16_t>& page);
 
     ModbusUri m_uri;
     RegisterMap m_map;
@@ -113,6 +125,10 @@ private:
     int m_testUnit = -1;
     Clock::time_point m_lastHeartbeat;
     Clock::time_point m_lastPoll;
+    // The armed scope.
+    int m_scopeUnit = -1;
+    std::vector<ScopeChannelInfo> m_scopeChannels; ///< in the request's order
+    std::vector<std::size_t> m_scopeColumn;        ///< request channel k is column m_scopeColumn[k] on the wire
 };
 
 /// Opens "modbus://HOST:PORT[?timeout_ms=N&map=FAMILY]" (the map from resources/drives/FAMILY.json).

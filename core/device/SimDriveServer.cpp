@@ -37,6 +37,7 @@ Result<std::unique_ptr<SimDriveServer>> SimDriveServer::create(const SimDriveSer
             {a.name, a.kind == sim::AxisKind::Linear ? "linear" : "rotary", s->m_drive->simulator(a.name)});
     s->m_config.resize(s->m_axes.size());
     s->m_refusedConfig.resize(s->m_axes.size());
+    s->m_scopeConfig.resize(s->m_axes.size());
     auto map = loadRegisterMap(options.mapFamily);
     if (!map)
         return map.error();

@@ -125,6 +125,19 @@ private:
     void checkCircleSecondAxis();
     int writeCircleField(const RegisterField& f, int unitIndex, const std::uint16_t* words);
     bool encodeCircleField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
+    // The scope (SimDriveServerScope.cpp; docs/modbus.md "Scope").
+    struct ScopeConfig {
+        std::uint16_t mode = 0, divider = 1, triggerChannel = 0, edge = 0;
+        std::uint32_t mask = 0, length = 0;
+        double level = 0.0, prePct = 0.0;
+    };
+    int armScope(int unitIndex);
+    /// While the scope is armed and no test moves its axis: runs that axis in wall-clock time (--pace, else 1).
+    void stepScope();
+    bool scopeArmed() const;
+    bool encodeScopeField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
+    void encodeScopeWindow(const RegisterField& f, int unitIndex, std::uint16_t* buf);
+    int writeScopeField(const RegisterField& f, int unitIndex, const std::uint16_t* words);
     // Register helpers.
     void encodeField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
     bool encodeIdentity(const RegisterField& f, int unitIndex, std::uint16_t* buf);
@@ -171,6 +184,12 @@ private:
     int m_planUnit = -1;
     std::uint32_t m_selOffset = 0;
     std::uint16_t m_selChannel = 0;
+    std::vector<ScopeConfig> m_scopeConfig; ///< per unit
+    int m_scopeUnit = -1;                   ///< unit the scope was armed on
+    Clock::time_point m_scopeWall;          ///< wall time up to which the scope's axis has run
+    std::uint16_t m_scopeSource = 0;
+    double m_scopeFrom = 0.0;
+    std::optional<ScopeCapture> m_scopeCapture; ///< the drive's last capture, for paging
 
     int m_port = 0;
     int m_listenFd = -1;

@@ -144,7 +144,7 @@ Status SimDriveServer::serve()
                 ev |= POLLOUT;
             fds.push_back(pollfd{c.fd, ev, 0});
         }
-        const int n = poll(fds.data(), fds.size(), pending ? 0 : m_state == "running" ? 1 : 20);
+        const int n = poll(fds.data(), fds.size(), pending ? 0 : m_state == "running" || scopeArmed() ? 1 : 20);
         if (n < 0 && errno != EINTR)
             return makeError(ErrorCode::Device, std::string("poll failed: ") + std::strerror(errno));
         auto now = Clock::now();

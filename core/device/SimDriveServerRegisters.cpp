@@ -90,7 +90,8 @@ bool SimDriveServer::encodeDescription(const RegisterField& f, int ui, std::uint
         for (const auto m : caps->frfMethods)
             methods |= 1 << std::max(0, m_map.code("frf_method", frfMethodName(m)));
         const int flags = (caps->evaluatesFrf ? m_map.code("describe_flag", "evaluates_frf") : 0) |
-                          (caps->writesParameters ? m_map.code("describe_flag", "writes_parameters") : 0);
+                          (caps->writesParameters ? m_map.code("describe_flag", "writes_parameters") : 0) |
+                          (caps->scope && m_map.fields.count("scope.window") ? std::max(0, m_map.code("describe_flag", "scope")) : 0);
         if (n == "describe.test_types")
             buf[0] = static_cast<std::uint16_t>(tests);
         else if (n == "describe.frf_methods")
@@ -250,6 +251,8 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
         return u16(m_selChannel);
     if (n == "trace.window")
         return encodeWindow(f, buf);
+    if (n.rfind("scope.", 0) == 0 && encodeScopeField(f, ui, buf))
+        return;
     std::memset(buf, 0, sizeof(std::uint16_t) * static_cast<std::size_t>(f.count)); // a field this server does not use
 }
 
@@ -308,6 +311,8 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
     }
     if (n.rfind("circle.", 0) == 0)
         return writeCircleField(f, ui, w);
+    if (n.rfind("scope.", 0) == 0)
+        return writeScopeField(f, ui, w);
     if (n.rfind("test.", 0) != 0)
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "field " + n + " is read-only");
     if (m_state == "running")
@@ -392,6 +397,9 @@ int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t*
     const auto lastHeartbeat = m_lastHeartbeat;
     const auto selOffset = m_selOffset;
     const auto selChannel = m_selChannel;
+    const auto scopeConfig = m_scopeConfig[static_cast<std::size_t>(ui)];
+    const auto scopeSource = m_scopeSource;
+    const auto scopeFrom = m_scopeFrom;
     bool commandRan = false;
     const int ex = writeRegistersChecked(ui, address, values, count, commandRan);
     if (ex && !commandRan) {
@@ -400,6 +408,9 @@ int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t*
         m_lastHeartbeat = lastHeartbeat;
         m_selOffset = selOffset;
         m_selChannel = selChannel;
+        m_scopeConfig[static_cast<std::size_t>(ui)] = scopeConfig;
+        m_scopeSource = scopeSource;
+        m_scopeFrom = scopeFrom;
         markRefusedConfig(ui, address, count, m_message);
     } else if (!ex || commandRan) {
         // Fields written successfully are no longer refused.
@@ -494,6 +505,11 @@ int SimDriveServer::runCommand(int ui, std::uint16_t code, std::uint16_t token)
             m_message = "aborted by the client";
             log("test aborted by the client; parameters restored");
         }
+    } else if (name == "arm_scope") {
+        result = armScope(ui);
+    } else if (name == "stop_scope") {
+        (void)m_drive->stopScope();
+        m_scopeCapture.reset();
     } else if (name == "plan_test") {
         result = planTest(ui, token);
     } else if (name == "clear") {

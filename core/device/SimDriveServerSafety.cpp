@@ -281,6 +281,7 @@ void SimDriveServer::takeFrequencyResponse()
 
 void SimDriveServer::step()
 {
+    stepScope();
     if (m_state != "running")
         return;
     const Axis& ax = m_axes[static_cast<std::size_t>(m_testUnit)];

@@ -435,6 +435,7 @@ Result<DriveCapabilities> SimulatedDrive::capabilities(const std::string& axis)
     c.evaluatesFrf = true;
     c.writesParameters = true;
     c.hasLink = false;
+    c.scope = true;
     return c;
 }
 

@@ -33,6 +33,19 @@ public:
     Result<DriveCapabilities> capabilities(const std::string& axis) override;
     Result<DriveLimits> limits(const std::string& axis) override;
     Result<TestPlan> planTest(const TestRequest& request) override;
+    // The scope (docs/scope.md), on the velocity-loop rate of one axis. Machine time runs only in calls:
+    // pollScope() runs the scope's axis one slice (setSliceSeconds) unless a running test moves that axis,
+    // in which case pollTest() advances it and the scope samples the test.
+    Result<ScopeCapabilities> scopeCapabilities(const std::string& axis) override;
+    Status armScope(const ScopeRequest& request) override;
+    Result<ScopeStatus> pollScope() override;
+    Result<ScopeRows> readScopeRows(std::uint64_t from, std::size_t maxRows) override;
+    Result<ScopeCapture> readScopeCapture() override;
+    Status stopScope() override;
+    /// The scope's state without running anything (axistune-simdrive advances the axis in wall-clock time).
+    ScopeStatus scopeStatus() const { return m_scope.status(); }
+    /// Channels of the armed scope.
+    std::size_t scopeChannelCount() const { return m_scopeChannels.size(); }
 
     /// Failure modes of the link for tests (FaultInjection.h): drop-after:N makes the N-th call and every
     /// later one fail with ErrorCode::Device as a lost connection would ("sim:PRESET?fault=drop-after:N").
@@ -101,6 +114,11 @@ private:
     std::string m_stepStart;    ///< current step: machine time of the step, as capture metadata
     FaultInjection m_faults;
     int m_requests = 0;
+    // The scope.
+    ScopeRecorder m_scope;
+    sim::AxisSimulator* m_scopeSim = nullptr;
+    std::vector<ScopeChannelInfo> m_scopeChannels; ///< of the armed request, in its order
+    std::vector<double> m_scopeRow;
 };
 
 }  // namespace axistune::device

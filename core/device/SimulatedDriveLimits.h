@@ -26,5 +26,12 @@ inline constexpr double kMaxMotorSpeedRadS = 2.0 * std::numbers::pi * 6000.0 / 6
 inline constexpr double kMaxTestDurationS = 600.0;
 /// Travel window of jog targets and circles on a linear axis [m] (the simulated table's travel).
 inline constexpr double kTravelWindowM = 0.5;
+/// The scope (docs/scope.md): channels traced at once, largest divider of the fastest rate (the velocity-loop
+/// rate), values (channels × samples) of one triggered capture (64 MB of float64) and of the roll-mode ring
+/// (32 MB: 131 s of 8 channels at 4 kHz).
+inline constexpr int kScopeMaxChannels = 16;
+inline constexpr int kScopeMaxDivider = 1000;
+inline constexpr unsigned long long kScopeMaxValues = 8ull << 20;
+inline constexpr unsigned long long kScopeRingValues = 4ull << 20;
 
 } // namespace axistune::device

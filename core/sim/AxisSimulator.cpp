@@ -410,8 +410,11 @@ void AxisSimulator::runTicks(std::int64_t ticks)
     for (std::int64_t k = 0; k < ticks; ++k) {
         const double t = time();
         m_injectionNow = m_injection ? m_injection(t) : 0.0;
-        if (m_tick % m_velDiv == 0)
+        if (m_tick % m_velDiv == 0) {
             velocityTick(t);
+            if (m_scopeTap)
+                scopeTick(t);
+        }
         const bool currentMode = m_mode == ControlMode::Current;
         double iCmd = currentMode ? (m_currentCommand ? m_currentCommand(t) : 0.0)
                                   : m_filters.process(m_torqueCmd + m_injectionNow) / kt;
@@ -465,6 +468,51 @@ std::vector<std::string> AxisSimulator::traceChannelNames() const
 std::vector<std::string> AxisSimulator::currentTraceChannelNames()
 {
     return {"t_s", "current_cmd_A", "current_A", "voltage_V", "motor_vel_rad_s", "torque_Nm"};
+}
+
+std::vector<ScopeSignal> AxisSimulator::scopeSignals() const
+{
+    const bool lin = m_def.kind == AxisKind::Linear;
+    const std::string u = lin ? "m" : "rad", s = lin ? "_m" : "_rad";
+    return {{"t_s", "s", "machine time of the sample"},
+            {"velocity_cmd_rad_s", "rad/s", "velocity command at the motor"},
+            {"motor_vel_rad_s", "rad/s", "motor velocity measured by the encoder"},
+            {"torque_cmd_Nm", "N·m", "torque command of the velocity loop"},
+            {"injection_Nm", "N·m", "torque injected by a test"},
+            {"torque_Nm", "N·m", "motor torque (k_t × current)"},
+            {"current_cmd_A", "A", "q-axis current command"},
+            {"current_A", "A", "q-axis current"},
+            {"voltage_V", "V", "q-axis voltage applied"},
+            {"position_cmd" + s, u, "position command"},
+            {"motor_pos" + s, u, "position from the motor encoder"},
+            {"table_pos" + s, u, "load (table) position"},
+            {"lost_motion_comp" + s, u, "lost-motion compensation"},
+            {"load_vel_rad_s", "rad/s", "load velocity"},
+            {"following_error" + s, u, "position command followed minus feedback (0 outside position control)"}};
+}
+
+void AxisSimulator::scopeTick(double t)
+{
+    const double motorPos = screwLead() * m_prevEncoder;
+    double followingError = 0.0;
+    if (m_mode == ControlMode::Position)
+        followingError = m_loopCmd - m_posFeedback;  // what the position loop saw at its last period
+    const double row[] = {t,
+                          m_velCmd,
+                          m_velMeas,
+                          m_torqueCmd,
+                          m_injectionNow,
+                          torque(),
+                          m_currentCmd,
+                          PlantModel::current(m_x),
+                          m_voltage,
+                          m_posCmd,
+                          motorPos,
+                          tablePosition(),
+                          m_lmComp,
+                          m_plant->loadVelocity(m_x),
+                          followingError};
+    m_scopeTap(m_velTick - 1, row);
 }
 
 void AxisSimulator::startTrace(TraceRate rate)

@@ -21,6 +21,7 @@
 #include <functional>
 #include <memory>
 #include <random>
+#include <span>
 
 namespace axistune::sim {
 
@@ -32,6 +33,13 @@ enum class ControlMode {
 
 /// Rate of the trace recorder: every trace.divider velocity periods, or every current-loop period.
 enum class TraceRate { Velocity, Current };
+
+/// A signal the drive's scope can trace (docs/scope.md): name as in a capture, SI unit, one line of description.
+struct ScopeSignal {
+    std::string name;
+    std::string unit;
+    std::string description;
+};
 
 /// Switches for the non-ideal parts. All on by default; tests turn them off to see the linear part.
 struct Nonlinearities {
@@ -119,10 +127,18 @@ public:
     /// Names of the channels of a TraceRate::Current trace, in capture order.
     static std::vector<std::string> currentTraceChannelNames();
 
+    /// The signals the scope taps, in the order of the tap's row (docs/scope.md).
+    std::vector<ScopeSignal> scopeSignals() const;
+    /// Called after every velocity-loop period with that period's number (0, 1, 2 … since the simulator was
+    /// made) and the value of every scopeSignals() entry; an empty function removes the tap.
+    using ScopeTap = std::function<void(std::int64_t velocityTick, std::span<const double> row)>;
+    void setScopeTap(ScopeTap tap) { m_scopeTap = std::move(tap); }
+
 private:
     AxisSimulator(AxisDefinition def, std::uint64_t seed);
     Status configure(const model::ParameterValues& v);
     void velocityTick(double t);
+    void scopeTick(double t);
     void positionTick(double t, double feedbackPos);
     double frictionMotor() const;
     double frictionLoad() const;
@@ -208,6 +224,7 @@ private:
     bool m_tracing = false;
     TraceRate m_traceRate = TraceRate::Velocity;
     std::vector<std::vector<double>> m_trace;
+    ScopeTap m_scopeTap;
 };
 
 }  // namespace axistune::sim

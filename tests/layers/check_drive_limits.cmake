@@ -5,7 +5,8 @@
 # source file of core/, app/, widgets/, bench/ or tests/ other than the simulated drive, its Modbus
 # server and the circle check they share.
 set(_names kMaxFrfAmplitudePct kMaxCurrentStepFraction kMaxCurrentStepS kMaxCurrentStepSpeedRadS
-           kMaxMotorSpeedRadS kCurrentStepHoldS kMaxTestDurationS kTravelWindowM)
+           kMaxMotorSpeedRadS kCurrentStepHoldS kMaxTestDurationS kTravelWindowM kScopeMaxChannels
+           kScopeMaxDivider kScopeMaxValues kScopeRingValues)
 set(_allowed "/core/device/SimulatedDrive[A-Za-z]*\\.(h|cpp)$" "/core/device/SimDriveServer[A-Za-z]*\\.(h|cpp)$"
              "/core/device/CircleDriveTest\\.h$" "/core/sim/")
 file(GLOB_RECURSE _files ${ROOT}/core/*.h ${ROOT}/core/*.cpp ${ROOT}/app/*.h ${ROOT}/app/*.cpp ${ROOT}/widgets/*.h

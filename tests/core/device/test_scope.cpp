@@ -1,0 +1,338 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The drive's scope on the embedded simulated drive (docs/scope.md): a triggered capture on a known
+// velocity step puts the trigger at the requested pre-trigger row, on the step; roll mode streams every
+// sample once; requests outside the drive's figures are refused naming the field.
+#include "core/device/Scope.h"
+#include "core/device/SimulatedDrive.h"
+#include "core/device/TestRunner.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+#include "tests/core/device/DriveTestUtil.h"
+
+using namespace axistune;
+using namespace axistune::device;
+
+namespace {
+
+constexpr double kStepRadS = 10.0; ///< the velocity step of the test
+constexpr double kStepDurationS = 0.2;
+
+ScopeRequest stepTrigger(double prePct, int divider, ScopeEdge edge, std::uint64_t length)
+{
+    ScopeRequest r;
+    r.axis = "X";
+    r.channels = {"velocity_cmd_rad_s", "t_s", "motor_vel_rad_s"};
+    r.divider = divider;
+    r.mode = ScopeMode::Single;
+    r.triggerChannel = "velocity_cmd_rad_s";
+    r.triggerLevel = 0.5 * kStepRadS;
+    r.edge = edge;
+    r.preTriggerPct = prePct;
+    r.lengthSamples = length;
+    return r;
+}
+
+/// The first velocity period at or after time t0 of an axis with current period h and velDiv current
+/// periods per velocity period, as the simulator times its periods (tick · h).
+std::uint64_t firstVelocityTickAtOrAfter(double t0, double h, int velDiv)
+{
+    auto k = static_cast<std::int64_t>(std::floor(t0 / (h * velDiv))) - 2;
+    while (static_cast<double>(k * velDiv) * h < t0)
+        ++k;
+    return static_cast<std::uint64_t>(k);
+}
+
+struct StepCapture {
+    ScopeCapture capture;
+    std::uint64_t expectedTriggerTick = 0; ///< velocity period of the step
+};
+
+/// Arms, lets the pre-trigger fill, runs a velocity step and returns the capture.
+StepCapture captureStep(SimulatedDrive& drive, const ScopeRequest& r)
+{
+    StepCapture out;
+    EXPECT_TRUE(drive.armScope(r).ok());
+    const double fillS =
+        static_cast<double>(scopePreTriggerSamples(r.preTriggerPct, r.lengthSamples)) * r.divider / 4000.0;
+    for (int i = 0; i < 2 + static_cast<int>(fillS / 0.05); ++i) {
+        auto s = drive.pollScope();
+        EXPECT_TRUE(s.ok());
+    }
+    EXPECT_EQ(drive.pollScope()->state, ScopeState::Waiting);
+    sim::AxisSimulator* sim = drive.simulator("X");
+    const double start = sim->time();
+    TestRequest step;
+    step.axis = "X";
+    step.type = TestType::Step;
+    step.amplitude = kStepRadS;
+    step.durationS = kStepDurationS;
+    EXPECT_TRUE(runTest(drive, step, {}).ok());
+    // The simulated drive steps at 1 % of the record (SimulatedDrive::startTest).
+    const double t0 = start + 0.01 * kStepDurationS;
+    const int velDiv = static_cast<int>(std::llround(sim->velocityPeriod() / sim->currentPeriod()));
+    out.expectedTriggerTick = firstVelocityTickAtOrAfter(t0, sim->currentPeriod(), velDiv);
+    // A post-trigger part longer than the step test: the scope's axis runs on in pollScope.
+    for (int i = 0; i < 400 && drive.pollScope()->state != ScopeState::Done; ++i) {
+    }
+    EXPECT_EQ(drive.pollScope()->state, ScopeState::Done);
+    auto c = drive.readScopeCapture();
+    EXPECT_TRUE(c.ok()) << (c.ok() ? "" : c.error().detail);
+    if (c.ok())
+        out.capture = std::move(c).value();
+    return out;
+}
+
+} // namespace
+
+TEST(Scope, CapabilitiesListTheChannelsWithUnits)
+{
+    auto drive = devtest::makeDrive("vmc", 7);
+    auto caps = drive->capabilities("X");
+    ASSERT_TRUE(caps.ok());
+    EXPECT_TRUE(caps->scope);
+    auto s = drive->scopeCapabilities("X");
+    ASSERT_TRUE(s.ok());
+    // vmc: velocity loop 250 µs → 4 kHz at divider 1 (presets/vmc.json).
+    EXPECT_NEAR(s->fastestRateHz, 4000.0, 1e-9);
+    bool found = false;
+    for (const auto& c : s->channels) {
+        EXPECT_FALSE(c.unit.empty()) << c.name;
+        if (c.name == "following_error_m") {
+            found = true;
+            EXPECT_EQ(c.unit, "m");
+        }
+        if (c.name == "motor_vel_rad_s")
+            EXPECT_EQ(c.unit, "rad/s");
+    }
+    EXPECT_TRUE(found);
+    EXPECT_GE(s->maxChannels, 8);
+    auto missing = drive->scopeCapabilities("Q");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().detail.find("'Q'"), std::string::npos);
+}
+
+/// Pre-trigger share, divider and edge: the trigger row is exactly round(pct · L / 100) (≤ L − 1), the step is
+/// between that row and the one before, and the trigger's sample number is the velocity period of the step
+/// divided by the divider (rounded up: the first scope sample at or after the step).
+class ScopeTrigger : public ::testing::TestWithParam<std::tuple<double, int, ScopeEdge>> {};
+
+TEST_P(ScopeTrigger, TriggerAtThePreTriggerRowOnTheStep)
+{
+    const auto [pct, divider, edge] = GetParam();
+    auto drive = devtest::makeDrive("vmc", 7);
+    const std::uint64_t length = 400;
+    const StepCapture sc = captureStep(*drive, stepTrigger(pct, divider, edge, length));
+    const ScopeCapture& c = sc.capture;
+    ASSERT_EQ(c.rows(), length);
+    const auto pre = static_cast<std::size_t>(std::min<double>(std::llround(pct / 100.0 * length), length - 1));
+    EXPECT_EQ(c.triggerRow(), pre);
+    EXPECT_EQ(c.missingSamples(), 0u);
+    for (std::size_t i = 1; i < c.rows(); ++i)
+        ASSERT_EQ(c.samples[i], c.samples[i - 1] + 1);
+    const auto& v = c.columns[0];
+    EXPECT_EQ(v[pre], kStepRadS);
+    if (pre > 0)
+        EXPECT_EQ(v[pre - 1], 0.0);
+    const std::uint64_t d = static_cast<std::uint64_t>(divider);
+    EXPECT_EQ(c.triggerSample, (sc.expectedTriggerTick + d - 1) / d);
+    // t_s of every row is its sample number × divider × T_v (the drive's own clock), to 1e-12 s.
+    for (std::size_t i = 0; i < c.rows(); ++i)
+        ASSERT_NEAR(c.columns[1][i], static_cast<double>(c.samples[i] * d) * 250e-6, 1e-12) << i;
+    EXPECT_EQ(c.channels[0].unit, "rad/s");
+    EXPECT_EQ(c.channels[1].unit, "s");
+}
+
+INSTANTIATE_TEST_SUITE_P(Scope, ScopeTrigger,
+                         ::testing::Values(std::tuple{25.0, 1, ScopeEdge::Rising},
+                                           std::tuple{0.0, 1, ScopeEdge::Rising},
+                                           std::tuple{100.0, 1, ScopeEdge::Either},
+                                           std::tuple{50.0, 3, ScopeEdge::Either},
+                                           std::tuple{10.0, 2, ScopeEdge::Rising}));
+
+TEST(Scope, FallingEdgeFiresWhereTheStepEndsNotWhereItBegins)
+{
+    // The step rises 2 ms into the test; when the test ends the drive drops the command back to 0. A falling
+    // trigger must fire there: the row before the trigger holds the step, the trigger row 0.
+    auto drive = devtest::makeDrive("vmc", 7);
+    ASSERT_TRUE(drive->armScope(stepTrigger(20.0, 1, ScopeEdge::Falling, 200)).ok());
+    for (int i = 0; i < 3; ++i)
+        (void)drive->pollScope();
+    const double start = drive->simulator("X")->time();
+    TestRequest step;
+    step.axis = "X";
+    step.type = TestType::Step;
+    step.amplitude = kStepRadS;
+    step.durationS = kStepDurationS;
+    ASSERT_TRUE(runTest(*drive, step, {}).ok());
+    for (int i = 0; i < 4; ++i)
+        (void)drive->pollScope();
+    auto c = drive->readScopeCapture();
+    ASSERT_TRUE(c.ok()) << c.error().detail;
+    ASSERT_EQ(c->triggerRow(), 40u);
+    EXPECT_EQ(c->columns[0][39], kStepRadS);
+    EXPECT_EQ(c->columns[0][40], 0.0);
+    // The end of the test: start + 0.2 s, within one velocity period (250 µs).
+    EXPECT_NEAR(static_cast<double>(c->triggerSample) * 250e-6, start + kStepDurationS, 250e-6);
+}
+
+TEST(Scope, NormalModeReArmsAndKeepsTheLastCapture)
+{
+    auto drive = devtest::makeDrive("vmc", 7);
+    ScopeRequest r = stepTrigger(25.0, 1, ScopeEdge::Rising, 200);
+    r.mode = ScopeMode::Normal;
+    ASSERT_TRUE(drive->armScope(r).ok());
+    TestRequest step;
+    step.axis = "X";
+    step.type = TestType::Step;
+    step.amplitude = kStepRadS;
+    step.durationS = kStepDurationS;
+    for (int k = 1; k <= 2; ++k) {
+        for (int i = 0; i < 3; ++i)
+            (void)drive->pollScope();
+        ASSERT_TRUE(runTest(*drive, step, {}).ok());
+        for (int i = 0; i < 3; ++i)
+            (void)drive->pollScope();
+        auto s = drive->pollScope();
+        ASSERT_TRUE(s.ok());
+        EXPECT_EQ(s->captures, static_cast<std::uint64_t>(k));
+        EXPECT_NE(s->state, ScopeState::Done);
+        auto c = drive->readScopeCapture();
+        ASSERT_TRUE(c.ok());
+        EXPECT_EQ(c->number, static_cast<std::uint64_t>(k));
+        EXPECT_EQ(c->triggerRow(), 50u);
+        EXPECT_EQ(c->columns[0][50], kStepRadS);
+        EXPECT_EQ(c->columns[0][49], 0.0);
+    }
+}
+
+TEST(Scope, RollModeStreamsEverySampleOnce)
+{
+    auto drive = devtest::makeDrive("vmc", 7);
+    ScopeRequest r;
+    r.axis = "X";
+    r.mode = ScopeMode::Roll;
+    r.channels = {"t_s",       "velocity_cmd_rad_s", "motor_vel_rad_s", "torque_cmd_Nm",
+                  "current_A", "position_cmd_m",     "table_pos_m",     "following_error_m"};
+    ASSERT_TRUE(drive->armScope(r).ok());
+    ScopeCapture all;
+    all.triggered = false;
+    all.columns.assign(r.channels.size(), {});
+    std::uint64_t next = 0;
+    bool first = true;
+    for (int poll = 0; poll < 40; ++poll) { // 40 × 50 ms of machine time
+        ASSERT_TRUE(drive->pollScope().ok());
+        auto rows = drive->readScopeRows(next, 100000);
+        ASSERT_TRUE(rows.ok());
+        if (!first)
+            ASSERT_EQ(rows->firstSample, next) << "samples lost";
+        first = false;
+        appendScopeRows(all, *rows);
+        next = rows->firstSample + rows->rows;
+    }
+    // 2 s at 4 kHz: 8000 velocity periods run, every one a row (the slices are whole current periods).
+    EXPECT_EQ(all.rows(), 8000u);
+    EXPECT_EQ(all.missingSamples(), 0u);
+    for (std::size_t i = 1; i < all.rows(); ++i)
+        ASSERT_EQ(all.samples[i], all.samples[i - 1] + 1);
+    for (std::size_t i = 0; i < all.rows(); ++i)
+        ASSERT_NEAR(all.columns[0][i], static_cast<double>(all.samples[i]) * 250e-6, 1e-12);
+    EXPECT_EQ(drive->pollScope()->state, ScopeState::Rolling);
+    ASSERT_TRUE(drive->stopScope().ok());
+    EXPECT_EQ(drive->pollScope()->state, ScopeState::Idle);
+}
+
+TEST(Scope, RequestsOutsideTheDrivesFiguresAreRefusedNamingTheField)
+{
+    auto drive = devtest::makeDrive("vmc", 7);
+    auto refused = [&](const ScopeRequest& r, const std::string& words) {
+        auto st = drive->armScope(r);
+        ASSERT_FALSE(st.ok()) << words;
+        EXPECT_NE(st.error().detail.find(words), std::string::npos) << st.error().detail;
+    };
+    ScopeRequest r = stepTrigger(25.0, 1, ScopeEdge::Rising, 400);
+    ScopeRequest bad = r;
+    bad.channels.push_back("nonsense");
+    refused(bad, "scope channel 'nonsense' is not traceable on axis X (channels: t_s, velocity_cmd_rad_s");
+    bad = r;
+    bad.preTriggerPct = 101.0;
+    refused(bad, "pre-trigger 101 % outside 0..100 %");
+    bad = r;
+    bad.triggerChannel = "current_A";
+    refused(bad, "trigger channel 'current_A' is not one of the traced channels");
+    bad = r;
+    bad.divider = 0;
+    refused(bad, "scope divider 0 outside 1..");
+    bad = r;
+    bad.lengthSamples = 1ull << 40;
+    refused(bad, "scope length 1099511627776 samples outside 2..");
+    bad = r;
+    bad.triggerLevel = std::nan("");
+    refused(bad, "trigger level must be finite");
+    bad = r;
+    bad.channels = {"t_s", "t_s"};
+    bad.triggerChannel = "t_s";
+    refused(bad, "given twice");
+}
+
+TEST(Scope, ABackendWithoutAScopeSaysSo)
+{
+    // The seam's default (the replay backend keeps it): refused with NotFound, capabilities say no scope.
+    struct NoScope : Drive {
+        Result<DriveIdentity> identify() override { return DriveIdentity{}; }
+        Result<std::vector<model::ParameterMeta>> parameterMetadata(const std::string&) override
+        {
+            return std::vector<model::ParameterMeta>{};
+        }
+        Result<model::ParameterValues> readParameters(const std::string&, std::span<const std::string>) override
+        {
+            return model::ParameterValues{};
+        }
+        Status writeParameters(const std::string&, const model::ParameterValues&) override { return Status::success(); }
+        Status startTest(const TestRequest&) override { return Status::success(); }
+        Result<TestStatus> pollTest() override { return TestStatus{}; }
+        Result<model::Capture> readTrace() override { return model::Capture{}; }
+        Status abortTest() override { return Status::success(); }
+    } d;
+    ScopeRequest r = stepTrigger(25.0, 1, ScopeEdge::Rising, 400);
+    auto st = d.armScope(r);
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::NotFound);
+    EXPECT_EQ(st.error().detail, "this drive has no scope (axis X)");
+    EXPECT_FALSE(DriveCapabilities{}.scope);
+}
+
+TEST(ScopeRecorder, TheRingKeepsTheNewestRowsAndTellsWhatWasOverwritten)
+{
+    ScopeSetup s;
+    s.channels = {0, 1};
+    s.mode = ScopeMode::Roll;
+    s.rateHz = 1000.0;
+    ScopeRecorder rec;
+    rec.arm(s, 10);
+    for (std::uint64_t n = 100; n < 125; ++n) {
+        const double row[] = {static_cast<double>(n), -static_cast<double>(n)};
+        rec.push(n, row);
+    }
+    const ScopeStatus st = rec.status();
+    EXPECT_EQ(st.nextSample, 125u);
+    EXPECT_EQ(st.oldestSample, 115u);
+    const ScopeRows r = rec.rows(100, 1000); // rows 100..114 were overwritten
+    EXPECT_EQ(r.firstSample, 115u);
+    ASSERT_EQ(r.rows, 10u);
+    for (std::size_t i = 0; i < r.rows; ++i) {
+        EXPECT_EQ(r.values[2 * i], 115.0 + static_cast<double>(i));
+        EXPECT_EQ(r.values[2 * i + 1], -115.0 - static_cast<double>(i));
+    }
+    EXPECT_EQ(rec.rows(125, 10).rows, 0u);
+}
+
+TEST(ScopeRecorder, PreTriggerSamplesRoundAndStayInsideTheCapture)
+{
+    EXPECT_EQ(scopePreTriggerSamples(0.0, 400), 0u);
+    EXPECT_EQ(scopePreTriggerSamples(25.0, 400), 100u);
+    EXPECT_EQ(scopePreTriggerSamples(33.3, 10), 3u);
+    EXPECT_EQ(scopePreTriggerSamples(35.0, 10), 4u); // 3.5 rounds away from zero
+    EXPECT_EQ(scopePreTriggerSamples(100.0, 400), 399u);
+}
