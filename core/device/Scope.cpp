@@ -282,6 +282,31 @@ Result<ScopeCapture> ScopeRecorder::capture() const
     return m_capture;
 }
 
+model::Capture scopeCaptureToTable(const ScopeCapture& c, const std::string& axis,
+                                   const std::map<std::string, std::string>& extra)
+{
+    model::Capture t;
+    t.metadata = extra;
+    model::setMetadataNumber(t.metadata, "fs_Hz", c.rateHz);
+    t.metadata["axis"] = axis;
+    t.metadata["scope_mode"] = c.triggered ? "triggered" : "roll";
+    if (c.triggered) {
+        t.metadata["trigger_sample"] = std::to_string(c.triggerSample);
+        t.metadata["trigger_row"] = std::to_string(c.triggerRow());
+    }
+    t.metadata["missing_samples"] = std::to_string(c.missingSamples());
+    model::Channel sample{"sample", {}};
+    sample.data.reserve(c.samples.size());
+    for (const auto n : c.samples)
+        sample.data.push_back(static_cast<double>(n));
+    t.channels.push_back(std::move(sample));
+    for (std::size_t k = 0; k < c.channels.size() && k < c.columns.size(); ++k) {
+        t.metadata["unit." + c.channels[k].name] = c.channels[k].unit;
+        t.channels.push_back({c.channels[k].name, c.columns[k]});
+    }
+    return t;
+}
+
 void appendScopeRows(ScopeCapture& capture, const ScopeRows& rows)
 {
     const std::size_t width = capture.columns.size();

@@ -13,6 +13,7 @@
 #include "core/model/Result.h"
 
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -162,6 +163,12 @@ private:
     bool m_haveCapture = false;
     ScopeCapture m_capture;
 };
+
+/// A scope capture as a capture table for the scope CSV (core/io/ScopeCsv.h): column `sample` (the drive's
+/// sample numbers), then the channels; metadata fs_Hz, axis, the mode, the trigger, missing_samples and
+/// unit.CHANNEL for every channel. `extra` is added to the metadata (connection, divider …).
+model::Capture scopeCaptureToTable(const ScopeCapture& capture, const std::string& axis,
+                                   const std::map<std::string, std::string>& extra = {});
 
 /// Appends roll-mode rows (channels in the capture's order) to a roll capture.
 void appendScopeRows(ScopeCapture& capture, const ScopeRows& rows);
