@@ -25,6 +25,8 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <set>
+#include <thread>
 
 #include "tests/app/cli/SimDriveProcess.h"
 
@@ -567,6 +569,142 @@ TEST_P(DriveConformance, LostConnectionIsReportedWithinTheTimeout)
     EXPECT_EQ(s.error().code, ErrorCode::Device);
     EXPECT_NE(s.error().detail.find(server.uri("timeout_ms=300")), std::string::npos) << s.error().detail;
     EXPECT_LT(elapsed, 3 * timeoutMs / 1000.0 + 0.15 + 0.5) << s.error().detail;
+}
+
+// The scope (docs/scope.md): for every backend whose capabilities offer it.
+/// Polls the scope until one of the states or the wall-clock limit.
+ScopeState pollScopeUntil(Drive& d, std::initializer_list<ScopeState> states, double wallS)
+{
+    const auto end = Clock::now() + std::chrono::duration<double>(wallS);
+    ScopeState last = ScopeState::Idle;
+    while (Clock::now() < end) {
+        auto s = d.pollScope();
+        if (!s)
+            return last;
+        last = s->state;
+        for (const auto w : states) {
+            if (last == w)
+                return last;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return last;
+}
+
+TEST_P(DriveConformance, ScopeDescribesItsChannelsWithUnits)
+{
+    if (!offered(m_caps.scope, "scope channels", "a scope")) {
+        // The other side: a backend without a scope refuses clearly, before anything is armed.
+        auto c = m_drive->scopeCapabilities(m_axis);
+        ASSERT_FALSE(c.ok());
+        EXPECT_NE(c.error().detail.find("no scope"), std::string::npos) << c.error().detail;
+        ScopeRequest r;
+        r.axis = m_axis;
+        r.channels = {"t_s"};
+        r.mode = ScopeMode::Roll;
+        auto st = m_drive->armScope(r);
+        ASSERT_FALSE(st.ok());
+        EXPECT_NE(st.error().detail.find("no scope"), std::string::npos) << st.error().detail;
+        return;
+    }
+    auto c = m_drive->scopeCapabilities(m_axis);
+    ASSERT_TRUE(c.ok()) << errorText(c.error());
+    ASSERT_FALSE(c->channels.empty());
+    std::set<std::string> names;
+    for (const auto& ch : c->channels) {
+        EXPECT_FALSE(ch.name.empty());
+        EXPECT_FALSE(ch.unit.empty()) << ch.name << " has no unit";
+        EXPECT_TRUE(names.insert(ch.name).second) << ch.name << " listed twice";
+    }
+    EXPECT_GT(c->fastestRateHz, 0.0);
+    EXPECT_GE(c->maxChannels, 1);
+    EXPECT_GE(c->maxDivider, 1);
+    EXPECT_GE(c->maxValues, 2u * static_cast<std::uint64_t>(c->maxChannels));
+    EXPECT_GE(c->ringValues, 2u * static_cast<std::uint64_t>(c->maxChannels));
+    // The same answer twice; an unknown channel refused by name.
+    EXPECT_EQ(m_drive->scopeCapabilities(m_axis)->channels.size(), c->channels.size());
+    ScopeRequest bad;
+    bad.axis = m_axis;
+    bad.mode = ScopeMode::Roll;
+    bad.channels = {c->channels.front().name, "no_such_channel"};
+    auto st = m_drive->armScope(bad);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().detail.find("'no_such_channel'"), std::string::npos) << st.error().detail;
+}
+
+TEST_P(DriveConformance, ScopeTriggersAtThePreTriggerRowOnAStep)
+{
+    if (!offered(m_caps.scope && m_caps.offers(TestType::Step), "scope trigger on a step", "a scope and a step test"))
+        return;
+    auto c = m_drive->scopeCapabilities(m_axis);
+    ASSERT_TRUE(c.ok());
+    const bool hasCmd = std::any_of(c->channels.begin(), c->channels.end(),
+                                    [](const ScopeChannelInfo& ch) { return ch.name == "velocity_cmd_rad_s"; });
+    if (!offered(hasCmd, "scope trigger on a step", "a velocity_cmd_rad_s scope channel"))
+        return;
+    auto step = requestFor(TestType::Step).value();
+    ScopeRequest r;
+    r.axis = m_axis;
+    r.channels = {"velocity_cmd_rad_s"};
+    r.triggerChannel = "velocity_cmd_rad_s";
+    r.triggerLevel = 0.5 * step.amplitude;
+    r.edge = ScopeEdge::Rising;
+    r.preTriggerPct = 30.0;
+    r.lengthSamples = 200;
+    ASSERT_TRUE(m_drive->armScope(r).ok());
+    ASSERT_EQ(pollScopeUntil(*m_drive, {ScopeState::Waiting}, 10.0), ScopeState::Waiting);
+    ASSERT_TRUE(m_drive->startTest(step).ok());
+    EXPECT_EQ(runToEnd(*m_drive).last.state, TestState::Completed);
+    ASSERT_EQ(pollScopeUntil(*m_drive, {ScopeState::Done}, 10.0), ScopeState::Done);
+    auto cap = m_drive->readScopeCapture();
+    ASSERT_TRUE(cap.ok()) << errorText(cap.error());
+    ASSERT_EQ(cap->rows(), 200u);
+    ASSERT_EQ(cap->triggerRow(), 60u); // 30 % of 200
+    EXPECT_EQ(cap->missingSamples(), 0u);
+    EXPECT_LT(cap->columns[0][59], r.triggerLevel);
+    EXPECT_GE(cap->columns[0][60], r.triggerLevel);
+    EXPECT_EQ(cap->columns[0][60], step.amplitude); // the step itself, not a ramp through the level
+}
+
+TEST_P(DriveConformance, ScopeRollModeDeliversEverySampleOnce)
+{
+    if (!offered(m_caps.scope, "scope roll mode", "a scope"))
+        return;
+    auto c = m_drive->scopeCapabilities(m_axis);
+    ASSERT_TRUE(c.ok());
+    ScopeRequest r;
+    r.axis = m_axis;
+    r.mode = ScopeMode::Roll;
+    for (std::size_t i = 0; i < c->channels.size() && static_cast<int>(r.channels.size()) < std::min(8, c->maxChannels);
+         ++i)
+        r.channels.push_back(c->channels[i].name);
+    ASSERT_TRUE(m_drive->armScope(r).ok());
+    ScopeCapture all;
+    all.triggered = false;
+    all.columns.assign(r.channels.size(), {});
+    std::uint64_t next = 0;
+    bool started = false;
+    const auto end = Clock::now() + std::chrono::milliseconds(600);
+    while (Clock::now() < end || all.rows() < 100) {
+        ASSERT_TRUE(m_drive->pollScope().ok());
+        auto rows = m_drive->readScopeRows(next, 100000);
+        ASSERT_TRUE(rows.ok()) << errorText(rows.error());
+        if (rows->rows == 0)
+            continue;
+        if (started)
+            ASSERT_EQ(rows->firstSample, next) << "samples lost between reads";
+        started = true;
+        appendScopeRows(all, *rows);
+        next = rows->firstSample + rows->rows;
+        ASSERT_LT(all.rows(), 10'000'000u);
+    }
+    EXPECT_EQ(all.missingSamples(), 0u);
+    for (std::size_t i = 1; i < all.rows(); ++i)
+        ASSERT_EQ(all.samples[i], all.samples[i - 1] + 1);
+    ASSERT_TRUE(m_drive->stopScope().ok());
+    auto s = m_drive->pollScope();
+    ASSERT_TRUE(s.ok());
+    EXPECT_EQ(s->state, ScopeState::Idle);
 }
 
 } // namespace

@@ -5,8 +5,11 @@
 #include "core/device/Scope.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/device/TestRunner.h"
+#include "core/io/CaptureCsv.h"
+#include "core/io/ScopeCsv.h"
 
 #include <cmath>
+#include <filesystem>
 #include <gtest/gtest.h>
 
 #include "tests/core/device/DriveTestUtil.h"
@@ -335,4 +338,55 @@ TEST(ScopeRecorder, PreTriggerSamplesRoundAndStayInsideTheCapture)
     EXPECT_EQ(scopePreTriggerSamples(33.3, 10), 3u);
     EXPECT_EQ(scopePreTriggerSamples(35.0, 10), 4u); // 3.5 rounds away from zero
     EXPECT_EQ(scopePreTriggerSamples(100.0, 400), 399u);
+}
+
+TEST(ScopeCsv, ACaptureReloadsIdenticalFromItsCsv)
+{
+    // Every traceable channel of a triggered capture and of a roll record, written as the CLI writes it and
+    // read back: the same sample numbers, rate and every value bit for bit (shortest round-trip text).
+    auto drive = devtest::makeDrive("vmc", 7);
+    auto caps = drive->scopeCapabilities("X");
+    ASSERT_TRUE(caps.ok());
+    ScopeRequest r = stepTrigger(25.0, 1, ScopeEdge::Rising, 400);
+    r.channels.clear();
+    for (const auto& c : caps->channels)
+        r.channels.push_back(c.name);
+    const StepCapture sc = captureStep(*drive, r);
+    ScopeRequest roll;
+    roll.axis = "X";
+    roll.mode = ScopeMode::Roll;
+    roll.channels = {"following_error_m", "motor_vel_rad_s"};
+    ASSERT_TRUE(drive->armScope(roll).ok());
+    ASSERT_TRUE(drive->pollScope().ok());
+    auto rows = drive->readScopeRows(0, 1000);
+    ASSERT_TRUE(rows.ok());
+    ScopeCapture rolled;
+    rolled.triggered = false;
+    rolled.rateHz = 4000.0;
+    rolled.channels = {caps->channels[14], caps->channels[2]};
+    rolled.columns.assign(2, {});
+    appendScopeRows(rolled, *rows);
+    ASSERT_EQ(rolled.rows(), 200u); // one 50 ms slice at 4 kHz
+
+    const auto dir = std::filesystem::temp_directory_path() / "axistune-scope-csv-test";
+    std::filesystem::create_directories(dir);
+    for (const ScopeCapture* c : std::initializer_list<const ScopeCapture*>{&sc.capture, &rolled}) {
+        const auto path = (dir / "scope.csv").string();
+        ASSERT_TRUE(io::writeCaptureCsvFile(path, scopeCaptureToTable(*c, "X", {{"connection", "sim:vmc"}})).ok());
+        auto t = io::readScopeCsvFile(path);
+        ASSERT_TRUE(t.ok()) << t.error().detail;
+        EXPECT_EQ(t->fsHz, c->rateHz);
+        EXPECT_EQ(t->samples, c->samples);
+        EXPECT_EQ(t->missingSamples, 0u);
+        ASSERT_EQ(t->capture.channels.size(), c->channels.size() + 1);
+        EXPECT_EQ(t->capture.channels[0].name, "sample");
+        for (std::size_t k = 0; k < c->channels.size(); ++k) {
+            EXPECT_EQ(t->capture.channels[k + 1].name, c->channels[k].name);
+            EXPECT_EQ(t->capture.metadata.at("unit." + c->channels[k].name), c->channels[k].unit);
+            ASSERT_EQ(t->capture.channels[k + 1].data, c->columns[k]) << c->channels[k].name;
+        }
+        if (c->triggered)
+            EXPECT_EQ(t->capture.metadata.at("trigger_row"), "100");
+    }
+    std::filesystem::remove_all(dir);
 }
