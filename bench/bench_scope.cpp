@@ -3,7 +3,7 @@
 // (--preset vmc), the Modbus client streaming 8 channels at the drive's fastest scope rate for a given
 // wall time. Reports the sustained samples per second (rows × channels) and every lost or repeated sample
 // (from the drive's sample numbers). A figure, not a test: nothing is asserted.
-//   bench_scope [--seconds S]   (default 60)
+//   bench_scope [--seconds S] [--pace F]   (default 60 s; F machine seconds per wall second, default 1: real time)
 #include "core/device/Drive.h"
 #include "core/device/SimDriveServer.h"
 #include "core/model/Number.h"
@@ -19,19 +19,21 @@ using namespace axistune::device;
 
 int main(int argc, char** argv)
 {
-    double seconds = 60.0;
+    double seconds = 60.0, pace = 1.0;
     for (int i = 1; i + 1 < argc; ++i) {
-        if (std::strcmp(argv[i], "--seconds") == 0) {
+        const bool s = std::strcmp(argv[i], "--seconds") == 0, p = std::strcmp(argv[i], "--pace") == 0;
+        if (s || p) {
             const auto v = model::parseNumber(argv[i + 1]);
             if (!v || !(*v > 0.0)) {
-                std::fprintf(stderr, "bench_scope: --seconds '%s' must be a positive number\n", argv[i + 1]);
+                std::fprintf(stderr, "bench_scope: %s '%s' must be a positive number\n", argv[i], argv[i + 1]);
                 return 2;
             }
-            seconds = *v;
+            (s ? seconds : pace) = *v;
         }
     }
     SimDriveServerOptions o;
     o.preset = "vmc";
+    o.pace = pace; // the scope's axis runs at this many machine seconds per wall second
     auto server = SimDriveServer::create(o);
     if (!server) {
         std::fprintf(stderr, "bench_scope: %s\n", server.error().detail.c_str());
