@@ -106,7 +106,8 @@ int runDrive(const DriveOptions& o)
                          {"writes_parameters", caps->writesParameters},
                          {"has_link", caps->hasLink},
                          {"frf_peak_in_output_units", caps->frfPeakInOutputUnits},
-                         {"frf_quantities", quantities}}},
+                         {"frf_quantities", quantities},
+                         {"scope", caps->scope}}},
                        {"limits",
                         {{"frf_amplitude_max_pct", limitJson(lim->frfAmplitudeMaxPct)},
                          {"current_step_max_A", limitJson(lim->currentStepMaxA)},
@@ -115,6 +116,21 @@ int runDrive(const DriveOptions& o)
                          {"motor_speed_max_rad_s", limitJson(lim->motorSpeedMaxRadS)},
                          {"test_duration_max_s", limitJson(lim->testDurationMaxS)},
                          {"travel_window", limitJson(lim->travelWindow)}}}};
+        if (caps->scope) {
+            // The scope's channels with their units (docs/scope.md): what `scope --channels` takes.
+            auto sc = (*drive)->scopeCapabilities(a);
+            if (!sc)
+                return reportError(cmd, sc.error());
+            nlohmann::json channels = nlohmann::json::array();
+            for (const auto& c : sc->channels)
+                channels.push_back({{"name", c.name}, {"unit", c.unit}, {"description", c.description}});
+            axesJson[a]["scope"] = {{"fastest_rate_Hz", sc->fastestRateHz},
+                                    {"max_channels", sc->maxChannels},
+                                    {"max_divider", sc->maxDivider},
+                                    {"max_values", sc->maxValues},
+                                    {"ring_values", sc->ringValues},
+                                    {"channels", channels}};
+        }
     }
     nlohmann::json out{{"connection", o.connect},
                        {"identity",

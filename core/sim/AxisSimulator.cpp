@@ -382,20 +382,8 @@ void AxisSimulator::velocityTick(double t)
     m_torqueCmd = m_p.velKp * e + m_velInt + m_torqueFf;
 
     if (m_tracing && m_traceRate == TraceRate::Velocity && m_velTick % m_traceDiv == 0) {
-        const double row[] = {t,
-                              m_velCmd,
-                              m_velMeas,
-                              m_torqueCmd,
-                              m_injectionNow,
-                              torque(),
-                              m_currentCmd,
-                              PlantModel::current(m_x),
-                              m_voltage,
-                              m_posCmd,
-                              screwLead() * enc,
-                              tablePosition(),
-                              m_lmComp,
-                              m_plant->loadVelocity(m_x)};
+        double row[kSignalCount];
+        signalRow(t, row);
         for (std::size_t c = 0; c < m_trace.size(); ++c)
             m_trace[c].push_back(row[c]);
     }
@@ -491,27 +479,32 @@ std::vector<ScopeSignal> AxisSimulator::scopeSignals() const
             {"following_error" + s, u, "position command followed minus feedback (0 outside position control)"}};
 }
 
+void AxisSimulator::signalRow(double t, double* row) const
+{
+    // In the order of traceChannelNames() and scopeSignals(); m_prevEncoder is this period's encoder reading.
+    const double values[kSignalCount] = {t,
+                                         m_velCmd,
+                                         m_velMeas,
+                                         m_torqueCmd,
+                                         m_injectionNow,
+                                         torque(),
+                                         m_currentCmd,
+                                         PlantModel::current(m_x),
+                                         m_voltage,
+                                         m_posCmd,
+                                         screwLead() * m_prevEncoder,
+                                         tablePosition(),
+                                         m_lmComp,
+                                         m_plant->loadVelocity(m_x)};
+    std::copy(values, values + kSignalCount, row);
+}
+
 void AxisSimulator::scopeTick(double t)
 {
-    const double motorPos = screwLead() * m_prevEncoder;
-    double followingError = 0.0;
-    if (m_mode == ControlMode::Position)
-        followingError = m_loopCmd - m_posFeedback;  // what the position loop saw at its last period
-    const double row[] = {t,
-                          m_velCmd,
-                          m_velMeas,
-                          m_torqueCmd,
-                          m_injectionNow,
-                          torque(),
-                          m_currentCmd,
-                          PlantModel::current(m_x),
-                          m_voltage,
-                          m_posCmd,
-                          motorPos,
-                          tablePosition(),
-                          m_lmComp,
-                          m_plant->loadVelocity(m_x),
-                          followingError};
+    double row[kSignalCount + 1];
+    signalRow(t, row);
+    // The following error as the position loop saw it at its last period (0 outside position control).
+    row[kSignalCount] = m_mode == ControlMode::Position ? m_loopCmd - m_posFeedback : 0.0;
     m_scopeTap(m_velTick - 1, row);
 }
 

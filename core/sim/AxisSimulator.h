@@ -138,6 +138,9 @@ private:
     AxisSimulator(AxisDefinition def, std::uint64_t seed);
     Status configure(const model::ParameterValues& v);
     void velocityTick(double t);
+    /// The velocity-rate trace channels' values now (kSignalCount of them, traceChannelNames() order).
+    static constexpr std::size_t kSignalCount = 14;
+    void signalRow(double t, double* row) const;
     void scopeTick(double t);
     void positionTick(double t, double feedbackPos);
     double frictionMotor() const;

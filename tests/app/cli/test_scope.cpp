@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "tests/app/cli/CliRunner.h"
@@ -305,4 +306,18 @@ TEST(ScopeCsv, BadSampleColumnsAreRefusedNamingLineAndColumn)
     ASSERT_TRUE(t.ok());
     EXPECT_EQ(t->missingSamples, 2u);
     std::filesystem::remove_all(dir);
+}
+
+TEST(CliScope, DriveListsTheScopeChannelsWithUnits)
+{
+    const auto res = runCli("drive --connect sim:vmc --axis X");
+    ASSERT_EQ(res.exitCode, 0) << res.err;
+    const auto j = nlohmann::json::parse(res.out);
+    EXPECT_EQ(j["axes"]["X"]["capabilities"]["scope"], true);
+    const auto& s = j["axes"]["X"]["scope"];
+    EXPECT_EQ(s["fastest_rate_Hz"].get<double>(), 4000.0);
+    ASSERT_EQ(s["channels"].size(), 15u);
+    EXPECT_EQ(s["channels"][14]["name"], "following_error_m");
+    EXPECT_EQ(s["channels"][14]["unit"], "m");
+    EXPECT_EQ(s["channels"][3]["unit"], "N·m");
 }
