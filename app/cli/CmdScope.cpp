@@ -67,38 +67,125 @@ std::string num(double v)
     return model::formatNumber(v, 6);
 }
 
-int runScope(const ScopeOptions& o)
+using Clock = std::chrono::steady_clock;
+
+Clock::time_point after(double seconds)
 {
-    const std::string cmd = "scope";
-    auto fail = [&](ErrorCode code, const std::string& why) { return reportError(cmd, makeError(code, why)); };
+    return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+/// The options as a scope request (the length follows from the drive's rate); errors name the option.
+Result<device::ScopeRequest> requestFromOptions(const ScopeOptions& o)
+{
+    auto bad = [](const std::string& why) { return makeError(ErrorCode::BadInput, why); };
     const bool triggered = o.lengthS > 0.0;
     if ((o.lengthS > 0.0) == (o.continuousS > 0.0))
-        return fail(ErrorCode::BadInput, "give either --length S (a triggered capture) or --continuous S (roll mode)");
+        return bad("give either --length S (a triggered capture) or --continuous S (roll mode)");
     if (!std::isfinite(o.lengthS) || o.lengthS < 0.0 || !std::isfinite(o.continuousS) || o.continuousS < 0.0)
-        return fail(ErrorCode::BadInput, "--length and --continuous must be finite seconds > 0");
+        return bad("--length and --continuous must be finite seconds > 0");
     if (triggered && o.trigger.empty())
-        return fail(ErrorCode::BadInput, "--length needs --trigger CHANNEL:LEVEL:EDGE (use --continuous S to record "
-                                         "without a trigger)");
+        return bad("--length needs --trigger CHANNEL:LEVEL:EDGE (use --continuous S to record without a trigger)");
     if (!triggered && !o.trigger.empty())
-        return fail(ErrorCode::BadInput, "--trigger applies to --length captures, not to --continuous");
+        return bad("--trigger applies to --length captures, not to --continuous");
     if (!(o.prePct >= 0.0 && o.prePct <= 100.0))
-        return fail(ErrorCode::BadInput, "--pre " + num(o.prePct) + ": the pre-trigger share must lie in 0..100 %");
+        return bad("--pre " + num(o.prePct) + ": the pre-trigger share must lie in 0..100 %");
     if (!(o.timeoutS > 0.0) || !std::isfinite(o.timeoutS))
-        return fail(ErrorCode::BadInput, "--timeout must be finite seconds > 0");
+        return bad("--timeout must be finite seconds > 0");
     if (!std::isfinite(o.stepRadS))
-        return fail(ErrorCode::BadInput, "--step must be a finite motor velocity [rad/s]");
+        return bad("--step must be a finite motor velocity [rad/s]");
     device::ScopeRequest r;
     r.axis = o.axis;
     r.divider = o.divider;
     r.mode = triggered ? device::ScopeMode::Single : device::ScopeMode::Roll;
     r.preTriggerPct = o.prePct;
-    for (const auto& c : splitList(o.channels, ','))
-        r.channels.push_back(c);
+    r.channels = splitList(o.channels, ',');
     if (triggered) {
         if (auto st = parseTrigger(o.trigger, r); !st)
-            return reportError(cmd, st.error());
+            return st.error();
     }
+    return r;
+}
 
+/// Waits for the single capture (running the --step event once the pre-trigger rows are in) and reads it.
+Result<device::ScopeCapture> captureTriggered(device::Drive& drive, const ScopeOptions& o)
+{
+    const auto deadline = after(o.timeoutS);
+    bool stepped = o.stepRadS == 0.0;
+    while (true) {
+        auto s = drive.pollScope();
+        if (!s)
+            return s.error();
+        if (s->state == device::ScopeState::Done)
+            break;
+        if (!stepped && s->state == device::ScopeState::Waiting) {
+            device::TestRequest step;
+            step.axis = o.axis;
+            step.type = device::TestType::Step;
+            step.amplitude = o.stepRadS;
+            step.durationS = std::max(0.05, 1.2 * o.lengthS);
+            if (auto run = device::runTest(drive, step, {}); !run)
+                return run.error();
+            stepped = true;
+            continue;
+        }
+        if (Clock::now() > deadline) {
+            (void)drive.stopScope();
+            return makeError(ErrorCode::Device, "no trigger within --timeout " + num(o.timeoutS) + " s (scope " +
+                                                    device::scopeStateName(s->state) + ", " + o.trigger + ")");
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return drive.readScopeCapture();
+}
+
+/// Roll mode: `rows` consecutive rows (a gap where the drive overwrote rows before they were read).
+Result<device::ScopeCapture> captureRoll(device::Drive& drive, const device::ScopeRequest& r,
+                                         const device::ScopeCapabilities& caps, std::size_t rows, double rate,
+                                         const ScopeOptions& o)
+{
+    device::ScopeCapture capture;
+    capture.triggered = false;
+    capture.rateHz = rate;
+    for (const auto& name : r.channels) {
+        for (const auto& ch : caps.channels) {
+            if (ch.name == name)
+                capture.channels.push_back(ch);
+        }
+    }
+    capture.columns.assign(r.channels.size(), {});
+    std::uint64_t next = 0;
+    // The record's own length plus --timeout of wall time at most.
+    const auto deadline = after(o.continuousS + o.timeoutS);
+    while (capture.rows() < rows) {
+        if (auto s = drive.pollScope(); !s)
+            return s.error();
+        auto got = drive.readScopeRows(next, rows - capture.rows());
+        if (!got)
+            return got.error();
+        device::appendScopeRows(capture, *got);
+        if (got->rows > 0)
+            next = got->firstSample + got->rows;
+        if (Clock::now() > deadline) {
+            (void)drive.stopScope();
+            return makeError(ErrorCode::Device, "roll mode delivered " + std::to_string(capture.rows()) + " of " +
+                                                    std::to_string(rows) + " rows within " +
+                                                    num(o.continuousS + o.timeoutS) + " s");
+        }
+        if (got->rows == 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    (void)drive.stopScope();
+    return capture;
+}
+
+int runScope(const ScopeOptions& o)
+{
+    const std::string cmd = "scope";
+    auto req = requestFromOptions(o);
+    if (!req)
+        return reportError(cmd, req.error());
+    device::ScopeRequest r = std::move(req).value();
+    const bool triggered = r.mode != device::ScopeMode::Roll;
     auto opened = device::connect({o.connect, o.seed});
     if (!opened)
         return reportError(cmd, opened.error());
@@ -110,84 +197,17 @@ int runScope(const ScopeOptions& o)
     const double seconds = triggered ? o.lengthS : o.continuousS;
     const double rows = std::round(seconds * rate);
     if (!(rows >= 2.0))
-        return fail(ErrorCode::BadInput, std::string(triggered ? "--length " : "--continuous ") + num(seconds) +
-                                             " s is shorter than two samples at " + num(rate) + " Hz");
+        return reportError(cmd, makeError(ErrorCode::BadInput, std::string(triggered ? "--length " : "--continuous ") +
+                                                                   num(seconds) + " s is shorter than two samples at " +
+                                                                   num(rate) + " Hz"));
     r.lengthSamples = triggered ? static_cast<std::uint64_t>(rows) : 0;
     if (auto st = drive.armScope(r); !st)
         return reportError(cmd, st.error());
-
-    using Clock = std::chrono::steady_clock;
-    const auto deadline =
-        Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.timeoutS));
-    device::ScopeCapture capture;
-    if (triggered) {
-        bool stepped = o.stepRadS == 0.0;
-        while (true) {
-            auto s = drive.pollScope();
-            if (!s)
-                return reportError(cmd, s.error());
-            if (s->state == device::ScopeState::Done)
-                break;
-            if (!stepped && s->state == device::ScopeState::Waiting) {
-                // The known event: a velocity step, started once the pre-trigger rows are in.
-                device::TestRequest step;
-                step.axis = o.axis;
-                step.type = device::TestType::Step;
-                step.amplitude = o.stepRadS;
-                step.durationS = std::max(0.05, 1.2 * o.lengthS);
-                auto run = device::runTest(drive, step, {});
-                if (!run)
-                    return reportError(cmd, run.error());
-                stepped = true;
-                continue;
-            }
-            if (Clock::now() > deadline) {
-                (void)drive.stopScope();
-                return fail(ErrorCode::Device, "no trigger within --timeout " + num(o.timeoutS) + " s (scope " +
-                                                   device::scopeStateName(s->state) + ", " + o.trigger + ")");
-            }
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        }
-        auto c = drive.readScopeCapture();
-        if (!c)
-            return reportError(cmd, c.error());
-        capture = std::move(c).value();
-    } else {
-        capture.triggered = false;
-        capture.rateHz = rate;
-        for (const auto& name : r.channels) {
-            for (const auto& ch : caps->channels) {
-                if (ch.name == name)
-                    capture.channels.push_back(ch);
-            }
-        }
-        capture.columns.assign(r.channels.size(), {});
-        const auto want = static_cast<std::size_t>(rows);
-        std::uint64_t next = 0;
-        // Roll mode runs for the requested number of rows; the wall-clock limit is the record plus --timeout.
-        const auto rollDeadline =
-            deadline + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-        while (capture.rows() < want) {
-            auto s = drive.pollScope();
-            if (!s)
-                return reportError(cmd, s.error());
-            auto got = drive.readScopeRows(next, want - capture.rows());
-            if (!got)
-                return reportError(cmd, got.error());
-            device::appendScopeRows(capture, *got);
-            if (got->rows > 0)
-                next = got->firstSample + got->rows;
-            if (Clock::now() > rollDeadline) {
-                (void)drive.stopScope();
-                return fail(ErrorCode::Device, "roll mode delivered " + std::to_string(capture.rows()) + " of " +
-                                                   std::to_string(want) + " rows within " + num(seconds + o.timeoutS) +
-                                                   " s");
-            }
-            if (got->rows == 0)
-                std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        }
-        (void)drive.stopScope();
-    }
+    auto captured =
+        triggered ? captureTriggered(drive, o) : captureRoll(drive, r, *caps, static_cast<std::size_t>(rows), rate, o);
+    if (!captured)
+        return reportError(cmd, captured.error());
+    const device::ScopeCapture& capture = *captured;
     auto table = device::scopeCaptureToTable(capture, o.axis,
                                              {{"connection", o.connect}, {"divider", std::to_string(o.divider)}});
     if (triggered) {
@@ -211,10 +231,11 @@ int runScope(const ScopeOptions& o)
     if (const int rc = writeJsonResult(cmd, j, ""); rc != 0)
         return rc;
     if (capture.missingSamples() > 0)
-        return fail(ErrorCode::Device, std::to_string(capture.missingSamples()) +
-                                           " samples were lost (overwritten in the drive before they were read); "
-                                           "the gaps are visible in the sample column of " +
-                                           o.out);
+        return reportError(cmd, makeError(ErrorCode::Device,
+                                          std::to_string(capture.missingSamples()) +
+                                              " samples were lost (overwritten in the drive before they were read); "
+                                              "the gaps are visible in the sample column of " +
+                                              o.out));
     return 0;
 }
 
