@@ -168,7 +168,7 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
 {
     const std::size_t n = plan.totalSamples();
     if (record.columns.size() != kHalColumns || record.columns[DriveInput].size() != n ||
-        record.columns[Feedback].size() != n)
+        record.columns[Feedback].size() != n || record.columns[PidOutput].size() != n)
         return makeError(ErrorCode::Internal, "HAL record does not match the plan");
     const std::size_t skip = plan.settlePeriods * plan.design.periodSamples();
     const std::size_t len = plan.periods * plan.design.periodSamples();
@@ -193,7 +193,8 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     md["quantity"] = openLoop ? "open-loop" : "plant";
     md["input"] = "drive_input"; // <pid>.output + injection: what the drive receives
     md["output"] = openLoop ? "-pid_output" : "feedback";
-    md["hal_units"] = "feedback per PID-output unit (the configuration's units)";
+    md["hal_units"] = openLoop ? "none (PID output per PID output)"
+                               : "feedback per PID-output unit (the configuration's units)";
     md["pid"] = plan.axis.pid;
     md["thread"] = plan.axis.thread;
     md["servo_period_ns"] = std::to_string(plan.axis.periodNs);
