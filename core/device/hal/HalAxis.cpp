@@ -27,6 +27,18 @@ Result<std::vector<HalPin>> pins(const HalSessionOptions& o)
     return parsePins(*text);
 }
 
+/// `halcmd -s show thread [NAME]`, parsed.
+Result<std::vector<HalThread>> threads(const HalSessionOptions& o, const std::string& name = {})
+{
+    std::vector<std::string> args{"-s", "show", "thread"};
+    if (!name.empty())
+        args.push_back(name);
+    auto text = runHalcmd(o, args);
+    if (!text)
+        return text.error();
+    return parseThreads(*text);
+}
+
 Result<std::vector<HalSignal>> signals(const HalSessionOptions& o)
 {
     auto text = runHalcmd(o, {"-s", "show", "sig"});
@@ -56,13 +68,10 @@ void waitPeriods(std::int64_t periodNs)
 /// The 1-based position of the axis's pid function in its thread (halcmd addf takes positions from 1).
 Result<long> pidPlace(const HalSessionOptions& options, const HalAxis& axis)
 {
-    auto tt = runHalcmd(options, {"-s", "show", "thread", axis.thread});
-    if (!tt)
-        return tt.error();
-    auto threads = parseThreads(*tt);
-    if (!threads || threads->empty())
+    auto ts = threads(options, axis.thread);
+    if (!ts || ts->empty())
         return makeError(ErrorCode::Device, "cannot read thread " + axis.thread);
-    const auto& fns = threads->front().functions;
+    const auto& fns = ts->front().functions;
     const auto it = std::find(fns.begin(), fns.end(), axis.pidFunction);
     if (it == fns.end())
         return makeError(ErrorCode::Device, axis.pidFunction + " is no longer on " + axis.thread);
@@ -112,14 +121,11 @@ Result<HalAxis> discoverAxis(const HalSessionOptions& options, const std::string
     a.maxOutput = std::abs(pinNumber(*ps, pid + ".maxoutput"));
     a.maxError = std::abs(pinNumber(*ps, pid + ".maxerror"));
 
-    auto tt = runHalcmd(options, {"-s", "show", "thread"});
-    if (!tt)
-        return tt.error();
-    auto threads = parseThreads(*tt);
-    if (!threads)
-        return threads.error();
+    auto ts = threads(options);
+    if (!ts)
+        return ts.error();
     a.pidFunction = pid + ".do-pid-calcs";
-    for (const auto& t : *threads) {
+    for (const auto& t : *ts) {
         if (std::find(t.functions.begin(), t.functions.end(), a.pidFunction) != t.functions.end()) {
             a.thread = t.name;
             a.periodNs = t.periodNs;
@@ -270,14 +276,11 @@ Status removeNotch(const HalSessionOptions& options)
         if (auto r = runHalcmd(options, c); !r)
             return r.error();
     // Off its thread, two periods, then unloaded (as the injection).
-    auto tt = runHalcmd(options, {"-s", "show", "thread"});
-    if (!tt)
-        return tt.error();
-    auto threads = parseThreads(*tt);
-    if (!threads)
-        return threads.error();
+    auto ts = threads(options);
+    if (!ts)
+        return ts.error();
     std::int64_t period = 0;
-    for (const auto& t : *threads)
+    for (const auto& t : *ts)
         if (std::find(t.functions.begin(), t.functions.end(), notch) != t.functions.end()) {
             if (auto r = runHalcmd(options, {"delf", notch, t.name}); !r)
                 return r.error();
@@ -383,16 +386,13 @@ Status removeLeftoverInjection(const HalSessionOptions& options)
         if (s.name.rfind("axistune-", 0) == 0)
             cmds.push_back({"delsig", s.name});
     // Off the thread first; unloaded two periods later (see HalInjection::remove).
-    auto tt = runHalcmd(options, {"-s", "show", "thread"});
-    if (!tt)
-        return tt.error();
-    auto threads = parseThreads(*tt);
-    if (!threads)
-        return threads.error();
+    auto ts = threads(options);
+    if (!ts)
+        return ts.error();
     std::int64_t longestPeriod = 0;
     const bool ours[] = {true, findSignal(*sigs, kExcNet) != nullptr, findSignal(*sigs, kValidNet) != nullptr};
     const char* fns[] = {kInject, "streamer.0", "sampler.0"};
-    for (const auto& t : *threads)
+    for (const auto& t : *ts)
         for (std::size_t i = 0; i < 3; ++i)
             if (ours[i] && std::find(t.functions.begin(), t.functions.end(), fns[i]) != t.functions.end()) {
                 cmds.push_back({"delf", fns[i], t.name});
