@@ -52,6 +52,19 @@ BackendSetting makeSetting(std::string name, std::string label, BackendSetting::
     return s;
 }
 
+void setFileSetting(DriveBackend& backend, std::string label, std::string hint)
+{
+    BackendSetting file = makeSetting("file", std::move(label), BackendSetting::Type::File);
+    file.required = true;
+    file.hint = std::move(hint);
+    backend.settings = {file};
+    backend.uriFromSettings = [b = backend](const SettingValues& v) -> Result<std::string> {
+        if (auto st = checkSettings(b, v); !st)
+            return st.error();
+        return b.scheme + v.at("file");
+    };
+}
+
 SettingValues defaultSettings(const DriveBackend& backend)
 {
     SettingValues v;

@@ -61,6 +61,10 @@ const std::vector<DriveBackend>& registeredBackends();
 const DriveBackend* findBackend(const std::string& uri);
 /// "sim:PRESET[...], modbus://HOST:PORT[...] or replay:FILE" for messages and help texts.
 std::string registeredUriForms();
+/// Gives a backend whose URI is its scheme followed by a file path (replay:, linuxcnc:) its one required File setting
+/// "file" (label and hint as given, English, translated by the GUI) and the uriFromSettings that builds that URI.
+void setFileSetting(DriveBackend& backend, std::string label, std::string hint);
+
 /// Settings of a backend with their default values.
 SettingValues defaultSettings(const DriveBackend& backend);
 /// Checks the values of a settings form against their descriptions (required, integer range, choice);

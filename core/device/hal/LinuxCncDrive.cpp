@@ -224,16 +224,8 @@ DriveBackend linuxcncBackend()
         "DriveRegistry",
         "Attaches to a LinuxCNC running from this INI: its joints' pid instances and the INI keys "
         "that feed their gains are read from its HAL files; axes by their letters (docs/linuxcnc.md).");
-    BackendSetting file =
-        makeSetting("file", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "INI file"), BackendSetting::Type::File);
-    file.required = true;
-    file.hint = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "the INI LinuxCNC was started from");
-    b.settings = {file};
-    b.uriFromSettings = [b](const SettingValues& v) -> Result<std::string> {
-        if (auto st = checkSettings(b, v); !st)
-            return st.error();
-        return kScheme + v.at("file");
-    };
+    setFileSetting(b, AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "INI file"),
+                   AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "the INI LinuxCNC was started from"));
     b.open = [](const ConnectionSettings& s) -> Result<std::unique_ptr<Drive>> {
         const std::string path = s.uri.substr(kScheme.size());
         if (path.empty())

@@ -254,16 +254,8 @@ DriveBackend replayBackend()
     b.description = AXISTUNE_TRANSLATE_NOOP(
         "DriveRegistry", "Plays back a capture CSV of `axistune-cli capture` as a drive: only the recorded test on the "
                          "recorded axis, parameters read-only (docs/drive-seam.md).");
-    BackendSetting file =
-        makeSetting("file", AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Capture file"), BackendSetting::Type::File);
-    file.required = true;
-    file.hint = AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "capture CSV with test, axis and fs_Hz metadata");
-    b.settings = {file};
-    b.uriFromSettings = [b](const SettingValues& v) -> Result<std::string> {
-        if (auto st = checkSettings(b, v); !st)
-            return st.error();
-        return kScheme + v.at("file");
-    };
+    setFileSetting(b, AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "Capture file"),
+                   AXISTUNE_TRANSLATE_NOOP("DriveRegistry", "capture CSV with test, axis and fs_Hz metadata"));
     b.open = [](const ConnectionSettings& s) -> Result<std::unique_ptr<Drive>> {
         const std::string path = s.uri.substr(kScheme.size());
         if (path.empty())
