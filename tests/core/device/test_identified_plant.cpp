@@ -32,7 +32,8 @@ std::string writeModel(ident::AxisMotion motion)
     r.coulomb = {kFc, 0.1};
     r.offset = {-3.1648, 0.04};
     const auto path = std::filesystem::temp_directory_path() /
-                      (std::string("axistune-model-") + ident::axisMotionName(motion) + ".json");
+                      (std::string("axistune-model-") + ident::axisMotionName(motion) + "-" +
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json");
     std::ofstream(path) << ident::identificationToJson(r, motion).dump(2);
     return path.string();
 }

@@ -14,7 +14,9 @@ namespace {
 
 std::string writeFile(const std::string& name, const std::string& text)
 {
-    const auto dir = std::filesystem::temp_directory_path() / "axistune-replay-test";
+    // One directory per test: ctest runs the tests of this file as parallel processes.
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const auto dir = std::filesystem::temp_directory_path() / "axistune-replay-test" / info->name();
     std::filesystem::create_directories(dir);
     const auto path = (dir / name).string();
     std::ofstream(path) << text;
