@@ -1,6 +1,9 @@
-component axistune_inject """AxisTune's excitation injection at a PID output, guarded in the servo thread.
+component axistune_inject """AxisTune's excitation injection at a PID output or a PID command, guarded in the servo thread.
 
-out = in + excitation while the injection is armed; out = in otherwise. The injection is armed only
+out = in + excitation while the injection is armed; out = in otherwise (at a PID output: 'rate' 0). At a
+PID command (a move: the excitation is a position offset) 'rate' is the move's speed, and a trip does not drop
+the offset at once (a position step) but returns it to zero at that speed: the axis stops its move and
+goes back to where it started. The injection is armed only
 while 'enable' is set, AxisTune's 'heartbeat' pin keeps changing (it stops counting when AxisTune
 hangs, dies or is killed: the injection falls to zero 'timeout' seconds later), |excitation| stays
 within 'limit' and |error| within 'maxerror'. Every trip latches until 'enable' falls; AxisTune
@@ -20,10 +23,12 @@ pin out u32 trip "0: none, 1: heartbeat lost, 2: excitation above limit, 3: foll
 param rw float timeout = 0.04 "Heartbeat timeout [s]";
 param rw float limit = 0.0 "Largest |excitation| accepted; 0: refuse every excitation";
 param rw float maxerror = 0.0 "Largest |error| during the injection; 0: not watched";
+param rw float rate = 0.0 "After a trip or disarm, the injection returns to zero at this speed [units/s]; 0: at once";
 
 variable unsigned lastBeat = 0;
 variable rtapi_s64 lastBeatNs = 0;
 variable int latched = 0;
+variable double held = 0.0;
 
 function _ "Add the guarded injection";
 license "GPL";
@@ -50,6 +55,13 @@ FUNCTION(_) {
         else if (maxerror > 0.0 && fabs(error) > maxerror) { latched = 1; trip = 3; }
     }
     armed = enable && !latched;
-    injected = armed ? excitation : 0.0;
+    if (armed) {
+        held = excitation;
+    } else if (rate > 0.0 && fabs(held) > rate * fperiod) {
+        held -= (held > 0.0 ? rate : -rate) * fperiod;
+    } else {
+        held = 0.0;
+    }
+    injected = held;
     out = in + injected;
 }

@@ -360,8 +360,8 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
         sub.add_option("--test", o->test, "step | jog | hold | current-step | frf | circle")->capture_default_str();
         sub.add_option("--amplitude", o->amplitude, "step: motor velocity step [rad/s]; current-step: q-axis current step [A]; "
                                                     "frf on hal:: the multisine's peak in the PID output's units (instead of --amplitude-pct)");
-        sub.add_option("--distance", o->distance, "jog: distance [m or rad]");
-        sub.add_option("--velocity", o->velocity, "jog: velocity [m/s or rad/s]");
+        sub.add_option("--distance", o->distance, "jog: distance [m or rad; hal:/linuxcnc: the command's units]");
+        sub.add_option("--velocity", o->velocity, "jog: velocity [m/s or rad/s; hal:/linuxcnc: command units/s]");
         sub.add_option("--acceleration", o->acceleration, "jog: acceleration [m/s^2 or rad/s^2]")->capture_default_str();
         sub.add_flag("--back", o->back, "jog: return to the start (a reversal)");
         sub.add_option("--duration", o->duration, "step/hold/current-step: recording length; jog: dwell before and after [s]")

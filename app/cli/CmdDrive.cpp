@@ -106,6 +106,7 @@ int runDrive(const DriveOptions& o)
                          {"writes_parameters", caps->writesParameters},
                          {"has_link", caps->hasLink},
                          {"frf_peak_in_output_units", caps->frfPeakInOutputUnits},
+                         {"jog_in_command_units", caps->jogInCommandUnits},
                          {"frf_quantities", quantities},
                          {"scope", caps->scope}}},
                        {"limits",

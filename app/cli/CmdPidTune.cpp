@@ -12,6 +12,8 @@
 #include "core/device/hal/LinuxCncDrive.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
+#include "core/sim/MotionProfile.h"
+#include "core/tuning/MovePrediction.h"
 #include "core/tuning/PositionPid.h"
 
 #include <cmath>
@@ -37,8 +39,50 @@ struct PidTuneOptions {
     bool apply = false;
     std::string notch = "auto";
     bool removeNotch = false;
+    std::string move; ///< DIST:VEL:ACC in the command's units
     std::string out;
 };
+
+/// A move out and back (--move DIST:VEL:ACC, the command's units), dwelling kMoveDwellS before and after.
+struct MoveSpec {
+    double distance = 0.0, velocity = 0.0, acceleration = 0.0;
+};
+constexpr double kMoveDwellS = 0.05;
+
+Result<MoveSpec> parseMove(const std::string& text)
+{
+    MoveSpec m;
+    double* fields[] = {&m.distance, &m.velocity, &m.acceleration};
+    const char* names[] = {"DIST", "VEL", "ACC"};
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::size_t end = i < 2 ? text.find(':', start) : text.size();
+        if (end == std::string::npos)
+            return makeError(ErrorCode::BadInput, "--move '" + text + "': expected DIST:VEL:ACC");
+        auto x = model::parseNumber(std::string_view(text).substr(start, end - start));
+        if (!x || (i > 0 && !(*x > 0.0)) || (i == 0 && *x == 0.0))
+            return makeError(ErrorCode::BadInput, "--move '" + text + "': " + names[i] + " must be a " +
+                                                      (i == 0 ? "non-zero" : "positive") + " number");
+        *fields[i] = *x;
+        start = end + 1;
+    }
+    return m;
+}
+
+/// The move's position command sampled once per servo period, as hal: streams it (planHalMove).
+std::vector<double> moveCommand(const MoveSpec& m, double periodS)
+{
+    sim::MotionProfile p;
+    p.dwell(kMoveDwellS);
+    p.move(m.distance, m.velocity, m.acceleration);
+    p.move(-m.distance, m.velocity, m.acceleration);
+    p.dwell(kMoveDwellS);
+    std::vector<double> r(static_cast<std::size_t>(std::ceil(p.duration() / periodS)) + 1);
+    for (std::size_t i = 0; i < r.size(); ++i)
+        r[i] = p.at(static_cast<double>(i) * periodS).position;
+    r.back() = 0.0;
+    return r;
+}
 
 const std::vector<std::string> kGainKeys{"Pgain", "Igain", "Dgain", "FF1", "FF2"};
 
@@ -211,6 +255,58 @@ int runPidTune(const PidTuneOptions& o)
         return reportError(cmd, makeError(ErrorCode::BadInput, "--notch must be auto or none"));
     }
 
+    // The following error of the move, predicted for the running and the proposed gains.
+    std::optional<MoveSpec> move;
+    std::optional<tuning::MovePrediction> movePredicted;
+    nlohmann::json moveJson;
+    if (!o.move.empty()) {
+        auto m = parseMove(o.move);
+        if (!m)
+            return reportError(cmd, m.error());
+        move = *m;
+        const auto command = moveCommand(*move, periodS);
+        tuning::MovePredictionOptions mo;
+        mo.input = po.input;
+        auto ept = withHalAxis(**drive, o, [&](const device::hal::HalSessionOptions&, const device::hal::HalAxis& a) {
+            mo.errorPreviousTarget = a.errorPreviousTarget;
+            return Status::success();
+        });
+        if (!ept)
+            return reportError(cmd, ept.error());
+        auto now = tuning::predictMove(freq, *plant, running, periodS, command, mo);
+        mo.notch = notch;
+        auto proposed = tuning::predictMove(freq, *plant, design->gains, periodS, command, mo);
+        if (!proposed)
+            return reportError(cmd, makeError(proposed.error().code, "--move: " + proposed.error().detail));
+        // A move that drives the output into its limit is not linear: the prediction would not hold, and the
+        // integrator stops (LinuxCNC's anti-windup).
+        auto limit = (*drive)->readParameters(o.axis, std::vector<std::string>{"maxoutput"});
+        if (limit && limit->at("maxoutput") > 0.0 && proposed->peakOutput > 0.9 * limit->at("maxoutput"))
+            return reportError(cmd, makeError(ErrorCode::OutOfRange,
+                                              "--move: the predicted PID output peaks at " +
+                                                  model::formatNumber(proposed->peakOutput, 4) + ", above 90 % of " +
+                                                  "maxoutput (" + model::formatNumber(limit->at("maxoutput"), 4) +
+                                                  "): the loop would saturate; choose a gentler move"));
+        movePredicted = *proposed;
+        moveJson = {
+            {"distance", move->distance},
+            {"velocity", move->velocity},
+            {"acceleration", move->acceleration},
+            {"dwell_s", kMoveDwellS},
+            {"error_previous_target", mo.errorPreviousTarget},
+            {"units", "the command's (the configuration's position units)"},
+            {"rule",
+             "Y = P N (C_r + F) R / (1 + P N C) on the measured plant lines, error = R delayed by the pid minus Y "
+             "(docs/linuxcnc.md \"Following error of a move\")"}};
+        if (now)
+            moveJson["running"] = {{"predicted_peak_following_error", now->peakError},
+                                   {"predicted_peak_output", now->peakOutput}};
+        moveJson["proposed"] = {{"predicted_peak_following_error", proposed->peakError},
+                                {"predicted_peak_output", proposed->peakOutput},
+                                {"extrapolated_share", proposed->extrapolatedShare},
+                                {"low_decade_order", proposed->lowDecadeOrder}};
+    }
+
     nlohmann::json out;
     out["connection"] = o.connect;
     out["axis"] = o.axis;
@@ -277,10 +373,37 @@ int runPidTune(const PidTuneOptions& o)
             rc = exitCodeFor(ErrorCode::Safety);
         } else {
             out["applied"] = true;
+            if (move) {
+                // Verify by the move: the measured peak following error against the prediction.
+                device::TestRequest r;
+                r.axis = o.axis;
+                r.type = device::TestType::Jog;
+                r.distance = move->distance;
+                r.velocity = move->velocity;
+                r.acceleration = move->acceleration;
+                r.returnToStart = true;
+                r.durationS = kMoveDwellS;
+                std::cerr << "pid-tune: running the move to verify the predicted following error\n";
+                auto ran = device::runTest(**drive, r);
+                if (!ran) {
+                    moveJson["proposed"]["measured_error"] = ran.error().detail;
+                } else {
+                    const model::Channel* fe = ran->trace->channel("following_error");
+                    double peak = 0.0;
+                    if (fe)
+                        for (double e : fe->data)
+                            peak = std::max(peak, std::abs(e));
+                    moveJson["proposed"]["measured_peak_following_error"] = peak;
+                    moveJson["proposed"]["difference_pct"] =
+                        100.0 * (peak - movePredicted->peakError) / movePredicted->peakError;
+                }
+            }
         }
     } else {
         out["applied"] = false;
     }
+    if (move)
+        out["move"] = moveJson;
     if (const int w = writeJsonResult(cmd, out, o.out); w != 0)
         return w;
     if (rc != 0)
@@ -308,6 +431,9 @@ const CliRegistrar kRegistrar{
                         "auto (a biquad notch at a resonance when it raises the crossover) or none")
              ->capture_default_str();
          sub.add_flag("--remove-notch", o->removeNotch, "remove AxisTune's notch from the HAL session and exit");
+         sub.add_option("--move", o->move,
+                        "DIST:VEL:ACC (command units): predict the following error of this move out and back; with "
+                        "--apply, run it and report the measured peak");
          sub.add_option("--out", o->out, "result JSON (also printed)");
          return [o] { return runPidTune(*o); };
      }}};

@@ -134,6 +134,9 @@ struct DriveCapabilities {
     /// FRF amplitudes in the injection point's own units (TestRequest::amplitudePeak; hal:: the PID output's
     /// units, amplitudePct then is % of the pid's maxoutput); false: % of rated torque only.
     bool frfPeakInOutputUnits = false;
+    /// Jog distance, speed, acceleration and jerk in the command's own units (hal:: the configuration's, e.g. mm and
+    /// mm/s); false: m or rad.
+    bool jogInCommandUnits = false;
     std::vector<FrfQuantity> frfQuantities; ///< quantities besides Default an FRF test can report (hal:: plant, open loop)
     bool scope = false;                ///< the scope answers (Drive::scopeCapabilities, armScope; docs/scope.md)
 

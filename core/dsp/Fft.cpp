@@ -3,10 +3,10 @@
 #include "core/dsp/Fft.h"
 
 #include <fftw3.h>
-
 #include <map>
 #include <mutex>
 #include <new>
+#include <utility>
 
 namespace axistune::dsp {
 
@@ -20,7 +20,7 @@ std::mutex& planMutex()
 
 /// The plan cache; the plans are destroyed at exit (LeakSanitizer in the sanitizer tree reports them
 /// otherwise).
-struct PlanCache : std::map<std::size_t, fftw_plan> {
+struct PlanCache : std::map<std::pair<std::size_t, bool>, fftw_plan> {
     ~PlanCache()
     {
         for (auto& [n, p] : *this)
@@ -30,23 +30,24 @@ struct PlanCache : std::map<std::size_t, fftw_plan> {
 
 // Plans live for the whole program; FFTW plans may be executed concurrently on other aligned
 // arrays through the new-array execute interface.
-fftw_plan cachedPlan(std::size_t n)
+fftw_plan cachedPlan(std::size_t n, bool inverse = false)
 {
     std::lock_guard<std::mutex> lock(planMutex());
     static PlanCache plans;
-    auto it = plans.find(n);
+    auto it = plans.find({n, inverse});
     if (it != plans.end())
         return it->second;
-    double* in = fftw_alloc_real(n);
-    fftw_complex* out = fftw_alloc_complex(n / 2 + 1);
-    fftw_plan p = fftw_plan_dft_r2c_1d(static_cast<int>(n), in, out, FFTW_ESTIMATE);
-    fftw_free(in);
-    fftw_free(out);
-    plans.emplace(n, p);
+    double* real = fftw_alloc_real(n);
+    fftw_complex* spectrum = fftw_alloc_complex(n / 2 + 1);
+    fftw_plan p = inverse ? fftw_plan_dft_c2r_1d(static_cast<int>(n), spectrum, real, FFTW_ESTIMATE)
+                          : fftw_plan_dft_r2c_1d(static_cast<int>(n), real, spectrum, FFTW_ESTIMATE);
+    fftw_free(real);
+    fftw_free(spectrum);
+    plans.emplace(std::make_pair(n, inverse), p);
     return p;
 }
 
-}  // namespace
+} // namespace
 
 RealFft::RealFft(std::size_t n) : m_n(n)
 {
@@ -63,9 +64,29 @@ RealFft::~RealFft()
     fftw_free(reinterpret_cast<fftw_complex*>(m_out));
 }
 
+InverseRealFft::InverseRealFft(std::size_t n) : m_n(n)
+{
+    m_plan = cachedPlan(n, true);
+    m_in = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(n / 2 + 1));
+    m_out = fftw_alloc_real(n);
+    if (m_in == nullptr || m_out == nullptr || m_plan == nullptr)
+        throw std::bad_alloc();
+}
+
+InverseRealFft::~InverseRealFft()
+{
+    fftw_free(reinterpret_cast<fftw_complex*>(m_in));
+    fftw_free(m_out);
+}
+
+void InverseRealFft::execute()
+{
+    fftw_execute_dft_c2r(static_cast<fftw_plan>(m_plan), reinterpret_cast<fftw_complex*>(m_in), m_out);
+}
+
 void RealFft::execute()
 {
     fftw_execute_dft_r2c(static_cast<fftw_plan>(m_plan), m_in, reinterpret_cast<fftw_complex*>(m_out));
 }
 
-}  // namespace axistune::dsp
+} // namespace axistune::dsp

@@ -31,7 +31,29 @@ private:
     std::size_t m_n;
     double* m_in = nullptr;
     std::complex<double>* m_out = nullptr;
-    void* m_plan = nullptr;  // fftw_plan, owned by the global cache
+    void* m_plan = nullptr; // fftw_plan, owned by the global cache
 };
 
-}  // namespace axistune::dsp
+/// The inverse: n/2 + 1 bins of a Hermitian spectrum to n real values (unnormalised: x[t] = Σ_k X[k] e^{+2πikt/n} over
+/// the full spectrum, so x = n × the mean; divide by n for the inverse of RealFft). FFTW's c2r overwrites its input.
+class InverseRealFft {
+public:
+    explicit InverseRealFft(std::size_t n);
+    ~InverseRealFft();
+    InverseRealFft(const InverseRealFft&) = delete;
+    InverseRealFft& operator=(const InverseRealFft&) = delete;
+
+    std::size_t size() const { return m_n; }
+    std::size_t bins() const { return m_n / 2 + 1; }
+    std::span<std::complex<double>> input() { return {m_in, bins()}; }
+    void execute();
+    std::span<const double> output() const { return {m_out, m_n}; }
+
+private:
+    std::size_t m_n;
+    std::complex<double>* m_in = nullptr;
+    double* m_out = nullptr;
+    void* m_plan = nullptr; // fftw_plan, owned by the global cache
+};
+
+} // namespace axistune::dsp

@@ -17,6 +17,7 @@ constexpr const char* kExcNet = "axistune-exc";
 constexpr const char* kValidNet = "axistune-valid";
 constexpr const char* kInjectedNet = "axistune-injected";
 constexpr const char* kErrorNet = "axistune-ferror";
+constexpr const char* kCommandNet = "axistune-cmd";
 constexpr const char* kBeatNet = "axistune-heartbeat";
 
 Result<std::vector<HalPin>> pins(const HalSessionOptions& o)
@@ -78,6 +79,24 @@ Result<long> pidPlace(const HalSessionOptions& options, const HalAxis& axis)
     return static_cast<long>(it - fns.begin()) + 1;
 }
 
+/// Waits until AxisTune's injection adds nothing (a move's offset, returning to zero at its return speed).
+Status waitOffsetReturned(const HalSessionOptions& options, double timeoutS)
+{
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutS);
+    for (;;) {
+        auto v = runHalcmd(options, {"getp", std::string(kInject) + ".injected"});
+        if (!v)
+            return v.error();
+        auto x = model::parseNumber(std::string_view(*v).substr(0, v->find_first_of(" \n")));
+        if (x && *x == 0.0)
+            return {};
+        if (std::chrono::steady_clock::now() > end)
+            return makeError(ErrorCode::Device, "AxisTune's position offset did not return to zero within " +
+                                                    num(timeoutS) + " s (" + *v + ")");
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+}
+
 } // namespace
 
 const char* halColumnName(HalColumn c)
@@ -118,6 +137,10 @@ Result<HalAxis> discoverAxis(const HalSessionOptions& options, const std::string
     a.feedbackSignal = fb->signal;
     if (const HalPin* e = findPin(*ps, pid + ".error"))
         a.errorSignal = e->signal;
+    if (const HalPin* c = findPin(*ps, pid + ".command"))
+        a.commandSignal = c->signal;
+    if (const HalPin* t = findPin(*ps, pid + ".error-previous-target"))
+        a.errorPreviousTarget = t->value == "TRUE";
     a.maxOutput = std::abs(pinNumber(*ps, pid + ".maxoutput"));
     a.maxError = std::abs(pinNumber(*ps, pid + ".maxerror"));
 
@@ -141,7 +164,13 @@ Result<std::unique_ptr<HalInjection>> HalInjection::insert(const HalSessionOptio
 {
     if (!(settings.limit > 0.0) || !std::isfinite(settings.limit))
         return makeError(ErrorCode::OutOfRange, "injection limit must be a positive number in the PID output's units");
-    if (axis.maxOutput > 0.0 && settings.limit > 0.5 * axis.maxOutput)
+    const bool atCommand = settings.point == InjectionPoint::PidCommand;
+    if (atCommand && (!(settings.returnRate > 0.0) || !std::isfinite(settings.returnRate)))
+        return makeError(ErrorCode::OutOfRange, "a move's injection needs a positive return speed");
+    if (atCommand && axis.commandSignal.empty())
+        return makeError(ErrorCode::BadInput, axis.pid + ".command is not linked to a net: AxisTune adds its move "
+                                                         "to the net the NC (or the HAL file) drives");
+    if (!atCommand && axis.maxOutput > 0.0 && settings.limit > 0.5 * axis.maxOutput)
         return makeError(ErrorCode::OutOfRange, "injection peak " + num(settings.limit) + " exceeds half of " +
                                                     axis.pid + ".maxoutput (" + num(axis.maxOutput) + ")");
     if (settings.fifoDepth < 64 || settings.fifoDepth > 1 << 20)
@@ -152,7 +181,8 @@ Result<std::unique_ptr<HalInjection>> HalInjection::insert(const HalSessionOptio
     inj->m_axis = axis;
     inj->m_settings = settings;
 
-    // Function order in the thread: streamer before the PID, the injection right after it, sampler last.
+    // Function order in the thread: streamer before the PID, the injection right after it (at the PID output) or
+    // between the two (at the command), sampler last.
     auto place = pidPlace(options, axis);
     if (!place)
         return place.error();
@@ -171,8 +201,10 @@ Result<std::unique_ptr<HalInjection>> HalInjection::insert(const HalSessionOptio
         {{"setp", std::string(kInject) + ".limit", num(settings.limit)}, {}},
         {{"setp", std::string(kInject) + ".maxerror", num(maxError)}, {}},
         {{"setp", std::string(kInject) + ".timeout", num(settings.heartbeatTimeoutS)}, {}},
+        {{"setp", std::string(kInject) + ".rate", num(atCommand ? settings.returnRate : 0.0)}, {}},
         {{"addf", "streamer.0", axis.thread, std::to_string(pidPos)}, {"delf", "streamer.0", axis.thread}},
-        {{"addf", kInject, axis.thread, std::to_string(pidPos + 2)}, {"delf", kInject, axis.thread}},
+        {{"addf", kInject, axis.thread, std::to_string(atCommand ? pidPos + 1 : pidPos + 2)},
+         {"delf", kInject, axis.thread}},
         {{"addf", "sampler.0", axis.thread}, {"delf", "sampler.0", axis.thread}},
         {{"net", kBeatNet, client.heartbeatPin(), std::string(kInject) + ".heartbeat"}, {"delsig", kBeatNet}},
         {{"net", kExcNet, "streamer.0.pin.0", std::string(kInject) + ".excitation"}, {"delsig", kExcNet}},
@@ -180,14 +212,30 @@ Result<std::unique_ptr<HalInjection>> HalInjection::insert(const HalSessionOptio
         // the sampler would record rows of nothing while the insertion goes on.
         {{"setp", "sampler.0.enable", "0"}, {}},
         {{"net", kValidNet, "streamer.0.pin.1", "sampler.0.enable"}, {"delsig", kValidNet}},
-        {{"unlinkp", axis.pid + ".output"}, {"linkps", axis.pid + ".output", axis.outputSignal}},
-        {{"linkps", std::string(kInject) + ".out", axis.outputSignal}, {"unlinkp", std::string(kInject) + ".out"}},
-        {{"net", kPidOutNet, axis.pid + ".output", std::string(kInject) + ".in"}, {"delsig", kPidOutNet}},
         {{"net", kInjectedNet, std::string(kInject) + ".injected", "sampler.0.pin.3"}, {"delsig", kInjectedNet}},
         {{"linksp", axis.outputSignal, "sampler.0.pin.0"}, {"unlinkp", "sampler.0.pin.0"}},
         {{"linksp", axis.feedbackSignal, "sampler.0.pin.1"}, {"unlinkp", "sampler.0.pin.1"}},
-        {{"linksp", kPidOutNet, "sampler.0.pin.2"}, {"unlinkp", "sampler.0.pin.2"}},
     };
+    const std::vector<Step> wiring =
+        atCommand ? std::vector<Step>{
+                        // command net -> inject.in; inject.out -> pid.command (its own net); the PID output is
+                        // recorded as it is.
+                        {{"unlinkp", axis.pid + ".command"}, {"linkps", axis.pid + ".command", axis.commandSignal}},
+                        {{"linksp", axis.commandSignal, std::string(kInject) + ".in"},
+                         {"unlinkp", std::string(kInject) + ".in"}},
+                        {{"net", kCommandNet, std::string(kInject) + ".out", axis.pid + ".command"},
+                         {"delsig", kCommandNet}},
+                        {{"linksp", axis.outputSignal, "sampler.0.pin.2"}, {"unlinkp", "sampler.0.pin.2"}},
+                    }
+                  : std::vector<Step>{
+                        {{"unlinkp", axis.pid + ".output"}, {"linkps", axis.pid + ".output", axis.outputSignal}},
+                        {{"linkps", std::string(kInject) + ".out", axis.outputSignal},
+                         {"unlinkp", std::string(kInject) + ".out"}},
+                        {{"net", kPidOutNet, axis.pid + ".output", std::string(kInject) + ".in"},
+                         {"delsig", kPidOutNet}},
+                        {{"linksp", kPidOutNet, "sampler.0.pin.2"}, {"unlinkp", "sampler.0.pin.2"}},
+                    };
+    steps.insert(steps.end(), wiring.begin(), wiring.end());
     if (axis.errorSignal.empty()) {
         steps.push_back({{"net", kErrorNet, axis.pid + ".error", std::string(kInject) + ".error", "sampler.0.pin.4"},
                          {"delsig", kErrorNet}});
@@ -221,8 +269,12 @@ Status HalInjection::remove()
 {
     Status first;
     // Disarm first so that nothing more is added while the nets change.
-    if (!m_undo.empty())
+    if (!m_undo.empty()) {
         (void)runHalcmd(m_options, {"setp", std::string(kInject) + ".enable", "0"});
+        // A move's offset returns to zero at its return speed before the command is handed back.
+        if (m_settings.point == InjectionPoint::PidCommand)
+            first = waitOffsetReturned(m_options, m_settings.limit / m_settings.returnRate + 1.0);
+    }
     bool waited = false;
     while (!m_undo.empty()) {
         auto args = std::move(m_undo.back());
@@ -381,6 +433,27 @@ Status removeLeftoverInjection(const HalSessionOptions& options)
         cmds.push_back({"unlinkp", std::string(kInject) + ".out"});
         cmds.push_back({"unlinkp", pidOut->writer});
         cmds.push_back({"linkps", pidOut->writer, injOut->signal});
+    }
+    // A move's injection: the pid's command sits on axistune-cmd, the NC's command net feeds the injection's input.
+    // The offset first returns to zero at the component's return speed (it does so by itself once disarmed).
+    const HalSignal* cmdNet = findSignal(*sigs, kCommandNet);
+    const HalPin* injIn = findPin(*ps, std::string(kInject) + ".in");
+    if (cmdNet && injIn && !injIn->signal.empty()) {
+        if (auto st = runHalcmd(options, cmds.front()); !st)
+            return st.error();
+        auto rateText = runHalcmd(options, {"getp", std::string(kInject) + ".rate"});
+        auto parsedRate =
+            rateText ? model::parseNumber(std::string_view(*rateText).substr(0, rateText->find_first_of(" \n")))
+                     : std::optional<double>();
+        const double rate = parsedRate ? *parsedRate : 0.0;
+        const double held = std::abs(pinNumber(*ps, std::string(kInject) + ".injected"));
+        if (auto st = waitOffsetReturned(options, rate > 0.0 ? held / rate + 1.0 : 1.0); !st)
+            return st;
+        cmds.push_back({"unlinkp", std::string(kInject) + ".in"});
+        for (const auto& reader : cmdNet->readers) {
+            cmds.push_back({"unlinkp", reader});
+            cmds.push_back({"linkps", reader, injIn->signal});
+        }
     }
     for (const auto& s : *sigs)
         if (s.name.rfind("axistune-", 0) == 0)

@@ -27,24 +27,37 @@ struct HalAxis {
     std::string outputSignal;   ///< net driven by <pid>.output: the drive input
     std::string feedbackSignal; ///< net into <pid>.feedback
     std::string errorSignal;    ///< net driven by <pid>.error; empty when unlinked
+    std::string commandSignal;  ///< net into <pid>.command; empty when unlinked
     double maxOutput = 0.0;     ///< <pid>.maxoutput (0: unlimited)
     double maxError = 0.0;      ///< <pid>.maxerror (0: unlimited)
+    /// <pid>.error-previous-target (LinuxCNC 2.9, TRUE by default): the error is the previous period's command
+    /// minus the feedback; false when the pin is FALSE or absent.
+    bool errorPreviousTarget = false;
 };
 
 /// Finds the pid instance, its thread and nets. Errors name what is missing (no such pid, its output or feedback
 /// not linked, its function on no thread).
 Result<HalAxis> discoverAxis(const HalSessionOptions& options, const std::string& pid);
 
-/// Columns the sampler records each servo period, in this order.
+/// Columns the sampler records each servo period, in this order. At the PID command the injection column is the
+/// position offset added to the command, and drive input and PID output are the same net.
 enum HalColumn : std::size_t { DriveInput = 0, Feedback, PidOutput, Injection, FollowingError, kHalColumns };
 const char* halColumnName(HalColumn c);
 
+/// Where the injection adds its excitation: at the PID output (an FRF: a torque, current or velocity command added
+/// to the drive's input) or at the PID command (a move: a position offset added to the command the pid follows).
+enum class InjectionPoint { PidOutput, PidCommand };
+
 struct InjectionSettings {
+    InjectionPoint point = InjectionPoint::PidOutput;
     int fifoDepth = 16384; ///< rows of the streamer and sampler FIFOs
     double limit = 0.0;    ///< largest |excitation| in the PID output's units; the component trips above it
     double maxError = 0.0; ///< following-error trip during the test; 0: the pid's maxerror
     double heartbeatTimeoutS =
         0.04; ///< the injection falls to zero this long after AxisTune stops (issue 17: within 50 ms)
+    /// PidCommand: after a trip, an abort or the end, the position offset returns to zero at this speed [command
+    /// units/s] instead of at once (a position step); required (> 0) there, 0 at the PID output.
+    double returnRate = 0.0;
 };
 
 /// AxisTune's components inserted into one axis; removed (every net restored) by remove() or the destructor.

@@ -2,6 +2,7 @@
 #include "core/device/hal/HalDrive.h"
 
 #include "core/model/Number.h"
+#include "core/sim/MotionProfile.h"
 
 #include <algorithm>
 #include <chrono>
@@ -99,7 +100,7 @@ Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
 {
     if (r.type != TestType::Frf)
         return makeError(ErrorCode::BadInput,
-                         std::string("hal: runs FRF tests only (not ") + testTypeName(r.type) + ")");
+                         std::string("hal: runs FRF and jog tests only (not ") + testTypeName(r.type) + ")");
     if (r.frfMethod != FrfMethod::Multisine)
         return makeError(ErrorCode::BadInput,
                          std::string("hal: measures FRFs by multisine only (not ") + frfMethodName(r.frfMethod) + ")");
@@ -164,6 +165,53 @@ Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
     return plan;
 }
 
+Result<HalMovePlan> planHalMove(const TestRequest& r, const HalAxis& axis)
+{
+    if (r.type != TestType::Jog)
+        return makeError(ErrorCode::BadInput,
+                         std::string("hal: runs FRF and jog tests only (not ") + testTypeName(r.type) + ")");
+    if (!r.returnToStart)
+        return makeError(ErrorCode::BadInput, "hal: moves out and back only (--back): AxisTune's offset to the "
+                                              "command must end at zero before it hands the command back");
+    if (!std::isfinite(r.distance) || r.distance == 0.0)
+        return makeError(ErrorCode::OutOfRange, "jog distance must be a non-zero number in the command's units");
+    if (!std::isfinite(r.velocity) || !(r.velocity > 0.0))
+        return makeError(ErrorCode::OutOfRange, "jog velocity must be positive (command units/s)");
+    if (!std::isfinite(r.acceleration) || !(r.acceleration > 0.0))
+        return makeError(ErrorCode::OutOfRange, "jog acceleration must be positive (command units/s²)");
+    if (!std::isfinite(r.jerk) || r.jerk < 0.0)
+        return makeError(ErrorCode::OutOfRange, "jog jerk must not be negative (0: a trapezoid)");
+    if (!std::isfinite(r.durationS) || r.durationS < 0.0)
+        return makeError(ErrorCode::OutOfRange, "jog dwell must not be negative");
+    if (!(axis.periodNs > 0))
+        return makeError(ErrorCode::BadInput, axis.thread + " has no period");
+    if (axis.commandSignal.empty())
+        return makeError(ErrorCode::BadInput, axis.pid + ".command is not linked to a net: AxisTune adds its move "
+                                                         "to the net the NC (or the HAL file) drives");
+    sim::MotionProfile profile;
+    profile.dwell(r.durationS);
+    profile.move(r.distance, r.velocity, r.acceleration, r.jerk);
+    profile.move(-r.distance, r.velocity, r.acceleration, r.jerk);
+    profile.dwell(r.durationS);
+    HalMovePlan plan;
+    plan.axis = axis;
+    plan.fsHz = 1e9 / static_cast<double>(axis.periodNs);
+    plan.distance = r.distance;
+    plan.velocity = r.velocity;
+    if (profile.duration() > HalDrive::kMaxTestS)
+        return makeError(ErrorCode::OutOfRange, "jog of " + num(profile.duration()) + " s refused: at most " +
+                                                    num(HalDrive::kMaxTestS) + " s");
+    const auto n = static_cast<std::size_t>(std::ceil(profile.duration() * plan.fsHz)) + 1;
+    plan.offset.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = profile.at(static_cast<double>(i) / plan.fsHz).position;
+        // The profile's own rounding must not end the move a few ulps away from zero, nor exceed the distance.
+        plan.offset[i] = std::abs(x) < 1e-12 * std::abs(r.distance) ? 0.0 : x;
+    }
+    plan.offset.back() = 0.0;
+    return plan;
+}
+
 Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& record)
 {
     const std::size_t n = plan.totalSamples();
@@ -193,8 +241,8 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     md["quantity"] = openLoop ? "open-loop" : "plant";
     md["input"] = "drive_input"; // <pid>.output + injection: what the drive receives
     md["output"] = openLoop ? "-pid_output" : "feedback";
-    md["hal_units"] = openLoop ? "none (PID output per PID output)"
-                               : "feedback per PID-output unit (the configuration's units)";
+    md["hal_units"] =
+        openLoop ? "none (PID output per PID output)" : "feedback per PID-output unit (the configuration's units)";
     md["pid"] = plan.axis.pid;
     md["thread"] = plan.axis.thread;
     md["servo_period_ns"] = std::to_string(plan.axis.periodNs);
@@ -387,7 +435,7 @@ Result<DriveCapabilities> HalDrive::capabilities(const std::string& axis)
     if (!a)
         return a.error();
     DriveCapabilities c;
-    c.testTypes = {TestType::Frf};
+    c.testTypes = {TestType::Frf, TestType::Jog};
     c.frfMethods = {FrfMethod::Multisine};
     c.traceRateHz = a->periodNs > 0 ? 1e9 / static_cast<double>(a->periodNs) : 0.0;
     c.currentTraceRateHz = 0.0;
@@ -395,6 +443,7 @@ Result<DriveCapabilities> HalDrive::capabilities(const std::string& axis)
     c.writesParameters = true;
     c.hasLink = true;
     c.frfPeakInOutputUnits = true;
+    c.jogInCommandUnits = true;
     c.frfQuantities = {FrfQuantity::Plant, FrfQuantity::OpenLoop};
     return c;
 }
@@ -419,6 +468,19 @@ Result<HalFrfPlan> HalDrive::plan(const TestRequest& request) const
 
 Result<TestPlan> HalDrive::planTest(const TestRequest& request)
 {
+    if (request.type == TestType::Jog) {
+        auto a = discoverAxis(m_options, request.axis);
+        if (!a)
+            return a.error();
+        auto move = planHalMove(request, *a);
+        if (!move)
+            return move.error();
+        TestPlan p;
+        p.traceRateHz = move->fsHz;
+        p.recordSamples = move->offset.size();
+        p.motionTimeS = static_cast<double>(p.recordSamples) / move->fsHz;
+        return p;
+    }
     auto plan = this->plan(request);
     if (!plan)
         return plan.error();
@@ -437,9 +499,22 @@ Status HalDrive::startTest(const TestRequest& request)
             return st;
     }
     joinWorker();
-    auto plan = this->plan(request);
-    if (!plan)
-        return plan.error();
+    std::optional<HalFrfPlan> frf;
+    std::optional<HalMovePlan> move;
+    if (request.type == TestType::Jog) {
+        auto a = discoverAxis(m_options, request.axis);
+        if (!a)
+            return a.error();
+        auto m = planHalMove(request, *a);
+        if (!m)
+            return m.error();
+        move = std::move(*m);
+    } else {
+        auto f = this->plan(request);
+        if (!f)
+            return f.error();
+        frf = std::move(*f);
+    }
     // An injection already loaded is a test of another AxisTune, or one left behind by an AxisTune that died: an
     // armed one is not touched, a disarmed one (tripped, its heartbeat gone) is removed first.
     auto injPins = pinsOf(m_options, std::string(kInject) + ".");
@@ -453,10 +528,23 @@ Status HalDrive::startTest(const TestRequest& request)
             return st;
     }
     std::vector<double> excitation;
-    excitation.reserve(plan->totalSamples());
-    for (std::size_t p = 0; p < plan->settlePeriods + plan->periods; ++p)
-        excitation.insert(excitation.end(), plan->design.table.begin(), plan->design.table.end());
-    m_plan = *plan;
+    InjectionSettings settings;
+    HalAxis axis;
+    if (frf) {
+        excitation.reserve(frf->totalSamples());
+        for (std::size_t p = 0; p < frf->settlePeriods + frf->periods; ++p)
+            excitation.insert(excitation.end(), frf->design.table.begin(), frf->design.table.end());
+        settings.limit = frf->design.peak;
+        axis = frf->axis;
+    } else {
+        excitation = move->offset;
+        settings.point = InjectionPoint::PidCommand;
+        settings.limit = std::abs(move->distance) * (1.0 + 1e-9);
+        settings.returnRate = move->velocity;
+        axis = move->axis;
+    }
+    m_plan = std::move(frf);
+    m_move = std::move(move);
     m_record.reset();
     m_abort = false;
     {
@@ -464,12 +552,13 @@ Status HalDrive::startTest(const TestRequest& request)
         m_linkLost = false;
         m_status = TestStatus{TestState::Running, 0.0, ""};
     }
-    m_worker = std::thread(
-        [this, p = std::move(*plan), x = std::move(excitation)]() mutable { run(std::move(p), std::move(x)); });
+    m_worker = std::thread([this, a = std::move(axis), settings, x = std::move(excitation)]() mutable {
+        run(std::move(a), settings, std::move(x));
+    });
     return Status::success();
 }
 
-void HalDrive::run(HalFrfPlan plan, std::vector<double> excitation)
+void HalDrive::run(HalAxis axis, InjectionSettings settings, std::vector<double> excitation)
 {
     auto finish = [&](TestState state, std::string detail) {
         // A failure after which HAL no longer answers, or no longer runs the axis's pid on a thread (a stopped
@@ -477,7 +566,7 @@ void HalDrive::run(HalFrfPlan plan, std::vector<double> excitation)
         bool lost = false;
         if (state == TestState::Faulted && !m_abort.load()) {
             auto names = pidNames();
-            lost = !names || std::find(names->begin(), names->end(), plan.axis.pid) == names->end();
+            lost = !names || std::find(names->begin(), names->end(), axis.pid) == names->end();
         }
         std::lock_guard lock(m_mutex);
         m_linkLost = lost;
@@ -490,9 +579,7 @@ void HalDrive::run(HalFrfPlan plan, std::vector<double> excitation)
     auto client = HalClient::open("axistune-" + std::to_string(::getpid()));
     if (!client)
         return finish(TestState::Faulted, client.error().detail);
-    InjectionSettings settings;
-    settings.limit = plan.design.peak;
-    auto injection = HalInjection::insert(m_options, plan.axis, settings, **client);
+    auto injection = HalInjection::insert(m_options, axis, settings, **client);
     if (!injection)
         return finish(TestState::Faulted, injection.error().detail);
     HalRunControl control;
@@ -546,32 +633,44 @@ Result<model::Capture> HalDrive::readTrace()
 {
     {
         std::lock_guard lock(m_mutex);
-        if (m_status.state != TestState::Completed || !m_record || !m_plan)
+        if (m_status.state != TestState::Completed || !m_record || !(m_plan || m_move))
             return makeError(ErrorCode::NotFound, "no trace: no test has completed");
     }
     model::Capture c;
     const std::size_t n = m_record->columns[DriveInput].size();
+    const double fsHz = m_plan ? m_plan->fsHz : m_move->fsHz;
+    const HalAxis& axis = m_plan ? m_plan->axis : m_move->axis;
     model::Channel t{"t_s", {}};
     t.data.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        t.data[i] = static_cast<double>(i) / m_plan->fsHz;
+        t.data[i] = static_cast<double>(i) / fsHz;
     model::Channel sample{"sample", {}};
     sample.data.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         sample.data[i] = static_cast<double>(m_record->firstSample + static_cast<std::uint32_t>(i));
     c.channels.push_back(std::move(t));
     c.channels.push_back(std::move(sample));
-    for (std::size_t col = 0; col < kHalColumns; ++col)
-        c.channels.push_back({halColumnName(static_cast<HalColumn>(col)), m_record->columns[col]});
+    for (std::size_t col = 0; col < kHalColumns; ++col) {
+        // A move: the injection is the position offset added to the command.
+        const bool offset = m_move && col == Injection;
+        c.channels.push_back({offset ? std::string("position_offset") : halColumnName(static_cast<HalColumn>(col)),
+                              m_record->columns[col]});
+    }
     auto& md = c.metadata;
-    md["test"] = "frf";
-    md["method"] = "multisine";
-    md["axis"] = m_plan->axis.pid;
-    md["fs_Hz"] = num(m_plan->fsHz);
+    if (m_plan) {
+        md["test"] = "frf";
+        md["method"] = "multisine";
+        md["amplitude_peak"] = num(m_plan->design.peak);
+    } else {
+        md["test"] = "jog";
+        md["distance"] = num(m_move->distance);
+        md["velocity"] = num(m_move->velocity);
+    }
+    md["axis"] = axis.pid;
+    md["fs_Hz"] = num(fsHz);
     md["hal_units"] = "the configuration's (PID output and position units)";
-    md["thread"] = m_plan->axis.thread;
-    md["amplitude_peak"] = num(m_plan->design.peak);
-    md[kMotionTimeMetadataKey] = num(static_cast<double>(n) / m_plan->fsHz);
+    md["thread"] = axis.thread;
+    md[kMotionTimeMetadataKey] = num(static_cast<double>(n) / fsHz);
     return c;
 }
 

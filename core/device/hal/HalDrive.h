@@ -4,8 +4,9 @@
 // loop such as scripts/hal-testbed) seen as a drive. An axis is a `pid` instance whose do-pid-calcs runs on a
 // thread; the drive input is the net driven by <pid>.output, the feedback the net into <pid>.feedback; units
 // are the HAL's. Parameters are the pid's gain pins (setp with read-back). Tests: FRF by multisine through
-// AxisTune's guarded injection (HalAxis.h), evaluated here with core's DSP as the plant
-// feedback / (PID output + injection). Nothing is inserted between tests; every test removes what it inserted.
+// AxisTune's guarded injection at the PID output (HalAxis.h), evaluated here with core's DSP as the plant
+// feedback / (PID output + injection); a move out and back through the same injection at the PID command. Nothing is
+// inserted between tests; every test removes what it inserted.
 
 #include "core/device/Drive.h"
 #include "core/device/DriveRegistry.h"
@@ -46,6 +47,21 @@ struct HalFrfPlan {
 /// maxoutput, at most HalDrive::kMaxTestS of motion) and plans it. Errors name the field and the limit.
 Result<HalFrfPlan> planHalFrf(const TestRequest& request, const HalAxis& axis);
 
+/// A move of a `hal:` axis (TestType::Jog with returnToStart): out by `distance` and back, in the pid command's units,
+/// added to the command the pid follows as an offset (HalAxis.h, InjectionPoint::PidCommand): dwell, move, move back,
+/// dwell. The profile is MotionProfile's (trapezoid, or S-curve with a jerk limit).
+struct HalMovePlan {
+    HalAxis axis;
+    double fsHz = 0.0;
+    double distance = 0.0;      ///< command units
+    double velocity = 0.0;      ///< command units/s; also the speed at which a tripped move returns
+    std::vector<double> offset; ///< one value per servo period, first and last 0
+};
+
+/// Checks a jog request against the axis (out and back, finite positive speed and acceleration, at most
+/// HalDrive::kMaxTestS, the pid's command linked) and plans it.
+Result<HalMovePlan> planHalMove(const TestRequest& request, const HalAxis& axis);
+
 /// The FRF of a completed record of that plan with its metadata: the plant feedback / drive input, or the open
 /// loop −(PID output) / drive input.
 Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& record);
@@ -79,7 +95,7 @@ private:
     Status checkAxis(const std::string& axis) const;
     Result<HalFrfPlan> plan(const TestRequest& request) const;
     void joinWorker();
-    void run(HalFrfPlan plan, std::vector<double> excitation);
+    void run(HalAxis axis, InjectionSettings settings, std::vector<double> excitation);
 
     HalSessionOptions m_options;
     std::thread m_worker;
@@ -87,7 +103,8 @@ private:
     std::condition_variable m_changed;
     TestStatus m_status; ///< guarded by m_mutex
     std::atomic<bool> m_abort{false};
-    std::optional<HalFrfPlan> m_plan;  ///< of the last test
+    std::optional<HalFrfPlan> m_plan;  ///< of the last test when an FRF
+    std::optional<HalMovePlan> m_move; ///< of the last test when a move
     std::optional<HalRecord> m_record; ///< of the last completed test
     bool m_linkLost = false;           ///< the last test failed and HAL no longer answers (guarded by m_mutex)
     std::string m_firmware;
