@@ -29,6 +29,7 @@
 #include <thread>
 
 #include "tests/app/cli/SimDriveProcess.h"
+#include "tests/linuxcnc/HalMachineLock.h"
 
 namespace axistune::device {
 namespace {
@@ -120,6 +121,8 @@ protected:
 #ifdef AXISTUNE_SOURCE_DIR
             // The repository's LinuxCNC test machine: LinuxCNC's pid around AxisTune's plant (docs/linuxcnc.md).
             const std::string script = std::string(AXISTUNE_SOURCE_DIR) + "/scripts/hal-testbed";
+            m_halLock = std::make_unique<axistune::testing::HalMachineLock>();
+            ASSERT_TRUE(m_halLock->held()) << "cannot open /tmp/axistune-hal-machine.lock";
             ASSERT_EQ(std::system((script + " start >/dev/null 2>&1").c_str()), 0) << script << " start failed";
             m_halScript = script;
             ::setenv("AXISTUNE_HALCMD", (script + " halcmd").c_str(), 1);
@@ -232,6 +235,8 @@ protected:
 
     std::string m_uri;
     std::string m_halScript; ///< hal: the test machine's script, stopped after the rule
+    std::unique_ptr<axistune::testing::HalMachineLock>
+        m_halLock; ///< hal:, linuxcnc: the machine's one HAL, held for the rule
     std::unique_ptr<testing::SimDrive> m_server;
     std::unique_ptr<Drive> m_drive;
     DriveIdentity m_identity;

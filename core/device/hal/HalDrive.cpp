@@ -543,6 +543,8 @@ Status HalDrive::startTest(const TestRequest& request)
         settings.returnRate = move->velocity;
         axis = move->axis;
     }
+    if (auto f = m_ferror.find(axis.pid); f != m_ferror.end() && f->second > 0.0)
+        settings.maxError = axis.maxError > 0.0 ? std::min(axis.maxError, f->second) : f->second;
     m_plan = std::move(frf);
     m_move = std::move(move);
     m_record.reset();
@@ -600,6 +602,14 @@ void HalDrive::run(HalAxis axis, InjectionSettings settings, std::vector<double>
         return finish(TestState::Faulted, "removing the injection: " + removed.error().detail);
     m_record = std::move(*record);
     finish(TestState::Completed, "");
+}
+
+void HalDrive::setFollowingErrorLimit(const std::string& pid, double limit)
+{
+    if (limit > 0.0 && std::isfinite(limit))
+        m_ferror[pid] = limit;
+    else
+        m_ferror.erase(pid);
 }
 
 Result<TestStatus> HalDrive::pollTest()

@@ -15,6 +15,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -89,6 +90,10 @@ public:
     Result<DriveLimits> limits(const std::string& axis) override;
     Result<TestPlan> planTest(const TestRequest& request) override;
 
+    /// A following-error limit of the axis besides its pid's maxerror (linuxcnc:: the joint's FERROR): the injection
+    /// trips at the smaller of the two. 0 or less: none.
+    void setFollowingErrorLimit(const std::string& pid, double limit);
+
 private:
     explicit HalDrive(HalSessionOptions options) : m_options(std::move(options)) {}
     Result<std::vector<std::string>> pidNames() const;
@@ -103,10 +108,11 @@ private:
     std::condition_variable m_changed;
     TestStatus m_status; ///< guarded by m_mutex
     std::atomic<bool> m_abort{false};
-    std::optional<HalFrfPlan> m_plan;  ///< of the last test when an FRF
-    std::optional<HalMovePlan> m_move; ///< of the last test when a move
-    std::optional<HalRecord> m_record; ///< of the last completed test
-    bool m_linkLost = false;           ///< the last test failed and HAL no longer answers (guarded by m_mutex)
+    std::optional<HalFrfPlan> m_plan;       ///< of the last test when an FRF
+    std::optional<HalMovePlan> m_move;      ///< of the last test when a move
+    std::optional<HalRecord> m_record;      ///< of the last completed test
+    bool m_linkLost = false;                ///< the last test failed and HAL no longer answers (guarded by m_mutex)
+    std::map<std::string, double> m_ferror; ///< setFollowingErrorLimit, by pid
     std::string m_firmware;
 };
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/device/hal/LinuxCncDrive.h"
 
+#include "core/model/Number.h"
+
 #include <algorithm>
 #include <filesystem>
 
@@ -48,9 +50,23 @@ Result<std::unique_ptr<LinuxCncDrive>> LinuxCncDrive::open(const std::string& in
     std::stable_sort(pids.begin(), pids.end(), [](const PidInstance* a, const PidInstance* b) {
         return (a->joint < 0 ? 1000 : a->joint) < (b->joint < 0 ? 1000 : b->joint);
     });
-    for (const PidInstance* p : pids)
-        if (std::find(id->axes.begin(), id->axes.end(), p->name) != id->axes.end())
-            d->m_axes.emplace_back(linuxCncAxisName(*p), p->name);
+    for (const PidInstance* p : pids) {
+        if (std::find(id->axes.begin(), id->axes.end(), p->name) == id->axes.end())
+            continue;
+        d->m_axes.emplace_back(linuxCncAxisName(*p), p->name);
+        // The joint's FERROR (LinuxCNC's following-error limit at speed) also trips AxisTune's injection.
+        if (p->joint >= 0) {
+            const IniEntry* ferror = d->m_config.ini.find("JOINT_" + std::to_string(p->joint), "FERROR");
+            if (ferror) {
+                auto v = model::parseNumber(ferror->value);
+                if (!v || !(*v > 0.0))
+                    return makeError(ErrorCode::BadInput, iniPath + ":" + std::to_string(ferror->line) + ": [JOINT_" +
+                                                              std::to_string(p->joint) + "]FERROR '" + ferror->value +
+                                                              "' is not a positive number");
+                d->m_hal->setFollowingErrorLimit(p->name, *v);
+            }
+        }
+    }
     if (d->m_axes.empty()) {
         std::string configured;
         for (const auto& p : d->m_config.pids)

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// HAL is one per machine (its shared memory and realtime are global): two test processes that start the test machine
+// at once, from one build's ctest -j or from two build trees, tear each other's HAL session down. Every test that
+// starts it holds this lock (flock on a file in /tmp) from before the start until after the stop; the kernel
+// releases it when the process ends, so a crashed test never leaves it held.
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace axistune::testing {
+
+class HalMachineLock {
+public:
+    HalMachineLock() : m_fd(::open("/tmp/axistune-hal-machine.lock", O_RDWR | O_CREAT | O_CLOEXEC, 0666))
+    {
+        if (m_fd >= 0)
+            (void)::flock(m_fd, LOCK_EX); // blocks until the other test has stopped its HAL session
+    }
+    ~HalMachineLock()
+    {
+        if (m_fd >= 0)
+            ::close(m_fd);
+    }
+    HalMachineLock(const HalMachineLock&) = delete;
+    HalMachineLock& operator=(const HalMachineLock&) = delete;
+    bool held() const { return m_fd >= 0; }
+
+private:
+    int m_fd;
+};
+
+} // namespace axistune::testing
