@@ -328,6 +328,92 @@ TEST_F(HalTestbed, InjectionFallsToZeroWithin50msAfterKill)
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), netsOf(sigBefore));
 }
 
+// The same at the pid's command (a move): after kill -9 mid-move the heartbeat trips, and the position offset does
+// not jump back (a position step the loop would slam into) but returns to zero at the move's speed, one step of at
+// most rate·T per servo period, so the axis goes back to where it started; the leftover is then removed and the
+// command is the NC's again.
+TEST_F(HalTestbed, AMoveReturnsAtItsSpeedAfterKill)
+{
+    startBed(1000000);
+    const std::string sigBefore = halText({"-s", "show", "sig"});
+    auto axis = discoverAxis(halOptions(), "pid.x");
+    ASSERT_TRUE(axis) << axis.error().detail;
+    constexpr double kRate = 10.0; // mm/s
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        // AxisTune: a ramp of the offset to 4 mm at 10 mm/s (0.4 s), held for 60 s; killed while it holds.
+        auto client = HalClient::open("axistune-victim");
+        if (!client)
+            _exit(10);
+        InjectionSettings is;
+        is.point = InjectionPoint::PidCommand;
+        is.limit = 4.0;
+        is.returnRate = kRate;
+        auto inj = HalInjection::insert(halOptions(), *axis, is, **client);
+        if (!inj)
+            _exit(11);
+        std::vector<double> x(60000, 4.0);
+        for (std::size_t i = 0; i < 400; ++i)
+            x[i] = kRate * 1e-3 * static_cast<double>(i);
+        (void)runExcitation(**client, **inj, x);
+        _exit(12);
+    }
+    auto watcher = HalClient::open("axistune-watcher");
+    ASSERT_TRUE(watcher) << watcher.error().detail;
+    const auto t0 = std::chrono::steady_clock::now();
+    bool holding = false;
+    while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(30)) {
+        auto v = (*watcher)->readPin("axistune-inject.injected");
+        if (v && *v == 4.0) {
+            holding = true;
+            break;
+        }
+        int status = 0;
+        ASSERT_EQ(waitpid(child, &status, WNOHANG), 0)
+            << "the injecting process ended early, exit " << WEXITSTATUS(status);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ASSERT_TRUE(holding);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    ASSERT_EQ(kill(child, SIGKILL), 0);
+    const auto killed = std::chrono::steady_clock::now();
+    // Read every 0.2 ms: the offset falls from 4 mm at 10 mm/s (0.4 s). A servo thread that runs late catches up
+    // several periods at once, so the bound is on the fall since the kill: never more than 10 mm/s × the time since
+    // it (+ 2 µm), which a jump back would break at once.
+    double last = 4.0, worstExcess = -1.0, zeroAfterS = -1.0;
+    while (std::chrono::steady_clock::now() - killed < std::chrono::seconds(3)) {
+        auto v = (*watcher)->readPin("axistune-inject.injected");
+        ASSERT_TRUE(v);
+        const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - killed).count();
+        worstExcess = std::max(worstExcess, (4.0 - *v) - kRate * t);
+        EXPECT_LE(*v, last + 1e-12) << "the offset rose after the kill";
+        last = *v;
+        if (*v == 0.0) {
+            zeroAfterS = std::chrono::duration<double>(std::chrono::steady_clock::now() - killed).count();
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_GE(zeroAfterS, 0.0) << "the offset did not return to zero";
+    // 40 ms heartbeat timeout, then 0.4 s at 10 mm/s (a late servo thread may catch up a few periods at once).
+    EXPECT_GE(zeroAfterS, 0.4);
+    EXPECT_LE(zeroAfterS, 1.0);
+    EXPECT_LE(worstExcess, 0.002) << "the offset fell faster than its return speed";
+    RecordProperty("offset_zero_after_s", model::formatShortest(zeroAfterS));
+    auto trip = (*watcher)->readPin("axistune-inject.trip");
+    ASSERT_TRUE(trip);
+    EXPECT_EQ(*trip, 1.0); // heartbeat lost
+    auto cleaned = removeLeftoverInjection(halOptions());
+    ASSERT_TRUE(cleaned) << cleaned.error().detail;
+    watcher = makeError(ErrorCode::Internal, "released");
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), netsOf(sigBefore));
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    EXPECT_NEAR(getp("plant.x.position"), 0.0, 0.005);
+}
+
 namespace {
 
 struct LoopMeasurement {
