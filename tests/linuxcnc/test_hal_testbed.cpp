@@ -252,6 +252,22 @@ TEST_F(HalTestbed, MultisinePlantFrfEqualsTheExactDiscreteResponse)
     RecordProperty("worst_deg", model::formatShortest(worstDeg));
 }
 
+/// Waits up to 30 s until `pin` reads `value`, while the injecting child process still runs.
+::testing::AssertionResult waitForPin(HalClient& watcher, const std::string& pin, double value, pid_t child)
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(30)) {
+        auto v = watcher.readPin(pin);
+        if (v && *v == value)
+            return ::testing::AssertionSuccess();
+        int status = 0;
+        if (waitpid(child, &status, WNOHANG) != 0)
+            return ::testing::AssertionFailure() << "the injecting process ended early, exit " << WEXITSTATUS(status);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return ::testing::AssertionFailure() << pin << " never read " << value;
+}
+
 // Issue 17: after kill -9 of AxisTune mid-test the injection is back at zero within 50 ms, and the leftover
 // components can be removed so that the HAL is as before.
 TEST_F(HalTestbed, InjectionFallsToZeroWithin50msAfterKill)
@@ -281,20 +297,7 @@ TEST_F(HalTestbed, InjectionFallsToZeroWithin50msAfterKill)
     auto watcher = HalClient::open("axistune-watcher");
     ASSERT_TRUE(watcher) << watcher.error().detail;
     // Wait until the injection runs.
-    const auto t0 = std::chrono::steady_clock::now();
-    bool running = false;
-    while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(30)) {
-        auto armed = (*watcher)->readPin("axistune-inject.armed");
-        if (armed && *armed == 1.0) {
-            running = true;
-            break;
-        }
-        int status = 0;
-        ASSERT_EQ(waitpid(child, &status, WNOHANG), 0)
-            << "the injecting process ended early, exit " << WEXITSTATUS(status);
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    ASSERT_TRUE(running);
+    ASSERT_TRUE(waitForPin(**watcher, "axistune-inject.armed", 1.0, child));
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     auto injected = (*watcher)->readPin("axistune-inject.injected");
     ASSERT_TRUE(injected);
@@ -361,20 +364,7 @@ TEST_F(HalTestbed, AMoveReturnsAtItsSpeedAfterKill)
     }
     auto watcher = HalClient::open("axistune-watcher");
     ASSERT_TRUE(watcher) << watcher.error().detail;
-    const auto t0 = std::chrono::steady_clock::now();
-    bool holding = false;
-    while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(30)) {
-        auto v = (*watcher)->readPin("axistune-inject.injected");
-        if (v && *v == 4.0) {
-            holding = true;
-            break;
-        }
-        int status = 0;
-        ASSERT_EQ(waitpid(child, &status, WNOHANG), 0)
-            << "the injecting process ended early, exit " << WEXITSTATUS(status);
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    ASSERT_TRUE(holding);
+    ASSERT_TRUE(waitForPin(**watcher, "axistune-inject.injected", 4.0, child));
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
     ASSERT_EQ(kill(child, SIGKILL), 0);
     const auto killed = std::chrono::steady_clock::now();

@@ -466,13 +466,18 @@ Result<HalFrfPlan> HalDrive::plan(const TestRequest& request) const
     return planHalFrf(request, *a);
 }
 
+Result<HalMovePlan> HalDrive::movePlan(const TestRequest& request) const
+{
+    auto a = discoverAxis(m_options, request.axis);
+    if (!a)
+        return a.error();
+    return planHalMove(request, *a);
+}
+
 Result<TestPlan> HalDrive::planTest(const TestRequest& request)
 {
     if (request.type == TestType::Jog) {
-        auto a = discoverAxis(m_options, request.axis);
-        if (!a)
-            return a.error();
-        auto move = planHalMove(request, *a);
+        auto move = movePlan(request);
         if (!move)
             return move.error();
         TestPlan p;
@@ -502,10 +507,7 @@ Status HalDrive::startTest(const TestRequest& request)
     std::optional<HalFrfPlan> frf;
     std::optional<HalMovePlan> move;
     if (request.type == TestType::Jog) {
-        auto a = discoverAxis(m_options, request.axis);
-        if (!a)
-            return a.error();
-        auto m = planHalMove(request, *a);
+        auto m = movePlan(request);
         if (!m)
             return m.error();
         move = std::move(*m);

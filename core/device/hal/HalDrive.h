@@ -99,6 +99,7 @@ private:
     Result<std::vector<std::string>> pidNames() const;
     Status checkAxis(const std::string& axis) const;
     Result<HalFrfPlan> plan(const TestRequest& request) const;
+    Result<HalMovePlan> movePlan(const TestRequest& request) const;
     void joinWorker();
     void run(HalAxis axis, InjectionSettings settings, std::vector<double> excitation);
 
