@@ -111,6 +111,17 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         return makeError(ErrorCode::BadInput, "the adaptive FRF is a multisine measurement (--method multisine)");
     if (!(o.timeBudgetS > 0.0) || !std::isfinite(o.timeBudgetS))
         return makeError(ErrorCode::BadInput, "the time budget must be > 0 s");
+    // The re-excitation is shaped on the host from the drive's own plan (its clock, rated torque and voltage): a
+    // drive that evaluates FRFs in its own units (hal:, linuxcnc:) offers none of that.
+    auto caps = drive.capabilities(first.axis);
+    if (!caps)
+        return caps.error();
+    if (caps->frfPeakInOutputUnits)
+        return makeError(ErrorCode::BadInput,
+                         "axis " + first.axis +
+                             ": --adaptive needs a drive that plans its multisine in % of rated torque (sim:, "
+                             "modbus:); this connection measures in its output's own units: use --periods and "
+                             "--amplitude instead");
     auto limits = drive.limits(first.axis);
     if (!limits)
         return limits.error();

@@ -630,6 +630,14 @@ TEST_F(HalTestbed, CliCaptureThroughHalWritesThePlantFrf)
                                                         "multisine --fmin 2 --fmax 450 ";
     ASSERT_EQ(std::system((cli + "--amplitude 0.2 --out " + out + " >" + dir + "/hal-cli.json").c_str()), 0);
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+    // The adaptive FRF shapes its passes in % of rated torque, which hal: does not have: refused by name, exit 2.
+    const std::string adaptiveLog = dir + "/hal-adaptive.log";
+    EXPECT_EQ(WEXITSTATUS(std::system(
+                  (cli + "--amplitude 0.2 --adaptive --out " + dir + "/never.csv 2>" + adaptiveLog).c_str())),
+              2);
+    std::ifstream al(adaptiveLog);
+    EXPECT_NE(std::string(std::istreambuf_iterator<char>(al), {}).find("--adaptive needs a drive that plans"),
+              std::string::npos);
     EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
 
     auto frf = io::readFrfCsvFile(out);
