@@ -29,10 +29,10 @@ enum class Style { Gentle, Standard, Stiff };
 
 /// What a style asks of the velocity loop (docs/tuning.md "Styles").
 struct StyleTargets {
-    double phaseMarginDeg = 50.0;    ///< the design's predicted phase margin at least
-    double gainMarginDb = 8.0;       ///< the design's predicted gain margin at least
-    double minBandwidthHz = 40.0;    ///< the required velocity crossover: the velocity wizard's default 40 Hz
-    double frfAmplitudePct = 10.0;   ///< first FRF peak [% rated torque]
+    double phaseMarginDeg = 50.0;       ///< the design's predicted phase margin at least
+    double gainMarginDb = 8.0;          ///< the design's predicted gain margin at least
+    double minBandwidthHz = 40.0;       ///< the required velocity crossover: the velocity wizard's default 40 Hz
+    double frfAmplitudePct = 10.0;      ///< first FRF peak [% rated torque]
     double acceptPhaseMarginDeg = 45.0; ///< the re-measured loop must keep at least this (else roll back)
     double acceptGainMarginDb = 6.0;
 };
@@ -44,13 +44,13 @@ Result<Style> parseStyle(std::string_view name);
 struct Options {
     std::string axis;
     Style style = Style::Standard;
-    double timeBudgetS = 30.0;    ///< motion time of the whole sequence [s]; a step that would exceed it refuses
-    bool dryRun = false;          ///< run every measurement, then restore the parameters (nothing applied)
-    double minBandwidthHz = 0.0;  ///< required velocity crossover [Hz]; 0: the style's
+    double timeBudgetS = 30.0;   ///< motion time of the whole sequence [s]; a step that would exceed it refuses
+    bool dryRun = false;         ///< run every measurement, then restore the parameters (nothing applied)
+    double minBandwidthHz = 0.0; ///< required velocity crossover [Hz]; 0: the style's
     /// R_a, L_q, δ of the motor (the drive does not state them): with it the current loop is designed
     /// (motorFromDriveParameters + designCurrentLoop), without it the running current PI is kept and only verified.
     std::optional<tuning::MotorData> motor;
-    device::RunOptions run;       ///< abort token and progress of each test
+    device::RunOptions run; ///< abort token and progress of each test
 };
 
 struct Step {
@@ -62,20 +62,20 @@ struct Step {
 };
 
 struct Final {
-    double phaseMarginDeg = 0.0;       ///< re-measured open velocity loop (smallest over its gain crossovers)
-    double gainMarginDb = 0.0;         ///< re-measured (smallest over the −180° crossings)
-    double velocityBandwidthHz = 0.0;  ///< −3 dB of the re-measured closed velocity loop
-    double positionBandwidthHz = 0.0;  ///< −3 dB of K_p·T_v/s closed (position feedback only, on the re-measured T_v)
+    double phaseMarginDeg = 0.0;      ///< re-measured open velocity loop (smallest over its gain crossovers)
+    double gainMarginDb = 0.0;        ///< re-measured (smallest over the −180° crossings)
+    double velocityBandwidthHz = 0.0; ///< −3 dB of the re-measured closed velocity loop
+    double positionBandwidthHz = 0.0; ///< −3 dB of K_p·T_v/s closed (position feedback only, on the re-measured T_v)
     std::optional<double> settlingTimeS; ///< move evaluation; nullopt when it never settled in the record
-    double peakFollowingError = 0.0;   ///< [m or rad]
-    double motionTimeS = 0.0;          ///< machine time of the whole sequence
-    model::ParameterValues parameters; ///< what was (or, dry run, would be) applied
+    double peakFollowingError = 0.0;     ///< [m or rad]
+    double motionTimeS = 0.0;            ///< machine time of the whole sequence
+    model::ParameterValues parameters;   ///< what was (or, dry run, would be) applied
 };
 
 enum class Outcome {
-    Applied,   ///< parameters written and read back
-    DryRun,    ///< every step ran; the parameters were restored
-    Refused,   ///< stopped with a reason; every parameter restored
+    Applied, ///< parameters written and read back
+    DryRun,  ///< every step ran; the parameters were restored
+    Refused, ///< stopped with a reason; every parameter restored
 };
 
 struct Result_ {
@@ -85,8 +85,8 @@ struct Result_ {
     std::vector<Step> steps;
     std::optional<Final> final;
     double motionTimeS = 0.0;
-    bool restored = false;                    ///< the parameters were written back and read back equal
-    model::ParameterValues before;            ///< every writable parameter as found
+    bool restored = false;         ///< the parameters were written back and read back equal
+    model::ParameterValues before; ///< every writable parameter as found
 };
 using AutoTuneResult = Result_;
 
