@@ -692,10 +692,10 @@ Result<AutoTuneResult> Sequence::run()
                      num(m_t.phaseMarginDeg + kDesignPhaseReserveDeg, 3) + " ... " +
                      num(m_t.phaseMarginDeg + kDesignPhaseReserveDeg + kDesignPhaseSteps[4], 3) +
                      " deg, the one with the widest closed-loop bandwidth that keeps, on the measured plant with the "
-                     "notches, at least " + num(m_t.phaseMarginDeg, 3) + " deg and " +
-                     num(m_t.gainMarginDb + kDesignGainReserveDb, 3) + " dB (" + styleName(m_o.style) + " " +
-                     num(m_t.gainMarginDb, 3) + " dB + " + num(kDesignGainReserveDb, 2) +
-                     " dB reserve) over every crossover: " + design.rule;
+                     "notches, at least " +
+                     num(m_t.phaseMarginDeg, 3) + " deg and " + num(m_t.gainMarginDb + kDesignGainReserveDb, 3) +
+                     " dB (" + styleName(m_o.style) + " " + num(m_t.gainMarginDb, 3) + " dB + " +
+                     num(kDesignGainReserveDb, 2) + " dB reserve) over every crossover: " + design.rule;
             if (auto st =
                     write({{"velocity.kp", design.proposed.kpNmsPerRad}, {"velocity.ki", design.proposed.kiNmPerRad}});
                 !st)

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "tests/app/cli/CliRunner.h"
+#include "tests/app/cli/SimDriveProcess.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::readFileText;
@@ -177,20 +178,46 @@ TEST(Autotune, TwoInertiaAMeetsTheMarginsMeasuredAfterwardsAndBeatsTheHandSequen
     tuneAndCheck("two-inertia", "A");
 }
 
-TEST(Autotune, ResonanceAtTheRequiredBandwidthIsRefusedWithExit4)
+// The refusals over Modbus: axistune-simdrive keeps its parameters between connections, so `params` reads every
+// parameter of the axis before and after the refused run (issue 18 item 6: nothing applied, parameters unchanged).
+void refusedWithParametersUnchanged(const std::string& simdriveArgs, const std::string& axis,
+                                    const std::string& options, const std::string& reason)
 {
-    // dd-table C has a resonance at 600 Hz (resources/machines/dd-table.json): asking for a 600 Hz crossover puts it
-    // at the required bandwidth.
+    axistune::testing::SimDrive srv(simdriveArgs);
+    ASSERT_GT(srv.port(), 0);
+    const std::string uri = "modbus://127.0.0.1:" + std::to_string(srv.port());
+    const auto before = runCli("params --connect " + uri + " --axis " + axis);
+    ASSERT_EQ(before.exitCode, 0) << before.err;
     const auto dir = makeTempDir("autotune-refuse");
     const auto result = (dir / "result.json").string();
-    const auto r = runCli("autotune --connect sim:dd-table --axis C --min-bandwidth-hz 600 --out " + result);
+    const auto r = runCli("autotune --connect " + uri + " --axis " + axis + " " + options + " --out " + result);
     EXPECT_EQ(r.exitCode, 4) << r.err;
-    EXPECT_NE(r.err.find("resonance too close to the required bandwidth"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
     const auto j = nlohmann::json::parse(readFileText(result));
     EXPECT_EQ(j["outcome"], "refused");
-    EXPECT_TRUE(j["parameters_restored"].get<bool>());
+    EXPECT_NE(j["reason"].get<std::string>().find(reason), std::string::npos);
     EXPECT_FALSE(j.contains("final"));
+    const auto after = runCli("params --connect " + uri + " --axis " + axis);
+    ASSERT_EQ(after.exitCode, 0) << after.err;
+    const auto pb = nlohmann::json::parse(before.out)["parameters"];
+    const auto pa = nlohmann::json::parse(after.out)["parameters"];
+    EXPECT_GT(pb.size(), 30u);
+    EXPECT_EQ(pa, pb);
     std::filesystem::remove_all(dir);
+}
+
+TEST(Autotune, ResonanceAtTheRequiredBandwidthIsRefusedAndTheParametersAreUnchanged)
+{
+    // dd-table C has a resonance at 600 Hz (resources/machines/dd-table.json): a required 600 Hz velocity crossover
+    // puts it at the required bandwidth.
+    refusedWithParametersUnchanged("--preset dd-table", "C", "--min-bandwidth-hz 600",
+                                   "resonance too close to the required bandwidth");
+}
+
+TEST(Autotune, DriveFaultIsRefusedAndTheParametersAreUnchanged)
+{
+    // The drive faults 0.5 s (machine time) into a test: the first FRF pass (docs/modbus.md fault injection).
+    refusedWithParametersUnchanged("--preset vmc --fault drive-fault:0.5", "X", "", "drive fault");
 }
 
 TEST(Autotune, BadOptionsExit2)
