@@ -13,6 +13,7 @@
 #include "core/tuning/VelocityLoopDesign.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -59,6 +60,14 @@ constexpr double kReadBackRel = 1e-6;
 std::string num(double v, int significant = 4)
 {
     return model::formatNumber(v, significant);
+}
+
+/// An integer as text, without the locale.
+std::string count(long long n)
+{
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, n);
+    return std::string(buf, r.ptr);
 }
 
 bool finitePositive(double v)
@@ -489,23 +498,24 @@ Result<AutoTuneResult> Sequence::run()
         s.measured = {{"tries", tries}};
         s.chosen = {{"amplitude_pct", bestPct}, {"valid_lines", f.valid}, {"lines", f.lines}};
         s.rule = "adaptive multisine " + num(kFrfMinHz, 3) + " Hz ... 0.975 fs, " + num(kFrfSpacingHz, 3) +
-                 " Hz spacing, " + num(kFrfBudgetS, 2) + " s budget each; at most " + std::to_string(kMaxFrfTries) +
-                 " tries: the peak halves (down to " + num(kMinFrfAmplitudePct, 2) + " %) while more than " +
-                 num(100.0 * kRetryVoltageFraction, 2) +
+                 " Hz spacing, " + num(kFrfBudgetS, 2) + " s budget each; at most " +
+                 count(static_cast<long long>(kMaxFrfTries)) + " tries: the peak halves (down to " +
+                 num(kMinFrfAmplitudePct, 2) + " %) while more than " + num(100.0 * kRetryVoltageFraction, 2) +
                  " % of the lines reach the voltage limit, else doubles (up to " + num(maxPct, 3) +
                  " %) while more than " + num(100.0 * kRetryNonlinearFraction, 2) +
                  " % are non-linear (friction); the try with the most valid lines is used";
         m_r.steps.push_back(s);
         const double lines = static_cast<double>(std::max<std::size_t>(f.lines, 1));
         if (static_cast<double>(f.nonlinear) > kMaxNonlinearFraction * lines)
-            return refuse("strong non-linearity: " + std::to_string(f.nonlinear) + " of " + std::to_string(f.lines) +
+            return refuse("strong non-linearity: " + count(static_cast<long long>(f.nonlinear)) + " of " +
+                          count(static_cast<long long>(f.lines)) +
                           " FRF lines change with the excitation beyond their noise (more than " +
                           num(100.0 * kMaxNonlinearFraction, 2) +
                           " %); friction or backlash dominate the small-signal response");
         if (static_cast<double>(f.valid) < kMinValidFraction * lines)
-            return refuse("coherence too low: only " + std::to_string(f.valid) + " of " + std::to_string(f.lines) +
-                          " FRF lines are valid (at least " + num(100.0 * kMinValidFraction, 2) +
-                          " % needed) within the torque limit and the time budget");
+            return refuse("coherence too low: only " + count(static_cast<long long>(f.valid)) + " of " +
+                          count(static_cast<long long>(f.lines)) + " FRF lines are valid (at least " +
+                          num(100.0 * kMinValidFraction, 2) + " % needed) within the torque limit and the time budget");
     }
     const dsp::FrequencyResponse& t0 = measured.measurement.frf;
 
@@ -515,7 +525,7 @@ Result<AutoTuneResult> Sequence::run()
     std::map<int, dsp::NotchSpec> existing;
     int slotCount = 0;
     for (int k = 1; k <= 16; ++k) {
-        const std::string p = "filter.notch" + std::to_string(k) + ".";
+        const std::string p = "filter.notch" + count(static_cast<long long>(k)) + ".";
         if (!std::isfinite(value(p + "center")))
             break;
         slotCount = k;
@@ -558,7 +568,7 @@ Result<AutoTuneResult> Sequence::run()
         model::ParameterValues v;
         nlohmann::json chosen = nlohmann::json::array();
         for (const auto& n : notches.notches) {
-            const std::string p = "filter.notch" + std::to_string(n.slot) + ".";
+            const std::string p = "filter.notch" + count(static_cast<long long>(n.slot)) + ".";
             v[p + "center"] = n.spec.centerHz;
             v[p + "width"] = n.spec.widthHz;
             v[p + "depth"] = n.spec.depth;
