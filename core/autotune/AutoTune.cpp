@@ -604,7 +604,9 @@ Result<AutoTuneResult> Sequence::run()
     dsp::FrequencyResponse plantF = std::move(plantR).value();
     dsp::FrequencyResponse* plant = &plantF;
     // The new notches in the plant: L_after/L_before of the notch prediction (Π N_k on every line).
-    for (std::size_t i = 0; i < plant->size(); ++i) {
+    const std::size_t withNotches =
+        std::min(notches.prediction.openLoopBefore.size(), notches.prediction.openLoopAfter.size());
+    for (std::size_t i = 0; i < plant->size() && i < withNotches; ++i) {
         const auto lb = notches.prediction.openLoopBefore.h[i];
         const auto la = notches.prediction.openLoopAfter.h[i];
         if (plant->valid[i] && std::abs(lb) > 0.0 && std::isfinite(std::abs(la)))

@@ -78,7 +78,7 @@ enum class Outcome {
     Refused, ///< stopped with a reason; every parameter restored
 };
 
-struct Result_ {
+struct AutoTuneResult {
     Outcome outcome = Outcome::Refused;
     std::string reason;                       ///< why it refused (empty otherwise)
     ErrorCode reasonCode = ErrorCode::Safety; ///< the refusal's class (Safety: the loop cannot be tuned safely)
@@ -88,11 +88,10 @@ struct Result_ {
     bool restored = false;         ///< the parameters were written back and read back equal
     model::ParameterValues before; ///< every writable parameter as found
 };
-using AutoTuneResult = Result_;
 
 /// Runs the sequence on `drive`. Errors (nothing changed yet): bad options, an axis the drive does not have, a
-/// drive that cannot run the tests the sequence needs. Everything later is a Result_ (Refused with the reason and
-/// the parameters restored, or Applied/DryRun).
+/// drive that cannot run the tests the sequence needs. Everything later is an AutoTuneResult (Refused with the reason
+/// and the parameters restored, or Applied/DryRun).
 Result<AutoTuneResult> runAutoTune(device::Drive& drive, const Options& options);
 
 /// The result JSON of docs/formats.md "autotune result": outcome, reason, steps[] {name, measured, chosen, rule},

@@ -88,13 +88,19 @@ void tuneAndCheck(const std::string& machine, const std::string& axis)
     EXPECT_EQ(j["outcome"], "applied");
     const std::vector<std::string> names{"safety-envelope", "current-loop", "frf",    "notches", "velocity-pi",
                                          "position",        "move",         "verify", "apply"};
-    ASSERT_EQ(j["steps"].size(), names.size()) << j.dump(1);
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        EXPECT_EQ(j["steps"][i]["name"], names[i]);
-        EXPECT_TRUE(j["steps"][i]["measured"].is_object());
-        EXPECT_TRUE(j["steps"][i]["chosen"].is_object());
-        EXPECT_FALSE(j["steps"][i]["rule"].get<std::string>().empty());
+    // In this order; velocity-pi ... verify appear again when the verification sent the design back.
+    std::size_t next = 0;
+    for (const auto& step : j["steps"]) {
+        const auto name = step["name"].get<std::string>();
+        if (next < names.size() && name == names[next])
+            ++next;
+        else
+            EXPECT_TRUE(name == "velocity-pi" || name == "position" || name == "move" || name == "verify") << name;
+        EXPECT_TRUE(step["measured"].is_object());
+        EXPECT_TRUE(step["chosen"].is_object());
+        EXPECT_FALSE(step["rule"].get<std::string>().empty());
     }
+    EXPECT_EQ(next, names.size()) << j.dump(1);
     const auto& fin = j["final"];
     for (const char* k : {"phase_margin_deg", "gain_margin_dB", "velocity_bandwidth_Hz", "position_bandwidth_Hz",
                           "settling_time_s", "peak_following_error", "motion_time_s"})
