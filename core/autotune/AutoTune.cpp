@@ -39,7 +39,7 @@ constexpr double kRetryVoltageFraction = 0.2;
 constexpr double kMinFrfAmplitudePct = 2.5;
 constexpr int kMaxFrfTries = 3;
 /// Largest FRF peak the ladder goes to [% rated torque] (and never above the drive's own limit).
-constexpr double kMaxFrfAmplitudePct = 30.0;
+constexpr double kLadderPeakCapPct = 30.0;
 /// Motion budget of one adaptive FRF [s].
 constexpr double kFrfBudgetS = 5.0;
 /// The multisine band: lines at (m + 1/3)·10 Hz from 20 Hz to 0.975 of the trace rate (docs/multisine.md).
@@ -384,7 +384,7 @@ Result<AutoTuneResult> Sequence::run()
         m_linear = pos == nullptr || pos->name.size() < 2 || pos->name.substr(pos->name.size() - 2) == "_m";
     }
     hold.chosen = {{"frf_amplitude_pct", amplitudePct},
-                   {"frf_amplitude_max_pct", std::min(kMaxFrfAmplitudePct, m_limits.frfAmplitudeMaxPct)},
+                   {"frf_amplitude_max_pct", std::min(kLadderPeakCapPct, m_limits.frfAmplitudeMaxPct)},
                    {"current_step_A", stepA},
                    {"time_budget_s", m_o.timeBudgetS},
                    {"following_error_stop", feStop ? "the drive's" : "not offered by the drive"},
@@ -468,7 +468,7 @@ Result<AutoTuneResult> Sequence::run()
         nlohmann::json tries = nlohmann::json::array();
         std::optional<device::AdaptiveFrfResult> best;
         double bestPct = amplitudePct;
-        const double maxPct = std::min(kMaxFrfAmplitudePct, m_limits.frfAmplitudeMaxPct);
+        const double maxPct = std::min(kLadderPeakCapPct, m_limits.frfAmplitudeMaxPct);
         double pct = amplitudePct;
         for (int attempt = 0; attempt < kMaxFrfTries; ++attempt) {
             double t = 0.0;
