@@ -217,6 +217,9 @@ void Sequence::restore()
 
 Status Sequence::write(const model::ParameterValues& v)
 {
+    for (const auto& [k, x] : v)
+        if (!m_r.before.count(k) || !m_writable.count(k))
+            return makeError(ErrorCode::Device, "axis " + m_o.axis + " has no writable parameter '" + k + "'");
     if (auto st = m_drive.writeParameters(m_o.axis, v); !st)
         return st;
     for (const auto& [k, x] : v) {
