@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The one-button tuner in process (core/autotune/AutoTune.h) on the embedded simulated drive: refusals and an abort
+// restore every parameter (all of them read before and after), a dry run changes nothing, and the -3 dB bandwidth
+// helper against the analytic first-order loop.
+#include "core/autotune/AutoTune.h"
+#include "core/device/DriveRegistry.h"
+
+#include <atomic>
+#include <cmath>
+#include <complex>
+#include <gtest/gtest.h>
+#include <numbers>
+
+using namespace axistune;
+
+namespace {
+
+std::unique_ptr<device::Drive> open(const std::string& uri)
+{
+    auto d = device::connect({uri, 1});
+    EXPECT_TRUE(d.ok()) << (d.ok() ? "" : d.error().detail);
+    return d.ok() ? std::move(d).value() : nullptr;
+}
+
+model::ParameterValues allParameters(device::Drive& d, const std::string& axis)
+{
+    std::vector<std::string> keys;
+    auto metas = d.parameterMetadata(axis);
+    EXPECT_TRUE(metas.ok());
+    for (const auto& m : *metas)
+        keys.push_back(m.key);
+    auto v = d.readParameters(axis, keys);
+    EXPECT_TRUE(v.ok());
+    return v.ok() ? *v : model::ParameterValues{};
+}
+
+} // namespace
+
+TEST(AutoTune, BandwidthOfAFirstOrderLoopIsItsCornerFrequency)
+{
+    // T = 1/(1 + j f/fc): |T| = 1/sqrt(2) (-3.01 dB) at fc = 100 Hz. 400 log lines 1 Hz ... 10 kHz: the linear
+    // interpolation between neighbouring lines (2.3 % apart) leaves < 0.1 % (3.01 vs 3 dB is 0.07 %).
+    std::vector<double> f;
+    std::vector<std::complex<double>> t;
+    for (int i = 0; i < 400; ++i) {
+        f.push_back(std::pow(10.0, 4.0 * i / 399.0));
+        t.push_back(1.0 / std::complex<double>(1.0, f.back() / 100.0));
+    }
+    const auto bw = autotune::closedLoopBandwidthHz(f, t);
+    ASSERT_TRUE(bw.has_value());
+    EXPECT_NEAR(*bw, 100.0 * std::sqrt(std::pow(10.0, 0.3) - 1.0), 0.1);
+    // Never 3 dB down: no bandwidth.
+    EXPECT_FALSE(autotune::closedLoopBandwidthHz({1.0, 2.0}, {1.0, 0.9}).has_value());
+}
+
+TEST(AutoTune, CoherenceTooLowIsRefusedAndEveryParameterIsUnchanged)
+{
+    // dd-table C at the standard 10 % peak reaches the current loop's voltage limit on most lines; a budget of 6 s
+    // leaves no time for a second FRF at a lower peak, so too few lines are valid.
+    auto d = open("sim:dd-table");
+    ASSERT_TRUE(d);
+    const auto before = allParameters(*d, "C");
+    autotune::Options o;
+    o.axis = "C";
+    o.timeBudgetS = 6.0;
+    auto r = autotune::runAutoTune(*d, o);
+    ASSERT_TRUE(r.ok()) << r.error().detail;
+    EXPECT_EQ(r->outcome, autotune::Outcome::Refused);
+    EXPECT_NE(r->reason.find("coherence too low"), std::string::npos) << r->reason;
+    EXPECT_EQ(r->reasonCode, ErrorCode::Safety);
+    EXPECT_FALSE(r->final.has_value());
+    EXPECT_EQ(allParameters(*d, "C"), before);
+}
+
+TEST(AutoTune, AbortAfterTheGainsAreWrittenRestoresEveryParameter)
+{
+    auto d = open("sim:two-inertia");
+    ASSERT_TRUE(d);
+    const auto before = allParameters(*d, "A");
+    std::atomic<bool> abort{false};
+    bool sawNewGains = false;
+    autotune::Options o;
+    o.axis = "A";
+    o.run.abort = &abort;
+    // The token is set in the first test that runs with velocity gains other than the preset's (the move or the
+    // verification): the run has written parameters by then.
+    device::Drive* drive = d.get();
+    o.run.progress = [&](double, const std::string&) {
+        if (abort)
+            return;
+        const std::vector<std::string> k{"velocity.kp"};
+        auto v = drive->readParameters("A", k);
+        if (v.ok() && v->at("velocity.kp") != before.at("velocity.kp")) {
+            sawNewGains = true;
+            abort = true;
+        }
+    };
+    auto r = autotune::runAutoTune(*d, o);
+    ASSERT_TRUE(r.ok()) << r.error().detail;
+    EXPECT_TRUE(sawNewGains);
+    EXPECT_EQ(r->outcome, autotune::Outcome::Refused);
+    EXPECT_EQ(r->reasonCode, ErrorCode::Aborted) << r->reason;
+    EXPECT_TRUE(r->restored);
+    EXPECT_EQ(allParameters(*d, "A"), before);
+}
+
+TEST(AutoTune, DryRunMeasuresEverythingAndChangesNothing)
+{
+    auto d = open("sim:two-inertia");
+    ASSERT_TRUE(d);
+    const auto before = allParameters(*d, "A");
+    autotune::Options o;
+    o.axis = "A";
+    o.dryRun = true;
+    auto r = autotune::runAutoTune(*d, o);
+    ASSERT_TRUE(r.ok()) << r.error().detail;
+    EXPECT_EQ(r->outcome, autotune::Outcome::DryRun) << r->reason;
+    ASSERT_TRUE(r->final.has_value());
+    EXPECT_FALSE(r->final->parameters.empty());
+    EXPECT_TRUE(r->restored);
+    EXPECT_EQ(allParameters(*d, "A"), before);
+    // The JSON says what it would have applied and that nothing was.
+    const auto j = autotune::resultJson(*r, o);
+    EXPECT_EQ(j["outcome"], "dry-run");
+    EXPECT_TRUE(j["parameters_restored"].get<bool>());
+    EXPECT_TRUE(j["final"]["parameters"].contains("velocity.kp"));
+}
+
+TEST(AutoTune, BadOptionsAreErrorsBeforeAnythingMoves)
+{
+    auto d = open("sim:vmc");
+    ASSERT_TRUE(d);
+    autotune::Options o;
+    o.axis = "X";
+    o.timeBudgetS = 0.0;
+    EXPECT_EQ(autotune::runAutoTune(*d, o).error().code, ErrorCode::BadInput);
+    o.timeBudgetS = 30.0;
+    o.axis = "";
+    EXPECT_EQ(autotune::runAutoTune(*d, o).error().code, ErrorCode::BadInput);
+    EXPECT_FALSE(autotune::parseStyle("soft").ok());
+    EXPECT_EQ(*autotune::parseStyle("stiff"), autotune::Style::Stiff);
+}
