@@ -212,7 +212,12 @@ void TimeTracePlot::setCapture(std::shared_ptr<const model::Capture> capture, co
                 continue;
             Trace t;
             t.name = name;
-            t.unit = channelUnitLabel(name);
+            // The unit the capture states (metadata unit.CHANNEL, as the drive's scope gives it), else the
+            // one of the name's suffix.
+            const auto stated = m_capture->metadata.find("unit." + c.name);
+            t.unit = stated != m_capture->metadata.end() && !stated->second.empty()
+                         ? unitLabelOf(QString::fromStdString(stated->second))
+                         : channelUnitLabel(name);
             t.fromCapture = true;
             t.color = detail::paletteColor(colour++);
             t.data.resize(static_cast<int>(n));
