@@ -5,9 +5,11 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/DriveController.h"
 #include "app/gui/WidgetUtil.h"
+#include "core/device/ScopeMath.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/ScopeCsv.h"
 #include "core/model/Number.h"
+#include "widgets/CurvePlot.h"
 #include "widgets/TimeTracePlot.h"
 
 #include <QCheckBox>
@@ -26,6 +28,7 @@
 #include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -42,30 +45,6 @@ constexpr int kPollMs = 100;        ///< poll period while armed or rolling
 constexpr qint64 kRollDrawMs = 200; ///< redraw period of the roll window
 constexpr std::size_t kMaxRowsPerPoll = 262144;
 constexpr const char* kStoreCapture = "scope";
-
-/// A scope capture as a plot table: time_s relative to the trigger (triggered) or the drive's machine time
-/// n / rate (roll), then every channel with its unit (metadata unit.CHANNEL); the drive's own t_s is left
-/// out (it is the time axis).
-std::shared_ptr<const model::Capture> plotTable(const device::ScopeCapture& c)
-{
-    auto t = std::make_shared<model::Capture>();
-    model::setMetadataNumber(t->metadata, "fs_Hz", c.rateHz);
-    model::Channel time{"time_s", {}};
-    time.data.reserve(c.rows());
-    for (const auto n : c.samples) {
-        const double rel =
-            c.triggered ? static_cast<double>(static_cast<std::int64_t>(n - c.triggerSample)) : static_cast<double>(n);
-        time.data.push_back(rel / c.rateHz);
-    }
-    t->channels.push_back(std::move(time));
-    for (std::size_t k = 0; k < c.channels.size() && k < c.columns.size(); ++k) {
-        if (c.channels[k].name == "t_s" || c.channels[k].name == "time_s")
-            continue;
-        t->metadata["unit." + c.channels[k].name] = c.channels[k].unit;
-        t->channels.push_back({c.channels[k].name, c.columns[k]});
-    }
-    return t;
-}
 
 QString stateLabel(const QString& key)
 {
@@ -86,6 +65,28 @@ QString stateLabel(const QString& key)
     return key;
 }
 } // namespace
+
+// A scope capture as a plot table (ScopeDock.h).
+std::shared_ptr<model::Capture> scopePlotTable(const device::ScopeCapture& c)
+{
+    auto t = std::make_shared<model::Capture>();
+    model::setMetadataNumber(t->metadata, "fs_Hz", c.rateHz);
+    model::Channel time{"time_s", {}};
+    time.data.reserve(c.rows());
+    for (const auto n : c.samples) {
+        const double rel =
+            c.triggered ? static_cast<double>(static_cast<std::int64_t>(n - c.triggerSample)) : static_cast<double>(n);
+        time.data.push_back(rel / c.rateHz);
+    }
+    t->channels.push_back(std::move(time));
+    for (std::size_t k = 0; k < c.channels.size() && k < c.columns.size(); ++k) {
+        if (c.channels[k].name == "t_s" || c.channels[k].name == "time_s")
+            continue;
+        t->metadata["unit." + c.channels[k].name] = c.channels[k].unit;
+        t->channels.push_back({c.channels[k].name, c.columns[k]});
+    }
+    return t;
+}
 
 ScopeDock::ScopeDock(AppContext& ctx, QWidget* parent) : QWidget(parent), m_ctx(ctx)
 {
@@ -172,6 +173,45 @@ void ScopeDock::buildUi()
     rf->addRow(m_windowLabel, m_window);
     cl->addWidget(m_rollBox);
 
+    m_mathBox = new QGroupBox;
+    auto* mf = new QFormLayout(m_mathBox);
+    m_mathLabel = new QLabel;
+    m_mathOp = new QComboBox;
+    m_mathOp->setObjectName("scopeMathOp");
+    m_mathOp->addItems({QString(), QString(), QString()});
+    mf->addRow(m_mathLabel, m_mathOp);
+    m_mathALabel = new QLabel(QStringLiteral("A:"));
+    m_mathA = new QComboBox;
+    m_mathA->setObjectName("scopeMathA");
+    mf->addRow(m_mathALabel, m_mathA);
+    m_mathBLabel = new QLabel(QStringLiteral("B:"));
+    m_mathB = new QComboBox;
+    m_mathB->setObjectName("scopeMathB");
+    mf->addRow(m_mathBLabel, m_mathB);
+    m_spectrum = new QPushButton;
+    m_spectrum->setObjectName("scopeSpectrum");
+    mf->addRow(m_spectrum);
+    m_xy = new QCheckBox;
+    m_xy->setObjectName("scopeXy");
+    mf->addRow(m_xy);
+    m_xLabel = new QLabel(QStringLiteral("X:"));
+    m_xChannel = new QComboBox;
+    m_xChannel->setObjectName("scopeXChannel");
+    mf->addRow(m_xLabel, m_xChannel);
+    m_yLabel = new QLabel(QStringLiteral("Y:"));
+    m_yChannel = new QComboBox;
+    m_yChannel->setObjectName("scopeYChannel");
+    mf->addRow(m_yLabel, m_yChannel);
+    auto* refRow = new QHBoxLayout;
+    m_keepRef = new QPushButton;
+    m_keepRef->setObjectName("scopeKeepReference");
+    m_clearRefs = new QPushButton;
+    m_clearRefs->setObjectName("scopeClearReferences");
+    refRow->addWidget(m_keepRef);
+    refRow->addWidget(m_clearRefs);
+    mf->addRow(refRow);
+    cl->addWidget(m_mathBox);
+
     m_jogBox = new QGroupBox;
     auto* jf = new QFormLayout(m_jogBox);
     m_jogDistanceLabel = new QLabel;
@@ -229,7 +269,12 @@ void ScopeDock::buildUi()
     m_plot = new widgets::TimeTracePlot;
     m_plot->setObjectName("scopePlot");
     m_plot->setMinimumSize(420, 260);
-    rl->addWidget(m_plot, 1);
+    m_xyPlot = new widgets::CurvePlot;
+    m_xyPlot->setObjectName("scopeXyPlot");
+    m_plots = new QStackedWidget;
+    m_plots->addWidget(m_plot);
+    m_plots->addWidget(m_xyPlot);
+    rl->addWidget(m_plots, 1);
     auto* fileRow = new QHBoxLayout;
     m_exportCsv = new QPushButton;
     m_exportCsv->setObjectName("scopeExportCsv");
@@ -272,6 +317,21 @@ void ScopeDock::buildUi()
     });
     connect(m_openStore, &QPushButton::clicked, this, &ScopeDock::openFromStoreInteractive);
     connect(m_openCsv, &QPushButton::clicked, this, &ScopeDock::openCsvInteractive);
+    for (auto* c : {m_mathOp, m_mathA, m_mathB})
+        connect(c, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
+    for (auto* c : {m_xChannel, m_yChannel})
+        connect(c, &QComboBox::currentIndexChanged, this, [this] { updateXyPlot(); });
+    connect(m_xy, &QCheckBox::toggled, this, [this](bool on) {
+        m_plots->setCurrentIndex(on ? 1 : 0);
+        updateXyPlot();
+    });
+    connect(m_spectrum, &QPushButton::clicked, this, [this] {
+        QString e;
+        if (!showSpectrum(&e))
+            setMessage(e, true);
+    });
+    connect(m_keepRef, &QPushButton::clicked, this, &ScopeDock::keepReference);
+    connect(m_clearRefs, &QPushButton::clicked, this, &ScopeDock::clearReferences);
     connect(m_jogButton, &QPushButton::clicked, this, &ScopeDock::startJog);
     connect(m_jogStop, &QPushButton::clicked, this, &ScopeDock::stopJog);
 }
@@ -294,6 +354,16 @@ void ScopeDock::retranslateUi()
     m_historyLabel->setText(tr("History:"));
     m_historyRows->setSuffix(tr(" samples per channel"));
     m_windowLabel->setText(tr("Shown while rolling:"));
+    m_mathBox->setTitle(tr("Math, spectrum and XY"));
+    m_mathLabel->setText(tr("Math channel:"));
+    m_mathOp->setItemText(0, tr("none"));
+    m_mathOp->setItemText(1, tr("A − B"));
+    m_mathOp->setItemText(2, tr("d/dt A"));
+    m_spectrum->setText(tr("Spectrum of A (visible window)"));
+    m_xy->setText(tr("XY plot (Y against X)"));
+    m_keepRef->setText(tr("Keep as reference"));
+    m_keepRef->setToolTip(tr("Overlays the capture shown, dashed, under the next captures"));
+    m_clearRefs->setText(tr("Clear references"));
     m_jogBox->setTitle(tr("Jog"));
     m_jogDistanceLabel->setText(tr("Distance:"));
     m_jogSpeedLabel->setText(tr("Speed:"));
@@ -761,6 +831,8 @@ void ScopeDock::updateButtons()
     const bool have = m_capture != nullptr;
     m_exportCsv->setEnabled(have);
     m_exportImage->setEnabled(have);
+    m_spectrum->setEnabled(have);
+    m_keepRef->setEnabled(have);
     m_save->setEnabled(have && m_ctx.database() != nullptr);
     m_openStore->setEnabled(m_ctx.database() != nullptr);
 }
@@ -790,18 +862,161 @@ void ScopeDock::show(std::shared_ptr<const device::ScopeCapture> capture, bool r
 {
     (void)rescale;
     m_capture = std::move(capture);
-    if (m_capture) {
-        const bool keepCursors = m_plot->cursorReadout().size() > 0;
-        m_plot->setCapture(plotTable(*m_capture));
-        if (!keepCursors && m_capture->rows() >= 2) {
-            const auto [lo, hi] = m_plot->visibleRange();
-            m_plot->setCursors(lo + 0.25 * (hi - lo), lo + 0.75 * (hi - lo));
-        }
-    } else {
-        m_plot->clear();
-    }
+    updateAnalysisChannels();
+    redraw();
     updateButtons();
     emit captureShown();
+}
+
+void ScopeDock::redraw()
+{
+    m_mathName.clear();
+    if (!m_capture) {
+        m_plot->setCapture(nullptr);
+        updateXyPlot();
+        return;
+    }
+    auto table = scopePlotTable(*m_capture);
+    const auto op = static_cast<Math>(std::clamp(m_mathOp->currentIndex(), 0, 2));
+    const std::string a = m_mathA->currentText().toStdString(), b = m_mathB->currentText().toStdString();
+    if (op != Math::None && !a.empty()) {
+        auto m =
+            op == Math::Difference ? device::scopeDifference(*m_capture, a, b) : device::scopeDerivative(*m_capture, a);
+        if (m) {
+            m_mathName = qs(m->info.name);
+            table->metadata["unit." + m->info.name] = m->info.unit;
+            table->channels.push_back({m->info.name, std::move(m->values)});
+        } else {
+            setMessage(qs(m.error().detail), true);
+        }
+    }
+    const bool keepCursors = !m_plot->cursorReadout().isEmpty();
+    m_plot->setCapture(table);
+    if (!keepCursors && m_capture->rows() >= 2) {
+        const auto [lo, hi] = m_plot->visibleRange();
+        m_plot->setCursors(lo + 0.25 * (hi - lo), lo + 0.75 * (hi - lo));
+    }
+    updateXyPlot();
+}
+
+void ScopeDock::updateAnalysisChannels()
+{
+    QStringList names;
+    if (m_capture)
+        for (const auto& ch : m_capture->channels)
+            names << qs(ch.name);
+    for (auto* c : {m_mathA, m_mathB, m_xChannel, m_yChannel}) {
+        QStringList have;
+        for (int i = 0; i < c->count(); ++i)
+            have << c->itemText(i);
+        if (have == names)
+            continue;
+        const QString current = c->currentText();
+        const QSignalBlocker block(c);
+        c->clear();
+        c->addItems(names);
+        if (const int i = c->findText(current); i >= 0)
+            c->setCurrentIndex(i);
+        else if (c == m_mathB || c == m_yChannel)
+            c->setCurrentIndex(std::min(1, c->count() - 1));
+    }
+}
+
+void ScopeDock::updateXyPlot()
+{
+    if (!m_xy->isChecked())
+        return;
+    m_xyPlot->clear();
+    if (!m_capture)
+        return;
+    int kx = -1, ky = -1;
+    for (std::size_t k = 0; k < m_capture->channels.size(); ++k) {
+        if (qs(m_capture->channels[k].name) == m_xChannel->currentText())
+            kx = static_cast<int>(k);
+        if (qs(m_capture->channels[k].name) == m_yChannel->currentText())
+            ky = static_cast<int>(k);
+    }
+    if (kx < 0 || ky < 0)
+        return;
+    m_xyPlot->setAxes(m_xChannel->currentText(), qs(m_capture->channels[kx].unit), m_yChannel->currentText(),
+                      qs(m_capture->channels[ky].unit));
+    m_xyPlot->addCurve(tr("capture"), m_capture->columns[kx], m_capture->columns[ky]);
+    m_xyPlot->rescale();
+}
+
+void ScopeDock::setMath(Math op, const QString& a, const QString& b)
+{
+    m_mathA->setCurrentIndex(m_mathA->findText(a));
+    m_mathB->setCurrentIndex(m_mathB->findText(b));
+    m_mathOp->setCurrentIndex(static_cast<int>(op));
+    redraw();
+}
+
+void ScopeDock::setXy(bool on, const QString& x, const QString& y)
+{
+    if (!x.isEmpty())
+        m_xChannel->setCurrentIndex(m_xChannel->findText(x));
+    if (!y.isEmpty())
+        m_yChannel->setCurrentIndex(m_yChannel->findText(y));
+    m_xy->setChecked(on);
+    updateXyPlot();
+}
+
+void ScopeDock::keepReference()
+{
+    if (!m_capture)
+        return;
+    ++m_references;
+    const auto table = scopePlotTable(*m_capture);
+    const auto& time = table->channels.front().data;
+    for (std::size_t k = 1; k < table->channels.size(); ++k) {
+        const auto& ch = table->channels[k];
+        const auto u = table->metadata.find("unit." + ch.name);
+        m_plot->addSeries(tr("ref %1: %2").arg(m_references).arg(qs(ch.name)), time, ch.data,
+                          u == table->metadata.end() ? QString() : qs(u->second), QColor(150, 150, 150), Qt::DashLine);
+    }
+}
+
+void ScopeDock::clearReferences()
+{
+    m_references = 0;
+    m_plot->clear();
+    redraw();
+}
+
+widgets::CurvePlot* ScopeDock::showSpectrum(QString* error)
+{
+    auto fail = [&](const QString& e) -> widgets::CurvePlot* {
+        if (error)
+            *error = e;
+        return nullptr;
+    };
+    if (!m_capture)
+        return fail(tr("No capture shown"));
+    const QString channel = m_mathA->currentText();
+    // The rows inside the visible time window (time as the plot shows it).
+    const auto table = scopePlotTable(*m_capture);
+    const auto& t = table->channels.front().data;
+    const auto [lo, hi] = m_plot->visibleRange();
+    const auto first = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), lo) - t.begin());
+    const auto last = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), hi) - t.begin());
+    auto s = device::scopeSpectrum(*m_capture, channel.toStdString(), first, last > first ? last - first : 0);
+    if (!s)
+        return fail(qs(s.error().detail));
+    QString unit;
+    for (const auto& ch : m_capture->channels)
+        if (qs(ch.name) == channel)
+            unit = qs(ch.unit);
+    auto* plot = new widgets::CurvePlot;
+    plot->setAxes(tr("Frequency"), QStringLiteral("Hz"), tr("Amplitude"), unit);
+    plot->addCurve(channel, s->freqHz, s->amplitude);
+    plot->rescale();
+    plot->setProperty("resolutionHz", s->resolutionHz);
+    m_ctx.showDocument(plot, tr("Spectrum of %1 (%2 samples, %3 Hz resolution)")
+                                 .arg(channel)
+                                 .arg(last - first)
+                                 .arg(qs(model::formatNumber(s->resolutionHz, 4))));
+    return plot;
 }
 
 std::map<std::string, std::string> ScopeDock::captureMetadata() const

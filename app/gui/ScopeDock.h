@@ -32,17 +32,23 @@ class QLabel;
 class QListWidget;
 class QPushButton;
 class QSpinBox;
+class QStackedWidget;
 class QTimer;
 
 namespace axistune {
 namespace widgets {
+class CurvePlot;
 class TimeTracePlot;
-}
+} // namespace widgets
 namespace gui {
 
 class AppContext;
 class DriveRequest;
 struct DriveReply;
+
+/// A scope capture as the dock plots it: time_s relative to the trigger (triggered) or the drive's machine
+/// time n / rate (roll), then every channel but t_s with the drive's unit (metadata unit.CHANNEL).
+std::shared_ptr<model::Capture> scopePlotTable(const device::ScopeCapture& capture);
 
 class ScopeDock : public QWidget {
     Q_OBJECT
@@ -80,6 +86,21 @@ public:
     QString stateText() const;
     QString messageText() const;
     widgets::TimeTracePlot* plot() const { return m_plot; }
+
+    /// Math channel added to the plot: none, A − B, d/dt A (ScopeMath.h).
+    enum class Math { None, Difference, Derivative };
+    void setMath(Math op, const QString& a, const QString& b = QString());
+    /// Name of the math channel shown (empty: none) and the error that kept it from being shown.
+    QString mathChannel() const { return m_mathName; }
+    /// XY: Y against X of the capture shown, instead of the time traces.
+    void setXy(bool on, const QString& x = QString(), const QString& y = QString());
+    widgets::CurvePlot* xyPlot() const { return m_xyPlot; }
+    /// Keeps the capture shown as a dashed reference in the time plot (overlays of earlier captures).
+    void keepReference();
+    void clearReferences();
+    int referenceCount() const { return m_references; }
+    /// Amplitude spectrum of channel A over the visible time window, opened as a document; the plot or null.
+    widgets::CurvePlot* showSpectrum(QString* error = nullptr);
 
     bool exportCsv(const QString& path, QString* error = nullptr) const;
     bool exportImage(const QString& path, QString* error = nullptr) const;
@@ -130,6 +151,9 @@ private:
     void openFromStoreInteractive();
     void openCsvInteractive();
     void onJogDone(const DriveReply& reply);
+    void updateAnalysisChannels();
+    void updateXyPlot();
+    void redraw();
     QString channelUnit(const QString& channel) const;
     bool linearAxis() const;
     std::map<std::string, std::string> captureMetadata() const;
@@ -174,6 +198,25 @@ private:
     QPushButton* m_save = nullptr;
     QPushButton* m_openStore = nullptr;
     QPushButton* m_openCsv = nullptr;
+    QGroupBox* m_mathBox = nullptr;
+    QLabel* m_mathLabel = nullptr;
+    QComboBox* m_mathOp = nullptr;
+    QLabel* m_mathALabel = nullptr;
+    QComboBox* m_mathA = nullptr;
+    QLabel* m_mathBLabel = nullptr;
+    QComboBox* m_mathB = nullptr;
+    QPushButton* m_spectrum = nullptr;
+    QCheckBox* m_xy = nullptr;
+    QLabel* m_xLabel = nullptr;
+    QComboBox* m_xChannel = nullptr;
+    QLabel* m_yLabel = nullptr;
+    QComboBox* m_yChannel = nullptr;
+    QPushButton* m_keepRef = nullptr;
+    QPushButton* m_clearRefs = nullptr;
+    QStackedWidget* m_plots = nullptr;
+    widgets::CurvePlot* m_xyPlot = nullptr;
+    QString m_mathName;
+    int m_references = 0;
     QGroupBox* m_jogBox = nullptr;
     QLabel* m_jogDistanceLabel = nullptr;
     QDoubleSpinBox* m_jogDistance = nullptr;

@@ -6,6 +6,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/ScopeDock.h"
+#include "widgets/CurvePlot.h"
 #include "widgets/TimeTracePlot.h"
 
 #include <QDockWidget>
@@ -171,6 +172,35 @@ private slots:
         for (const char* suffix : {"png", "svg", "pdf"})
             QVERIFY2(s->exportImage(m_dir.filePath(QString("reversal.") + suffix), &error), qPrintable(error));
         QVERIFY(QFileInfo(m_dir.filePath("reversal.png")).size() > 1000);
+        // Math channel A − B: at the cursor it is the difference of the two samples there.
+        s->plot()->setCursors(t0, t1);
+        s->setMath(ScopeDock::Math::Difference, "motor_vel_rad_s", "velocity_cmd_rad_s");
+        const QString diff = QString::fromUtf8("motor_vel_rad_s − velocity_cmd_rad_s");
+        QCOMPARE(s->mathChannel(), diff);
+        QVERIFY(s->plot()->seriesNames().contains(diff));
+        const std::size_t r0 = original.triggerRow() - 10;
+        QVERIFY(std::abs(s->plot()->cursorValue(0, diff) - (original.columns[vm][r0] - original.columns[vc][r0])) <=
+                1e-9);
+        // Spectrum of the visible window (the whole 0.2 s capture: 800 samples, 5 Hz bins).
+        s->plot()->rescale();
+        auto* spectrum = s->showSpectrum(&error);
+        QVERIFY2(spectrum, qPrintable(error));
+        QCOMPARE(spectrum->property("resolutionHz").toDouble(), kRateHz / 800.0);
+        QCOMPARE(spectrum->curveCount(), 1);
+        s->setMath(ScopeDock::Math::None, QString());
+        QVERIFY(s->mathChannel().isEmpty());
+        // A reference overlay: every channel of the capture again, dashed, until cleared.
+        const int before = static_cast<int>(s->plot()->seriesNames().size());
+        s->keepReference();
+        QCOMPARE(s->referenceCount(), 1);
+        QCOMPARE(static_cast<int>(s->plot()->seriesNames().size()), before + 3);
+        s->clearReferences();
+        QCOMPARE(static_cast<int>(s->plot()->seriesNames().size()), before);
+        // XY: the following error against the velocity command.
+        s->setXy(true, "velocity_cmd_rad_s", "following_error_m");
+        QCOMPARE(s->xyPlot()->curveCount(), 1);
+        axistune::testing::maybeScreenshot(w.scopeDock(), "scope-dock-xy");
+        s->setXy(false);
         // A session without a scope capture is refused by name.
         QVERIFY(!s->openFromStore(id + 1000, &error));
         QVERIFY(!error.isEmpty());
