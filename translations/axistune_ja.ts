@@ -7383,5 +7383,85 @@
         <source>Jog: %1</source>
         <translation>ジョグ: %1</translation>
     </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="339" />
+        <source>Math, spectrum and XY</source>
+        <translation>演算、スペクトル、XY</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="340" />
+        <source>Math channel:</source>
+        <translation>演算チャンネル:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="341" />
+        <source>none</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="342" />
+        <source>A − B</source>
+        <translation>A − B</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="343" />
+        <source>d/dt A</source>
+        <translation>d/dt A</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="344" />
+        <source>Spectrum of A (visible window)</source>
+        <translation>A のスペクトル (表示範囲)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="345" />
+        <source>XY plot (Y against X)</source>
+        <translation>XY 表示 (X に対する Y)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="346" />
+        <source>Keep as reference</source>
+        <translation>基準として残す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="347" />
+        <source>Overlays the capture shown, dashed, under the next captures</source>
+        <translation>表示中の記録を破線で次の記録に重ねて表示します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="348" />
+        <source>Clear references</source>
+        <translation>基準を消去</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="944" />
+        <source>capture</source>
+        <translation>記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="976" />
+        <source>ref %1: %2</source>
+        <translation>基準 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="996" />
+        <source>No capture shown</source>
+        <translation>表示中の記録がありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1012" />
+        <source>Frequency</source>
+        <translation>周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1012" />
+        <source>Amplitude</source>
+        <translation>振幅</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1016" />
+        <source>Spectrum of %1 (%2 samples, %3 Hz resolution)</source>
+        <translation>%1 のスペクトル (%2 サンプル、分解能 %3 Hz)</translation>
+    </message>
 </context>
 </TS>

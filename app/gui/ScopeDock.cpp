@@ -46,24 +46,6 @@ constexpr qint64 kRollDrawMs = 200; ///< redraw period of the roll window
 constexpr std::size_t kMaxRowsPerPoll = 262144;
 constexpr const char* kStoreCapture = "scope";
 
-QString stateLabel(const QString& key)
-{
-    if (key == "idle")
-        return ScopeDock::tr("Stopped");
-    if (key == "filling")
-        return ScopeDock::tr("Armed: filling the pre-trigger");
-    if (key == "waiting")
-        return ScopeDock::tr("Waiting for the trigger");
-    if (key == "triggered")
-        return ScopeDock::tr("Triggered");
-    if (key == "done")
-        return ScopeDock::tr("Capture complete");
-    if (key == "rolling")
-        return ScopeDock::tr("Rolling");
-    if (key == "offline")
-        return ScopeDock::tr("Offline review");
-    return key;
-}
 } // namespace
 
 // A scope capture as a plot table (ScopeDock.h).
@@ -837,6 +819,25 @@ void ScopeDock::updateButtons()
     m_openStore->setEnabled(m_ctx.database() != nullptr);
 }
 
+QString ScopeDock::stateLabel(const QString& key)
+{
+    if (key == "idle")
+        return tr("Stopped");
+    if (key == "filling")
+        return tr("Armed: filling the pre-trigger");
+    if (key == "waiting")
+        return tr("Waiting for the trigger");
+    if (key == "triggered")
+        return tr("Triggered");
+    if (key == "done")
+        return tr("Capture complete");
+    if (key == "rolling")
+        return tr("Rolling");
+    if (key == "offline")
+        return tr("Offline review");
+    return key;
+}
+
 QString ScopeDock::stateText() const
 {
     return stateLabel(m_stateKey);
@@ -915,10 +916,12 @@ void ScopeDock::updateAnalysisChannels()
         const QSignalBlocker block(c);
         c->clear();
         c->addItems(names);
+        // Keep the choice; else the first channel that is not the machine time (B and Y: the next one).
+        const int skip = names.isEmpty() || names.front() != QLatin1String("t_s") ? 0 : 1;
         if (const int i = c->findText(current); i >= 0)
             c->setCurrentIndex(i);
-        else if (c == m_mathB || c == m_yChannel)
-            c->setCurrentIndex(std::min(1, c->count() - 1));
+        else
+            c->setCurrentIndex(std::min(skip + ((c == m_mathB || c == m_yChannel) ? 1 : 0), c->count() - 1));
     }
 }
 

@@ -151,6 +151,7 @@ private:
     void openFromStoreInteractive();
     void openCsvInteractive();
     void onJogDone(const DriveReply& reply);
+    static QString stateLabel(const QString& key);
     void updateAnalysisChannels();
     void updateXyPlot();
     void redraw();

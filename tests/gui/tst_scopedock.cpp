@@ -187,7 +187,7 @@ private slots:
         QVERIFY2(spectrum, qPrintable(error));
         QCOMPARE(spectrum->property("resolutionHz").toDouble(), kRateHz / 800.0);
         QCOMPARE(spectrum->curveCount(), 1);
-        s->setMath(ScopeDock::Math::None, QString());
+        s->setMath(ScopeDock::Math::None, "motor_vel_rad_s", "velocity_cmd_rad_s");
         QVERIFY(s->mathChannel().isEmpty());
         // A reference overlay: every channel of the capture again, dashed, until cleared.
         const int before = static_cast<int>(s->plot()->seriesNames().size());
