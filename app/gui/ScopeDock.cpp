@@ -652,7 +652,6 @@ void ScopeDock::start(bool single)
     }
     setMessage(QString(), false);
     m_armed = *r;
-    m_single_ = single;
     m_rollRunning = r->mode == device::ScopeMode::Roll;
     m_knownCaptures = 0;
     m_pollInFlight = true;
@@ -859,9 +858,8 @@ void ScopeDock::setMessage(const QString& text, bool error)
 // ------------------------------------------------------------------------------------------------
 // The capture shown, files and the store
 
-void ScopeDock::show(std::shared_ptr<const device::ScopeCapture> capture, bool rescale)
+void ScopeDock::show(std::shared_ptr<const device::ScopeCapture> capture)
 {
-    (void)rescale;
     m_capture = std::move(capture);
     updateAnalysisChannels();
     redraw();

@@ -141,7 +141,7 @@ private:
     void onArmed(const DriveReply& reply);
     void poll();
     void onPolled(const DriveReply& reply);
-    void show(std::shared_ptr<const device::ScopeCapture> capture, bool rescale = true);
+    void show(std::shared_ptr<const device::ScopeCapture> capture);
     void refreshRoll();
     void setMessage(const QString& text, bool error);
     void setRunning(bool running);
@@ -232,7 +232,6 @@ private:
     // State
     QTimer* m_timer = nullptr;
     bool m_running = false;
-    bool m_single_ = false;
     bool m_rollRunning = false;
     bool m_pollInFlight = false;
     int m_armRequest = 0;

@@ -4,12 +4,14 @@
 // capture saved into the store and exported as CSV reopens identical; roll mode keeps a bounded history;
 // bad requests are refused naming the control. Screenshots with AXISTUNE_SCREENSHOT_DIR (docs/gui.md).
 #include "app/gui/AppContext.h"
+#include "app/gui/DriveController.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/ScopeDock.h"
 #include "widgets/CurvePlot.h"
 #include "widgets/TimeTracePlot.h"
 
 #include <QDockWidget>
+#include <QPointer>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -18,6 +20,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "tests/gui/DriveTestRequests.h"
 #include "tests/gui/GuiTestUtil.h"
 
 using axistune::device::ScopeCapture;
@@ -235,6 +238,48 @@ private slots:
         const int ts = column(*cap, "t_s");
         for (std::size_t i = 0; i < cap->rows(); ++i)
             QVERIFY(std::abs(cap->columns[ts][i] - static_cast<double>(cap->samples[i]) / kRateHz) <= 1e-12);
+    }
+
+    void scopeRequestsAreServedWhileATestRuns()
+    {
+        // The drive thread serves scope requests between the polls of a running test: a poll sent while a long
+        // FRF test runs answers before the test ends, with the rows the scope took of the test's motion.
+        axistune::gui::DriveController dc;
+        dc.connectTo("sim:vmc", 7);
+        QVERIFY(waitUntil([&] { return dc.isConnected(); }, 20000));
+        axistune::device::ScopeRequest r;
+        r.axis = "X";
+        r.channels = {"t_s", "injection_Nm"};
+        r.mode = axistune::device::ScopeMode::Roll;
+        bool armed = false;
+        QObject::connect(dc.armScope(r), &axistune::gui::DriveRequest::finished,
+                         [&](const axistune::gui::DriveReply& reply) { armed = reply.ok; });
+        QVERIFY(waitUntil([&] { return armed; }, 10000));
+        QPointer<axistune::gui::DriveRequest> test = dc.runTest(axistune::testing::longFrf("X"));
+        bool testDone = false, running = false;
+        QObject::connect(test.data(), &axistune::gui::DriveRequest::progress,
+                         [&](double fraction, const QString&) { running = running || fraction >= 0.2; });
+        QObject::connect(test.data(), &axistune::gui::DriveRequest::finished, [&] { testDone = true; });
+        QVERIFY(waitUntil([&] { return running; }, 20000));
+        std::shared_ptr<const axistune::device::ScopeRows> rows;
+        bool polled = false, testDoneAtPoll = true;
+        QObject::connect(dc.pollScope(std::uint64_t{0}, 0), &axistune::gui::DriveRequest::finished,
+                         [&](const axistune::gui::DriveReply& reply) {
+                             polled = reply.ok;
+                             rows = reply.scopeRows;
+                             testDoneAtPoll = testDone;
+                         });
+        QVERIFY(waitUntil([&] { return polled || testDone; }, 20000));
+        QVERIFY(polled);
+        QVERIFY(!testDoneAtPoll);
+        QVERIFY(rows && rows->rows > 0);
+        // The scope sampled the test: the injected torque is not zero in the rows read.
+        double peak = 0.0;
+        for (std::size_t i = 0; i < rows->rows; ++i)
+            peak = std::max(peak, std::abs(rows->values[i * 2 + 1]));
+        QVERIFY2(peak > 0.0, "no injection seen by the scope during the FRF test");
+        dc.abort();
+        QVERIFY(waitUntil([&] { return testDone; }, 20000));
     }
 
     void badRequestsAreRefusedNamingTheControl()
