@@ -4056,6 +4056,16 @@
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="243" />
+        <source>Scope</source>
+        <translation>スコープ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="244" />
+        <source>&amp;Scope</source>
+        <translation>スコープ(&amp;S)</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::NcExportDialog</name>
@@ -6939,6 +6949,519 @@
         <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
         <source>the vmc preset has no X axis</source>
         <translation>vmc プリセットに X 軸がありません</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::ScopeDock</name>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="73" />
+        <source>Stopped</source>
+        <translation>停止中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="75" />
+        <source>Armed: filling the pre-trigger</source>
+        <translation>待機中: プリトリガを記録中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="77" />
+        <source>Waiting for the trigger</source>
+        <translation>トリガ待ち</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="79" />
+        <source>Triggered</source>
+        <translation>トリガ成立</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="81" />
+        <source>Capture complete</source>
+        <translation>記録完了</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="83" />
+        <source>Rolling</source>
+        <translation>ロール表示中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="85" />
+        <source>Offline review</source>
+        <translation>オフライン表示</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="101" />
+        <source>Connection lost: %1</source>
+        <translation>接続が切れました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="281" />
+        <source>Axis:</source>
+        <translation>軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="282" />
+        <source>Trigger</source>
+        <translation>トリガ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="283" />
+        <source>Channel:</source>
+        <translation>チャンネル:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="284" />
+        <source>Level:</source>
+        <translation>レベル:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="285" />
+        <source>Edge:</source>
+        <translation>エッジ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="286" />
+        <source>rising</source>
+        <translation>立ち上がり</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="287" />
+        <source>falling</source>
+        <translation>立ち下がり</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="288" />
+        <source>either</source>
+        <translation>両エッジ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="289" />
+        <source>Pre-trigger:</source>
+        <translation>プリトリガ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="290" />
+        <source>Length:</source>
+        <translation>記録長:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="291" />
+        <source>Divider:</source>
+        <translation>分周比:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="292" />
+        <source>Roll mode</source>
+        <translation>ロールモード</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="293" />
+        <source>Roll (continuous, no trigger)</source>
+        <translation>ロール (連続記録、トリガなし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="294" />
+        <source>History:</source>
+        <translation>履歴:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="295" />
+        <source> samples per channel</source>
+        <translation> サンプル/チャンネル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="296" />
+        <source>Shown while rolling:</source>
+        <translation>ロール中の表示幅:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="297" />
+        <source>Jog</source>
+        <translation>ジョグ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="298" />
+        <source>Distance:</source>
+        <translation>移動量:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="299" />
+        <source>Speed:</source>
+        <translation>速度:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="300" />
+        <source>Acceleration:</source>
+        <translation>加速度:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="301" />
+        <source>Back and forth (return to the start)</source>
+        <translation>往復 (始点に戻る)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="303" />
+        <source>Stop jog</source>
+        <translation>ジョグ停止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="304" />
+        <source>Run</source>
+        <translation>連続</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="305" />
+        <source>Triggered captures one after the other (normal mode), or roll mode when it is ticked</source>
+        <translation>トリガ記録を繰り返します (ノーマルモード)。ロールにチェックがあればロールモードで記録します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="306" />
+        <source>Single</source>
+        <translation>シングル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="307" />
+        <source>One triggered capture, then the scope stops</source>
+        <translation>トリガ記録を 1 回行い、スコープを停止します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="308" />
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="309" />
+        <source>Export CSV…</source>
+        <translation>CSV 書き出し…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="310" />
+        <source>Export image…</source>
+        <translation>画像書き出し…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="311" />
+        <source>Save to store</source>
+        <translation>ストアに保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="312" />
+        <source>Open saved…</source>
+        <translation>保存した記録を開く…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="313" />
+        <source>Open CSV…</source>
+        <translation>CSV を開く…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="401" />
+        <source>The drive offers no scope on axis %1: %2</source>
+        <translation>軸 %1 のドライブにはスコープがありません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="499" />
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="499" />
+        <source> deg</source>
+        <translation> deg</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="500" />
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="500" />
+        <source> deg/s</source>
+        <translation> deg/s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="501" />
+        <source> mm/s²</source>
+        <translation> mm/s²</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="501" />
+        <source> deg/s²</source>
+        <translation> deg/s²</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="507" />
+        <source>Sample rate: (no scope)</source>
+        <translation>サンプリング周波数: (スコープなし)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="511" />
+        <source>Sample rate: %1 Hz (drive's fastest %2 Hz / %3)</source>
+        <translation>サンプリング周波数: %1 Hz (ドライブの最速 %2 Hz / %3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="553" />
+        <source>The drive's scope channels are not known yet (axis %1)</source>
+        <translation>ドライブのスコープのチャンネルをまだ取得していません (軸 %1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="559" />
+        <source>Channels: tick at least one channel</source>
+        <translation>チャンネル: 少なくとも 1 つのチャンネルにチェックを入れてください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="569" />
+        <source>Trigger channel: choose one of the ticked channels</source>
+        <translation>トリガチャンネル: チェックしたチャンネルから選んでください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="577" />
+        <source>Length: %1 s is shorter than two samples at %2 Hz</source>
+        <translation>記録長: %1 s は %2 Hz の 2 サンプルより短いです</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="609" />
+        <source>Scope armed on axis %1: %2, %3 channels</source>
+        <translation>軸 %1 のスコープを開始: %2、%3 チャンネル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="610" />
+        <source>roll mode</source>
+        <translation>ロールモード</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="610" />
+        <source>single capture</source>
+        <translation>シングル記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="610" />
+        <source>normal mode</source>
+        <translation>ノーマルモード</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="621" />
+        <source>The drive refused the scope: %1</source>
+        <translation>ドライブがスコープの設定を拒否しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="622" />
+        <source>Scope: %1</source>
+        <translation>スコープ: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="666" />
+        <source>Scope stopped: %1</source>
+        <translation>スコープが停止しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="681" />
+        <source>%1 samples were lost (overwritten in the drive before they were read); the gaps are in the sample numbers</source>
+        <translation>%1 サンプルが失われました (読み出す前にドライブ内で上書きされました)。欠落はサンプル番号に現れます</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="698" />
+        <source>Scope capture %1 on axis %2: %3 samples, trigger at sample %4</source>
+        <translation>スコープ記録 %1 (軸 %2): %3 サンプル、トリガはサンプル %4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="824" />
+        <source>No capture to export</source>
+        <translation>書き出す記録がありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="848" />
+        <source>Export the capture as CSV</source>
+        <translation>記録を CSV に書き出し</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="849" />
+        <source>Scope CSV (*.csv)</source>
+        <translation>スコープ CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="854" />
+        <source>Written: %1</source>
+        <translation>書き出しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="861" />
+        <source>Export the plot</source>
+        <translation>グラフの書き出し</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="862" />
+        <source>Images (*.png *.svg *.pdf)</source>
+        <translation>画像 (*.png *.svg *.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="876" />
+        <source>No capture to save</source>
+        <translation>保存する記録がありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="881" />
+        <source>No store is open (Settings → Preferences)</source>
+        <translation>ストアが開かれていません (設定 → 環境設定)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="896" />
+        <source>Capture saved in the store as session %1</source>
+        <translation>記録をセッション %1 としてストアに保存しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="899" />
+        <source>The capture was not saved: %1</source>
+        <translation>記録は保存されませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="922" />
+        <source>Session %1: %2</source>
+        <translation>セッション %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="927" />
+        <source>store session %1</source>
+        <translation>ストアのセッション %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="930" />
+        <source>Session %1 (%2, axis %3) from the store</source>
+        <translation>ストアのセッション %1 (%2、軸 %3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="935" />
+        <source>Session %1 holds no scope capture</source>
+        <translation>セッション %1 にはスコープの記録がありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="952" />
+        <source>Session %1: %2, axis %3, %4</source>
+        <translation>セッション %1: %2、軸 %3、%4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="956" />
+        <source>The store holds no scope capture</source>
+        <translation>ストアにスコープの記録がありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="961" />
+        <source>Open a saved capture</source>
+        <translation>保存した記録を開く</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="961" />
+        <source>Capture:</source>
+        <translation>記録:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="991" />
+        <source>Opened %1</source>
+        <translation>%1 を開きました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="998" />
+        <source>Open a scope CSV</source>
+        <translation>スコープ CSV を開く</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1014" />
+        <source>Jog: not connected</source>
+        <translation>ジョグ: 接続されていません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1029" />
+        <source>Jog on axis %1: %2 at %3%4</source>
+        <translation>軸 %1 のジョグ: %2、速度 %3%4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1031" />
+        <source>, back and forth</source>
+        <translation>、往復</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1049" />
+        <source>Jog: %1</source>
+        <translation>ジョグ: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="339" />
+        <source>Math, spectrum and XY</source>
+        <translation>演算、スペクトル、XY</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="340" />
+        <source>Math channel:</source>
+        <translation>演算チャンネル:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="341" />
+        <source>none</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="342" />
+        <source>A − B</source>
+        <translation>A − B</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="343" />
+        <source>d/dt A</source>
+        <translation>d/dt A</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="344" />
+        <source>Spectrum of A (visible window)</source>
+        <translation>A のスペクトル (表示範囲)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="345" />
+        <source>XY plot (Y against X)</source>
+        <translation>XY 表示 (X に対する Y)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="346" />
+        <source>Keep as reference</source>
+        <translation>基準として残す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="347" />
+        <source>Overlays the capture shown, dashed, under the next captures</source>
+        <translation>表示中の記録を破線で次の記録に重ねて表示します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="348" />
+        <source>Clear references</source>
+        <translation>基準を消去</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="944" />
+        <source>capture</source>
+        <translation>記録</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="976" />
+        <source>ref %1: %2</source>
+        <translation>基準 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="996" />
+        <source>No capture shown</source>
+        <translation>表示中の記録がありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1012" />
+        <source>Frequency</source>
+        <translation>周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1012" />
+        <source>Amplitude</source>
+        <translation>振幅</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="1016" />
+        <source>Spectrum of %1 (%2 samples, %3 Hz resolution)</source>
+        <translation>%1 のスペクトル (%2 サンプル、分解能 %3 Hz)</translation>
     </message>
 </context>
 </TS>

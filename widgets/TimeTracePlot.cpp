@@ -212,7 +212,12 @@ void TimeTracePlot::setCapture(std::shared_ptr<const model::Capture> capture, co
                 continue;
             Trace t;
             t.name = name;
-            t.unit = channelUnitLabel(name);
+            // The unit the capture states (metadata unit.CHANNEL, as the drive's scope gives it), else the
+            // one of the name's suffix.
+            const auto stated = m_capture->metadata.find("unit." + c.name);
+            t.unit = stated != m_capture->metadata.end() && !stated->second.empty()
+                         ? unitLabelOf(QString::fromStdString(stated->second))
+                         : channelUnitLabel(name);
             t.fromCapture = true;
             t.color = detail::paletteColor(colour++);
             t.data.resize(static_cast<int>(n));
@@ -363,8 +368,10 @@ void TimeTracePlot::addTraceGraph(Trace& t, Strip& s)
     QCPGraph* g = m_plot->addGraph(s.rect->axis(QCPAxis::atBottom), s.rect->axis(QCPAxis::atLeft));
     g->setName(t.unit.isEmpty() ? t.name : QStringLiteral("%1 [%2]").arg(t.name, t.unit));
     // A 1-pixel pen without antialiasing: a wide or antialiased pen makes Qt stroke the zig-zag line
-    // of adaptive sampling as one self-overlapping outline, twenty times slower for dense signals.
-    const bool dense = t.data.size() > 20000;
+    // of adaptive sampling as one self-overlapping outline, twenty times slower for dense signals. Dense
+    // already from a few points per pixel: 8000 samples of a zig-zag drawn antialiased took 340 ms
+    // (bench_gui_scope, the scope's 2 s roll window at 4 kHz), without antialiasing under 10 ms.
+    const bool dense = t.data.size() > 2000;
     g->setPen(QPen(t.color, dense ? 1.0 : 1.3, t.style));
     g->setAntialiased(!dense);
     g->setAdaptiveSampling(true);

@@ -38,6 +38,8 @@ public:
     /// Shows the named channels of `capture` (empty = every channel except the time channel).
     /// Time axis: a "t_s"/"time_s" channel if present, else sample index / metadata fs_Hz (1 Hz if
     /// absent). Replaces a previous capture; overlay series stay. Unknown channel names are skipped.
+    /// A channel's unit: metadata `unit.CHANNEL` when the capture states it (scope captures), else the
+    /// name's suffix.
     void setCapture(std::shared_ptr<const model::Capture> capture, const QStringList& channels = {});
     /// Adds an overlay series (t [s] increasing, y in `unit`, a unit token such as "rad_s", "Nm", "m",
     /// or a label such as "rad/s"); it joins the strip of that unit. Returns nothing; see seriesNames().

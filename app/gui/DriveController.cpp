@@ -159,6 +159,7 @@ DriveReply DriveWorker::doTest(int id, const device::TestRequest& request, std::
     o.abort = cancel.get();
     double lastReported = -1.0;
     o.progress = [&](double f, const std::string& detail) {
+        drainSide(); // scope requests between the test's polls
         if (f - lastReported >= 0.005 || f >= 1.0) {
             lastReported = f;
             emit progress(id, f, qs(detail));
@@ -235,7 +236,7 @@ DriveController::~DriveController()
     m_thread->wait();
 }
 
-DriveRequest* DriveController::post(DriveReply::Kind kind, std::function<DriveReply(DriveWorker&, int)> job)
+DriveRequest* DriveController::post(DriveReply::Kind kind, std::function<DriveReply(DriveWorker&, int)> job, bool side)
 {
     const int id = m_nextId++;
     auto* req = new DriveRequest(id, kind, this);
@@ -244,20 +245,23 @@ DriveRequest* DriveController::post(DriveReply::Kind kind, std::function<DriveRe
         emit busyChanged(true);
     QPointer<DriveController> self(this);
     DriveWorker* w = m_worker;
-    QMetaObject::invokeMethod(
-        w,
-        [self, w, id, job = std::move(job)]() {
-            DriveReply r = job(*w, id);
-            if (self)
-                QMetaObject::invokeMethod(
-                    self.data(),
-                    [self, r]() {
-                        if (self)
-                            self->onReply(r);
-                    },
-                    Qt::QueuedConnection);
-        },
-        Qt::QueuedConnection);
+    std::function<void()> run = [self, w, id, job = std::move(job)]() {
+        DriveReply r = job(*w, id);
+        if (self)
+            QMetaObject::invokeMethod(
+                self.data(),
+                [self, r]() {
+                    if (self)
+                        self->onReply(r);
+                },
+                Qt::QueuedConnection);
+    };
+    if (side) {
+        w->enqueueSide(std::move(run));
+        QMetaObject::invokeMethod(w, [w]() { w->drainSide(); }, Qt::QueuedConnection);
+    } else {
+        QMetaObject::invokeMethod(w, std::move(run), Qt::QueuedConnection);
+    }
     return req;
 }
 

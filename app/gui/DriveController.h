@@ -25,6 +25,8 @@
 #include <QStringList>
 
 #include <atomic>
+#include <deque>
+#include <mutex>
 #include <functional>
 #include <map>
 #include <memory>
@@ -39,7 +41,7 @@ namespace gui {
 /// The answer to one request. `ok` false: `error` says why (already translated where it comes from
 /// the GUI; drive messages are passed on verbatim) and `code` classifies it.
 struct DriveReply {
-    enum class Kind { Connect, Disconnect, Metadata, ReadParameters, WriteParameters, Test, Describe, Plan };
+    enum class Kind { Connect, Disconnect, Metadata, ReadParameters, WriteParameters, Test, Describe, Plan, Scope };
     int id = 0;
     Kind kind = Kind::Connect;
     bool ok = false;
@@ -61,6 +63,11 @@ struct DriveReply {
     std::optional<device::DriveLimits> limits;
     // Plan: the drive's plan of a test request (motion time, record length)
     std::optional<device::TestPlan> plan;
+    // Scope (DriveControllerScope.cpp): what the request asked for, the drive's answer
+    std::shared_ptr<const device::ScopeCapabilities> scopeCaps; ///< scopeCapabilities
+    std::optional<device::ScopeStatus> scopeStatus;             ///< pollScope
+    std::shared_ptr<const device::ScopeRows> scopeRows;         ///< pollScope in roll mode: rows from `rollFrom`
+    std::shared_ptr<const device::ScopeCapture> scopeCapture;   ///< pollScope: a complete capture newer than known
 };
 
 class DriveWorker;
@@ -116,6 +123,16 @@ public:
     /// The drive's plan of a request before it runs (reply kind Plan): motion time and record length, or
     /// the drive's reason to refuse the request.
     DriveRequest* planTest(const device::TestRequest& request);
+    // The scope (docs/scope.md "The GUI scope"). These requests also run between the polls of a running test
+    // (the worker serves them from its side queue whenever the test reports progress), so the scope stays
+    // live while a jog or a wizard's test moves the axis.
+    DriveRequest* scopeCapabilities(const QString& axis);
+    DriveRequest* armScope(const device::ScopeRequest& request);
+    /// Polls the scope; in roll mode (`rollFrom` set) also reads the rows from that sample on (at most
+    /// `maxRows`), in triggered modes reads the last capture when the drive has more than `knownCaptures`.
+    DriveRequest* pollScope(std::optional<std::uint64_t> rollFrom, std::uint64_t knownCaptures,
+                            std::size_t maxRows = 262144);
+    DriveRequest* stopScope();
     /// Aborts every queued test (they never start) and the running one (stopped at once, parameters
     /// restored). Tests queued after the call run normally.
     void abort();
@@ -137,7 +154,7 @@ signals:
     void busyChanged(bool busy);
 
 private:
-    DriveRequest* post(DriveReply::Kind kind, std::function<DriveReply(DriveWorker&, int id)> job);
+    DriveRequest* post(DriveReply::Kind kind, std::function<DriveReply(DriveWorker&, int id)> job, bool side = false);
     void onReply(const axistune::gui::DriveReply& reply);
 
     QThread* m_thread = nullptr;
@@ -170,6 +187,16 @@ public:
     DriveReply doTest(int id, const device::TestRequest& request, std::shared_ptr<std::atomic<bool>> cancel);
     DriveReply doDescribe(int id, const QString& axis);
     DriveReply doPlan(int id, const device::TestRequest& request);
+    DriveReply doScopeCapabilities(int id, const QString& axis);
+    DriveReply doArmScope(int id, const device::ScopeRequest& request);
+    DriveReply doPollScope(int id, std::optional<std::uint64_t> rollFrom, std::uint64_t knownCaptures,
+                           std::size_t maxRows);
+    DriveReply doStopScope(int id);
+
+    /// Side queue (thread-safe): jobs run by drainSide() on the worker, in order, either from the event loop
+    /// or between the polls of a running test.
+    void enqueueSide(std::function<void()> job);
+    void drainSide();
 
 signals:
     void progress(int id, double fraction, const QString& detail);
@@ -178,6 +205,9 @@ signals:
 private:
     DriveReply fail(DriveReply r, const Error& e);
     std::unique_ptr<device::Drive> m_drive;
+    std::mutex m_sideMutex;
+    std::deque<std::function<void()>> m_side;
+    bool m_draining = false; ///< worker thread only: no nested drain
 };
 
 /// Connects a request's reply to a member of the requester and returns the request's id (which pages keep to

@@ -8,6 +8,7 @@
 #include "app/gui/LogPanel.h"
 #include "app/gui/NcExportDialog.h"
 #include "app/gui/ParameterInspector.h"
+#include "app/gui/ScopeDock.h"
 #include "app/gui/SessionReview.h"
 #include "app/gui/SettingsDialog.h"
 #include "app/gui/WizardRegistry.h"
@@ -120,6 +121,17 @@ void MainWindow::buildUi()
     m_logDock->setWidget(m_logPanel);
     m_logDock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(Qt::BottomDockWidgetArea, m_logDock);
+
+    // The scope (docs/scope.md "The GUI scope"): a tab beside the log, raised from Tools → Scope.
+    m_scope = new ScopeDock(*m_ctx, this);
+    m_scopeDock = new QDockWidget(this);
+    m_scopeDock->setObjectName("scopeDockWidget");
+    m_scopeDock->setWidget(m_scope);
+    m_scopeDock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable |
+                             QDockWidget::DockWidgetClosable);
+    addDockWidget(Qt::BottomDockWidgetArea, m_scopeDock);
+    tabifyDockWidget(m_logDock, m_scopeDock);
+    m_logDock->raise();
     resizeDocks({m_treeDock, m_inspectorDock}, {190, 600}, Qt::Horizontal);
     resizeDocks({m_logDock}, {150}, Qt::Vertical);
 
@@ -169,6 +181,7 @@ void MainWindow::buildMenus()
     m_ncExportAction = m_sessionsMenu->addAction(QString(), this, [this] { showNcExportDialog(*m_ctx, this); });
     m_toolsMenu = menuBar()->addMenu(QString());
     m_identifyAction = m_toolsMenu->addAction(QString(), this, [this] { showIdentifyDialog(this); });
+    m_scopeAction = m_toolsMenu->addAction(QString(), this, [this] { showScope(); });
     m_settingsMenu = menuBar()->addMenu(QString());
     m_prefsAction = m_settingsMenu->addAction(QString(), this, &MainWindow::showSettings);
     m_helpMenu = menuBar()->addMenu(QString());
@@ -190,6 +203,12 @@ void MainWindow::rebuildWizardMenu()
     if (m_wizardActions.empty())
         m_wizardsMenu->addAction(tr("(no wizards)"))->setEnabled(false);
     updateDriveActions();
+}
+
+void MainWindow::showScope()
+{
+    m_scopeDock->show();
+    m_scopeDock->raise();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -221,6 +240,8 @@ void MainWindow::retranslateUi()
     m_treeDock->setWindowTitle(tr("Machines"));
     m_inspectorDock->setWindowTitle(tr("Parameters"));
     m_logDock->setWindowTitle(tr("Log and journal"));
+    m_scopeDock->setWindowTitle(tr("Scope"));
+    m_scopeAction->setText(tr("&Scope"));
     m_abort->setText(tr("Abort"));
     m_abort->setToolTip(tr("Stops the running test at once; the drive restores the parameters from before the test"));
     rebuildWizardMenu();

@@ -30,6 +30,7 @@ namespace gui {
 class AppContext;
 class LogPanel;
 class ParameterInspector;
+class ScopeDock;
 class SessionReview;
 
 class MainWindow : public QMainWindow {
@@ -52,6 +53,10 @@ public:
     QTableWidget* parameterTable() const;
     ParameterInspector* inspector() const { return m_inspector; }
     LogPanel* logPanel() const { return m_logPanel; }
+    ScopeDock* scope() const { return m_scope; }
+    QDockWidget* scopeDock() const { return m_scopeDock; }
+    /// Shows and raises the scope dock (Tools → Scope).
+    void showScope();
     QTabWidget* documents() const { return m_documents; }
     QMenu* wizardsMenu() const { return m_wizardsMenu; }
     /// The top-level menus in order (Machine, Wizards, Sessions, Settings, Help).
@@ -104,6 +109,8 @@ private:
     QDockWidget* m_treeDock = nullptr;
     QDockWidget* m_inspectorDock = nullptr;
     QDockWidget* m_logDock = nullptr;
+    ScopeDock* m_scope = nullptr;
+    QDockWidget* m_scopeDock = nullptr;
     QPointer<SessionReview> m_review;
 
     QMenu* m_machineMenu = nullptr;
@@ -119,6 +126,7 @@ private:
     QAction* m_historyAction = nullptr;
     QAction* m_ncExportAction = nullptr;
     QAction* m_identifyAction = nullptr;
+    QAction* m_scopeAction = nullptr;
     QAction* m_prefsAction = nullptr;
     QAction* m_aboutAction = nullptr;
     std::vector<QAction*> m_wizardActions;
