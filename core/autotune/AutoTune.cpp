@@ -327,7 +327,7 @@ Result<AutoTuneResult> Sequence::run()
     if (!caps)
         return caps.error();
     m_caps = *caps;
-    if (!m_caps.offers(device::FrfMethod::Multisine) || !m_caps.evaluatesFrf && m_caps.traceRateHz <= 0.0)
+    if (!m_caps.offers(device::FrfMethod::Multisine) || (!m_caps.evaluatesFrf && m_caps.traceRateHz <= 0.0))
         return makeError(ErrorCode::BadInput, "axis " + axis +
                                                   ": the drive offers no multisine FRF test; the "
                                                   "one-button tuner needs it");
