@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The HAL backend's measurement path on AxisTune's LinuxCNC test machine (scripts/hal-testbed: LinuxCNC's pid
 // around linuxcnc/axistune_plant.comp, a real HAL session started by each test; ctest runs these one at a time).
+#include "core/device/Drive.h"
 #include "core/device/hal/HalAxis.h"
 #include "core/device/hal/LinuxCncConfig.h"
 #include "core/dsp/Multisine.h"
@@ -716,6 +717,71 @@ TEST_F(HalTestbed, AMoveTripsOnTheJointsFerrorAndGoesBack)
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     EXPECT_NEAR(getp("plant.x.position"), start, 0.005);
     EXPECT_EQ(getp("pid.x.command"), 0.0);
+}
+
+// Issue 20 on LinuxCNC: the scope of a hal: axis is LinuxCNC's sampler on the pid's pins with the trigger on the
+// host. A step of the NC's command (halcmd sets on the command net, as the NC would write it) triggers a capture
+// with the trigger exactly at the pre-trigger row, the step itself on that row; no sample is missing; a test is
+// refused while the scope holds the sampler; after the scope stops the nets and functions are as before.
+TEST_F(HalTestbed, ScopeTriggersOnACommandStep)
+{
+    startBed(1000000);
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
+    const std::string funBefore = halText({"-s", "show", "funct"});
+    auto d = device::connect({"hal:", 1});
+    ASSERT_TRUE(d) << d.error().detail;
+    auto caps = (*d)->capabilities("pid.x");
+    ASSERT_TRUE(caps);
+    EXPECT_TRUE(caps->scope);
+    device::ScopeRequest r;
+    r.axis = "pid.x";
+    r.channels = {"command", "feedback", "following_error"};
+    r.triggerChannel = "command";
+    r.triggerLevel = 0.5;
+    r.edge = device::ScopeEdge::Rising;
+    r.preTriggerPct = 25.0;
+    r.lengthSamples = 400;
+    ASSERT_TRUE((*d)->armScope(r)) << "arm";
+    auto waitFor = [&](device::ScopeState want) {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (std::chrono::steady_clock::now() < end) {
+            auto st = (*d)->pollScope();
+            if (st && st->state == want)
+                return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        return false;
+    };
+    ASSERT_TRUE(waitFor(device::ScopeState::Waiting));
+    device::TestRequest jog;
+    jog.axis = "pid.x";
+    jog.type = device::TestType::Jog;
+    jog.distance = 1.0;
+    jog.velocity = 10.0;
+    jog.acceleration = 100.0;
+    jog.returnToStart = true;
+    auto refused = (*d)->startTest(jog);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().detail.find("stop the scope first"), std::string::npos) << refused.error().detail;
+
+    (void)halText({"sets", "x-pos-cmd", "1.0"}); // fails the test (EXPECT in halText) when halcmd refuses
+    ASSERT_TRUE(waitFor(device::ScopeState::Done));
+    auto cap = (*d)->readScopeCapture();
+    ASSERT_TRUE(cap) << cap.error().detail;
+    ASSERT_EQ(cap->rows(), 400u);
+    ASSERT_EQ(cap->triggerRow(), 100u); // 25 % of 400
+    EXPECT_EQ(cap->missingSamples(), 0u);
+    EXPECT_EQ(cap->rateHz, 1000.0);
+    ASSERT_EQ(cap->channels.size(), 3u);
+    EXPECT_EQ(cap->channels[0].name, "command");
+    EXPECT_EQ(cap->columns[0][99], 0.0);
+    EXPECT_EQ(cap->columns[0][100], 1.0); // the step itself on the trigger row
+    EXPECT_GT(cap->columns[1][399], 0.5); // the axis follows
+    ASSERT_TRUE((*d)->stopScope());
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+    EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
+    (void)halText({"sets", "x-pos-cmd", "0"});
 }
 
 // Issue 17 item 3, Persist: a gain changed live (setp through the hal: connection) is written by `axistune-cli

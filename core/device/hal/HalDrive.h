@@ -11,6 +11,7 @@
 #include "core/device/Drive.h"
 #include "core/device/DriveRegistry.h"
 #include "core/device/hal/HalAxis.h"
+#include "core/device/hal/HalScope.h"
 #include "core/dsp/Multisine.h"
 
 #include <atomic>
@@ -90,6 +91,14 @@ public:
     Result<DriveLimits> limits(const std::string& axis) override;
     Result<TestPlan> planTest(const TestRequest& request) override;
 
+    // The scope (HalScope.h): LinuxCNC's sampler on the pid's pins; not while a test runs (both need the sampler).
+    Result<ScopeCapabilities> scopeCapabilities(const std::string& axis) override;
+    Status armScope(const ScopeRequest& request) override;
+    Result<ScopeStatus> pollScope() override;
+    Result<ScopeRows> readScopeRows(std::uint64_t from, std::size_t maxRows) override;
+    Result<ScopeCapture> readScopeCapture() override;
+    Status stopScope() override;
+
     /// A following-error limit of the axis besides its pid's maxerror (linuxcnc:: the joint's FERROR): the injection
     /// trips at the smaller of the two. 0 or less: none.
     void setFollowingErrorLimit(const std::string& pid, double limit);
@@ -114,6 +123,9 @@ private:
     std::optional<HalRecord> m_record;      ///< of the last completed test
     bool m_linkLost = false;                ///< the last test failed and HAL no longer answers (guarded by m_mutex)
     std::map<std::string, double> m_ferror; ///< setFollowingErrorLimit, by pid
+    std::unique_ptr<HalScope> m_scope;      ///< the armed (or stopped, still readable) scope
+    std::vector<ScopeChannelInfo> m_scopeChannels; ///< of the armed scope, in the request's order
+    double m_scopeRateHz = 0.0;
     std::string m_firmware;
 };
 

@@ -209,6 +209,24 @@ Result<DriveCapabilities> LinuxCncDrive::capabilities(const std::string& axis)
     return m_hal->capabilities(*pid);
 }
 
+Result<ScopeCapabilities> LinuxCncDrive::scopeCapabilities(const std::string& axis)
+{
+    auto pid = pidOf(axis);
+    if (!pid)
+        return pid.error();
+    return m_hal->scopeCapabilities(*pid);
+}
+
+Status LinuxCncDrive::armScope(const ScopeRequest& request)
+{
+    auto pid = pidOf(request.axis);
+    if (!pid)
+        return pid.error();
+    ScopeRequest r = request;
+    r.axis = *pid;
+    return m_hal->armScope(r);
+}
+
 Result<DriveLimits> LinuxCncDrive::limits(const std::string& axis)
 {
     auto pid = pidOf(axis);

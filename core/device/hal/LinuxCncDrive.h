@@ -38,6 +38,15 @@ public:
     Result<DriveCapabilities> capabilities(const std::string& axis) override;
     Result<DriveLimits> limits(const std::string& axis) override;
     Result<TestPlan> planTest(const TestRequest& request) override;
+    Result<ScopeCapabilities> scopeCapabilities(const std::string& axis) override;
+    Status armScope(const ScopeRequest& request) override;
+    Result<ScopeStatus> pollScope() override { return m_hal->pollScope(); }
+    Result<ScopeRows> readScopeRows(std::uint64_t from, std::size_t maxRows) override
+    {
+        return m_hal->readScopeRows(from, maxRows);
+    }
+    Result<ScopeCapture> readScopeCapture() override { return m_hal->readScopeCapture(); }
+    Status stopScope() override { return m_hal->stopScope(); }
 
 private:
     LinuxCncDrive() = default;
