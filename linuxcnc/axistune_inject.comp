@@ -20,7 +20,7 @@ pin out float injected "The injection added this period";
 pin out bit armed "The injection is being added";
 pin out u32 trip "0: none, 1: heartbeat lost, 2: excitation above limit, 3: following error above maxerror";
 
-param rw float timeout = 0.04 "Heartbeat timeout [s]";
+param rw float timeout = 0.03 "Heartbeat timeout [s]";
 param rw float limit = 0.0 "Largest |excitation| accepted; 0: refuse every excitation";
 param rw float maxerror = 0.0 "Largest |error| during the injection; 0: not watched";
 param rw float rate = 0.0 "After a trip or disarm, the injection returns to zero at this speed [units/s]; 0: at once";

@@ -389,7 +389,7 @@ TEST_F(HalTestbed, AMoveReturnsAtItsSpeedAfterKill)
     int status = 0;
     waitpid(child, &status, 0);
     ASSERT_GE(zeroAfterS, 0.0) << "the offset did not return to zero";
-    // 40 ms heartbeat timeout, then 0.4 s at 10 mm/s (a late servo thread may catch up a few periods at once).
+    // 30 ms heartbeat timeout, then 0.4 s at 10 mm/s (a late servo thread may catch up a few periods at once).
     EXPECT_GE(zeroAfterS, 0.4);
     EXPECT_LE(zeroAfterS, 1.0);
     EXPECT_LE(worstExcess, 0.002) << "the offset fell faster than its return speed";

@@ -50,11 +50,11 @@ enum class InjectionPoint { PidOutput, PidCommand };
 
 struct InjectionSettings {
     InjectionPoint point = InjectionPoint::PidOutput;
-    int fifoDepth = 16384; ///< rows of the streamer and sampler FIFOs
-    double limit = 0.0;    ///< largest |excitation| in the PID output's units; the component trips above it
-    double maxError = 0.0; ///< following-error trip during the test; 0: the pid's maxerror
-    double heartbeatTimeoutS =
-        0.04; ///< the injection falls to zero this long after AxisTune stops (issue 17: within 50 ms)
+    int fifoDepth = 16384;           ///< rows of the streamer and sampler FIFOs
+    double limit = 0.0;              ///< largest |excitation| in the PID output's units; the component trips above it
+    double maxError = 0.0;           ///< following-error trip during the test; 0: the pid's maxerror
+    double heartbeatTimeoutS = 0.03; ///< the injection falls to zero this long after AxisTune stops (issue 17: within
+                                     ///< 50 ms; 20 ms left for a late thread)
     /// PidCommand: after a trip, an abort or the end, the position offset returns to zero at this speed [command
     /// units/s] instead of at once (a position step); required (> 0) there, 0 at the PID output.
     double returnRate = 0.0;
