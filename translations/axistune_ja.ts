@@ -7409,6 +7409,16 @@
         <translation>d/dt A</translation>
     </message>
     <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="365" />
+        <source>Scale:</source>
+        <translation>スケール:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ScopeDock.cpp" line="366" />
+        <source>Shows this channel as gain × value + offset (the offset in the channel's unit); exports and the store keep the drive's values</source>
+        <translation>このチャンネルをゲイン × 値 + オフセット(オフセットはチャンネルの単位)で表示します。書き出しとストアにはドライブの値がそのまま残ります</translation>
+    </message>
+    <message>
         <location filename="../app/gui/ScopeDock.cpp" line="344" />
         <source>Spectrum of A (visible window)</source>
         <translation>A のスペクトル (表示範囲)</translation>

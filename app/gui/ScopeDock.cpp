@@ -184,6 +184,27 @@ void ScopeDock::buildUi()
     m_yChannel = new QComboBox;
     m_yChannel->setObjectName("scopeYChannel");
     mf->addRow(m_yLabel, m_yChannel);
+    // Display scaling of one channel (gain, offset).
+    m_scaleLabel = new QLabel;
+    m_scaleChannel = new QComboBox;
+    m_scaleChannel->setObjectName("scopeScaleChannel");
+    m_scaleChannel->addItem(QString()); // "none", named in retranslateUi()
+    m_scaleGain = new QDoubleSpinBox;
+    m_scaleGain->setObjectName("scopeScaleGain");
+    m_scaleGain->setDecimals(6);
+    m_scaleGain->setRange(-1e9, 1e9);
+    m_scaleGain->setValue(1.0);
+    m_scaleGain->setPrefix(QStringLiteral("× "));
+    m_scaleOffset = new QDoubleSpinBox;
+    m_scaleOffset->setObjectName("scopeScaleOffset");
+    m_scaleOffset->setDecimals(6);
+    m_scaleOffset->setRange(-1e9, 1e9);
+    m_scaleOffset->setPrefix(QStringLiteral("+ "));
+    auto* scaleRow = new QHBoxLayout;
+    scaleRow->addWidget(m_scaleChannel, 2);
+    scaleRow->addWidget(m_scaleGain, 1);
+    scaleRow->addWidget(m_scaleOffset, 1);
+    mf->addRow(m_scaleLabel, scaleRow);
     auto* refRow = new QHBoxLayout;
     m_keepRef = new QPushButton;
     m_keepRef->setObjectName("scopeKeepReference");
@@ -299,8 +320,10 @@ void ScopeDock::buildUi()
     });
     connect(m_openStore, &QPushButton::clicked, this, &ScopeDock::openFromStoreInteractive);
     connect(m_openCsv, &QPushButton::clicked, this, &ScopeDock::openCsvInteractive);
-    for (auto* c : {m_mathOp, m_mathA, m_mathB})
+    for (auto* c : {m_mathOp, m_mathA, m_mathB, m_scaleChannel})
         connect(c, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
+    for (auto* sb : {m_scaleGain, m_scaleOffset})
+        connect(sb, &QDoubleSpinBox::valueChanged, this, [this] { redraw(); });
     for (auto* c : {m_xChannel, m_yChannel})
         connect(c, &QComboBox::currentIndexChanged, this, [this] { updateXyPlot(); });
     connect(m_xy, &QCheckBox::toggled, this, [this](bool on) {
@@ -341,6 +364,10 @@ void ScopeDock::retranslateUi()
     m_mathOp->setItemText(0, tr("none"));
     m_mathOp->setItemText(1, tr("A − B"));
     m_mathOp->setItemText(2, tr("d/dt A"));
+    m_scaleLabel->setText(tr("Scale:"));
+    m_scaleChannel->setToolTip(tr("Shows this channel as gain × value + offset (the offset in the channel's unit); "
+                                  "exports and the store keep the drive's values"));
+    m_scaleChannel->setItemText(0, tr("none"));
     m_spectrum->setText(tr("Spectrum of A (visible window)"));
     m_xy->setText(tr("XY plot (Y against X)"));
     m_keepRef->setText(tr("Keep as reference"));
@@ -889,6 +916,25 @@ void ScopeDock::redraw()
             setMessage(qs(m.error().detail), true);
         }
     }
+    m_scaledName.clear();
+    const double gain = m_scaleGain->value(), offset = m_scaleOffset->value();
+    if (m_scaleChannel->currentIndex() > 0 && (gain != 1.0 || offset != 0.0)) {
+        const std::string name = m_scaleChannel->currentText().toStdString();
+        for (auto& ch : table->channels) {
+            if (ch.name != name)
+                continue;
+            for (double& v : ch.data)
+                v = gain * v + offset;
+            const std::string shown = name + " ×" + model::formatShortest(gain) +
+                                      (offset != 0.0 ? " +" + model::formatShortest(offset) : std::string());
+            if (auto u = table->metadata.find("unit." + name); u != table->metadata.end()) {
+                table->metadata["unit." + shown] = u->second;
+                table->metadata.erase(u);
+            }
+            ch.name = shown;
+            m_scaledName = qs(shown);
+        }
+    }
     const bool keepCursors = !m_plot->cursorReadout().isEmpty();
     m_plot->setCapture(table);
     if (!keepCursors && m_capture->rows() >= 2) {
@@ -904,6 +950,21 @@ void ScopeDock::updateAnalysisChannels()
     if (m_capture)
         for (const auto& ch : m_capture->channels)
             names << qs(ch.name);
+    {
+        // Scale: "none" first, then the channels; the choice kept while it exists.
+        QStringList have;
+        for (int i = 1; i < m_scaleChannel->count(); ++i)
+            have << m_scaleChannel->itemText(i);
+        if (have != names) {
+            const QString current = m_scaleChannel->currentIndex() > 0 ? m_scaleChannel->currentText() : QString();
+            const QSignalBlocker block(m_scaleChannel);
+            while (m_scaleChannel->count() > 1)
+                m_scaleChannel->removeItem(1);
+            m_scaleChannel->addItems(names);
+            const int i = current.isEmpty() ? -1 : m_scaleChannel->findText(current);
+            m_scaleChannel->setCurrentIndex(i > 0 ? i : 0);
+        }
+    }
     for (auto* c : {m_mathA, m_mathB, m_xChannel, m_yChannel}) {
         QStringList have;
         for (int i = 0; i < c->count(); ++i)
@@ -943,6 +1004,16 @@ void ScopeDock::updateXyPlot()
                       qs(m_capture->channels[ky].unit));
     m_xyPlot->addCurve(tr("capture"), m_capture->columns[kx], m_capture->columns[ky]);
     m_xyPlot->rescale();
+}
+
+void ScopeDock::setScale(const QString& channel, double gain, double offset)
+{
+    const QSignalBlocker b1(m_scaleChannel), b2(m_scaleGain), b3(m_scaleOffset);
+    const int i = channel.isEmpty() ? 0 : m_scaleChannel->findText(channel);
+    m_scaleChannel->setCurrentIndex(i > 0 ? i : 0);
+    m_scaleGain->setValue(gain);
+    m_scaleOffset->setValue(offset);
+    redraw();
 }
 
 void ScopeDock::setMath(Math op, const QString& a, const QString& b)

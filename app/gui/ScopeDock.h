@@ -94,6 +94,11 @@ public:
     QString mathChannel() const { return m_mathName; }
     /// XY: Y against X of the capture shown, instead of the time traces.
     void setXy(bool on, const QString& x = QString(), const QString& y = QString());
+    /// Display scaling of one channel: shown as gain·value + offset (offset in the channel's unit), named
+    /// "NAME ×gain +offset"; the capture, its exports and the store keep the drive's values. gain 1, offset 0: none.
+    void setScale(const QString& channel, double gain, double offset);
+    /// The plotted name of the scaled channel; empty when none is scaled.
+    QString scaledChannel() const { return m_scaledName; }
     widgets::CurvePlot* xyPlot() const { return m_xyPlot; }
     /// Keeps the capture shown as a dashed reference in the time plot (overlays of earlier captures).
     void keepReference();
@@ -212,6 +217,11 @@ private:
     QComboBox* m_xChannel = nullptr;
     QLabel* m_yLabel = nullptr;
     QComboBox* m_yChannel = nullptr;
+    QLabel* m_scaleLabel = nullptr;
+    QComboBox* m_scaleChannel = nullptr;
+    QDoubleSpinBox* m_scaleGain = nullptr;
+    QDoubleSpinBox* m_scaleOffset = nullptr;
+    QString m_scaledName;
     QPushButton* m_keepRef = nullptr;
     QPushButton* m_clearRefs = nullptr;
     QStackedWidget* m_plots = nullptr;

@@ -192,6 +192,15 @@ private slots:
         QCOMPARE(spectrum->curveCount(), 1);
         s->setMath(ScopeDock::Math::None, "motor_vel_rad_s", "velocity_cmd_rad_s");
         QVERIFY(s->mathChannel().isEmpty());
+        // Display scaling: gain 2, offset 1 rad/s on the motor velocity; the plotted value at the cursor is
+        // 2·v + 1 of the sample there, the capture itself keeps the drive's values; gain 1, offset 0: off again.
+        s->setScale("motor_vel_rad_s", 2.0, 1.0);
+        const QString scaled = QString::fromUtf8("motor_vel_rad_s ×2 +1");
+        QCOMPARE(s->scaledChannel(), scaled);
+        QVERIFY(std::abs(s->plot()->cursorValue(0, scaled) - (2.0 * original.columns[vm][r0] + 1.0)) <= 1e-9);
+        QCOMPARE(s->capture()->columns[vm][r0], original.columns[vm][r0]);
+        s->setScale("motor_vel_rad_s", 1.0, 0.0);
+        QVERIFY(s->scaledChannel().isEmpty());
         // A reference overlay: every channel of the capture again, dashed, until cleared.
         const int before = static_cast<int>(s->plot()->seriesNames().size());
         s->keepReference();
