@@ -34,7 +34,10 @@ const WizardRegistrar kRegistrar{
     "autotune", QT_TRANSLATE_NOOP("Wizards", "Automatic tuning (one button)…"), 5,
     [](AppContext& ctx, QWidget* parent) -> QWizard* { return new AutoTuneWizard(ctx, parent); }};
 
-QString qs(const std::string& s) { return QString::fromStdString(s); }
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
 
 /// A JSON value as short text: numbers with 4 significant digits (locale-free), arrays and objects compact.
 QString valueText(const nlohmann::json& v)
@@ -103,8 +106,8 @@ QString autoTuneStepTitle(const QString& name)
 // ---------------------------------------------------------------------------------------------------------------
 // Choices
 
-AutoTuneChoicePage::AutoTuneChoicePage(AppContext& ctx, AutoTuneData& data, QWidget* parent)
-    : QWizardPage(parent), m_ctx(ctx), m_d(data)
+AutoTuneChoicePage::AutoTuneChoicePage(AppContext& ctx, AutoTuneData& shared, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared)
 {
     setTitle(tr("Automatic tuning"));
     setSubTitle(tr("One run through the wizards' steps: safety envelope, current loop, adaptive frequency response, "
@@ -179,7 +182,7 @@ AutoTuneChoicePage::AutoTuneChoicePage(AppContext& ctx, AutoTuneData& data, QWid
     setButtonText(QWizard::CommitButton, tr("Start"));
 }
 
-QRadioButton* AutoTuneChoicePage::style(autotune::Style s) const
+QRadioButton* AutoTuneChoicePage::styleButton(autotune::Style s) const
 {
     return s == autotune::Style::Gentle ? m_gentle : s == autotune::Style::Stiff ? m_stiff : m_standard;
 }
@@ -202,7 +205,7 @@ bool AutoTuneChoicePage::validatePage()
 {
     autotune::Options o;
     o.axis = m_axis->currentText().toStdString();
-    o.style = m_gentle->isChecked() ? autotune::Style::Gentle
+    o.style = m_gentle->isChecked()  ? autotune::Style::Gentle
               : m_stiff->isChecked() ? autotune::Style::Stiff
                                      : autotune::Style::Standard;
     o.timeBudgetS = m_budget->value();
@@ -214,8 +217,8 @@ bool AutoTuneChoicePage::validatePage()
 // ---------------------------------------------------------------------------------------------------------------
 // Run
 
-AutoTuneRunPage::AutoTuneRunPage(AppContext& ctx, AutoTuneData& data, QWidget* parent)
-    : QWizardPage(parent), m_ctx(ctx), m_d(data)
+AutoTuneRunPage::AutoTuneRunPage(AppContext& ctx, AutoTuneData& shared, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared)
 {
     setTitle(tr("Running the sequence"));
     setSubTitle(tr("Abort stops the motion at once; every parameter the run wrote is restored and read back."));
@@ -260,11 +263,20 @@ AutoTuneRunPage::AutoTuneRunPage(AppContext& ctx, AutoTuneData& data, QWidget* p
     connect(m_abort, &QPushButton::clicked, this, &AutoTuneRunPage::abort);
 }
 
-void AutoTuneRunPage::initializePage() { start(); }
+void AutoTuneRunPage::initializePage()
+{
+    start();
+}
 
-void AutoTuneRunPage::cleanupPage() { abort(); }
+void AutoTuneRunPage::cleanupPage()
+{
+    abort();
+}
 
-bool AutoTuneRunPage::isComplete() const { return !m_d.running && (m_d.result || !m_d.error.isEmpty()); }
+bool AutoTuneRunPage::isComplete() const
+{
+    return !m_d.running && (m_d.result || !m_d.error.isEmpty());
+}
 
 void AutoTuneRunPage::setRowState(int row, const QString& state, int icon)
 {
@@ -358,8 +370,8 @@ void AutoTuneRunPage::onReply(const DriveReply& reply)
             m_state->setStyleSheet(QStringLiteral("color: #b00020;"));
             const QString restored = r.restored ? tr("every parameter restored and read back equal")
                                                 : tr("RESTORING THE PARAMETERS FAILED: check the drive");
-            m_state->setText((wasAborted(r) ? tr("Aborted (%1): %2.") : tr("Refused (%1): %2."))
-                                 .arg(restored, qs(r.reason)));
+            m_state->setText(
+                (wasAborted(r) ? tr("Aborted (%1): %2.") : tr("Refused (%1): %2.")).arg(restored, qs(r.reason)));
         } else {
             m_progress->setValue(1000);
             m_state->setText(r.outcome == autotune::Outcome::DryRun
@@ -396,11 +408,15 @@ void AutoTuneRunPage::saveSession()
         auto j = autotune::resultJson(r, m_d.options);
         j["connection"] = rec.inputs["connection"];
         rec.results.push_back({"autotune", j, {}});
-        rec.parameterSets.push_back({0, r.before.empty() ? std::string() : m_d.options.axis,
-                                     store::ParameterSource::Read, {}, "autotune wizard: before", r.before});
+        rec.parameterSets.push_back({0,
+                                     r.before.empty() ? std::string() : m_d.options.axis,
+                                     store::ParameterSource::Read,
+                                     {},
+                                     "autotune wizard: before",
+                                     r.before});
         if (r.outcome == autotune::Outcome::Applied && r.final) {
-            rec.parameterSets.push_back({0, m_d.options.axis, store::ParameterSource::Applied, {},
-                                         "autotune wizard", r.final->parameters});
+            rec.parameterSets.push_back(
+                {0, m_d.options.axis, store::ParameterSource::Applied, {}, "autotune wizard", r.final->parameters});
             for (const auto& [k, v] : r.final->parameters) {
                 store::JournalEntry e;
                 e.axis = m_d.options.axis;
@@ -424,7 +440,7 @@ void AutoTuneRunPage::saveSession()
 // ---------------------------------------------------------------------------------------------------------------
 // Result
 
-AutoTuneResultPage::AutoTuneResultPage(AutoTuneData& data, QWidget* parent) : QWizardPage(parent), m_d(data)
+AutoTuneResultPage::AutoTuneResultPage(AutoTuneData& shared, QWidget* parent) : QWizardPage(parent), m_d(shared)
 {
     setTitle(tr("Result"));
     auto* lay = new QVBoxLayout(this);

@@ -37,7 +37,7 @@ class AppContext;
 struct AutoTuneData {
     autotune::Options options;
     std::shared_ptr<const autotune::AutoTuneResult> result; ///< the sequence's answer (also refused/aborted)
-    QString error;       ///< the run could not start (bad options, not connected): nothing moved
+    QString error; ///< the run could not start (bad options, not connected): nothing moved
     bool running = false;
     bool abortPressed = false;
     qint64 sessionId = 0; ///< the saved session (0: not saved)
@@ -58,7 +58,7 @@ public:
     QDoubleSpinBox* timeBudget() const { return m_budget; }
     QCheckBox* dryRun() const { return m_dryRun; }
     QCheckBox* confirmation() const { return m_confirm; }
-    QRadioButton* style(autotune::Style s) const;
+    QRadioButton* styleButton(autotune::Style s) const;
 
 private:
     AppContext& m_ctx;

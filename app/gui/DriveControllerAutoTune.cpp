@@ -50,7 +50,10 @@ DriveReply DriveWorker::doAutoTune(int id, autotune::Options options, std::share
         emit autoTuneStep(id, QString::fromStdString(name), false, {});
     };
     options.stepFinished = [&](const autotune::Step& s) {
-        const nlohmann::json j{{"name", s.name}, {"measured", s.measured}, {"chosen", s.chosen}, {"rule", s.rule},
+        const nlohmann::json j{{"name", s.name},
+                               {"measured", s.measured},
+                               {"chosen", s.chosen},
+                               {"rule", s.rule},
                                {"motion_time_s", s.motionTimeS}};
         emit autoTuneStep(id, QString::fromStdString(s.name), true, QString::fromStdString(j.dump()));
     };
