@@ -43,7 +43,16 @@ namespace gui {
 /// the GUI; drive messages are passed on verbatim) and `code` classifies it.
 struct DriveReply {
     enum class Kind {
-        Connect, Disconnect, Metadata, ReadParameters, WriteParameters, Test, Describe, Plan, Scope, AutoTune
+        Connect,
+        Disconnect,
+        Metadata,
+        ReadParameters,
+        WriteParameters,
+        Test,
+        Describe,
+        Plan,
+        Scope,
+        AutoTune
     };
     int id = 0;
     Kind kind = Kind::Connect;

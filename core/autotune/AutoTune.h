@@ -67,7 +67,6 @@ struct Options {
     std::function<void(const Step&)> stepFinished;
 };
 
-
 struct Final {
     double phaseMarginDeg = 0.0;      ///< re-measured open velocity loop (smallest over its gain crossovers)
     double gainMarginDb = 0.0;        ///< re-measured (smallest over the −180° crossings)

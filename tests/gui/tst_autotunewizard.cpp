@@ -4,7 +4,7 @@
 // digit), they meet the standard style's acceptance (PM >= 45 deg, GM >= 6 dB; docs/tuning.md "Styles"), every
 // parameter of the drive equals final.parameters where the run wrote it and its value before elsewhere, and the
 // session "autotune" holds the result JSON; (b) Abort pressed when the progress first passes 30 % (the adaptive
-// FRF, nothing written yet) and 70 % (the move, after the gains were written): every parameter of the axis, all
+// FRF, nothing written yet) and 70 % (after the gains were written): every parameter of the axis, all
 // read before and after, equals its value before, and the pages say aborted. A time budget of 6 s of motion is the
 // smallest that completes on vmc X (`axistune-cli autotune --connect sim:vmc --axis X --time-budget 4` refuses:
 // the move would exceed it).
@@ -202,7 +202,7 @@ private slots:
     {
         QTest::addColumn<int>("atPermille");
         QTest::newRow("30 % (adaptive FRF)") << 300;
-        QTest::newRow("70 % (move, gains written)") << 700;
+        QTest::newRow("70 % (gains written)") << 700;
     }
 
     void abortRestoresEveryParameter()
