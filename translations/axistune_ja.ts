@@ -7770,6 +7770,11 @@ Nothing was changed: every parameter was restored and read back equal.</source>
     </message>
     <message>
         <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Result &gt;</source>
+        <translation>結果 &gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
         <source>waiting</source>
         <translation>待機中</translation>
     </message>

@@ -39,7 +39,7 @@ QString qs(const std::string& s)
     return QString::fromStdString(s);
 }
 
-/// A JSON value as short text: numbers with 4 significant digits (locale-free), arrays and objects compact.
+/// A JSON value as short text: numbers with 4 significant digits (locale-free), also inside arrays and objects.
 QString valueText(const nlohmann::json& v)
 {
     if (v.is_number())
@@ -50,9 +50,17 @@ QString valueText(const nlohmann::json& v)
         return v.get<bool>() ? QStringLiteral("true") : QStringLiteral("false");
     if (v.is_null())
         return QStringLiteral("–");
-    QString s = qs(v.dump());
-    if (s.size() > 240)
-        s = s.left(240) + QStringLiteral("…");
+    QStringList parts;
+    if (v.is_array())
+        for (const auto& x : v)
+            parts << valueText(x);
+    else
+        for (const auto& [k, x] : v.items())
+            parts << qs(k) + QStringLiteral(" = ") + valueText(x);
+    QString s = (v.is_array() ? QStringLiteral("[") : QStringLiteral("{")) + parts.join(QStringLiteral(", ")) +
+                (v.is_array() ? QStringLiteral("]") : QStringLiteral("}"));
+    if (s.size() > 400)
+        s = s.left(400) + QStringLiteral("…");
     return s;
 }
 
@@ -261,6 +269,9 @@ AutoTuneRunPage::AutoTuneRunPage(AppContext& ctx, AutoTuneData& shared, QWidget*
     m_state->setWordWrap(true);
     lay->addWidget(m_state);
     connect(m_abort, &QPushButton::clicked, this, &AutoTuneRunPage::abort);
+    // No way back into a finished run: Back and Next would start the sequence again.
+    setCommitPage(true);
+    setButtonText(QWizard::CommitButton, tr("Result >"));
 }
 
 void AutoTuneRunPage::initializePage()
@@ -299,7 +310,10 @@ void AutoTuneRunPage::start()
         setRowState(r, tr("waiting"), -1);
     m_state->setStyleSheet(QString());
     m_state->setText(tr("Axis %1, style %2, time budget %3 s%4.")
-                         .arg(qs(m_d.options.axis), qs(autotune::styleName(m_d.options.style)))
+                         .arg(qs(m_d.options.axis),
+                              m_d.options.style == autotune::Style::Gentle  ? AutoTuneChoicePage::tr("Gentle")
+                              : m_d.options.style == autotune::Style::Stiff ? AutoTuneChoicePage::tr("Stiff")
+                                                                            : AutoTuneChoicePage::tr("Standard"))
                          .arg(m_d.options.timeBudgetS, 0, 'f', 1)
                          .arg(m_d.options.dryRun ? tr(", dry run") : QString()));
     m_d.running = true;
@@ -468,6 +482,7 @@ AutoTuneResultPage::AutoTuneResultPage(AutoTuneData& shared, QWidget* parent) : 
     m_session = new QLabel(this);
     m_session->setObjectName("atSession");
     lay->addWidget(m_session);
+    lay->addStretch(0); // takes the room of the hidden tables after a refusal
     setFinalPage(true);
 }
 
@@ -477,6 +492,8 @@ void AutoTuneResultPage::initializePage()
     m_parameters->setRowCount(0);
     const auto* r = m_d.result.get();
     const bool refused = !r || r->outcome == autotune::Outcome::Refused || !r->final;
+    if (auto* box = qobject_cast<QBoxLayout*>(layout()))
+        box->setStretch(box->count() - 1, refused ? 1 : 0);
     m_figures->setVisible(!refused);
     m_parameters->setVisible(!refused);
     m_parametersTitle->setVisible(!refused);
