@@ -74,10 +74,20 @@ QString figure(QTableWidget* t, const char* key)
     return {};
 }
 
-void connectVmc(AppContext& ctx)
+/// A store in `dir`, the embedded sim:vmc connected, every parameter of X as found.
+void openOnVmc(QTemporaryDir& dir, AppContext& ctx, model::ParameterValues& before)
 {
+    QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
     ctx.drive().connectTo("sim:vmc");
     QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
+    before = readAll(ctx, "X");
+}
+
+void showWizard(AutoTuneWizard& w)
+{
+    w.resize(1100, 760);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
 }
 
 /// Choice page: axis X, standard, the budget, confirmed; Start.
@@ -116,15 +126,11 @@ private slots:
     {
         QTemporaryDir dir;
         AppContext ctx;
-        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
-        connectVmc(ctx);
-        const auto before = readAll(ctx, "X");
+        model::ParameterValues before;
+        openOnVmc(dir, ctx, before);
         QVERIFY(!before.empty());
-
         AutoTuneWizard w(ctx);
-        w.resize(1100, 760);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        showWizard(w);
         choose(w, true);
         auto* run = w.runPage();
         QVERIFY(!run->isComplete());
@@ -210,15 +216,11 @@ private slots:
         QFETCH(int, atPermille);
         QTemporaryDir dir;
         AppContext ctx;
-        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
-        connectVmc(ctx);
-        const auto before = readAll(ctx, "X");
+        model::ParameterValues before;
+        openOnVmc(dir, ctx, before);
         QVERIFY(!before.empty());
-
         AutoTuneWizard w(ctx);
-        w.resize(1100, 760);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        showWizard(w);
         choose(w, false);
         auto* run = w.runPage();
         int pressedAt = -1;
