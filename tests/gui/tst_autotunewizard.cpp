@@ -267,6 +267,34 @@ private slots:
         if (atPermille == 300)
             maybeScreenshot(&w, "autotune-04-aborted");
     }
+
+    void cancelWhileRunningAbortsAndClosesWhenRestored()
+    {
+        // Cancel (or closing the window) during the run is an Abort: the window stays until the sequence has
+        // answered with every parameter restored, then closes.
+        QTemporaryDir dir;
+        AppContext ctx;
+        model::ParameterValues before;
+        openOnVmc(dir, ctx, before);
+        QVERIFY(!before.empty());
+        AutoTuneWizard w(ctx);
+        showWizard(w);
+        choose(w, false);
+        bool cancelled = false;
+        connect(w.runPage()->progress(), &QProgressBar::valueChanged, &w, [&](int v) {
+            if (!cancelled && v >= 500) {
+                cancelled = true;
+                w.reject();
+            }
+        });
+        QVERIFY(waitUntil([&] { return !w.isVisible(); }, 60000));
+        QVERIFY(cancelled);
+        const auto r = w.data().result;
+        QVERIFY(r);
+        QVERIFY2(r->reasonCode == ErrorCode::Aborted, r->reason.c_str());
+        QVERIFY(r->restored);
+        QCOMPARE(readAll(ctx, "X"), before);
+    }
 };
 
 QTEST_MAIN(TestAutoTuneWizard)
