@@ -1014,6 +1014,11 @@
         <source>Velocity and position loop…</source>
         <translation>速度ループと位置ループ…</translation>
     </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Automatic tuning (one button)…</source>
+        <translation>自動調整 (ワンボタン)…</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::AbortGuard</name>
@@ -7472,6 +7477,459 @@
         <location filename="../app/gui/ScopeDock.cpp" line="1016" />
         <source>Spectrum of %1 (%2 samples, %3 Hz resolution)</source>
         <translation>%1 のスペクトル (%2 サンプル、分解能 %3 Hz)</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::AutoTuneChoicePage</name>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Automatic tuning</source>
+        <translation>自動調整</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>One run through the wizards' steps: safety envelope, current loop, adaptive frequency response, notch filters, velocity PI, position gain and feedforward, move evaluation, verify, then apply or roll back. Each step shows what it measured, what it chose and the rule that chose it. A refusal or Abort restores every parameter.</source>
+        <translation>ウィザードの手順を一度に実行します: 安全範囲、電流ループ、適応周波数応答、ノッチフィルタ、速度PI、位置ゲインとフィードフォワード、移動評価、検証、そして適用または元に戻す。各手順は測定した値、選んだ値、選んだ規則を表示します。拒否または中止ではすべてのパラメータを元に戻します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Axis:</source>
+        <translation>軸:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>designed for phase margin ≥ %1°, gain margin ≥ %2 dB, velocity crossover at least %3 Hz; the re-measured loop must keep ≥ %4° and ≥ %5 dB or the run rolls back</source>
+        <translation>位相余裕 ≥ %1°、ゲイン余裕 ≥ %2 dB、速度ループのゲイン交差周波数 %3 Hz 以上で設計; 再測定したループが ≥ %4° と ≥ %5 dB を保たなければ元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Gentle</source>
+        <translation>ソフト</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>large margins for heavy or changing loads and little overshoot</source>
+        <translation>重い負荷や変動する負荷、小さいオーバーシュートのための大きな余裕</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Standard</source>
+        <translation>標準</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>the wizards' defaults</source>
+        <translation>ウィザードの既定値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Stiff</source>
+        <translation>高剛性</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>the highest bandwidth, for rigid axes</source>
+        <translation>最も高い帯域、剛性の高い軸向け</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Style:</source>
+        <translation>スタイル:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Seconds of motion for the whole sequence; a step that would go beyond it stops the run and nothing is changed.</source>
+        <translation>全手順の動作時間 (秒); これを超える手順があれば実行を止め、何も変更しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Time budget (motion):</source>
+        <translation>時間予算 (動作):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Dry run: measure and design everything, then restore every parameter (nothing is applied)</source>
+        <translation>試行のみ: すべてを測定・設計し、その後すべてのパラメータを元に戻す (何も適用しない)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>The axis may move: it is free within its travel window, and I can stop it (emergency stop at hand).</source>
+        <translation>軸が動いてよい: ストローク範囲内に障害物がなく、停止できる (非常停止が手元にある)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Start</source>
+        <translation>開始</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::AutoTuneResultPage</name>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Figure</source>
+        <translation>項目</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Parameter</source>
+        <translation>パラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Before</source>
+        <translation>変更前</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>After</source>
+        <translation>変更後</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Saved as session %1.</source>
+        <translation>セッション %1 として保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>The session is saved to the store when one is open.</source>
+        <translation>ストアが開いていればセッションを保存します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>The run could not start: %1.
+Nothing was changed.</source>
+        <translation>実行を開始できませんでした: %1。
+何も変更していません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1: %2
+RESTORING THE PARAMETERS FAILED: check the drive's parameters.</source>
+        <translation>%1: %2
+パラメータを元に戻せませんでした: サーボアンプのパラメータを確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Aborted</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Refused</source>
+        <translation>拒否</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1: %2
+Nothing was changed: every parameter was restored and read back equal.</source>
+        <translation>%1: %2
+何も変更していません: すべてのパラメータを元に戻し、読み出して一致を確認しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Dry run finished: every parameter was restored; the values below were not applied.</source>
+        <translation>試行が完了しました: すべてのパラメータを元に戻しました。以下の値は適用していません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Applied: the parameters below are written and read back equal.</source>
+        <translation>適用しました: 以下のパラメータを書き込み、読み出して一致を確認しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Phase margin (re-measured)</source>
+        <translation>位相余裕 (再測定)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Gain margin (re-measured)</source>
+        <translation>ゲイン余裕 (再測定)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 dB</source>
+        <translation>%1 dB</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Velocity bandwidth (−3 dB)</source>
+        <translation>速度ループ帯域 (−3 dB)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Position bandwidth (−3 dB)</source>
+        <translation>位置ループ帯域 (−3 dB)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Settling time of the move</source>
+        <translation>移動の整定時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>not settled within the record</source>
+        <translation>記録内で整定せず</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Peak following error</source>
+        <translation>最大位置偏差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 mrad</source>
+        <translation>%1 mrad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Motion time of the sequence</source>
+        <translation>全手順の動作時間</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Parameters it would apply (not applied):</source>
+        <translation>適用される予定のパラメータ (適用していません):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Parameters applied (old → new):</source>
+        <translation>適用したパラメータ (変更前 → 変更後):</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::AutoTuneRunPage</name>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Running the sequence</source>
+        <translation>手順を実行中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Abort stops the motion at once; every parameter the run wrote is restored and read back.</source>
+        <translation>中止すると動作をすぐに止め、実行中に書き込んだすべてのパラメータを元に戻して読み出します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Step</source>
+        <translation>手順</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>State</source>
+        <translation>状態</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>What each finished step measured, what it chose and the rule.</source>
+        <translation>完了した各手順の測定値、選んだ値、規則。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Result &gt;</source>
+        <translation>結果 &gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>waiting</source>
+        <translation>待機中</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Axis %1, style %2, time budget %3 s%4.</source>
+        <translation>軸 %1、スタイル %2、時間予算 %3 s%4。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>, dry run</source>
+        <translation>、試行のみ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Automatic tuning of axis %1 started</source>
+        <translation>軸 %1 の自動調整を開始しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Aborting: stopping the motion and restoring every parameter…</source>
+        <translation>中止中: 動作を止め、すべてのパラメータを元に戻しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>running…</source>
+        <translation>実行中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>done</source>
+        <translation>完了</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source> (%1 s of motion)</source>
+        <translation> (動作 %1 s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Measured: %1</source>
+        <translation>測定: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Chosen: %1</source>
+        <translation>選択: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Rule: %1</source>
+        <translation>規則: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>no answer from the drive</source>
+        <translation>サーボアンプから応答がありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>The run could not start: %1. Nothing was changed.</source>
+        <translation>実行を開始できませんでした: %1。何も変更していません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>aborted</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>refused</source>
+        <translation>拒否</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>every parameter restored and read back equal</source>
+        <translation>すべてのパラメータを元に戻し、読み出して一致を確認</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>RESTORING THE PARAMETERS FAILED: check the drive</source>
+        <translation>パラメータを元に戻せませんでした: サーボアンプを確認してください</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Aborted (%1): %2.</source>
+        <translation>中止 (%1): %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Refused (%1): %2.</source>
+        <translation>拒否 (%1): %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Finished (dry run): every parameter restored; see the result.</source>
+        <translation>完了 (試行のみ): すべてのパラメータを元に戻しました。結果を参照してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Finished: the parameters are applied; see the result.</source>
+        <translation>完了: パラメータを適用しました。結果を参照してください。</translation>
+    </message>
+</context>
+<context>
+    <name>axistune::gui::AutoTuneWizard</name>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>1. Safety envelope</source>
+        <translation>1. 安全範囲</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>2. Current loop</source>
+        <translation>2. 電流ループ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>3. Adaptive frequency response</source>
+        <translation>3. 適応周波数応答</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>4. Notch filters</source>
+        <translation>4. ノッチフィルタ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>5. Velocity PI</source>
+        <translation>5. 速度PI</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>6. Position gain and feedforward</source>
+        <translation>6. 位置ゲインとフィードフォワード</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>7. Move evaluation</source>
+        <translation>7. 移動評価</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>8. Verify</source>
+        <translation>8. 検証</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>9. Apply or roll back</source>
+        <translation>9. 適用または元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Automatic tuning</source>
+        <translation>自動調整</translation>
     </message>
 </context>
 </TS>

@@ -217,6 +217,17 @@ DriveController::DriveController(QObject* parent) : QObject(parent)
         },
         Qt::QueuedConnection);
     connect(
+        m_worker, &DriveWorker::autoTuneStep, this,
+        [this](int id, const QString& name, bool finished, const QString& json) {
+            if (auto it = m_open.find(id); it != m_open.end() && it->second.request) {
+                if (finished)
+                    emit it->second.request->stepFinished(name, json);
+                else
+                    emit it->second.request->stepStarted(name);
+            }
+        },
+        Qt::QueuedConnection);
+    connect(
         m_worker, &DriveWorker::connectionLost, this,
         [this](const QString& reason) {
             const bool was = m_connected;

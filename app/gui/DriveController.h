@@ -14,6 +14,7 @@
 // A device error during a test (lost connection, timeout, drive fault) aborts the test, and a lost
 // connection is announced by `connectionLost`.
 
+#include "core/autotune/AutoTune.h"
 #include "core/device/Drive.h"
 #include "core/model/Capture.h"
 #include "core/model/Parameter.h"
@@ -41,7 +42,18 @@ namespace gui {
 /// The answer to one request. `ok` false: `error` says why (already translated where it comes from
 /// the GUI; drive messages are passed on verbatim) and `code` classifies it.
 struct DriveReply {
-    enum class Kind { Connect, Disconnect, Metadata, ReadParameters, WriteParameters, Test, Describe, Plan, Scope };
+    enum class Kind {
+        Connect,
+        Disconnect,
+        Metadata,
+        ReadParameters,
+        WriteParameters,
+        Test,
+        Describe,
+        Plan,
+        Scope,
+        AutoTune
+    };
     int id = 0;
     Kind kind = Kind::Connect;
     bool ok = false;
@@ -68,6 +80,9 @@ struct DriveReply {
     std::optional<device::ScopeStatus> scopeStatus;             ///< pollScope
     std::shared_ptr<const device::ScopeRows> scopeRows;         ///< pollScope in roll mode: rows from `rollFrom`
     std::shared_ptr<const device::ScopeCapture> scopeCapture;   ///< pollScope: a complete capture newer than known
+    // AutoTune (DriveControllerAutoTune.cpp): the sequence's result (also a refusal or an abort, with every
+    // parameter restored); `ok` false only for errors before anything moved (bad options, unknown axis).
+    std::shared_ptr<const autotune::AutoTuneResult> autotune;
 };
 
 class DriveWorker;
@@ -86,8 +101,13 @@ public:
     void abort();
 
 signals:
-    /// Progress of a running test, 0..1 (never falling), with the drive's detail text.
+    /// Progress of a running test, 0..1 (never falling), with the drive's detail text. For the one-button
+    /// tuner: of the whole sequence (the steps count equal).
     void progress(double fraction, const QString& detail);
+    /// The one-button tuner began a step (its name as in the result's steps[]).
+    void stepStarted(const QString& name);
+    /// The one-button tuner finished a step: its record as in the result JSON (name, measured, chosen, rule).
+    void stepFinished(const QString& name, const QString& stepJson);
     /// The answer; emitted once.
     void finished(const axistune::gui::DriveReply& reply);
 
@@ -123,6 +143,11 @@ public:
     /// The drive's plan of a request before it runs (reply kind Plan): motion time and record length, or
     /// the drive's reason to refuse the request.
     DriveRequest* planTest(const device::TestRequest& request);
+    /// Runs the one-button tuner (core/autotune) on the worker, as one request: the drive is used by the worker
+    /// thread only; `abort()` on the request (or the controller) stops it at the next poll or step, and the
+    /// sequence restores every parameter it wrote (reply kind AutoTune; DriveControllerAutoTune.cpp). The options'
+    /// `run`, `stepStarted` and `stepFinished` are set by the controller.
+    DriveRequest* runAutoTune(const autotune::Options& options);
     // The scope (docs/scope.md "The GUI scope"). These requests also run between the polls of a running test
     // (the worker serves them from its side queue whenever the test reports progress), so the scope stays
     // live while a jog or a wizard's test moves the axis.
@@ -187,6 +212,7 @@ public:
     DriveReply doTest(int id, const device::TestRequest& request, std::shared_ptr<std::atomic<bool>> cancel);
     DriveReply doDescribe(int id, const QString& axis);
     DriveReply doPlan(int id, const device::TestRequest& request);
+    DriveReply doAutoTune(int id, autotune::Options options, std::shared_ptr<std::atomic<bool>> cancel);
     DriveReply doScopeCapabilities(int id, const QString& axis);
     DriveReply doArmScope(int id, const device::ScopeRequest& request);
     DriveReply doPollScope(int id, std::optional<std::uint64_t> rollFrom, std::uint64_t knownCaptures,
@@ -201,6 +227,8 @@ public:
 signals:
     void progress(int id, double fraction, const QString& detail);
     void connectionLost(const QString& reason);
+    /// A step of the one-button tuner began (finished false, json empty) or ended (its record as JSON).
+    void autoTuneStep(int id, const QString& name, bool finished, const QString& json);
 
 private:
     DriveReply fail(DriveReply r, const Error& e);

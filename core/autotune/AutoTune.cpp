@@ -162,6 +162,26 @@ private:
         return std::move(m_r);
     }
     void restore();
+    /// Before a step: false when the abort token is set (the caller refuses with Aborted); else announces it.
+    bool begin(const char* name)
+    {
+        if (m_o.run.abort && m_o.run.abort->load())
+            return false;
+        if (m_o.stepStarted)
+            m_o.stepStarted(name);
+        return true;
+    }
+    AutoTuneResult aborted(const char* name)
+    {
+        return refuse(std::string("aborted by the user before the step ") + name, ErrorCode::Aborted);
+    }
+    /// A step's record goes into steps[] and to the listener.
+    void done(const Step& s)
+    {
+        m_r.steps.push_back(s);
+        if (m_o.stepFinished)
+            m_o.stepFinished(s);
+    }
     Status write(const model::ParameterValues& v);
     /// Runs one test within the budget; a refusal reason on failure.
     Result<device::TestRun> test(const device::TestRequest& r, const std::string& what, double& motionS);
@@ -366,6 +386,8 @@ Result<AutoTuneResult> Sequence::run()
     bool feStop = false;
     for (const auto& k : m_keys)
         feStop = feStop || k.find("following_error") != std::string::npos;
+    if (!begin("safety-envelope"))
+        return aborted("safety-envelope");
     Step hold;
     hold.name = "safety-envelope";
     {
@@ -398,12 +420,14 @@ Result<AutoTuneResult> Sequence::run()
                 (feStop ? std::string("the drive's following-error stop stays as set")
                         : std::string("the drive offers no following-error stop: the move evaluation checks "
                                       "the following error afterwards"));
-    m_r.steps.push_back(hold);
+    done(hold);
 
     // ---- 2. Current loop ----------------------------------------------------------------------------------
     {
         Step s;
         s.name = "current-loop";
+        if (!begin("current-loop"))
+            return aborted("current-loop");
         const double kp = value("current.kp"), ki = value("current.ki");
         s.measured = {{"running_kp_V_per_A", kp}, {"running_ki_V_per_As", ki}};
         std::optional<double> predictedRise;
@@ -460,7 +484,7 @@ Result<AutoTuneResult> Sequence::run()
         } else {
             s.measured["step"] = "the drive offers no current step";
         }
-        m_r.steps.push_back(s);
+        done(s);
     }
 
     // ---- 3. Adaptive FRF ----------------------------------------------------------------------------------
@@ -468,6 +492,8 @@ Result<AutoTuneResult> Sequence::run()
     {
         Step s;
         s.name = "frf";
+        if (!begin("frf"))
+            return aborted("frf");
         nlohmann::json tries = nlohmann::json::array();
         std::optional<device::AdaptiveFrfResult> best;
         double bestPct = amplitudePct;
@@ -507,7 +533,7 @@ Result<AutoTuneResult> Sequence::run()
                  " % of the lines reach the voltage limit, else doubles (up to " + num(maxPct, 3) +
                  " %) while more than " + num(100.0 * kRetryNonlinearFraction, 2) +
                  " % are non-linear (friction); the try with the most valid lines is used";
-        m_r.steps.push_back(s);
+        done(s);
         const double lines = static_cast<double>(std::max<std::size_t>(f.lines, 1));
         if (static_cast<double>(f.nonlinear) > kMaxNonlinearFraction * lines)
             return refuse("strong non-linearity: " + count(static_cast<long long>(f.nonlinear)) + " of " +
@@ -540,6 +566,8 @@ Result<AutoTuneResult> Sequence::run()
     {
         Step s;
         s.name = "notches";
+        if (!begin("notches"))
+            return aborted("notches");
         const auto open = tuning::openLoopOf(t0, form);
         tuning::ResonanceOptions ro;
         ro.fminHz = t0.freqHz.front();
@@ -553,7 +581,7 @@ Result<AutoTuneResult> Sequence::run()
         s.measured = {{"resonances", res}, {"existing_notches", existing.size()}, {"exec_rate_Hz", execRateHz}};
         for (const auto& r : *all)
             if (r.freqHz >= fReq / kResonanceSeparation && r.freqHz <= fReq * kResonanceSeparation) {
-                m_r.steps.push_back(s);
+                done(s);
                 return refuse("resonance too close to the required bandwidth: " + num(r.freqHz, 4) + " Hz (" +
                               num(r.peakDb, 3) + " dB above its baseline) lies within a factor " +
                               num(kResonanceSeparation, 2) + " of the required velocity crossover " + num(fReq, 4) +
@@ -594,7 +622,7 @@ Result<AutoTuneResult> Sequence::run()
         if (!v.empty())
             if (auto st = write(v); !st)
                 return refuse("notches: " + st.error().detail, st.error().code);
-        m_r.steps.push_back(s);
+        done(s);
     }
 
     // ---- 5. Velocity PI -----------------------------------------------------------------------------------
@@ -631,6 +659,8 @@ Result<AutoTuneResult> Sequence::run()
         {
             Step s;
             s.name = "velocity-pi";
+            if (!begin("velocity-pi"))
+                return aborted("velocity-pi");
             const double fTop = std::min(0.125 * m_caps.traceRateHz, pf.empty() ? 0.0 : pf.back() / 2.0);
             const double fBottom = std::max(0.5 * fReq, pf.empty() ? 1.0 : pf.front());
             nlohmann::json scan = nlohmann::json::array();
@@ -673,7 +703,7 @@ Result<AutoTuneResult> Sequence::run()
                           {"running_kp_Nms_per_rad", running.kpNmsPerRad},
                           {"running_ki_Nm_per_rad", running.kiNmPerRad}};
             if (!(bestBw > 0.0)) {
-                m_r.steps.push_back(s);
+                done(s);
                 return refuse("the required velocity crossover " + num(fReq, 4) + " Hz cannot be reached with " +
                               num(m_t.phaseMarginDeg, 3) + " deg phase and " + num(m_t.gainMarginDb, 3) +
                               " dB gain margin on the measured plant" +
@@ -715,13 +745,15 @@ Result<AutoTuneResult> Sequence::run()
                     write({{"velocity.kp", design.proposed.kpNmsPerRad}, {"velocity.ki", design.proposed.kiNmPerRad}});
                 !st)
                 return refuse("velocity loop: " + st.error().detail, st.error().code);
-            m_r.steps.push_back(s);
+            done(s);
         }
 
         // ---- 6. Position gain and feedforward -----------------------------------------------------------------
         {
             Step s;
             s.name = "position";
+            if (!begin("position"))
+                return aborted("position");
             // The predicted closed velocity loop on the measured lines.
             std::vector<std::complex<double>> tv(pf.size());
             for (std::size_t k = 0; k < pf.size(); ++k) {
@@ -753,13 +785,15 @@ Result<AutoTuneResult> Sequence::run()
                      num(value("velocity.inertia"), 4) + " kg m^2, kept) so the command is followed without lag";
             if (auto st = write(v); !st)
                 return refuse("position loop: " + st.error().detail, st.error().code);
-            m_r.steps.push_back(s);
+            done(s);
         }
 
         // ---- 7. Move evaluation -------------------------------------------------------------------------------
         {
             Step s;
             s.name = "move";
+            if (!begin("move"))
+                return aborted("move");
             device::TestRequest j;
             j.axis = axis;
             j.type = device::TestType::Jog;
@@ -824,7 +858,7 @@ Result<AutoTuneResult> Sequence::run()
                             "the command until the position stays within ±") +
                 num(window, 2) + (m_linear ? " m" : " rad") +
                 "; overshoot past the target; peak following error; torque headroom against k_t * I_max";
-            m_r.steps.push_back(s);
+            done(s);
             if (headroom < 0.1)
                 return refuse("the move needs " + num(peakTq, 3) + " N m of " + num(maxTorqueNm, 3) +
                               " N m: less than 10 % torque headroom");
@@ -836,6 +870,8 @@ Result<AutoTuneResult> Sequence::run()
         {
             Step s;
             s.name = "verify";
+            if (!begin("verify"))
+                return aborted("verify");
             double t = 0.0;
             auto a = frf(measured.passes.front().peakPct, kFrfBudgetS, t);
             s.motionTimeS = t;
@@ -860,7 +896,7 @@ Result<AutoTuneResult> Sequence::run()
             s.rule = "the closed velocity loop measured again as in the FRF step; margins of L = T/(1-T) on its valid "
                      "lines (smallest over every crossover) must be at least the style's " +
                      num(m_t.acceptPhaseMarginDeg, 3) + " deg and " + num(m_t.acceptGainMarginDb, 3) + " dB";
-            m_r.steps.push_back(s);
+            done(s);
             if (!std::isfinite(m.phaseMarginDeg) || m.phaseMarginDeg < m_t.acceptPhaseMarginDeg ||
                 m.gainMarginDb < m_t.acceptGainMarginDb) {
                 const std::string why =
@@ -895,6 +931,8 @@ Result<AutoTuneResult> Sequence::run()
     {
         Step s;
         s.name = "apply";
+        if (!begin("apply"))
+            return aborted("apply");
         fin.parameters = m_written;
         fin.motionTimeS = m_motion;
         for (const auto& [k, v] : m_written) {
@@ -903,7 +941,7 @@ Result<AutoTuneResult> Sequence::run()
         }
         if (m_o.dryRun) {
             s.rule = "dry run: every parameter written during the run restored and read back";
-            m_r.steps.push_back(s);
+            done(s);
             restore();
             m_r.outcome = Outcome::DryRun;
             if (!m_r.restored)
@@ -925,7 +963,7 @@ Result<AutoTuneResult> Sequence::run()
                                   ErrorCode::Device);
             }
             s.rule = "the parameters stay written; every one read back equal (relative " + num(kReadBackRel, 2) + ")";
-            m_r.steps.push_back(s);
+            done(s);
             m_r.outcome = Outcome::Applied;
         }
     }
@@ -985,6 +1023,13 @@ std::optional<double> closedLoopBandwidthHz(const std::vector<double>& fHz, cons
             return std::pow(10.0, std::log10(fHz[i - 1]) + x * (std::log10(fHz[i]) - std::log10(fHz[i - 1])));
         }
     return std::nullopt;
+}
+
+const std::vector<std::string>& stepNames()
+{
+    static const std::vector<std::string> names{"safety-envelope", "current-loop", "frf",    "notches", "velocity-pi",
+                                                "position",        "move",         "verify", "apply"};
+    return names;
 }
 
 Result<AutoTuneResult> runAutoTune(device::Drive& drive, const Options& options)

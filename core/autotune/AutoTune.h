@@ -17,6 +17,7 @@
 #include "core/model/Result.h"
 #include "core/tuning/CurrentLoop.h"
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -41,6 +42,14 @@ const char* styleName(Style s);
 /// gentle, standard, stiff; BadInput naming the value otherwise.
 Result<Style> parseStyle(std::string_view name);
 
+struct Step {
+    std::string name;
+    nlohmann::json measured = nlohmann::json::object();
+    nlohmann::json chosen = nlohmann::json::object();
+    std::string rule;
+    double motionTimeS = 0.0;
+};
+
 struct Options {
     std::string axis;
     Style style = Style::Standard;
@@ -51,14 +60,11 @@ struct Options {
     /// (motorFromDriveParameters + designCurrentLoop), without it the running current PI is kept and only verified.
     std::optional<tuning::MotorData> motor;
     device::RunOptions run; ///< abort token and progress of each test
-};
-
-struct Step {
-    std::string name;
-    nlohmann::json measured = nlohmann::json::object();
-    nlohmann::json chosen = nlohmann::json::object();
-    std::string rule;
-    double motionTimeS = 0.0;
+    /// Called on the running thread when a step begins (its name as in steps[]; velocity-pi to verify begin
+    /// again on a second design attempt) and when it ends (the Step as it goes into steps[]). The abort token
+    /// is also checked before each step: set between two tests, the run stops there (Refused, Aborted).
+    std::function<void(const std::string& name)> stepStarted;
+    std::function<void(const Step&)> stepFinished;
 };
 
 struct Final {
@@ -93,6 +99,10 @@ struct AutoTuneResult {
 /// drive that cannot run the tests the sequence needs. Everything later is an AutoTuneResult (Refused with the reason
 /// and the parameters restored, or Applied/DryRun).
 Result<AutoTuneResult> runAutoTune(device::Drive& drive, const Options& options);
+
+/// The names of the nine steps in their order (steps[].name): safety-envelope, current-loop, frf, notches,
+/// velocity-pi, position, move, verify, apply.
+const std::vector<std::string>& stepNames();
 
 /// The result JSON of docs/formats.md "autotune result": outcome, reason, steps[] {name, measured, chosen, rule},
 /// final {phase_margin_deg, gain_margin_dB, velocity_bandwidth_Hz, position_bandwidth_Hz, settling_time_s,

@@ -140,3 +140,38 @@ TEST(AutoTune, BadOptionsAreErrorsBeforeAnythingMoves)
     EXPECT_FALSE(autotune::parseStyle("soft").ok());
     EXPECT_EQ(*autotune::parseStyle("stiff"), autotune::Style::Stiff);
 }
+
+TEST(AutoTune, StepListenersSeeEveryStepInOrderAndAnAbortBetweenStepsRestoresEveryParameter)
+{
+    // The token set when the notches step begins (no test runs in that step to see it) stops the run before the next
+    // step: the four steps up to the notches are reported begun and finished in the order of stepNames(), the
+    // velocity PI is never begun, and every parameter (the notches written included) is as before.
+    auto d = open("sim:vmc");
+    ASSERT_TRUE(d);
+    const auto before = allParameters(*d, "X");
+    std::atomic<bool> abort{false};
+    std::vector<std::string> started, finished;
+    autotune::Options o;
+    o.axis = "X";
+    o.run.abort = &abort;
+    o.stepStarted = [&](const std::string& name) {
+        started.push_back(name);
+        if (name == "notches")
+            abort = true;
+    };
+    o.stepFinished = [&](const autotune::Step& s) { finished.push_back(s.name); };
+    auto r = autotune::runAutoTune(*d, o);
+    ASSERT_TRUE(r.ok()) << r.error().detail;
+    const auto& names = autotune::stepNames();
+    ASSERT_EQ(names.size(), 9u);
+    EXPECT_EQ(started, std::vector<std::string>(names.begin(), names.begin() + 4));
+    EXPECT_EQ(finished, std::vector<std::string>(names.begin(), names.begin() + 4));
+    ASSERT_EQ(r->steps.size(), 4u);
+    for (std::size_t i = 0; i < r->steps.size(); ++i)
+        EXPECT_EQ(r->steps[i].name, finished[i]);
+    EXPECT_EQ(r->outcome, autotune::Outcome::Refused);
+    EXPECT_EQ(r->reasonCode, ErrorCode::Aborted) << r->reason;
+    EXPECT_NE(r->reason.find("velocity-pi"), std::string::npos) << r->reason;
+    EXPECT_TRUE(r->restored);
+    EXPECT_EQ(allParameters(*d, "X"), before);
+}

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The one-button tuning wizard (issue 18 item 5; docs/tuning.md "The wizard"): the GUI of core/autotune, the
+// same sequence as `axistune-cli autotune`. Three pages:
+//   choices (axis, style, time budget, dry run, the confirmation that the axis may move) →
+//   run (the nine steps with their state, the progress of the whole sequence, Abort, and what each finished step
+//        measured, chose and by which rule) →
+//   result (the final figures and the parameters old → new, or the refusal in red with "nothing was changed").
+// The sequence runs on the drive thread as one DriveController request (DriveControllerAutoTune.cpp), so the drive
+// is used by that thread only; Abort sets the request's token and the sequence restores every parameter it wrote.
+// Each run is saved as a session of kind "autotune" with the result JSON the CLI writes.
+
+#include "app/gui/DriveController.h"
+#include "core/autotune/AutoTune.h"
+
+#include <QPointer>
+#include <QWizard>
+#include <QWizardPage>
+
+#include <memory>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPlainTextEdit;
+class QProgressBar;
+class QPushButton;
+class QRadioButton;
+class QTableWidget;
+
+namespace axistune {
+namespace gui {
+
+class AppContext;
+
+struct AutoTuneData {
+    autotune::Options options;
+    std::shared_ptr<const autotune::AutoTuneResult> result; ///< the sequence's answer (also refused/aborted)
+    QString error; ///< the run could not start (bad options, not connected): nothing moved
+    bool running = false;
+    bool abortPressed = false;
+    qint64 sessionId = 0; ///< the saved session (0: not saved)
+};
+
+/// The translated name of a step of the sequence ("frf" → "Adaptive frequency response").
+QString autoTuneStepTitle(const QString& name);
+
+class AutoTuneChoicePage : public QWizardPage {
+    Q_OBJECT
+public:
+    AutoTuneChoicePage(AppContext& ctx, AutoTuneData& data, QWidget* parent = nullptr);
+    void initializePage() override;
+    bool isComplete() const override;
+    bool validatePage() override;
+
+    QComboBox* axis() const { return m_axis; }
+    QDoubleSpinBox* timeBudget() const { return m_budget; }
+    QCheckBox* dryRun() const { return m_dryRun; }
+    QCheckBox* confirmation() const { return m_confirm; }
+    QRadioButton* styleButton(autotune::Style s) const;
+
+private:
+    AppContext& m_ctx;
+    AutoTuneData& m_d;
+    QComboBox* m_axis = nullptr;
+    QRadioButton* m_gentle = nullptr;
+    QRadioButton* m_standard = nullptr;
+    QRadioButton* m_stiff = nullptr;
+    QDoubleSpinBox* m_budget = nullptr;
+    QCheckBox* m_dryRun = nullptr;
+    QCheckBox* m_confirm = nullptr;
+};
+
+class AutoTuneRunPage : public QWizardPage {
+    Q_OBJECT
+public:
+    AutoTuneRunPage(AppContext& ctx, AutoTuneData& data, QWidget* parent = nullptr);
+    void initializePage() override;
+    void cleanupPage() override;
+    bool isComplete() const override;
+
+    QTableWidget* steps() const { return m_steps; }
+    QProgressBar* progress() const { return m_progress; }
+    QPushButton* abortButton() const { return m_abort; }
+    QPlainTextEdit* log() const { return m_log; }
+    QLabel* state() const { return m_state; }
+    /// Stops the sequence (the worker restores every parameter it wrote); the page waits for its answer.
+    void abort();
+
+signals:
+    /// The sequence answered (result or error) and the session was queued for saving.
+    void runFinished();
+
+private:
+    void start();
+    void onStepStarted(const QString& name);
+    void onStepFinished(const QString& name, const QString& json);
+    void onReply(const DriveReply& reply);
+    void setRowState(int row, const QString& state, int icon);
+    void saveSession();
+    AppContext& m_ctx;
+    AutoTuneData& m_d;
+    QTableWidget* m_steps = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QPushButton* m_abort = nullptr;
+    QPlainTextEdit* m_log = nullptr;
+    QLabel* m_state = nullptr;
+    QPointer<DriveRequest> m_request;
+    int m_runningRow = -1;
+};
+
+class AutoTuneResultPage : public QWizardPage {
+    Q_OBJECT
+public:
+    AutoTuneResultPage(AutoTuneData& data, QWidget* parent = nullptr);
+    void initializePage() override;
+
+    QLabel* outcome() const { return m_outcome; }
+    QTableWidget* figures() const { return m_figures; }
+    QTableWidget* parameters() const { return m_parameters; }
+
+private:
+    AutoTuneData& m_d;
+    QLabel* m_outcome = nullptr;
+    QTableWidget* m_figures = nullptr;
+    QLabel* m_parametersTitle = nullptr;
+    QTableWidget* m_parameters = nullptr;
+    QLabel* m_session = nullptr;
+};
+
+class AutoTuneWizard : public QWizard {
+    Q_OBJECT
+public:
+    enum PageId { Choice, Run, Result };
+    explicit AutoTuneWizard(AppContext& ctx, QWidget* parent = nullptr);
+
+    AutoTuneData& data() { return m_data; }
+    AutoTuneChoicePage* choicePage() const { return m_choice; }
+    AutoTuneRunPage* runPage() const { return m_run; }
+    AutoTuneResultPage* resultPage() const { return m_result; }
+    /// Cancel while the sequence runs: aborts it and closes when it has answered (every parameter restored).
+    void reject() override;
+
+private:
+    AutoTuneData m_data;
+    AutoTuneChoicePage* m_choice = nullptr;
+    AutoTuneRunPage* m_run = nullptr;
+    AutoTuneResultPage* m_result = nullptr;
+    bool m_closeWhenDone = false;
+};
+
+} // namespace gui
+} // namespace axistune

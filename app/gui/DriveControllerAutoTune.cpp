@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The one-button tuner through the controller (issue 18 item 5; docs/tuning.md "The wizard"): the whole sequence
+// of core/autotune runs as one request on the drive thread, like a test: the Drive is never touched from another
+// thread, the request's cancel token is the sequence's abort token, and the progress and the step records are
+// sent back to the GUI thread as signals of the request.
+#include "app/gui/DriveController.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+
+namespace axistune {
+namespace gui {
+
+DriveReply DriveWorker::doAutoTune(int id, autotune::Options options, std::shared_ptr<std::atomic<bool>> cancel)
+{
+    DriveReply r;
+    r.id = id;
+    r.kind = DriveReply::Kind::AutoTune;
+    r.axis = QString::fromStdString(options.axis);
+    if (cancel->load()) {
+        r.code = ErrorCode::Aborted;
+        r.error = QCoreApplication::translate("DriveController", "Aborted by the user before the test started");
+        return r;
+    }
+    if (!m_drive)
+        return fail(r,
+                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+    // The bar counts the nine steps equally; within a step it follows the running test. It never falls (a second
+    // design attempt runs steps 5 to 8 again while the bar waits).
+    const auto& names = autotune::stepNames();
+    const double nSteps = static_cast<double>(names.size());
+    double stepIndex = 0.0, shown = 0.0, lastReported = -1.0;
+    auto report = [&](double f, const QString& detail) {
+        shown = std::max(shown, std::clamp(f, 0.0, 1.0));
+        if (shown - lastReported >= 0.005 || shown >= 1.0) {
+            lastReported = shown;
+            emit progress(id, shown, detail);
+        }
+    };
+    options.run.abort = cancel.get();
+    options.run.progress = [&](double f, const std::string& detail) {
+        drainSide(); // scope requests between the test's polls
+        report((stepIndex + std::clamp(f, 0.0, 1.0)) / nSteps, QString::fromStdString(detail));
+    };
+    options.stepStarted = [&](const std::string& name) {
+        const auto it = std::find(names.begin(), names.end(), name);
+        stepIndex = static_cast<double>(it - names.begin());
+        report(stepIndex / nSteps, {});
+        emit autoTuneStep(id, QString::fromStdString(name), false, {});
+    };
+    options.stepFinished = [&](const autotune::Step& s) {
+        const nlohmann::json j{{"name", s.name},
+                               {"measured", s.measured},
+                               {"chosen", s.chosen},
+                               {"rule", s.rule},
+                               {"motion_time_s", s.motionTimeS}};
+        emit autoTuneStep(id, QString::fromStdString(s.name), true, QString::fromStdString(j.dump()));
+    };
+    auto result = autotune::runAutoTune(*m_drive, options);
+    if (!result)
+        return fail(r, result.error());
+    if (result->outcome != autotune::Outcome::Refused)
+        report(1.0, {});
+    r.autotune = std::make_shared<const autotune::AutoTuneResult>(std::move(result).value());
+    r.ok = true;
+    return r;
+}
+
+DriveRequest* DriveController::runAutoTune(const autotune::Options& options)
+{
+    // The token exists before the job is queued: an abort() from now on reaches the sequence.
+    auto token = std::make_shared<std::atomic<bool>>(false);
+    DriveRequest* req = post(DriveReply::Kind::AutoTune,
+                             [options, token](DriveWorker& w, int id) { return w.doAutoTune(id, options, token); });
+    req->m_cancel = token;
+    m_open[req->id()].cancel = token;
+    return req;
+}
+
+} // namespace gui
+} // namespace axistune
