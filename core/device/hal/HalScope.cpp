@@ -9,9 +9,9 @@
 namespace axistune::device::hal {
 namespace {
 
-constexpr int kScopeDepth = 65536;                      ///< sampler FIFO rows (65 ms at 1 kHz … 16 ms at 4 kHz)
-constexpr std::uint64_t kScopeRingValues = 8u << 20;    ///< channels × rows the host ring holds in roll mode
-constexpr std::uint64_t kScopeCaptureValues = 4u << 20; ///< channels × rows of one triggered capture
+constexpr int kSamplerDepth = 65536;                   ///< sampler FIFO rows (65 ms at 1 kHz … 16 ms at 4 kHz)
+constexpr std::uint64_t kHostRingValues = 8u << 20;    ///< channels × rows the host ring holds in roll mode
+constexpr std::uint64_t kHostCaptureValues = 4u << 20; ///< channels × rows of one triggered capture
 
 struct ChannelPin {
     const char* name;
@@ -37,8 +37,8 @@ ScopeCapabilities halScopeCapabilities(const HalAxis& axis)
     c.fastestRateHz = axis.periodNs > 0 ? 1e9 / static_cast<double>(axis.periodNs) : 0.0;
     c.maxChannels = static_cast<int>(c.channels.size());
     c.maxDivider = 1; // the sampler takes every period; no divider in LinuxCNC 2.9's sampler
-    c.maxValues = kScopeCaptureValues;
-    c.ringValues = kScopeRingValues;
+    c.maxValues = kHostCaptureValues;
+    c.ringValues = kHostRingValues;
     return c;
 }
 
@@ -87,7 +87,7 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
         std::vector<std::string> undoArgs;
     };
     std::vector<Step> steps = {
-        {{"loadrt", "sampler", "depth=" + std::to_string(kScopeDepth), "cfg=" + cfg}, {"unloadrt", "sampler"}},
+        {{"loadrt", "sampler", "depth=" + std::to_string(kSamplerDepth), "cfg=" + cfg}, {"unloadrt", "sampler"}},
         {{"addf", "sampler.0", axis.thread}, {"delf", "sampler.0", axis.thread}},
     };
     for (auto& l : links) {
@@ -116,7 +116,7 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
         return stream.error();
     }
     s->m_stream = std::move(stream).value();
-    const std::uint64_t ringRows = kScopeRingValues / std::max<std::size_t>(setup.channels.size(), 1);
+    const std::uint64_t ringRows = kHostRingValues / std::max<std::size_t>(setup.channels.size(), 1);
     s->m_recorder.arm(setup, ringRows);
     s->m_thread = std::thread([p = s.get()] { p->read(); });
     return s;
