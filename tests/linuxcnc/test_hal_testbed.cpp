@@ -440,7 +440,8 @@ LoopMeasurement measureLoop(double peak)
         return out;
     auto rec = runExcitation(**client, **inj, x);
     EXPECT_TRUE(rec) << rec.error().detail;
-    EXPECT_TRUE((*inj)->remove());
+    const Status removed = (*inj)->remove();
+    EXPECT_TRUE(removed) << removed.error().detail;
     if (!rec)
         return out;
     const std::size_t skip = settle * design->table.size(), len = periods * design->table.size();
