@@ -276,6 +276,7 @@ Status HalInjection::remove()
             first = waitOffsetReturned(m_options, m_settings.limit / m_settings.returnRate + 1.0);
     }
     bool waited = false;
+    bool halChecked = false, halRuns = true;
     while (!m_undo.empty()) {
         auto args = std::move(m_undo.back());
         m_undo.pop_back();
@@ -288,9 +289,17 @@ Status HalInjection::remove()
         auto r = runHalcmd(m_options, args);
         if (!r) {
             // Once more after a pause: halcmd can fail transiently on a loaded machine (seen once in a CI run at
-            // ctest -j2); a step that fails twice is reported, and the remaining steps still run.
-            std::this_thread::sleep_for(std::chrono::milliseconds(100));
-            r = runHalcmd(m_options, args);
+            // ctest -j2). Not when HAL no longer runs (a lost session: every step fails, and retries would only
+            // delay the report). A step that fails twice is reported, and the remaining steps still run.
+            if (!halChecked) {
+                halChecked = true;
+                auto t = runHalcmd(m_options, {"-s", "show", "thread"});
+                halRuns = t && t->find_first_not_of(" \t\r\n") != std::string::npos;
+            }
+            if (halRuns) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+                r = runHalcmd(m_options, args);
+            }
         }
         if (!r && first)
             first = r.error();
