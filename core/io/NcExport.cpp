@@ -169,6 +169,12 @@ Result<NcMap> ncMapFromJson(const nlohmann::json& j, const std::string& sourceNa
                 return bad(sourceName, "field 'comment_forbidden': '" + f +
                                            "' holds a letter, digit or ':' (it would garble the VERIFY notice)");
     }
+    // The notice is written as the map states it, or the map is refused: a forbidden string in it would be blanked.
+    for (const auto& f : m.commentForbidden)
+        if (m.verify.find(f) != std::string::npos)
+            return bad(sourceName, "field 'verify' holds '" + f +
+                                       "', which 'comment_forbidden' blanks in comments: the VERIFY notice would not "
+                                       "be written as given");
     for (const auto* t : {&m.comment, &m.line, &m.axisItem, &m.axisSeparator, &m.axisHeader})
         if (t->find_first_of("\r\n") != std::string::npos)
             return bad(sourceName, "templates must be single lines (no line break)");
