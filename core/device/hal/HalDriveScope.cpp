@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The scope of the hal: backend (HalScope.h): LinuxCNC's sampler on the pid's pins, not while a test runs.
+#include "core/device/hal/HalDrive.h"
+
+namespace axistune::device::hal {
+
+Result<ScopeCapabilities> HalDrive::scopeCapabilities(const std::string& axis)
+{
+    auto a = discoverAxis(m_options, axis);
+    if (!a)
+        return a.error();
+    return halScopeCapabilities(*a);
+}
+
+Status HalDrive::armScope(const ScopeRequest& request)
+{
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_status.state == TestState::Running)
+            return makeError(ErrorCode::Busy, "the scope is refused while a test runs: the test holds LinuxCNC's "
+                                              "sampler (hal: has one)");
+    }
+    auto a = discoverAxis(m_options, request.axis);
+    if (!a)
+        return a.error();
+    const auto caps = halScopeCapabilities(*a);
+    auto setup = checkScopeRequest(request, caps);
+    if (!setup)
+        return setup.error();
+    m_scope.reset(); // re-arming replaces the running scope
+    auto scope = HalScope::start(m_options, *a, caps, *setup);
+    if (!scope)
+        return scope.error();
+    m_scope = std::move(scope).value();
+    m_scopeChannels.clear();
+    for (const auto i : setup->channels)
+        m_scopeChannels.push_back(caps.channels[i]);
+    m_scopeRateHz = setup->rateHz;
+    return Status::success();
+}
+
+Result<ScopeStatus> HalDrive::pollScope()
+{
+    if (!m_scope)
+        return ScopeStatus{};
+    if (auto f = m_scope->failure(); !f.empty())
+        return makeError(ErrorCode::Device, "connection hal: lost: " + f);
+    return m_scope->status();
+}
+
+Result<ScopeRows> HalDrive::readScopeRows(std::uint64_t from, std::size_t maxRows)
+{
+    if (!m_scope)
+        return makeError(ErrorCode::NotFound, "the scope is not armed");
+    return m_scope->rows(from, maxRows);
+}
+
+Result<ScopeCapture> HalDrive::readScopeCapture()
+{
+    if (!m_scope)
+        return makeError(ErrorCode::NotFound, "no scope capture: the scope was never armed");
+    auto c = m_scope->capture();
+    if (!c)
+        return c.error();
+    ScopeCapture out = std::move(c).value();
+    out.channels = m_scopeChannels;
+    return out;
+}
+
+Status HalDrive::stopScope()
+{
+    if (!m_scope)
+        return Status::success();
+    // The sampler is removed at once (a test may follow); a complete capture stays readable.
+    return m_scope->stop();
+}
+
+} // namespace axistune::device::hal
