@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The scope of axistune-simdrive (docs/modbus.md "Scope", docs/scope.md): configuration and status
 // registers, arm/stop commands, the roll ring and the last capture paged through scope.window. While the
-// scope is armed and no test moves its axis, that axis runs in wall-clock time (a real drive samples in
-// real time); during a test the test's pace applies.
+// scope is armed and no test moves its axes, they run in wall-clock time (a real drive samples in real time);
+// during a test the test's pace applies.
 #include "core/device/SimDriveServer.h"
 
 #include <algorithm>
@@ -26,12 +26,17 @@ void SimDriveServer::stepScope()
         m_scopeWall = now;
         return;
     }
-    const bool testMovesIt = m_state == "running" && (m_testUnit == m_scopeUnit || m_testSecondUnit == m_scopeUnit);
+    const bool testMovesIt =
+        m_state == "running" &&
+        ((m_testUnit >= 0 && m_drive->scopeSamplesAxis(m_axes[static_cast<std::size_t>(m_testUnit)].name)) ||
+         (m_testSecondUnit >= 0 && m_drive->scopeSamplesAxis(m_axes[static_cast<std::size_t>(m_testSecondUnit)].name)));
     if (testMovesIt) {
+        // The test's pace applies; the scope's other axes follow the one the test moves.
+        m_drive->syncScopeAxes();
         m_scopeWall = now;
         return;
     }
-    sim::AxisSimulator& s = *m_axes[static_cast<std::size_t>(m_scopeUnit)].sim;
+    const sim::AxisSimulator& s = *m_axes[static_cast<std::size_t>(m_scopeUnit)].sim;
     const double rate = m_opt.pace > 0.0 ? m_opt.pace : 1.0;
     const double h = s.currentPeriod();
     const double due = std::chrono::duration<double>(now - m_scopeWall).count() * rate;
@@ -46,8 +51,7 @@ void SimDriveServer::stepScope()
         m_scopeWall += std::chrono::duration_cast<Clock::duration>(
             std::chrono::duration<double>(static_cast<double>(ticks) * h / rate));
     }
-    if (ticks > 0)
-        s.runTicks(ticks);
+    m_drive->runScopeAxes(ticks);
 }
 
 int SimDriveServer::armScope(int ui)

@@ -35,7 +35,10 @@ public:
     Result<TestPlan> planTest(const TestRequest& request) override;
     // The scope (docs/scope.md), on the velocity-loop rate of one axis. Machine time runs only in calls:
     // pollScope() runs the scope's axis one slice (setSliceSeconds) unless a running test moves that axis,
-    // in which case pollTest() advances it and the scope samples the test.
+    // in which case pollTest() advances it and the scope samples the test. Channels of the other axes of the
+    // machine ("Y.table_pos_m", scopeCompanionSignals) are sampled with it in one row: arming brings those axes
+    // to the scope axis's machine time, and every poll keeps them there (they hold what they did last while a
+    // test moves another axis), so row n holds every axis at the same velocity period.
     Result<ScopeCapabilities> scopeCapabilities(const std::string& axis) override;
     Status armScope(const ScopeRequest& request) override;
     Result<ScopeStatus> pollScope() override;
@@ -46,6 +49,14 @@ public:
     ScopeStatus scopeStatus() const { return m_scope.status(); }
     /// Channels of the armed scope.
     std::size_t scopeChannelCount() const { return m_scopeChannels.size(); }
+    /// Whether the armed scope samples axis `axis` (its own axis or a companion's channels).
+    bool scopeSamplesAxis(const std::string& axis) const;
+    /// Runs every axis of the armed scope `ticks` current periods and keeps them at one machine time
+    /// (axistune-simdrive's wall clock while no test moves them).
+    void runScopeAxes(std::int64_t ticks);
+    /// Brings every axis of the armed scope to the machine time of the one furthest ahead (after a test moved
+    /// some of them).
+    void syncScopeAxes();
 
     /// Failure modes of the link for tests (FaultInjection.h): drop-after:N makes the N-th call and every
     /// later one fail with ErrorCode::Device as a lost connection would ("sim:PRESET?fault=drop-after:N").
@@ -82,6 +93,8 @@ private:
     Status startCircle(const TestRequest& request);
     Result<TestStatus> pollCircle();
     void abortCircle(const std::string& why);
+    /// Whether a running test advances this axis (pollTest runs it).
+    bool testMoves(const sim::AxisSimulator* axis) const;
     struct CurrentStepTiming {
         double h = 0.0;         ///< current-loop period [s]
         long long ticks = 0;    ///< record length [current periods]
@@ -119,6 +132,17 @@ private:
     sim::AxisSimulator* m_scopeSim = nullptr;
     std::vector<ScopeChannelInfo> m_scopeChannels; ///< of the armed request, in its order
     std::vector<double> m_scopeRow;
+    /// One axis the armed scope samples: its simulator, (signal index, column) of its channels, and the offset of
+    /// its velocity-period count from the scope axis's (fixed when armed).
+    struct ScopeAxis {
+        sim::AxisSimulator* sim = nullptr;
+        std::vector<std::pair<std::size_t, std::size_t>> picks;
+        std::int64_t tickOffset = 0;
+    };
+    std::vector<ScopeAxis> m_scopeAxes; ///< the scope axis first; more only with companion channels
+    /// Rows of several axes waiting for the axes still behind: velocity period → (row, axes written).
+    std::map<std::int64_t, std::pair<std::vector<double>, std::size_t>> m_scopePending;
+    void disarmScopeTaps();
 };
 
 }  // namespace axistune::device

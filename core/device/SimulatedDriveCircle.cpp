@@ -254,6 +254,13 @@ Result<TestStatus> SimulatedDrive::pollCircle()
     return m_status;
 }
 
+bool SimulatedDrive::testMoves(const sim::AxisSimulator* axis) const
+{
+    if (m_status.state != TestState::Running)
+        return false;
+    return axis == m_active || (m_circle && (axis == m_circle->x || axis == m_circle->y));
+}
+
 void SimulatedDrive::abortCircle(const std::string& why)
 {
     // Stop both axes at once: hold velocity 0 and restore both axes' parameters.

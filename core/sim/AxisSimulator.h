@@ -96,6 +96,9 @@ public:
     void runTicks(std::int64_t ticks);
 
     double time() const { return static_cast<double>(m_tick) * m_hCurrent; }
+    /// Current periods and velocity periods run since the last reset (time() = currentTicks() · currentPeriod()).
+    std::int64_t currentTicks() const { return m_tick; }
+    std::int64_t velocityTicks() const { return m_velTick; }
     double currentPeriod() const { return m_hCurrent; }
     double velocityPeriod() const { return m_hCurrent * m_velDiv; }
     /// Period of the velocity-rate trace (trace.divider velocity periods); a TraceRate::Current trace is

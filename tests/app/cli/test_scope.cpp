@@ -3,12 +3,15 @@
 // through the Drive seam, and axistune-cli scope. Expected values come from the known step (0 before, the
 // amplitude from the step on), the requested pre-trigger share and the drive's clock (t_s = n · T_v).
 #include "core/device/Drive.h"
+#include "core/model/Number.h"
 #include "core/device/TestRunner.h"
 #include "core/io/ScopeCsv.h"
 
 #include <chrono>
 #include <cmath>
 #include <gtest/gtest.h>
+
+#include "tests/core/device/ScopeTestUtil.h"
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -179,7 +182,7 @@ TEST(ModbusScope, ClientAndServerRefuseWhatTheDriveDoesNotOffer)
     auto caps = d->scopeCapabilities("X");
     ASSERT_TRUE(caps.ok());
     EXPECT_NEAR(caps->fastestRateHz, 4000.0, 1e-9);
-    EXPECT_EQ(caps->channels.size(), 15u);
+    EXPECT_EQ(caps->channels.size(), 23u); // X's 15, then the positions and following error of Y and Z (4 each)
     EXPECT_EQ(caps->channels[3].unit, "N·m");
 }
 
@@ -316,8 +319,90 @@ TEST(CliScope, DriveListsTheScopeChannelsWithUnits)
     EXPECT_EQ(j["axes"]["X"]["capabilities"]["scope"], true);
     const auto& s = j["axes"]["X"]["scope"];
     EXPECT_EQ(s["fastest_rate_Hz"].get<double>(), 4000.0);
-    ASSERT_EQ(s["channels"].size(), 15u);
+    ASSERT_EQ(s["channels"].size(), 23u); // X's 15, then the positions and following error of Y and Z (4 each)
     EXPECT_EQ(s["channels"][14]["name"], "following_error_m");
+    EXPECT_EQ(s["channels"][17]["name"], "Y.table_pos_m");
+    EXPECT_EQ(s["channels"][17]["unit"], "m");
     EXPECT_EQ(s["channels"][14]["unit"], "m");
     EXPECT_EQ(s["channels"][3]["unit"], "N·m");
+}
+
+// Two axes in one scope over Modbus: X's and Y's table positions of a circle in one row. axistune-simdrive runs the
+// circle at its own pace and keeps the scope's other axis with the one the test moves; the circle test's trace is
+// the reference (the scope row holding a trace sample's X position holds its Y position; one velocity period of
+// skew would be 4.2 µm at this feed).
+TEST(ModbusScope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
+{
+    SimDrive srv("--preset vmc --seed 7");
+    ASSERT_GT(srv.port(), 0);
+    auto d = connectTo(srv);
+    ASSERT_TRUE(d);
+    auto caps = d->scopeCapabilities("X");
+    ASSERT_TRUE(caps.ok());
+    EXPECT_EQ(caps->channels.size(), 23u); // X's 15, then 4 of Y and 4 of Z
+    EXPECT_EQ(caps->channels[17].name, "Y.table_pos_m");
+    ScopeRequest r;
+    r.axis = "X";
+    r.mode = ScopeMode::Roll;
+    r.channels = {"t_s", "table_pos_m", "Y.table_pos_m"};
+    ASSERT_TRUE(d->armScope(r).ok());
+    TestRequest t;
+    t.type = TestType::Circle;
+    t.axis = "X";
+    t.secondAxis = "Y";
+    t.radiusM = 0.05;
+    t.feedMPerS = 1000.0 / 60000.0;
+    t.centerYM = 0.1;
+    t.durationS = 0.1;
+    ASSERT_TRUE(d->startTest(t).ok());
+    ScopeCapture all;
+    all.triggered = false;
+    all.columns.assign(r.channels.size(), {});
+    std::uint64_t next = 0;
+    bool started = false, done = false;
+    std::uint64_t lost = 0;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (std::chrono::steady_clock::now() < end) {
+        auto rows = d->readScopeRows(next, 20000);
+        ASSERT_TRUE(rows.ok()) << rows.error().detail;
+        if (started && rows->rows > 0 && rows->firstSample != next)
+            lost += rows->firstSample - next;
+        if (rows->rows > 0) {
+            started = true;
+            appendScopeRows(all, *rows);
+            next = rows->firstSample + rows->rows;
+        }
+        if (done && rows->rows == 0)
+            break;
+        if (!done) {
+            auto s = d->pollTest();
+            ASSERT_TRUE(s.ok());
+            if (s->state != TestState::Running) {
+                ASSERT_EQ(s->state, TestState::Completed) << s->detail;
+                done = true;
+            }
+        }
+    }
+    ASSERT_TRUE(done);
+    auto trace = d->readTrace();
+    ASSERT_TRUE(trace.ok()) << trace.error().detail;
+    ASSERT_TRUE(d->stopScope().ok());
+    EXPECT_EQ(lost, 0u);
+    EXPECT_EQ(all.missingSamples(), 0u);
+    const auto* tx = trace->channel("X.table_pos_m");
+    const auto* ty = trace->channel("Y.table_pos_m");
+    ASSERT_NE(tx, nullptr);
+    ASSERT_NE(ty, nullptr);
+    const auto& sx = all.columns[1];
+    const auto& sy = all.columns[2];
+    // The trace takes one row per position period (its fs_Hz), the scope one per velocity period (4 kHz).
+    const double traceHz = model::parseNumber((*trace).metadata.at("fs_Hz")).value_or(0.0);
+    const auto step = static_cast<std::size_t>(std::llround(4000.0 / traceHz));
+    ASSERT_EQ(static_cast<double>(step) * traceHz, 4000.0);
+    const auto i0 = axistune::testing::traceRowInScope(sx, tx->data, step);
+    ASSERT_TRUE(i0.has_value()) << "the trace's X positions are not in the scope, one every " << step << " rows";
+    double worstY = 0.0;
+    for (std::size_t k = 0; k < ty->data.size(); ++k)
+        worstY = std::max(worstY, std::abs(sy[*i0 + k * step] - ty->data[k]));
+    EXPECT_EQ(worstY, 0.0) << "Y at the instant of X [m]";
 }

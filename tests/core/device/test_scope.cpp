@@ -2,6 +2,7 @@
 // The drive's scope on the embedded simulated drive (docs/scope.md): a triggered capture on a known
 // velocity step puts the trigger at the requested pre-trigger row, on the step; roll mode streams every
 // sample once; requests outside the drive's figures are refused naming the field.
+#include "core/model/Number.h"
 #include "core/device/Scope.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/device/TestRunner.h"
@@ -11,6 +12,8 @@
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
+
+#include "tests/core/device/ScopeTestUtil.h"
 
 #include "tests/core/device/DriveTestUtil.h"
 
@@ -350,7 +353,8 @@ TEST(ScopeCsv, ACaptureReloadsIdenticalFromItsCsv)
     ScopeRequest r = stepTrigger(25.0, 1, ScopeEdge::Rising, 400);
     r.channels.clear();
     for (const auto& c : caps->channels)
-        r.channels.push_back(c.name);
+        if (c.name.find('.') == std::string::npos) // X's own channels, not the other axes' ("Y.table_pos_m")
+            r.channels.push_back(c.name);
     const StepCapture sc = captureStep(*drive, r);
     ScopeRequest roll;
     roll.axis = "X";
@@ -390,3 +394,151 @@ TEST(ScopeCsv, ACaptureReloadsIdenticalFromItsCsv)
     }
     std::filesystem::remove_all(dir);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Two axes in one scope: X against Y of a circle.
+
+namespace {
+
+/// A circle in the X–Y plane of vmc (R 50 mm at 1000 mm/min about (0, 0.1 m)), as the ball-bar tests run it.
+TestRequest circleXY()
+{
+    TestRequest r;
+    r.type = TestType::Circle;
+    r.axis = "X";
+    r.secondAxis = "Y";
+    r.radiusM = 0.05;
+    r.feedMPerS = 1000.0 / 60000.0;
+    r.centerXM = 0.0;
+    r.centerYM = 0.1;
+    r.durationS = 0.1;
+    return r;
+}
+
+/// Rolls the scope while the test runs to its end; returns every row and the test's trace.
+std::pair<ScopeCapture, model::Capture> rollDuring(SimulatedDrive& drive, const ScopeRequest& r, const TestRequest& t)
+{
+    std::pair<ScopeCapture, model::Capture> out;
+    ScopeCapture& all = out.first;
+    all.triggered = false;
+    all.columns.assign(r.channels.size(), {});
+    EXPECT_TRUE(drive.armScope(r).ok());
+    // The scope axes run a while before the test (they hold), then the test moves them.
+    for (int i = 0; i < 3; ++i)
+        EXPECT_TRUE(drive.pollScope().ok());
+    EXPECT_TRUE(drive.startTest(t).ok());
+    std::uint64_t next = 0;
+    bool started = false;
+    for (int i = 0; i < 100000; ++i) {
+        auto s = drive.pollTest();
+        EXPECT_TRUE(s.ok());
+        EXPECT_TRUE(drive.pollScope().ok());
+        auto rows = drive.readScopeRows(next, 1u << 20);
+        EXPECT_TRUE(rows.ok());
+        if (!rows.ok() || !s.ok())
+            break;
+        if (started)
+            EXPECT_EQ(rows->firstSample, next) << "samples lost";
+        started = true;
+        appendScopeRows(all, *rows);
+        next = rows->firstSample + rows->rows;
+        if (s->state != TestState::Running) {
+            EXPECT_EQ(s->state, TestState::Completed) << s->detail;
+            break;
+        }
+    }
+    auto trace = drive.readTrace();
+    EXPECT_TRUE(trace.ok());
+    if (trace.ok())
+        out.second = *trace;
+    return out;
+}
+
+} // namespace
+
+TEST(Scope, OtherAxesPositionsAreOfferedAsCompanionChannels)
+{
+    auto drive = devtest::makeDrive("vmc", 7);
+    auto s = drive->scopeCapabilities("X");
+    ASSERT_TRUE(s.ok());
+    // vmc has X, Y and Z on one clock: X's 15 signals, then 4 of Y and 4 of Z (positions and following error).
+    const std::vector<std::string> companions = {"Y.position_cmd_m", "Y.motor_pos_m", "Y.table_pos_m",
+                                                 "Y.following_error_m", "Z.position_cmd_m", "Z.motor_pos_m",
+                                                 "Z.table_pos_m", "Z.following_error_m"};
+    ASSERT_EQ(s->channels.size(), 15u + companions.size());
+    for (std::size_t k = 0; k < companions.size(); ++k) {
+        EXPECT_EQ(s->channels[15 + k].name, companions[k]);
+        EXPECT_EQ(s->channels[15 + k].unit, "m");
+    }
+    // A machine with one axis offers none.
+    auto dd = devtest::makeDrive("dd-table", 7);
+    auto c = dd->scopeCapabilities("C");
+    ASSERT_TRUE(c.ok());
+    for (const auto& ch : c->channels)
+        EXPECT_EQ(ch.name.find('.'), std::string::npos) << ch.name;
+}
+
+// The XY of a circle: X's and Y's table positions from one scope, row by row at one instant. The circle test's
+// own trace (CircleRun, both axes read after each position period) is the independent reference: at every trace
+// sample the scope row holding the same X position holds the same Y position. One velocity period of skew between
+// the axes would move Y by v·T_v = 16.7 mm/s · 250 µs = 4.2 µm at this feed.
+TEST(Scope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
+{
+    auto drive = devtest::makeDrive("vmc", 7);
+    // Y runs ahead of X before the scope is armed: arming must bring them to one machine time.
+    ASSERT_TRUE(drive->armScope([] {
+                         ScopeRequest r;
+                         r.axis = "Y";
+                         r.mode = ScopeMode::Roll;
+                         r.channels = {"t_s"};
+                         return r;
+                     }())
+                    .ok());
+    for (int i = 0; i < 5; ++i)
+        ASSERT_TRUE(drive->pollScope().ok());
+    ASSERT_TRUE(drive->stopScope().ok());
+
+    ScopeRequest r;
+    r.axis = "X";
+    r.mode = ScopeMode::Roll;
+    r.channels = {"t_s", "table_pos_m", "Y.table_pos_m", "position_cmd_m", "Y.position_cmd_m"};
+    auto [scope, trace] = rollDuring(*drive, r, circleXY());
+    ASSERT_GT(scope.rows(), 40000u); // 2π · 50 mm at 16.7 mm/s ≈ 18.8 s at 4 kHz, plus positioning
+    EXPECT_EQ(scope.missingSamples(), 0u);
+    for (std::size_t i = 1; i < scope.rows(); ++i)
+        ASSERT_EQ(scope.samples[i], scope.samples[i - 1] + 1);
+    for (std::size_t i = 0; i < scope.rows(); ++i) // X's machine time: 250 µs per sample
+        ASSERT_NEAR(scope.columns[0][i], static_cast<double>(scope.samples[i]) * 250e-6, 1e-9);
+
+    const auto* tx = trace.channel("X.table_pos_m");
+    const auto* ty = trace.channel("Y.table_pos_m");
+    ASSERT_NE(tx, nullptr);
+    ASSERT_NE(ty, nullptr);
+    const auto& sx = scope.columns[1];
+    const auto& sy = scope.columns[2];
+    // The trace takes one row per position period (its fs_Hz), the scope one per velocity period (4 kHz).
+    const double traceHz = model::parseNumber(trace.metadata.at("fs_Hz")).value_or(0.0);
+    const auto step = static_cast<std::size_t>(std::llround(4000.0 / traceHz));
+    ASSERT_EQ(static_cast<double>(step) * traceHz, 4000.0);
+    const auto i0 = axistune::testing::traceRowInScope(sx, tx->data, step);
+    ASSERT_TRUE(i0.has_value()) << "the trace's X positions are not in the scope, one every " << step << " rows";
+    double worstY = 0.0;
+    for (std::size_t k = 0; k < ty->data.size(); ++k)
+        worstY = std::max(worstY, std::abs(sy[*i0 + k * step] - ty->data[k]));
+    EXPECT_EQ(worstY, 0.0) << "Y at the instant of X [m]";
+
+    // The XY is the circle: every row after the positioning lies on R = 50 mm about (0, 0.1 m) within the
+    // commanded path's own radius error plus the ball-bar's deviation of the trace (computed from the trace).
+    double traceDev = 0.0;
+    for (std::size_t k = 0; k < tx->data.size(); ++k)
+        traceDev = std::max(traceDev, std::abs(std::hypot(tx->data[k], ty->data[k] - 0.1) - 0.05));
+    std::size_t onCircle = 0;
+    for (std::size_t i = 0; i < sx.size(); ++i) {
+        const double rr = std::hypot(sx[i], sy[i] - 0.1);
+        if (std::abs(rr - 0.05) <= traceDev + 1e-9)
+            ++onCircle;
+    }
+    EXPECT_GT(onCircle, tx->data.size()); // the whole circle at 4 kHz holds more rows than the trace (1 kHz)
+    ASSERT_TRUE(drive->stopScope().ok());
+}
+
