@@ -7,7 +7,6 @@
 #include "widgets/PlotExport.h"
 
 #include <QVBoxLayout>
-
 #include <qcustomplot.h>
 
 #include <cmath>
@@ -103,7 +102,7 @@ void CurvePlot::addPoint(double x, double y, const QString& label)
     if (!label.isEmpty()) {
         auto* text = new QCPItemText(m_plot);
         text->position->setParentAnchor(dot->position);
-        text->position->setCoords(8, -6);  // pixels right of and above the point
+        text->position->setCoords(8, -6); // pixels right of and above the point
         text->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
         text->setText(label);
         text->setBrush(QColor(255, 255, 255, 210));
@@ -176,6 +175,17 @@ void CurvePlot::rescale()
         else if (!log && r.size() > 0)
             axis->setRange(r.lower - 0.04 * r.size(), r.upper + 0.04 * r.size());
     }
+    if (m_equalScales && !m_logX && !m_logY) {
+        const QRect rect = m_plot->axisRect()->rect();
+        if (rect.width() > 0 && rect.height() > 0) {
+            const double perPixelX = m_plot->xAxis->range().size() / rect.width();
+            const double perPixelY = m_plot->yAxis->range().size() / rect.height();
+            if (perPixelX > perPixelY)
+                m_plot->yAxis->setScaleRatio(m_plot->xAxis, 1.0);
+            else
+                m_plot->xAxis->setScaleRatio(m_plot->yAxis, 1.0);
+        }
+    }
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -201,5 +211,5 @@ void CurvePlot::replotNow()
     m_plot->replot(QCustomPlot::rpImmediateRefresh);
 }
 
-}  // namespace widgets
-}  // namespace axistune
+} // namespace widgets
+} // namespace axistune

@@ -38,8 +38,12 @@ public:
     int pointCount() const { return static_cast<int>(m_points.size()); }
     int verticalLineCount() const { return m_lineCount; }
     QStringList curveNames() const;
-    /// Fits both axes to all curves and points.
+    /// Fits both axes to all curves and points (with equal scales: one unit is as long on both axes, the axis with
+    /// room to spare widened, so a circle draws round).
     void rescale();
+    /// Equal scales on x and y (an XY plot of two positions); applied at the next rescale().
+    void setEqualScales(bool on) { m_equalScales = on; }
+    bool equalScales() const { return m_equalScales; }
     void setXRange(double lower, double upper);
     void setYRange(double lower, double upper);
 
@@ -51,7 +55,7 @@ public:
 private:
     struct Curve {
         QString name;
-        std::vector<QCPCurve*> segments;  // one per NaN-separated piece; the first is in the legend
+        std::vector<QCPCurve*> segments; // one per NaN-separated piece; the first is in the legend
     };
     QCustomPlot* m_plot = nullptr;
     std::vector<Curve> m_curves;
@@ -59,8 +63,9 @@ private:
     int m_lineCount = 0;
     bool m_logX = false;
     bool m_logY = false;
+    bool m_equalScales = false;
     QString m_lastError;
 };
 
-}  // namespace widgets
-}  // namespace axistune
+} // namespace widgets
+} // namespace axistune

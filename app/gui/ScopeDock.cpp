@@ -1002,6 +1002,8 @@ void ScopeDock::updateXyPlot()
         return;
     m_xyPlot->setAxes(m_xChannel->currentText(), qs(m_capture->channels[kx].unit), m_yChannel->currentText(),
                       qs(m_capture->channels[ky].unit));
+    // Two quantities of one unit (X against Y of a circle) get one scale, so the plot shows their true shape.
+    m_xyPlot->setEqualScales(m_capture->channels[kx].unit == m_capture->channels[ky].unit);
     m_xyPlot->addCurve(tr("capture"), m_capture->columns[kx], m_capture->columns[ky]);
     m_xyPlot->rescale();
 }
