@@ -26,64 +26,13 @@
 #include <thread>
 #include <unistd.h>
 
-#include "tests/linuxcnc/HalMachineLock.h"
+#include "tests/linuxcnc/HalTestbed.h"
 
 using namespace axistune;
 using namespace axistune::device::hal;
+using namespace axistune::testing;
 
 namespace {
-
-const std::string kScript = std::string(AXISTUNE_SOURCE_DIR) + "/scripts/hal-testbed";
-
-HalSessionOptions halOptions()
-{
-    HalSessionOptions o;
-    o.halcmd = {kScript, "halcmd"};
-    o.timeout = std::chrono::seconds(30);
-    return o;
-}
-
-Status runScript(const std::vector<std::string>& args)
-{
-    HalSessionOptions o;
-    o.halcmd = {kScript};
-    o.timeout = std::chrono::seconds(180);
-    auto r = runHalcmd(o, args);
-    if (!r)
-        return r.error();
-    return {};
-}
-
-/// `halcmd -s show sig` without the live values: names, types, writers and readers.
-std::string netsOf(const std::string& showSig)
-{
-    auto sigs = parseSignals(showSig);
-    EXPECT_TRUE(sigs) << (sigs ? "" : sigs.error().detail);
-    std::string out;
-    if (sigs)
-        for (const auto& s : *sigs) {
-            out += s.type + " " + s.name + " <== " + s.writer + " ==>";
-            for (const auto& r : s.readers)
-                out += " " + r;
-            out += "\n";
-        }
-    return out;
-}
-
-std::string halText(const std::vector<std::string>& args)
-{
-    auto r = runHalcmd(halOptions(), args);
-    EXPECT_TRUE(r) << (r ? "" : r.error().detail);
-    return r ? *r : std::string{};
-}
-
-double getp(const std::string& name)
-{
-    const std::string t = halText({"getp", name});
-    const auto v = model::parseNumber(t.substr(0, t.find_first_of(" \n")));
-    EXPECT_TRUE(v.has_value()) << name << ": '" << t << "'";
-    return v.value_or(std::nan(""));
-}
 
 /// The plant's exact discrete-time response from drive input to recorded feedback, from the component's own
 /// update equations (linuxcnc/axistune_plant.comp, friction and quantization off): per substep h
@@ -124,27 +73,6 @@ std::complex<double> exactResponse(const Plant& p, double periodS, double fHz)
     const Eigen::Vector4cd x = M.partialPivLu().solve(B.cast<std::complex<double>>());
     return z * (p.lead / (2.0 * M_PI)) * x(0);
 }
-
-class HalTestbed : public ::testing::Test {
-protected:
-    void startBed(long periodNs)
-    {
-        if (!m_lock)
-            m_lock = std::make_unique<axistune::testing::HalMachineLock>();
-        ASSERT_TRUE(m_lock->held()) << "cannot open /tmp/axistune-hal-machine.lock";
-        auto st = runScript({"start", "--period", std::to_string(periodNs)});
-        ASSERT_TRUE(st) << st.error().detail;
-        m_started = true;
-    }
-    void TearDown() override
-    {
-        if (m_started)
-            (void)runScript({"stop"});
-        m_lock.reset();
-    }
-    bool m_started = false;
-    std::unique_ptr<axistune::testing::HalMachineLock> m_lock; ///< held from the start to after the stop
-};
 
 std::vector<double> repeatPeriods(const dsp::MultisineDesign& d, std::size_t periods)
 {
@@ -718,71 +646,6 @@ TEST_F(HalTestbed, AMoveTripsOnTheJointsFerrorAndGoesBack)
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     EXPECT_NEAR(getp("plant.x.position"), start, 0.005);
     EXPECT_EQ(getp("pid.x.command"), 0.0);
-}
-
-// Issue 20 on LinuxCNC: the scope of a hal: axis is LinuxCNC's sampler on the pid's pins with the trigger on the
-// host. A step of the NC's command (halcmd sets on the command net, as the NC would write it) triggers a capture
-// with the trigger exactly at the pre-trigger row, the step itself on that row; no sample is missing; a test is
-// refused while the scope holds the sampler; after the scope stops the nets and functions are as before.
-TEST_F(HalTestbed, ScopeTriggersOnACommandStep)
-{
-    startBed(1000000);
-    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
-    const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
-    const std::string funBefore = halText({"-s", "show", "funct"});
-    auto d = device::connect({"hal:", 1});
-    ASSERT_TRUE(d) << d.error().detail;
-    auto caps = (*d)->capabilities("pid.x");
-    ASSERT_TRUE(caps);
-    EXPECT_TRUE(caps->scope);
-    device::ScopeRequest r;
-    r.axis = "pid.x";
-    r.channels = {"command", "feedback", "following_error"};
-    r.triggerChannel = "command";
-    r.triggerLevel = 0.5;
-    r.edge = device::ScopeEdge::Rising;
-    r.preTriggerPct = 25.0;
-    r.lengthSamples = 400;
-    ASSERT_TRUE((*d)->armScope(r)) << "arm";
-    auto waitFor = [&](device::ScopeState want) {
-        const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-        while (std::chrono::steady_clock::now() < end) {
-            auto st = (*d)->pollScope();
-            if (st && st->state == want)
-                return true;
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        }
-        return false;
-    };
-    ASSERT_TRUE(waitFor(device::ScopeState::Waiting));
-    device::TestRequest jog;
-    jog.axis = "pid.x";
-    jog.type = device::TestType::Jog;
-    jog.distance = 1.0;
-    jog.velocity = 10.0;
-    jog.acceleration = 100.0;
-    jog.returnToStart = true;
-    auto refused = (*d)->startTest(jog);
-    ASSERT_FALSE(refused);
-    EXPECT_NE(refused.error().detail.find("stop the scope first"), std::string::npos) << refused.error().detail;
-
-    (void)halText({"sets", "x-pos-cmd", "1.0"}); // fails the test (EXPECT in halText) when halcmd refuses
-    ASSERT_TRUE(waitFor(device::ScopeState::Done));
-    auto cap = (*d)->readScopeCapture();
-    ASSERT_TRUE(cap) << cap.error().detail;
-    ASSERT_EQ(cap->rows(), 400u);
-    ASSERT_EQ(cap->triggerRow(), 100u); // 25 % of 400
-    EXPECT_EQ(cap->missingSamples(), 0u);
-    EXPECT_EQ(cap->rateHz, 1000.0);
-    ASSERT_EQ(cap->channels.size(), 3u);
-    EXPECT_EQ(cap->channels[0].name, "command");
-    EXPECT_EQ(cap->columns[0][99], 0.0);
-    EXPECT_EQ(cap->columns[0][100], 1.0); // the step itself on the trigger row
-    EXPECT_GT(cap->columns[1][399], 0.5); // the axis follows
-    ASSERT_TRUE((*d)->stopScope());
-    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
-    EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
-    (void)halText({"sets", "x-pos-cmd", "0"});
 }
 
 // Issue 17 item 3, Persist: a gain changed live (setp through the hal: connection) is written by `axistune-cli

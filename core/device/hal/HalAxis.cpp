@@ -180,6 +180,11 @@ Result<std::unique_ptr<HalInjection>> HalInjection::insert(const HalSessionOptio
     inj->m_options = options;
     inj->m_axis = axis;
     inj->m_settings = settings;
+    // The sampler is loaded once for the tests and the scope (HalSampler.h): loaded now, or the scope's load.
+    auto sampler = HalSamplerModule::acquire(options, axis.periodNs);
+    if (!sampler)
+        return sampler.error();
+    inj->m_sampler = std::move(sampler).value();
 
     // Function order in the thread: streamer before the PID, the injection right after it (at the PID output) or
     // between the two (at the command), sampler last.
@@ -197,7 +202,6 @@ Result<std::unique_ptr<HalInjection>> HalInjection::insert(const HalSessionOptio
     std::vector<Step> steps = {
         {{"loadrt", "axistune_inject", std::string("names=") + kInject}, {"unloadrt", "axistune_inject"}},
         {{"loadrt", "streamer", "depth=" + depth, "cfg=fb"}, {"unloadrt", "streamer"}},
-        {{"loadrt", "sampler", "depth=" + depth, "cfg=fffff"}, {"unloadrt", "sampler"}},
         {{"setp", std::string(kInject) + ".limit", num(settings.limit)}, {}},
         {{"setp", std::string(kInject) + ".maxerror", num(maxError)}, {}},
         {{"setp", std::string(kInject) + ".timeout", num(settings.heartbeatTimeoutS)}, {}},
@@ -304,6 +308,8 @@ Status HalInjection::remove()
         if (!r && first)
             first = r.error();
     }
+    // Unloads the sampler unless the scope still holds it (two periods after sampler.0 left the thread).
+    m_sampler.reset();
     return first;
 }
 
@@ -495,7 +501,7 @@ Status removeLeftoverInjection(const HalSessionOptions& options)
     // streamer and sampler are AxisTune's when they feed AxisTune's nets.
     if (findPin(*ps, "streamer.0.pin.0") && findSignal(*sigs, kExcNet))
         cmds.push_back({"unloadrt", "streamer"});
-    if (findPin(*ps, "sampler.0.pin.0") && findSignal(*sigs, kValidNet))
+    if (findPin(*ps, "sampler.0.pin.0") && findSignal(*sigs, kValidNet) && !HalSamplerModule::heldByThisProcess())
         cmds.push_back({"unloadrt", "sampler"});
     for (const auto& c : cmds)
         if (auto r = runHalcmd(options, c); !r)
@@ -524,7 +530,7 @@ Result<HalRecord> runExcitation(HalClient& client, HalInjection& injection, std:
     auto writer = HalStream::attach(client, HalStream::Direction::ToHal, kStreamerKey, "fb");
     if (!writer)
         return writer.error();
-    auto reader = HalStream::attach(client, HalStream::Direction::FromHal, kSamplerKey, "fffff");
+    auto reader = HalStream::attach(client, HalStream::Direction::FromHal, kSamplerKey, kTestSamplerTypes);
     if (!reader)
         return reader.error();
     // The heartbeat must be seen before the injection is armed (the component latches a missing beat).

@@ -6,6 +6,7 @@
 
 #include "core/device/hal/HalCmd.h"
 #include "core/device/hal/HalLink.h"
+#include "core/device/hal/HalSampler.h"
 #include "core/device/hal/HalText.h"
 #include "core/model/Result.h"
 
@@ -50,7 +51,7 @@ enum class InjectionPoint { PidOutput, PidCommand };
 
 struct InjectionSettings {
     InjectionPoint point = InjectionPoint::PidOutput;
-    int fifoDepth = 16384;           ///< rows of the streamer and sampler FIFOs
+    int fifoDepth = 16384;           ///< rows of the streamer FIFO (the sampler's: kTestSamplerDepth)
     double limit = 0.0;              ///< largest |excitation| in the PID output's units; the component trips above it
     double maxError = 0.0;           ///< following-error trip during the test; 0: the pid's maxerror
     double heartbeatTimeoutS = 0.03; ///< the injection falls to zero this long after AxisTune stops (issue 17: within
@@ -81,6 +82,7 @@ private:
     HalAxis m_axis;
     InjectionSettings m_settings;
     std::vector<std::vector<std::string>> m_undo; ///< halcmd argument lists, run last first
+    std::shared_ptr<HalSamplerModule> m_sampler;  ///< sampler.0 records the test (shared with the scope)
 };
 
 /// Restores the nets of an injection left behind by an AxisTune that died (kill -9, power cut of the laptop):

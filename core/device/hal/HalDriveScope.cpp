@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The scope of the hal: backend (HalScope.h): LinuxCNC's sampler on the pid's pins, not while a test runs.
+// The scope of the hal: backend (HalScope.h): LinuxCNC's sampler on the pid's pins or any float pin, also while a
+// test runs.
 #include "core/device/hal/HalDrive.h"
 
 namespace axistune::device::hal {
@@ -9,32 +10,34 @@ Result<ScopeCapabilities> HalDrive::scopeCapabilities(const std::string& axis)
     auto a = discoverAxis(m_options, axis);
     if (!a)
         return a.error();
-    return halScopeCapabilities(*a);
+    auto text = runHalcmd(m_options, {"-s", "show", "pin"});
+    if (!text)
+        return text.error();
+    auto ps = parsePins(*text);
+    if (!ps)
+        return ps.error();
+    return halScopeCapabilities(*a, *ps);
 }
 
 Status HalDrive::armScope(const ScopeRequest& request)
 {
-    {
-        std::lock_guard lock(m_mutex);
-        if (m_status.state == TestState::Running)
-            return makeError(ErrorCode::Busy, "the scope is refused while a test runs: the test holds LinuxCNC's "
-                                              "sampler (hal: has one)");
-    }
     auto a = discoverAxis(m_options, request.axis);
     if (!a)
         return a.error();
-    const auto caps = halScopeCapabilities(*a);
-    auto setup = checkScopeRequest(request, caps);
+    const auto caps = scopeCapabilities(request.axis);
+    if (!caps)
+        return caps.error();
+    auto setup = checkScopeRequest(request, *caps);
     if (!setup)
         return setup.error();
     m_scope.reset(); // re-arming replaces the running scope
-    auto scope = HalScope::start(m_options, *a, caps, *setup);
+    auto scope = HalScope::start(m_options, *a, *caps, *setup);
     if (!scope)
         return scope.error();
     m_scope = std::move(scope).value();
     m_scopeChannels.clear();
     for (const auto i : setup->channels)
-        m_scopeChannels.push_back(caps.channels[i]);
+        m_scopeChannels.push_back(caps->channels[i]);
     m_scopeRateHz = setup->rateHz;
     return Status::success();
 }
@@ -71,7 +74,8 @@ Status HalDrive::stopScope()
 {
     if (!m_scope)
         return Status::success();
-    // The sampler is removed at once (a test may follow); a complete capture stays readable.
+    // The scope's pins and function are removed at once (the sampler too unless a test holds it); a complete
+    // capture stays readable.
     return m_scope->stop();
 }
 

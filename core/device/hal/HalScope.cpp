@@ -3,39 +3,53 @@
 
 #include "core/device/hal/HalText.h"
 
+#include <algorithm>
 #include <chrono>
 #include <unistd.h>
 
 namespace axistune::device::hal {
 namespace {
 
-constexpr int kSamplerDepth = 65536;                   ///< sampler FIFO rows (65 ms at 1 kHz … 16 ms at 4 kHz)
 constexpr std::uint64_t kHostRingValues = 8u << 20;    ///< channels × rows the host ring holds in roll mode
 constexpr std::uint64_t kHostCaptureValues = 4u << 20; ///< channels × rows of one triggered capture
+constexpr const char* kScopeInstance = "sampler.1";    ///< HalSampler.h
 
 struct ChannelPin {
     const char* name;
     const char* pin; ///< suffix of the pid's pin
-    bool output;     ///< an OUT pin: a net may be made for it; an IN pin must already be on one
     const char* unit;
     const char* description;
 };
-const ChannelPin kChannels[] = {
-    {"command", "command", false, "position unit", "position command the pid follows (<pid>.command)"},
-    {"feedback", "feedback", false, "position unit", "position feedback (<pid>.feedback)"},
-    {"output", "output", true, "output unit", "PID output, the drive input (<pid>.output)"},
-    {"following_error", "error", true, "position unit", "following error the pid computes (<pid>.error)"},
+const ChannelPin kPidChannels[] = {
+    {"command", "command", "position unit", "position command the pid follows (<pid>.command)"},
+    {"feedback", "feedback", "position unit", "position feedback (<pid>.feedback)"},
+    {"output", "output", "output unit", "PID output, the drive input (<pid>.output)"},
+    {"following_error", "error", "position unit", "following error the pid computes (<pid>.error)"},
 };
+
+/// A pin the scope can sample without changing anything: a float pin that is an output (a net of the scope's own
+/// carries it when it is on none) or an input on a net; not AxisTune's own components' pins.
+bool samplable(const HalPin& p)
+{
+    if (p.type != "float" || p.name.rfind("sampler.", 0) == 0 || p.name.rfind("streamer.", 0) == 0 ||
+        p.name.rfind("axistune", 0) == 0)
+        return false;
+    return p.dir == "OUT" || !p.signal.empty();
+}
 
 } // namespace
 
-ScopeCapabilities halScopeCapabilities(const HalAxis& axis)
+ScopeCapabilities halScopeCapabilities(const HalAxis& axis, const std::vector<HalPin>& pins)
 {
     ScopeCapabilities c;
-    for (const auto& ch : kChannels)
+    for (const auto& ch : kPidChannels)
         c.channels.push_back({ch.name, std::string("HAL ") + ch.unit, ch.description});
+    for (const auto& p : pins)
+        if (samplable(p))
+            c.channels.push_back(
+                {p.name, "HAL units", "HAL pin (" + p.dir + (p.signal.empty() ? "" : ", net " + p.signal) + ")"});
     c.fastestRateHz = axis.periodNs > 0 ? 1e9 / static_cast<double>(axis.periodNs) : 0.0;
-    c.maxChannels = static_cast<int>(c.channels.size());
+    c.maxChannels = kScopeSamplerPins;
     c.maxDivider = 1; // the sampler takes every period; no divider in LinuxCNC 2.9's sampler
     c.maxValues = kHostCaptureValues;
     c.ringValues = kHostRingValues;
@@ -51,50 +65,73 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
     auto ps = parsePins(*text);
     if (!ps)
         return ps.error();
-    if (findPin(*ps, "sampler.0.pin.0"))
-        return makeError(ErrorCode::Busy, "LinuxCNC's sampler is loaded already (a test of AxisTune, or another "
-                                          "program): the scope needs it; stop the test first");
+    if (setup.channels.size() > static_cast<std::size_t>(kScopeSamplerPins))
+        return makeError(ErrorCode::BadInput,
+                         "the hal: scope samples at most " + std::to_string(kScopeSamplerPins) + " channels");
     std::unique_ptr<HalScope> s(new HalScope);
     s->m_options = options;
     s->m_axis = axis;
-    std::string cfg;
+    s->m_columns = setup.channels.size();
     std::vector<std::vector<std::string>> links;
     for (std::size_t i = 0; i < setup.channels.size(); ++i) {
         const std::string& name = caps.channels[setup.channels[i]].name;
-        const ChannelPin* ch = nullptr;
-        for (const auto& c : kChannels)
+        std::string pin = name;
+        for (const auto& c : kPidChannels)
             if (name == c.name)
-                ch = &c;
-        if (!ch)
-            return makeError(ErrorCode::BadInput, "scope channel '" + name + "' is not a hal: channel");
-        const std::string pin = axis.pid + "." + ch->pin;
+                pin = axis.pid + "." + c.pin;
         const HalPin* p = findPin(*ps, pin);
         if (!p)
             return makeError(ErrorCode::NotFound, "HAL has no pin " + pin);
-        const std::string samplerPin = "sampler.0.pin." + std::to_string(i);
-        cfg += 'f';
+        if (p->type != "float")
+            return makeError(ErrorCode::BadInput,
+                             "scope channel " + pin + " is a " + p->type + " pin; the hal: scope samples float pins");
+        const std::string samplerPin = std::string(kScopeInstance) + ".pin." + std::to_string(i);
         if (!p->signal.empty()) {
             links.push_back({"linksp", p->signal, samplerPin});
-        } else if (ch->output) {
+        } else if (p->dir == "OUT") {
             // An output on no net: a net of AxisTune's own carries it to the sampler (removed afterwards).
             links.push_back({"net", "axistune-scope-" + std::to_string(i), pin, samplerPin});
         } else {
             return makeError(ErrorCode::BadInput, pin + " is not linked to a net: sampling it would change its value");
         }
     }
+    // The sampler, loaded once for the scope and the tests (HalSampler.h): a test may run meanwhile.
+    auto module = HalSamplerModule::acquire(options, axis.periodNs);
+    if (!module)
+        return module.error();
+    s->m_sampler = std::move(module).value();
+    auto client = HalClient::open("axistune-scope-" + std::to_string(::getpid()));
+    if (!client) {
+        (void)s->stop();
+        return client.error();
+    }
+    s->m_client = std::move(client).value();
+    auto stream = HalStream::attach(*s->m_client, HalStream::Direction::FromHal, kSamplerKey + 1,
+                                    std::string(kScopeSamplerPins, 'f'));
+    if (!stream) {
+        (void)s->stop();
+        return stream.error();
+    }
+    s->m_stream = std::move(stream).value();
+    // Rows an earlier scope left in the FIFO (the module stayed loaded for a test) are not this capture's.
+    {
+        std::vector<double> stale;
+        std::uint32_t n = 0;
+        while (s->m_stream->read(stale, n)) {
+        }
+    }
+    // Pins linked first, then the function on the thread: every row holds the linked pins.
     struct Step {
         std::vector<std::string> doArgs;
         std::vector<std::string> undoArgs;
     };
-    std::vector<Step> steps = {
-        {{"loadrt", "sampler", "depth=" + std::to_string(kSamplerDepth), "cfg=" + cfg}, {"unloadrt", "sampler"}},
-        {{"addf", "sampler.0", axis.thread}, {"delf", "sampler.0", axis.thread}},
-    };
+    std::vector<Step> steps;
     for (auto& l : links) {
         std::vector<std::string> undo =
             l.front() == "net" ? std::vector<std::string>{"delsig", l[1]} : std::vector<std::string>{"unlinkp", l[2]};
         steps.push_back({std::move(l), std::move(undo)});
     }
+    steps.push_back({{"addf", kScopeInstance, axis.thread}, {"delf", kScopeInstance, axis.thread}});
     for (auto& st : steps) {
         auto r = runHalcmd(options, st.doArgs);
         if (!r) {
@@ -104,18 +141,6 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
         }
         s->m_undo.push_back(std::move(st.undoArgs));
     }
-    auto client = HalClient::open("axistune-scope-" + std::to_string(::getpid()));
-    if (!client) {
-        (void)s->stop();
-        return client.error();
-    }
-    s->m_client = std::move(client).value();
-    auto stream = HalStream::attach(*s->m_client, HalStream::Direction::FromHal, kSamplerKey, cfg);
-    if (!stream) {
-        (void)s->stop();
-        return stream.error();
-    }
-    s->m_stream = std::move(stream).value();
     const std::uint64_t ringRows = kHostRingValues / std::max<std::size_t>(setup.channels.size(), 1);
     s->m_recorder.arm(setup, ringRows);
     s->m_thread = std::thread([p = s.get()] { p->read(); });
@@ -137,7 +162,7 @@ void HalScope::read()
             first = false;
             lastRaw = raw;
             std::lock_guard lock(m_mutex);
-            m_recorder.push(sample, row);
+            m_recorder.push(sample, std::span<const double>(row.data(), std::min(m_columns, row.size())));
             any = true;
         }
         const auto now = std::chrono::steady_clock::now();
@@ -161,21 +186,16 @@ Status HalScope::stop()
         m_thread.join();
     m_stream.reset();
     Status first;
-    bool waited = false;
     while (!m_undo.empty()) {
         auto args = std::move(m_undo.back());
         m_undo.pop_back();
-        if (args.front() == "unloadrt" && !waited) {
-            // The sampler's function may still run this period: unloading frees its FIFO (HalInjection::remove).
-            std::this_thread::sleep_for(
-                std::max(std::chrono::nanoseconds(2 * m_axis.periodNs), std::chrono::nanoseconds(20'000'000)));
-            waited = true;
-        }
         auto r = runHalcmd(m_options, args);
         if (!r && first)
             first = r.error();
     }
     m_client.reset();
+    // Unloads the sampler unless a test still holds it (two periods after sampler.1 left the thread).
+    m_sampler.reset();
     std::lock_guard lock(m_mutex);
     m_recorder.stop();
     return first;

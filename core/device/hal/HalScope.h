@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The scope of a `hal:` axis (docs/scope.md "LinuxCNC", docs/linuxcnc.md "Scope"): LinuxCNC's `sampler` loaded on
-// the axis's servo thread with one float column per channel, each linked to the net of a pid pin, read by a host
-// thread into a ScopeRecorder (trigger, pre-trigger and ring on the host, the same code as the embedded drive). The
-// sampler's own sample numbers are the drive's sample numbers, so a lost row is a visible gap.
-//
-// LinuxCNC loads a component once, and AxisTune's tests load `sampler` too: while the scope runs no test starts,
-// and while a test runs the scope is refused (both say so).
+// The scope of a `hal:` axis (docs/scope.md "LinuxCNC", docs/linuxcnc.md "Scope"): instance sampler.1 of LinuxCNC's
+// `sampler` (HalSampler.h) on the axis's servo thread, its float pins linked to the pid's pins or to any float pin
+// of the HAL session, read by a host thread into a ScopeRecorder (trigger, pre-trigger and ring on the host, the same
+// code as the embedded drive). The sampler's own sample numbers are the drive's sample numbers, so a lost row is a
+// visible gap. The tests record through sampler.0 of the same load, so the scope runs while a test runs.
 
 #include "core/device/Scope.h"
 #include "core/device/hal/HalAxis.h"
 #include "core/device/hal/HalCmd.h"
 #include "core/device/hal/HalLink.h"
+#include "core/device/hal/HalSampler.h"
+#include "core/device/hal/HalText.h"
 
 #include <atomic>
 #include <memory>
@@ -23,13 +23,14 @@
 namespace axistune::device::hal {
 
 /// The channels a `hal:` axis offers: the pid's command, feedback, output (the drive input net) and error, in the
-/// configuration's units.
-ScopeCapabilities halScopeCapabilities(const HalAxis& axis);
+/// configuration's units, then every float pin of the session (`halcmd show pin`) that can be sampled without
+/// changing it (an output, or an input on a net), named by the pin.
+ScopeCapabilities halScopeCapabilities(const HalAxis& axis, const std::vector<HalPin>& pins);
 
 class HalScope {
 public:
-    /// Loads and links the sampler for a checked setup and starts reading. Refused when a sampler is loaded already
-    /// (a test, or another program) or a channel's pin is an unlinked input (sampling it would change it).
+    /// Links sampler.1 for a checked setup and starts reading. Refused when another program loaded a sampler, a
+    /// channel's pin is not a float pin, or an unlinked input (sampling it would change it).
     static Result<std::unique_ptr<HalScope>> start(const HalSessionOptions& options, const HalAxis& axis,
                                                    const ScopeCapabilities& caps, const ScopeSetup& setup);
     /// Stops reading and removes the sampler (every net as before).
@@ -51,6 +52,8 @@ private:
     HalSessionOptions m_options;
     HalAxis m_axis;
     std::vector<std::vector<std::string>> m_undo; ///< halcmd argument lists, run last first
+    std::shared_ptr<HalSamplerModule> m_sampler;
+    std::size_t m_columns = 0; ///< of sampler.1's pins, the first this many are the scope's channels
     std::unique_ptr<HalClient> m_client;
     std::unique_ptr<HalStream> m_stream;
     mutable std::mutex m_mutex;
