@@ -683,7 +683,8 @@ TEST_P(DriveConformance, ScopeRollModeDeliversEverySampleOnce)
     for (std::size_t i = 0; i < c->channels.size() && static_cast<int>(r.channels.size()) < std::min(8, c->maxChannels);
          ++i)
         r.channels.push_back(c->channels[i].name);
-    ASSERT_TRUE(m_drive->armScope(r).ok());
+    const auto armed = m_drive->armScope(r);
+    ASSERT_TRUE(armed.ok()) << errorText(armed.error());
     ScopeCapture all;
     all.triggered = false;
     all.columns.assign(r.channels.size(), {});

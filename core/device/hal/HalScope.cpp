@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <unistd.h>
 
 namespace axistune::device::hal {
@@ -44,8 +45,14 @@ ScopeCapabilities halScopeCapabilities(const HalAxis& axis, const std::vector<Ha
     ScopeCapabilities c;
     for (const auto& ch : kPidChannels)
         c.channels.push_back({ch.name, std::string("HAL ") + ch.unit, ch.description});
+    auto pidChannel = [&](const std::string& pin) {
+        for (const auto& ch : kPidChannels)
+            if (pin == axis.pid + "." + ch.pin)
+                return true;
+        return false;
+    };
     for (const auto& p : pins)
-        if (samplable(p))
+        if (samplable(p) && !pidChannel(p.name)) // the pid's own under their channel names above
             c.channels.push_back(
                 {p.name, "HAL units", "HAL pin (" + p.dir + (p.signal.empty() ? "" : ", net " + p.signal) + ")"});
     c.fastestRateHz = axis.periodNs > 0 ? 1e9 / static_cast<double>(axis.periodNs) : 0.0;
@@ -73,6 +80,7 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
     s->m_axis = axis;
     s->m_columns = setup.channels.size();
     std::vector<std::vector<std::string>> links;
+    std::map<std::string, std::string> ownNets; ///< an output pin on no net → the net of the scope's own made for it
     for (std::size_t i = 0; i < setup.channels.size(); ++i) {
         const std::string& name = caps.channels[setup.channels[i]].name;
         std::string pin = name;
@@ -88,9 +96,13 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
         const std::string samplerPin = std::string(kScopeInstance) + ".pin." + std::to_string(i);
         if (!p->signal.empty()) {
             links.push_back({"linksp", p->signal, samplerPin});
+        } else if (auto own = ownNets.find(pin); own != ownNets.end()) {
+            links.push_back({"linksp", own->second, samplerPin}); // the same pin twice
         } else if (p->dir == "OUT") {
             // An output on no net: a net of AxisTune's own carries it to the sampler (removed afterwards).
-            links.push_back({"net", "axistune-scope-" + std::to_string(i), pin, samplerPin});
+            const std::string net = "axistune-scope-" + std::to_string(i);
+            ownNets[pin] = net;
+            links.push_back({"net", net, pin, samplerPin});
         } else {
             return makeError(ErrorCode::BadInput, pin + " is not linked to a net: sampling it would change its value");
         }
