@@ -43,8 +43,8 @@ public:
     void setCapture(std::shared_ptr<const model::Capture> capture, const QStringList& channels = {});
     /// Adds an overlay series (t [s] increasing, y in `unit`, a unit token such as "rad_s", "Nm", "m",
     /// or a label such as "rad/s"); it joins the strip of that unit. Returns nothing; see seriesNames().
-    void addSeries(const QString& name, const std::vector<double>& t, const std::vector<double>& y,
-                   const QString& unit, const QColor& color = QColor(), Qt::PenStyle style = Qt::SolidLine);
+    void addSeries(const QString& name, const std::vector<double>& t, const std::vector<double>& y, const QString& unit,
+                   const QColor& color = QColor(), Qt::PenStyle style = Qt::SolidLine);
     /// Removes the capture and every series.
     void clear();
 
@@ -80,6 +80,8 @@ public:
 
     /// Redraws now (benchmarks and tests; the widget redraws itself otherwise).
     void replotNow();
+    /// Whether the trace is drawn from its min/max envelope (a long trace seen whole) rather than its samples.
+    bool showsEnvelope(const QString& name) const;
 
 private:
     struct Trace;
@@ -96,6 +98,7 @@ private:
     void onPlotMouseMove(QMouseEvent* event);
     void onPlotMouseRelease(QMouseEvent* event);
     void syncTimeAxes(double lower, double upper);
+    void chooseEnvelopes();
     double traceTime(const Trace& t, std::size_t i) const;
 
     QCustomPlot* m_plot = nullptr;
@@ -106,7 +109,7 @@ private:
     std::vector<Strip> m_strips;
     double m_cursorT[2];
     bool m_cursorsShown = false;
-    int m_dragCursor = -1;  ///< the cursor being dragged with the left button, −1: none
+    int m_dragCursor = -1; ///< the cursor being dragged with the left button, −1: none
     bool m_zoomY = false;
     bool m_syncing = false;
     mutable QString m_lastError;
@@ -116,5 +119,5 @@ private:
 /// empty when the name carries no known unit.
 QString channelUnitLabel(const QString& channelName);
 
-}  // namespace widgets
-}  // namespace axistune
+} // namespace widgets
+} // namespace axistune

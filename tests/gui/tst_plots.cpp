@@ -228,6 +228,49 @@ private slots:
         QCOMPARE(i - first, last - first + 1);
     }
 
+    void longTraceSeenWholeIsDrawnFromItsEnvelope()
+    {
+        // 10⁶ samples with three one-sample spikes: seen whole, the trace is drawn from its min/max envelope (fast),
+        // which holds every spike exactly (a glitch of one sample must not vanish) and the same extremes as the
+        // samples; zoomed in to 1000 samples, the samples themselves are drawn.
+        const double fs = 10000.0;
+        auto capture = millionSampleCapture(fs);
+        auto& vel = capture->channels[0].data;
+        const std::vector<std::pair<std::size_t, double>> spikes = {{1234, 5.0}, {500001, -4.0}, {999998, 3.0}};
+        for (const auto& [i, v] : spikes)
+            vel[i] = v;
+        widgets::TimeTracePlot plot;
+        plot.resize(1600, 900);
+        plot.show();
+        plot.setCapture(capture, {"motor_vel_rad_s"});
+        plot.replotNow();
+        plot.replotNow(); // the first replot lays the axis rect out
+        QVERIFY(plot.showsEnvelope("motor_vel_rad_s"));
+        auto* qcp = plot.findChild<QCustomPlot*>();
+        QVERIFY(qcp);
+        QCOMPARE(qcp->graphCount(), 1);
+        const auto drawn = qcp->graph(0)->data();
+        QVERIFY(drawn->size() < 100000); // far fewer points than samples
+        for (const auto& [i, v] : spikes) {
+            const double key = double(i) / fs;
+            const auto it = drawn->findBegin(key, false);
+            QVERIFY(it != drawn->constEnd());
+            QCOMPARE(it->key, key);
+            QCOMPARE(it->value, v);
+        }
+        double lo = 1e9, hi = -1e9;
+        for (auto it = drawn->constBegin(); it != drawn->constEnd(); ++it) {
+            lo = std::min(lo, it->value);
+            hi = std::max(hi, it->value);
+        }
+        QCOMPARE(lo, *std::min_element(vel.begin(), vel.end()));
+        QCOMPARE(hi, *std::max_element(vel.begin(), vel.end()));
+        plot.setVisibleRange(10.0, 10.1);
+        plot.replotNow();
+        QVERIFY(!plot.showsEnvelope("motor_vel_rad_s"));
+        QCOMPARE(qcp->graph(0)->data()->size(), 1000000);
+    }
+
     void cursorsReadTheSampledSignal()
     {
         const double fs = 10000.0;
