@@ -7,8 +7,10 @@
 #include "core/device/hal/HalText.h"
 #include "core/model/Number.h"
 
+#include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
+#include <complex>
 #include <gtest/gtest.h>
 #include <memory>
 #include <string>
@@ -94,5 +96,45 @@ protected:
     bool m_started = false;
     std::unique_ptr<axistune::testing::HalMachineLock> m_lock; ///< held from the start to after the stop
 };
+
+/// The plant's exact discrete-time response from drive input to recorded feedback, from the component's own
+/// update equations (linuxcnc/axistune_plant.comp, friction and quantization off): per substep h
+///   ω_m ← ω_m + h (u − k(θ_m−θ_l) − c(ω_m−ω_l) − b_m ω_m)/J_m,  ω_l ← ω_l + h (k(θ_m−θ_l) + c(ω_m−ω_l) − b_l ω_l)/J_l,
+///   θ_m ← θ_m + h ω_m,  θ_l ← θ_l + h ω_l   (the new velocities, from the old state)
+/// so one servo period is x ← A x + B u with A = A₁ⁿ, B = Σ A₁ⁱ B₁. The sampler runs after the plant in the same
+/// period, so it records y[k] = C x[k+1] with u[k]: H(z) = z C (zI − A)⁻¹ B.
+struct Plant {
+    double jm, jl, k, c, bm, bl, lead;
+    int substeps;
+};
+
+inline Plant readPlant()
+{
+    return {getp("plant.x.jm"), getp("plant.x.jl"), getp("plant.x.k"),    getp("plant.x.c"),
+            getp("plant.x.bm"), getp("plant.x.bl"), getp("plant.x.lead"), static_cast<int>(getp("plant.x.substeps"))};
+}
+
+inline std::complex<double> exactResponse(const Plant& p, double periodS, double fHz)
+{
+    const double h = periodS / p.substeps;
+    Eigen::Matrix4d V = Eigen::Matrix4d::Identity(); // velocity update, state (θm, ωm, θl, ωl)
+    V.row(1) += h * Eigen::RowVector4d(-p.k / p.jm, -(p.c + p.bm) / p.jm, p.k / p.jm, p.c / p.jm);
+    V.row(3) += h * Eigen::RowVector4d(p.k / p.jl, p.c / p.jl, -p.k / p.jl, -(p.c + p.bl) / p.jl);
+    Eigen::Matrix4d P = Eigen::Matrix4d::Identity(); // position update with the new velocities
+    P(0, 1) = h;
+    P(2, 3) = h;
+    const Eigen::Matrix4d A1 = P * V;
+    const Eigen::Vector4d B1 = P * Eigen::Vector4d(0.0, h / p.jm, 0.0, 0.0);
+    Eigen::Matrix4d A = Eigen::Matrix4d::Identity();
+    Eigen::Vector4d B = Eigen::Vector4d::Zero();
+    for (int i = 0; i < p.substeps; ++i) {
+        B += A * B1;
+        A = A1 * A;
+    }
+    const std::complex<double> z = std::polar(1.0, 2.0 * M_PI * fHz * periodS);
+    const Eigen::Matrix4cd M = z * Eigen::Matrix4cd::Identity() - A.cast<std::complex<double>>();
+    const Eigen::Vector4cd x = M.partialPivLu().solve(B.cast<std::complex<double>>());
+    return z * (p.lead / (2.0 * M_PI)) * x(0);
+}
 
 } // namespace axistune::testing

@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The command line and moves on AxisTune's LinuxCNC test machine: a move tripping FERROR, persist, pid-tune and
+// the NC export (scripts/hal-testbed: LinuxCNC's pid around linuxcnc/axistune_plant.comp, a real HAL session
+// started by each test; ctest runs these one at a time).
+#include "core/device/Drive.h"
+#include "core/device/hal/HalAxis.h"
+#include "core/device/hal/LinuxCncConfig.h"
+#include "core/dsp/Multisine.h"
+#include "core/io/FrfCsv.h"
+#include "core/model/Number.h"
+#include "core/tuning/PositionPid.h"
+
+#include <Eigen/Dense>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+#include "tests/linuxcnc/HalTestbed.h"
+
+using namespace axistune;
+using namespace axistune::device::hal;
+using namespace axistune::testing;
+
+// Issue 17 items 2 and 5, a move through the pid's command: with the running gains (P 2, I 10, D 0.047) the move
+// 5 mm out and back at 50 mm/s and 1000 mm/s² lags by about 0.19 mm (the move test above). Through linuxcnc: with an
+// INI whose [JOINT_0]FERROR is 0.02 mm (the pid's own maxerror stays 5 mm), the injection trips on the joint's
+// FERROR: the test fails naming the following error, the offset returns to zero at the move's speed instead of
+// jumping, the axis is back where it started, and the nets and functions are as before.
+TEST_F(HalTestbed, AMoveTripsOnTheJointsFerrorAndGoesBack)
+{
+    startBed(1000000);
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "ferror-testbed";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path src = std::filesystem::path(AXISTUNE_SOURCE_DIR) / "linuxcnc/testbed";
+    std::filesystem::copy_file(src / "axistune-testbed.hal", dir / "axistune-testbed.hal");
+    std::ifstream in(src / "axistune-testbed.ini");
+    std::ofstream out(dir / "axistune-testbed.ini");
+    for (std::string line; std::getline(in, line);)
+        out << (line.rfind("FERROR", 0) == 0 ? std::string("FERROR = 0.02") : line) << "\n";
+    out.close();
+    const std::string ini = (dir / "axistune-testbed.ini").string();
+    EXPECT_DOUBLE_EQ(getp("pid.x.maxerror"), 5.0);
+    const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
+    const std::string funBefore = halText({"-s", "show", "funct"});
+    const double start = getp("plant.x.position");
+
+    const std::string log = (dir / "move.log").string();
+    const std::string cmd = std::string(AXISTUNE_CLI) + " capture --connect linuxcnc:" + ini +
+                            " --axis X --test jog --distance 5 --velocity 50 --acceleration 1000 --back --duration "
+                            "0.05 --out " +
+                            (dir / "move.csv").string() + " 2>" + log;
+    const int rc = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(rc));
+    EXPECT_NE(WEXITSTATUS(rc), 0);
+    std::ifstream l(log);
+    const std::string err((std::istreambuf_iterator<char>(l)), {});
+    EXPECT_NE(err.find("following error exceeded"), std::string::npos) << err;
+    // The command is the NC's again and the axis stands where it started (the offset came back at 50 mm/s; after it
+    // the loop settles within a few µm).
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+    EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    EXPECT_NEAR(getp("plant.x.position"), start, 0.005);
+    EXPECT_EQ(getp("pid.x.command"), 0.0);
+}
+
+// Issue 17 item 3, Persist: a gain changed live (setp through the hal: connection) is written by `axistune-cli
+// persist --from-hal` into exactly the INI key that feeds it (one line differs, the backup is the original), and a
+// HAL session started from the persisted INI reads the new gain; a dry run writes nothing; an unknown axis is exit 2.
+TEST_F(HalTestbed, PersistedGainsAreReadByTheNextStart)
+{
+    startBed(1000000);
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "persist-testbed";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path src = std::filesystem::path(AXISTUNE_SOURCE_DIR) / "linuxcnc/testbed";
+    for (const char* f : {"axistune-testbed.ini", "axistune-testbed.hal"})
+        std::filesystem::copy_file(src / f, dir / f);
+    const std::string ini = (dir / "axistune-testbed.ini").string();
+    auto slurp = [](const std::string& p) {
+        std::ifstream f(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(f), {});
+    };
+    const std::string original = slurp(ini);
+    const std::string cli = std::string(AXISTUNE_CLI);
+    ASSERT_EQ(
+        std::system((cli + " params --connect linuxcnc:" + ini + " --axis X --set Pgain=3.25 >/dev/null").c_str()), 0);
+    EXPECT_DOUBLE_EQ(getp("pid.x.Pgain"), 3.25);
+
+    ASSERT_EQ(std::system((cli + " persist --ini " + ini + " --axis X --from-hal --dry-run >/dev/null").c_str()), 0);
+    EXPECT_EQ(slurp(ini), original);
+    ASSERT_EQ(std::system((cli + " persist --ini " + ini + " --axis X --from-hal >/dev/null").c_str()), 0);
+    const std::string persisted = slurp(ini);
+    EXPECT_EQ(slurp(ini + ".axistune-backup"), original);
+    // Line by line: only [JOINT_0]P differs, and it reads 3.25.
+    std::istringstream a(original), b(persisted);
+    std::string la, lb;
+    std::vector<std::pair<std::string, std::string>> changed;
+    while (std::getline(a, la) && std::getline(b, lb))
+        if (la != lb)
+            changed.emplace_back(la, lb);
+    EXPECT_FALSE(std::getline(b, lb)) << "the persisted INI has more lines";
+    ASSERT_EQ(changed.size(), 1u);
+    EXPECT_EQ(changed[0].first, "P = 2.0");
+    EXPECT_EQ(changed[0].second, "P = 3.25");
+    EXPECT_EQ(WEXITSTATUS(std::system((cli + " persist --ini " + ini + " --axis Y --set Pgain=1 2>/dev/null").c_str())),
+              2);
+
+    // The next start from the persisted INI: the pid gets 3.25 from [JOINT_0]P.
+    ASSERT_TRUE(runScript({"stop"}));
+    ASSERT_TRUE(runScript({"start", "--ini", ini}));
+    EXPECT_DOUBLE_EQ(getp("pid.x.Pgain"), 3.25);
+}
+
+// Issue 17 item 4 from the command line: `axistune-cli pid-tune --connect hal: --apply` measures the open loop,
+// proposes gains with a rule for each and a biquad notch at the plant's resonance, applies them and verifies: the
+// measured margins meet the issue's (PM ≥ 45°, GM ≥ 6 dB) and lie within 3° / 1 dB of the prediction; the gains in
+// HAL are the proposed ones; the notch sits within 2 % of the exact plant's resonance and raises the crossover by at
+// least the 10 % its rule asks against the proposal without it; `--remove-notch` leaves the nets and functions as
+// they were.
+TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
+{
+    startBed(1000000);
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
+    const std::string funBefore = halText({"-s", "show", "funct"});
+    // The exact plant's resonance: the peak of |H|·ω² on a 0.01 Hz grid (as in the resonance test below).
+    const Plant pl = readPlant();
+    double fr = 0.0, hi = -1.0;
+    for (double f = 30.0; f <= 200.0; f += 0.01) {
+        const double v = std::abs(exactResponse(pl, 1e-3, f)) * std::pow(2.0 * M_PI * f, 2);
+        if (v > hi)
+            hi = v, fr = f;
+    }
+    const std::string cli = std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x --amplitude 0.2 --pm 50 "
+                                                        "--gm 8 ";
+    auto readJson = [](const std::string& path) {
+        std::ifstream f(path);
+        return nlohmann::json::parse(f);
+    };
+    const std::string plain = ::testing::TempDir() + "/pid-tune-plain.json";
+    ASSERT_EQ(std::system((cli + "--notch none --out " + plain + " 2>/dev/null").c_str()), 0);
+    const double plainCrossover = readJson(plain).at("proposed").at("predicted").at("crossover_Hz").get<double>();
+
+    const std::string out = ::testing::TempDir() + "/pid-tune.json";
+    // With a move out and back (5 mm at 50 mm/s, 1000 mm/s²) run after the verification: issue 17 asks the measured
+    // following error of a given move within 10 % of the prediction.
+    const std::string log = ::testing::TempDir() + "/pid-tune.log";
+    const int rc = std::system((cli + "--apply --move 5:50:1000 --out " + out + " 2>" + log).c_str());
+    if (rc != 0) { // say why (a refusal names its reason in the log and the JSON)
+        std::ifstream l(log);
+        ADD_FAILURE() << "pid-tune --apply exit " << WEXITSTATUS(rc) << ": "
+                      << std::string(std::istreambuf_iterator<char>(l), {});
+        return;
+    }
+    const auto j = readJson(out);
+    {
+        const auto& mv = j.at("move").at("proposed");
+        ASSERT_TRUE(mv.contains("measured_peak_following_error")) << j.at("move").dump(2);
+        const double predictedFe = mv.at("predicted_peak_following_error").get<double>();
+        const double measuredFe = mv.at("measured_peak_following_error").get<double>();
+        EXPECT_GT(measuredFe, 0.0);
+        EXPECT_NEAR(measuredFe / predictedFe, 1.0, 0.10) << "predicted " << predictedFe << ", measured " << measuredFe;
+        EXPECT_TRUE(j.at("move").at("error_previous_target").get<bool>()); // LinuxCNC 2.9's default
+        RecordProperty("move_following_error_predicted", model::formatShortest(predictedFe));
+        RecordProperty("move_following_error_measured", model::formatShortest(measuredFe));
+    }
+    EXPECT_TRUE(j.at("applied").get<bool>());
+    EXPECT_EQ(j.at("drive_input"), "torque");
+    const auto& predicted = j.at("proposed").at("predicted");
+    const auto& measured = j.at("verified").at("measured");
+    EXPECT_GE(measured.at("phase_margin_deg").get<double>(), 45.0);
+    EXPECT_GE(measured.at("gain_margin_dB").get<double>(), 6.0);
+    EXPECT_NEAR(measured.at("phase_margin_deg").get<double>(), predicted.at("phase_margin_deg").get<double>(), 3.0);
+    EXPECT_NEAR(measured.at("gain_margin_dB").get<double>(), predicted.at("gain_margin_dB").get<double>(), 1.0);
+    EXPECT_EQ(j.at("proposed").at("rules").size(), 6u); // crossover, P, I, D, FF2, FF1
+    ASSERT_TRUE(j.at("proposed").contains("notch")) << j.dump(2);
+    EXPECT_NEAR(j.at("proposed").at("notch").at("f0_Hz").get<double>() / fr, 1.0, 0.02);
+    EXPECT_GE(predicted.at("crossover_Hz").get<double>(), 1.1 * plainCrossover);
+    EXPECT_GE(measured.at("crossover_Hz").get<double>(), 1.1 * plainCrossover);
+    RecordProperty("crossover_without_notch_Hz", model::formatShortest(plainCrossover));
+    RecordProperty("crossover_with_notch_Hz", model::formatShortest(measured.at("crossover_Hz").get<double>()));
+    for (const char* k : {"Pgain", "Igain", "Dgain", "FF1", "FF2"}) {
+        const double proposed = j.at("proposed").at("gains").at(k).get<double>();
+        // halcmd shows 7 significant digits; a gain of 0 reads back 0.
+        EXPECT_NEAR(getp(std::string("pid.x.") + k), proposed, 1e-6 * std::abs(proposed)) << k;
+    }
+    EXPECT_NEAR(getp("axistune-notch.f0"), j.at("proposed").at("notch").at("f0_Hz").get<double>(), 1e-4);
+
+    ASSERT_EQ(std::system((std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x --remove-notch "
+                                                       ">/dev/null")
+                              .c_str()),
+              0);
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+    EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
+}
+
+// Issue 17 item 7: the NC export for LinuxCNC, checked by loading it. From the sample profile of the test machine,
+// `export --format linuxcnc-hal` gives setp lines that halcmd loads into the running session, and `export --format
+// linuxcnc` gives [JOINT_0] keys that a session started from an INI beginning with them reads (LinuxCNC takes the
+// first value of a key); in both, every pid gain in HAL equals the profile's within halcmd's seven digits.
+TEST_F(HalTestbed, NcExportForLinuxCncLoadsIntoHal)
+{
+    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "lcnc-export";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::filesystem::permissions(dir, std::filesystem::perms::all); // the HAL user reads the files
+    const std::string profilePath = std::string(AXISTUNE_SOURCE_DIR) + "/resources/samples/linuxcnc-profile.json";
+    const std::string db = (dir / "s.db").string();
+    const std::string cli = std::string(AXISTUNE_CLI);
+    ASSERT_EQ(std::system((cli + " profile import --db " + db + " --in " + profilePath + " >/dev/null").c_str()), 0);
+    for (const char* f : {"linuxcnc", "linuxcnc-hal"})
+        ASSERT_EQ(std::system((cli + " export --db " + db + " --machine lcnc-testbed --format " + f + " --out " +
+                               (dir / f).string() + " >/dev/null 2>&1")
+                                  .c_str()),
+                  0)
+            << f;
+    std::ifstream pf(profilePath);
+    const auto profile = nlohmann::json::parse(pf);
+    const auto& params = profile.at("axes").at(0).at("parameters");
+    auto expectGains = [&](const char* what) {
+        for (const auto& [k, v] : params.items())
+            EXPECT_NEAR(getp("pid.x." + k), v.get<double>(), 5e-7 * std::abs(v.get<double>())) << what << " " << k;
+    };
+
+    startBed(1000000);
+    halText({"-f", (dir / "linuxcnc-hal").string()});
+    expectGains("setp lines");
+
+    std::ifstream fi(dir / "linuxcnc"), ti(std::string(AXISTUNE_SOURCE_DIR) + "/linuxcnc/testbed/axistune-testbed.ini");
+    const std::string fragment((std::istreambuf_iterator<char>(fi)), {});
+    const std::string testbed((std::istreambuf_iterator<char>(ti)), {});
+    // Merged as a user merges it: each exported [JOINT_0] key replaces that key's line in the machine's [JOINT_0]
+    // section (LinuxCNC reads only the first section of a name), keys the section lacks are added at its start.
+    auto exported = device::hal::parseIni("export", fragment);
+    ASSERT_TRUE(exported) << exported.error().detail;
+    std::istringstream lines(testbed);
+    std::string merged, line, section;
+    std::set<std::string> written;
+    while (std::getline(lines, line)) {
+        if (!line.empty() && line.front() == '[') {
+            section = line.substr(1, line.find(']') - 1);
+            merged += line + "\n";
+            if (section == "JOINT_0")
+                for (const auto& e : exported->entries)
+                    if (e.section == "JOINT_0" && !std::regex_search(testbed, std::regex("\\n" + e.key + " = ")))
+                        merged += e.key + " = " + e.value + "\n", written.insert(e.key);
+            continue;
+        }
+        const auto eq = line.find(" = ");
+        const std::string key = eq == std::string::npos ? std::string() : line.substr(0, eq);
+        const auto* e = section == "JOINT_0" && !key.empty() ? exported->find("JOINT_0", key) : nullptr;
+        merged += (e ? key + " = " + e->value : line) + "\n";
+        if (e)
+            written.insert(key);
+    }
+    EXPECT_EQ(written.size(), exported->entries.size());
+    const std::string ini = (dir / "exported.ini").string();
+    {
+        std::ofstream o(ini);
+        o << merged;
+    }
+    ASSERT_TRUE(runScript({"stop"}));
+    ASSERT_TRUE(runScript({"start", "--ini", ini}));
+    expectGains("INI keys");
+}
