@@ -40,12 +40,18 @@ void SimDriveServer::stepScope()
     const double rate = m_opt.pace > 0.0 ? m_opt.pace : 1.0;
     const double h = s.currentPeriod();
     const double due = std::chrono::duration<double>(now - m_scopeWall).count() * rate;
-    auto ticks = static_cast<std::int64_t>(std::floor(due / h));
+    // Whole velocity periods, ending on one (the scope samples there): a test started next begins on a velocity
+    // period, as its record and the scope's rows then share their instants.
+    const std::int64_t perVelocity = std::max<std::int64_t>(1, std::llround(s.velocityPeriod() / h));
+    const std::int64_t at = s.currentTicks();
+    auto target = [&](double seconds) {
+        return (at + static_cast<std::int64_t>(std::floor(seconds / h))) / perVelocity * perVelocity;
+    };
+    auto ticks = std::max<std::int64_t>(0, target(due) - at);
     // At most 0.1 s of machine time per turn: after a stall the machine runs on from where it was (no samples
     // are dropped; the simulated machine falls behind the wall clock instead).
-    const auto maxTicks = static_cast<std::int64_t>(std::llround(0.1 / h));
-    if (ticks > maxTicks) {
-        ticks = maxTicks;
+    if (due > 0.1) {
+        ticks = std::max<std::int64_t>(0, target(0.1) - at);
         m_scopeWall = now;
     } else {
         m_scopeWall += std::chrono::duration_cast<Clock::duration>(

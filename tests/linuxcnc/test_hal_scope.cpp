@@ -102,12 +102,15 @@ TEST_F(HalTestbed, ScopeTriggersOnACommandStep)
     (void)halText({"sets", "x-pos-cmd", "0"});
 }
 
-// Any float pin: the plant's velocity (an output on no net: a net of the scope's own carries it) and its position
-// (on the feedback net) beside the pid's feedback. Checks against HAL itself: plant.x.position is the net the pid's
-// feedback reads, so the two columns are equal sample for sample; the velocity integrated over the step response
-// (trapezoids at the servo period) is the position change within 2 % (the plant integrates in substeps). A bit pin
-// is not offered, and a request for one is refused naming it.
-TEST_F(HalTestbed, ScopeSamplesAnyFloatPin)
+// Any pin. Floats: the plant's velocity (an output on no net: a net of the scope's own carries it) and its position
+// (on the feedback net) beside the pid's feedback; plant.x.position is the net the pid's feedback reads, so the two
+// columns are equal sample for sample; the velocity integrated over the step response (trapezoids at the servo
+// period) is the position change within 2 % (the plant integrates in substeps). Bit and s32: the pid's `saturated`
+// and `saturated-count` during a step that drives its output into maxoutput (2, the test machine's INI), against
+// the pid's documented meaning: saturated is TRUE exactly where |output| = maxoutput, and the count rises by one per
+// saturated period and is 0 otherwise. An input pin on no net (pid.x.enable, set by setp) is not offered and is
+// refused by name.
+TEST_F(HalTestbed, ScopeSamplesAnyPin)
 {
     startBed(1000000);
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
@@ -116,14 +119,16 @@ TEST_F(HalTestbed, ScopeSamplesAnyFloatPin)
     ASSERT_TRUE(d) << d.error().detail;
     auto sc = (*d)->scopeCapabilities("pid.x");
     ASSERT_TRUE(sc) << sc.error().detail;
-    bool velocity = false, enable = false;
+    bool velocity = false, enable = false, saturated = false;
     for (const auto& c : sc->channels) {
         velocity = velocity || c.name == "plant.x.velocity";
         enable = enable || c.name == "pid.x.enable";
+        saturated = saturated || (c.name == "pid.x.saturated" && c.unit == "HAL bit");
     }
     EXPECT_TRUE(velocity);
-    EXPECT_FALSE(enable); // a bit pin
-    EXPECT_EQ(sc->maxChannels, 16);
+    EXPECT_TRUE(saturated);
+    EXPECT_FALSE(enable); // an input on no net: sampling it would change it
+    EXPECT_EQ(sc->maxChannels, 20);
 
     device::ScopeRequest r;
     r.axis = "pid.x";
@@ -152,6 +157,35 @@ TEST_F(HalTestbed, ScopeSamplesAnyFloatPin)
     EXPECT_NEAR(integral, moved, 0.02 * moved);
     ASSERT_TRUE((*d)->stopScope());
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore); // the scope's own net is gone
+
+    device::ScopeRequest sat;
+    sat.axis = "pid.x";
+    sat.channels = {"output", "pid.x.saturated", "pid.x.saturated-count"};
+    sat.triggerChannel = "pid.x.saturated";
+    sat.triggerLevel = 0.5;
+    sat.edge = device::ScopeEdge::Rising;
+    sat.preTriggerPct = 10.0;
+    sat.lengthSamples = 1000;
+    ASSERT_TRUE((*d)->armScope(sat)) << "arm on a bit";
+    ASSERT_TRUE(waitForScope(**d, device::ScopeState::Waiting));
+    (void)halText({"sets", "x-pos-cmd", "20.0"}); // far enough to saturate the output
+    ASSERT_TRUE(waitForScope(**d, device::ScopeState::Done));
+    auto sc2 = (*d)->readScopeCapture();
+    ASSERT_TRUE(sc2) << sc2.error().detail;
+    ASSERT_EQ(sc2->rows(), 1000u);
+    EXPECT_EQ(sc2->columns[1][sc2->triggerRow()], 1.0);
+    const double maxOutput = getp("pid.x.maxoutput");
+    std::size_t saturatedRows = 0;
+    for (std::size_t i = 0; i < sc2->rows(); ++i) {
+        const bool s = sc2->columns[1][i] != 0.0;
+        ASSERT_EQ(s, std::abs(sc2->columns[0][i]) == maxOutput) << "row " << i;
+        if (i > 0)
+            ASSERT_EQ(sc2->columns[2][i], s ? sc2->columns[2][i - 1] + 1.0 : 0.0) << "row " << i;
+        saturatedRows += s;
+    }
+    EXPECT_GT(saturatedRows, 10u);
+    ASSERT_TRUE((*d)->stopScope());
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
 
     device::ScopeRequest bit = r;
     bit.channels = {"pid.x.enable"};

@@ -80,8 +80,9 @@ Result<double> HalClient::readPin(const std::string& pin) const
 Result<std::unique_ptr<HalStream>> HalStream::attach(const HalClient& client, Direction direction, int key,
                                                      const std::string& types)
 {
-    if (types.empty() || types.size() > HAL_STREAM_MAX_PINS || types.find_first_not_of("fb") != std::string::npos)
-        return makeError(ErrorCode::BadInput, "stream columns '" + types + "': use 1 to 20 of f (float) and b (bit)");
+    if (types.empty() || types.size() > HAL_STREAM_MAX_PINS || types.find_first_not_of("fbsu") != std::string::npos)
+        return makeError(ErrorCode::BadInput,
+                         "stream columns '" + types + "': use 1 to 20 of f (float), b (bit), s (s32) and u (u32)");
     std::unique_ptr<HalStream> s(new HalStream);
     s->m_types = types;
     auto* st = new hal_stream_t{};
@@ -120,10 +121,19 @@ bool HalStream::write(std::span<const double> row)
         return false;
     hal_stream_data data[HAL_STREAM_MAX_PINS];
     for (std::size_t i = 0; i < row.size(); ++i) {
-        if (m_types[i] == 'f')
+        switch (m_types[i]) {
+        case 'f':
             data[i].f = row[i];
-        else
+            break;
+        case 'b':
             data[i].b = row[i] != 0.0;
+            break;
+        case 's':
+            data[i].s = static_cast<std::int32_t>(row[i]);
+            break;
+        default:
+            data[i].u = static_cast<std::uint32_t>(row[i]);
+        }
     }
     return hal_stream_write(static_cast<hal_stream_t*>(m_stream), data) == 0;
 }
@@ -135,8 +145,21 @@ bool HalStream::read(std::vector<double>& row, std::uint32_t& sampleNumber)
     if (hal_stream_read(static_cast<hal_stream_t*>(m_stream), data, &n) != 0)
         return false;
     row.resize(m_types.size());
-    for (std::size_t i = 0; i < m_types.size(); ++i)
-        row[i] = m_types[i] == 'f' ? static_cast<double>(data[i].f) : (data[i].b ? 1.0 : 0.0);
+    for (std::size_t i = 0; i < m_types.size(); ++i) {
+        switch (m_types[i]) {
+        case 'f':
+            row[i] = static_cast<double>(data[i].f);
+            break;
+        case 'b':
+            row[i] = data[i].b ? 1.0 : 0.0;
+            break;
+        case 's':
+            row[i] = static_cast<double>(data[i].s);
+            break;
+        default:
+            row[i] = static_cast<double>(data[i].u);
+        }
+    }
     sampleNumber = n;
     return true;
 }

@@ -49,7 +49,7 @@ private:
     std::thread m_thread;
 };
 
-/// One row of a stream: floats and bits in the order of the stream's type string ("f" float, "b" bit).
+/// One row of a stream: values in the order of the stream's type string ("f" float, "b" bit, "s" s32, "u" u32).
 class HalStream {
 public:
     enum class Direction { ToHal, FromHal };

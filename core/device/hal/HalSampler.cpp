@@ -35,7 +35,7 @@ Result<std::shared_ptr<HalSamplerModule>> HalSamplerModule::acquire(const HalSes
     if (!pins->empty())
         return makeError(ErrorCode::Busy, "LinuxCNC's sampler is loaded by another program (" + pins->front().name +
                                               " exists): AxisTune's tests and scope need it; unload it first");
-    std::string cfg = std::string(kTestSamplerTypes) + "," + std::string(kScopeSamplerPins, 'f');
+    std::string cfg = std::string(kTestSamplerTypes) + "," + std::string(kScopeSamplerTypes);
     auto r =
         runHalcmd(options, {"loadrt", "sampler",
                             "depth=" + std::to_string(kTestSamplerDepth) + "," + std::to_string(kScopeSamplerDepth),

@@ -4,7 +4,8 @@
 // session, with all its instances; AxisTune's tests record through one sampler instance and its scope through
 // another, and each may start while the other runs. So the component is loaded once with both instances:
 //   sampler.0: "fffff" (kTestSamplerTypes), a test's record (HalInjection);
-//   sampler.1: kScopeSamplerPins floats, the scope (HalScope), of which a scope links as many as it samples.
+//   sampler.1: kScopeSamplerTypes (12 float, 4 bit, 2 s32, 2 u32 pins), the scope (HalScope), of which a scope
+//              links as many of each type as it samples.
 // Each user adds its instance's function to the thread and links its pins, and takes them off again; the module is
 // unloaded by the last holder, two servo periods after its functions left the threads.
 
@@ -17,8 +18,8 @@
 namespace axistune::device::hal {
 
 inline constexpr const char* kTestSamplerTypes = "fffff";
-inline constexpr int kTestSamplerDepth = 16384;  ///< rows of sampler.0's FIFO
-inline constexpr int kScopeSamplerPins = 16;     ///< float pins of sampler.1
+inline constexpr int kTestSamplerDepth = 16384;                           ///< rows of sampler.0's FIFO
+inline constexpr const char* kScopeSamplerTypes = "ffffffffffffbbbbssuu"; ///< pins of sampler.1 (20 of HAL's 21)
 inline constexpr int kScopeSamplerDepth = 32768; ///< rows of sampler.1's FIFO (33 ms at 1 kHz … 8 ms at 4 kHz)
 
 class HalSamplerModule {

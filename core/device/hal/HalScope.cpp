@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <string_view>
 #include <unistd.h>
 
 namespace axistune::device::hal {
@@ -28,14 +29,25 @@ const ChannelPin kPidChannels[] = {
     {"following_error", "error", "position unit", "following error the pid computes (<pid>.error)"},
 };
 
-/// A pin the scope can sample without changing anything: a float pin that is an output (a net of the scope's own
-/// carries it when it is on none) or an input on a net; not AxisTune's own components' pins.
+/// The sampler pin type letter of a HAL pin type ('f', 'b', 's', 'u'), 0 for none (a port).
+char typeLetter(const std::string& halType)
+{
+    return halType == "float" ? 'f' : halType == "bit" ? 'b' : halType == "s32" ? 's' : halType == "u32" ? 'u' : 0;
+}
+
+/// A pin the scope can sample without changing anything: a float, bit, s32 or u32 pin that is an output (a net of
+/// the scope's own carries it when it is on none) or an input on a net; not AxisTune's own components' pins.
 bool samplable(const HalPin& p)
 {
-    if (p.type != "float" || p.name.rfind("sampler.", 0) == 0 || p.name.rfind("streamer.", 0) == 0 ||
+    if (!typeLetter(p.type) || p.name.rfind("sampler.", 0) == 0 || p.name.rfind("streamer.", 0) == 0 ||
         p.name.rfind("axistune", 0) == 0)
         return false;
     return p.dir == "OUT" || !p.signal.empty();
+}
+
+const char* unitOf(const std::string& halType)
+{
+    return halType == "float" ? "HAL units" : halType == "bit" ? "HAL bit" : "HAL count";
 }
 
 } // namespace
@@ -54,9 +66,10 @@ ScopeCapabilities halScopeCapabilities(const HalAxis& axis, const std::vector<Ha
     for (const auto& p : pins)
         if (samplable(p) && !pidChannel(p.name)) // the pid's own under their channel names above
             c.channels.push_back(
-                {p.name, "HAL units", "HAL pin (" + p.dir + (p.signal.empty() ? "" : ", net " + p.signal) + ")"});
+                {p.name, unitOf(p.type),
+                 "HAL " + p.type + " pin (" + p.dir + (p.signal.empty() ? "" : ", net " + p.signal) + ")"});
     c.fastestRateHz = axis.periodNs > 0 ? 1e9 / static_cast<double>(axis.periodNs) : 0.0;
-    c.maxChannels = kScopeSamplerPins;
+    c.maxChannels = static_cast<int>(std::string_view(kScopeSamplerTypes).size());
     c.maxDivider = 1; // the sampler takes every period; no divider in LinuxCNC 2.9's sampler
     c.maxValues = kHostCaptureValues;
     c.ringValues = kHostRingValues;
@@ -72,13 +85,12 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
     auto ps = parsePins(*text);
     if (!ps)
         return ps.error();
-    if (setup.channels.size() > static_cast<std::size_t>(kScopeSamplerPins))
-        return makeError(ErrorCode::BadInput,
-                         "the hal: scope samples at most " + std::to_string(kScopeSamplerPins) + " channels");
     std::unique_ptr<HalScope> s(new HalScope);
     s->m_options = options;
     s->m_axis = axis;
-    s->m_columns = setup.channels.size();
+    // Each channel takes the next free pin of its type of sampler.1; m_pick maps the sampler's row to the channels.
+    const std::string types = kScopeSamplerTypes;
+    std::string used(types.size(), 0);
     std::vector<std::vector<std::string>> links;
     std::map<std::string, std::string> ownNets; ///< an output pin on no net → the net of the scope's own made for it
     for (std::size_t i = 0; i < setup.channels.size(); ++i) {
@@ -90,17 +102,28 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
         const HalPin* p = findPin(*ps, pin);
         if (!p)
             return makeError(ErrorCode::NotFound, "HAL has no pin " + pin);
-        if (p->type != "float")
-            return makeError(ErrorCode::BadInput,
-                             "scope channel " + pin + " is a " + p->type + " pin; the hal: scope samples float pins");
-        const std::string samplerPin = std::string(kScopeInstance) + ".pin." + std::to_string(i);
+        const char letter = typeLetter(p->type);
+        std::size_t slot = types.size();
+        for (std::size_t k = 0; k < types.size() && slot == types.size(); ++k)
+            if (types[k] == letter && !used[k])
+                slot = k;
+        if (slot == types.size()) {
+            const auto count = std::count(types.begin(), types.end(), letter);
+            return makeError(ErrorCode::BadInput, letter ? "the hal: scope samples at most " + std::to_string(count) +
+                                                               " " + p->type + " pins at once (channel " + pin + ")"
+                                                         : "scope channel " + pin + " is a " + p->type +
+                                                               " pin, which the sampler cannot take");
+        }
+        used[slot] = 1;
+        s->m_pick.push_back(slot);
+        const std::string samplerPin = std::string(kScopeInstance) + ".pin." + std::to_string(slot);
         if (!p->signal.empty()) {
             links.push_back({"linksp", p->signal, samplerPin});
         } else if (auto own = ownNets.find(pin); own != ownNets.end()) {
             links.push_back({"linksp", own->second, samplerPin}); // the same pin twice
         } else if (p->dir == "OUT") {
             // An output on no net: a net of AxisTune's own carries it to the sampler (removed afterwards).
-            const std::string net = "axistune-scope-" + std::to_string(i);
+            const std::string net = "axistune-scope-" + std::to_string(slot);
             ownNets[pin] = net;
             links.push_back({"net", net, pin, samplerPin});
         } else {
@@ -118,8 +141,7 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
         return client.error();
     }
     s->m_client = std::move(client).value();
-    auto stream = HalStream::attach(*s->m_client, HalStream::Direction::FromHal, kSamplerKey + 1,
-                                    std::string(kScopeSamplerPins, 'f'));
+    auto stream = HalStream::attach(*s->m_client, HalStream::Direction::FromHal, kSamplerKey + 1, types);
     if (!stream) {
         (void)s->stop();
         return stream.error();
@@ -161,7 +183,7 @@ Result<std::unique_ptr<HalScope>> HalScope::start(const HalSessionOptions& optio
 
 void HalScope::read()
 {
-    std::vector<double> row;
+    std::vector<double> row, picked(m_pick.size());
     std::uint32_t raw = 0, lastRaw = 0;
     std::uint64_t sample = 0;
     bool first = true;
@@ -174,7 +196,9 @@ void HalScope::read()
             first = false;
             lastRaw = raw;
             std::lock_guard lock(m_mutex);
-            m_recorder.push(sample, std::span<const double>(row.data(), std::min(m_columns, row.size())));
+            for (std::size_t k = 0; k < m_pick.size(); ++k)
+                picked[k] = row[m_pick[k]];
+            m_recorder.push(sample, picked);
             any = true;
         }
         const auto now = std::chrono::steady_clock::now();

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The scope of a `hal:` axis (docs/scope.md "LinuxCNC", docs/linuxcnc.md "Scope"): instance sampler.1 of LinuxCNC's
-// `sampler` (HalSampler.h) on the axis's servo thread, its float pins linked to the pid's pins or to any float pin
-// of the HAL session, read by a host thread into a ScopeRecorder (trigger, pre-trigger and ring on the host, the same
-// code as the embedded drive). The sampler's own sample numbers are the drive's sample numbers, so a lost row is a
-// visible gap. The tests record through sampler.0 of the same load, so the scope runs while a test runs.
+// `sampler` (HalSampler.h) on the axis's servo thread, its pins linked to the pid's pins or to any float, bit, s32 or
+// u32 pin of the HAL session, read by a host thread into a ScopeRecorder (trigger, pre-trigger and ring on the host,
+// the same code as the embedded drive). The sampler's own sample numbers are the drive's sample numbers, so a lost row
+// is a visible gap. The tests record through sampler.0 of the same load, so the scope runs while a test runs.
 
 #include "core/device/Scope.h"
 #include "core/device/hal/HalAxis.h"
@@ -23,14 +23,15 @@
 namespace axistune::device::hal {
 
 /// The channels a `hal:` axis offers: the pid's command, feedback, output (the drive input net) and error, in the
-/// configuration's units, then every float pin of the session (`halcmd show pin`) that can be sampled without
-/// changing it (an output, or an input on a net), named by the pin.
+/// configuration's units, then every float, bit, s32 and u32 pin of the session (`halcmd show pin`) that can be
+/// sampled without changing it (an output, or an input on a net), named by the pin.
 ScopeCapabilities halScopeCapabilities(const HalAxis& axis, const std::vector<HalPin>& pins);
 
 class HalScope {
 public:
-    /// Links sampler.1 for a checked setup and starts reading. Refused when another program loaded a sampler, a
-    /// channel's pin is not a float pin, or an unlinked input (sampling it would change it).
+    /// Links sampler.1 for a checked setup and starts reading. Refused when another program loaded a sampler, more
+    /// pins of one type are asked than sampler.1 has, or a channel's pin is an unlinked input (sampling it would
+    /// change it).
     static Result<std::unique_ptr<HalScope>> start(const HalSessionOptions& options, const HalAxis& axis,
                                                    const ScopeCapabilities& caps, const ScopeSetup& setup);
     /// Stops reading and removes the sampler (every net as before).
@@ -53,7 +54,7 @@ private:
     HalAxis m_axis;
     std::vector<std::vector<std::string>> m_undo; ///< halcmd argument lists, run last first
     std::shared_ptr<HalSamplerModule> m_sampler;
-    std::size_t m_columns = 0; ///< of sampler.1's pins, the first this many are the scope's channels
+    std::vector<std::size_t> m_pick; ///< the sampler.1 pin of each channel, in the channels' order
     std::unique_ptr<HalClient> m_client;
     std::unique_ptr<HalStream> m_stream;
     mutable std::mutex m_mutex;

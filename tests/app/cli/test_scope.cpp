@@ -3,20 +3,19 @@
 // through the Drive seam, and axistune-cli scope. Expected values come from the known step (0 before, the
 // amplitude from the step on), the requested pre-trigger share and the drive's clock (t_s = n · T_v).
 #include "core/device/Drive.h"
-#include "core/model/Number.h"
 #include "core/device/TestRunner.h"
 #include "core/io/ScopeCsv.h"
+#include "core/model/Number.h"
 
 #include <chrono>
 #include <cmath>
 #include <gtest/gtest.h>
-
-#include "tests/core/device/ScopeTestUtil.h"
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "tests/app/cli/CliRunner.h"
 #include "tests/app/cli/SimDriveProcess.h"
+#include "tests/core/device/ScopeTestUtil.h"
 
 using namespace axistune;
 using namespace axistune::device;
@@ -400,7 +399,8 @@ TEST(ModbusScope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
     const auto step = static_cast<std::size_t>(std::llround(4000.0 / traceHz));
     ASSERT_EQ(static_cast<double>(step) * traceHz, 4000.0);
     const auto i0 = axistune::testing::traceRowInScope(sx, tx->data, step);
-    ASSERT_TRUE(i0.has_value()) << "the trace's X positions are not in the scope, one every " << step << " rows";
+    ASSERT_TRUE(i0.has_value()) << "the trace's X positions are not in the scope, one every " << step
+                                << " rows: " << axistune::testing::traceRowReport(sx, tx->data, step);
     double worstY = 0.0;
     for (std::size_t k = 0; k < ty->data.size(); ++k)
         worstY = std::max(worstY, std::abs(sy[*i0 + k * step] - ty->data[k]));

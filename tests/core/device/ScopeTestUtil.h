@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace axistune::testing {
@@ -24,6 +25,29 @@ inline std::optional<std::size_t> traceRowInScope(const std::vector<double>& sco
             return i0;
     }
     return std::nullopt;
+}
+
+/// For a failure message: the i0 with the most matching trace samples, how many match, and the first that does not.
+inline std::string traceRowReport(const std::vector<double>& scopeX, const std::vector<double>& traceX,
+                                  std::size_t step)
+{
+    std::size_t bestI0 = 0, bestCount = 0;
+    for (std::size_t i0 = 0; i0 < scopeX.size(); ++i0) {
+        std::size_t count = 0;
+        for (std::size_t k = 0; k < traceX.size() && i0 + k * step < scopeX.size(); ++k)
+            count += scopeX[i0 + k * step] == traceX[k];
+        if (count > bestCount) {
+            bestCount = count;
+            bestI0 = i0;
+        }
+    }
+    std::size_t firstBad = traceX.size();
+    for (std::size_t k = 0; k < traceX.size() && firstBad == traceX.size(); ++k)
+        if (bestI0 + k * step >= scopeX.size() || scopeX[bestI0 + k * step] != traceX[k])
+            firstBad = k;
+    return "scope rows " + std::to_string(scopeX.size()) + ", trace rows " + std::to_string(traceX.size()) +
+           "; best first row " + std::to_string(bestI0) + " matches " + std::to_string(bestCount) +
+           "; first trace row not matched " + std::to_string(firstBad);
 }
 
 } // namespace axistune::testing

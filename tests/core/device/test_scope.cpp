@@ -2,20 +2,19 @@
 // The drive's scope on the embedded simulated drive (docs/scope.md): a triggered capture on a known
 // velocity step puts the trigger at the requested pre-trigger row, on the step; roll mode streams every
 // sample once; requests outside the drive's figures are refused naming the field.
-#include "core/model/Number.h"
 #include "core/device/Scope.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/device/TestRunner.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/ScopeCsv.h"
+#include "core/model/Number.h"
 
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
 
-#include "tests/core/device/ScopeTestUtil.h"
-
 #include "tests/core/device/DriveTestUtil.h"
+#include "tests/core/device/ScopeTestUtil.h"
 
 using namespace axistune;
 using namespace axistune::device;
@@ -462,9 +461,9 @@ TEST(Scope, OtherAxesPositionsAreOfferedAsCompanionChannels)
     auto s = drive->scopeCapabilities("X");
     ASSERT_TRUE(s.ok());
     // vmc has X, Y and Z on one clock: X's 15 signals, then 4 of Y and 4 of Z (positions and following error).
-    const std::vector<std::string> companions = {"Y.position_cmd_m", "Y.motor_pos_m", "Y.table_pos_m",
-                                                 "Y.following_error_m", "Z.position_cmd_m", "Z.motor_pos_m",
-                                                 "Z.table_pos_m", "Z.following_error_m"};
+    const std::vector<std::string> companions = {"Y.position_cmd_m",    "Y.motor_pos_m",      "Y.table_pos_m",
+                                                 "Y.following_error_m", "Z.position_cmd_m",   "Z.motor_pos_m",
+                                                 "Z.table_pos_m",       "Z.following_error_m"};
     ASSERT_EQ(s->channels.size(), 15u + companions.size());
     for (std::size_t k = 0; k < companions.size(); ++k) {
         EXPECT_EQ(s->channels[15 + k].name, companions[k]);
@@ -486,13 +485,14 @@ TEST(Scope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
 {
     auto drive = devtest::makeDrive("vmc", 7);
     // Y runs ahead of X before the scope is armed: arming must bring them to one machine time.
-    ASSERT_TRUE(drive->armScope([] {
-                         ScopeRequest r;
-                         r.axis = "Y";
-                         r.mode = ScopeMode::Roll;
-                         r.channels = {"t_s"};
-                         return r;
-                     }())
+    ASSERT_TRUE(drive
+                    ->armScope([] {
+                        ScopeRequest r;
+                        r.axis = "Y";
+                        r.mode = ScopeMode::Roll;
+                        r.channels = {"t_s"};
+                        return r;
+                    }())
                     .ok());
     for (int i = 0; i < 5; ++i)
         ASSERT_TRUE(drive->pollScope().ok());
@@ -521,7 +521,8 @@ TEST(Scope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
     const auto step = static_cast<std::size_t>(std::llround(4000.0 / traceHz));
     ASSERT_EQ(static_cast<double>(step) * traceHz, 4000.0);
     const auto i0 = axistune::testing::traceRowInScope(sx, tx->data, step);
-    ASSERT_TRUE(i0.has_value()) << "the trace's X positions are not in the scope, one every " << step << " rows";
+    ASSERT_TRUE(i0.has_value()) << "the trace's X positions are not in the scope, one every " << step
+                                << " rows: " << axistune::testing::traceRowReport(sx, tx->data, step);
     double worstY = 0.0;
     for (std::size_t k = 0; k < ty->data.size(); ++k)
         worstY = std::max(worstY, std::abs(sy[*i0 + k * step] - ty->data[k]));
@@ -541,4 +542,3 @@ TEST(Scope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
     EXPECT_GT(onCircle, tx->data.size()); // the whole circle at 4 kHz holds more rows than the trace (1 kHz)
     ASSERT_TRUE(drive->stopScope().ok());
 }
-
