@@ -140,6 +140,52 @@ TEST(AvoidanceCut, AdaptiveTable1EndsInThe2955To3000Pocket)
         EXPECT_NE(adaptive.capture.channel(ch), nullptr) << ch;
 }
 
+TEST(AvoidanceCut, AdaptiveWithTheStageDobEndsInThe2955To3000Pocket)
+{
+    // Issue 22, Method 2 (spec §3.2): the same cut as above, sensor = the feed-stage DOB on the linear encoder
+    // and the thrust command (stage model M_tn 273 kg, D_tn 1e4 N s/m only), Table 4 Kalman parameters, G_F
+    // 1000–2000 Hz, Q 2000 Hz. The observer force carries the regenerative comb f_c + k f_TPE (the tool's
+    // resonance does not filter it as it does the acceleration), so the estimator gets the band f_n ± f_TPE/2
+    // around the tool mode (docs/chatter-avoidance.md, "DOB path"): f_n = 1380.6 Hz (spec §1.6 [derived]),
+    // f_TPE = 4 · 2800/60 = 186.67 Hz.
+    const double duration = 1.0;
+    avoidance::AvoidanceCutOptions base;
+    base.cut.milling = setup(false, 2800.0, 1.5e-3, 7.0);
+    base.cut.durationS = duration;
+    base.cut.engageS = 0.1;
+    const auto constant = run(base);
+    auto o = base;
+    avoidance::applyMethodDefaults(o, avoidance::Method::Adaptive, machining::AvoidanceSensor::Dob);
+    EXPECT_TRUE(o.toolModeBand);
+    EXPECT_DOUBLE_EQ(o.adaptive.kalman.rv, 1e-6); // Table 4(a)
+    EXPECT_DOUBLE_EQ(o.adaptive.kalman.p0, 1e3);
+    EXPECT_DOUBLE_EQ(o.adaptive.samplePeriodS, 250e-6);
+    const auto band = avoidance::toolModeBand(o.cut.milling);
+    ASSERT_TRUE(band);
+    EXPECT_NEAR(band->centreHz, 1380.6, 0.1);
+    EXPECT_NEAR(band->widthHz, 4.0 * 2800.0 / 60.0, 1e-9);
+    // Table 4's σ_th = 1e4 N² (|F̂_u| = 100 N, set for the thesis's a_p 3.5 mm cut) is never reached here: the
+    // in-band self-excited force of this 1.5 mm cut peaks near 14 N.
+    const auto table4 = run(o);
+    EXPECT_LT(table4.triggerTimeS, 0.0);
+    // σ_th = 100 N² (10 N): above the in-band level before the tool enters and after avoidance (≤ 7 N), below
+    // the chatter's (docs/chatter-avoidance.md).
+    o.adaptive.thresholdPower = 100.0;
+    const auto dob = run(o);
+    ASSERT_FALSE(dob.steps.empty());
+    EXPECT_GE(dob.triggerTimeS, base.cut.engageS); // not on the observer's start transient
+    const double finalRpm = lastValue(dob.capture, "spindle_speed_rpm");
+    EXPECT_GE(finalRpm, 2955.0);
+    EXPECT_LE(finalRpm, 3000.0);
+    EXPECT_GT(limitDepthAt(base.cut.milling, finalRpm), 1.5e-3);
+    // One line of the comb, the chatter line 1394.8 Hz (spec §5.1 [derived]), ± 15 Hz as for the accelerometer
+    // (the simulated stage has no model error, so no 40 Hz bias as in the thesis's experiment): ρ = 7.
+    EXPECT_NEAR(dob.steps.front().chatterHz.front(), 1394.8, 15.0);
+    EXPECT_EQ(dob.steps.front().rho, 7);
+    const double rc = rmsLast(constant.capture, duration, 0.3), rd = rmsLast(dob.capture, duration, 0.3);
+    EXPECT_LE(rd, 0.4 * rc) << "constant " << rc << " dob " << rd;
+}
+
 TEST(AvoidanceCut, MultiModeReachesAStableSpeedWhereTheConventionalRuleDoesNot)
 {
     // Issue 22 / spec §5.3: the two-mode tool (1435.6 Hz, 1909.9 Hz), a_e 7 mm, a_p 2.0 mm from 2800 rpm.

@@ -221,3 +221,29 @@ TEST(ChatterAvoidance, AdaptiveOptionsChecked)
     o.highPassHz = 3000.0; // above Nyquist at 250 µs
     EXPECT_FALSE(AdaptiveAvoidance::create(o, 4));
 }
+
+TEST(ChatterAvoidance, ToolModeBandPassHasItsEdgesAndCentre)
+{
+    // n identical bilinear band-pass sections with pre-warped edges f1, f2: unit gain at the digital centre
+    // f0 = atan(√(W1 W2))/(π t_s), W = tan(π f t_s), 2^(−n/2) at f1 and f2 (−3 dB per section); elsewhere the
+    // analogue prototype at the warped frequency, |H| = (B W/√((W0² − W²)² + (B W)²))^n.
+    const double ts = 250e-6, f1 = 1380.6 - 93.33, f2 = 1380.6 + 93.33;
+    auto bp = bandPassSections(3, f1, f2, ts);
+    ASSERT_TRUE(bp) << bp.error().detail;
+    const auto warp = [ts](double f) { return std::tan(std::numbers::pi * f * ts); };
+    const double w1 = warp(f1), w2 = warp(f2), b = w2 - w1, w0sq = w1 * w2;
+    const double f0 = std::atan(std::sqrt(w0sq)) / (std::numbers::pi * ts);
+    EXPECT_NEAR(std::abs(bp->response(f0, ts)), 1.0, 1e-9);
+    EXPECT_NEAR(std::abs(bp->response(f1, ts)), std::pow(2.0, -1.5), 1e-9);
+    EXPECT_NEAR(std::abs(bp->response(f2, ts)), std::pow(2.0, -1.5), 1e-9);
+    for (double f : {1394.8, 1581.5, 1208.1, 500.0, 1900.0}) {
+        const double w = warp(f);
+        const double one = b * w / std::hypot(w0sq - w * w, b * w);
+        EXPECT_NEAR(std::abs(bp->response(f, ts)), one * one * one, 1e-9) << f;
+    }
+    // The +1 tooth-passing sideband (1581.5 Hz) is passed at < 0.1 of the chatter line (1394.8 Hz).
+    EXPECT_LT(std::abs(bp->response(1581.5, ts)), 0.1 * std::abs(bp->response(1394.8, ts)));
+    EXPECT_FALSE(bandPassSections(0, f1, f2, ts));
+    EXPECT_FALSE(bandPassSections(3, f2, f1, ts));
+    EXPECT_FALSE(bandPassSections(3, f1, 2100.0, ts)); // above Nyquist 2000 Hz
+}
