@@ -235,19 +235,29 @@ double lineAt(const std::vector<double>& t, const std::vector<double>& x, double
 
 TEST(AvoidanceCut, EscDithersAt13p86HzStaysInsideTheBoundsAndLowersTheVibration)
 {
-    // Issue 22 / spec §5.4: from 1700 rpm, a_p 2.5 mm, a_e 9 mm, p_c = 8·2π rad/s, ESC from 5 s, bounds
-    // 1200–2200 rpm, accelerometer cost a_y². The Table 1 tool has no speed stable at 2.5 mm below 2925 rpm
-    // (SDM; the Ch.6 tool's FRF is not given in the seed), so the ESC can only reach the local minimum of the
-    // chatter level, near the lobe top at 1725 rpm (1.95 mm). f'' = 4e8 is this cut's curvature scale: the
-    // seed's 1e5 belongs to its own signal levels and drives the speed from bound to bound here
-    // (docs/chatter-avoidance.md). The seed's 60–80 % is not reached: measured 53 %; asserted ≥ 35 %.
-    const double duration = 7.0;
+    // Issue 22 / spec §5.4, the seed's simulation (Sec. 6.4): Table 1 tool (the seed: "Table 1, Table 6"), from
+    // 1700 rpm, a_p 2.5 mm, a_e 9 mm, p_c = 8·2π rad/s, ESC from 5 s, f'' = 1e5, a_c = 4 rad/s (Fig. 42: 1 and
+    // 4), feed = Table 1(b)'s 0.5 mm/s, i.e. f_z = 0.5 mm/s / (4 · 1700/60 s⁻¹) = 4.41 µm; bounds 1200–2200 rpm,
+    // accelerometer cost a_y². The Table 1 tool has no speed stable at 2.5 mm below 2925 rpm (SDM), so the ESC
+    // can only reach a local minimum of the chatter level. The seed's 60–80 % is its experiments' result (Fig.
+    // 50, the Ch.6 tool whose FRF is not given, Sec. 6.5.4); its simulation gives no number. Measured: 46 %;
+    // asserted ≥ 35 % (docs/chatter-avoidance.md).
+    const double duration = 7.0, fzSeed = 0.5e-3 / (4.0 * 1700.0 / 60.0);
     avoidance::AvoidanceCutOptions base;
     base.cut.milling = setup(false, 1700.0, 2.5e-3, 9.0);
+    base.cut.milling.feedPerToothM = fzSeed;
     base.cut.durationS = duration;
     base.cut.engageS = 0.1;
     EXPECT_LT(limitDepthAt(base.cut.milling, 1725.0), 2.5e-3);
     const auto constant = run(base);
+    // The cut is homogeneous in the feed (chip, force and limit cycle scale with f_z): the constant-speed RMS
+    // at f_z = 0.1 mm is (0.1 mm/f_z) times this one, so a cost a_y² is (0.1 mm/f_z)² = 514 times the seed's
+    // scale there and f'' must scale with it (why 1e5 is too small at f_z = 0.1 mm).
+    auto coarse = base;
+    coarse.cut.milling.feedPerToothM = 0.1e-3;
+    const auto constantCoarse = run(coarse);
+    const double rc = rmsLast(constant.capture, duration, 0.3);
+    EXPECT_NEAR(rmsLast(constantCoarse.capture, duration, 0.3) / rc, 0.1e-3 / fzSeed, 0.02 * 0.1e-3 / fzSeed);
     auto o = base;
     o.method = avoidance::Method::Esc;
     o.sensor = machining::AvoidanceSensor::Accelerometer;
@@ -255,7 +265,8 @@ TEST(AvoidanceCut, EscDithersAt13p86HzStaysInsideTheBoundsAndLowersTheVibration)
     o.esc.startS = 5.0;
     o.esc.minRpm = 1200.0;
     o.esc.maxRpm = 2200.0;
-    o.esc.curvature = 4e8;
+    o.esc.curvature = 1e5;
+    o.esc.ditherRadS = 4.0;
     const auto esc = run(o);
     EXPECT_NEAR(esc.escDesign.omegaPRadS / (2 * kPi), 13.856, 0.001);
     EXPECT_NEAR(esc.escDesign.hcRadS / (2 * kPi), 2.667, 0.001);
@@ -278,14 +289,17 @@ TEST(AvoidanceCut, EscDithersAt13p86HzStaysInsideTheBoundsAndLowersTheVibration)
         if (t->data[i] < 5.0)
             ASSERT_DOUBLE_EQ(n->data[i], 1700.0);
     }
-    const double rc = rmsLast(constant.capture, duration, 0.3), re = rmsLast(esc.capture, duration, 0.3);
+    const double re = rmsLast(esc.capture, duration, 0.3);
     EXPECT_LE(re, 0.65 * rc) << "constant " << rc << " esc " << re;
+    // Where it ends the lobes still call 2.5 mm unstable: a local minimum, not a stable pocket.
+    EXPECT_LT(limitDepthAt(base.cut.milling, lastValue(esc.capture, "spindle_speed_rpm")), 2.5e-3);
 }
 
 TEST(AvoidanceCut, EscWithTheSeedCurvatureIsHeldByTheBounds)
 {
-    // With the seed's f'' = 1e5 the loop gain is far too high for this cut's cost scale: the speed runs to the
-    // bounds, which hold it (anti-windup, counted), never beyond (spec §3.4.3: bound the speed).
+    // With the seed's f'' = 1e5 at f_z = 0.1 mm (a cost 514 times the seed's scale, see above) the loop gain is
+    // far too high: the speed runs to the bounds, which hold it (anti-windup, counted), never beyond (spec
+    // §3.4.3: bound the speed).
     avoidance::AvoidanceCutOptions o;
     o.cut.milling = setup(false, 1700.0, 2.5e-3, 9.0);
     o.cut.durationS = 1.5;
