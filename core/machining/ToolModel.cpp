@@ -20,14 +20,19 @@ Status checkModes(const std::vector<ModalParameters>& modes, const char* key)
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const auto& m = modes[i];
         const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
-        if (!std::isfinite(m.massKg) || m.massKg <= 0.0)
-            return makeError(ErrorCode::OutOfRange, where + ".mass_kg must be > 0 (got " + std::to_string(m.massKg) + ")");
-        if (!std::isfinite(m.dampingNsPerM) || m.dampingNsPerM < 0.0)
-            return makeError(ErrorCode::OutOfRange,
-                             where + ".damping_Ns_per_m must be >= 0 (got " + std::to_string(m.dampingNsPerM) + ")");
-        if (!std::isfinite(m.stiffnessNPerM) || m.stiffnessNPerM <= 0.0)
-            return makeError(ErrorCode::OutOfRange,
-                             where + ".stiffness_N_per_m must be > 0 (got " + std::to_string(m.stiffnessNPerM) + ")");
+        // A mode with mass, damping and stiffness all negative is a negative residue (the second term of a
+        // product of two resonances, e.g. the thesis's cascade (5-1)); its pole is the same as with all positive.
+        if (!std::isfinite(m.massKg) || m.massKg == 0.0)
+            return makeError(ErrorCode::OutOfRange, where + ".mass_kg must be non-zero (got " + std::to_string(m.massKg) +
+                                                        "; > 0, or < 0 with negative damping and stiffness)");
+        const double sign = m.massKg > 0.0 ? 1.0 : -1.0;
+        if (!std::isfinite(m.dampingNsPerM) || sign * m.dampingNsPerM < 0.0)
+            return makeError(ErrorCode::OutOfRange, where + ".damping_Ns_per_m must have the sign of mass_kg (got " +
+                                                        std::to_string(m.dampingNsPerM) + ")");
+        if (!std::isfinite(m.stiffnessNPerM) || sign * m.stiffnessNPerM <= 0.0)
+            return makeError(ErrorCode::OutOfRange, where + ".stiffness_N_per_m must be non-zero with the sign of "
+                                                            "mass_kg (got " +
+                                                        std::to_string(m.stiffnessNPerM) + ")");
     }
     return Status::success();
 }

@@ -4,6 +4,7 @@
 // against the spec's derived numbers, the stage DOB on a pure-inertia stage (spec §6.4 validation) and the
 // option checks. Reference numbers: tests/data/chatter/jchat_reference.py (output jchat_reference.txt).
 #include "core/machining/ChatterAvoidance.h"
+#include "core/machining/ToolModel.h"
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -246,4 +247,24 @@ TEST(ChatterAvoidance, ToolModeBandPassHasItsEdgesAndCentre)
     EXPECT_FALSE(bandPassSections(0, f1, f2, ts));
     EXPECT_FALSE(bandPassSections(3, f2, f1, ts));
     EXPECT_FALSE(bandPassSections(3, f1, 2100.0, ts)); // above Nyquist 2000 Hz
+}
+
+TEST(ChatterAvoidance, NegativeResidueModeAcceptedMixedSignsRefused)
+{
+    // A mode with mass, damping and stiffness all negative is the negative residue of a product of resonances
+    // (the cascade (5-1), tests/data/chatter/cascade_tool.py); a mode with mixed signs is a typo and refused,
+    // the field named.
+    ToolModes t;
+    t.modesY = {{0.5346547242, 96.45171224, 43499722.22}, {-0.5346547242, -76.99028028, -76990280.28}};
+    EXPECT_TRUE(validateTool(t).ok());
+    t.modesY[1].stiffnessNPerM = 76990280.28;
+    auto e = validateTool(t);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().detail.find("modes_y[1].stiffness_N_per_m"), std::string::npos) << e.error().detail;
+    t.modesY[1] = {-0.53, 76.99, -76990280.28};
+    e = validateTool(t);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().detail.find("modes_y[1].damping_Ns_per_m"), std::string::npos) << e.error().detail;
+    t.modesY[1] = {0.0, 0.0, 1e7};
+    EXPECT_FALSE(validateTool(t).ok());
 }
