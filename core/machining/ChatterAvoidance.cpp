@@ -155,8 +155,8 @@ Result<dsp::FilterCascade> bandPassSections(int sections, double f1, double f2, 
     if (!(ts > 0.0) || !std::isfinite(ts))
         return makeError(ErrorCode::OutOfRange, "band-pass: sample period must be > 0 s");
     if (!(f1 > 0.0) || !(f2 > f1) || !(f2 < 0.5 / ts) || !std::isfinite(f2))
-        return makeError(ErrorCode::OutOfRange, "band-pass: need 0 < " + str(f1) + " < " + str(f2) +
-                                                    " < Nyquist " + str(0.5 / ts) + " Hz");
+        return makeError(ErrorCode::OutOfRange,
+                         "band-pass: need 0 < " + str(f1) + " < " + str(f2) + " < Nyquist " + str(0.5 / ts) + " Hz");
     // H(s') = B s'/(s'² + B s' + W0²) with s' = (1 − z⁻¹)/(1 + z⁻¹), W1,2 = tan(π f1,2 t_s), B = W2 − W1,
     // W0² = W1 W2: the digital −3 dB edges are exactly f1 and f2.
     const double w1 = std::tan(std::numbers::pi * f1 * ts), w2 = std::tan(std::numbers::pi * f2 * ts);

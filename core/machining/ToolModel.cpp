@@ -23,15 +23,17 @@ Status checkModes(const std::vector<ModalParameters>& modes, const char* key)
         // A mode with mass, damping and stiffness all negative is a negative residue (the second term of a
         // product of two resonances, e.g. the thesis's cascade (5-1)); its pole is the same as with all positive.
         if (!std::isfinite(m.massKg) || m.massKg == 0.0)
-            return makeError(ErrorCode::OutOfRange, where + ".mass_kg must be non-zero (got " + std::to_string(m.massKg) +
+            return makeError(ErrorCode::OutOfRange, where + ".mass_kg must be non-zero (got " +
+                                                        std::to_string(m.massKg) +
                                                         "; > 0, or < 0 with negative damping and stiffness)");
         const double sign = m.massKg > 0.0 ? 1.0 : -1.0;
         if (!std::isfinite(m.dampingNsPerM) || sign * m.dampingNsPerM < 0.0)
             return makeError(ErrorCode::OutOfRange, where + ".damping_Ns_per_m must have the sign of mass_kg (got " +
                                                         std::to_string(m.dampingNsPerM) + ")");
         if (!std::isfinite(m.stiffnessNPerM) || sign * m.stiffnessNPerM <= 0.0)
-            return makeError(ErrorCode::OutOfRange, where + ".stiffness_N_per_m must be non-zero with the sign of "
-                                                            "mass_kg (got " +
+            return makeError(ErrorCode::OutOfRange, where +
+                                                        ".stiffness_N_per_m must be non-zero with the sign of "
+                                                        "mass_kg (got " +
                                                         std::to_string(m.stiffnessNPerM) + ")");
     }
     return Status::success();
@@ -47,7 +49,7 @@ Prim prim(double p)
     return {0.5 * s * s, 0.5 * p - 0.25 * std::sin(2.0 * p), 0.5 * p + 0.25 * std::sin(2.0 * p)};
 }
 
-}  // namespace
+} // namespace
 
 Status validateTool(const ToolModes& tool)
 {
@@ -62,7 +64,8 @@ Status validateTool(const ToolModes& tool)
 Status validateCut(const CuttingConditions& cut)
 {
     if (cut.teeth < 1 || cut.teeth > 100)
-        return makeError(ErrorCode::OutOfRange, "teeth must be between 1 and 100 (got " + std::to_string(cut.teeth) + ")");
+        return makeError(ErrorCode::OutOfRange,
+                         "teeth must be between 1 and 100 (got " + std::to_string(cut.teeth) + ")");
     if (!std::isfinite(cut.ktNPerM2) || cut.ktNPerM2 <= 0.0)
         return makeError(ErrorCode::OutOfRange, "Kt_N_per_m2 must be > 0 (got " + std::to_string(cut.ktNPerM2) + ")");
     if (!std::isfinite(cut.krNPerM2) || cut.krNPerM2 < 0.0)
@@ -87,7 +90,8 @@ std::complex<double> compliance(const std::vector<ModalParameters>& modes, doubl
 {
     std::complex<double> g = 0.0;
     for (const auto& m : modes)
-        g += 1.0 / std::complex<double>(m.stiffnessNPerM - m.massKg * omegaRadS * omegaRadS, m.dampingNsPerM * omegaRadS);
+        g += 1.0 /
+             std::complex<double>(m.stiffnessNPerM - m.massKg * omegaRadS * omegaRadS, m.dampingNsPerM * omegaRadS);
     return g;
 }
 
@@ -133,4 +137,4 @@ Eigen::Matrix2d averageCuttingMatrix(const CuttingConditions& cut, double thetaA
     return sum / (thetaB - thetaA);
 }
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

@@ -27,8 +27,9 @@ Status checkModes(const std::vector<MillingMode>& modes, const std::string& dir)
                                                         "; > 0, or < 0 with negative damping and stiffness)");
         const double sign = m.massKg > 0.0 ? 1.0 : -1.0;
         if (!std::isfinite(m.stiffnessNPerM) || sign * m.stiffnessNPerM <= 0.0)
-            return makeError(ErrorCode::OutOfRange, at + ".stiffness_N_per_m must be non-zero with the sign of mass_kg "
-                                                         "(got " +
+            return makeError(ErrorCode::OutOfRange, at +
+                                                        ".stiffness_N_per_m must be non-zero with the sign of mass_kg "
+                                                        "(got " +
                                                         std::to_string(m.stiffnessNPerM) + ")");
         if (!std::isfinite(m.dampingNsPerM) || sign * m.dampingNsPerM < 0.0)
             return makeError(ErrorCode::OutOfRange, at + ".damping_Ns_per_m must have the sign of mass_kg (got " +

@@ -84,7 +84,7 @@ TEST(CliChatterAvoidance, BadOptionsExit2WithTheOptionNamed)
         {"--avoid none --esc-pc 3", "--esc-pc"},
         {"--avoid adaptive --sensor accel --dob-mass-kg 10", "--dob-mass-kg"},
         {"--avoid adaptive --dob-mass-kg -1", "M_tn"},
-        {"--rpm 50000", "spindle"}, // beyond the spindle limit
+        {"--rpm 50000", "spindle"},                                        // beyond the spindle limit
         {"--avoid adaptive --sensor accel --tool-band on", "--tool-band"}, // adaptive + DOB only
         {"--avoid multimode --sensor dob --tool-band on", "--tool-band"},
         {"--avoid adaptive --tool-band maybe", "--tool-band"},
