@@ -83,7 +83,7 @@ double naturalFrequencyHz(const ModalParameters& m)
 
 double dampingRatio(const ModalParameters& m)
 {
-    return m.dampingNsPerM / (2.0 * std::sqrt(m.stiffnessNPerM * m.massKg));
+    return std::abs(m.dampingNsPerM) / (2.0 * std::sqrt(m.stiffnessNPerM * m.massKg)); // also a negative residue
 }
 
 std::complex<double> compliance(const std::vector<ModalParameters>& modes, double omegaRadS)

@@ -257,6 +257,8 @@ TEST(ChatterAvoidance, NegativeResidueModeAcceptedMixedSignsRefused)
     ToolModes t;
     t.modesY = {{0.5346547242, 96.45171224, 43499722.22}, {-0.5346547242, -76.99028028, -76990280.28}};
     EXPECT_TRUE(validateTool(t).ok());
+    EXPECT_NEAR(naturalFrequencyHz(t.modesY[1]), 12000.0 / (2.0 * kPi), 1e-3); // ω₂ of (5-1)
+    EXPECT_NEAR(dampingRatio(t.modesY[1]), 0.006, 1e-9);                       // ζ₂ of (5-1)
     t.modesY[1].stiffnessNPerM = 76990280.28;
     auto e = validateTool(t);
     ASSERT_FALSE(e.ok());
