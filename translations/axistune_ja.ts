@@ -6747,8 +6747,33 @@
     </message>
     <message>
         <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
-        <source>Assumed curvature f&apos;&apos; of the cost near its minimum; the seed&apos;s 1e5 belongs to its own signal levels</source>
-        <translation>最小点付近の評価関数の仮定曲率 f&apos;&apos;。シードの 1e5 はシード自身の信号レベルに対する値です</translation>
+        <source>Assumed curvature f&apos;&apos; of the cost near its minimum. The cost scales with the feed squared: the seed&apos;s 1e5 is for its 0.5 mm/s table feed; this page cuts with f_z 0.1 mm</source>
+        <translation>最小点付近の評価関数の仮定曲率 f&apos;&apos;。評価関数は送りの二乗に比例します。シードの 1e5 はテーブル送り 0.5 mm/s に対する値で、このページは f_z 0.1 mm で切削します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>table</source>
+        <translation>表の値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Trigger threshold on the squared filtered signal ((m/s²)² or N²); empty: the table value (Table 3/4/5). Table 4&apos;s 1e4 N² was set for a 3.5 mm cut</source>
+        <translation>フィルタ後の信号の二乗に対する起動しきい値（(m/s²)² または N²）。空欄: 表の値（表 3/4/5）。表 4 の 1e4 N² は切込み 3.5 mm の切削に対して設定された値です</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>trigger σ_th</source>
+        <translation>起動しきい値 σ_th</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>trigger σ_th: a number &gt; 0, or empty for the table value</source>
+        <translation>起動しきい値 σ_th: 0 より大きい数値、または表の値を使う場合は空欄</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />
+        <source>Never triggered: the filtered signal squared stayed below σ_th (set a lower trigger σ_th for this cut).</source>
+        <translation>起動しませんでした: フィルタ後の信号の二乗が σ_th 未満のままでした（この切削にはより低い起動しきい値 σ_th を設定してください）。</translation>
     </message>
     <message>
         <location filename="../app/gui/MachiningAvoidancePage.cpp" line="1" />

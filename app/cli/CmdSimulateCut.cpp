@@ -28,7 +28,7 @@ struct SimulateCutArgs {
     std::uint64_t seed = 1;
     bool lostMotion = false;
     // avoidance (docs/chatter-avoidance.md); the options given override the method's table defaults
-    std::string avoid = "none", sensor, weights;
+    std::string avoid = "none", sensor, weights, toolBand;
     double ts = 0, rv = 0, rw = 0, p0 = 0, sigma = 0, hold = 0, hp = 0, lp = 0, costTarget = 0;
     int nd = 0, maxSteps = 0, below = 0, above = 0;
     double escPc = 0, escDither = 0, escCurv = 0, escStart = 0, escMin = 0, escMax = 0;
@@ -109,7 +109,16 @@ Status applyAvoidanceOptions(const SimulateCutArgs& a, avoidance::AvoidanceCutOp
     }
     if (auto st = refuse(dobOnly, sensor == AvoidanceSensor::Dob, "needs --sensor dob"); !st)
         return st;
+    if (auto st = refuse({"--tool-band"}, av.method == Method::Adaptive && sensor == AvoidanceSensor::Dob,
+                         "needs --avoid adaptive with --sensor dob");
+        !st)
+        return st;
     avoidance::applyMethodDefaults(av, av.method, sensor);
+    if (a.given("--tool-band")) {
+        if (a.toolBand != "on" && a.toolBand != "off")
+            return makeError(ErrorCode::BadInput, "--tool-band '" + a.toolBand + "': must be on or off");
+        av.toolModeBand = a.toolBand == "on";
+    }
     auto& o = av.adaptive;
     if (a.given("--ts-s"))
         o.samplePeriodS = a.ts;
@@ -206,15 +215,18 @@ nlohmann::json summaryJson(const SimulateCutArgs& a, const avoidance::AvoidanceC
     j["sensor"] = av.sensor == machining::AvoidanceSensor::Dob ? "dob" : "accelerometer";
     // onset: the trigger (adaptive, multimode) or the ESC start. Stable: the vibration fell (the level over the
     // last 0.3 s is at most 40 % of the largest 50 ms RMS after the onset) and from `settled_s` on the 50 ms RMS
-    // stays below twice that final level; otherwise settled_s is null (no stable speed reached).
+    // stays below twice that final level; otherwise `settled` is false and settled_s absent (no stable speed
+    // reached). Never triggered: `triggered` false, onset_s absent (the result writer refuses null).
     const double onset = av.method == avoidance::Method::Esc ? av.esc.startS : r.triggerTimeS;
-    j["onset_s"] = onset >= 0.0 ? nlohmann::json(onset) : nlohmann::json(nullptr);
-    j["settled_s"] = nullptr;
+    j["triggered"] = onset >= 0.0;
+    j["settled"] = false;
     if (onset >= 0.0) {
+        j["onset_s"] = onset;
         const double peak = avoidance::peakMovingRms(cap, "tool_accel_y_m_s2", std::max(0.0, onset - 0.05), 0.05);
         j["peak_rms_after_onset_m_s2"] = peak;
         if (auto rms = avoidance::channelRms(cap, "tool_accel_y_m_s2", t0, end); rms && *rms <= 0.4 * peak) {
             if (auto settled = avoidance::settledFrom(cap, "tool_accel_y_m_s2", onset, 0.05, 2.0 * *rms)) {
+                j["settled"] = true;
                 j["settled_s"] = *settled;
                 j["onset_to_settled_s"] = std::max(0.0, *settled - onset);
             }
@@ -369,6 +381,8 @@ const CliRegistrar kRegistrar{{
         o["--dob-viscous-ns-per-m"] = sub.add_option("--dob-viscous-ns-per-m", a->dobViscous, "DOB D_tn [N s/m] (1e4)");
         o["--dob-q-hz"] = sub.add_option("--dob-q-hz", a->dobQ, "DOB low-pass Q corner [Hz] (2000; esc 2500)");
         o["--dob-band-low-hz"] = sub.add_option("--dob-band-low-hz", a->dobLow, "DOB G_F lower corner [Hz] (1000)");
+        o["--tool-band"] = sub.add_option("--tool-band", a->toolBand,
+                                          "adaptive + dob: band-pass f_n +- f_TPE/2 before the estimator (on|off; on)");
         o["--dob-band-high-hz"] =
             sub.add_option("--dob-band-high-hz", a->dobHigh, "DOB G_F upper corner [Hz] (2000; 0 none)");
         return [a] { return runSimulateCut(*a); };

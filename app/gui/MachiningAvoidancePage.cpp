@@ -95,8 +95,15 @@ MachiningAvoidancePage::MachiningAvoidancePage(const MachiningToolPage& tool, co
     m_escMax->setObjectName("avoidEscMax");
     m_escCurv = new QLineEdit(QStringLiteral("1e5"), this);
     m_escCurv->setObjectName("avoidEscCurvature");
-    m_escCurv->setToolTip(tr("Assumed curvature f'' of the cost near its minimum; the seed's 1e5 belongs to its "
-                             "own signal levels"));
+    m_escCurv->setToolTip(tr("Assumed curvature f'' of the cost near its minimum. The cost scales with the feed "
+                             "squared: the seed's 1e5 is for its 0.5 mm/s table feed; this page cuts with f_z "
+                             "0.1 mm"));
+    m_sigmaTh = new QLineEdit(this);
+    m_sigmaTh->setObjectName("avoidSigmaTh");
+    m_sigmaTh->setMaximumWidth(80);
+    m_sigmaTh->setPlaceholderText(tr("table"));
+    m_sigmaTh->setToolTip(tr("Trigger threshold on the squared filtered signal ((m/s²)² or N²); empty: the table "
+                             "value (Table 3/4/5). Table 4's 1e4 N² was set for a 3.5 mm cut"));
     for (auto* e : {m_escStart, m_escMin, m_escMax, m_escCurv})
         e->setMaximumWidth(80);
     m_run = new QPushButton(tr("Run cut"), this);
@@ -141,6 +148,8 @@ MachiningAvoidancePage::MachiningAvoidancePage(const MachiningToolPage& tool, co
     grid->addLayout(bounds, 1, 3);
     grid->addWidget(new QLabel(tr("ESC f''"), this), 1, 4);
     grid->addWidget(m_escCurv, 1, 5);
+    grid->addWidget(new QLabel(tr("trigger σ_th"), this), 2, 0);
+    grid->addWidget(m_sigmaTh, 2, 1);
     auto* runRow = new QHBoxLayout;
     runRow->addWidget(m_run);
     runRow->addWidget(m_abort);
@@ -187,6 +196,8 @@ void MachiningAvoidancePage::updateMethodFields()
     for (auto* e : {m_escStart, m_escMin, m_escMax, m_escCurv})
         e->setEnabled(esc);
     m_sensor->setEnabled(m_method->currentData().toString() != "none");
+    m_sigmaTh->setEnabled(m_method->currentData().toString() == "adaptive" ||
+                          m_method->currentData().toString() == "multimode");
 }
 
 void MachiningAvoidancePage::initializePage()
@@ -244,6 +255,15 @@ void MachiningAvoidancePage::start()
     const bool dob = m_sensor->currentData().toString() == "dob";
     avoidance::applyMethodDefaults(o, avoidance::parseMethod(method.toStdString()).value(),
                                    dob ? machining::AvoidanceSensor::Dob : machining::AvoidanceSensor::Accelerometer);
+    if ((o.method == avoidance::Method::Adaptive || o.method == avoidance::Method::MultiMode) &&
+        !m_sigmaTh->text().trimmed().isEmpty()) {
+        const auto th = machiningNumber(m_sigmaTh->text());
+        if (!th || !(*th > 0.0)) {
+            m_summary->setText(tr("trigger σ_th: a number > 0, or empty for the table value"));
+            return;
+        }
+        o.adaptive.thresholdPower = *th;
+    }
     if (o.method == avoidance::Method::Esc) {
         const auto lo = machiningNumber(m_escMin->text()), hi = machiningNumber(m_escMax->text());
         const auto st = machiningNumber(m_escStart->text()), cv = machiningNumber(m_escCurv->text());
@@ -361,6 +381,9 @@ void MachiningAvoidancePage::finished()
         text += QLatin1Char(' ') +
                 tr("Triggered at %1 s; %n adaptation step(s).", nullptr, static_cast<int>(r.steps.size()))
                     .arg(fmt(r.triggerTimeS, 3));
+    else if (c.metadata.at("avoid") == "adaptive" || c.metadata.at("avoid") == "multimode")
+        text += QLatin1Char(' ') + tr("Never triggered: the filtered signal squared stayed below σ_th (set a lower "
+                                      "trigger σ_th for this cut).");
     if (c.metadata.at("avoid") == "esc")
         text += QLatin1Char(' ') + tr("ESC: dither %1 Hz, h_c %2 Hz, k_c %3 1/s; %4 samples held at a bound.")
                                        .arg(fmt(r.escDesign.omegaPRadS / (2.0 * M_PI), 2),

@@ -53,6 +53,7 @@ public:
     QLineEdit* escMaxRpm() const { return m_escMax; }
     QLineEdit* escStartS() const { return m_escStart; }
     QLineEdit* escCurvature() const { return m_escCurv; }
+    QLineEdit* sigmaTh() const { return m_sigmaTh; }
     QPushButton* runButton() const { return m_run; }
     QPushButton* abortButton() const { return m_abort; }
     QProgressBar* progress() const { return m_progress; }
@@ -78,7 +79,7 @@ private:
     QComboBox* m_method = nullptr;
     QComboBox* m_sensor = nullptr;
     QLineEdit *m_duration = nullptr, *m_escMin = nullptr, *m_escMax = nullptr, *m_escStart = nullptr,
-              *m_escCurv = nullptr;
+              *m_escCurv = nullptr, *m_sigmaTh = nullptr;
     QPushButton* m_run = nullptr;
     QPushButton* m_abort = nullptr;
     QProgressBar* m_progress = nullptr;

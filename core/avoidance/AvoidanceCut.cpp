@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <numeric>
 
 namespace axistune::avoidance {
@@ -52,6 +53,7 @@ void applyMethodDefaults(AvoidanceCutOptions& o, Method method, AvoidanceSensor 
     o.dob = machining::StageDobOptions{};
     if (method == Method::Adaptive)
         o.adaptive = dob ? machining::adaptiveTable4Dob() : machining::adaptiveTable3Accelerometer();
+    o.toolModeBand = method == Method::Adaptive && dob;
     if (method == Method::MultiMode) {
         o.adaptive = machining::multiModeTable5Accelerometer();
         if (dob) {
@@ -68,6 +70,29 @@ void applyMethodDefaults(AvoidanceCutOptions& o, Method method, AvoidanceSensor 
     }
 }
 
+Result<ToolModeBand> toolModeBand(const sim::MillingSetup& s)
+{
+    double best = 0.0;
+    ToolModeBand b;
+    for (const auto& m : s.modesY) {
+        if (!(m.massKg > 0.0) || !(m.stiffnessNPerM > 0.0) || !(m.dampingNsPerM > 0.0))
+            continue;
+        const double wn = std::sqrt(m.stiffnessNPerM / m.massKg);
+        const double peak = 1.0 / (m.dampingNsPerM * wn);
+        if (peak > best) {
+            best = peak;
+            b.centreHz = wn / (2.0 * std::numbers::pi);
+        }
+    }
+    if (!(best > 0.0))
+        return makeError(ErrorCode::BadInput, "tool-mode band: the tool has no damped y mode");
+    b.widthHz = s.teeth * s.spindleRpm / 60.0;
+    if (!(b.widthHz > 0.0) || !(b.widthHz < 2.0 * b.centreHz))
+        return makeError(ErrorCode::OutOfRange, "tool-mode band: the tooth-passing frequency " +
+                                                    std::to_string(b.widthHz) + " Hz must lie in (0, 2 f_n)");
+    return b;
+}
+
 Result<AvoidanceCutResult> runAvoidanceCut(const sim::AxisDefinition& axis, const AvoidanceCutOptions& o)
 {
     sim::CutSimulationOptions cut = o.cut;
@@ -81,6 +106,13 @@ Result<AvoidanceCutResult> runAvoidanceCut(const sim::AxisDefinition& axis, cons
     if (o.method == Method::Adaptive || o.method == Method::MultiMode) {
         auto opt = o.adaptive;
         opt.multiMode = o.method == Method::MultiMode;
+        if (o.toolModeBand && dob && opt.modeBandCentreHz == 0.0 && opt.modeBandWidthHz == 0.0) {
+            auto b = toolModeBand(cut.milling);
+            if (!b)
+                return b.error();
+            opt.modeBandCentreHz = b->centreHz;
+            opt.modeBandWidthHz = b->widthHz;
+        }
         auto a = machining::AdaptiveAvoidance::create(opt, cut.milling.teeth);
         if (!a)
             return a.error();

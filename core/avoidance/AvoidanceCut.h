@@ -33,6 +33,10 @@ struct AvoidanceCutOptions {
     machining::AdaptiveOptions adaptive = machining::adaptiveTable4Dob();
     machining::EscOptions esc;
     machining::StageDobOptions dob;
+    /// adaptive with the DOB: band-pass the observer force around the tool's y mode, one tooth-passing
+    /// frequency wide, before the estimator (AdaptiveOptions::modeBand*; set from the tool and the initial speed
+    /// unless given there). applyMethodDefaults sets it for adaptive + DOB.
+    bool toolModeBand = false;
 };
 
 struct AvoidanceCutResult {
@@ -48,6 +52,12 @@ struct AvoidanceCutResult {
 /// accelerometer; multimode: Table 5, with the DOB Table 4's t_s, σ_th and band; esc: Table 6, with the DOB the
 /// Ch.6 observer (Q 2500 Hz, high-pass 1000 Hz)). The cut and the ESC bounds are left as they are.
 void applyMethodDefaults(AvoidanceCutOptions& o, Method method, machining::AvoidanceSensor sensor);
+
+/// The y mode of the largest peak compliance 1/(c ω_n) and f_TPE = N n/60: the band of `toolModeBand`.
+struct ToolModeBand {
+    double centreHz = 0.0, widthHz = 0.0;
+};
+Result<ToolModeBand> toolModeBand(const sim::MillingSetup& setup);
 
 /// Errors name the option at fault (the controller's create() message).
 Result<AvoidanceCutResult> runAvoidanceCut(const sim::AxisDefinition& axis, const AvoidanceCutOptions& options);

@@ -120,11 +120,11 @@ private:
     std::optional<model::Capture> m_trace;
     std::shared_ptr<const FrfPlan> m_frfPlan;
     std::shared_ptr<const MultisinePlan> m_multisinePlan;
-    std::uint64_t m_clampsAtStart = 0;  ///< voltage clamps of the current loop before a multisine test
+    std::uint64_t m_clampsAtStart = 0; ///< voltage clamps of the current loop before a multisine test
     std::optional<FrfMeasurement> m_frf;
-    std::shared_ptr<CircleState> m_circle;  ///< the running circle test
-    double m_recordEnd = -1.0;  ///< current step: machine time the record ends and the hold begins (< 0: none)
-    std::string m_stepStart;    ///< current step: machine time of the step, as capture metadata
+    std::shared_ptr<CircleState> m_circle; ///< the running circle test
+    double m_recordEnd = -1.0; ///< current step: machine time the record ends and the hold begins (< 0: none)
+    std::string m_stepStart;   ///< current step: machine time of the step, as capture metadata
     FaultInjection m_faults;
     int m_requests = 0;
     // The scope.
@@ -145,4 +145,4 @@ private:
     void disarmScopeTaps();
 };
 
-}  // namespace axistune::device
+} // namespace axistune::device

@@ -3,8 +3,8 @@
 // the drive's own two axis simulators (applied parameters act, and the axes stay where the circle
 // left them): positioning to the start point, then sim::CircleRun, in slices from pollTest().
 #include "core/device/CircleDriveTest.h"
-#include "core/model/Units.h"
 #include "core/device/SimulatedDrive.h"
+#include "core/model/Units.h"
 #include "core/sim/CircleRun.h"
 
 #include <algorithm>
@@ -14,9 +14,12 @@
 namespace axistune::device {
 namespace {
 
-std::string num(double v) { return model::formatNumber(v, 4); }
+std::string num(double v)
+{
+    return model::formatNumber(v, 4);
+}
 
-}  // namespace
+} // namespace
 
 sim::CircleTestOptions circleOptionsOf(const TestRequest& r)
 {
@@ -51,7 +54,10 @@ TestRequest circleRequestOf(const sim::CircleTestOptions& o)
     return r;
 }
 
-double circlePositioningSpeed(const TestRequest& r) { return r.velocity > 0.0 ? r.velocity : kCirclePositioningSpeedMPerS; }
+double circlePositioningSpeed(const TestRequest& r)
+{
+    return r.velocity > 0.0 ? r.velocity : kCirclePositioningSpeedMPerS;
+}
 double circlePositioningAccel(const TestRequest& r)
 {
     return r.acceleration > 0.0 ? r.acceleration : kCirclePositioningAccelMPerS2;
@@ -76,8 +82,9 @@ Status checkCircleRequest(const TestRequest& r, const sim::AxisSimulator& x, con
         const std::string& n = sim->name();
         const double far = std::abs(centre) + radius;
         if (far > lim.travelWindowM)
-            return out("the circle reaches " + num(far) + " m on axis " + n + " (centre " + num(centre) + " m, radius " +
-                       num(radius) + " m), outside the travel window ±" + num(lim.travelWindowM) + " m");
+            return out("the circle reaches " + num(far) + " m on axis " + n + " (centre " + num(centre) +
+                       " m, radius " + num(radius) + " m), outside the travel window ±" + num(lim.travelWindowM) +
+                       " m");
         const double now = sim->positionCommand();
         if (std::abs(now) > lim.travelWindowM)
             return out("axis " + n + " stands at " + num(now) + " m, outside the travel window ±" +
@@ -86,8 +93,9 @@ Status checkCircleRequest(const TestRequest& r, const sim::AxisSimulator& x, con
         for (const auto& [what, v] : {std::pair{"feed", r.feedMPerS}, std::pair{"positioning speed", vPos}}) {
             const double motor = v / lead;
             if (motor > lim.maxMotorSpeedRadS)
-                return out(std::string(what) + " " + num(v) + " m/s means " + num(motor) + " rad/s at the motor of axis " +
-                           n + ", above the speed limit " + num(lim.maxMotorSpeedRadS) + " rad/s");
+                return out(std::string(what) + " " + num(v) + " m/s means " + num(motor) +
+                           " rad/s at the motor of axis " + n + ", above the speed limit " +
+                           num(lim.maxMotorSpeedRadS) + " rad/s");
         }
         const double d = std::abs(path->startPosition(second) - now);
         // Trapezoid (or triangle) time of the move to the start point.
@@ -107,9 +115,9 @@ struct SimulatedDrive::CircleState {
     model::ParameterValues backupX, backupY;
     sim::CirclePath path;
     std::optional<sim::CircleRun> run;
-    double startS = 0.0;        ///< x's time at the start of the test
-    double positionedS = 0.0;   ///< x's time at which both axes have reached the start point
-    double totalS = 0.0;        ///< positioning + circle + tail [s]
+    double startS = 0.0;      ///< x's time at the start of the test
+    double positionedS = 0.0; ///< x's time at which both axes have reached the start point
+    double totalS = 0.0;      ///< positioning + circle + tail [s]
 };
 
 namespace {
@@ -264,7 +272,8 @@ bool SimulatedDrive::testMoves(const sim::AxisSimulator* axis) const
 void SimulatedDrive::abortCircle(const std::string& why)
 {
     // Stop both axes at once: hold velocity 0 and restore both axes' parameters.
-    for (auto [sim, backup] : {std::pair{m_circle->x, &m_circle->backupX}, std::pair{m_circle->y, &m_circle->backupY}}) {
+    for (auto [sim, backup] :
+         {std::pair{m_circle->x, &m_circle->backupX}, std::pair{m_circle->y, &m_circle->backupY}}) {
         sim->stopTrace();
         sim->setVelocityCommand({});
         sim->setTorqueInjection({});
@@ -275,4 +284,4 @@ void SimulatedDrive::abortCircle(const std::string& why)
     m_status = {TestState::Aborted, m_status.progress, why};
 }
 
-}  // namespace axistune::device
+} // namespace axistune::device

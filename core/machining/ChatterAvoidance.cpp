@@ -147,6 +147,27 @@ double StageDob::step(double positionM, double thrustN)
 
 // ---- adaptive avoidance ---------------------------------------------------------------------------------
 
+Result<dsp::FilterCascade> bandPassSections(int sections, double f1, double f2, double ts)
+{
+    if (sections < 1 || sections > 8)
+        return makeError(ErrorCode::OutOfRange,
+                         "band-pass: sections must be in [1, 8] (got " + std::to_string(sections) + ")");
+    if (!(ts > 0.0) || !std::isfinite(ts))
+        return makeError(ErrorCode::OutOfRange, "band-pass: sample period must be > 0 s");
+    if (!(f1 > 0.0) || !(f2 > f1) || !(f2 < 0.5 / ts) || !std::isfinite(f2))
+        return makeError(ErrorCode::OutOfRange,
+                         "band-pass: need 0 < " + str(f1) + " < " + str(f2) + " < Nyquist " + str(0.5 / ts) + " Hz");
+    // H(s') = B s'/(s'² + B s' + W0²) with s' = (1 − z⁻¹)/(1 + z⁻¹), W1,2 = tan(π f1,2 t_s), B = W2 − W1,
+    // W0² = W1 W2: the digital −3 dB edges are exactly f1 and f2.
+    const double w1 = std::tan(std::numbers::pi * f1 * ts), w2 = std::tan(std::numbers::pi * f2 * ts);
+    const double b = w2 - w1, w0 = w1 * w2;
+    const double a0 = 1.0 + b + w0;
+    dsp::FilterCascade c;
+    for (int i = 0; i < sections; ++i)
+        c.add(dsp::Biquad(b / a0, 0.0, -b / a0, 2.0 * (w0 - 1.0) / a0, (1.0 - b + w0) / a0));
+    return c;
+}
+
 AdaptiveOptions adaptiveTable4Dob()
 {
     return AdaptiveOptions{};
@@ -225,6 +246,19 @@ Result<AdaptiveAvoidance> AdaptiveAvoidance::create(const AdaptiveOptions& o, in
             return makeError(lp.error().code, "pre-filter low-pass: " + lp.error().detail);
         for (const auto& b : lp->stages())
             a.m_pre.add(b);
+    }
+    if (o.modeBandCentreHz != 0.0 || o.modeBandWidthHz != 0.0) {
+        if (!(o.modeBandCentreHz > 0.0) || !(o.modeBandWidthHz > 0.0) ||
+            !(o.modeBandWidthHz < 2.0 * o.modeBandCentreHz))
+            return makeError(ErrorCode::OutOfRange, "tool-mode band: need centre > 0 and 0 < width < 2 centre (got " +
+                                                        str(o.modeBandCentreHz) + ", " + str(o.modeBandWidthHz) +
+                                                        " Hz)");
+        auto bp = bandPassSections(o.modeBandSections, o.modeBandCentreHz - 0.5 * o.modeBandWidthHz,
+                                   o.modeBandCentreHz + 0.5 * o.modeBandWidthHz, o.samplePeriodS);
+        if (!bp)
+            return makeError(bp.error().code, "tool-mode " + bp.error().detail);
+        for (const auto& s : bp->stages())
+            a.m_pre.add(s);
     }
     a.m_kf = ChatterFrequencyEstimator(o.kalman, o.samplePeriodS);
     return a;

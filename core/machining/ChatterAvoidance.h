@@ -94,6 +94,13 @@ struct AdaptiveOptions {
     double thresholdPower = 1e4;               ///< σ_th on the filtered signal squared (Table 4(a): 10000 N²)
     double highPassHz = 1000.0;                ///< pre-filter: high-pass corner (4th order); Ch.4 BPF 1000–2000 Hz
     double lowPassHz = 2000.0;                 ///< pre-filter: low-pass corner (4th order); 0 or ≥ Nyquist: none
+    /// Tool-mode band (not in Table 4; docs/chatter-avoidance.md "DOB path"): after the pre-filter, a band-pass
+    /// of `modeBandSections` identical 2nd-order sections with −3 dB edges (per section) at centre ± width/2.
+    /// Centre = the tool's mode f_n, width = the tooth-passing frequency, so that of the comb f_c + k f_TPE that
+    /// the force carries, one line reaches the N_d = 2 estimator. 0 = off.
+    double modeBandCentreHz = 0.0;
+    double modeBandWidthHz = 0.0;
+    int modeBandSections = 3;
     double holdS = 0.1;     ///< time between adaptation steps (the speed settles, the estimate re-tracks)
     int maxSteps = 5;       ///< step limit
     bool multiMode = false; ///< Method 3: J_chat search instead of the nearest pocket
@@ -101,6 +108,10 @@ struct AdaptiveOptions {
     int searchBelow = 1, searchAbove = 1;  ///< n̲, n̄ (the thesis uses 1, 1)
     double costTarget = 0.01;              ///< J_chat accepted ("cost met") at or below this
 };
+
+/// `sections` identical 2nd-order band-pass sections (bilinear, edges pre-warped), each with unit gain at the
+/// centre √(f1 f2) and −3 dB at f1 and f2. Errors: sections < 1 or > 8, not 0 < f1 < f2 < Nyquist.
+Result<dsp::FilterCascade> bandPassSections(int sections, double f1Hz, double f2Hz, double periodS);
 
 /// Table 4 (DOB, Ch.4) defaults for Method 2; Table 3 (accelerometer, Ch.3) with a 100 Hz high-pass; Table 5
 /// (accelerometer, two modes, Ch.5) for Method 3.

@@ -20,14 +20,21 @@ Status checkModes(const std::vector<ModalParameters>& modes, const char* key)
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const auto& m = modes[i];
         const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
-        if (!std::isfinite(m.massKg) || m.massKg <= 0.0)
-            return makeError(ErrorCode::OutOfRange, where + ".mass_kg must be > 0 (got " + std::to_string(m.massKg) + ")");
-        if (!std::isfinite(m.dampingNsPerM) || m.dampingNsPerM < 0.0)
-            return makeError(ErrorCode::OutOfRange,
-                             where + ".damping_Ns_per_m must be >= 0 (got " + std::to_string(m.dampingNsPerM) + ")");
-        if (!std::isfinite(m.stiffnessNPerM) || m.stiffnessNPerM <= 0.0)
-            return makeError(ErrorCode::OutOfRange,
-                             where + ".stiffness_N_per_m must be > 0 (got " + std::to_string(m.stiffnessNPerM) + ")");
+        // A mode with mass, damping and stiffness all negative is a negative residue (the second term of a
+        // product of two resonances, e.g. the thesis's cascade (5-1)); its pole is the same as with all positive.
+        if (!std::isfinite(m.massKg) || m.massKg == 0.0)
+            return makeError(ErrorCode::OutOfRange, where + ".mass_kg must be non-zero (got " +
+                                                        std::to_string(m.massKg) +
+                                                        "; > 0, or < 0 with negative damping and stiffness)");
+        const double sign = m.massKg > 0.0 ? 1.0 : -1.0;
+        if (!std::isfinite(m.dampingNsPerM) || sign * m.dampingNsPerM < 0.0)
+            return makeError(ErrorCode::OutOfRange, where + ".damping_Ns_per_m must have the sign of mass_kg (got " +
+                                                        std::to_string(m.dampingNsPerM) + ")");
+        if (!std::isfinite(m.stiffnessNPerM) || sign * m.stiffnessNPerM <= 0.0)
+            return makeError(ErrorCode::OutOfRange, where +
+                                                        ".stiffness_N_per_m must be non-zero with the sign of "
+                                                        "mass_kg (got " +
+                                                        std::to_string(m.stiffnessNPerM) + ")");
     }
     return Status::success();
 }
@@ -42,7 +49,7 @@ Prim prim(double p)
     return {0.5 * s * s, 0.5 * p - 0.25 * std::sin(2.0 * p), 0.5 * p + 0.25 * std::sin(2.0 * p)};
 }
 
-}  // namespace
+} // namespace
 
 Status validateTool(const ToolModes& tool)
 {
@@ -57,7 +64,8 @@ Status validateTool(const ToolModes& tool)
 Status validateCut(const CuttingConditions& cut)
 {
     if (cut.teeth < 1 || cut.teeth > 100)
-        return makeError(ErrorCode::OutOfRange, "teeth must be between 1 and 100 (got " + std::to_string(cut.teeth) + ")");
+        return makeError(ErrorCode::OutOfRange,
+                         "teeth must be between 1 and 100 (got " + std::to_string(cut.teeth) + ")");
     if (!std::isfinite(cut.ktNPerM2) || cut.ktNPerM2 <= 0.0)
         return makeError(ErrorCode::OutOfRange, "Kt_N_per_m2 must be > 0 (got " + std::to_string(cut.ktNPerM2) + ")");
     if (!std::isfinite(cut.krNPerM2) || cut.krNPerM2 < 0.0)
@@ -75,14 +83,15 @@ double naturalFrequencyHz(const ModalParameters& m)
 
 double dampingRatio(const ModalParameters& m)
 {
-    return m.dampingNsPerM / (2.0 * std::sqrt(m.stiffnessNPerM * m.massKg));
+    return std::abs(m.dampingNsPerM) / (2.0 * std::sqrt(m.stiffnessNPerM * m.massKg)); // also a negative residue
 }
 
 std::complex<double> compliance(const std::vector<ModalParameters>& modes, double omegaRadS)
 {
     std::complex<double> g = 0.0;
     for (const auto& m : modes)
-        g += 1.0 / std::complex<double>(m.stiffnessNPerM - m.massKg * omegaRadS * omegaRadS, m.dampingNsPerM * omegaRadS);
+        g += 1.0 /
+             std::complex<double>(m.stiffnessNPerM - m.massKg * omegaRadS * omegaRadS, m.dampingNsPerM * omegaRadS);
     return g;
 }
 
@@ -128,4 +137,4 @@ Eigen::Matrix2d averageCuttingMatrix(const CuttingConditions& cut, double thetaA
     return sum / (thetaB - thetaA);
 }
 
-}  // namespace axistune::machining
+} // namespace axistune::machining

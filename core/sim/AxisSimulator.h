@@ -26,9 +26,9 @@
 namespace axistune::sim {
 
 enum class ControlMode {
-    Velocity,  ///< velocity command from setVelocityCommand, position loop open
-    Position,  ///< position command from setPositionProfile
-    Current,   ///< q-axis current command from setCurrentCommand; velocity and position loops open
+    Velocity, ///< velocity command from setVelocityCommand, position loop open
+    Position, ///< position command from setPositionProfile
+    Current,  ///< q-axis current command from setCurrentCommand; velocity and position loops open
 };
 
 /// Rate of the trace recorder: every trace.divider velocity periods, or every current-loop period.
@@ -43,12 +43,12 @@ struct ScopeSignal {
 
 /// Switches for the non-ideal parts. All on by default; tests turn them off to see the linear part.
 struct Nonlinearities {
-    bool friction = true;             ///< Coulomb friction
-    bool inductanceDrop = true;       ///< L falls with current
-    bool quantization = true;         ///< encoder and scale resolution
-    bool noise = true;                ///< measurement noise
-    bool lostMotion = true;           ///< elastic lost motion of the ball screw
-    bool backlash = true;             ///< play between nut and table (plant.backlash)
+    bool friction = true;       ///< Coulomb friction
+    bool inductanceDrop = true; ///< L falls with current
+    bool quantization = true;   ///< encoder and scale resolution
+    bool noise = true;          ///< measurement noise
+    bool lostMotion = true;     ///< elastic lost motion of the ball screw
+    bool backlash = true;       ///< play between nut and table (plant.backlash)
 };
 
 class AxisSimulator {
@@ -109,8 +109,8 @@ public:
 
     // Instantaneous state (SI; positions in axis units).
     double motorVelocity() const { return PlantModel::motorVelocity(m_x); }
-    double motorPosition() const;   ///< axis units from the rigid motor angle
-    double tablePosition() const;   ///< load side including elastic lost motion and backlash
+    double motorPosition() const; ///< axis units from the rigid motor angle
+    double tablePosition() const; ///< load side including elastic lost motion and backlash
     double torque() const { return m_plant->config().torqueConstantNmPerA * PlantModel::current(m_x); }
     double torqueCommand() const { return m_torqueCmd; }
     double positionCommand() const { return m_posCmd; }
@@ -152,7 +152,7 @@ private:
     double tableBeforePlay() const; ///< table position without the backlash
     void updatePlay();
     double quantize(double value, double step) const;
-    double screwLead() const;  ///< R [m/rad] for linear axes, 1 for rotary
+    double screwLead() const; ///< R [m/rad] for linear axes, 1 for rotary
 
     /// Parameters used in the loops, copied from m_values at configure() (no map look-ups per tick).
     struct Loop {
@@ -180,7 +180,7 @@ private:
     Eigen::VectorXd m_x;
     double m_hCurrent = 62.5e-6;
     int m_velDiv = 4;
-    int m_posDiv = 4;  ///< in velocity periods
+    int m_posDiv = 4; ///< in velocity periods
     int m_intDiv = 1;
     int m_traceDiv = 1;
     int m_deadTicks = 1;
@@ -233,4 +233,4 @@ private:
     ScopeTap m_scopeTap;
 };
 
-}  // namespace axistune::sim
+} // namespace axistune::sim

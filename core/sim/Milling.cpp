@@ -21,15 +21,20 @@ Status checkModes(const std::vector<MillingMode>& modes, const std::string& dir)
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const auto& m = modes[i];
         const std::string at = "modes_" + dir + "[" + std::to_string(i) + "]";
-        if (!std::isfinite(m.massKg) || m.massKg <= 0.0)
-            return makeError(ErrorCode::OutOfRange, at + ".mass_kg must be > 0 (got " + std::to_string(m.massKg) + ")");
-        if (!std::isfinite(m.stiffnessNPerM) || m.stiffnessNPerM <= 0.0)
-            return makeError(ErrorCode::OutOfRange,
-                             at + ".stiffness_N_per_m must be > 0 (got " + std::to_string(m.stiffnessNPerM) + ")");
-        if (!std::isfinite(m.dampingNsPerM) || m.dampingNsPerM < 0.0)
-            return makeError(ErrorCode::OutOfRange,
-                             at + ".damping_Ns_per_m must be >= 0 (got " + std::to_string(m.dampingNsPerM) + ")");
-        if (m.dampingNsPerM >= 2.0 * std::sqrt(m.massKg * m.stiffnessNPerM))
+        // mass, damping and stiffness all negative: a negative-residue mode (ToolModel.cpp, e.g. the cascade (5-1))
+        if (!std::isfinite(m.massKg) || m.massKg == 0.0)
+            return makeError(ErrorCode::OutOfRange, at + ".mass_kg must be non-zero (got " + std::to_string(m.massKg) +
+                                                        "; > 0, or < 0 with negative damping and stiffness)");
+        const double sign = m.massKg > 0.0 ? 1.0 : -1.0;
+        if (!std::isfinite(m.stiffnessNPerM) || sign * m.stiffnessNPerM <= 0.0)
+            return makeError(ErrorCode::OutOfRange, at +
+                                                        ".stiffness_N_per_m must be non-zero with the sign of mass_kg "
+                                                        "(got " +
+                                                        std::to_string(m.stiffnessNPerM) + ")");
+        if (!std::isfinite(m.dampingNsPerM) || sign * m.dampingNsPerM < 0.0)
+            return makeError(ErrorCode::OutOfRange, at + ".damping_Ns_per_m must have the sign of mass_kg (got " +
+                                                        std::to_string(m.dampingNsPerM) + ")");
+        if (std::abs(m.dampingNsPerM) >= 2.0 * std::sqrt(m.massKg * m.stiffnessNPerM))
             return makeError(ErrorCode::OutOfRange, at + ": the mode must be underdamped (damping ratio < 1)");
     }
     return Status::success();

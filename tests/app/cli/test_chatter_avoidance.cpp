@@ -36,10 +36,29 @@ TEST(CliChatterAvoidance, AdaptiveSummaryAndChannels)
     ASSERT_FALSE(j.at("steps").empty());
     EXPECT_EQ(j.at("steps")[0].at("rho").get<int>(), 7);
     EXPECT_TRUE(j.contains("onset_to_settled_s"));
+    EXPECT_TRUE(j.at("triggered").get<bool>());
+    EXPECT_TRUE(j.at("settled").get<bool>());
     const std::string csv = readFileText(dir / "cut.csv");
     for (const char* ch : {"spindle_speed_rpm", "spindle_speed_cmd_rpm", "chatter_frequency_Hz", "avoid_cost",
                            "avoid_power", "tool_accel_y_m_s2"})
         EXPECT_NE(csv.find(ch), std::string::npos) << ch;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CliChatterAvoidance, DobRunWithTable4ThresholdReportsNoTrigger)
+{
+    // Same cut, DOB with Table 4 (σ_th 1e4 N²): the in-band force stays below 100 N, nothing triggers; the summary
+    // says so with `triggered: false` and no onset (it used to fail writing a null onset).
+    const auto dir = makeTempDir("avoiddob");
+    const auto r = runCli(base(dir) + "--rpm 2800 --depth-m 1.5e-3 --duration-s 0.4 --avoid adaptive");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("sensor"), "dob");
+    EXPECT_FALSE(j.at("triggered").get<bool>());
+    EXPECT_FALSE(j.at("settled").get<bool>());
+    EXPECT_FALSE(j.contains("onset_s"));
+    EXPECT_TRUE(j.at("steps").empty());
+    EXPECT_DOUBLE_EQ(j.at("final_spindle_rpm").get<double>(), 2800.0);
     std::filesystem::remove_all(dir);
 }
 
@@ -65,7 +84,10 @@ TEST(CliChatterAvoidance, BadOptionsExit2WithTheOptionNamed)
         {"--avoid none --esc-pc 3", "--esc-pc"},
         {"--avoid adaptive --sensor accel --dob-mass-kg 10", "--dob-mass-kg"},
         {"--avoid adaptive --dob-mass-kg -1", "M_tn"},
-        {"--rpm 50000", "spindle"}, // beyond the spindle limit
+        {"--rpm 50000", "spindle"},                                        // beyond the spindle limit
+        {"--avoid adaptive --sensor accel --tool-band on", "--tool-band"}, // adaptive + DOB only
+        {"--avoid multimode --sensor dob --tool-band on", "--tool-band"},
+        {"--avoid adaptive --tool-band maybe", "--tool-band"},
     };
     for (const auto& c : cases) {
         const auto r = runCli(b + (c.args.rfind("--rpm", 0) == 0 ? "" : "--rpm 2800 ") + c.args);

@@ -4,6 +4,7 @@
 // against the spec's derived numbers, the stage DOB on a pure-inertia stage (spec §6.4 validation) and the
 // option checks. Reference numbers: tests/data/chatter/jchat_reference.py (output jchat_reference.txt).
 #include "core/machining/ChatterAvoidance.h"
+#include "core/machining/ToolModel.h"
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -220,4 +221,52 @@ TEST(ChatterAvoidance, AdaptiveOptionsChecked)
     o = adaptiveTable4Dob();
     o.highPassHz = 3000.0; // above Nyquist at 250 µs
     EXPECT_FALSE(AdaptiveAvoidance::create(o, 4));
+}
+
+TEST(ChatterAvoidance, ToolModeBandPassHasItsEdgesAndCentre)
+{
+    // n identical bilinear band-pass sections with pre-warped edges f1, f2: unit gain at the digital centre
+    // f0 = atan(√(W1 W2))/(π t_s), W = tan(π f t_s), 2^(−n/2) at f1 and f2 (−3 dB per section); elsewhere the
+    // analogue prototype at the warped frequency, |H| = (B W/√((W0² − W²)² + (B W)²))^n.
+    const double ts = 250e-6, f1 = 1380.6 - 93.33, f2 = 1380.6 + 93.33;
+    auto bp = bandPassSections(3, f1, f2, ts);
+    ASSERT_TRUE(bp) << bp.error().detail;
+    const auto warp = [ts](double f) { return std::tan(std::numbers::pi * f * ts); };
+    const double w1 = warp(f1), w2 = warp(f2), b = w2 - w1, w0sq = w1 * w2;
+    const double f0 = std::atan(std::sqrt(w0sq)) / (std::numbers::pi * ts);
+    EXPECT_NEAR(std::abs(bp->response(f0, ts)), 1.0, 1e-9);
+    EXPECT_NEAR(std::abs(bp->response(f1, ts)), std::pow(2.0, -1.5), 1e-9);
+    EXPECT_NEAR(std::abs(bp->response(f2, ts)), std::pow(2.0, -1.5), 1e-9);
+    for (double f : {1394.8, 1581.5, 1208.1, 500.0, 1900.0}) {
+        const double w = warp(f);
+        const double one = b * w / std::hypot(w0sq - w * w, b * w);
+        EXPECT_NEAR(std::abs(bp->response(f, ts)), one * one * one, 1e-9) << f;
+    }
+    // The +1 tooth-passing sideband (1581.5 Hz) is passed at < 0.1 of the chatter line (1394.8 Hz).
+    EXPECT_LT(std::abs(bp->response(1581.5, ts)), 0.1 * std::abs(bp->response(1394.8, ts)));
+    EXPECT_FALSE(bandPassSections(0, f1, f2, ts));
+    EXPECT_FALSE(bandPassSections(3, f2, f1, ts));
+    EXPECT_FALSE(bandPassSections(3, f1, 2100.0, ts)); // above Nyquist 2000 Hz
+}
+
+TEST(ChatterAvoidance, NegativeResidueModeAcceptedMixedSignsRefused)
+{
+    // A mode with mass, damping and stiffness all negative is the negative residue of a product of resonances
+    // (the cascade (5-1), tests/data/chatter/cascade_tool.py); a mode with mixed signs is a typo and refused,
+    // the field named.
+    ToolModes t;
+    t.modesY = {{0.5346547242, 96.45171224, 43499722.22}, {-0.5346547242, -76.99028028, -76990280.28}};
+    EXPECT_TRUE(validateTool(t).ok());
+    EXPECT_NEAR(naturalFrequencyHz(t.modesY[1]), 12000.0 / (2.0 * kPi), 1e-3); // ω₂ of (5-1)
+    EXPECT_NEAR(dampingRatio(t.modesY[1]), 0.006, 1e-9);                       // ζ₂ of (5-1)
+    t.modesY[1].stiffnessNPerM = 76990280.28;
+    auto e = validateTool(t);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().detail.find("modes_y[1].stiffness_N_per_m"), std::string::npos) << e.error().detail;
+    t.modesY[1] = {-0.53, 76.99, -76990280.28};
+    e = validateTool(t);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().detail.find("modes_y[1].damping_Ns_per_m"), std::string::npos) << e.error().detail;
+    t.modesY[1] = {0.0, 0.0, 1e7};
+    EXPECT_FALSE(validateTool(t).ok());
 }

@@ -47,6 +47,8 @@ pc = 8 * 2 * math.pi
 h, k, wp = pc / 3, 8 * pc / 3, math.sqrt(3) * pc
 print(f"  h_c {h:.10g} rad/s = {h / 2 / math.pi:.10g} Hz, k_c {k:.10g} 1/s, w_p {wp:.10g} rad/s = {wp / 2 / math.pi:.10g} Hz")
 print("  roots of (6-22) denominator:", np.roots([1, h + k, wp ** 2, wp ** 2 * h]))
+# Superseded: this all-positive sum puts the second mode 176 deg out of phase with the cascade (5-1); the sample
+# tool and the tests now use the exact partial-fraction sum of cascade_tool.py (negative-residue second mode).
 print("two-mode tool (5-1) as a modal sum with the same peaks, frequencies and damping")
 for wn, z, pk in ((9020.0, 0.01, 1.149e-6), (12000.0, 0.006, 1.082e-6)):
     kk = 1 / (2 * z * pk)
