@@ -946,8 +946,13 @@ Result<AutoTuneResult> runAutoTunePositions(device::Drive& drive, const Options&
 
 void addPositionsJson(const AutoTuneResult& r, nlohmann::json& j)
 {
-    if (!r.final || r.final->positions.empty())
+    if (!r.final || r.final->positions.empty()) {
+        // A refused run over positions: the map as the frf step measured it.
+        for (const auto& s : r.steps)
+            if (s.name == "frf" && s.measured.contains("resonance_map"))
+                j["resonance_map"] = s.measured["resonance_map"];
         return;
+    }
     nlohmann::json per = nlohmann::json::array(), map = nlohmann::json::array();
     for (const auto& p : r.final->positions) {
         per.push_back({{"position", p.position},
