@@ -264,7 +264,7 @@ Status Positions::moveTo(double x, double& motionS)
 {
     auto r = device::moveAxisTo(m_drive, m_o.axis, x, {}, m_o.run);
     if (!r)
-        return makeError(r.error().code == ErrorCode::Safety ? ErrorCode::Safety : r.error().code,
+        return makeError(r.error().code,
                          (r.error().code == ErrorCode::Safety ? "drive fault while moving to " : "moving to ") +
                              fmt(x, 6) + ": " + r.error().detail);
     m_moved = true;
@@ -795,13 +795,10 @@ Result<AutoTuneResult> Positions::run()
     {
         Step s;
         s.name = "safety-envelope";
-        auto here = device::moveAxisTo(m_drive, axis, 0.0, {}, m_o.run); // refused outside: found by its hold
-        (void)here;
-        // moveAxisTo moved to 0; the axis stood at here->from.
+        auto here = device::findPosition(m_drive, axis, m_o.run);
         if (!here)
             return refuseWith(here.error());
         m_start = here->from;
-        m_moved = here->from != here->to;
         m_linear = here->linear;
         m_motion += here->motionTimeS;
         s.motionTimeS = here->motionTimeS;

@@ -62,6 +62,29 @@ Result<double> travelWindow(Drive& drive, const std::string& axis)
     return lim->travelWindow;
 }
 
+Result<MoveToResult> findPosition(Drive& drive, const std::string& axis, const RunOptions& run)
+{
+    MoveToResult r;
+    RunOptions withTrace = run;
+    withTrace.readTrace = true;
+    TestRequest hold;
+    hold.axis = axis;
+    hold.type = TestType::Hold;
+    hold.durationS = 0.01;
+    auto holdPlan = drive.planTest(hold);
+    auto h = runTest(drive, hold, withTrace);
+    if (!h)
+        return makeError(h.error().code, "finding the position of axis " + axis + ": " + h.error().detail);
+    r.motionTimeS = machineTime(*h, holdPlan);
+    const model::Channel* pos = h->trace ? positionCommand(*h->trace) : nullptr;
+    if (!pos)
+        return makeError(ErrorCode::Device,
+                         "finding the position of axis " + axis + ": the hold's trace has no position_cmd_* channel");
+    r.linear = pos->name.size() < 2 || pos->name.substr(pos->name.size() - 2) == "_m";
+    r.from = r.to = pos->data.back();
+    return r;
+}
+
 Result<MoveToResult> moveAxisTo(Drive& drive, const std::string& axis, double target, const MoveToOptions& o,
                                 const RunOptions& run)
 {
@@ -74,25 +97,12 @@ Result<MoveToResult> moveAxisTo(Drive& drive, const std::string& axis, double ta
         return makeError(ErrorCode::OutOfRange, "axis " + axis + ": position " + model::formatNumber(target, 6) +
                                                     " lies outside the drive's travel window +-" +
                                                     model::formatNumber(*window, 6));
-    MoveToResult r;
+    auto found = findPosition(drive, axis, run);
+    if (!found)
+        return found.error();
+    MoveToResult r = *found;
     RunOptions withTrace = run;
     withTrace.readTrace = true;
-    TestRequest hold;
-    hold.axis = axis;
-    hold.type = TestType::Hold;
-    hold.durationS = 0.01;
-    auto holdPlan = drive.planTest(hold);
-    auto h = runTest(drive, hold, withTrace);
-    if (!h)
-        return makeError(h.error().code, "finding the position of axis " + axis + ": " + h.error().detail);
-    r.motionTimeS += machineTime(*h, holdPlan);
-    const model::Channel* pos = h->trace ? positionCommand(*h->trace) : nullptr;
-    if (!pos)
-        return makeError(ErrorCode::Device,
-                         "finding the position of axis " + axis + ": the hold's trace has no position_cmd_* channel");
-    r.linear = pos->name.size() < 2 || pos->name.substr(pos->name.size() - 2) == "_m";
-    r.from = pos->data.back();
-    r.to = r.from;
     const double distance = target - r.from;
     if (std::abs(distance) <= 1e-9 * std::max(1.0, *window))
         return r;

@@ -33,6 +33,9 @@ Status checkCanMoveTo(Drive& drive, const std::string& axis);
 /// The drive's travel window of `axis` [m or rad] (finite and > 0), or the reason it has none.
 Result<double> travelWindow(Drive& drive, const std::string& axis);
 
+/// Where `axis` stands: a 10 ms hold, the last sample of its position_cmd_* channel (from = to = that position).
+Result<MoveToResult> findPosition(Drive& drive, const std::string& axis, const RunOptions& run = {});
+
 /// Moves `axis` to `target`. Errors: checkCanMoveTo's, a target outside the travel window (OutOfRange, naming both),
 /// the drive's refusals and errors of the tests (runTest's).
 Result<MoveToResult> moveAxisTo(Drive& drive, const std::string& axis, double target, const MoveToOptions& options = {},
