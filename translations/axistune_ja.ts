@@ -6358,8 +6358,8 @@
     </message>
     <message>
         <location filename="../app/gui/main.cpp" line="29" />
-        <source>Simulated machine preset (vmc, dd-table, two-inertia).</source>
-        <translation>シミュレーション機のプリセット (vmc, dd-table, two-inertia)。</translation>
+        <source>Simulated machine preset (vmc, dd-table, two-inertia, long-axis).</source>
+        <translation>シミュレーション機のプリセット (vmc, dd-table, two-inertia, long-axis)。</translation>
     </message>
     <message>
         <location filename="../app/gui/main.cpp" line="31" />

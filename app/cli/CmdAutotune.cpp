@@ -6,10 +6,14 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/autotune/AutoTune.h"
 #include "core/device/ModbusDrive.h"
+#include "core/device/MoveTo.h"
+#include "core/model/Number.h"
 
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <string>
 
 namespace axistune::cli {
 
@@ -25,6 +29,9 @@ struct AutotuneOptions {
     bool dryRun = false;
     std::uint64_t seed = 1;
     std::string outPath;
+    int positions = 1;
+    std::string at; ///< --at: move there first (one position)
+    bool budgetGiven = false;
 };
 
 int runAutotune(const AutotuneOptions& o)
@@ -38,10 +45,26 @@ int runAutotune(const AutotuneOptions& o)
         return bad("--time-budget must be > 0 s");
     if (!(o.minBandwidthHz >= 0.0) || !std::isfinite(o.minBandwidthHz))
         return bad("--min-bandwidth-hz must be >= 0 (0: the style's)");
+    if (o.positions < 1)
+        return bad("--positions must be >= 1 (got " + model::formatNumber(o.positions, 10) + ")");
+    if (o.positions > 1 && !o.at.empty())
+        return bad("--at and --positions N > 1 exclude each other (--positions spreads the positions over the "
+                   "travel window itself)");
+    if (o.positions > 1 && !o.motorPath.empty())
+        return bad("--motor is for one position: --positions keeps the current loop (tune it without --positions "
+                   "first)");
+    std::optional<double> at;
+    if (!o.at.empty()) {
+        at = model::parseNumber(o.at);
+        if (!at || !std::isfinite(*at))
+            return bad("--at: '" + o.at + "' is not a number");
+    }
     autotune::Options opts;
     opts.axis = o.axis;
     opts.style = *style;
-    opts.timeBudgetS = o.timeBudgetS;
+    // The default budget is 30 s of motion per position.
+    opts.timeBudgetS = o.budgetGiven ? o.timeBudgetS : o.timeBudgetS * o.positions;
+    opts.positions = o.positions;
     opts.dryRun = o.dryRun;
     opts.minBandwidthHz = o.minBandwidthHz;
     if (!o.motorPath.empty()) {
@@ -53,11 +76,31 @@ int runAutotune(const AutotuneOptions& o)
     auto drive = device::connectAny({o.connect, o.seed});
     if (!drive)
         return reportError(cmd, drive.error());
+    std::optional<device::MoveToResult> moved;
+    if (at) {
+        auto m = device::moveAxisTo(**drive, o.axis, *at);
+        if (!m)
+            return reportError(cmd, makeError(m.error().code, "--at: " + m.error().detail));
+        moved = *m;
+    }
     auto r = autotune::runAutoTune(**drive, opts);
     if (!r)
         return reportError(cmd, r.error());
     auto j = autotune::resultJson(*r, opts);
     j["connection"] = o.connect;
+    j["positions"] = o.positions;
+    if (moved)
+        j["at"] = {{"position", moved->to}, {"from", moved->from}, {"motion_time_s", moved->motionTimeS}};
+    if (j.contains("resonance_map")) {
+        std::cerr << "resonance map (first resonance of the open velocity loop against position):\n";
+        for (const auto& m : j["resonance_map"])
+            std::cerr << "  " << model::formatNumber(m["position"].get<double>(), 4) << " : "
+                      << (m.contains("frequency_Hz") && m["frequency_Hz"].is_number()
+                              ? model::formatNumber(m["frequency_Hz"].get<double>(), 4) + " Hz, " +
+                                    model::formatNumber(m["height_dB"].get<double>(), 3) + " dB"
+                              : std::string("none in the band"))
+                      << "\n";
+    }
     const int written = writeJsonResult(cmd, j, o.outPath);
     if (written != 0)
         return written;
@@ -80,7 +123,15 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--style", o->style,
                        "gentle (60 deg / 10 dB, 20 Hz), standard (50 deg / 8 dB, 40 Hz; default) or stiff "
                        "(45 deg / 6 dB, 80 Hz): design margins and required velocity crossover");
-        sub.add_option("--time-budget", o->timeBudgetS, "seconds of motion for the whole sequence (default 30)");
+        sub.add_option("--time-budget", o->timeBudgetS,
+                       "seconds of motion for the whole sequence (default 30 per position)");
+        sub.add_option("--positions", o->positions,
+                       "N >= 2: measure, design and verify at N positions spread over the drive's travel window "
+                       "(the drive moves the axis between them by jogs); the gains must meet the margins at every "
+                       "one; the result holds final.positions[] and the resonance map (default 1: where the axis "
+                       "stands)");
+        sub.add_option("--at", o->at,
+                       "move the axis to this position [m or rad] first, then tune there (one position)");
         sub.add_option("--min-bandwidth-hz", o->minBandwidthHz,
                        "required velocity crossover [Hz] (default: the style's); a resonance within a factor 3 of "
                        "it is refused");
@@ -90,7 +141,10 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_flag("--dry-run", o->dryRun, "run every step, then restore every parameter (nothing applied)");
         sub.add_option("--seed", o->seed, "noise seed of an embedded simulated machine");
         sub.add_option("--out", o->outPath, "write the result JSON to this file instead of stdout");
-        return recordSessions(sub, [o] { return runAutotune(*o); });
+        return recordSessions(sub, [o, &sub] {
+            o->budgetGiven = sub.count("--time-budget") > 0;
+            return runAutotune(*o);
+        });
     }}};
 
 } // namespace

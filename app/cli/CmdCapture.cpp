@@ -5,6 +5,7 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/device/AdaptiveFrf.h"
 #include "core/device/Drive.h"
+#include "core/device/MoveTo.h"
 #include "core/device/MultisineTest.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/device/TestRunner.h"
@@ -60,6 +61,7 @@ struct CaptureOptions {
     std::vector<std::string> set;
     bool linear = false;
     CircleCliOptions circle;  ///< --test circle
+    std::string at;           ///< --at: move the axis there first (device::moveAxisTo)
 };
 
 /// Parses the --set KEY=VALUE options (VALUE a number in SI units) and checks each key and value
@@ -312,6 +314,20 @@ int runCapture(const CaptureOptions& o)
                                           "pass from what it measured)"));
     if (o.test != "frf" && !o.sweepOut.empty())
         return reportError(cmd, makeError(ErrorCode::BadInput, "--sweep-out is only for --test frf"));
+    if (!o.at.empty()) {
+        // --at: the axis moves there first by a jog the drive checks (device/MoveTo.h), with the parameters as found.
+        const auto x = model::parseNumber(o.at);
+        if (!x || !std::isfinite(*x))
+            return reportError(cmd, makeError(ErrorCode::BadInput, "--at: '" + o.at + "' is not a number"));
+        if (o.test == "circle" || o.test == "jog")
+            return reportError(cmd, makeError(ErrorCode::BadInput, "--at is not available for --test " + o.test));
+        auto moved = device::moveAxisTo(**drive, o.axis, *x);
+        if (!moved)
+            return reportError(cmd, makeError(moved.error().code, "--at: " + moved.error().detail));
+        std::cerr << "axistune-cli capture: axis " << o.axis << " moved from " << model::formatNumber(moved->from, 6)
+                  << " to " << model::formatNumber(moved->to, 6) << (moved->linear ? " m" : " rad") << " ("
+                  << model::formatNumber(moved->motionTimeS, 3) << " s of motion)\n";
+    }
     if (auto st = prepareDrive(**drive, o); !st)
         return reportError(cmd, st.error());
     // The drive plans the test first (Drive::planTest): a request beyond its limits is refused with the
@@ -368,6 +384,9 @@ const CliRegistrar kRegistrar{{"capture", "Run a test on a drive and write the t
             ->capture_default_str();
         sub.add_option("--trace-divider", o->divider, "trace every N velocity periods (0: drive setting)");
         sub.add_option("--seed", o->seed, "noise seed of the simulated machine")->capture_default_str();
+        sub.add_option("--at", o->at,
+                       "move the axis to this position [m or rad] first (a hold finds it, a jog at 0.5 m/s or 2 rad/s "
+                       "moves it; within the drive's travel window), then write --set and run the test");
         sub.add_option("--method", o->method, "frf: multisweep | conventional | prbs | multisine")->capture_default_str();
         sub.add_option("--fmin", o->fmin, "frf: lowest frequency [Hz]")->capture_default_str();
         sub.add_option("--fmax", o->fmax, "frf: highest frequency [Hz] (below fs; prbs: at most fs/2)")->capture_default_str();

@@ -28,8 +28,9 @@ int main(int argc, char** argv)
     parser.setApplicationDescription(QApplication::translate("main", "Commissioning and tuning of NC feed axes"));
     parser.addHelpOption();
     parser.addVersionOption();
-    QCommandLineOption preset("preset", QApplication::translate("main", "Simulated machine preset (vmc, dd-table, two-inertia)."),
-                              "name", "vmc");
+    QCommandLineOption preset(
+        "preset", QApplication::translate("main", "Simulated machine preset (vmc, dd-table, two-inertia, long-axis)."),
+        "name", "vmc");
     QCommandLineOption uri("connect", QApplication::translate("main", "Connect to this drive: sim:PRESET or modbus://HOST:PORT."),
                            "uri");
     QCommandLineOption noConnect("no-connect", QApplication::translate("main", "Start without a connection."));

@@ -37,7 +37,8 @@ int main(int argc, char** argv)
     device::SimDriveServerOptions o;
     std::vector<std::string> faults;
     std::string writeMap;
-    app.add_option("--preset", o.preset, "machine preset (vmc, dd-table, two-inertia)")->capture_default_str();
+    app.add_option("--preset", o.preset, "machine preset (vmc, dd-table, two-inertia, long-axis)")
+        ->capture_default_str();
     app.add_option("--port", o.port, "TCP port; 0 picks a free port and prints it")->capture_default_str();
     app.add_option("--bind", o.bind, "address to listen on (127.0.0.1 only)")->capture_default_str();
     app.add_option("--seed", o.seed, "noise seed of the simulated machine")->capture_default_str();

@@ -1036,6 +1036,10 @@ Result<AutoTuneResult> runAutoTune(device::Drive& drive, const Options& options)
 {
     if (options.axis.empty())
         return makeError(ErrorCode::BadInput, "no axis given");
+    if (options.positions < 1)
+        return makeError(ErrorCode::BadInput, "the number of positions must be >= 1");
+    if (options.positions > 1)
+        return runAutoTunePositions(drive, options);
     Sequence s(drive, options);
     return s.run();
 }
@@ -1073,6 +1077,7 @@ nlohmann::json resultJson(const AutoTuneResult& r, const Options& o)
         fj["parameters"] = p;
         j["final"] = fj;
     }
+    addPositionsJson(r, j);
     return j;
 }
 

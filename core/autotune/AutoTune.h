@@ -65,6 +65,23 @@ struct Options {
     /// is also checked before each step: set between two tests, the run stops there (Refused, Aborted).
     std::function<void(const std::string& name)> stepStarted;
     std::function<void(const Step&)> stepFinished;
+    /// N >= 2: measure, design and verify at N positions spread over the drive's travel window
+    /// (AutoTunePositions.cpp, docs/tuning.md "Over the travel"); 1: where the axis stands (the sequence above).
+    int positions = 1;
+};
+
+/// One position of a tune over the travel: the re-measured margins and bandwidths there, and the first resonance
+/// of the open loop measured there before the tuning (the resonance map).
+struct PositionFinal {
+    double position = 0.0;                ///< [m or rad], where the drive stood (its position command)
+    double phaseMarginDeg = 0.0;          ///< re-measured
+    double gainMarginDb = 0.0;            ///< re-measured
+    double velocityBandwidthHz = 0.0;     ///< re-measured
+    double positionBandwidthHz = 0.0;     ///< from the re-measured closed velocity loop
+    double predictedPhaseMarginDeg = 0.0; ///< the design's on the FRF measured there
+    double predictedGainMarginDb = 0.0;
+    std::optional<double> firstResonanceHz;       ///< lowest resonance of the open loop before tuning (nullopt: none)
+    std::optional<double> firstResonanceHeightDb; ///< its height above the baseline
 };
 
 struct Final {
@@ -76,6 +93,7 @@ struct Final {
     double peakFollowingError = 0.0;     ///< [m or rad]
     double motionTimeS = 0.0;            ///< machine time of the whole sequence
     model::ParameterValues parameters;   ///< what was (or, dry run, would be) applied
+    std::vector<PositionFinal> positions; ///< --positions N >= 2: every position (the figures above: the worst)
 };
 
 enum class Outcome {
@@ -108,6 +126,12 @@ const std::vector<std::string>& stepNames();
 /// final {phase_margin_deg, gain_margin_dB, velocity_bandwidth_Hz, position_bandwidth_Hz, settling_time_s,
 /// peak_following_error, motion_time_s, parameters}.
 nlohmann::json resultJson(const AutoTuneResult& r, const Options& options);
+
+/// Options::positions >= 2 (AutoTunePositions.cpp); runAutoTune calls it. Errors as runAutoTune's, and BadInput
+/// when the drive cannot move the axis between the measurements (no jog or hold test, no travel window).
+Result<AutoTuneResult> runAutoTunePositions(device::Drive& drive, const Options& options);
+/// Adds positions[] to `final` and the resonance_map[] (docs/formats.md "autotune result") for a tune over positions.
+void addPositionsJson(const AutoTuneResult& r, nlohmann::json& j);
 
 /// −3 dB frequency of a closed loop |T| relative to its first valid line (linear interpolation in log f between
 /// the two lines around it); nullopt when it never falls 3 dB within the valid lines.

@@ -453,8 +453,11 @@ Result<DriveLimits> SimulatedDrive::limits(const std::string& axis)
     l.currentStepMaxSpeedRadS = kMaxCurrentStepSpeedRadS;
     l.motorSpeedMaxRadS = kMaxMotorSpeedRadS;
     l.testDurationMaxS = kMaxTestDurationS;
-    // Jogs of the embedded drive have no travel window; circles keep within kTravelWindowM.
-    l.travelWindow = (*s)->kind() == sim::AxisKind::Linear ? kTravelWindowM : std::numeric_limits<double>::infinity();
+    // Jogs of the embedded drive have no travel window; circles keep within kTravelWindowM. A machine file may give
+    // a linear axis its own ("travel_window", e.g. sim:long-axis).
+    const double own = (*s)->definition().travelWindowM;
+    l.travelWindow = (*s)->kind() == sim::AxisKind::Linear ? (own > 0.0 ? own : kTravelWindowM)
+                                                           : std::numeric_limits<double>::infinity();
     return l;
 }
 

@@ -131,6 +131,10 @@ Status AxisSimulator::configure(const model::ParameterValues& v)
     pc.viscousMotorNmsPerRad = get("plant.viscous_motor");
     pc.viscousLoadNmsPerRad = get("plant.viscous_load");
     pc.modes = m_def.modes;
+    if (m_def.kind == AxisKind::Linear && m_def.screw.enabled()) {
+        pc.screw = m_def.screw;
+        pc.screwLeadMPerRad = get("plant.screw_lead");
+    }
 
     const bool rebuildPlant = !m_plant || h != m_hCurrent;
     m_values = v;

@@ -5,9 +5,11 @@
 #include "core/model/Units.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 
 namespace axistune::sim {
@@ -96,6 +98,73 @@ Result<std::vector<ResonanceMode>> parseModes(const json& modes, const std::stri
     return out;
 }
 
+/// One entry {"value", "unit", "source"} of an axis ("travel_window") or its "screw" section (prefix "screw.") in
+/// SI; the unit one of `units` (name, factor to SI).
+Result<double> screwValue(const json& screw, const char* key,
+                          std::initializer_list<std::pair<const char*, double>> units, const std::string& where,
+                          AxisDefinition& axis, const std::string& prefix = "screw.")
+{
+    const std::string w = where + ", " + prefix + key;
+    if (!screw.contains(key) || !screw[key].is_object() || !screw[key].contains("value") ||
+        !screw[key]["value"].is_number())
+        return makeError(ErrorCode::BadInput, w + ": needs an object with a numeric \"value\"");
+    const auto& e = screw[key];
+    const std::string unit = e.value("unit", std::string());
+    std::string known;
+    for (const auto& [name, factor] : units) {
+        if (unit == name) {
+            const double v = e["value"].get<double>() * factor;
+            if (!(v > 0.0) || !std::isfinite(v))
+                return makeError(ErrorCode::OutOfRange, w + ": must be > 0");
+            axis.sources[prefix + key] = e.value("source", std::string("assumed"));
+            return v;
+        }
+        known += (known.empty() ? "" : ", ") + std::string(name);
+    }
+    return makeError(ErrorCode::BadInput, w + ": unit '" + unit + "' is none of " + known);
+}
+
+Status parseScrew(const json& a, const std::string& where, AxisDefinition& axis)
+{
+    if (a.contains("travel_window")) {
+        auto t = screwValue(a, "travel_window", {{"m", 1.0}, {"mm", 1e-3}}, where, axis, "");
+        if (!t)
+            return t.error();
+        axis.travelWindowM = *t;
+    }
+    if (!a.contains("screw"))
+        return Status::success();
+    const json& s = a["screw"];
+    if (!s.is_object())
+        return makeError(ErrorCode::BadInput, where + ": \"screw\" must be an object");
+    if (axis.kind != AxisKind::Linear)
+        return makeError(ErrorCode::BadInput, where + ": a \"screw\" belongs to a linear axis");
+    const std::initializer_list<std::pair<const char*, double>> length{{"m", 1.0}, {"mm", 1e-3}};
+    const std::initializer_list<std::pair<const char*, double>> axial{{"N/m", 1.0}, {"N/um", 1e6}};
+    ScrewStiffness k;
+    struct Field {
+        const char* key;
+        std::initializer_list<std::pair<const char*, double>> units;
+        double* out;
+    };
+    for (const Field& f :
+         {Field{"root_diameter", length, &k.rootDiameterM},
+          Field{"youngs_modulus", {{"Pa", 1.0}, {"GPa", 1e9}}, &k.youngsModulusPa},
+          Field{"nut_distance_at_zero", length, &k.nutDistanceAtZeroM}, Field{"length", length, &k.lengthM},
+          Field{"bearing_stiffness", axial, &k.bearingStiffnessNPerM},
+          Field{"nut_stiffness", axial, &k.nutStiffnessNPerM},
+          Field{"torsional_stiffness", {{"Nm/rad", 1.0}}, &k.torsionalStiffnessNmPerRad}}) {
+        auto v = screwValue(s, f.key, f.units, where, axis);
+        if (!v)
+            return v.error();
+        *f.out = *v;
+    }
+    if (k.nutDistanceAtZeroM >= k.lengthM)
+        return makeError(ErrorCode::OutOfRange, where + ", screw.nut_distance_at_zero: must be less than screw.length");
+    axis.screw = k;
+    return Status::success();
+}
+
 Result<MachineDefinition> machineFromObject(const json& j, const std::string& path)
 {
     MachineDefinition def;
@@ -128,6 +197,8 @@ Result<MachineDefinition> machineFromObject(const json& j, const std::string& pa
         if (!m)
             return m.error();
         axis.modes = *m;
+        if (auto st = parseScrew(a, where, axis); !st)
+            return st.error();
         def.axes.push_back(std::move(axis));
     }
     return def;

@@ -21,6 +21,8 @@ struct AxisDefinition {
     model::ParameterValues values;               ///< every key of axisParameterMetas(kind), SI
     std::map<std::string, std::string> sources;  ///< key → where the number comes from
     std::vector<ResonanceMode> modes;
+    ScrewStiffness screw;       ///< "screw": K follows the table position (docs/simulator.md "Long axis"); else off
+    double travelWindowM = 0.0; ///< "travel_window": |position| of the simulated drive's jogs [m]; 0: the default
 };
 
 struct MachineDefinition {

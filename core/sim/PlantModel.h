@@ -9,6 +9,9 @@
 // With K = 0 the coupling is rigid and one inertia J_m + J_L remains. τ_m, τ_L are external torques
 // (friction, disturbance) held over the step. L(i) = L0 (1 - δ |i|/I_max): the discretization is
 // cached per 1/256 of I_max so a current-dependent inductance costs no exponential per step.
+// A ball screw (ScrewStiffness) makes K a function of the table position (docs/simulator.md "Long axis"): the
+// nut's distance from the fixed bearing sets the screw's axial stiffness; the discretization is cached per
+// 1/256 of the screw length as well, so the position costs no exponential per step either.
 
 #include <Eigen/Dense>
 
@@ -22,6 +25,24 @@ struct ResonanceMode {
     double damping = 0.0;
     double modalInertiaKgm2 = 0.0;  ///< 1/residue: the mode adds s / (J_k (s² + 2ζωs + ω²)) to torque → velocity
 };
+
+/// Axial stiffness of a ball screw mounted fixed–free or fixed–supported (THK/NSK catalogue formula): the screw
+/// between the fixed bearing and the nut, k_s = π d_r² E / (4 L_n), in series with the support bearing, the nut and
+/// (on the motor side) the torsional stiffness of coupling and screw:
+///   1/K(x) = 1/K_t + 1/(R² k_a(x)),   1/k_a(x) = 1/k_b + 1/k_n + 4 L_n / (π d_r² E),   L_n = L_0 + x,
+/// with R the lead [m/rad] and x the table position [m]. Off (rootDiameterM = 0) for every other axis.
+struct ScrewStiffness {
+    double rootDiameterM = 0.0;              ///< d_r
+    double youngsModulusPa = 0.0;            ///< E
+    double nutDistanceAtZeroM = 0.0;         ///< L_0: the nut's distance from the fixed bearing at x = 0
+    double lengthM = 0.0;                    ///< screw length between the bearings; L_n is held within [0, length]
+    double bearingStiffnessNPerM = 0.0;      ///< k_b (axial, of the fixed support bearing)
+    double nutStiffnessNPerM = 0.0;          ///< k_n (axial, of the preloaded nut)
+    double torsionalStiffnessNmPerRad = 0.0; ///< K_t (coupling and screw torsion)
+    bool enabled() const { return rootDiameterM > 0.0; }
+};
+/// K(x) [N·m/rad] of the formula above for lead R [m/rad] and table position x [m].
+double screwCouplingStiffness(const ScrewStiffness& s, double leadMPerRad, double positionM);
 
 struct PlantConfig {
     double resistanceOhm = 0.0;
@@ -37,6 +58,8 @@ struct PlantConfig {
     double viscousMotorNmsPerRad = 0.0;
     double viscousLoadNmsPerRad = 0.0;
     std::vector<ResonanceMode> modes;
+    ScrewStiffness screw;          ///< enabled: K follows the table position (stiffnessNmPerRad is not used)
+    double screwLeadMPerRad = 0.0; ///< R, with a screw
 };
 
 class PlantModel {
@@ -61,15 +84,23 @@ public:
     /// Angle the motor encoder sees: rigid-body angle plus the higher modes.
     double encoderAngle(const Eigen::VectorXd& x) const;
 
-    /// Continuous matrices for inductance L (inputs: v, τ_m, τ_L).
+    /// Continuous matrices for inductance L (inputs: v, τ_m, τ_L), coupling stiffness as configured.
     void continuousModel(double inductanceH, Eigen::MatrixXd& a, Eigen::MatrixXd& b) const;
+    /// The same with the coupling stiffness K [N·m/rad] given.
+    void continuousModel(double inductanceH, double stiffnessNmPerRad, Eigen::MatrixXd& a, Eigen::MatrixXd& b) const;
+    /// Coupling stiffness the step uses at load angle θ_L [rad] (the screw's bucket value; else the configured K).
+    double stiffnessAt(double loadAngleRad) const;
+    /// Number of discretizations computed so far (each is one matrix exponential).
+    std::size_t discretizations() const { return m_cache.size(); }
 
 private:
     struct Discrete {
         Eigen::MatrixXd phi;
         Eigen::MatrixXd gamma;
     };
-    const Discrete& discreteFor(int level);
+    const Discrete& discreteFor(int level, int bucket);
+    int bucketOf(double loadAngleRad) const;
+    double bucketStiffness(int bucket) const;
 
     PlantConfig m_cfg;
     double m_h;

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// End to end, issue 18 item 4: `axistune-cli autotune --positions 3` on sim:long-axis, whose first resonance falls
+// from about 219 Hz to 137 Hz over the travel (tests/core/sim/test_long_axis.cpp). Afterwards an ordinary
+// `capture --test frf --at X` (the same hold-and-jog the tuner uses to move, device/MoveTo.h) with the applied
+// parameters (--set: the embedded drive starts from its preset in every process) measures the loop at every
+// position the tuner reports; the margins of L = T/(1-T) from dsp::loopMargins on that capture (independent of the
+// tuner's prediction) are at least issue 18's 45 deg / 6 dB and within 3 deg / 1 dB of final.positions[] (issue 18,
+// as for one position). A tune at one end alone (N = 1, `autotune --at`) keeps the margins there and violates them
+// at the other end (the test shows it). The required crossover is 30 Hz (--min-bandwidth-hz): at the standard 40 Hz
+// the three notches the travel needs leave no PI with the margins at every position (the tuner refuses, tested too).
+#include "core/dsp/LoopAnalysis.h"
+#include "core/io/FrfCsv.h"
+
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/app/cli/CliRunner.h"
+
+using axistune::testing::makeTempDir;
+using axistune::testing::readFileText;
+using axistune::testing::runCli;
+
+namespace {
+
+constexpr double kPm = 45.0, kGm = 6.0; // issue 18
+
+struct LoopFigures {
+    double pm = NAN, gm = NAN;
+};
+
+/// Margins of the open velocity loop of a captured closed-loop FRF file (valid lines only).
+LoopFigures marginsOfCapture(const std::string& path)
+{
+    LoopFigures out;
+    auto t = axistune::io::readFrfCsvFile(path);
+    EXPECT_TRUE(t.ok()) << path;
+    if (!t.ok())
+        return out;
+    const auto l = axistune::dsp::openLoopFromClosedLoop(*t, axistune::dsp::LoopMeasurement::Complementary);
+    axistune::dsp::FrequencyResponse valid;
+    for (std::size_t i = 0; i < l.size(); ++i)
+        if (l.valid[i] && t->valid[i])
+            valid.push(l.freqHz[i], l.h[i], l.coherence[i], true);
+    const auto m = axistune::dsp::loopMargins(valid);
+    out.pm = m.phaseMarginDeg;
+    out.gm = m.gainMarginDb;
+    return out;
+}
+
+std::string setOptions(const nlohmann::json& params)
+{
+    std::string s;
+    for (const auto& [k, v] : params.items())
+        s += " --set " + k + "=" + nlohmann::json(v.get<double>()).dump();
+    return s;
+}
+
+/// The ordinary capture the tests measure with, at position x, with `sets`.
+LoopFigures captureAt(const std::filesystem::path& dir, double x, const std::string& sets)
+{
+    const auto out = (dir / "at.csv").string();
+    const auto r = runCli("capture --connect sim:long-axis --axis X --at " + nlohmann::json(x).dump() +
+                          " --test frf --method multisine --fmin 20 --fmax 3900 --spacing-hz 10 --adaptive "
+                          "--time-budget 5 --amplitude-pct 10" +
+                          sets + " --out " + out);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return marginsOfCapture(out);
+}
+
+} // namespace
+
+TEST(AutotunePositions, LongAxisThreePositionsKeepTheMarginsAtEveryPositionMeasuredAfterwards)
+{
+    const auto dir = makeTempDir("autotune-positions");
+    const auto result = (dir / "result.json").string();
+    const auto r =
+        runCli("autotune --connect sim:long-axis --axis X --positions 3 --min-bandwidth-hz 30 --out " + result);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(readFileText(result));
+    ASSERT_EQ(j["outcome"], "applied") << j.value("reason", "");
+    const auto& fin = j["final"];
+    ASSERT_TRUE(fin.contains("positions"));
+    ASSERT_EQ(fin["positions"].size(), 3u);
+    // Spread over the drive's travel window of the preset, +-0.75 m (resources/machines/long-axis.json).
+    const double expected[] = {-0.75, 0.0, 0.75};
+    ASSERT_TRUE(j.contains("resonance_map"));
+    ASSERT_EQ(j["resonance_map"].size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_NEAR(fin["positions"][i]["position"].get<double>(), expected[i], 1e-9);
+        EXPECT_NEAR(j["resonance_map"][i]["position"].get<double>(), expected[i], 1e-9);
+        ASSERT_TRUE(j["resonance_map"][i]["frequency_Hz"].is_number()) << j["resonance_map"].dump();
+    }
+    // The map shows the fall of issue 18 (at least 25 % from one end to the other).
+    EXPECT_LE(j["resonance_map"][2]["frequency_Hz"].get<double>(),
+              0.75 * j["resonance_map"][0]["frequency_Hz"].get<double>());
+    // The worst position is what `final` reports at the top.
+    double worstPm = 1e9;
+    for (const auto& p : fin["positions"])
+        worstPm = std::min(worstPm, p["phase_margin_deg"].get<double>());
+    EXPECT_DOUBLE_EQ(fin["phase_margin_deg"].get<double>(), worstPm);
+
+    const std::string sets = setOptions(fin["parameters"]);
+    for (const auto& p : fin["positions"]) {
+        const double x = p["position"].get<double>();
+        const auto m = captureAt(dir, x, sets);
+        std::cout << "long-axis --positions 3, at " << x << " m: measured PM " << m.pm << " deg, GM " << m.gm
+                  << " dB; final " << p["phase_margin_deg"] << " deg, " << p["gain_margin_dB"] << " dB\n";
+        EXPECT_GE(m.pm, kPm) << x;
+        EXPECT_GE(m.gm, kGm) << x;
+        EXPECT_NEAR(m.pm, p["phase_margin_deg"].get<double>(), 3.0) << x;
+        EXPECT_NEAR(m.gm, p["gain_margin_dB"].get<double>(), 1.0) << x;
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(AutotunePositions, LongAxisTuneAtOneEndAloneViolatesTheMarginsAtTheOtherEnd)
+{
+    const auto dir = makeTempDir("autotune-one-end");
+    const auto result = (dir / "result.json").string();
+    const auto r = runCli("autotune --connect sim:long-axis --axis X --at -0.75 --min-bandwidth-hz 30 --out " + result);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(readFileText(result));
+    ASSERT_EQ(j["outcome"], "applied") << j.value("reason", "");
+    EXPECT_NEAR(j["at"]["position"].get<double>(), -0.75, 1e-9);
+    const std::string sets = setOptions(j["final"]["parameters"]);
+    const auto here = captureAt(dir, -0.75, sets);
+    const auto there = captureAt(dir, 0.75, sets);
+    std::cout << "long-axis tuned at -0.75 m alone: at -0.75 m PM " << here.pm << " deg, GM " << here.gm
+              << " dB; at +0.75 m PM " << there.pm << " deg, GM " << there.gm << " dB\n";
+    // Where it was tuned, the margins hold; at the other end they do not.
+    EXPECT_GE(here.pm, kPm);
+    EXPECT_GE(here.gm, kGm);
+    EXPECT_TRUE(!(there.pm >= kPm) || !(there.gm >= kGm)) << there.pm << " deg, " << there.gm << " dB";
+    std::filesystem::remove_all(dir);
+}
+
+TEST(AutotunePositions, RefusalsAndBadOptions)
+{
+    const auto dir = makeTempDir("autotune-positions-bad");
+    const auto result = (dir / "result.json").string();
+    // A rotary axis without a travel window: the drive cannot choose positions within it (nothing moved, exit 2).
+    auto r = runCli("autotune --connect sim:two-inertia --axis A --positions 3 --out " + result);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("no finite travel window"), std::string::npos) << r.err;
+    r = runCli("autotune --connect sim:long-axis --axis X --positions 0 --out " + result);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--positions must be >= 1"), std::string::npos) << r.err;
+    r = runCli("autotune --connect sim:long-axis --axis X --positions 3 --at 0.1 --out " + result);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("exclude each other"), std::string::npos) << r.err;
+    r = runCli("capture --connect sim:long-axis --axis X --at 0.9 --test hold --out " + (dir / "h.csv").string());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("outside the drive's travel window"), std::string::npos) << r.err;
+    // At the standard 40 Hz the three resonances over the travel leave no PI that keeps the margins everywhere:
+    // refused with that reason (exit 4), the parameters restored.
+    r = runCli("autotune --connect sim:long-axis --axis X --positions 3 --out " + result);
+    EXPECT_EQ(r.exitCode, 4) << r.err;
+    const auto j = nlohmann::json::parse(readFileText(result));
+    EXPECT_EQ(j["outcome"], "refused");
+    EXPECT_NE(j["reason"].get<std::string>().find("at every position"), std::string::npos) << j["reason"];
+    EXPECT_TRUE(j["parameters_restored"].get<bool>());
+    std::filesystem::remove_all(dir);
+}
