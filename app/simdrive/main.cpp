@@ -90,8 +90,9 @@ int main(int argc, char** argv)
     sigaction(SIGTERM, &sa, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
     std::cout << "axistune-simdrive listening on 127.0.0.1:" << (*server)->port() << std::endl;
-    logLine((o.machineFile.empty() ? "preset " + o.preset : "machine file " + o.machineFile) + ", seed " + std::to_string(o.seed) + ", faults " + device::describeFaults(o.faults) +
-            ", watchdog " + std::to_string(o.safety.watchdogS) + " s");
+    logLine((o.machineFile.empty() ? "preset " + o.preset : "machine file " + o.machineFile) + ", seed " +
+            std::to_string(o.seed) + ", faults " + device::describeFaults(o.faults) + ", watchdog " +
+            std::to_string(o.safety.watchdogS) + " s");
     const auto st = (*server)->serve();
     g_server = nullptr;
     logLine(st ? "shut down cleanly" : "stopped: " + st.error().detail);

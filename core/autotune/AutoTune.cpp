@@ -3,7 +3,6 @@
 #include "core/autotune/AutoTune.h"
 
 #include "core/autotune/AmplitudeMap.h"
-
 #include "core/device/AdaptiveFrf.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Number.h"
