@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // axistune-cli amplitude-map: the closed velocity loop measured by multisine at three or more amplitudes, lines
 // flagged non-linear where the response changes beyond its noise (core/autotune/AmplitudeMap.h; docs/tuning.md
-// "Amplitude map"). A thin wrapper: connect, measure, write the map JSON.
+// "Amplitude map and backlash"). A thin wrapper: connect, measure, write the map JSON.
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/autotune/AmplitudeMap.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Amplitude dependence map and reversal backlash (AmplitudeMap.h; docs/tuning.md "Amplitude map").
+// Amplitude dependence map and reversal backlash (AmplitudeMap.h; docs/tuning.md "Amplitude map and backlash").
 #include "core/autotune/AmplitudeMap.h"
 
 #include "core/model/Number.h"

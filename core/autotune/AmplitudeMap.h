@@ -1,18 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Amplitude dependence of the closed velocity loop (issue 18 item 3; docs/tuning.md "Amplitude map"): the same
-// multisine band measured at three or more excitation peaks through the drive seam; a line whose response changes
+// Amplitude dependence of the closed velocity loop (issue 18 item 3; docs/tuning.md "Amplitude map and backlash"): the
+// same multisine band measured at three or more excitation peaks through the drive seam; a line whose response changes
 // between the amplitudes beyond its noise is non-linear (Coulomb friction at low frequency, backlash). The rule:
 // for every pair of amplitudes a, b at which the line was measured below the voltage limit,
 //   z_ab = |H_a − H_b| / √(σ_a² + σ_b²),   σ = (σ_H/|H|)·|H| of the multisine's scatter over its periods;
 // the line is non-linear when max z_ab > kNonlinearSigmas (5, the adaptive FRF's consistency test).
 // Plus the reversal lost motion (backlash) of a linear axis with motor and table position in its trace
-// (backlashFromJogs). No Qt.
+// (backlashFromReversal). No Qt.
 
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"
 #include "core/model/Result.h"
 
+#include <complex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>

@@ -509,7 +509,7 @@ Result<AutoTuneResult> Sequence::run()
             mo.amplitudesPct = m_o.amplitudeMapPct;
             mo.fminHz = kFrfMinHz;
             mo.spacingHz = kFrfSpacingHz;
-            mo.timeBudgetS = m_o.timeBudgetS - m_motion;
+            mo.timeBudgetS = std::max(m_o.timeBudgetS - m_motion, 1e-9); // > 0: a limit (0 would be none)
             auto mp = amplitudeMapInUse(m_drive, mo, m_linear, value("motor.torque_constant") * ratedA, m_o.run);
             if (!mp)
                 return refuse("amplitude map: " + mp.error().detail, mp.error().code);
@@ -820,13 +820,7 @@ Result<AutoTuneResult> Sequence::run()
             s.name = "move";
             if (!begin("move"))
                 return aborted("move");
-            device::TestRequest j;
-            j.axis = axis;
-            j.type = device::TestType::Jog;
-            j.distance = m_linear ? 0.01 : 0.2;
-            j.velocity = m_linear ? 0.05 : 1.0;
-            j.acceleration = m_linear ? 1.0 : 20.0;
-            j.durationS = 0.15;
+            const device::TestRequest j = moveEvaluationRequest(axis, m_linear);
             const double window = m_linear ? 1e-6 : 1e-5;
             auto run = test(j, "the point-to-point move", s.motionTimeS);
             if (!run)

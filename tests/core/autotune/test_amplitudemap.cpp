@@ -126,8 +126,8 @@ TEST(AmplitudeMap, ThePresetsFrictionFlagsTheLowLinesAgainstTheLinearRun)
 {
     // The preset's 0.305 N m with its smoothing velocity 0.02 rad/s: below it the friction is a damping of
     // F/v_s = 15 N m s/rad, more than J*omega (2.2e-3 kg m^2) up to about 1 kHz, so at 5 ... 20 % of rated torque
-    // most of the band changes with the amplitude (docs/tuning.md "Amplitude map"). The low lines are all flagged,
-    // and the flagged lines are those that differ from the friction-free run.
+    // most of the band changes with the amplitude (docs/tuning.md "Amplitude map and backlash"). The low lines are all
+    // flagged, and the flagged lines are those that differ from the friction-free run.
     auto df = vmcX(-1.0);
     auto dl = vmcX(0.0);
     ASSERT_TRUE(df && dl);
