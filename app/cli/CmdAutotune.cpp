@@ -4,6 +4,7 @@
 // and exits 4, or 3 when the drive failed (docs/cli.md).
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
+#include "core/autotune/AmplitudeMap.h"
 #include "core/autotune/AutoTune.h"
 #include "core/device/ModbusDrive.h"
 #include "core/device/MoveTo.h"
@@ -27,6 +28,7 @@ struct AutotuneOptions {
     double timeBudgetS = 30.0;
     double minBandwidthHz = 0.0;
     bool dryRun = false;
+    std::vector<double> amplitudes;
     std::uint64_t seed = 1;
     std::string outPath;
     int positions = 1;
@@ -59,7 +61,14 @@ int runAutotune(const AutotuneOptions& o)
         if (!at || !std::isfinite(*at))
             return bad("--at: '" + o.at + "' is not a number");
     }
+    if (!o.amplitudes.empty() && o.positions > 1)
+        return bad("--amplitudes is for one position: --positions N > 1 measures the plain adaptive FRF at each");
+    if (!o.amplitudes.empty()) {
+        if (auto st = autotune::checkAmplitudeList(o.amplitudes); !st)
+            return bad("--amplitudes: " + st.error().detail);
+    }
     autotune::Options opts;
+    opts.amplitudeMapPct = o.amplitudes;
     opts.axis = o.axis;
     opts.style = *style;
     // The default budget is 30 s of motion per position.
@@ -138,6 +147,10 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_option("--motor", o->motorPath,
                        "motor JSON (R_a, L_q, delta; as current-loop --motor): the current loop is designed; without "
                        "it the running current PI is kept and verified");
+        sub.add_option("--amplitudes", o->amplitudes,
+                       "A1,A2,A3[,...]: measure the amplitude map (multisine peaks [% of rated torque], increasing) "
+                       "in the FRF step; the FRF starts at the amplitude nearest the move's torque")
+            ->delimiter(',');
         sub.add_flag("--dry-run", o->dryRun, "run every step, then restore every parameter (nothing applied)");
         sub.add_option("--seed", o->seed, "noise seed of an embedded simulated machine");
         sub.add_option("--out", o->outPath, "write the result JSON to this file instead of stdout");

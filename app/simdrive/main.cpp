@@ -39,6 +39,8 @@ int main(int argc, char** argv)
     std::string writeMap;
     app.add_option("--preset", o.preset, "machine preset (vmc, dd-table, two-inertia, long-axis)")
         ->capture_default_str();
+    app.add_option("--machine", o.machineFile,
+                   "machine definition JSON (the format of resources/machines/*.json) instead of --preset");
     app.add_option("--port", o.port, "TCP port; 0 picks a free port and prints it")->capture_default_str();
     app.add_option("--bind", o.bind, "address to listen on (127.0.0.1 only)")->capture_default_str();
     app.add_option("--seed", o.seed, "noise seed of the simulated machine")->capture_default_str();
@@ -89,8 +91,9 @@ int main(int argc, char** argv)
     sigaction(SIGTERM, &sa, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
     std::cout << "axistune-simdrive listening on 127.0.0.1:" << (*server)->port() << std::endl;
-    logLine("preset " + o.preset + ", seed " + std::to_string(o.seed) + ", faults " + device::describeFaults(o.faults) +
-            ", watchdog " + std::to_string(o.safety.watchdogS) + " s");
+    logLine((o.machineFile.empty() ? "preset " + o.preset : "machine file " + o.machineFile) + ", seed " +
+            std::to_string(o.seed) + ", faults " + device::describeFaults(o.faults) + ", watchdog " +
+            std::to_string(o.safety.watchdogS) + " s");
     const auto st = (*server)->serve();
     g_server = nullptr;
     logLine(st ? "shut down cleanly" : "stopped: " + st.error().detail);

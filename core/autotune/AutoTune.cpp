@@ -2,6 +2,7 @@
 // The one-button tuner's sequence (AutoTune.h; docs/tuning.md "One-button tuning").
 #include "core/autotune/AutoTune.h"
 
+#include "core/autotune/AmplitudeMap.h"
 #include "core/device/AdaptiveFrf.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Number.h"
@@ -54,6 +55,8 @@ constexpr double kDesignPhaseSteps[] = {0.0, 5.0, 10.0, 15.0, 20.0};
 constexpr double kDesignGainReserveDb = 1.0;
 /// Designs tried (velocity PI, position gain, move, verify) before the run refuses.
 constexpr int kMaxDesignAttempts = 3;
+/// Distance of the reversal that measures the backlash [m] (back and forth).
+constexpr double kBacklashReversalM = 0.002;
 /// Read-back tolerance (a Modbus drive stores float32).
 constexpr double kReadBackRel = 1e-6;
 
@@ -499,6 +502,29 @@ Result<AutoTuneResult> Sequence::run()
         double bestPct = amplitudePct;
         const double maxPct = std::min(kLadderPeakCapPct, m_limits.frfAmplitudeMaxPct);
         double pct = amplitudePct;
+        std::string mapRule;
+        if (!m_o.amplitudeMapPct.empty()) { // the amplitude map (AmplitudeMap.h): the FRF at the amplitude in use
+            AmplitudeMapOptions mo;
+            mo.axis = axis;
+            mo.amplitudesPct = m_o.amplitudeMapPct;
+            mo.fminHz = kFrfMinHz;
+            mo.spacingHz = kFrfSpacingHz;
+            mo.timeBudgetS = std::max(m_o.timeBudgetS - m_motion, 1e-9); // > 0: a limit (0 would be none)
+            auto mp = amplitudeMapInUse(m_drive, mo, m_linear, value("motor.torque_constant") * ratedA, m_o.run);
+            if (!mp)
+                return refuse("amplitude map: " + mp.error().detail, mp.error().code);
+            m_motion += mp->motionTimeS;
+            s.motionTimeS += mp->motionTimeS;
+            s.measured["amplitude_map"] = inUseJson(*mp);
+            if (mp->use)
+                pct = std::min(mp->map.runs[*mp->use].amplitudePct, maxPct);
+            mapRule = "; amplitude map at " + count(static_cast<long long>(mp->map.runs.size())) +
+                      " amplitudes first (" + count(static_cast<long long>(mp->map.nonlinear)) + " of " +
+                      count(static_cast<long long>(mp->map.compared)) +
+                      " lines non-linear): the FRF starts at its amplitude nearest the peak torque of the move "
+                      "evaluation's move with the running gains (" +
+                      num(mp->useTorquePct, 3) + " % of rated torque) and is not doubled for non-linear lines";
+        }
         for (int attempt = 0; attempt < kMaxFrfTries; ++attempt) {
             double t = 0.0;
             auto a = frf(pct, kFrfBudgetS, t);
@@ -516,7 +542,7 @@ Result<AutoTuneResult> Sequence::run()
             double next = pct;
             if (static_cast<double>(voltage) > kRetryVoltageFraction * lines)
                 next = std::max(0.5 * pct, kMinFrfAmplitudePct);
-            else if (static_cast<double>(f.nonlinear) > kRetryNonlinearFraction * lines)
+            else if (static_cast<double>(f.nonlinear) > kRetryNonlinearFraction * lines && mapRule.empty())
                 next = std::min(2.0 * pct, maxPct);
             if (next == pct || m_motion + kFrfBudgetS > m_o.timeBudgetS)
                 break;
@@ -524,7 +550,7 @@ Result<AutoTuneResult> Sequence::run()
         }
         measured = std::move(*best);
         const auto f = figuresOf(measured);
-        s.measured = {{"tries", tries}};
+        s.measured["tries"] = tries;
         s.chosen = {{"amplitude_pct", bestPct}, {"valid_lines", f.valid}, {"lines", f.lines}};
         s.rule = "adaptive multisine " + num(kFrfMinHz, 3) + " Hz ... 0.975 fs, " + num(kFrfSpacingHz, 3) +
                  " Hz spacing, " + num(kFrfBudgetS, 2) + " s budget each; at most " +
@@ -532,7 +558,7 @@ Result<AutoTuneResult> Sequence::run()
                  num(kMinFrfAmplitudePct, 2) + " %) while more than " + num(100.0 * kRetryVoltageFraction, 2) +
                  " % of the lines reach the voltage limit, else doubles (up to " + num(maxPct, 3) +
                  " %) while more than " + num(100.0 * kRetryNonlinearFraction, 2) +
-                 " % are non-linear (friction); the try with the most valid lines is used";
+                 " % are non-linear (friction); the try with the most valid lines is used" + mapRule;
         done(s);
         const double lines = static_cast<double>(std::max<std::size_t>(f.lines, 1));
         if (static_cast<double>(f.nonlinear) > kMaxNonlinearFraction * lines)
@@ -794,13 +820,7 @@ Result<AutoTuneResult> Sequence::run()
             s.name = "move";
             if (!begin("move"))
                 return aborted("move");
-            device::TestRequest j;
-            j.axis = axis;
-            j.type = device::TestType::Jog;
-            j.distance = m_linear ? 0.01 : 0.2;
-            j.velocity = m_linear ? 0.05 : 1.0;
-            j.acceleration = m_linear ? 1.0 : 20.0;
-            j.durationS = 0.15;
+            const device::TestRequest j = moveEvaluationRequest(axis, m_linear);
             const double window = m_linear ? 1e-6 : 1e-5;
             auto run = test(j, "the point-to-point move", s.motionTimeS);
             if (!run)
@@ -858,7 +878,37 @@ Result<AutoTuneResult> Sequence::run()
                             "the command until the position stays within ±") +
                 num(window, 2) + (m_linear ? " m" : " rad") +
                 "; overshoot past the target; peak following error; torque headroom against k_t * I_max";
+            // Backlash against the settling window (AmplitudeMap.h backlashFromReversal): a linear axis whose trace
+            // has the motor and the table position reverses once; the lost motion at zero torque b must stay within
+            // the window's width 2w, else the table cannot be brought within ±w from both sides.
+            std::optional<BacklashEstimate> backlash;
+            if (m_linear && c.channel("motor_pos_m") && c.channel("table_pos_m")) {
+                double t = 0.0;
+                auto rev = test(backlashReversal(axis, kBacklashReversalM, j.velocity, j.acceleration),
+                                "the reversal (backlash)", t);
+                s.motionTimeS += t;
+                if (!rev)
+                    return refuse(rev.error().detail, rev.error().code);
+                if (!rev->trace)
+                    return refuse("the reversal (backlash) gave no trace", ErrorCode::Device);
+                auto b = backlashFromReversal(*rev->trace);
+                if (!b)
+                    return refuse("the reversal (backlash): " + b.error().detail, ErrorCode::Device);
+                backlash = *b;
+                s.measured["backlash"] = b->backlashM;
+                s.measured["lost_motion_compliance_m_per_Nm"] = b->complianceMPerNm;
+                s.rule += "; backlash: a reversal " + num(kBacklashReversalM * 1e3, 2) +
+                          " mm forth and back, motor-side minus table position regressed on the motor torque with one "
+                          "intercept per direction while moving at >= half speed; the lost motion at zero torque "
+                          "must not exceed the window's width " +
+                          num(2.0 * window, 2) + " m";
+            }
             done(s);
+            if (backlash && backlash->backlashM > 2.0 * window)
+                return refuse("backlash larger than the settling window: " + num(backlash->backlashM * 1e6, 3) +
+                              " um of lost motion at zero torque at a reversal, the window is +-" +
+                              num(window * 1e6, 2) + " um (" + num(2.0 * window * 1e6, 2) +
+                              " um wide): the table cannot settle into it from both directions");
             if (headroom < 0.1)
                 return refuse("the move needs " + num(peakTq, 3) + " N m of " + num(maxTorqueNm, 3) +
                               " N m: less than 10 % torque headroom");

@@ -59,6 +59,11 @@ struct Options {
     /// R_a, L_q, δ of the motor (the drive does not state them): with it the current loop is designed
     /// (motorFromDriveParameters + designCurrentLoop), without it the running current PI is kept and only verified.
     std::optional<tuning::MotorData> motor;
+    /// Amplitude map in the FRF step (AmplitudeMap.h, docs/tuning.md "Amplitude map and backlash"): empty, none; else
+    /// at least three increasing multisine peaks [% rated torque]. The FRF then starts at the map's amplitude nearest
+    /// the torque of the move evaluation's move (run once with the running gains); the map is recorded in the frf
+    /// step's measured.amplitude_map (the strong-non-linearity refusal stays the adaptive FRF's).
+    std::vector<double> amplitudeMapPct;
     device::RunOptions run; ///< abort token and progress of each test
     /// Called on the running thread when a step begins (its name as in steps[]; velocity-pi to verify begin
     /// again on a second design attempt) and when it ends (the Step as it goes into steps[]). The abort token

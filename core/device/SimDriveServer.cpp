@@ -24,7 +24,8 @@ Result<std::unique_ptr<SimDriveServer>> SimDriveServer::create(const SimDriveSer
 {
     std::unique_ptr<SimDriveServer> s(new SimDriveServer());
     s->m_opt = options;
-    auto def = sim::loadPreset(options.preset);
+    auto def = options.machineFile.empty() ? sim::loadPreset(options.preset)
+                                           : sim::loadMachineDefinitionFile(options.machineFile);
     if (!def)
         return def.error();
     auto drive = SimulatedDrive::create(*def, options.seed);

@@ -37,6 +37,9 @@ struct SafetyLimits {
 
 struct SimDriveServerOptions {
     std::string preset = "vmc";
+    /// A machine definition file (the format of resources/machines/*.json, docs/simulator.md "Presets") instead
+    /// of the preset: variants of a preset for tests (e.g. with backlash). Empty: the preset.
+    std::string machineFile;
     std::string bind = "127.0.0.1";
     int port = 0; ///< 0: a free port, see SimDriveServer::port()
     std::uint64_t seed = 1;

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -232,4 +233,30 @@ TEST(Autotune, BadOptionsExit2)
     EXPECT_EQ(runCli("autotune --connect sim:vmc --axis X --time-budget 0").exitCode, 2);
     EXPECT_EQ(runCli("autotune --connect sim:vmc --axis X --min-bandwidth-hz -1").exitCode, 2);
     EXPECT_EQ(runCli("autotune --connect sim:vmc --axis Q").exitCode, 2);
+}
+
+TEST(Autotune, BacklashLargerThanTheSettlingWindowIsRefusedAndTheParametersAreUnchanged)
+{
+    // A variant of vmc written by the test: X with 20 um of play between nut and table (plant.backlash,
+    // docs/simulator.md), served by axistune-simdrive --machine. The move step's reversal measures about 17 um of lost
+    // motion at zero torque (the play less the motor-side friction's wind-up, tests/core/autotune "Backlash"), far
+    // above the 2 um width of the +-1 um settling window.
+    auto preset = nlohmann::json::parse(readFileText(AXISTUNE_SOURCE_RESOURCE_DIR "/machines/vmc.json"));
+    for (auto& a : preset["axes"])
+        if (a["name"] == "X")
+            a["parameters"]["plant.backlash"] = {{"value", 20.0}, {"unit", "um"}, {"source", "test variant"}};
+    const auto dir = makeTempDir("autotune-backlash");
+    const auto machine = (dir / "vmc-backlash.json").string();
+    {
+        std::ofstream f(machine);
+        f << preset.dump(1);
+    }
+    refusedWithParametersUnchanged("--machine " + machine, "X", "", "backlash larger than the settling window");
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Autotune, AmplitudesNeedThreeIncreasingValues)
+{
+    EXPECT_EQ(runCli("autotune --connect sim:vmc --axis X --amplitudes 5,10").exitCode, 2);
+    EXPECT_EQ(runCli("autotune --connect sim:vmc --axis X --amplitudes 10,5,20").exitCode, 2);
 }
