@@ -3,6 +3,7 @@
 #include "core/autotune/AutoTune.h"
 
 #include "core/autotune/AmplitudeMap.h"
+#include "core/autotune/AutoTuneRun.h"
 #include "core/device/AdaptiveFrf.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Number.h"
@@ -25,14 +26,8 @@ namespace axistune::autotune {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-/// A resonance within this factor of the required crossover (either side) can be neither notched (the notch's
-/// phase lag at the crossover) nor dominated by the loop gain: refused.
-constexpr double kResonanceSeparation = 3.0;
-/// Lines of the FRF that must be valid (σ_H/|H| below the limit; else "coherence too low").
-constexpr double kMinValidFraction = 0.6;
-/// Lines flagged non-linear (passes disagreeing beyond their noise) above which the loop is not tuned.
-constexpr double kMaxNonlinearFraction = 0.2;
+using namespace detail;
+
 /// Non-linear fraction above which the FRF is measured again at twice the amplitude (friction).
 constexpr double kRetryNonlinearFraction = 0.05;
 /// Voltage-limited fraction above which the FRF is measured again at half the amplitude.
@@ -41,29 +36,8 @@ constexpr double kMinFrfAmplitudePct = 2.5;
 constexpr int kMaxFrfTries = 3;
 /// Largest FRF peak the ladder goes to [% rated torque] (and never above the drive's own limit).
 constexpr double kLadderPeakCapPct = 30.0;
-/// Motion budget of one adaptive FRF [s].
-constexpr double kFrfBudgetS = 5.0;
-/// The multisine band: lines at (m + 1/3)·10 Hz from 20 Hz to 0.975 of the trace rate (docs/multisine.md).
-constexpr double kFrfMinHz = 20.0;
-constexpr double kFrfSpacingHz = 10.0;
-/// The PI is designed for the style's phase margin plus this, so that the measured loop keeps the style's.
-constexpr double kDesignPhaseReserveDeg = 1.0;
-/// The PI is designed for the style's phase margin plus each of these; the design with the widest predicted
-/// closed-loop bandwidth that keeps the margins is chosen.
-constexpr double kDesignPhaseSteps[] = {0.0, 5.0, 10.0, 15.0, 20.0};
-/// The design keeps this much more gain margin than the style asks of the measured loop.
-constexpr double kDesignGainReserveDb = 1.0;
-/// Designs tried (velocity PI, position gain, move, verify) before the run refuses.
-constexpr int kMaxDesignAttempts = 3;
 /// Distance of the reversal that measures the backlash [m] (back and forth).
 constexpr double kBacklashReversalM = 0.002;
-/// Read-back tolerance (a Modbus drive stores float32).
-constexpr double kReadBackRel = 1e-6;
-
-std::string num(double v, int significant = 4)
-{
-    return model::formatNumber(v, significant);
-}
 
 /// An integer as text, without the locale.
 std::string count(long long n)
@@ -143,114 +117,22 @@ const model::Channel* channelWithPrefix(const model::Capture& c, const std::stri
     return nullptr;
 }
 
-class Sequence {
+class Sequence : public Run {
 public:
-    Sequence(device::Drive& drive, const Options& o) : m_drive(drive), m_o(o), m_t(styleTargets(o.style))
-    {
-        if (o.minBandwidthHz > 0.0)
-            m_t.minBandwidthHz = o.minBandwidthHz;
-    }
+    using Run::Run;
 
     Result<AutoTuneResult> run();
 
 private:
-    // A refusal: restores every parameter written so far and returns the result.
-    AutoTuneResult refuse(const std::string& reason, ErrorCode code = ErrorCode::Safety)
-    {
-        m_r.outcome = Outcome::Refused;
-        m_r.reason = reason;
-        m_r.reasonCode = code;
-        restore();
-        m_r.motionTimeS = m_motion;
-        return std::move(m_r);
-    }
-    void restore();
-    /// Before a step: false when the abort token is set (the caller refuses with Aborted); else announces it.
-    bool begin(const char* name)
-    {
-        if (m_o.run.abort && m_o.run.abort->load())
-            return false;
-        if (m_o.stepStarted)
-            m_o.stepStarted(name);
-        return true;
-    }
     AutoTuneResult aborted(const char* name)
     {
         return refuse(std::string("aborted by the user before the step ") + name, ErrorCode::Aborted);
     }
-    /// A step's record goes into steps[] and to the listener.
-    void done(const Step& s)
-    {
-        m_r.steps.push_back(s);
-        if (m_o.stepFinished)
-            m_o.stepFinished(s);
-    }
-    Status write(const model::ParameterValues& v);
     /// Runs one test within the budget; a refusal reason on failure.
     Result<device::TestRun> test(const device::TestRequest& r, const std::string& what, double& motionS);
-    Result<device::AdaptiveFrfResult> frf(double amplitudePct, double budgetS, double& motionS);
-    double value(const std::string& key) const
-    {
-        const auto it = m_now.find(key);
-        return it == m_now.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
-    }
 
-    device::Drive& m_drive;
-    Options m_o;
-    StyleTargets m_t;
-    AutoTuneResult m_r;
-    device::DriveCapabilities m_caps;
     device::DriveLimits m_limits;
-    std::vector<std::string> m_keys; ///< every parameter of the axis
-    std::set<std::string> m_writable;
-    model::ParameterValues m_now;     ///< what the drive holds now (as the run wrote it)
-    model::ParameterValues m_written; ///< every key the run wrote, with its new value
-    double m_motion = 0.0;
-    bool m_linear = true; ///< axis units m (else rad), from the hold's trace
 };
-
-void Sequence::restore()
-{
-    model::ParameterValues back;
-    for (const auto& [k, v] : m_written)
-        back[k] = m_r.before.at(k);
-    Status st = back.empty() ? Status{} : m_drive.writeParameters(m_o.axis, back);
-    if (!st) {
-        m_r.reason += "; RESTORING THE PARAMETERS FAILED (" + st.error().detail + "): check the drive";
-        m_r.restored = false;
-        return;
-    }
-    auto now = m_drive.readParameters(m_o.axis, m_keys);
-    if (!now) {
-        m_r.reason += "; the parameters could not be read back after restoring (" + now.error().detail + ")";
-        m_r.restored = false;
-        return;
-    }
-    std::string differ;
-    for (const auto& [k, v] : m_r.before) {
-        const auto it = now->find(k);
-        if (it == now->end() || std::abs(it->second - v) > kReadBackRel * std::max(1.0, std::abs(v)))
-            differ += (differ.empty() ? "" : ", ") + k;
-    }
-    m_r.restored = differ.empty();
-    if (!differ.empty())
-        m_r.reason += "; after restoring these parameters differ from before: " + differ;
-    m_written.clear();
-}
-
-Status Sequence::write(const model::ParameterValues& v)
-{
-    for (const auto& [k, x] : v)
-        if (!m_r.before.count(k) || !m_writable.count(k))
-            return makeError(ErrorCode::Device, "axis " + m_o.axis + " has no writable parameter '" + k + "'");
-    if (auto st = m_drive.writeParameters(m_o.axis, v); !st)
-        return st;
-    for (const auto& [k, x] : v) {
-        m_written[k] = x;
-        m_now[k] = x;
-    }
-    return {};
-}
 
 Result<device::TestRun> Sequence::test(const device::TestRequest& r, const std::string& what, double& motionS)
 {
@@ -276,34 +158,6 @@ Result<device::TestRun> Sequence::test(const device::TestRequest& r, const std::
     motionS = t;
     m_motion += t;
     return run;
-}
-
-Result<device::AdaptiveFrfResult> Sequence::frf(double amplitudePct, double budgetS, double& motionS)
-{
-    device::TestRequest r;
-    r.axis = m_o.axis;
-    r.type = device::TestType::Frf;
-    r.frfMethod = device::FrfMethod::Multisine;
-    r.fminHz = kFrfMinHz;
-    r.fmaxHz = 0.975 * m_caps.traceRateHz;
-    r.multisineSpacingHz = kFrfSpacingHz;
-    r.amplitudePct = amplitudePct;
-    budgetS = std::min(budgetS, m_o.timeBudgetS - m_motion);
-    if (!(budgetS > 0.0))
-        return makeError(ErrorCode::Safety, "the FRF has no time left in the budget (" + num(m_o.timeBudgetS, 3) +
-                                                " s, " + num(m_motion, 3) + " s used)");
-    device::AdaptiveFrfOptions ao;
-    ao.timeBudgetS = budgetS;
-    auto a = device::runAdaptiveFrf(m_drive, r, ao, m_o.run);
-    if (!a) {
-        const auto& e = a.error();
-        if (e.code == ErrorCode::Safety)
-            return makeError(ErrorCode::Safety, "drive fault during the FRF: " + e.detail);
-        return makeError(e.code, "FRF: " + e.detail);
-    }
-    motionS = a->motionTimeS;
-    m_motion += a->motionTimeS;
-    return a;
 }
 
 struct FrfFigures {
@@ -883,10 +737,10 @@ Result<AutoTuneResult> Sequence::run()
             // the window's width 2w, else the table cannot be brought within ±w from both sides.
             std::optional<BacklashEstimate> backlash;
             if (m_linear && c.channel("motor_pos_m") && c.channel("table_pos_m")) {
-                double t = 0.0;
+                double reversalS = 0.0;
                 auto rev = test(backlashReversal(axis, kBacklashReversalM, j.velocity, j.acceleration),
-                                "the reversal (backlash)", t);
-                s.motionTimeS += t;
+                                "the reversal (backlash)", reversalS);
+                s.motionTimeS += reversalS;
                 if (!rev)
                     return refuse(rev.error().detail, rev.error().code);
                 if (!rev->trace)

@@ -94,10 +94,10 @@ struct Final {
     double gainMarginDb = 0.0;        ///< re-measured (smallest over the −180° crossings)
     double velocityBandwidthHz = 0.0; ///< −3 dB of the re-measured closed velocity loop
     double positionBandwidthHz = 0.0; ///< −3 dB of K_p·T_v/s closed (position feedback only, on the re-measured T_v)
-    std::optional<double> settlingTimeS; ///< move evaluation; nullopt when it never settled in the record
-    double peakFollowingError = 0.0;     ///< [m or rad]
-    double motionTimeS = 0.0;            ///< machine time of the whole sequence
-    model::ParameterValues parameters;   ///< what was (or, dry run, would be) applied
+    std::optional<double> settlingTimeS;  ///< move evaluation; nullopt when it never settled in the record
+    double peakFollowingError = 0.0;      ///< [m or rad]
+    double motionTimeS = 0.0;             ///< machine time of the whole sequence
+    model::ParameterValues parameters;    ///< what was (or, dry run, would be) applied
     std::vector<PositionFinal> positions; ///< --positions N >= 2: every position (the figures above: the worst)
 };
 

@@ -8,6 +8,7 @@
 // applies or rolls back. The rules are core/tuning's; the thresholds are those of the single-position sequence
 // (AutoTune.cpp), restated here where they are used.
 #include "core/autotune/AutoTune.h"
+#include "core/autotune/AutoTuneRun.h"
 #include "core/device/AdaptiveFrf.h"
 #include "core/device/MoveTo.h"
 #include "core/dsp/LoopAnalysis.h"
@@ -29,21 +30,9 @@ namespace axistune::autotune {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using namespace detail;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// As the single-position sequence (AutoTune.cpp): resonance separation, valid and non-linear fractions, FRF band
-// and budget, design reserves and attempts, read-back tolerance.
-constexpr double kSeparation = 3.0;
-constexpr double kMinValid = 0.6;
-constexpr double kMaxNonlinear = 0.2;
-constexpr double kFminHz = 20.0;
-constexpr double kSpacingHz = 10.0;
-constexpr double kFrfBudget = 5.0;
-constexpr double kPhaseReserveDeg = 1.0;
-constexpr double kPhaseStepsDeg[] = {0.0, 5.0, 10.0, 15.0, 20.0};
-constexpr double kGainReserveDb = 1.0;
-constexpr int kAttempts = 3;
-constexpr double kReadBack = 1e-6;
 /// Two positions' notches within this fraction of the centre are one notch (the earlier position's).
 constexpr double kSameNotch = 0.05;
 /// Smallest integral corner k_i/k_p [rad/s] (1 Hz) of a PI the search considers: a slower integrator leaves the
@@ -51,11 +40,6 @@ constexpr double kSameNotch = 0.05;
 constexpr double kMinIntegralCornerRadS = kTwoPi;
 /// Crossover grid of the PI search (log steps).
 constexpr int kGridSteps = 96;
-
-std::string fmt(double v, int significant = 4)
-{
-    return model::formatNumber(v, significant);
-}
 
 std::string whole(long long n)
 {
@@ -132,49 +116,14 @@ void validOf(const dsp::FrequencyResponse& r, std::vector<double>& f, std::vecto
         }
 }
 
-class Positions {
+class Positions : public Run {
 public:
-    Positions(device::Drive& d, const Options& o) : m_drive(d), m_o(o), m_t(styleTargets(o.style))
-    {
-        if (o.minBandwidthHz > 0.0)
-            m_t.minBandwidthHz = o.minBandwidthHz;
-    }
+    using Run::Run;
     Result<AutoTuneResult> run();
 
 private:
-    AutoTuneResult refuse(const std::string& reason, ErrorCode code = ErrorCode::Safety)
-    {
-        m_r.outcome = Outcome::Refused;
-        m_r.reason = reason;
-        m_r.reasonCode = code;
-        restore();
-        returnToStart();
-        m_r.motionTimeS = m_motion;
-        return std::move(m_r);
-    }
-    AutoTuneResult refuseWith(const Error& e) { return refuse(e.detail, e.code); }
-    bool begin(const char* name)
-    {
-        if (m_o.run.abort && m_o.run.abort->load())
-            return false;
-        if (m_o.stepStarted)
-            m_o.stepStarted(name);
-        return true;
-    }
-    void done(const Step& s)
-    {
-        m_r.steps.push_back(s);
-        if (m_o.stepFinished)
-            m_o.stepFinished(s);
-    }
-    void restore();
+    void afterRefusal() override { returnToStart(); }
     void returnToStart();
-    Status write(const model::ParameterValues& v);
-    double value(const std::string& k) const
-    {
-        const auto it = m_now.find(k);
-        return it == m_now.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
-    }
     /// Moves to x within the budget; the step's motion time grows by the move's.
     Status moveTo(double x, double& motionS);
     Result<device::AdaptiveFrfResult> measure(double pct, double& motionS);
@@ -186,18 +135,8 @@ private:
     /// Empty when every position keeps the style's margins; else why not.
     Result<std::string> verify(Step& s);
 
-    device::Drive& m_drive;
-    Options m_o;
-    StyleTargets m_t;
-    AutoTuneResult m_r;
-    device::DriveCapabilities m_caps;
-    std::vector<std::string> m_keys;
-    std::set<std::string> m_writable;
-    model::ParameterValues m_now, m_written;
-    double m_motion = 0.0;
     double m_start = 0.0; ///< where the axis stood
     bool m_moved = false;
-    bool m_linear = true;
     double m_pct = 0.0;
     std::vector<Site> m_sites;
     tuning::LoopForm m_form;
@@ -206,58 +145,17 @@ private:
     Final m_fin;
 };
 
-void Positions::restore()
-{
-    model::ParameterValues back;
-    for (const auto& [k, v] : m_written)
-        back[k] = m_r.before.at(k);
-    if (!back.empty())
-        if (auto st = m_drive.writeParameters(m_o.axis, back); !st) {
-            m_r.reason += "; RESTORING THE PARAMETERS FAILED (" + st.error().detail + "): check the drive";
-            m_r.restored = false;
-            return;
-        }
-    auto now = m_drive.readParameters(m_o.axis, m_keys);
-    if (!now) {
-        m_r.reason += "; the parameters could not be read back after restoring (" + now.error().detail + ")";
-        m_r.restored = false;
-        return;
-    }
-    std::string differ;
-    for (const auto& [k, v] : m_r.before) {
-        const auto it = now->find(k);
-        if (it == now->end() || std::abs(it->second - v) > kReadBack * std::max(1.0, std::abs(v)))
-            differ += (differ.empty() ? "" : ", ") + k;
-    }
-    m_r.restored = differ.empty();
-    if (!differ.empty())
-        m_r.reason += "; after restoring these parameters differ from before: " + differ;
-    m_written.clear();
-}
-
 void Positions::returnToStart()
 {
     if (!m_moved)
         return;
     auto r = device::moveAxisTo(m_drive, m_o.axis, m_start, {}, m_o.run);
     if (!r) {
-        m_r.reason += "; the axis could not be moved back to " + fmt(m_start, 6) + " (" + r.error().detail + ")";
+        m_r.reason += "; the axis could not be moved back to " + num(m_start, 6) + " (" + r.error().detail + ")";
         return;
     }
     m_motion += r->motionTimeS;
     m_moved = false;
-}
-
-Status Positions::write(const model::ParameterValues& v)
-{
-    for (const auto& [k, x] : v)
-        if (!m_r.before.count(k) || !m_writable.count(k))
-            return makeError(ErrorCode::Device, "axis " + m_o.axis + " has no writable parameter '" + k + "'");
-    if (auto st = m_drive.writeParameters(m_o.axis, v); !st)
-        return st;
-    for (const auto& [k, x] : v)
-        m_written[k] = m_now[k] = x;
-    return {};
 }
 
 Status Positions::moveTo(double x, double& motionS)
@@ -266,39 +164,23 @@ Status Positions::moveTo(double x, double& motionS)
     if (!r)
         return makeError(r.error().code,
                          (r.error().code == ErrorCode::Safety ? "drive fault while moving to " : "moving to ") +
-                             fmt(x, 6) + ": " + r.error().detail);
+                             num(x, 6) + ": " + r.error().detail);
     m_moved = true;
     m_motion += r->motionTimeS;
     motionS += r->motionTimeS;
     if (m_motion > m_o.timeBudgetS)
-        return makeError(ErrorCode::Safety, "the moves along the travel used " + fmt(m_motion, 3) +
-                                                " s of motion, beyond the time budget (" + fmt(m_o.timeBudgetS, 3) +
+        return makeError(ErrorCode::Safety, "the moves along the travel used " + num(m_motion, 3) +
+                                                " s of motion, beyond the time budget (" + num(m_o.timeBudgetS, 3) +
                                                 " s)");
     return {};
 }
 
 Result<device::AdaptiveFrfResult> Positions::measure(double pct, double& motionS)
 {
-    device::TestRequest r;
-    r.axis = m_o.axis;
-    r.type = device::TestType::Frf;
-    r.frfMethod = device::FrfMethod::Multisine;
-    r.fminHz = kFminHz;
-    r.fmaxHz = 0.975 * m_caps.traceRateHz;
-    r.multisineSpacingHz = kSpacingHz;
-    r.amplitudePct = pct;
-    device::AdaptiveFrfOptions ao;
-    ao.timeBudgetS = std::min(kFrfBudget, m_o.timeBudgetS - m_motion);
-    if (!(ao.timeBudgetS > 0.0))
-        return makeError(ErrorCode::Safety, "the FRF has no time left in the budget (" + fmt(m_o.timeBudgetS, 3) +
-                                                " s, " + fmt(m_motion, 3) + " s used)");
-    auto a = device::runAdaptiveFrf(m_drive, r, ao, m_o.run);
-    if (!a)
-        return makeError(a.error().code,
-                         (a.error().code == ErrorCode::Safety ? "drive fault during the FRF: " : "FRF: ") +
-                             a.error().detail);
-    motionS += a->motionTimeS;
-    m_motion += a->motionTimeS;
+    double t = 0.0;
+    auto a = frf(pct, kFrfBudgetS, t);
+    if (a)
+        motionS += t;
     return a;
 }
 
@@ -319,13 +201,13 @@ Result<Step> Positions::measurePositions(double pct)
             nonlinear += l.reason == device::InvalidReason::Nonlinear ? 1 : 0;
         const auto& t = site.frf.measurement.frf;
         const double lines = static_cast<double>(std::max<std::size_t>(t.size(), 1));
-        const std::string at = "at " + fmt(site.x, 4) + (m_linear ? " m: " : " rad: ");
-        if (static_cast<double>(nonlinear) > kMaxNonlinear * lines)
+        const std::string at = "at " + num(site.x, 4) + (m_linear ? " m: " : " rad: ");
+        if (static_cast<double>(nonlinear) > kMaxNonlinearFraction * lines)
             return makeError(ErrorCode::Safety, "strong non-linearity " + at +
                                                     whole(static_cast<long long>(nonlinear)) + " of " +
                                                     whole(static_cast<long long>(t.size())) +
                                                     " FRF lines change with the excitation beyond their noise");
-        if (static_cast<double>(site.frf.validLines) < kMinValid * lines)
+        if (static_cast<double>(site.frf.validLines) < kMinValidFraction * lines)
             return makeError(ErrorCode::Safety, "coherence too low " + at + "only " +
                                                     whole(static_cast<long long>(site.frf.validLines)) + " of " +
                                                     whole(static_cast<long long>(t.size())) + " FRF lines are valid");
@@ -356,10 +238,10 @@ Result<Step> Positions::measurePositions(double pct)
     }
     s.measured = {{"positions", per}, {"resonance_map", map}};
     s.chosen = {{"amplitude_pct", pct}};
-    s.rule = "at each position (moved there by a jog through the drive): the adaptive multisine " + fmt(kFminHz, 3) +
-             " Hz ... 0.975 fs, " + fmt(kSpacingHz, 3) + " Hz spacing, " + fmt(kFrfBudget, 2) +
-             " s budget, at the style's amplitude; refused where fewer than " + fmt(100.0 * kMinValid, 2) +
-             " % of the lines are valid or more than " + fmt(100.0 * kMaxNonlinear, 2) +
+    s.rule = "at each position (moved there by a jog through the drive): the adaptive multisine " + num(kFrfMinHz, 3) +
+             " Hz ... 0.975 fs, " + num(kFrfSpacingHz, 3) + " Hz spacing, " + num(kFrfBudgetS, 2) +
+             " s budget, at the style's amplitude; refused where fewer than " + num(100.0 * kMinValidFraction, 2) +
+             " % of the lines are valid or more than " + num(100.0 * kMaxNonlinearFraction, 2) +
              " % are non-linear; the resonance map is the lowest resonance of the open loop L = T/(1-T) at each";
     return s;
 }
@@ -393,12 +275,12 @@ Result<Step> Positions::notches()
         if (!all)
             return all.error();
         for (const auto& r : *all)
-            if (r.freqHz >= fReq / kSeparation && r.freqHz <= fReq * kSeparation)
+            if (r.freqHz >= fReq / kResonanceSeparation && r.freqHz <= fReq * kResonanceSeparation)
                 return makeError(ErrorCode::Safety, "resonance too close to the required bandwidth at " +
-                                                        fmt(site.x, 4) + ": " + fmt(r.freqHz, 4) +
-                                                        " Hz lies within a factor " + fmt(kSeparation, 2) +
-                                                        " of the required velocity crossover " + fmt(fReq, 4) + " Hz");
-        ro.fminHz = std::max(ro.fminHz, kSeparation * fReq);
+                                                        num(site.x, 4) + ": " + num(r.freqHz, 4) +
+                                                        " Hz lies within a factor " + num(kResonanceSeparation, 2) +
+                                                        " of the required velocity crossover " + num(fReq, 4) + " Hz");
+        ro.fminHz = std::max(ro.fminHz, kResonanceSeparation * fReq);
         tuning::NotchOptions no;
         no.execRateHz = exec;
         no.slotCount = slots;
@@ -470,12 +352,12 @@ Result<Step> Positions::notches()
     }
     s.measured = {{"positions", per}, {"existing_notches", existing.size()}, {"exec_rate_Hz", exec}};
     s.chosen = {{"notches", cj}};
-    s.rule = "at each position the notch wizard's rule on the open loop L = T/(1-T) above " + fmt(kSeparation, 2) +
-             "x the required crossover (" + fmt(fReq, 4) + " Hz); a notch whose resonance lies within " +
-             fmt(100.0 * kSameNotch, 2) +
+    s.rule = "at each position the notch wizard's rule on the open loop L = T/(1-T) above " +
+             num(kResonanceSeparation, 2) + "x the required crossover (" + num(fReq, 4) +
+             " Hz); a notch whose resonance lies within " + num(100.0 * kSameNotch, 2) +
              " % of the centre of an earlier position's notch is left out; the rest go to the free slots; a resonance "
              "within a factor " +
-             fmt(kSeparation, 2) + " of the crossover at any position refuses the tuning";
+             num(kResonanceSeparation, 2) + " of the crossover at any position refuses the tuning";
     if (!v.empty())
         if (auto st = write(v); !st)
             return st.error();
@@ -490,7 +372,7 @@ Result<Step> Positions::velocityPi(double capHz)
     double fTop = 0.125 * m_caps.traceRateHz, fBottom = 0.5 * fReq;
     for (const auto& site : m_sites) {
         if (site.f.empty())
-            return makeError(ErrorCode::Safety, "no valid plant line at " + fmt(site.x, 4));
+            return makeError(ErrorCode::Safety, "no valid plant line at " + num(site.x, 4));
         fTop = std::min(fTop, site.f.back() / 2.0);
         fBottom = std::max(fBottom, site.f.front());
     }
@@ -502,8 +384,8 @@ Result<Step> Positions::velocityPi(double capHz)
     std::vector<dsp::LoopMargins> bestM;
     std::vector<std::complex<double>> l, t;
     for (std::size_t base = 0; base < m_sites.size(); ++base)
-        for (const double extra : kPhaseStepsDeg) {
-            const double pm = m_t.phaseMarginDeg + kPhaseReserveDeg + extra;
+        for (const double extra : kDesignPhaseSteps) {
+            const double pm = m_t.phaseMarginDeg + kDesignPhaseReserveDeg + extra;
             for (int i = 0; i <= kGridSteps && fTop > fBottom; ++i) {
                 const double f = fBottom * std::pow(fTop / fBottom, static_cast<double>(i) / kGridSteps);
                 if (f > capHz)
@@ -520,7 +402,7 @@ Result<Step> Positions::velocityPi(double capHz)
                     loops(*pi, site, l, t);
                     const auto m = margins(site.f, l);
                     ok = ok && std::isfinite(m.phaseMarginDeg) && m.phaseMarginDeg >= m_t.phaseMarginDeg &&
-                         m.gainMarginDb >= m_t.gainMarginDb + kGainReserveDb;
+                         m.gainMarginDb >= m_t.gainMarginDb + kDesignGainReserveDb;
                     worstBw = std::min(worstBw, closedLoopBandwidthHz(site.f, t).value_or(0.0));
                     ms.push_back(m);
                     if (!ok)
@@ -544,10 +426,10 @@ Result<Step> Positions::velocityPi(double capHz)
                   {"running_ki_Nm_per_rad", value("velocity.ki")}};
     if (!(bestBw > 0.0))
         return makeError(ErrorCode::Safety,
-                         "the required velocity crossover " + fmt(fReq, 4) + " Hz cannot be reached with " +
-                             fmt(m_t.phaseMarginDeg, 3) + " deg phase and " + fmt(m_t.gainMarginDb, 3) +
+                         "the required velocity crossover " + num(fReq, 4) + " Hz cannot be reached with " +
+                             num(m_t.phaseMarginDeg, 3) + " deg phase and " + num(m_t.gainMarginDb, 3) +
                              " dB gain margin at every position" +
-                             (highestOk > 0.0 ? " (highest: " + fmt(highestOk, 4) + " Hz)" : std::string()));
+                             (highestOk > 0.0 ? " (highest: " + num(highestOk, 4) + " Hz)" : std::string()));
     m_pi = best;
     m_fc = bestF;
     nlohmann::json pred = nlohmann::json::array();
@@ -566,12 +448,12 @@ Result<Step> Positions::velocityPi(double capHz)
                 {"predicted_worst_velocity_bandwidth_Hz", bestBw},
                 {"predicted", pred}};
     s.rule = "of the PIs designed (tuning::velocityPiFromFrf) on the plant of each position for a crossover on a " +
-             whole(kGridSteps) + "-step log grid " + fmt(fBottom, 4) + " ... " + fmt(std::min(fTop, capHz), 4) +
-             " Hz (at least the required " + fmt(fReq, 4) + " Hz) and a phase margin of " +
-             fmt(m_t.phaseMarginDeg + kPhaseReserveDeg, 3) + " ... " +
-             fmt(m_t.phaseMarginDeg + kPhaseReserveDeg + kPhaseStepsDeg[4], 3) +
+             whole(kGridSteps) + "-step log grid " + num(fBottom, 4) + " ... " + num(std::min(fTop, capHz), 4) +
+             " Hz (at least the required " + num(fReq, 4) + " Hz) and a phase margin of " +
+             num(m_t.phaseMarginDeg + kDesignPhaseReserveDeg, 3) + " ... " +
+             num(m_t.phaseMarginDeg + kDesignPhaseReserveDeg + kDesignPhaseSteps[4], 3) +
              " deg, the one with the widest worst-case closed-loop bandwidth that keeps at least " +
-             fmt(m_t.phaseMarginDeg, 3) + " deg and " + fmt(m_t.gainMarginDb + kGainReserveDb, 3) +
+             num(m_t.phaseMarginDeg, 3) + " deg and " + num(m_t.gainMarginDb + kDesignGainReserveDb, 3) +
              " dB on the measured plant with the notches at EVERY position (integral corner k_i/k_p at least 1 Hz)";
     if (auto st = write({{"velocity.kp", best.kpNmsPerRad}, {"velocity.ki", best.kiNmPerRad}}); !st)
         return st.error();
@@ -604,7 +486,7 @@ Result<Step> Positions::position()
     s.measured = {{"running_position_kp_per_s", value("position.kp")}, {"velocity_crossover_Hz", m_fc}};
     model::putOptional(s.measured, "worst_stability_limit_per_s", finiteOr(limit), 1.0,
                        "the predicted position loops have no -180 deg crossing in the band");
-    s.rule = "K_p = min(2pi*f_c/5, the largest K_p that keeps " + fmt(tuning::kPositionGainMarginDb, 2) +
+    s.rule = "K_p = min(2pi*f_c/5, the largest K_p that keeps " + num(tuning::kPositionGainMarginDb, 2) +
              " dB of gain margin in K_p*T_v/(j omega) at every position, T_v predicted there); velocity and torque "
              "feedforward 1 (torque with the drive's velocity.inertia, kept)";
     if (auto st = write(v); !st)
@@ -629,7 +511,7 @@ Result<Step> Positions::move()
     auto plan = m_drive.planTest(j);
     if (plan && m_motion + plan->motionTimeS > m_o.timeBudgetS)
         return makeError(ErrorCode::Safety,
-                         "the move would exceed the time budget (" + fmt(m_o.timeBudgetS, 3) + " s)");
+                         "the move would exceed the time budget (" + num(m_o.timeBudgetS, 3) + " s)");
     device::RunOptions ro = m_o.run;
     ro.readTrace = true;
     auto run = device::runTest(m_drive, j, ro);
@@ -690,7 +572,7 @@ Result<Step> Positions::move()
              "end of the command until the feedback stays within the window; peak following error; torque headroom "
              "against k_t * I_max (at least 10 %)";
     if (headroom < 0.1)
-        return makeError(ErrorCode::Safety, "the move needs " + fmt(peakTq, 3) + " N m of " + fmt(maxTq, 3) +
+        return makeError(ErrorCode::Safety, "the move needs " + num(peakTq, 3) + " N m of " + num(maxTq, 3) +
                                                 " N m: less than 10 % torque headroom");
     m_fin.settlingTimeS = settling;
     m_fin.peakFollowingError = fe;
@@ -726,12 +608,12 @@ Result<std::string> Positions::verify(Step& s)
         site.fin.gainMarginDb = std::isfinite(m.gainMarginDb) ? m.gainMarginDb : 0.0;
         site.fin.velocityBandwidthHz = bw.value_or(0.0);
         site.fin.positionBandwidthHz = pbw.value_or(0.0);
-        const std::string at = (why.empty() ? "" : "; ") + std::string("at ") + fmt(site.x, 4) + ": ";
+        const std::string at = (why.empty() ? "" : "; ") + std::string("at ") + num(site.x, 4) + ": ";
         if (!std::isfinite(m.phaseMarginDeg) || m.phaseMarginDeg < m_t.acceptPhaseMarginDeg ||
             !std::isfinite(m.gainMarginDb) || m.gainMarginDb < m_t.acceptGainMarginDb)
-            why += at + (std::isfinite(m.phaseMarginDeg) ? fmt(m.phaseMarginDeg, 3) + " deg" : std::string("no")) +
+            why += at + (std::isfinite(m.phaseMarginDeg) ? num(m.phaseMarginDeg, 3) + " deg" : std::string("no")) +
                    " phase margin and " +
-                   (std::isfinite(m.gainMarginDb) ? fmt(m.gainMarginDb, 3) + " dB" : std::string("an unknown")) +
+                   (std::isfinite(m.gainMarginDb) ? num(m.gainMarginDb, 3) + " dB" : std::string("an unknown")) +
                    " gain margin";
         else if (!bw || !pbw)
             why += at + "the re-measured closed loop does not fall 3 dB within the band";
@@ -741,7 +623,7 @@ Result<std::string> Positions::verify(Step& s)
                 {"accept_gain_margin_dB", m_t.acceptGainMarginDb}};
     s.rule = "the closed velocity loop measured again at every position (moved there by a jog); margins of "
              "L = T/(1-T) on its valid lines (smallest over every crossover) must be at least the style's " +
-             fmt(m_t.acceptPhaseMarginDeg, 3) + " deg and " + fmt(m_t.acceptGainMarginDb, 3) + " dB at EVERY position";
+             num(m_t.acceptPhaseMarginDeg, 3) + " deg and " + num(m_t.acceptGainMarginDb, 3) + " dB at EVERY position";
     return why;
 }
 
@@ -814,9 +696,9 @@ Result<AutoTuneResult> Positions::run()
             xs.push_back(site.x);
         s.measured = {{"travel_window", w}, {"start_position", m_start}, {"axis_units", m_linear ? "m" : "rad"}};
         s.chosen = {{"positions", xs}, {"frf_amplitude_pct", m_pct}, {"time_budget_s", m_o.timeBudgetS}};
-        s.rule = whole(m_o.positions) + " positions evenly over the drive's travel window -" + fmt(w, 4) + " ... +" +
-                 fmt(w, 4) + (m_linear ? " m" : " rad") +
-                 ", reached by jogs the drive checks against its limits; FRF peak " + fmt(m_t.frfAmplitudePct, 3) +
+        s.rule = whole(m_o.positions) + " positions evenly over the drive's travel window -" + num(w, 4) + " ... +" +
+                 num(w, 4) + (m_linear ? " m" : " rad") +
+                 ", reached by jogs the drive checks against its limits; FRF peak " + num(m_t.frfAmplitudePct, 3) +
                  " % of rated torque (" + styleName(m_o.style) +
                  "), at most the drive's limit; every test within the "
                  "time budget; the axis returns to where it stood at the end";
@@ -873,8 +755,8 @@ Result<AutoTuneResult> Positions::run()
         done(s);
         if (why->empty())
             break;
-        if (attempt < kAttempts) {
-            m_r.steps.back().rule += "; missed (" + *why + "): designed again below 0.8 x " + fmt(m_fc, 4) + " Hz";
+        if (attempt < kMaxDesignAttempts) {
+            m_r.steps.back().rule += "; missed (" + *why + "): designed again below 0.8 x " + num(m_fc, 4) + " Hz";
             capHz = 0.8 * m_fc;
             continue;
         }
@@ -901,7 +783,7 @@ Result<AutoTuneResult> Positions::run()
     }
     if (m_o.dryRun) {
         s.rule = "dry run: every parameter written during the run restored and read back; the axis back at " +
-                 fmt(m_start, 6);
+                 num(m_start, 6);
         done(s);
         restore();
         m_r.outcome = Outcome::DryRun;
@@ -917,11 +799,11 @@ Result<AutoTuneResult> Positions::run()
                           back.error().code);
         for (const auto& [k, v] : m_written) {
             const auto it = back->find(k);
-            if (it == back->end() || std::abs(it->second - v) > kReadBack * std::max(1.0, std::abs(v)))
+            if (it == back->end() || std::abs(it->second - v) > kReadBackRel * std::max(1.0, std::abs(v)))
                 return refuse("apply: " + k + " does not read back as written", ErrorCode::Device);
         }
-        s.rule = "the parameters stay written; every one read back equal (relative " + fmt(kReadBack, 2) +
-                 "); the axis back at " + fmt(m_start, 6);
+        s.rule = "the parameters stay written; every one read back equal (relative " + num(kReadBackRel, 2) +
+                 "); the axis back at " + num(m_start, 6);
         done(s);
         m_r.outcome = Outcome::Applied;
     }

@@ -13,7 +13,9 @@
 #include <complex>
 #include <gtest/gtest.h>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/linuxcnc/HalMachineLock.h"
@@ -96,6 +98,23 @@ protected:
     bool m_started = false;
     std::unique_ptr<axistune::testing::HalMachineLock> m_lock; ///< held from the start to after the stop
 };
+
+/// The lines that differ between two texts of the same number of lines, as (before, after); a text with more lines
+/// than the other adds ("", line) or (line, "") pairs.
+inline std::vector<std::pair<std::string, std::string>> changedLines(const std::string& before,
+                                                                     const std::string& after)
+{
+    std::istringstream a(before), b(after);
+    std::vector<std::pair<std::string, std::string>> changed;
+    std::string la, lb;
+    for (;;) {
+        const bool ha = static_cast<bool>(std::getline(a, la)), hb = static_cast<bool>(std::getline(b, lb));
+        if (!ha && !hb)
+            return changed;
+        if (!ha || !hb || la != lb)
+            changed.emplace_back(ha ? la : "", hb ? lb : "");
+    }
+}
 
 /// The plant's exact discrete-time response from drive input to recorded feedback, from the component's own
 /// update equations (linuxcnc/axistune_plant.comp, friction and quantization off): per substep h

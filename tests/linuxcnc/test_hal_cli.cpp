@@ -108,13 +108,7 @@ TEST_F(HalTestbed, PersistedGainsAreReadByTheNextStart)
     const std::string persisted = slurp(ini);
     EXPECT_EQ(slurp(ini + ".axistune-backup"), original);
     // Line by line: only [JOINT_0]P differs, and it reads 3.25.
-    std::istringstream a(original), b(persisted);
-    std::string la, lb;
-    std::vector<std::pair<std::string, std::string>> changed;
-    while (std::getline(a, la) && std::getline(b, lb))
-        if (la != lb)
-            changed.emplace_back(la, lb);
-    EXPECT_FALSE(std::getline(b, lb)) << "the persisted INI has more lines";
+    const auto changed = changedLines(original, persisted);
     ASSERT_EQ(changed.size(), 1u);
     EXPECT_EQ(changed[0].first, "P = 2.0");
     EXPECT_EQ(changed[0].second, "P = 3.25");

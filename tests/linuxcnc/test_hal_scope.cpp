@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <gtest/gtest.h>
+#include <optional>
 #include <thread>
 
 #include "tests/linuxcnc/HalTestbed.h"
@@ -50,6 +51,32 @@ void drainRows(device::Drive& d, device::ScopeCapture& all, std::uint64_t& next,
     }
 }
 
+/// A triggered capture on the command net: arms `r` (trigger channel, level rising, pre-trigger, length), sets the
+/// command net to `command` once the pre-trigger rows are in (as the NC would write it), and reads the capture.
+std::optional<device::ScopeCapture> captureOnCommand(device::Drive& d, device::ScopeRequest r,
+                                                     const std::vector<std::string>& channels,
+                                                     const std::string& trigger, double prePct, std::uint64_t rows,
+                                                     const std::string& command)
+{
+    r.axis = "pid.x";
+    r.channels = channels;
+    r.triggerChannel = trigger;
+    r.triggerLevel = 0.5;
+    r.edge = device::ScopeEdge::Rising;
+    r.preTriggerPct = prePct;
+    r.lengthSamples = rows;
+    const auto armed = d.armScope(r);
+    EXPECT_TRUE(armed) << (armed ? "" : armed.error().detail);
+    if (!armed || !waitForScope(d, device::ScopeState::Waiting))
+        return std::nullopt;
+    (void)halText({"sets", "x-pos-cmd", command}); // fails the test (EXPECT in halText) when halcmd refuses
+    if (!waitForScope(d, device::ScopeState::Done))
+        return std::nullopt;
+    auto cap = d.readScopeCapture();
+    EXPECT_TRUE(cap) << (cap ? "" : cap.error().detail);
+    return cap ? std::optional<device::ScopeCapture>(*cap) : std::nullopt;
+}
+
 /// No sampler instance left in HAL.
 bool samplerUnloaded()
 {
@@ -72,20 +99,8 @@ TEST_F(HalTestbed, ScopeTriggersOnACommandStep)
     auto caps = (*d)->capabilities("pid.x");
     ASSERT_TRUE(caps);
     EXPECT_TRUE(caps->scope);
-    device::ScopeRequest r;
-    r.axis = "pid.x";
-    r.channels = {"command", "feedback", "following_error"};
-    r.triggerChannel = "command";
-    r.triggerLevel = 0.5;
-    r.edge = device::ScopeEdge::Rising;
-    r.preTriggerPct = 25.0;
-    r.lengthSamples = 400;
-    ASSERT_TRUE((*d)->armScope(r)) << "arm";
-    ASSERT_TRUE(waitForScope(**d, device::ScopeState::Waiting));
-    (void)halText({"sets", "x-pos-cmd", "1.0"}); // fails the test (EXPECT in halText) when halcmd refuses
-    ASSERT_TRUE(waitForScope(**d, device::ScopeState::Done));
-    auto cap = (*d)->readScopeCapture();
-    ASSERT_TRUE(cap) << cap.error().detail;
+    auto cap = captureOnCommand(**d, {}, {"command", "feedback", "following_error"}, "command", 25.0, 400, "1.0");
+    ASSERT_TRUE(cap);
     ASSERT_EQ(cap->rows(), 400u);
     ASSERT_EQ(cap->triggerRow(), 100u); // 25 % of 400
     EXPECT_EQ(cap->missingSamples(), 0u);
@@ -130,20 +145,9 @@ TEST_F(HalTestbed, ScopeSamplesAnyPin)
     EXPECT_FALSE(enable); // an input on no net: sampling it would change it
     EXPECT_EQ(sc->maxChannels, 20);
 
-    device::ScopeRequest r;
-    r.axis = "pid.x";
-    r.channels = {"feedback", "plant.x.position", "plant.x.velocity", "command"};
-    r.triggerChannel = "command";
-    r.triggerLevel = 0.5;
-    r.edge = device::ScopeEdge::Rising;
-    r.preTriggerPct = 10.0;
-    r.lengthSamples = 1000;
-    ASSERT_TRUE((*d)->armScope(r)) << "arm";
-    ASSERT_TRUE(waitForScope(**d, device::ScopeState::Waiting));
-    (void)halText({"sets", "x-pos-cmd", "1.0"});
-    ASSERT_TRUE(waitForScope(**d, device::ScopeState::Done));
-    auto cap = (*d)->readScopeCapture();
-    ASSERT_TRUE(cap) << cap.error().detail;
+    auto cap = captureOnCommand(**d, {}, {"feedback", "plant.x.position", "plant.x.velocity", "command"}, "command",
+                                10.0, 1000, "1.0");
+    ASSERT_TRUE(cap);
     ASSERT_EQ(cap->rows(), 1000u);
     EXPECT_EQ(cap->missingSamples(), 0u);
     EXPECT_EQ(cap->channels[2].unit, "HAL units");
@@ -158,20 +162,10 @@ TEST_F(HalTestbed, ScopeSamplesAnyPin)
     ASSERT_TRUE((*d)->stopScope());
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore); // the scope's own net is gone
 
-    device::ScopeRequest sat;
-    sat.axis = "pid.x";
-    sat.channels = {"output", "pid.x.saturated", "pid.x.saturated-count"};
-    sat.triggerChannel = "pid.x.saturated";
-    sat.triggerLevel = 0.5;
-    sat.edge = device::ScopeEdge::Rising;
-    sat.preTriggerPct = 10.0;
-    sat.lengthSamples = 1000;
-    ASSERT_TRUE((*d)->armScope(sat)) << "arm on a bit";
-    ASSERT_TRUE(waitForScope(**d, device::ScopeState::Waiting));
-    (void)halText({"sets", "x-pos-cmd", "20.0"}); // far enough to saturate the output
-    ASSERT_TRUE(waitForScope(**d, device::ScopeState::Done));
-    auto sc2 = (*d)->readScopeCapture();
-    ASSERT_TRUE(sc2) << sc2.error().detail;
+    // Far enough to saturate the output.
+    auto sc2 = captureOnCommand(**d, {}, {"output", "pid.x.saturated", "pid.x.saturated-count"}, "pid.x.saturated",
+                                10.0, 1000, "20.0");
+    ASSERT_TRUE(sc2);
     ASSERT_EQ(sc2->rows(), 1000u);
     EXPECT_EQ(sc2->columns[1][sc2->triggerRow()], 1.0);
     const double maxOutput = getp("pid.x.maxoutput");
@@ -187,7 +181,9 @@ TEST_F(HalTestbed, ScopeSamplesAnyPin)
     ASSERT_TRUE((*d)->stopScope());
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
 
-    device::ScopeRequest bit = r;
+    device::ScopeRequest bit;
+    bit.axis = "pid.x";
+    bit.lengthSamples = 100;
     bit.channels = {"pid.x.enable"};
     bit.triggerChannel = "pid.x.enable";
     auto refused = (*d)->armScope(bit);

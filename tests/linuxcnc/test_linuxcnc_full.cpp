@@ -79,13 +79,7 @@ TEST_F(FullLinuxCnc, PersistedGainIsReadByTheNextFullLinuxCnc)
     EXPECT_DOUBLE_EQ(getp("pid_x.Pgain"), 1234.5);
     ASSERT_EQ(std::system((cli + " persist --ini " + ini.string() + " --axis X --from-hal >/dev/null").c_str()), 0);
     // Line by line: only [JOINT_0]PGAIN differs.
-    std::istringstream a(original), b(slurp(ini));
-    std::string la, lb;
-    std::vector<std::pair<std::string, std::string>> changed;
-    while (std::getline(a, la) && std::getline(b, lb))
-        if (la != lb)
-            changed.emplace_back(la, lb);
-    EXPECT_FALSE(std::getline(b, lb)) << "the persisted INI has more lines";
+    const auto changed = changedLines(original, slurp(ini));
     ASSERT_EQ(changed.size(), 1u);
     EXPECT_EQ(changed[0].first, "PGAIN = 1500.0");
     EXPECT_EQ(changed[0].second, "PGAIN = 1234.5");

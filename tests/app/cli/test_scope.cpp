@@ -395,14 +395,8 @@ TEST(ModbusScope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
     const auto& sx = all.columns[1];
     const auto& sy = all.columns[2];
     // The trace takes one row per position period (its fs_Hz), the scope one per velocity period (4 kHz).
-    const double traceHz = model::parseNumber((*trace).metadata.at("fs_Hz")).value_or(0.0);
-    const auto step = static_cast<std::size_t>(std::llround(4000.0 / traceHz));
-    ASSERT_EQ(static_cast<double>(step) * traceHz, 4000.0);
-    const auto i0 = axistune::testing::traceRowInScope(sx, tx->data, step);
-    ASSERT_TRUE(i0.has_value()) << "the trace's X positions are not in the scope, one every " << step
-                                << " rows: " << axistune::testing::traceRowReport(sx, tx->data, step);
-    double worstY = 0.0;
-    for (std::size_t k = 0; k < ty->data.size(); ++k)
-        worstY = std::max(worstY, std::abs(sy[*i0 + k * step] - ty->data[k]));
-    EXPECT_EQ(worstY, 0.0) << "Y at the instant of X [m]";
+    const auto same = axistune::testing::sameInstant(sx, sy, *tx, *ty,
+                                                     model::parseNumber((*trace).metadata.at("fs_Hz")).value_or(0.0));
+    ASSERT_TRUE(same.found) << same.report;
+    EXPECT_EQ(same.worstY, 0.0) << "Y at the instant of X [m]";
 }

@@ -2,6 +2,10 @@
 #pragma once
 // Helpers of the scope tests (tests/core/device/test_scope.cpp, tests/app/cli/test_scope.cpp).
 
+#include "core/model/Capture.h"
+
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -48,6 +52,35 @@ inline std::string traceRowReport(const std::vector<double>& scopeX, const std::
     return "scope rows " + std::to_string(scopeX.size()) + ", trace rows " + std::to_string(traceX.size()) +
            "; best first row " + std::to_string(bestI0) + " matches " + std::to_string(bestCount) +
            "; first trace row not matched " + std::to_string(firstBad);
+}
+
+/// A two-axis scope (columns x, y at 4 kHz) against a circle test's trace (one row per position period, rate
+/// traceHz): whether the trace's X samples are found in the scope (one every 4 kHz / traceHz rows, bit for bit), and
+/// the largest difference of Y at those rows (0 when the scope samples both axes at one instant).
+struct SameInstant {
+    bool found = false;
+    double worstY = 0.0;
+    std::string report; ///< why not found
+};
+inline SameInstant sameInstant(const std::vector<double>& sx, const std::vector<double>& sy, const model::Channel& tx,
+                               const model::Channel& ty, double traceHz)
+{
+    SameInstant out;
+    const auto step = static_cast<std::size_t>(std::llround(4000.0 / traceHz));
+    if (step == 0 || static_cast<double>(step) * traceHz != 4000.0) {
+        out.report = "the trace's rate does not divide 4 kHz";
+        return out;
+    }
+    const auto i0 = traceRowInScope(sx, tx.data, step);
+    if (!i0) {
+        out.report = "the trace's X positions are not in the scope, one every " + std::to_string(step) +
+                     " rows: " + traceRowReport(sx, tx.data, step);
+        return out;
+    }
+    out.found = true;
+    for (std::size_t k = 0; k < ty.data.size(); ++k)
+        out.worstY = std::max(out.worstY, std::abs(sy[*i0 + k * step] - ty.data[k]));
+    return out;
 }
 
 } // namespace axistune::testing
