@@ -194,8 +194,9 @@ TEST_F(HalTestbed, ScopeSamplesAnyPin)
 
 // The scope runs while a test runs: rolled from before a multisine FRF test to after it, every servo period is a row
 // (no gap in the sampler's numbers), the injection shows in the pid's output net during the test, and the test's own
-// record (sampler.0) is complete. Armed again while a second test runs, it rolls too. Afterwards the nets and
-// functions are as before and the sampler is unloaded.
+// record (sampler.0) is complete. While a second test runs the scope is not armed anew (refused, naming why) and its
+// stop waits for the test's end; then the nets and functions are as before and the sampler is unloaded, and the scope
+// arms again.
 TEST_F(HalTestbed, ScopeRunsWhileATestRuns)
 {
     startBed(1000000);
@@ -227,49 +228,62 @@ TEST_F(HalTestbed, ScopeRunsWhileATestRuns)
     t.fmaxHz = 200.0;
     t.amplitudePeak = 0.2;
     t.multisinePeriods = 2;
-    for (int run = 0; run < 2; ++run) {
-        if (run == 1) { // armed again while the second test runs
-            ASSERT_TRUE((*d)->startTest(t)) << "second test";
-            std::this_thread::sleep_for(std::chrono::milliseconds(200));
-            ASSERT_TRUE((*d)->armScope(r)) << "arm during the test";
-            all = {};
-            all.triggered = false;
-            all.columns.assign(2, {});
-            started = false;
-            next = 0;
-        } else {
-            auto st = (*d)->startTest(t);
-            ASSERT_TRUE(st) << st.error().detail;
-        }
-        const std::size_t atStart = all.rows();
+    {
+        auto st = (*d)->startTest(t);
+        ASSERT_TRUE(st) << st.error().detail;
+    }
+    const std::size_t atStart = all.rows();
+    auto runTestToEnd = [&] {
         for (;;) {
             auto s = (*d)->pollTest();
             ASSERT_TRUE(s) << s.error().detail;
             drainRows(**d, all, next, started);
             if (s->state != device::TestState::Running) {
                 ASSERT_EQ(s->state, device::TestState::Completed) << s->detail;
-                break;
+                return;
             }
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
-        auto frf = (*d)->readFrequencyResponse();
-        ASSERT_TRUE(frf) << frf.error().detail;
-        EXPECT_GT(frf->frf.freqHz.size(), 10u);
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        drainRows(**d, all, next, started);
-        EXPECT_EQ(all.missingSamples(), 0u) << "run " << run;
-        for (std::size_t i = 1; i < all.rows(); ++i)
-            ASSERT_EQ(all.samples[i], all.samples[i - 1] + 1) << "run " << run << " row " << i;
-        // The injection in the output net: the largest output during the test far above the one while the axis
-        // held still before it (run 0), and not zero (run 1).
-        double peakBefore = 0.0, peakDuring = 0.0;
-        for (std::size_t i = 0; i < all.rows(); ++i)
-            (i < atStart ? peakBefore : peakDuring) =
-                std::max(i < atStart ? peakBefore : peakDuring, std::abs(all.columns[0][i]));
-        EXPECT_GT(peakDuring, 0.1) << "run " << run; // the multisine's peak is 0.2 in output units
-        if (run == 0)
-            EXPECT_LT(peakBefore, 0.05);
-    }
+    };
+    runTestToEnd();
+    auto frf = (*d)->readFrequencyResponse();
+    ASSERT_TRUE(frf) << frf.error().detail;
+    EXPECT_GT(frf->frf.freqHz.size(), 10u);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    drainRows(**d, all, next, started);
+    EXPECT_EQ(all.missingSamples(), 0u);
+    for (std::size_t i = 1; i < all.rows(); ++i)
+        ASSERT_EQ(all.samples[i], all.samples[i - 1] + 1) << "row " << i;
+    // The injection in the output net: the largest output during the test far above the one while the axis held
+    // still before it.
+    double peakBefore = 0.0, peakDuring = 0.0;
+    for (std::size_t i = 0; i < all.rows(); ++i)
+        (i < atStart ? peakBefore : peakDuring) =
+            std::max(i < atStart ? peakBefore : peakDuring, std::abs(all.columns[0][i]));
+    EXPECT_GT(peakDuring, 0.1); // the multisine's peak is 0.2 in output units
+    EXPECT_LT(peakBefore, 0.05);
+
+    // During a second test the scope is not armed anew (the test rewires HAL's nets), and a stop waits for the
+    // test's end to take the scope's pins out of HAL; the test completes either way.
+    ASSERT_TRUE((*d)->startTest(t)) << "second test";
+    auto refused = (*d)->armScope(r);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().detail.find("while a test runs"), std::string::npos) << refused.error().detail;
+    ASSERT_TRUE((*d)->stopScope());
+    runTestToEnd();
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+    EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
+    EXPECT_TRUE(samplerUnloaded());
+    // Armed again after the test: it rolls.
+    ASSERT_TRUE((*d)->armScope(r)) << "arm after the test";
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    started = false;
+    next = 0;
+    all = {};
+    all.triggered = false;
+    all.columns.assign(2, {});
+    drainRows(**d, all, next, started);
+    EXPECT_GT(all.rows(), 50u);
     ASSERT_TRUE((*d)->stopScope());
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
     EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);

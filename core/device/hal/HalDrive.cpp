@@ -505,6 +505,7 @@ Status HalDrive::startTest(const TestRequest& request)
             return st;
     }
     joinWorker();
+    finishDeferredScopeStop();
     // The scope may run on: the test records through sampler.0, the scope through sampler.1 (HalSampler.h).
     std::optional<HalFrfPlan> frf;
     std::optional<HalMovePlan> move;
@@ -624,8 +625,10 @@ Result<TestStatus> HalDrive::pollTest()
     const TestStatus s = m_status;
     const bool lost = m_linkLost;
     lock.unlock();
-    if (s.state != TestState::Running)
+    if (s.state != TestState::Running) {
         joinWorker();
+        finishDeferredScopeStop();
+    }
     if (lost)
         return makeError(ErrorCode::Device, "connection hal: lost: " + s.detail);
     return s;

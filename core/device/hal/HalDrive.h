@@ -124,6 +124,11 @@ private:
     bool m_linkLost = false;                ///< the last test failed and HAL no longer answers (guarded by m_mutex)
     std::map<std::string, double> m_ferror; ///< setFollowingErrorLimit, by pid
     std::unique_ptr<HalScope> m_scope;      ///< the armed (or stopped, still readable) scope
+    /// The scope was stopped while a test ran: it stopped reading, and its pins and function leave HAL when the test
+    /// has ended (a test rewires HAL's nets; the two must not change them at once).
+    bool m_scopeStopDeferred = false;
+    bool testRunning();
+    void finishDeferredScopeStop();
     std::vector<ScopeChannelInfo> m_scopeChannels; ///< of the armed scope, in the request's order
     double m_scopeRateHz = 0.0;
     std::string m_firmware;

@@ -19,8 +19,29 @@ Result<ScopeCapabilities> HalDrive::scopeCapabilities(const std::string& axis)
     return halScopeCapabilities(*a, *ps);
 }
 
+bool HalDrive::testRunning()
+{
+    std::lock_guard lock(m_mutex);
+    return m_status.state == TestState::Running;
+}
+
+void HalDrive::finishDeferredScopeStop()
+{
+    if (m_scopeStopDeferred && m_scope && !testRunning()) {
+        (void)m_scope->stop();
+        m_scopeStopDeferred = false;
+    }
+}
+
 Status HalDrive::armScope(const ScopeRequest& request)
 {
+    // A test inserts and removes its injection by changing HAL's nets, and the scope links its pins to nets: the two
+    // must not change them at once (a scope armed during a test would also link to the test's own nets, which end
+    // with it). A scope armed before the test records it.
+    if (testRunning())
+        return makeError(ErrorCode::Busy, "the scope cannot be armed while a test runs on LinuxCNC (the test rewires "
+                                          "HAL's nets): arm it before the test, and it records the test");
+    finishDeferredScopeStop();
     auto a = discoverAxis(m_options, request.axis);
     if (!a)
         return a.error();
@@ -74,6 +95,12 @@ Status HalDrive::stopScope()
 {
     if (!m_scope)
         return Status::success();
+    if (testRunning()) {
+        // It stops reading now; its pins and function leave HAL when the test has ended (pollTest).
+        m_scope->stopReading();
+        m_scopeStopDeferred = true;
+        return Status::success();
+    }
     // The scope's pins and function are removed at once (the sampler too unless a test holds it); a complete
     // capture stays readable.
     return m_scope->stop();

@@ -215,11 +215,18 @@ void HalScope::read()
     }
 }
 
-Status HalScope::stop()
+void HalScope::stopReading()
 {
     m_stop = true;
     if (m_thread.joinable())
         m_thread.join();
+    std::lock_guard lock(m_mutex);
+    m_recorder.stop();
+}
+
+Status HalScope::stop()
+{
+    stopReading();
     m_stream.reset();
     Status first;
     while (!m_undo.empty()) {

@@ -40,6 +40,8 @@ public:
     HalScope& operator=(const HalScope&) = delete;
 
     Status stop();
+    /// Stops reading only (the capture stays readable); stop() later takes the pins and the function out of HAL.
+    void stopReading();
     ScopeStatus status() const;
     ScopeRows rows(std::uint64_t from, std::size_t maxRows) const;
     Result<ScopeCapture> capture() const;
