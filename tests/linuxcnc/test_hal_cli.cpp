@@ -148,14 +148,31 @@ TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
         return nlohmann::json::parse(f);
     };
     const std::string plain = ::testing::TempDir() + "/pid-tune-plain.json";
-    ASSERT_EQ(std::system((cli + "--notch none --out " + plain + " 2>/dev/null").c_str()), 0);
+    const std::string plainLog = ::testing::TempDir() + "/pid-tune-plain.log";
+    auto slurpLog = [](const std::string& p) {
+        std::ifstream l(p);
+        return std::string(std::istreambuf_iterator<char>(l), {});
+    };
+    int plainRc = std::system((cli + "--notch none --out " + plain + " 2>" + plainLog).c_str());
+    // The injection's heartbeat watchdog (30 ms) trips when the machine starves AxisTune's heartbeat thread or
+    // LinuxCNC's non-realtime servo thread (seen twice in CI's de-locale pass, started beside the GUI tests at
+    // ctest -j2): the run is then refused and nothing is applied, as it must be. Once more, saying so.
+    if (plainRc != 0 && slurpLog(plainLog).find("the heartbeat was lost") != std::string::npos) {
+        std::printf("[ note ] pid-tune refused: the injection's heartbeat was lost under load; run again\n");
+        plainRc = std::system((cli + "--notch none --out " + plain + " 2>" + plainLog).c_str());
+    }
+    ASSERT_EQ(plainRc, 0) << "pid-tune --notch none exit " << WEXITSTATUS(plainRc) << ": " << slurpLog(plainLog);
     const double plainCrossover = readJson(plain).at("proposed").at("predicted").at("crossover_Hz").get<double>();
 
     const std::string out = ::testing::TempDir() + "/pid-tune.json";
     // With a move out and back (5 mm at 50 mm/s, 1000 mm/s²) run after the verification: issue 17 asks the measured
     // following error of a given move within 10 % of the prediction.
     const std::string log = ::testing::TempDir() + "/pid-tune.log";
-    const int rc = std::system((cli + "--apply --move 5:50:1000 --out " + out + " 2>" + log).c_str());
+    int rc = std::system((cli + "--apply --move 5:50:1000 --out " + out + " 2>" + log).c_str());
+    if (rc != 0 && slurpLog(log).find("the heartbeat was lost") != std::string::npos) { // as above
+        std::printf("[ note ] pid-tune --apply refused: the injection's heartbeat was lost under load; run again\n");
+        rc = std::system((cli + "--apply --move 5:50:1000 --out " + out + " 2>" + log).c_str());
+    }
     if (rc != 0) { // say why (a refusal names its reason in the log and the JSON)
         std::ifstream l(log);
         ADD_FAILURE() << "pid-tune --apply exit " << WEXITSTATUS(rc) << ": "
