@@ -181,6 +181,11 @@ Result<ScopeRows> ModbusDrive::readScopeRows(std::uint64_t from, std::size_t max
     std::vector<std::uint16_t> page;
     std::uint64_t next = from;
     while (out.rows < maxRows) {
+        // A long readout during a test keeps the drive's watchdog fed (a read of many pages takes longer than its
+        // timeout on a slow link or machine; the test would stop with "no heartbeat").
+        if (m_testRunning && Clock::now() - m_lastHeartbeat >= kHeartbeatPeriod)
+            if (auto st = heartbeat(); !st)
+                return st.error();
         if (auto st = readScopePage(m_scopeUnit, "ring", next, page); !st)
             return st.error();
         const auto first = static_cast<std::uint64_t>(decodeF64(page.data(), o));
