@@ -843,33 +843,8 @@ Result<AutoTuneResult> Sequence::run()
             s.chosen[k] = v;
             s.measured["before." + k] = m_r.before.at(k);
         }
-        if (m_o.dryRun) {
-            s.rule = "dry run: every parameter written during the run restored and read back";
-            done(s);
-            restore();
-            m_r.outcome = Outcome::DryRun;
-            if (!m_r.restored)
-                return refuse("dry run: " + m_r.reason, ErrorCode::Device);
-        } else {
-            std::vector<std::string> keys;
-            for (const auto& [k, v] : m_written)
-                keys.push_back(k);
-            auto back = m_drive.readParameters(axis, keys);
-            if (!back)
-                return refuse("apply: the parameters could not be read back (" + back.error().detail + ")",
-                              back.error().code);
-            for (const auto& [k, v] : m_written) {
-                const auto it = back->find(k);
-                if (it == back->end() || std::abs(it->second - v) > kReadBackRel * std::max(1.0, std::abs(v)))
-                    return refuse("apply: " + k + " reads back " +
-                                      (it == back->end() ? std::string("nothing") : num(it->second, 7)) + ", written " +
-                                      num(v, 7),
-                                  ErrorCode::Device);
-            }
-            s.rule = "the parameters stay written; every one read back equal (relative " + num(kReadBackRel, 2) + ")";
-            done(s);
-            m_r.outcome = Outcome::Applied;
-        }
+        if (auto refused = keepOrRestore(s, ""))
+            return std::move(*refused);
     }
     m_r.motionTimeS = m_motion;
     m_r.final = fin;

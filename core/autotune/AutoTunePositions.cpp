@@ -781,32 +781,8 @@ Result<AutoTuneResult> Positions::run()
         m_fin.positionBandwidthHz = std::min(m_fin.positionBandwidthHz, site.fin.positionBandwidthHz);
         m_fin.positions.push_back(site.fin);
     }
-    if (m_o.dryRun) {
-        s.rule = "dry run: every parameter written during the run restored and read back; the axis back at " +
-                 num(m_start, 6);
-        done(s);
-        restore();
-        m_r.outcome = Outcome::DryRun;
-        if (!m_r.restored)
-            return refuse("dry run: " + m_r.reason, ErrorCode::Device);
-    } else {
-        std::vector<std::string> keys;
-        for (const auto& [k, v] : m_written)
-            keys.push_back(k);
-        auto back = m_drive.readParameters(axis, keys);
-        if (!back)
-            return refuse("apply: the parameters could not be read back (" + back.error().detail + ")",
-                          back.error().code);
-        for (const auto& [k, v] : m_written) {
-            const auto it = back->find(k);
-            if (it == back->end() || std::abs(it->second - v) > kReadBackRel * std::max(1.0, std::abs(v)))
-                return refuse("apply: " + k + " does not read back as written", ErrorCode::Device);
-        }
-        s.rule = "the parameters stay written; every one read back equal (relative " + num(kReadBackRel, 2) +
-                 "); the axis back at " + num(m_start, 6);
-        done(s);
-        m_r.outcome = Outcome::Applied;
-    }
+    if (auto refused = keepOrRestore(s, "; the axis back at " + num(m_start, 6)))
+        return std::move(*refused);
     m_fin.motionTimeS = m_motion;
     m_r.motionTimeS = m_motion;
     m_r.final = m_fin;

@@ -116,4 +116,36 @@ Result<device::AdaptiveFrfResult> Run::frf(double amplitudePct, double budgetS, 
     return a;
 }
 
+std::optional<AutoTuneResult> Run::keepOrRestore(Step& s, const std::string& ruleSuffix)
+{
+    if (m_o.dryRun) {
+        s.rule = "dry run: every parameter written during the run restored and read back" + ruleSuffix;
+        done(s);
+        restore();
+        m_r.outcome = Outcome::DryRun;
+        if (!m_r.restored)
+            return refuse("dry run: " + m_r.reason, ErrorCode::Device);
+        return std::nullopt;
+    }
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : m_written)
+        keys.push_back(k);
+    auto back = m_drive.readParameters(m_o.axis, keys);
+    if (!back)
+        return refuse("apply: the parameters could not be read back (" + back.error().detail + ")", back.error().code);
+    for (const auto& [k, v] : m_written) {
+        const auto it = back->find(k);
+        if (it == back->end() || std::abs(it->second - v) > kReadBackRel * std::max(1.0, std::abs(v)))
+            return refuse("apply: " + k + " reads back " +
+                              (it == back->end() ? std::string("nothing") : num(it->second, 7)) + ", written " +
+                              num(v, 7),
+                          ErrorCode::Device);
+    }
+    s.rule =
+        "the parameters stay written; every one read back equal (relative " + num(kReadBackRel, 2) + ")" + ruleSuffix;
+    done(s);
+    m_r.outcome = Outcome::Applied;
+    return std::nullopt;
+}
+
 } // namespace axistune::autotune::detail

@@ -12,6 +12,7 @@
 
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -74,6 +75,9 @@ protected:
     /// The adaptive multisine FRF of the sequence's band at a peak [% rated torque], within `budgetS` and what is
     /// left of the run's budget; `motionS` is set to its motion time, which also counts against the budget.
     Result<device::AdaptiveFrfResult> frf(double amplitudePct, double budgetS, double& motionS);
+    /// The apply step's end: a dry run restores everything and reads it back; else every written parameter must
+    /// read back as written. Records the step (its rule ends with `ruleSuffix`); a refusal when either fails.
+    std::optional<AutoTuneResult> keepOrRestore(Step& s, const std::string& ruleSuffix);
 
     device::Drive& m_drive;
     Options m_o;
