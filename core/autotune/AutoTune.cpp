@@ -4,6 +4,7 @@
 
 #include "core/autotune/AmplitudeMap.h"
 #include "core/autotune/AutoTuneRun.h"
+#include "core/autotune/SlidingPlant.h"
 #include "core/device/AdaptiveFrf.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Number.h"
@@ -513,6 +514,14 @@ Result<AutoTuneResult> Sequence::run()
     if (!plantR)
         return refuse("velocity loop: " + plantR.error().detail, plantR.error().code);
     dsp::FrequencyResponse plantF = std::move(plantR).value();
+    // The axis in motion (SlidingPlant.h): the damping that friction adds at standstill removed from the plant.
+    auto standstill = standstillDamping(plantF);
+    if (!standstill)
+        return refuse("velocity loop: " + standstill.error().detail, standstill.error().code);
+    std::vector<std::complex<double>> slideFactor; // P_s/P = 1/(1 − b·P) on every line of the plant
+    slideFactor.reserve(plantF.size());
+    for (const auto& p : plantF.h)
+        slideFactor.push_back(slidingPlant(p, standstill->bNmsPerRad) / p);
     dsp::FrequencyResponse* plant = &plantF;
     // The new notches in the plant: L_after/L_before of the notch prediction (Π N_k on every line).
     const std::size_t withNotches =
@@ -525,8 +534,11 @@ Result<AutoTuneResult> Sequence::run()
     }
     plant->metadata["measurement"] = "plant";
     std::vector<double> pf;
-    std::vector<std::complex<double>> ph;
+    std::vector<std::complex<double>> ph, phSlide;
     validLines(*plant, pf, ph);
+    for (std::size_t i = 0, k = 0; i < plant->size(); ++i)
+        if (k < pf.size() && plant->freqHz[i] == pf[k])
+            phSlide.push_back(ph[k++] * slideFactor[i]);
     tuning::VelocityLoopDesign design;
     Margins predicted;
     double fc = 0.0;
@@ -545,7 +557,8 @@ Result<AutoTuneResult> Sequence::run()
             const double fBottom = std::max(0.5 * fReq, pf.empty() ? 1.0 : pf.front());
             nlohmann::json scan = nlohmann::json::array();
             double bestF = 0.0, bestBw = 0.0, bestPm = m_t.phaseMarginDeg + kDesignPhaseReserveDeg;
-            Margins bestM;
+            Margins bestM, bestSliding;
+            double heldByFriction = 0.0;
             tuning::VelocityPi bestPi;
             const int n = 96;
             for (const double extraPm : kDesignPhaseSteps) {
@@ -557,31 +570,55 @@ Result<AutoTuneResult> Sequence::run()
                     auto pi = tuning::velocityPiFromFrf(*plant, f, pmDesign);
                     if (!pi || !(pi->kpNmsPerRad > 0.0) || !(pi->kiNmPerRad >= 0.0))
                         continue;
-                    std::vector<std::complex<double>> l(pf.size()), t(pf.size());
+                    std::vector<std::complex<double>> l(pf.size()), t(pf.size()), ls(pf.size());
                     for (std::size_t k = 0; k < pf.size(); ++k) {
-                        l[k] = tuning::piResponse(*pi, pf[k]) * ph[k];
+                        const auto c = tuning::piResponse(*pi, pf[k]);
+                        l[k] = c * ph[k];
+                        ls[k] = c * phSlide[k];
                         t[k] = l[k] / (1.0 + l[k]);
                     }
                     const auto m = marginsOf(pf, l);
-                    const bool ok = m.phaseMarginDeg >= m_t.phaseMarginDeg &&
-                                    m.gainMarginDb >= m_t.gainMarginDb + kDesignGainReserveDb &&
-                                    std::isfinite(m.phaseMarginDeg);
+                    const auto ms = marginsOf(pf, ls);
+                    const auto meets = [&](const Margins& x) {
+                        return x.phaseMarginDeg >= m_t.phaseMarginDeg &&
+                               x.gainMarginDb >= m_t.gainMarginDb + kDesignGainReserveDb &&
+                               std::isfinite(x.phaseMarginDeg);
+                    };
+                    const bool ok = meets(m) && meets(ms);
                     const double bw = closedLoopBandwidthHz(pf, t).value_or(0.0);
                     if (ok && f >= fReq && bw > bestBw) {
                         bestF = f;
                         bestBw = bw;
                         bestPm = pmDesign;
                         bestM = m;
+                        bestSliding = ms;
                         bestPi = *pi;
                     }
                     if (ok && bestBw <= 0.0 && f > bestF) // below the required crossover: for the refusal's text
                         bestF = f;
+                    if (meets(m) && !meets(ms) && f >= fReq) // for the refusal's text: only friction held it
+                        heldByFriction = std::max(heldByFriction, f);
                 }
             }
             s.measured = {{"plant_lines", pf.size()},
+                          {"standstill_damping_Nms_per_rad", standstill->bNmsPerRad},
+                          {"standstill_inertia_kgm2", standstill->inertiaKgm2},
+                          {"standstill_lines_up_to_Hz", standstill->upToHz},
                           {"crossover_searched_Hz", {fBottom, fTop}},
                           {"running_kp_Nms_per_rad", running.kpNmsPerRad},
                           {"running_ki_Nm_per_rad", running.kiNmPerRad}};
+            if (!(bestBw > 0.0) && heldByFriction > 0.0) {
+                done(s);
+                const double jw = standstill->inertiaKgm2 * kTwoPi * fReq;
+                return refuse("friction holds the axis during the FRF: the damping at standstill b = " +
+                              num(standstill->bNmsPerRad, 3) + " N m s/rad is " + num(standstill->bNmsPerRad / jw, 3) +
+                              " x the inertia's J w at the required crossover " + num(fReq, 4) +
+                              " Hz, so the measured plant is not the plant in motion; the PIs that keep " +
+                              num(m_t.phaseMarginDeg, 3) + " deg and " + num(m_t.gainMarginDb, 3) +
+                              " dB on the measured plant (up to " + num(heldByFriction, 4) +
+                              " Hz) lose them once the axis slides. Measure at a larger amplitude (--amplitudes) or "
+                              "tune by hand");
+            }
             if (!(bestBw > 0.0)) {
                 done(s);
                 return refuse("the required velocity crossover " + num(fReq, 4) + " Hz cannot be reached with " +
@@ -609,7 +646,8 @@ Result<AutoTuneResult> Sequence::run()
             s.chosen = {{"velocity.kp", design.proposed.kpNmsPerRad},
                         {"velocity.ki", design.proposed.kiNmPerRad},
                         {"crossover_Hz", fc},
-                        {"predicted", marginsJson(predicted)}};
+                        {"predicted", marginsJson(predicted)},
+                        {"predicted_in_motion", marginsJson(bestSliding)}};
             model::putOptional(s.chosen["predicted"], "velocity_bandwidth_Hz", bw, 1.0,
                                "the predicted closed loop does not fall 3 dB in the measured band");
             s.rule = "of the PIs designed for a crossover on a 96-step log grid " + num(fBottom, 4) + " ... " +
@@ -620,7 +658,13 @@ Result<AutoTuneResult> Sequence::run()
                      "notches, at least " +
                      num(m_t.phaseMarginDeg, 3) + " deg and " + num(m_t.gainMarginDb + kDesignGainReserveDb, 3) +
                      " dB (" + styleName(m_o.style) + " " + num(m_t.gainMarginDb, 3) + " dB + " +
-                     num(kDesignGainReserveDb, 2) + " dB reserve) over every crossover: " + design.rule;
+                     num(kDesignGainReserveDb, 2) +
+                     " dB reserve) over every crossover, on the plant as measured and on the plant in motion (the "
+                     "damping at standstill b = Re(1/P) = " +
+                     num(standstill->bNmsPerRad, 3) + " N m s/rad on the lines up to " + num(standstill->upToHz, 3) +
+                     " Hz removed: P/(1 - b P); friction that holds the axis during a small FRF is gone once it "
+                     "moves): " +
+                     design.rule;
             if (auto st =
                     write({{"velocity.kp", design.proposed.kpNmsPerRad}, {"velocity.ki", design.proposed.kiNmPerRad}});
                 !st)

@@ -255,6 +255,28 @@ TEST(Autotune, BacklashLargerThanTheSettlingWindowIsRefusedAndTheParametersAreUn
     std::filesystem::remove_all(dir);
 }
 
+TEST(Autotune, FrictionThatHoldsTheAxisDuringTheFrfIsRefusedForThatReason)
+{
+    // vmc X with 0.5 N m of Coulomb friction (the preset has 0.305 N m): the FRF's excitation does not make the axis
+    // slide, and the friction's sign smoothing (0.02 rad/s) acts as a damper of 0.5/0.02 = 25 N m s/rad at
+    // standstill. Designed on that plant alone, the PI crossed over at 440 Hz with kp = 2.9 N m s/rad; the move
+    // then commanded -8553 N m and the drive faulted (the run was refused as a drive fault, not for its reason).
+    // Now the PI must keep its margins on the plant in motion too (SlidingPlant.h), none does at 40 Hz, and the run
+    // is refused before the gains are written, naming the friction.
+    auto preset = nlohmann::json::parse(readFileText(AXISTUNE_SOURCE_RESOURCE_DIR "/machines/vmc.json"));
+    for (auto& a : preset["axes"])
+        if (a["name"] == "X")
+            a["parameters"]["plant.coulomb_motor"] = {{"value", 0.5}, {"unit", "Nm"}, {"source", "test variant"}};
+    const auto dir = makeTempDir("autotune-friction");
+    const auto machine = (dir / "vmc-friction.json").string();
+    {
+        std::ofstream f(machine);
+        f << preset.dump(1);
+    }
+    refusedWithParametersUnchanged("--machine " + machine, "X", "", "friction holds the axis during the FRF");
+    std::filesystem::remove_all(dir);
+}
+
 TEST(Autotune, AmplitudesNeedThreeIncreasingValues)
 {
     EXPECT_EQ(runCli("autotune --connect sim:vmc --axis X --amplitudes 5,10").exitCode, 2);
