@@ -8,6 +8,7 @@
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -119,6 +120,21 @@ FrfFigures figuresOf(const device::AdaptiveFrfResult& a)
             ++f.nonlinear;
     }
     return f;
+}
+
+std::optional<std::string> frfRefusal(const FrfFigures& f)
+{
+    const double lines = static_cast<double>(std::max<std::size_t>(f.lines, 1));
+    if (static_cast<double>(f.nonlinear) > kMaxNonlinearFraction * lines)
+        return "strong non-linearity: " + count(static_cast<long long>(f.nonlinear)) + " of " +
+               count(static_cast<long long>(f.lines)) +
+               " FRF lines change with the excitation beyond their noise (more than " +
+               num(100.0 * kMaxNonlinearFraction, 2) + " %); friction or backlash dominate the small-signal response";
+    if (static_cast<double>(f.valid) < kMinValidFraction * lines)
+        return "coherence too low: only " + count(static_cast<long long>(f.valid)) + " of " +
+               count(static_cast<long long>(f.lines)) + " FRF lines are valid (at least " +
+               num(100.0 * kMinValidFraction, 2) + " % needed) within the torque limit and the time budget";
+    return std::nullopt;
 }
 
 nlohmann::json frfJson(const device::AdaptiveFrfResult& a, double amplitudePct)

@@ -197,17 +197,8 @@ std::optional<AutoTuneResult> Sequence::measureFrf()
              num(100.0 * kRetryNonlinearFraction, 2) +
              " % are non-linear (friction); the try with the most valid lines is used" + mapRule;
     done(s);
-    const double lines = static_cast<double>(std::max<std::size_t>(f.lines, 1));
-    if (static_cast<double>(f.nonlinear) > kMaxNonlinearFraction * lines)
-        return refuse("strong non-linearity: " + count(static_cast<long long>(f.nonlinear)) + " of " +
-                      count(static_cast<long long>(f.lines)) +
-                      " FRF lines change with the excitation beyond their noise (more than " +
-                      num(100.0 * kMaxNonlinearFraction, 2) +
-                      " %); friction or backlash dominate the small-signal response");
-    if (static_cast<double>(f.valid) < kMinValidFraction * lines)
-        return refuse("coherence too low: only " + count(static_cast<long long>(f.valid)) + " of " +
-                      count(static_cast<long long>(f.lines)) + " FRF lines are valid (at least " +
-                      num(100.0 * kMinValidFraction, 2) + " % needed) within the torque limit and the time budget");
+    if (auto why = frfRefusal(f))
+        return refuse(*why);
     return std::nullopt;
 }
 

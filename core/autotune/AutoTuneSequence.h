@@ -60,6 +60,9 @@ struct FrfFigures {
 };
 FrfFigures figuresOf(const device::AdaptiveFrfResult& a);
 nlohmann::json frfJson(const device::AdaptiveFrfResult& a, double amplitudePct);
+/// The FRF step's refusal, if any: more than kMaxNonlinearFraction of the lines non-linear ("strong non-linearity"),
+/// else fewer than kMinValidFraction valid ("coherence too low").
+std::optional<std::string> frfRefusal(const FrfFigures& f);
 
 class Sequence : public Run {
 public:
