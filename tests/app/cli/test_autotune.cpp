@@ -213,6 +213,20 @@ void refusedWithParametersUnchanged(const std::string& simdriveArgs, const std::
     std::filesystem::remove_all(dir);
 }
 
+/// A variant of vmc written into `dir`: axis X with one parameter changed (docs/simulator.md), for
+/// axistune-simdrive --machine. Returns the file's path.
+std::string vmcVariant(const std::filesystem::path& dir, const std::string& key, double value, const std::string& unit)
+{
+    auto preset = nlohmann::json::parse(readFileText(AXISTUNE_SOURCE_RESOURCE_DIR "/machines/vmc.json"));
+    for (auto& a : preset["axes"])
+        if (a["name"] == "X")
+            a["parameters"][key] = {{"value", value}, {"unit", unit}, {"source", "test variant"}};
+    const auto machine = (dir / ("vmc-" + key + ".json")).string();
+    std::ofstream f(machine);
+    f << preset.dump(1);
+    return machine;
+}
+
 TEST(Autotune, ResonanceAtTheRequiredBandwidthIsRefusedAndTheParametersAreUnchanged)
 {
     // dd-table C has a resonance at 600 Hz (resources/machines/dd-table.json): a required 600 Hz velocity crossover
@@ -241,16 +255,8 @@ TEST(Autotune, BacklashLargerThanTheSettlingWindowIsRefusedAndTheParametersAreUn
     // docs/simulator.md), served by axistune-simdrive --machine. The move step's reversal measures about 17 um of lost
     // motion at zero torque (the play less the motor-side friction's wind-up, tests/core/autotune "Backlash"), far
     // above the 2 um width of the +-1 um settling window.
-    auto preset = nlohmann::json::parse(readFileText(AXISTUNE_SOURCE_RESOURCE_DIR "/machines/vmc.json"));
-    for (auto& a : preset["axes"])
-        if (a["name"] == "X")
-            a["parameters"]["plant.backlash"] = {{"value", 20.0}, {"unit", "um"}, {"source", "test variant"}};
     const auto dir = makeTempDir("autotune-backlash");
-    const auto machine = (dir / "vmc-backlash.json").string();
-    {
-        std::ofstream f(machine);
-        f << preset.dump(1);
-    }
+    const auto machine = vmcVariant(dir, "plant.backlash", 20.0, "um");
     refusedWithParametersUnchanged("--machine " + machine, "X", "", "backlash larger than the settling window");
     std::filesystem::remove_all(dir);
 }
@@ -258,21 +264,14 @@ TEST(Autotune, BacklashLargerThanTheSettlingWindowIsRefusedAndTheParametersAreUn
 TEST(Autotune, FrictionThatHoldsTheAxisDuringTheFrfIsRefusedForThatReason)
 {
     // vmc X with 0.5 N m of Coulomb friction (the preset has 0.305 N m): the FRF's excitation does not make the axis
-    // slide, and the friction's sign smoothing (0.02 rad/s) acts as a damper of 0.5/0.02 = 25 N m s/rad at
-    // standstill. Designed on that plant alone, the PI crossed over at 440 Hz with kp = 2.9 N m s/rad; the move
-    // then commanded -8553 N m and the drive faulted (the run was refused as a drive fault, not for its reason).
-    // Now the PI must keep its margins on the plant in motion too (SlidingPlant.h), none does at 40 Hz, and the run
-    // is refused before the gains are written, naming the friction.
-    auto preset = nlohmann::json::parse(readFileText(AXISTUNE_SOURCE_RESOURCE_DIR "/machines/vmc.json"));
-    for (auto& a : preset["axes"])
-        if (a["name"] == "X")
-            a["parameters"]["plant.coulomb_motor"] = {{"value", 0.5}, {"unit", "Nm"}, {"source", "test variant"}};
+    // slide, and the friction's sign smoothing (0.02 rad/s) acts as a damper of up to 0.5/0.02 = 25 N m s/rad
+    // (the FRF reads 3.9 N m s/rad at its amplitudes, where the axis slides part of the time). Designed on that plant
+    // alone, the PI crossed over at 440 Hz with kp = 2.9 N m s/rad; the move then commanded -8553 N m and the drive
+    // faulted (the run was refused as a drive fault, not for its reason). Now the PI must keep its margins on the plant
+    // in motion too (SlidingPlant.h), none does at 40 Hz, and the run is refused before the gains are written, naming
+    // the friction.
     const auto dir = makeTempDir("autotune-friction");
-    const auto machine = (dir / "vmc-friction.json").string();
-    {
-        std::ofstream f(machine);
-        f << preset.dump(1);
-    }
+    const auto machine = vmcVariant(dir, "plant.coulomb_motor", 0.5, "Nm");
     refusedWithParametersUnchanged("--machine " + machine, "X", "", "friction holds the axis during the FRF");
     std::filesystem::remove_all(dir);
 }
