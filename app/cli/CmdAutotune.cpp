@@ -6,8 +6,10 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/autotune/AmplitudeMap.h"
 #include "core/autotune/AutoTune.h"
+#include "core/autotune/Undo.h"
 #include "core/device/ModbusDrive.h"
 #include "core/device/MoveTo.h"
+#include "core/model/InputLimits.h"
 #include "core/model/Number.h"
 
 #include <cmath>
@@ -34,12 +36,53 @@ struct AutotuneOptions {
     int positions = 1;
     std::string at; ///< --at: move there first (one position)
     bool budgetGiven = false;
+    std::string undoPath; ///< --undo RESULT.json
+    bool force = false;
+    std::vector<std::string> tuneOptionsGiven; ///< options of a tune given with --undo
 };
+
+/// --undo RESULT.json: the parameters an applied run wrote go back to their values before it.
+int runUndo(const AutotuneOptions& o)
+{
+    const std::string cmd = "autotune --undo";
+    auto bad = [&](const std::string& what) { return reportError(cmd, makeError(ErrorCode::BadInput, what)); };
+    if (!o.tuneOptionsGiven.empty())
+        return bad(o.tuneOptionsGiven.front() + " is an option of a tune, not of --undo");
+    auto j = model::readJsonFile(o.undoPath);
+    if (!j)
+        return reportError(cmd, j.error());
+    auto tune = autotune::appliedTuneFromJson(*j);
+    if (!tune)
+        return bad(model::displayPath(o.undoPath) + ": " + tune.error().detail);
+    if (!o.axis.empty() && o.axis != tune->axis)
+        return bad("--axis " + o.axis + " but " + model::displayPath(o.undoPath) + " tuned axis " + tune->axis);
+    auto drive = device::connectAny({o.connect, o.seed});
+    if (!drive)
+        return reportError(cmd, drive.error());
+    auto undone = autotune::undoTune(**drive, *tune, o.force);
+    if (!undone)
+        return reportError(cmd, undone.error());
+    nlohmann::json out{{"axis", tune->axis}, {"connection", o.connect}, {"from", model::displayPath(o.undoPath)}};
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& u : *undone)
+        list.push_back({{"key", u.key}, {"was", u.applied}, {"now", u.restored}});
+    out["undone"] = list;
+    for (const auto& u : *undone)
+        std::cerr << "  " << u.key << ": " << model::formatNumber(u.applied, 7) << " -> "
+                  << model::formatNumber(u.restored, 7) << "\n";
+    return writeJsonResult(cmd, out, o.outPath);
+}
 
 int runAutotune(const AutotuneOptions& o)
 {
+    if (!o.undoPath.empty())
+        return runUndo(o);
     const std::string cmd = "autotune";
     auto bad = [&](const std::string& what) { return reportError(cmd, makeError(ErrorCode::BadInput, what)); };
+    if (o.axis.empty())
+        return bad("--axis is required (the axis to tune)");
+    if (o.force)
+        return bad("--force is an option of --undo");
     auto style = autotune::parseStyle(o.style);
     if (!style)
         return bad("--style: " + style.error().detail);
@@ -128,7 +171,7 @@ const CliRegistrar kRegistrar{CliCommand{
     [](CLI::App& sub) -> std::function<int()> {
         auto o = std::make_shared<AutotuneOptions>();
         sub.add_option("--connect", o->connect, connectOptionHelp())->required();
-        sub.add_option("--axis", o->axis, "axis to tune")->required();
+        sub.add_option("--axis", o->axis, "axis to tune (with --undo: optional, must be the result's)");
         sub.add_option("--style", o->style,
                        "gentle (60 deg / 10 dB, 20 Hz), standard (50 deg / 8 dB, 40 Hz; default) or stiff "
                        "(45 deg / 6 dB, 80 Hz): design margins and required velocity crossover");
@@ -154,8 +197,16 @@ const CliRegistrar kRegistrar{CliCommand{
         sub.add_flag("--dry-run", o->dryRun, "run every step, then restore every parameter (nothing applied)");
         sub.add_option("--seed", o->seed, "noise seed of an embedded simulated machine");
         sub.add_option("--out", o->outPath, "write the result JSON to this file instead of stdout");
+        sub.add_option("--undo", o->undoPath,
+                       "RESULT.json of an applied run: put the parameters it applied back to their values before it "
+                       "(refused when the drive no longer holds what the run applied), read them back; no tuning");
+        sub.add_flag("--force", o->force, "with --undo: undo even when the drive holds other values than applied");
         return recordSessions(sub, [o, &sub] {
             o->budgetGiven = sub.count("--time-budget") > 0;
+            for (const char* t : {"--style", "--time-budget", "--positions", "--at", "--min-bandwidth-hz", "--motor",
+                                  "--amplitudes", "--dry-run"})
+                if (sub.count(t) > 0)
+                    o->tuneOptionsGiven.push_back(t);
             return runAutotune(*o);
         });
     }}};

@@ -281,3 +281,76 @@ TEST(Autotune, AmplitudesNeedThreeIncreasingValues)
     EXPECT_EQ(runCli("autotune --connect sim:vmc --axis X --amplitudes 5,10").exitCode, 2);
     EXPECT_EQ(runCli("autotune --connect sim:vmc --axis X --amplitudes 10,5,20").exitCode, 2);
 }
+
+TEST(Autotune, UndoPutsBackTheValuesBeforeTheRunAndRefusesWhenTheyChangedSince)
+{
+    // Over Modbus (the drive keeps its parameters between processes): every parameter read before a tune, after it
+    // (some differ: the run applied them), and after --undo (all equal to before, as the JSON of `params`).
+    axistune::testing::SimDrive srv("--preset vmc");
+    ASSERT_GT(srv.port(), 0);
+    const std::string uri = "modbus://127.0.0.1:" + std::to_string(srv.port());
+    auto params = [&] {
+        const auto p = runCli("params --connect " + uri + " --axis X");
+        EXPECT_EQ(p.exitCode, 0) << p.err;
+        return nlohmann::json::parse(p.out)["parameters"];
+    };
+    const auto before = params();
+    const auto dir = makeTempDir("autotune-undo");
+    const auto result = (dir / "result.json").string();
+    const auto r = runCli("autotune --connect " + uri + " --axis X --out " + result);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto applied = params();
+    EXPECT_NE(applied, before);
+    const auto fin = nlohmann::json::parse(readFileText(result))["final"]["parameters"];
+    ASSERT_FALSE(fin.empty());
+
+    const auto u = runCli("autotune --undo " + result + " --connect " + uri);
+    ASSERT_EQ(u.exitCode, 0) << u.err;
+    EXPECT_EQ(params(), before);
+    const auto out = nlohmann::json::parse(u.out);
+    EXPECT_EQ(out["undone"].size(), fin.size());
+    // `params` prints 8 significant digits of the drive's float32 values: equal within 1e-7 relative.
+    for (const auto& e : out["undone"]) {
+        const std::string k = e["key"];
+        EXPECT_NEAR(e["was"].get<double>(), applied[k].get<double>(), 1e-7 * std::abs(applied[k].get<double>())) << k;
+        EXPECT_NEAR(e["now"].get<double>(), before[k].get<double>(), 1e-7 * std::abs(before[k].get<double>())) << k;
+    }
+
+    // Again: the drive no longer holds what the run applied; refused (exit 4) and nothing written.
+    const auto again = runCli("autotune --undo " + result + " --connect " + uri);
+    EXPECT_EQ(again.exitCode, 4) << again.err;
+    EXPECT_NE(again.err.find("changed since"), std::string::npos) << again.err;
+    EXPECT_EQ(params(), before);
+
+    // A refused run has nothing to undo; another axis and tuning options are refused before connecting.
+    auto j = nlohmann::json::parse(readFileText(result));
+    j["outcome"] = "refused";
+    const auto refused = (dir / "refused.json").string();
+    {
+        std::ofstream f(refused);
+        f << j.dump();
+    }
+    const auto nr = runCli("autotune --undo " + refused + " --connect " + uri);
+    EXPECT_EQ(nr.exitCode, 2);
+    EXPECT_NE(nr.err.find("only an applied run can be undone"), std::string::npos) << nr.err;
+    EXPECT_EQ(runCli("autotune --undo " + result + " --connect " + uri + " --axis Y").exitCode, 2);
+    EXPECT_EQ(runCli("autotune --undo " + result + " --connect " + uri + " --style stiff").exitCode, 2);
+    EXPECT_EQ(runCli("autotune --connect " + uri + " --axis X --force").exitCode, 2);
+    EXPECT_EQ(runCli("autotune --connect " + uri).exitCode, 2); // no --axis for a tune
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Autotune, UndoOfAResultWithoutTheValuesBeforeNamesTheField)
+{
+    const auto dir = makeTempDir("autotune-undo-bad");
+    const auto path = (dir / "r.json").string();
+    {
+        std::ofstream f(path);
+        f << R"({"outcome":"applied","axis":"X","final":{"parameters":{"velocity.kp":1.5}},)"
+             R"("steps":[{"name":"apply","measured":{}}]})";
+    }
+    const auto r = runCli("autotune --undo " + path + " --connect sim:vmc");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("steps[apply].measured.before.velocity.kp"), std::string::npos) << r.err;
+    std::filesystem::remove_all(dir);
+}
