@@ -3,10 +3,15 @@
 // Python module), from a copy of Debian's stock sim/tklinuxcnc/servo_sim configuration: a gain changed live through
 // `linuxcnc:` and written by `axistune-cli persist` into the INI is what the next full LinuxCNC started from that INI
 // runs with (issue 17, Persist).
+#include "core/io/FrfCsv.h"
+
+#include <cmath>
+#include <complex>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -91,5 +96,99 @@ TEST_F(FullLinuxCnc, PersistedGainIsReadByTheNextFullLinuxCnc)
     EXPECT_DOUBLE_EQ(getp("pid_y.Pgain"), 1500.0);
     EXPECT_NE(halText({"-s", "show", "pin", "pid_x.enable"}).find("TRUE"), std::string::npos);
     stop();
+    fs::remove_all(dir);
+}
+
+namespace {
+
+/// The open position loop of servo_sim's joint 0 as its HAL file builds it (/usr/share/linuxcnc/hallib/servo_sim.hal,
+/// the INI's [JOINT_0]), written out here from the components' update equations, one servo period T:
+///   pid (LinuxCNC's discrete PID):  C(z) = P + I*T/(1 - 1/z) + D*(1 - 1/z)/T
+///   scale (gain DRIVE_RATIO 15), lowpass (gain a = 0.1): y[n] = y[n-1] + a*(15*u[n] - y[n-1])  [motor rev/s]
+///   sim_encoder (MOTOR_PPR 100, 4 counts per pulse) counts during the next period, encoder (INPUT_SCALE 6000
+///   counts/in) is captured at the next period's start: x[n+1] = x[n] + T*y[n]*400/6000
+///   P(z) = a*15*T*(400/6000) / z / ((1 - 1/z)(1 - (1 - a)/z)).
+/// The open loop as AxisTune measures it, -PID output / drive input, is L = C*P.
+std::complex<double> servoSimOpenLoop(double fHz)
+{
+    const double T = 1e-3, P = 1500.0, I = 8000.0, D = 4.0, a = 0.1;
+    const std::complex<double> zi = std::exp(std::complex<double>(0.0, -2.0 * M_PI * fHz * T));
+    const auto c = P + I * T / (1.0 - zi) + D * (1.0 - zi) / T;
+    const auto p = a * 15.0 * T * (400.0 / 6000.0) * zi / ((1.0 - zi) * (1.0 - (1.0 - a) * zi));
+    return c * p;
+}
+
+} // namespace
+
+TEST_F(FullLinuxCnc, ServoSimOpenLoopMeasuredThroughLinuxCncEqualsItsHalFileAndGivesTheCrossover)
+{
+    // Issue 17: "the stock servo_sim configuration: an FRF measured through a full headless linuxcnc, the crossover
+    // reported". The stock pid has DEADBAND 0.0001 in (0.6 encoder counts): a dead zone on the following error that
+    // lowers the small-signal gain by 1.5-2.5 dB and the coherence to < 0.9 at the injection's amplitudes. It is set
+    // to 0 live for the measurement (every other gain as the INI has it), so the loop is the linear one above plus
+    // the encoder's quantization.
+    ASSERT_TRUE(fs::exists(kServoSim / "servo_sim.ini")) << "linuxcnc-uspace's sample configurations are missing";
+    const fs::path dir = fs::path(::testing::TempDir()) / "full-linuxcnc-frf";
+    fs::remove_all(dir);
+    fs::copy(kServoSim, dir, fs::copy_options::recursive);
+    const fs::path ini = dir / "servo_sim.ini";
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::string cli = std::string(AXISTUNE_CLI);
+    const std::string conn = " --connect linuxcnc:" + ini.string() + " --axis X";
+    start(ini);
+    EXPECT_DOUBLE_EQ(getp("pid_x.Pgain"), 1500.0);
+    EXPECT_DOUBLE_EQ(getp("pid_x.Igain"), 8000.0);
+    EXPECT_DOUBLE_EQ(getp("pid_x.Dgain"), 4.0);
+    ASSERT_EQ(std::system((cli + " params" + conn + " --set deadband=0 >/dev/null").c_str()), 0);
+    // 10 ... 190 Hz (19 lines), peak 0.8 in/s (maxoutput is MAX_VELOCITY 1.67: at most half), 120 periods: 36.3 s.
+    // The encoder's pulses come from the base thread, whose timing is the machine's (uspace without an RT kernel):
+    // under load the lines are noisier. With 60 periods a run at load 6 left no line valid, 120 periods left 17.
+    const std::string csv = (dir / "open-loop.csv").string();
+    const int rc = std::system((cli + " capture" + conn +
+                                " --test frf --method multisine --band 10:200:10 --amplitude 0.8 --periods 120 "
+                                "--quantity open-loop --out " +
+                                csv + " >/dev/null")
+                                   .c_str());
+    ASSERT_EQ(rc, 0);
+    const std::string notchJson = (dir / "margins.json").string();
+    ASSERT_EQ(std::system((cli + " notch --frf " + csv + " --loop open > " + notchJson).c_str()), 0);
+    stop();
+
+    auto frf = io::readFrfCsvFile(csv);
+    ASSERT_TRUE(frf.ok()) << frf.error().detail;
+    EXPECT_EQ(frf->metadata.at("quantity"), "open-loop");
+    EXPECT_EQ(frf->metadata.at("fs_Hz"), "1000");
+    // Every valid line against the model: a valid line has sigma_H/|H| <= 0.03 (max_relative_noise), so 3.5 sigma is
+    // 0.105 of |H|: 0.9 dB and 6.0 deg; the base thread's pulses (50 us) shift the encoder by up to one base period,
+    // 2.2 deg at 123 Hz. Hence 1 dB and 8 deg, over the crossover's region up to 150 Hz (1.7x the crossover); above
+    // it the model leaves out the pulses' timing and the measured |L| runs up to 1.3 dB above it (seen at 193 Hz).
+    // Seen up to 150 Hz: within 0.64 dB and 4.5 deg.
+    std::size_t valid = 0;
+    for (std::size_t i = 0; i < frf->size(); ++i) {
+        if (!frf->valid[i] || frf->freqHz[i] > 150.0)
+            continue;
+        ++valid;
+        const auto model = servoSimOpenLoop(frf->freqHz[i]);
+        const auto ratio = frf->h[i] / model;
+        EXPECT_LT(std::abs(20.0 * std::log10(std::abs(ratio))), 1.0) << frf->freqHz[i] << " Hz";
+        EXPECT_LT(std::abs(std::arg(ratio)) * 180.0 / M_PI, 8.0) << frf->freqHz[i] << " Hz";
+    }
+    EXPECT_GE(valid, 5u) << "too few valid lines to read a crossover";
+    // The crossover AxisTune reports (notch --loop open: margins of the measured L on its valid lines) against the
+    // model's |L| = 1 (bisection). |L| falls about 24 dB/decade there (63 -> 123 Hz: 3.9 -> -3.0 dB in the model), so
+    // the lines' 1 dB moves the crossover by up to 10 %; the phase margin within the lines' 8 deg.
+    double lo = 20.0, hi = 400.0;
+    for (int k = 0; k < 60; ++k) {
+        const double mid = std::sqrt(lo * hi);
+        (std::abs(servoSimOpenLoop(mid)) > 1.0 ? lo : hi) = mid;
+    }
+    const double fcModel = lo;
+    const double pmModel = 180.0 + std::arg(servoSimOpenLoop(fcModel)) * 180.0 / M_PI;
+    const auto m = nlohmann::json::parse(slurp(notchJson))["margins_before"];
+    ASSERT_TRUE(m.contains("phase_margin_Hz")) << m.dump();
+    EXPECT_NEAR(m["phase_margin_Hz"].get<double>(), fcModel, 0.10 * fcModel);
+    EXPECT_NEAR(m["phase_margin_deg"].get<double>(), pmModel, 8.0);
+    std::cout << "servo_sim open loop: " << valid << " valid lines; crossover " << m["phase_margin_Hz"] << " Hz, PM "
+              << m["phase_margin_deg"] << " deg; the HAL file's model " << fcModel << " Hz, " << pmModel << " deg\n";
     fs::remove_all(dir);
 }
