@@ -163,6 +163,16 @@ Result<AutoTuneResult> Sequence::run()
     if (!caps)
         return caps.error();
     m_caps = *caps;
+    // An axis whose position loop the NC closes with a PID (hal:, linuxcnc:: its FRF reports the plant and the open
+    // position loop in the PID output's units) has no drive velocity loop for this sequence to tune: its one-button
+    // tuner is pid-tune (docs/linuxcnc.md "Tuning from the command line").
+    if (m_caps.frfPeakInOutputUnits && std::find(m_caps.frfQuantities.begin(), m_caps.frfQuantities.end(),
+                                                 device::FrfQuantity::OpenLoop) != m_caps.frfQuantities.end())
+        return makeError(ErrorCode::BadInput,
+                         "axis " + axis +
+                             " is a position PID the NC closes (no drive velocity loop to tune): use axistune-cli "
+                             "pid-tune --connect ... --axis " +
+                             axis + " [--apply], the one-button tuner for a LinuxCNC joint");
     if (!m_caps.offers(device::FrfMethod::Multisine) || (!m_caps.evaluatesFrf && m_caps.traceRateHz <= 0.0))
         return makeError(ErrorCode::BadInput, "axis " + axis +
                                                   ": the drive offers no multisine FRF test; the "

@@ -290,3 +290,22 @@ TEST_F(HalTestbed, NcExportForLinuxCncLoadsIntoHal)
     ASSERT_TRUE(runScript({"start", "--ini", ini}));
     expectGains("INI keys");
 }
+
+// `autotune` is the drive velocity loop's one-button tuner; a LinuxCNC joint is a position PID the NC closes, and
+// its tuner is pid-tune: autotune says so (exit 2) before anything is inserted into HAL.
+TEST_F(HalTestbed, AutotuneOnAPositionPidNamesPidTuneAndChangesNothing)
+{
+    startBed(1000000);
+    const auto sigBefore = halText({"-s", "show", "sig"});
+    const auto functBefore = halText({"-s", "show", "funct"});
+    const std::string out = (std::filesystem::path(::testing::TempDir()) / "autotune-hal.err").string();
+    const int rc =
+        std::system((std::string(AXISTUNE_CLI) + " autotune --connect hal: --axis pid.x >/dev/null 2>" + out).c_str());
+    EXPECT_EQ(WEXITSTATUS(rc), 2);
+    std::ifstream f(out);
+    const std::string err((std::istreambuf_iterator<char>(f)), {});
+    EXPECT_NE(err.find("is a position PID the NC closes"), std::string::npos) << err;
+    EXPECT_NE(err.find("pid-tune"), std::string::npos) << err;
+    EXPECT_EQ(halText({"-s", "show", "sig"}), sigBefore);
+    EXPECT_EQ(halText({"-s", "show", "funct"}), functBefore);
+}
