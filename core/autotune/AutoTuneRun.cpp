@@ -43,7 +43,7 @@ void Run::restore()
     std::string differ;
     for (const auto& [k, v] : m_r.before) {
         const auto it = now->find(k);
-        if (it == now->end() || std::abs(it->second - v) > kReadBackRel * std::max(1.0, std::abs(v)))
+        if (it == now->end() || !readsBackAs(it->second, v))
             differ += (differ.empty() ? "" : ", ") + k;
     }
     m_r.restored = differ.empty();
@@ -135,7 +135,7 @@ std::optional<AutoTuneResult> Run::keepOrRestore(Step& s, const std::string& rul
         return refuse("apply: the parameters could not be read back (" + back.error().detail + ")", back.error().code);
     for (const auto& [k, v] : m_written) {
         const auto it = back->find(k);
-        if (it == back->end() || std::abs(it->second - v) > kReadBackRel * std::max(1.0, std::abs(v)))
+        if (it == back->end() || !readsBackAs(it->second, v))
             return refuse("apply: " + k + " reads back " +
                               (it == back->end() ? std::string("nothing") : num(it->second, 7)) + ", written " +
                               num(v, 7),

@@ -10,6 +10,8 @@
 #include "core/device/Drive.h"
 #include "core/model/Number.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -43,6 +45,11 @@ inline constexpr double kDesignGainReserveDb = 1.0;
 inline constexpr int kMaxDesignAttempts = 3;
 /// Read-back tolerance (a Modbus drive stores float32).
 inline constexpr double kReadBackRel = 1e-6;
+/// A value read back equals the one written within kReadBackRel (relative, absolute below 1).
+inline bool readsBackAs(double read, double written)
+{
+    return std::abs(read - written) <= kReadBackRel * std::max(1.0, std::abs(written));
+}
 
 /// A number as text, without the locale.
 inline std::string num(double v, int significant = 4)

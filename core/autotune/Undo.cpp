@@ -9,17 +9,8 @@
 
 namespace axistune::autotune {
 
-using detail::kReadBackRel;
 using detail::num;
-
-namespace {
-
-bool same(double a, double b)
-{
-    return std::abs(a - b) <= kReadBackRel * std::max(1.0, std::abs(b));
-}
-
-} // namespace
+using detail::readsBackAs;
 
 Result<AppliedTune> appliedTuneFromJson(const nlohmann::json& j)
 {
@@ -76,7 +67,7 @@ Result<std::vector<UndoneParameter>> undoTune(device::Drive& drive, const Applie
             const auto it = now->find(k);
             if (it == now->end())
                 return makeError(ErrorCode::NotFound, "axis " + tune.axis + " has no parameter " + k);
-            if (!same(it->second, v))
+            if (!readsBackAs(it->second, v))
                 return makeError(ErrorCode::Safety, k + " is " + num(it->second, 7) + ", not the " + num(v, 7) +
                                                         " the run applied: it was changed since, and undoing would "
                                                         "overwrite that (nothing written)");
@@ -92,7 +83,7 @@ Result<std::vector<UndoneParameter>> undoTune(device::Drive& drive, const Applie
     std::vector<UndoneParameter> out;
     for (const auto& k : keys) {
         const auto it = read->find(k);
-        if (it == read->end() || !same(it->second, back[k]))
+        if (it == read->end() || !readsBackAs(it->second, back[k]))
             return makeError(ErrorCode::Device, k + " reads back " +
                                                     (it == read->end() ? std::string("nothing") : num(it->second, 7)) +
                                                     " after the undo, written " + num(back[k], 7));
