@@ -28,6 +28,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -681,7 +682,7 @@ void AutoTuneResultPage::showResonanceMap(const nlohmann::json& j, bool linear)
     // From the result JSON (resultJson: resonance_map[] and final.positions[]), as the CLI writes it.
     const QString unit = linear ? QStringLiteral("m") : QStringLiteral("rad");
     m_resonancePlot->clear();
-    m_resonancePlot->setAxes(tr("Position"), unit, tr("First resonance of the open velocity loop"), tr("Hz"));
+    m_resonancePlot->setAxes(tr("Position"), unit, tr("First resonance"), tr("Hz"));
     std::vector<double> x, f;
     for (const auto& m : j["resonance_map"]) {
         const double pos = m.value("position", std::numeric_limits<double>::quiet_NaN());
@@ -702,12 +703,21 @@ void AutoTuneResultPage::showResonanceMap(const nlohmann::json& j, bool linear)
         ++k;
     }
     m_resonancePlot->rescale();
+    // Room for the labels right of and above the points.
+    if (!x.empty()) {
+        const auto [x0, x1] = std::minmax_element(x.begin(), x.end());
+        const auto [f0, f1] = std::minmax_element(f.begin(), f.end());
+        const double dx = std::max(*x1 - *x0, 1e-3 * std::max(1.0, std::abs(*x0)));
+        const double df = std::max(*f1 - *f0, 0.05 * *f1);
+        m_resonancePlot->setXRange(*x0 - 0.08 * dx, *x1 + 0.25 * dx);
+        m_resonancePlot->setYRange(*f0 - 0.15 * df, *f1 + 0.2 * df);
+    }
 
     m_positionsTable->setRowCount(0);
-    m_positionsTable->setHorizontalHeaderLabels({tr("Position [%1]").arg(unit), tr("First resonance [Hz]"),
-                                                 tr("Height [dB]"), tr("Phase margin [°]"), tr("Gain margin [dB]"),
-                                                 tr("Velocity bandwidth [Hz]"), tr("Position bandwidth [Hz]"),
-                                                 tr("Predicted phase margin [°]"), tr("Predicted gain margin [dB]")});
+    m_positionsTable->setHorizontalHeaderLabels({tr("Position\n[%1]").arg(unit), tr("First resonance\n[Hz]"),
+                                                 tr("Height\n[dB]"), tr("Phase margin\n[°]"), tr("Gain margin\n[dB]"),
+                                                 tr("Velocity bandwidth\n[Hz]"), tr("Position bandwidth\n[Hz]"),
+                                                 tr("Predicted phase\nmargin [°]"), tr("Predicted gain\nmargin [dB]")});
     const auto& map = j["resonance_map"];
     const nlohmann::json none = nlohmann::json::array();
     const auto& per = j.contains("final") && j["final"].contains("positions") ? j["final"]["positions"] : none;
@@ -739,7 +749,7 @@ void AutoTuneResultPage::showAmplitudeMap(const nlohmann::json& map)
     // measured at, coloured by the core's verdict.
     m_ampMap->clear();
     m_ampMagnitude->clear();
-    m_ampMap->setAxes(tr("Frequency"), tr("Hz"), tr("Multisine peak"), tr("% of rated torque"), true, false);
+    m_ampMap->setAxes(tr("Frequency"), tr("Hz"), tr("Multisine peak"), tr("% of rated torque"), true, true);
     m_ampMagnitude->setAxes(tr("Frequency"), tr("Hz"), tr("Closed velocity loop |T|"), tr("dB"), true, false);
     std::vector<double> fl, al, fn, an, fo, ao, fnMag, nMag;
     std::map<double, std::pair<std::vector<double>, std::vector<double>>> perAmplitude;
@@ -767,15 +777,18 @@ void AutoTuneResultPage::showAmplitudeMap(const nlohmann::json& map)
             fmax = std::max(fmax, f);
         }
     }
-    m_ampMap->addCurve(tr("linear"), fl, al, QColor(0, 90, 181), Qt::SolidLine, true);
-    m_ampMap->addCurve(tr("non-linear"), fn, an, QColor(200, 0, 30), Qt::SolidLine, true);
-    m_ampMap->addCurve(tr("not compared"), fo, ao, QColor(170, 170, 170), Qt::SolidLine, true);
     if (map.contains("design_amplitude_pct") && map["design_amplitude_pct"].is_number() && fmax > fmin) {
         const double a = map["design_amplitude_pct"].get<double>();
         m_ampMap->addCurve(tr("designed from %1 %").arg(a, 0, 'g', 4), {fmin, fmax}, {a, a}, QColor(40, 140, 40),
                            Qt::DashLine);
     }
+    // The few linear lines over the many non-linear ones (vmc X: 14 of 388), so that they show.
+    m_ampMap->addCurve(tr("non-linear"), fn, an, QColor(200, 0, 30), Qt::SolidLine, true);
+    m_ampMap->addCurve(tr("linear"), fl, al, QColor(0, 90, 181), Qt::SolidLine, true);
+    m_ampMap->addCurve(tr("not compared"), fo, ao, QColor(170, 170, 170), Qt::SolidLine, true);
     m_ampMap->rescale();
+    if (!perAmplitude.empty()) // the amplitudes' rows with room above and below (log axis)
+        m_ampMap->setYRange(perAmplitude.begin()->first / 1.4, perAmplitude.rbegin()->first * 1.4);
     for (const auto& [a, fx] : perAmplitude)
         m_ampMagnitude->addCurve(tr("%1 % of rated torque").arg(a, 0, 'g', 4), fx.first, fx.second);
     m_ampMagnitude->addCurve(tr("non-linear lines"), fnMag, nMag, QColor(200, 0, 30), Qt::SolidLine, true);

@@ -490,6 +490,7 @@ private slots:
         QVERIFY2(c->choiceError()->text().contains(
                      QString::fromStdString(autotune::checkAmplitudeList({5.0, 10.0}).error().detail)),
                  qPrintable(c->choiceError()->text()));
+        maybeScreenshot(&w, "autotune-01-choice-rotary");
         c->amplitudes()->setText("10, 5, 20");
         QVERIFY(!c->isComplete());
         QVERIFY(c->choiceError()->text().contains(
@@ -500,7 +501,6 @@ private slots:
         c->amplitudes()->setText("5 10,20");
         QVERIFY2(c->isComplete(), qPrintable(c->choiceError()->text()));
         QVERIFY(c->choiceError()->text().isEmpty());
-        maybeScreenshot(&w, "autotune-01-choice-rotary");
         c->amplitudes()->clear();
         QVERIFY(c->isComplete());
 
