@@ -125,6 +125,28 @@ void chooseThreePositions(AutoTuneWizard& w, bool screenshot)
     QCOMPARE(w.currentId(), int(AutoTuneWizard::Run));
 }
 
+/// Presses Abort when the progress first reaches `atPermille`, waits for the answer: refused as aborted, every
+/// parameter restored and read back equal (the sequence's own check).
+void abortAt(AutoTuneWizard& w, int atPermille, int timeoutMs)
+{
+    auto* run = w.runPage();
+    int pressedAt = -1;
+    QObject::connect(run->progress(), &QProgressBar::valueChanged, &w, [&](int v) {
+        if (pressedAt < 0 && v >= atPermille) {
+            pressedAt = v;
+            run->abortButton()->click();
+        }
+    });
+    QVERIFY(waitUntil([&] { return run->isComplete(); }, timeoutMs));
+    QVERIFY(pressedAt >= atPermille);
+    const auto r = w.data().result;
+    QVERIFY(r);
+    qInfo("Abort pressed at %.1f %% after %zu steps: %s", pressedAt / 10.0, r->steps.size(), r->reason.c_str());
+    QVERIFY(r->outcome == autotune::Outcome::Refused);
+    QVERIFY2(r->reasonCode == ErrorCode::Aborted, r->reason.c_str());
+    QVERIFY(r->restored);
+}
+
 /// The number before `suffix` in `text` ("164.2 Hz, 12.3 dB" with " dB" → 12.3).
 double numberBefore(const QString& text, const QString& suffix)
 {
@@ -279,21 +301,11 @@ private slots:
         showWizard(w);
         choose(w, false);
         auto* run = w.runPage();
-        int pressedAt = -1;
-        connect(run->progress(), &QProgressBar::valueChanged, &w, [&](int v) {
-            if (pressedAt < 0 && v >= atPermille) {
-                pressedAt = v;
-                run->abortButton()->click();
-            }
-        });
-        QVERIFY(waitUntil([&] { return run->isComplete(); }, 60000));
-        QVERIFY(pressedAt >= atPermille);
-        qInfo("Abort pressed at %.1f %%: %s", pressedAt / 10.0, w.data().result ? w.data().result->reason.c_str() : "");
+        abortAt(w, atPermille, 60000);
+        if (QTest::currentTestFailed())
+            return;
         const auto r = w.data().result;
         QVERIFY(r);
-        QVERIFY(r->outcome == autotune::Outcome::Refused);
-        QVERIFY2(r->reasonCode == ErrorCode::Aborted, r->reason.c_str());
-        QVERIFY(r->restored);
         QVERIFY(!r->final);
         if (atPermille == 700) // the velocity gains were written before the Abort
             QVERIFY(r->steps.size() >= 5);
@@ -444,22 +456,11 @@ private slots:
         AutoTuneWizard w(ctx);
         showWizard(w);
         chooseThreePositions(w, false);
-        auto* run = w.runPage();
-        int pressedAt = -1;
-        connect(run->progress(), &QProgressBar::valueChanged, &w, [&](int v) {
-            if (pressedAt < 0 && v >= atPermille) {
-                pressedAt = v;
-                run->abortButton()->click();
-            }
-        });
-        QVERIFY(waitUntil([&] { return run->isComplete(); }, 120000));
-        QVERIFY(pressedAt >= atPermille);
+        abortAt(w, atPermille, 120000);
+        if (QTest::currentTestFailed())
+            return;
         const auto r = w.data().result;
         QVERIFY(r);
-        qInfo("Abort pressed at %.1f %% after %zu steps: %s", pressedAt / 10.0, r->steps.size(), r->reason.c_str());
-        QVERIFY(r->outcome == autotune::Outcome::Refused);
-        QVERIFY2(r->reasonCode == ErrorCode::Aborted, r->reason.c_str());
-        QVERIFY(r->restored);
         if (atPermille == 750) // the velocity gains were written before the Abort
             QVERIFY(r->steps.size() >= 5);
         QCOMPARE(readAll(ctx, "X"), before);
