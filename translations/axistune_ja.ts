@@ -7591,6 +7591,86 @@
         <source>Start</source>
         <translation>開始</translation>
     </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>the style's</source>
+        <translation>スタイルの値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>The velocity crossover the design must reach; a resonance within a factor 3 of it is refused. The style's value unless set.</source>
+        <translation>設計が達すべき速度ループのゲイン交差周波数。その 3 倍以内にある共振は拒否します。設定しなければスタイルの値です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Required velocity crossover:</source>
+        <translation>必要な速度ループ交差周波数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>off (where the axis stands)</source>
+        <translation>オフ (軸の現在位置で)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source> positions</source>
+        <translation> 位置</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Measure, design and verify at N positions spread evenly over the travel window; the gains must keep the margins at every one. The drive moves the axis between them.</source>
+        <translation>ストローク範囲に均等に配置した N 位置で測定・設計・検証します。ゲインはすべての位置で余裕を保たなければなりません。位置の間はサーボアンプが軸を移動します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Over the travel:</source>
+        <translation>ストローク全体で:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>optional, e.g. 5, 10, 20</source>
+        <translation>任意、例: 5, 10, 20</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Amplitude map: the closed velocity loop measured at three or more increasing multisine peaks [% of rated torque]; lines whose response changes beyond the noise are marked non-linear, and the tuner designs from the amplitude nearest the torque of a move. One position only.</source>
+        <translation>振幅マップ: 速度閉ループを 3 つ以上の増加するマルチサイン振幅 [定格トルク比 %] で測定します。応答がノイズを超えて変化する周波数線は非線形と表示され、調整は移動時のトルクに最も近い振幅から設計します。1 位置のみ。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Amplitude map: amplitudes in % of rated torque:</source>
+        <translation>振幅マップ: 加振振幅 (定格トルク比 %):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Asking the drive for the travel window…</source>
+        <translation>サーボアンプにストローク範囲を問い合わせ中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Over the travel not available: %1</source>
+        <translation>ストローク全体での調整は使えません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>m or rad</source>
+        <translation>m または rad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Travel window −%1 … +%1 %2: the positions are spread evenly from one end to the other; the axis returns to where it stood.</source>
+        <translation>ストローク範囲 −%1 … +%1 %2: 位置は一端から他端まで均等に配置され、終了後に軸は元の位置へ戻ります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Cannot start: %1</source>
+        <translation>開始できません: %1</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::AutoTuneResultPage</name>
@@ -7760,6 +7840,179 @@ Nothing was changed: every parameter was restored and read back equal.</source>
         <source>Parameters applied (old → new):</source>
         <translation>適用したパラメータ (変更前 → 変更後):</translation>
     </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Figures and parameters</source>
+        <translation>結果の数値とパラメータ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Resonance map over the travel</source>
+        <translation>ストローク上の共振マップ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Amplitude map</source>
+        <translation>振幅マップ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>First resonance</source>
+        <translation>第 1 共振周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>first resonance (labels: frequency, height above the baseline)</source>
+        <translation>第 1 共振 (ラベル: 周波数、基準線からの高さ)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 Hz, %2 dB</source>
+        <translation>%1 Hz、%2 dB</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Position
+[%1]</source>
+        <translation>位置
+[%1]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>First resonance
+[Hz]</source>
+        <translation>第 1 共振
+[Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Height
+[dB]</source>
+        <translation>高さ
+[dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Phase margin
+[°]</source>
+        <translation>位相余裕
+[°]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Gain margin
+[dB]</source>
+        <translation>ゲイン余裕
+[dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Velocity bandwidth
+[Hz]</source>
+        <translation>速度ループ帯域
+[Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Position bandwidth
+[Hz]</source>
+        <translation>位置ループ帯域
+[Hz]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Predicted phase
+margin [°]</source>
+        <translation>予測位相余裕
+[°]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Predicted gain
+margin [dB]</source>
+        <translation>予測ゲイン余裕
+[dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>none in the band</source>
+        <translation>帯域内になし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Frequency</source>
+        <translation>周波数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Multisine peak</source>
+        <translation>マルチサイン振幅</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>% of rated torque</source>
+        <translation>定格トルク比 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Closed velocity loop |T|</source>
+        <translation>速度閉ループ |T|</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>dB</source>
+        <translation>dB</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>designed from %1 %</source>
+        <translation>設計に使用: %1 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>linear</source>
+        <translation>線形</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>non-linear</source>
+        <translation>非線形</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>not compared</source>
+        <translation>比較なし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 % of rated torque</source>
+        <translation>定格トルクの %1 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>non-linear lines</source>
+        <translation>非線形の周波数線</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>%1 of %2 compared lines non-linear (a line is non-linear when two amplitudes differ by more than %3 combined standard errors). Peak torque of the move with the running gains: %4 % of rated torque; designed from the amplitude %5 % of rated torque.</source>
+        <translation>比較した %2 本のうち %1 本の周波数線が非線形 (2 つの振幅の差が合成標準誤差の %3 倍を超える線を非線形とします)。現在のゲインでの移動のピークトルク: 定格トルクの %4 %。設計に使った振幅: 定格トルクの %5 %。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Over %1 positions: the figures are the worst position's; every position is in the resonance map's table.</source>
+        <translation>%1 位置で調整: 数値は最も悪い位置のものです。各位置の値は共振マップの表にあります。</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::AutoTuneRunPage</name>
@@ -7902,6 +8155,16 @@ Nothing was changed: every parameter was restored and read back equal.</source>
         <location filename="../app/gui/AutoTuneWizard.cpp" />
         <source>Finished: the parameters are applied; see the result.</source>
         <translation>完了: パラメータを適用しました。結果を参照してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source> Over the travel: %1 positions.</source>
+        <translation> ストローク全体で %1 位置。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source> Amplitude map at %1 % of rated torque.</source>
+        <translation> 振幅マップ: 定格トルクの %1 %。</translation>
     </message>
 </context>
 <context>

@@ -109,6 +109,7 @@ void CurvePlot::addPoint(double x, double y, const QString& label)
         text->setPadding(QMargins(3, 1, 3, 1));
     }
     m_points.emplace_back(x, y);
+    m_pointLabels << label;
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -140,6 +141,7 @@ void CurvePlot::clear()
     m_plot->clearItems();
     m_curves.clear();
     m_points.clear();
+    m_pointLabels.clear();
     m_lineCount = 0;
     detail::updateLegendVisibility(*m_plot);
     m_plot->replot(QCustomPlot::rpQueuedReplot);
@@ -148,6 +150,17 @@ void CurvePlot::clear()
 int CurvePlot::curveCount() const
 {
     return static_cast<int>(m_curves.size());
+}
+
+std::vector<std::pair<double, double>> CurvePlot::curvePoints(int index) const
+{
+    std::vector<std::pair<double, double>> out;
+    if (index < 0 || index >= curveCount())
+        return out;
+    for (const auto* seg : m_curves[static_cast<std::size_t>(index)].segments)
+        for (auto it = seg->data()->constBegin(); it != seg->data()->constEnd(); ++it)
+            out.emplace_back(it->key, it->value);
+    return out;
 }
 
 QStringList CurvePlot::curveNames() const

@@ -38,6 +38,11 @@ public:
     int pointCount() const { return static_cast<int>(m_points.size()); }
     int verticalLineCount() const { return m_lineCount; }
     QStringList curveNames() const;
+    /// The points curve `index` shows (every segment in order; values a log axis cannot show are left out).
+    std::vector<std::pair<double, double>> curvePoints(int index) const;
+    /// The marked points and their labels, in the order added.
+    const std::vector<std::pair<double, double>>& points() const { return m_points; }
+    const QStringList& pointLabels() const { return m_pointLabels; }
     /// Fits both axes to all curves and points (with equal scales: one unit is as long on both axes, the axis with
     /// room to spare widened, so a circle draws round).
     void rescale();
@@ -60,6 +65,7 @@ private:
     QCustomPlot* m_plot = nullptr;
     std::vector<Curve> m_curves;
     std::vector<std::pair<double, double>> m_points;
+    QStringList m_pointLabels;
     int m_lineCount = 0;
     bool m_logX = false;
     bool m_logY = false;

@@ -5,6 +5,8 @@
 
 #include "app/gui/AppContext.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/autotune/TravelChoice.h"
+#include "widgets/CurvePlot.h"
 
 #include <QButtonGroup>
 #include <QCheckBox>
@@ -14,15 +16,22 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QSignalBlocker>
+#include <QSpinBox>
 #include <QStyle>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 
 namespace axistune {
@@ -84,6 +93,15 @@ QTableWidgetItem* item(const QString& text)
     auto* it = new QTableWidgetItem(text);
     it->setFlags(it->flags() & ~Qt::ItemIsEditable);
     return it;
+}
+
+/// "5, 10, 20" of the amplitude map's peaks.
+QString amplitudeListText(const autotune::Options& o)
+{
+    QStringList parts;
+    for (double a : o.amplitudeMapPct)
+        parts << QString::number(a, 'g', 4);
+    return parts.join(QStringLiteral(", "));
 }
 
 } // namespace
@@ -171,6 +189,43 @@ AutoTuneChoicePage::AutoTuneChoicePage(AppContext& ctx, AutoTuneData& shared, QW
     budgetNote->setWordWrap(true);
     form->addRow(QString(), budgetNote);
 
+    m_minBandwidth = new QDoubleSpinBox(this);
+    m_minBandwidth->setObjectName("atMinBandwidth");
+    m_minBandwidth->setRange(0.0, 5000.0);
+    m_minBandwidth->setDecimals(1);
+    m_minBandwidth->setSuffix(tr(" Hz"));
+    m_minBandwidth->setSpecialValueText(tr("the style's"));
+    m_minBandwidth->setToolTip(tr("The velocity crossover the design must reach; a resonance within a factor 3 of it "
+                                  "is refused. The style's value unless set."));
+    form->addRow(tr("Required velocity crossover:"), m_minBandwidth);
+
+    m_positions = new QSpinBox(this);
+    m_positions->setObjectName("atPositions");
+    m_positions->setRange(1, 9);
+    m_positions->setSpecialValueText(tr("off (where the axis stands)"));
+    m_positions->setSuffix(tr(" positions"));
+    m_positions->setToolTip(tr("Measure, design and verify at N positions spread evenly over the travel window; the "
+                               "gains must keep the margins at every one. The drive moves the axis between them."));
+    form->addRow(tr("Over the travel:"), m_positions);
+    m_travelNote = new QLabel(this);
+    m_travelNote->setObjectName("atTravelNote");
+    m_travelNote->setWordWrap(true);
+    form->addRow(QString(), m_travelNote);
+
+    m_amplitudes = new QLineEdit(this);
+    m_amplitudes->setObjectName("atAmplitudes");
+    m_amplitudes->setPlaceholderText(tr("optional, e.g. 5, 10, 20"));
+    m_amplitudes->setToolTip(tr("Amplitude map: the closed velocity loop measured at three or more increasing "
+                                "multisine peaks [% of rated torque]; lines whose response changes beyond the noise "
+                                "are marked non-linear, and the tuner designs from the amplitude nearest the torque "
+                                "of a move. One position only."));
+    form->addRow(tr("Amplitude map: amplitudes in % of rated torque:"), m_amplitudes);
+    m_choiceError = new QLabel(this);
+    m_choiceError->setObjectName("atChoiceError");
+    m_choiceError->setWordWrap(true);
+    m_choiceError->setStyleSheet(QStringLiteral("color: #b00020;"));
+    form->addRow(QString(), m_choiceError);
+
     m_dryRun = new QCheckBox(tr("Dry run: measure and design everything, then restore every parameter (nothing is "
                                 "applied)"),
                              this);
@@ -185,7 +240,24 @@ AutoTuneChoicePage::AutoTuneChoicePage(AppContext& ctx, AutoTuneData& shared, QW
     lay->addWidget(m_confirm);
     lay->addStretch(1);
     connect(m_confirm, &QCheckBox::toggled, this, &QWizardPage::completeChanged);
-    connect(m_axis, &QComboBox::currentTextChanged, this, &QWizardPage::completeChanged);
+    connect(m_axis, &QComboBox::currentTextChanged, this, &AutoTuneChoicePage::queryTravel);
+    connect(m_budget, &QDoubleSpinBox::valueChanged, this, [this] {
+        m_budgetEdited = true;
+        updateChoices();
+    });
+    connect(m_positions, &QSpinBox::valueChanged, this, [this](int n) {
+        if (!m_budgetEdited) { // the default budget follows the positions (30 s each, as the CLI's)
+            const QSignalBlocker block(m_budget);
+            m_budget->setValue(autotune::defaultTimeBudgetS(n));
+        }
+        updateChoices();
+    });
+    connect(m_amplitudes, &QLineEdit::textChanged, this, &AutoTuneChoicePage::updateChoices);
+    connect(m_minBandwidth, &QDoubleSpinBox::valueChanged, this, &AutoTuneChoicePage::updateChoices);
+    {
+        const QSignalBlocker block(m_budget);
+        m_budget->setValue(autotune::defaultTimeBudgetS(1));
+    }
     setCommitPage(true);
     setButtonText(QWizard::CommitButton, tr("Start"));
 }
@@ -198,18 +270,56 @@ QRadioButton* AutoTuneChoicePage::styleButton(autotune::Style s) const
 void AutoTuneChoicePage::initializePage()
 {
     const QString keep = m_axis->currentText();
-    m_axis->clear();
-    m_axis->addItems(m_ctx.axes());
-    if (m_ctx.axes().contains(keep))
-        m_axis->setCurrentText(keep);
+    {
+        const QSignalBlocker block(m_axis);
+        m_axis->clear();
+        m_axis->addItems(m_ctx.axes());
+        if (m_ctx.axes().contains(keep))
+            m_axis->setCurrentText(keep);
+    }
+    queryTravel();
 }
 
-bool AutoTuneChoicePage::isComplete() const
+void AutoTuneChoicePage::queryTravel()
 {
-    return m_ctx.drive().isConnected() && !m_axis->currentText().isEmpty() && m_confirm->isChecked();
+    // Whether the axis can be tuned over its travel: asked of the drive on its thread (nothing moves).
+    m_travelKnown = false;
+    m_travelPossible = false;
+    m_positions->setEnabled(false);
+    const QString axis = m_axis->currentText();
+    const int query = ++m_travelQuery;
+    if (axis.isEmpty() || !m_ctx.drive().isConnected()) {
+        m_travelNote->setText(QString());
+        updateChoices();
+        return;
+    }
+    m_travelNote->setText(tr("Asking the drive for the travel window…"));
+    auto* req = m_ctx.drive().autoTuneTravel(axis);
+    connect(req, &DriveRequest::finished, this, [this, query](const DriveReply& r) {
+        if (query != m_travelQuery)
+            return; // an answer for an axis no longer chosen
+        m_travelKnown = true;
+        if (!r.ok || !r.travel) {
+            m_travelNote->setText(tr("Over the travel not available: %1").arg(r.error));
+        } else if (!r.travel->refusal.empty()) {
+            m_travelNote->setText(tr("Over the travel not available: %1").arg(qs(r.travel->refusal)));
+        } else {
+            m_travelPossible = true;
+            const QString w = QString::number(r.travel->window, 'g', 4);
+            const QString unit = r.travel->units.empty() ? tr("m or rad") : qs(r.travel->units);
+            m_travelNote->setText(tr("Travel window −%1 … +%1 %2: the positions are spread evenly from one end to the "
+                                     "other; the axis returns to where it stood.")
+                                      .arg(w, unit));
+        }
+        m_positions->setEnabled(m_travelPossible);
+        if (!m_travelPossible && m_positions->value() > 1)
+            m_positions->setValue(1);
+        updateChoices();
+    });
+    updateChoices();
 }
 
-bool AutoTuneChoicePage::validatePage()
+autotune::Options AutoTuneChoicePage::collect(QString* why) const
 {
     autotune::Options o;
     o.axis = m_axis->currentText().toStdString();
@@ -218,8 +328,43 @@ bool AutoTuneChoicePage::validatePage()
                                      : autotune::Style::Standard;
     o.timeBudgetS = m_budget->value();
     o.dryRun = m_dryRun->isChecked();
-    m_d.options = o;
-    return true;
+    o.minBandwidthHz = m_minBandwidth->value();
+    o.positions = m_positions->value();
+    QString reason;
+    if (auto a = autotune::parseAmplitudeList(m_amplitudes->text().toStdString()); !a)
+        reason = qs(a.error().detail);
+    else
+        o.amplitudeMapPct = *a;
+    if (reason.isEmpty())
+        if (auto st = autotune::checkChoices(o); !st)
+            reason = qs(st.error().detail);
+    if (reason.isEmpty() && o.positions > 1 && !m_travelPossible)
+        reason = m_travelNote->text();
+    if (why)
+        *why = reason;
+    return o;
+}
+
+void AutoTuneChoicePage::updateChoices()
+{
+    QString why;
+    collect(&why);
+    m_choiceError->setText(why.isEmpty() ? QString() : tr("Cannot start: %1").arg(why));
+    emit completeChanged();
+}
+
+bool AutoTuneChoicePage::isComplete() const
+{
+    QString why;
+    collect(&why);
+    return m_ctx.drive().isConnected() && !m_axis->currentText().isEmpty() && m_confirm->isChecked() && why.isEmpty();
+}
+
+bool AutoTuneChoicePage::validatePage()
+{
+    QString why;
+    m_d.options = collect(&why);
+    return why.isEmpty();
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -309,13 +454,18 @@ void AutoTuneRunPage::start()
     for (int r = 0; r < m_steps->rowCount(); ++r)
         setRowState(r, tr("waiting"), -1);
     m_state->setStyleSheet(QString());
-    m_state->setText(tr("Axis %1, style %2, time budget %3 s%4.")
-                         .arg(qs(m_d.options.axis),
-                              m_d.options.style == autotune::Style::Gentle  ? AutoTuneChoicePage::tr("Gentle")
-                              : m_d.options.style == autotune::Style::Stiff ? AutoTuneChoicePage::tr("Stiff")
-                                                                            : AutoTuneChoicePage::tr("Standard"))
-                         .arg(m_d.options.timeBudgetS, 0, 'f', 1)
-                         .arg(m_d.options.dryRun ? tr(", dry run") : QString()));
+    m_state->setText(
+        tr("Axis %1, style %2, time budget %3 s%4.")
+            .arg(qs(m_d.options.axis), m_d.options.style == autotune::Style::Gentle ? AutoTuneChoicePage::tr("Gentle")
+                                       : m_d.options.style == autotune::Style::Stiff
+                                           ? AutoTuneChoicePage::tr("Stiff")
+                                           : AutoTuneChoicePage::tr("Standard"))
+            .arg(m_d.options.timeBudgetS, 0, 'f', 1)
+            .arg(m_d.options.dryRun ? tr(", dry run") : QString()) +
+        (m_d.options.positions > 1 ? tr(" Over the travel: %1 positions.").arg(m_d.options.positions) : QString()) +
+        (m_d.options.amplitudeMapPct.empty()
+             ? QString()
+             : tr(" Amplitude map at %1 % of rated torque.").arg(amplitudeListText(m_d.options))));
     m_d.running = true;
     m_abort->setEnabled(true);
     m_request = m_ctx.drive().runAutoTune(m_d.options);
@@ -408,7 +558,10 @@ void AutoTuneRunPage::saveSession()
                   {"axis", m_d.options.axis},
                   {"style", autotune::styleName(m_d.options.style)},
                   {"time_budget_s", m_d.options.timeBudgetS},
-                  {"dry_run", m_d.options.dryRun}};
+                  {"dry_run", m_d.options.dryRun},
+                  {"positions", m_d.options.positions},
+                  {"amplitudes_pct", m_d.options.amplitudeMapPct},
+                  {"min_bandwidth_Hz", m_d.options.minBandwidthHz}};
     if (!m_d.result) {
         rec.info.status = store::SessionStatus::Failed;
         rec.info.note = m_d.error.toStdString();
@@ -463,27 +616,196 @@ AutoTuneResultPage::AutoTuneResultPage(AutoTuneData& shared, QWidget* parent) : 
     m_outcome->setWordWrap(true);
     m_outcome->setTextInteractionFlags(Qt::TextSelectableByMouse);
     lay->addWidget(m_outcome);
-    m_figures = new QTableWidget(0, 2, this);
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName("atResultTabs");
+
+    auto* figuresTab = new QWidget(m_tabs);
+    auto* fl = new QVBoxLayout(figuresTab);
+    m_figures = new QTableWidget(0, 2, figuresTab);
     m_figures->setObjectName("atFigures");
     m_figures->setHorizontalHeaderLabels({tr("Figure"), tr("Value")});
     m_figures->verticalHeader()->hide();
     m_figures->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_figures->horizontalHeader()->setStretchLastSection(true);
-    lay->addWidget(m_figures, 1);
-    m_parametersTitle = new QLabel(this);
-    lay->addWidget(m_parametersTitle);
-    m_parameters = new QTableWidget(0, 3, this);
+    fl->addWidget(m_figures, 1);
+    m_parametersTitle = new QLabel(figuresTab);
+    fl->addWidget(m_parametersTitle);
+    m_parameters = new QTableWidget(0, 3, figuresTab);
     m_parameters->setObjectName("atParameters");
     m_parameters->setHorizontalHeaderLabels({tr("Parameter"), tr("Before"), tr("After")});
     m_parameters->verticalHeader()->hide();
     m_parameters->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_parameters->horizontalHeader()->setStretchLastSection(true);
-    lay->addWidget(m_parameters, 1);
+    fl->addWidget(m_parameters, 1);
+    m_tabs->addTab(figuresTab, tr("Figures and parameters"));
+
+    auto* resTab = new QWidget(m_tabs);
+    auto* rl = new QVBoxLayout(resTab);
+    m_resonancePlot = new widgets::CurvePlot(resTab);
+    m_resonancePlot->setObjectName("atResonanceMap");
+    m_resonancePlot->setMinimumHeight(260);
+    rl->addWidget(m_resonancePlot, 3);
+    m_positionsTable = new QTableWidget(0, 9, resTab);
+    m_positionsTable->setObjectName("atPositionsTable");
+    m_positionsTable->verticalHeader()->hide();
+    m_positionsTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_positionsTable->horizontalHeader()->setStretchLastSection(true);
+    rl->addWidget(m_positionsTable, 2);
+    m_tabs->addTab(resTab, tr("Resonance map over the travel"));
+
+    auto* ampTab = new QWidget(m_tabs);
+    auto* al = new QVBoxLayout(ampTab);
+    m_ampSummary = new QLabel(ampTab);
+    m_ampSummary->setObjectName("atAmplitudeSummary");
+    m_ampSummary->setWordWrap(true);
+    al->addWidget(m_ampSummary);
+    auto* plots = new QHBoxLayout;
+    m_ampMap = new widgets::CurvePlot(ampTab);
+    m_ampMap->setObjectName("atAmplitudeMap");
+    plots->addWidget(m_ampMap, 1);
+    m_ampMagnitude = new widgets::CurvePlot(ampTab);
+    m_ampMagnitude->setObjectName("atAmplitudeMagnitude");
+    plots->addWidget(m_ampMagnitude, 1);
+    al->addLayout(plots, 1);
+    m_tabs->addTab(ampTab, tr("Amplitude map"));
+    lay->addWidget(m_tabs, 1);
+
     m_session = new QLabel(this);
     m_session->setObjectName("atSession");
     lay->addWidget(m_session);
     lay->addStretch(0); // takes the room of the hidden tables after a refusal
     setFinalPage(true);
+}
+
+void AutoTuneResultPage::showResonanceMap(const nlohmann::json& j, bool linear)
+{
+    // From the result JSON (resultJson: resonance_map[] and final.positions[]), as the CLI writes it.
+    const QString unit = linear ? QStringLiteral("m") : QStringLiteral("rad");
+    m_resonancePlot->clear();
+    m_resonancePlot->setAxes(tr("Position"), unit, tr("First resonance"), tr("Hz"));
+    std::vector<double> x, f;
+    for (const auto& m : j["resonance_map"]) {
+        const double pos = m.value("position", std::numeric_limits<double>::quiet_NaN());
+        if (!m.contains("frequency_Hz") || !m["frequency_Hz"].is_number())
+            continue;
+        x.push_back(pos);
+        f.push_back(m["frequency_Hz"].get<double>());
+    }
+    m_resonancePlot->addCurve(tr("first resonance (labels: frequency, height above the baseline)"), x, f,
+                              QColor(0, 90, 181));
+    std::size_t k = 0;
+    for (const auto& m : j["resonance_map"]) {
+        if (!m.contains("frequency_Hz") || !m["frequency_Hz"].is_number())
+            continue;
+        const double h =
+            m.contains("height_dB") && m["height_dB"].is_number() ? m["height_dB"].get<double>() : std::nan("");
+        m_resonancePlot->addPoint(x[k], f[k], tr("%1 Hz, %2 dB").arg(f[k], 0, 'f', 1).arg(h, 0, 'f', 1));
+        ++k;
+    }
+    m_resonancePlot->rescale();
+    // Room for the labels right of and above the points.
+    if (!x.empty()) {
+        const auto [x0, x1] = std::minmax_element(x.begin(), x.end());
+        const auto [f0, f1] = std::minmax_element(f.begin(), f.end());
+        const double dx = std::max(*x1 - *x0, 1e-3 * std::max(1.0, std::abs(*x0)));
+        const double df = std::max(*f1 - *f0, 0.05 * *f1);
+        m_resonancePlot->setXRange(*x0 - 0.08 * dx, *x1 + 0.25 * dx);
+        m_resonancePlot->setYRange(*f0 - 0.15 * df, *f1 + 0.2 * df);
+    }
+
+    m_positionsTable->setRowCount(0);
+    m_positionsTable->setHorizontalHeaderLabels({tr("Position\n[%1]").arg(unit), tr("First resonance\n[Hz]"),
+                                                 tr("Height\n[dB]"), tr("Phase margin\n[°]"), tr("Gain margin\n[dB]"),
+                                                 tr("Velocity bandwidth\n[Hz]"), tr("Position bandwidth\n[Hz]"),
+                                                 tr("Predicted phase\nmargin [°]"), tr("Predicted gain\nmargin [dB]")});
+    const auto& map = j["resonance_map"];
+    const nlohmann::json none = nlohmann::json::array();
+    const auto& per = j.contains("final") && j["final"].contains("positions") ? j["final"]["positions"] : none;
+    auto num = [](const nlohmann::json& o, const char* key, int decimals) {
+        return o.contains(key) && o[key].is_number() ? QString::number(o[key].get<double>(), 'f', decimals)
+                                                     : QStringLiteral("–");
+    };
+    for (std::size_t i = 0; i < map.size(); ++i) {
+        const auto& m = map[i];
+        const int row = m_positionsTable->rowCount();
+        m_positionsTable->insertRow(row);
+        m_positionsTable->setItem(row, 0, item(num(m, "position", 4)));
+        const bool has = m.contains("frequency_Hz") && m["frequency_Hz"].is_number();
+        m_positionsTable->setItem(row, 1, item(has ? num(m, "frequency_Hz", 1) : tr("none in the band")));
+        m_positionsTable->setItem(row, 2, item(has ? num(m, "height_dB", 1) : QStringLiteral("–")));
+        const nlohmann::json p = i < per.size() ? per[i] : nlohmann::json::object();
+        m_positionsTable->setItem(row, 3, item(num(p, "phase_margin_deg", 1)));
+        m_positionsTable->setItem(row, 4, item(num(p, "gain_margin_dB", 1)));
+        m_positionsTable->setItem(row, 5, item(num(p, "velocity_bandwidth_Hz", 1)));
+        m_positionsTable->setItem(row, 6, item(num(p, "position_bandwidth_Hz", 1)));
+        m_positionsTable->setItem(row, 7, item(num(p, "predicted_phase_margin_deg", 1)));
+        m_positionsTable->setItem(row, 8, item(num(p, "predicted_gain_margin_dB", 1)));
+    }
+}
+
+void AutoTuneResultPage::showAmplitudeMap(const nlohmann::json& map)
+{
+    // From the frf step's measured.amplitude_map (autotune::inUseJson): every line at every amplitude it was
+    // measured at, coloured by the core's verdict.
+    m_ampMap->clear();
+    m_ampMagnitude->clear();
+    m_ampMap->setAxes(tr("Frequency"), tr("Hz"), tr("Multisine peak"), tr("% of rated torque"), true, true);
+    m_ampMagnitude->setAxes(tr("Frequency"), tr("Hz"), tr("Closed velocity loop |T|"), tr("dB"), true, false);
+    std::vector<double> fl, al, fn, an, fo, ao, fnMag, nMag;
+    std::map<double, std::pair<std::vector<double>, std::vector<double>>> perAmplitude;
+    double fmin = std::numeric_limits<double>::infinity(), fmax = 0.0;
+    for (const auto& line : map.value("lines", nlohmann::json::array())) {
+        const double f = line.value("f_Hz", std::nan(""));
+        const bool nonlinear = line.value("nonlinear", false);
+        const bool compared = line.value("compared", false);
+        double top = -std::numeric_limits<double>::infinity();
+        for (const auto& at : line.value("at", nlohmann::json::array())) {
+            const double a = at.value("amplitude_pct", std::nan(""));
+            const double db = at.value("magnitude_dB", std::nan(""));
+            (nonlinear ? fn : compared ? fl : fo).push_back(f);
+            (nonlinear ? an : compared ? al : ao).push_back(a);
+            perAmplitude[a].first.push_back(f);
+            perAmplitude[a].second.push_back(db);
+            top = std::max(top, db);
+        }
+        if (nonlinear && std::isfinite(top)) {
+            fnMag.push_back(f);
+            nMag.push_back(top);
+        }
+        if (std::isfinite(f)) {
+            fmin = std::min(fmin, f);
+            fmax = std::max(fmax, f);
+        }
+    }
+    if (map.contains("design_amplitude_pct") && map["design_amplitude_pct"].is_number() && fmax > fmin) {
+        const double a = map["design_amplitude_pct"].get<double>();
+        m_ampMap->addCurve(tr("designed from %1 %").arg(a, 0, 'g', 4), {fmin, fmax}, {a, a}, QColor(40, 140, 40),
+                           Qt::DashLine);
+    }
+    // The few linear lines over the many non-linear ones (vmc X: 14 of 388), so that they show.
+    m_ampMap->addCurve(tr("non-linear"), fn, an, QColor(200, 0, 30), Qt::SolidLine, true);
+    m_ampMap->addCurve(tr("linear"), fl, al, QColor(0, 90, 181), Qt::SolidLine, true);
+    m_ampMap->addCurve(tr("not compared"), fo, ao, QColor(170, 170, 170), Qt::SolidLine, true);
+    m_ampMap->rescale();
+    if (!perAmplitude.empty()) // the amplitudes' rows with room above and below (log axis)
+        m_ampMap->setYRange(perAmplitude.begin()->first / 1.4, perAmplitude.rbegin()->first * 1.4);
+    for (const auto& [a, fx] : perAmplitude)
+        m_ampMagnitude->addCurve(tr("%1 % of rated torque").arg(a, 0, 'g', 4), fx.first, fx.second);
+    m_ampMagnitude->addCurve(tr("non-linear lines"), fnMag, nMag, QColor(200, 0, 30), Qt::SolidLine, true);
+    m_ampMagnitude->rescale();
+    const auto count = [&](const char* key) {
+        return map.contains(key) && map[key].is_number() ? QString::number(map[key].get<double>(), 'g', 6)
+                                                         : QStringLiteral("–");
+    };
+    m_ampSummary->setText(
+        tr("%1 of %2 compared lines non-linear (a line is non-linear when two amplitudes differ by more than %3 "
+           "combined standard errors). Peak torque of the move with the running gains: %4 % of rated torque; "
+           "designed from the amplitude %5 % of rated torque.")
+            .arg(count("nonlinear_lines"), count("lines_compared"), count("threshold_sigmas"),
+                 map.contains("use_torque_pct") && map["use_torque_pct"].is_number()
+                     ? QString::number(map["use_torque_pct"].get<double>(), 'f', 1)
+                     : QStringLiteral("–"),
+                 count("design_amplitude_pct")));
 }
 
 void AutoTuneResultPage::initializePage()
@@ -492,11 +814,35 @@ void AutoTuneResultPage::initializePage()
     m_parameters->setRowCount(0);
     const auto* r = m_d.result.get();
     const bool refused = !r || r->outcome == autotune::Outcome::Refused || !r->final;
-    if (auto* box = qobject_cast<QBoxLayout*>(layout()))
-        box->setStretch(box->count() - 1, refused ? 1 : 0);
     m_figures->setVisible(!refused);
     m_parameters->setVisible(!refused);
     m_parametersTitle->setVisible(!refused);
+    // The maps, also after a refusal when the run measured them (what the frf step found).
+    static const std::vector<autotune::Step> kNoSteps;
+    const auto& steps = r ? r->steps : kNoSteps;
+    bool linear = true;
+    for (const auto& st : steps)
+        if (st.name == "safety-envelope") {
+            const auto& from = st.chosen.contains("axis_units") ? st.chosen : st.measured;
+            linear = from.value("axis_units", std::string("m")) == "m";
+        }
+    nlohmann::json j = r ? autotune::resultJson(*r, m_d.options) : nlohmann::json::object();
+    const bool hasMap = j.contains("resonance_map") && !j["resonance_map"].empty();
+    const nlohmann::json* amp = nullptr;
+    for (const auto& st : steps)
+        if (st.name == "frf" && st.measured.contains("amplitude_map"))
+            amp = &st.measured["amplitude_map"];
+    if (hasMap)
+        showResonanceMap(j, linear);
+    if (amp)
+        showAmplitudeMap(*amp);
+    m_tabs->setTabVisible(FiguresTab, !refused);
+    m_tabs->setTabVisible(ResonanceTab, hasMap);
+    m_tabs->setTabVisible(AmplitudeTab, amp != nullptr);
+    m_tabs->setVisible(!refused || hasMap || amp);
+    m_tabs->setCurrentIndex(!refused ? FiguresTab : hasMap ? ResonanceTab : AmplitudeTab);
+    if (auto* box = qobject_cast<QBoxLayout*>(layout()))
+        box->setStretch(box->count() - 1, m_tabs->isVisibleTo(this) ? 0 : 1);
     m_session->setText(m_d.sessionId > 0 ? tr("Saved as session %1.").arg(m_d.sessionId)
                                          : tr("The session is saved to the store when one is open."));
     if (refused) {
@@ -513,12 +859,14 @@ void AutoTuneResultPage::initializePage()
     }
     m_outcome->setStyleSheet(QString());
     const auto& f = *r->final;
-    m_outcome->setText(r->outcome == autotune::Outcome::DryRun
-                           ? tr("Dry run finished: every parameter was restored; the values below were not applied.")
-                           : tr("Applied: the parameters below are written and read back equal."));
-    bool linear = true;
-    if (!r->steps.empty())
-        linear = r->steps.front().chosen.value("axis_units", std::string("m")) == "m";
+    m_outcome->setText((r->outcome == autotune::Outcome::DryRun
+                            ? tr("Dry run finished: every parameter was restored; the values below were not applied.")
+                            : tr("Applied: the parameters below are written and read back equal.")) +
+                       (f.positions.empty()
+                            ? QString()
+                            : QStringLiteral("\n") + tr("Over %1 positions: the figures are the worst position's; "
+                                                        "every position is in the resonance map's table.")
+                                                         .arg(f.positions.size())));
     auto add = [&](const QString& name, const QString& value, const char* objectName) {
         const int row = m_figures->rowCount();
         m_figures->insertRow(row);

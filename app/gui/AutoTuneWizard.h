@@ -18,18 +18,25 @@
 #include <QWizardPage>
 
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLineEdit;
 class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
 class QRadioButton;
+class QSpinBox;
+class QTabWidget;
 class QTableWidget;
 
 namespace axistune {
+namespace widgets {
+class CurvePlot;
+}
 namespace gui {
 
 class AppContext;
@@ -59,11 +66,36 @@ public:
     QCheckBox* dryRun() const { return m_dryRun; }
     QCheckBox* confirmation() const { return m_confirm; }
     QRadioButton* styleButton(autotune::Style s) const;
+    /// Over the travel: 1 ("off") or N >= 2 positions; disabled (with the reason in travelNote()) where the drive
+    /// cannot move the axis between measurements (autotune::travelChoice).
+    QSpinBox* positions() const { return m_positions; }
+    QLabel* travelNote() const { return m_travelNote; }
+    /// Amplitude map: "5, 10, 20" [% of rated torque], empty for none.
+    QLineEdit* amplitudes() const { return m_amplitudes; }
+    /// Required velocity crossover [Hz]; 0 ("the style's").
+    QDoubleSpinBox* minBandwidth() const { return m_minBandwidth; }
+    /// Why the choices cannot run together (autotune::checkChoices), empty when they can.
+    QLabel* choiceError() const { return m_choiceError; }
+    /// The answer of the travel query arrived for the current axis.
+    bool travelKnown() const { return m_travelKnown; }
 
 private:
+    /// The choices as the sequence's options; the reason when they cannot run (the core's checks).
+    autotune::Options collect(QString* why) const;
+    void queryTravel();
+    void updateChoices();
     AppContext& m_ctx;
     AutoTuneData& m_d;
     QComboBox* m_axis = nullptr;
+    QSpinBox* m_positions = nullptr;
+    QLabel* m_travelNote = nullptr;
+    QLineEdit* m_amplitudes = nullptr;
+    QDoubleSpinBox* m_minBandwidth = nullptr;
+    QLabel* m_choiceError = nullptr;
+    bool m_travelKnown = false;
+    bool m_travelPossible = false;
+    bool m_budgetEdited = false; ///< the user set the budget: it no longer follows the positions
+    int m_travelQuery = 0;
     QRadioButton* m_gentle = nullptr;
     QRadioButton* m_standard = nullptr;
     QRadioButton* m_stiff = nullptr;
@@ -119,10 +151,29 @@ public:
     QLabel* outcome() const { return m_outcome; }
     QTableWidget* figures() const { return m_figures; }
     QTableWidget* parameters() const { return m_parameters; }
+    QTabWidget* tabs() const { return m_tabs; }
+    /// Over the travel: first resonance [Hz] against position [m or rad], labelled with its height [dB].
+    widgets::CurvePlot* resonanceMap() const { return m_resonancePlot; }
+    /// Over the travel: per position, the re-measured margins and bandwidths (final.positions[]).
+    QTableWidget* positionsTable() const { return m_positionsTable; }
+    /// Amplitude map: lines over frequency × amplitude (curves "linear", "non-linear", "not compared").
+    widgets::CurvePlot* amplitudeMap() const { return m_ampMap; }
+    /// Amplitude map: |T| [dB] per amplitude, non-linear lines marked.
+    widgets::CurvePlot* amplitudeMagnitude() const { return m_ampMagnitude; }
+    QLabel* amplitudeSummary() const { return m_ampSummary; }
+    enum Tab { FiguresTab, ResonanceTab, AmplitudeTab };
 
 private:
+    void showResonanceMap(const nlohmann::json& result, bool linear);
+    void showAmplitudeMap(const nlohmann::json& map);
     AutoTuneData& m_d;
     QLabel* m_outcome = nullptr;
+    QTabWidget* m_tabs = nullptr;
+    widgets::CurvePlot* m_resonancePlot = nullptr;
+    QTableWidget* m_positionsTable = nullptr;
+    widgets::CurvePlot* m_ampMap = nullptr;
+    widgets::CurvePlot* m_ampMagnitude = nullptr;
+    QLabel* m_ampSummary = nullptr;
     QTableWidget* m_figures = nullptr;
     QLabel* m_parametersTitle = nullptr;
     QTableWidget* m_parameters = nullptr;

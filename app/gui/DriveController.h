@@ -15,6 +15,7 @@
 // connection is announced by `connectionLost`.
 
 #include "core/autotune/AutoTune.h"
+#include "core/autotune/TravelChoice.h"
 #include "core/device/Drive.h"
 #include "core/model/Capture.h"
 #include "core/model/Parameter.h"
@@ -27,10 +28,10 @@
 
 #include <atomic>
 #include <deque>
-#include <mutex>
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -68,8 +69,8 @@ struct DriveReply {
     model::ParameterValues values;
     // Test
     device::TestState testState = device::TestState::Idle;
-    std::shared_ptr<const model::Capture> capture;          ///< trace (not for Frf tests)
-    std::shared_ptr<const device::FrfMeasurement> frf;      ///< Frf tests
+    std::shared_ptr<const model::Capture> capture;     ///< trace (not for Frf tests)
+    std::shared_ptr<const device::FrfMeasurement> frf; ///< Frf tests
     // Describe: what the drive offers on the axis and the limits it enforces (DriveControllerDescribe.cpp)
     std::optional<device::DriveCapabilities> capabilities;
     std::optional<device::DriveLimits> limits;
@@ -83,6 +84,8 @@ struct DriveReply {
     // AutoTune (DriveControllerAutoTune.cpp): the sequence's result (also a refusal or an abort, with every
     // parameter restored); `ok` false only for errors before anything moved (bad options, unknown axis).
     std::shared_ptr<const autotune::AutoTuneResult> autotune;
+    // Describe by autoTuneTravel: whether the axis can be tuned over its travel, and the window (no motion)
+    std::optional<autotune::TravelChoice> travel;
 };
 
 class DriveWorker;
@@ -124,7 +127,7 @@ class DriveController : public QObject {
     Q_OBJECT
 public:
     explicit DriveController(QObject* parent = nullptr);
-    ~DriveController() override;  ///< aborts a running test and joins the worker thread
+    ~DriveController() override; ///< aborts a running test and joins the worker thread
 
     /// "sim:PRESET" or "modbus://HOST:PORT"; replaces an existing connection.
     DriveRequest* connectTo(const QString& uri, quint64 seed = 1);
@@ -148,6 +151,9 @@ public:
     /// sequence restores every parameter it wrote (reply kind AutoTune; DriveControllerAutoTune.cpp). The options'
     /// `run`, `stepStarted` and `stepFinished` are set by the controller.
     DriveRequest* runAutoTune(const autotune::Options& options);
+    /// Whether `axis` can be tuned over its travel and the travel window (autotune::travelChoice; reply kind
+    /// Describe with `travel`); nothing moves.
+    DriveRequest* autoTuneTravel(const QString& axis);
     // The scope (docs/scope.md "The GUI scope"). These requests also run between the polls of a running test
     // (the worker serves them from its side queue whenever the test reports progress), so the scope stays
     // live while a jog or a wizard's test moves the axis.
@@ -213,6 +219,7 @@ public:
     DriveReply doDescribe(int id, const QString& axis);
     DriveReply doPlan(int id, const device::TestRequest& request);
     DriveReply doAutoTune(int id, autotune::Options options, std::shared_ptr<std::atomic<bool>> cancel);
+    DriveReply doAutoTuneTravel(int id, const QString& axis);
     DriveReply doScopeCapabilities(int id, const QString& axis);
     DriveReply doArmScope(int id, const device::ScopeRequest& request);
     DriveReply doPollScope(int id, std::optional<std::uint64_t> rollFrom, std::uint64_t knownCaptures,
@@ -250,7 +257,7 @@ int connectReply(DriveRequest* request, Receiver* receiver, void (Receiver::*slo
 /// True for errors that mean the link to the drive is gone (not a refused request).
 bool isConnectionError(ErrorCode code);
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune
 
 Q_DECLARE_METATYPE(axistune::gui::DriveReply)

@@ -67,6 +67,28 @@ DriveReply DriveWorker::doAutoTune(int id, autotune::Options options, std::share
     return r;
 }
 
+DriveReply DriveWorker::doAutoTuneTravel(int id, const QString& axis)
+{
+    DriveReply r;
+    r.id = id;
+    r.kind = DriveReply::Kind::Describe;
+    r.axis = axis;
+    if (!m_drive)
+        return fail(r,
+                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+    auto t = autotune::travelChoice(*m_drive, axis.toStdString());
+    if (!t)
+        return fail(r, t.error());
+    r.travel = *t;
+    r.ok = true;
+    return r;
+}
+
+DriveRequest* DriveController::autoTuneTravel(const QString& axis)
+{
+    return post(DriveReply::Kind::Describe, [axis](DriveWorker& w, int id) { return w.doAutoTuneTravel(id, axis); });
+}
+
 DriveRequest* DriveController::runAutoTune(const autotune::Options& options)
 {
     // The token exists before the job is queued: an abort() from now on reaches the sequence.

@@ -8,23 +8,37 @@
 // read before and after, equals its value before, and the pages say aborted. A time budget of 6 s of motion is the
 // smallest that completes on vmc X (`axistune-cli autotune --connect sim:vmc --axis X --time-budget 4` refuses:
 // the move would exceed it).
+// Over the travel and the amplitude map (issue 18 items 3 and 4): (c) on sim:long-axis X with 3 positions and the
+// required crossover 30 Hz (as the CLI test `autotune --positions 3 --min-bandwidth-hz 30`): the resonance map's
+// plotted points are the core result's final.positions[] (position, first resonance; the height in the labels to
+// the shown digit), the table holds every position's re-measured margins; Abort during the positions run (at 25 %
+// and 75 %) leaves every parameter as before; (d) the choice page shows the core's refusals (a rotary axis without a
+// travel window, amplitude lists checkAmplitudeList refuses, an amplitude map with positions); (e) vmc X with the
+// amplitude map at 5, 10, 20 %: the plotted non-linear and linear lines are exactly the core's flags.
 #include "app/gui/AppContext.h"
 #include "app/gui/AutoTuneWizard.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/autotune/AmplitudeMap.h"
+#include "core/autotune/TravelChoice.h"
+#include "widgets/CurvePlot.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QSpinBox>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
+#include <set>
 
 #include "tests/gui/GuiTestUtil.h"
 
@@ -74,13 +88,77 @@ QString figure(QTableWidget* t, const char* key)
     return {};
 }
 
-/// A store in `dir`, the embedded sim:vmc connected, every parameter of X as found.
-void openOnVmc(QTemporaryDir& dir, AppContext& ctx, model::ParameterValues& before)
+/// A store in `dir`, the embedded `uri` connected, every parameter of `axis` as found.
+void openOn(QTemporaryDir& dir, AppContext& ctx, model::ParameterValues& before, const char* uri = "sim:vmc",
+            const QString& axis = "X")
 {
     QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
-    ctx.drive().connectTo("sim:vmc");
+    ctx.drive().connectTo(uri);
     QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
-    before = readAll(ctx, "X");
+    before = readAll(ctx, axis);
+}
+
+void openOnVmc(QTemporaryDir& dir, AppContext& ctx, model::ParameterValues& before)
+{
+    openOn(dir, ctx, before);
+}
+
+/// Choice page on sim:long-axis X: 3 positions, required crossover 30 Hz, confirmed; Start.
+void chooseThreePositions(AutoTuneWizard& w, bool screenshot)
+{
+    auto* c = w.choicePage();
+    QVERIFY(waitUntil([&] { return c->axis()->findText("X") >= 0; }, 5000));
+    c->axis()->setCurrentText("X");
+    QVERIFY(waitUntil([&] { return c->travelKnown(); }, 10000));
+    QVERIFY2(c->positions()->isEnabled(), qPrintable(c->travelNote()->text()));
+    // The preset's travel window is +-0.75 m (docs/simulator.md "Long axis"), shown in the axis's units.
+    QVERIFY2(c->travelNote()->text().contains(QStringLiteral("0.75 m")), qPrintable(c->travelNote()->text()));
+    c->positions()->setValue(3);
+    // The budget follows the positions: 30 s of motion each, the CLI's default (docs/cli.md).
+    QCOMPARE(c->timeBudget()->value(), 3 * 30.0);
+    c->minBandwidth()->setValue(30.0);
+    c->confirmation()->setChecked(true);
+    QVERIFY2(c->isComplete(), qPrintable(c->choiceError()->text()));
+    if (screenshot)
+        maybeScreenshot(&w, "autotune-05-positions-choice");
+    w.next();
+    QCOMPARE(w.currentId(), int(AutoTuneWizard::Run));
+}
+
+/// Presses Abort when the progress first reaches `atPermille`, waits for the answer: refused as aborted, every
+/// parameter restored and read back equal (the sequence's own check).
+void abortAt(AutoTuneWizard& w, int atPermille, int timeoutMs)
+{
+    auto* run = w.runPage();
+    int pressedAt = -1;
+    QObject::connect(run->progress(), &QProgressBar::valueChanged, &w, [&](int v) {
+        if (pressedAt < 0 && v >= atPermille) {
+            pressedAt = v;
+            run->abortButton()->click();
+        }
+    });
+    QVERIFY(waitUntil([&] { return run->isComplete(); }, timeoutMs));
+    QVERIFY(pressedAt >= atPermille);
+    const auto r = w.data().result;
+    QVERIFY(r);
+    qInfo("Abort pressed at %.1f %% after %zu steps: %s", pressedAt / 10.0, r->steps.size(), r->reason.c_str());
+    QVERIFY(r->outcome == autotune::Outcome::Refused);
+    QVERIFY2(r->reasonCode == ErrorCode::Aborted, r->reason.c_str());
+    QVERIFY(r->restored);
+}
+
+/// The number before `suffix` in `text` ("164.2 Hz, 12.3 dB" with " dB" → 12.3).
+double numberBefore(const QString& text, const QString& suffix)
+{
+    const int end = text.indexOf(suffix);
+    if (end < 0)
+        return std::nan("");
+    int start = end;
+    while (start > 0 && (text[start - 1].isDigit() || text[start - 1] == '.' || text[start - 1] == '-'))
+        --start;
+    bool ok = false;
+    const double v = text.mid(start, end - start).toDouble(&ok);
+    return ok ? v : std::nan("");
 }
 
 void showWizard(AutoTuneWizard& w)
@@ -223,21 +301,11 @@ private slots:
         showWizard(w);
         choose(w, false);
         auto* run = w.runPage();
-        int pressedAt = -1;
-        connect(run->progress(), &QProgressBar::valueChanged, &w, [&](int v) {
-            if (pressedAt < 0 && v >= atPermille) {
-                pressedAt = v;
-                run->abortButton()->click();
-            }
-        });
-        QVERIFY(waitUntil([&] { return run->isComplete(); }, 60000));
-        QVERIFY(pressedAt >= atPermille);
-        qInfo("Abort pressed at %.1f %%: %s", pressedAt / 10.0, w.data().result ? w.data().result->reason.c_str() : "");
+        abortAt(w, atPermille, 60000);
+        if (QTest::currentTestFailed())
+            return;
         const auto r = w.data().result;
         QVERIFY(r);
-        QVERIFY(r->outcome == autotune::Outcome::Refused);
-        QVERIFY2(r->reasonCode == ErrorCode::Aborted, r->reason.c_str());
-        QVERIFY(r->restored);
         QVERIFY(!r->final);
         if (atPermille == 700) // the velocity gains were written before the Abort
             QVERIFY(r->steps.size() >= 5);
@@ -294,6 +362,231 @@ private slots:
         QVERIFY2(r->reasonCode == ErrorCode::Aborted, r->reason.c_str());
         QVERIFY(r->restored);
         QCOMPARE(readAll(ctx, "X"), before);
+    }
+
+    void positionsOnLongAxisPlotTheCoreResonanceMap()
+    {
+        QTemporaryDir dir;
+        AppContext ctx;
+        model::ParameterValues before;
+        openOn(dir, ctx, before, "sim:long-axis");
+        QVERIFY(!before.empty());
+        AutoTuneWizard w(ctx);
+        showWizard(w);
+        chooseThreePositions(w, true);
+        auto* run = w.runPage();
+        QVERIFY(waitUntil([&] { return run->isComplete(); }, 120000));
+        const auto r = w.data().result;
+        QVERIFY(r);
+        QVERIFY2(r->outcome == autotune::Outcome::Applied, r->reason.c_str());
+        QVERIFY(r->final);
+        const auto& pos = r->final->positions;
+        QCOMPARE(int(pos.size()), 3);
+        w.next();
+        auto* res = w.resultPage();
+        QVERIFY(!res->tabs()->isHidden());
+        QVERIFY(res->tabs()->isTabVisible(AutoTuneResultPage::ResonanceTab));
+        QVERIFY(!res->tabs()->isTabVisible(AutoTuneResultPage::AmplitudeTab));
+
+        // The plotted map: one point per position with a resonance, at the core's position and frequency.
+        auto* plot = res->resonanceMap();
+        QCOMPARE(plot->curveCount(), 1);
+        const auto pts = plot->curvePoints(0);
+        std::vector<autotune::PositionFinal> withResonance;
+        for (const auto& p : pos)
+            if (p.firstResonanceHz)
+                withResonance.push_back(p);
+        QCOMPARE(pts.size(), withResonance.size());
+        QCOMPARE(int(pts.size()), 3); // the preset has its screw mode in the band at every position
+        QCOMPARE(plot->pointLabels().size(), qsizetype(pts.size()));
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            // The plot holds the doubles of the result JSON (no rounding on the way): exact.
+            QCOMPARE(pts[i].first, withResonance[i].position);
+            QCOMPARE(pts[i].second, *withResonance[i].firstResonanceHz);
+            // The labels: frequency and height with one decimal, equal within half the last digit.
+            const QString label = plot->pointLabels()[int(i)];
+            QVERIFY2(std::abs(numberBefore(label, " Hz") - *withResonance[i].firstResonanceHz) <= 0.05 + 1e-9,
+                     qPrintable(label));
+            QVERIFY2(std::abs(numberBefore(label, " dB") - *withResonance[i].firstResonanceHeightDb) <= 0.05 + 1e-9,
+                     qPrintable(label));
+            qInfo("position %.3f m: first resonance %.1f Hz, %.1f dB; PM %.1f deg, GM %.1f dB", pts[i].first,
+                  pts[i].second, *withResonance[i].firstResonanceHeightDb, withResonance[i].phaseMarginDeg,
+                  withResonance[i].gainMarginDb);
+        }
+        // The positions span the travel window -0.75 ... +0.75 m (3 positions: the ends and the middle), and the
+        // resonance falls by at least 25 % from one end to the other (the preset's design, docs/simulator.md).
+        QVERIFY(std::abs(pos.front().position + 0.75) <= 1e-9);
+        QVERIFY(std::abs(pos.back().position - 0.75) <= 1e-9);
+        QVERIFY(*pos.back().firstResonanceHz <= 0.75 * *pos.front().firstResonanceHz);
+
+        // The table: every position's re-measured figures, shown to one decimal.
+        auto* t = res->positionsTable();
+        QCOMPARE(t->rowCount(), 3);
+        QVERIFY(t->horizontalHeaderItem(0)->text().contains("[m]"));
+        for (int row = 0; row < 3; ++row) {
+            const auto& p = pos[std::size_t(row)];
+            QVERIFY(std::abs(t->item(row, 0)->text().toDouble() - p.position) <= 0.5e-4 + 1e-12);
+            QVERIFY(std::abs(t->item(row, 3)->text().toDouble() - p.phaseMarginDeg) <= 0.05 + 1e-9);
+            QVERIFY(std::abs(t->item(row, 4)->text().toDouble() - p.gainMarginDb) <= 0.05 + 1e-9);
+            QVERIFY(std::abs(t->item(row, 5)->text().toDouble() - p.velocityBandwidthHz) <= 0.05 + 1e-9);
+            QVERIFY(std::abs(t->item(row, 6)->text().toDouble() - p.positionBandwidthHz) <= 0.05 + 1e-9);
+            // The style's acceptance at every position (standard: 45 deg / 6 dB).
+            QVERIFY(p.phaseMarginDeg >= 45.0);
+            QVERIFY(p.gainMarginDb >= 6.0);
+        }
+        res->tabs()->setCurrentIndex(AutoTuneResultPage::ResonanceTab);
+        maybeScreenshot(&w, "autotune-05-positions");
+    }
+
+    void abortDuringPositionsRestoresEveryParameter_data()
+    {
+        QTest::addColumn<int>("atPermille");
+        QTest::newRow("25 % (moving and measuring along the travel)") << 250;
+        QTest::newRow("75 % (gains written, verifying)") << 750;
+    }
+
+    void abortDuringPositionsRestoresEveryParameter()
+    {
+        QFETCH(int, atPermille);
+        QTemporaryDir dir;
+        AppContext ctx;
+        model::ParameterValues before;
+        openOn(dir, ctx, before, "sim:long-axis");
+        QVERIFY(!before.empty());
+        AutoTuneWizard w(ctx);
+        showWizard(w);
+        chooseThreePositions(w, false);
+        abortAt(w, atPermille, 120000);
+        if (QTest::currentTestFailed())
+            return;
+        const auto r = w.data().result;
+        QVERIFY(r);
+        if (atPermille == 750) // the velocity gains were written before the Abort
+            QVERIFY(r->steps.size() >= 5);
+        QCOMPARE(readAll(ctx, "X"), before);
+    }
+
+    void choicePageShowsTheCoresRefusals()
+    {
+        QTemporaryDir dir;
+        AppContext ctx;
+        model::ParameterValues before;
+        openOn(dir, ctx, before, "sim:dd-table", "C");
+        AutoTuneWizard w(ctx);
+        showWizard(w);
+        auto* c = w.choicePage();
+        QVERIFY(waitUntil([&] { return c->axis()->findText("C") >= 0; }, 5000));
+        c->axis()->setCurrentText("C");
+        QVERIFY(waitUntil([&] { return c->travelKnown(); }, 10000));
+        c->confirmation()->setChecked(true);
+        QVERIFY(c->isComplete());
+        // A rotary axis of the presets has no travel window: off, disabled, with the core's reason.
+        QVERIFY(!c->positions()->isEnabled());
+        QCOMPARE(c->positions()->value(), 1);
+        QVERIFY2(c->travelNote()->text().contains("travel window"), qPrintable(c->travelNote()->text()));
+
+        // Amplitude lists: the core's messages, and Start stays disabled.
+        c->amplitudes()->setText("5, 10");
+        QVERIFY(!c->isComplete());
+        QVERIFY2(c->choiceError()->text().contains(
+                     QString::fromStdString(autotune::checkAmplitudeList({5.0, 10.0}).error().detail)),
+                 qPrintable(c->choiceError()->text()));
+        maybeScreenshot(&w, "autotune-01-choice-rotary");
+        c->amplitudes()->setText("10, 5, 20");
+        QVERIFY(!c->isComplete());
+        QVERIFY(c->choiceError()->text().contains(
+            QString::fromStdString(autotune::checkAmplitudeList({10.0, 5.0, 20.0}).error().detail)));
+        c->amplitudes()->setText("5, ten, 20");
+        QVERIFY(!c->isComplete());
+        QVERIFY(c->choiceError()->text().contains("'ten'"));
+        c->amplitudes()->setText("5 10,20");
+        QVERIFY2(c->isComplete(), qPrintable(c->choiceError()->text()));
+        QVERIFY(c->choiceError()->text().isEmpty());
+        c->amplitudes()->clear();
+        QVERIFY(c->isComplete());
+
+        // On the long axis: positions and an amplitude map together are refused with checkChoices' reason.
+        bool connected = false;
+        connect(ctx.drive().connectTo("sim:long-axis"), &DriveRequest::finished, &w,
+                [&](const DriveReply& r) { connected = r.ok; });
+        QVERIFY(waitUntil([&] { return connected; }, 20000));
+        QVERIFY(waitUntil([&] { return ctx.axes().contains("X"); }, 5000));
+        c->initializePage();
+        c->axis()->setCurrentText("X");
+        QVERIFY(waitUntil([&] { return c->travelKnown(); }, 10000));
+        QVERIFY(c->positions()->isEnabled());
+        c->positions()->setValue(3);
+        c->amplitudes()->setText("5, 10, 20");
+        QVERIFY(!c->isComplete());
+        autotune::Options both;
+        both.axis = "X";
+        both.positions = 3;
+        both.amplitudeMapPct = {5.0, 10.0, 20.0};
+        QVERIFY(c->choiceError()->text().contains(QString::fromStdString(autotune::checkChoices(both).error().detail)));
+    }
+
+    void amplitudeMapOnVmcXPlotsTheCoresFlags()
+    {
+        QTemporaryDir dir;
+        AppContext ctx;
+        model::ParameterValues before;
+        openOnVmc(dir, ctx, before);
+        AutoTuneWizard w(ctx);
+        showWizard(w);
+        auto* c = w.choicePage();
+        QVERIFY(waitUntil([&] { return c->axis()->findText("X") >= 0; }, 5000));
+        c->axis()->setCurrentText("X");
+        c->amplitudes()->setText("5, 10, 20");
+        c->confirmation()->setChecked(true);
+        QVERIFY2(c->isComplete(), qPrintable(c->choiceError()->text()));
+        w.next();
+        auto* run = w.runPage();
+        QVERIFY(waitUntil([&] { return run->isComplete(); }, 120000));
+        const auto r = w.data().result;
+        QVERIFY(r);
+        QVERIFY2(r->outcome == autotune::Outcome::Applied, r->reason.c_str());
+        // The core's map: the frf step's measured.amplitude_map.
+        const nlohmann::json* map = nullptr;
+        for (const auto& st : r->steps)
+            if (st.name == "frf" && st.measured.contains("amplitude_map"))
+                map = &st.measured["amplitude_map"];
+        QVERIFY(map);
+        std::set<std::pair<double, double>> coreNonlinear, coreLinear;
+        for (const auto& l : (*map)["lines"])
+            for (const auto& at : l["at"])
+                (l["nonlinear"].get<bool>() ? coreNonlinear : coreLinear)
+                    .insert({l["f_Hz"].get<double>(), at["amplitude_pct"].get<double>()});
+        w.next();
+        auto* res = w.resultPage();
+        QVERIFY(res->tabs()->isTabVisible(AutoTuneResultPage::AmplitudeTab));
+        QVERIFY(!res->tabs()->isTabVisible(AutoTuneResultPage::ResonanceTab));
+        auto* plot = res->amplitudeMap();
+        const QStringList names = plot->curveNames();
+        const int iNon = int(names.indexOf(AutoTuneResultPage::tr("non-linear")));
+        const int iLin = int(names.indexOf(AutoTuneResultPage::tr("linear")));
+        const int iOff = int(names.indexOf(AutoTuneResultPage::tr("not compared")));
+        QVERIFY(iNon >= 0 && iLin >= 0 && iOff >= 0);
+        std::set<std::pair<double, double>> shownNonlinear, shownOther;
+        for (const auto& p : plot->curvePoints(iNon))
+            shownNonlinear.insert(p);
+        for (int i : {iLin, iOff})
+            for (const auto& p : plot->curvePoints(i))
+                shownOther.insert(p);
+        qInfo("amplitude map: %zu non-linear and %zu other (line, amplitude) points; %s of %s lines non-linear",
+              coreNonlinear.size(), coreLinear.size(), (*map)["nonlinear_lines"].dump().c_str(),
+              (*map)["lines_compared"].dump().c_str());
+        // Exactly the core's flags (the doubles of the JSON: exact), both kinds present on vmc X (its friction flags
+        // most lines below 1 kHz, not all: docs/tuning.md "What it shows on the simulator").
+        QVERIFY(!coreNonlinear.empty());
+        QVERIFY(!coreLinear.empty());
+        QVERIFY(shownNonlinear == coreNonlinear);
+        QVERIFY(shownOther == coreLinear);
+        // The magnitude plot: one curve per amplitude and the non-linear lines.
+        QCOMPARE(res->amplitudeMagnitude()->curveCount(), int((*map)["amplitudes"].size()) + 1);
+        QVERIFY(
+            res->amplitudeSummary()->text().contains(QString::number((*map)["nonlinear_lines"].get<double>(), 'g', 6)));
+        res->tabs()->setCurrentIndex(AutoTuneResultPage::AmplitudeTab);
+        maybeScreenshot(&w, "autotune-06-amplitude-map");
     }
 };
 

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// What a front end asks before it starts the one-button tuner (issue 18 items 3 and 4; docs/tuning.md "The wizard"):
+// whether the axis can be tuned over its travel and within which window, and whether a set of choices can run
+// together. The rules are the sequence's own (device::checkCanMoveTo / travelWindow, checkAmplitudeList); the
+// wizard's choice page only shows their answers. Nothing here moves the axis. No Qt.
+
+#include "core/autotune/AutoTune.h"
+#include "core/device/Drive.h"
+#include "core/model/Result.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace axistune::autotune {
+
+/// Default motion budget of a tune: 30 s per position (the CLI's default).
+inline constexpr double kDefaultBudgetPerPositionS = 30.0;
+double defaultTimeBudgetS(int positions);
+
+struct TravelChoice {
+    /// Empty: positions along the travel can be chosen; else why not (the reason runAutoTunePositions would refuse
+    /// with: no jog or hold test, jog distances in command units, no finite travel window — the rotary presets).
+    std::string refusal;
+    double window = 0.0; ///< the travel window W: the positions lie in −W … +W [m or rad]
+    /// "m" or "rad" when the drive names the unit of its position command (its scope channels) before any test;
+    /// empty when it does not (the sequence then learns it from its first hold).
+    std::string units;
+};
+
+/// Asks the drive (capabilities, limits, scope channels); no motion. Errors: the drive's (unknown axis, link).
+Result<TravelChoice> travelChoice(device::Drive& drive, const std::string& axis);
+
+/// The choices that cannot run together or are out of range, as `axistune-cli autotune` refuses them: a time
+/// budget <= 0, a required crossover < 0, positions < 1, an amplitude list that checkAmplitudeList refuses, an
+/// amplitude map or motor data with positions >= 2 (both are for one position). BadInput naming the choice.
+Status checkChoices(const Options& options);
+
+/// "5, 10, 20" (commas and/or blanks between the numbers; locale-free) → {5, 10, 20}; empty text → {}.
+/// BadInput naming the item that is not a number. The list's rules are checkAmplitudeList's.
+Result<std::vector<double>> parseAmplitudeList(std::string_view text);
+
+} // namespace axistune::autotune
