@@ -107,6 +107,7 @@ int runDrive(const DriveOptions& o)
                          {"has_link", caps->hasLink},
                          {"frf_peak_in_output_units", caps->frfPeakInOutputUnits},
                          {"jog_in_command_units", caps->jogInCommandUnits},
+                         {"step_is_position_step", caps->stepIsPositionStep},
                          {"frf_quantities", quantities},
                          {"scope", caps->scope}}},
                        {"limits",
@@ -125,12 +126,9 @@ int runDrive(const DriveOptions& o)
             nlohmann::json channels = nlohmann::json::array();
             for (const auto& c : sc->channels)
                 channels.push_back({{"name", c.name}, {"unit", c.unit}, {"description", c.description}});
-            axesJson[a]["scope"] = {{"fastest_rate_Hz", sc->fastestRateHz},
-                                    {"max_channels", sc->maxChannels},
-                                    {"max_divider", sc->maxDivider},
-                                    {"max_values", sc->maxValues},
-                                    {"ring_values", sc->ringValues},
-                                    {"channels", channels}};
+            axesJson[a]["scope"] = {{"fastest_rate_Hz", sc->fastestRateHz}, {"max_channels", sc->maxChannels},
+                                    {"max_divider", sc->maxDivider},        {"max_values", sc->maxValues},
+                                    {"ring_values", sc->ringValues},        {"channels", channels}};
         }
     }
     nlohmann::json out{{"connection", o.connect},

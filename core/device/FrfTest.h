@@ -24,17 +24,19 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace axistune::device {
 
 /// Timing derived from the velocity loop's own dynamics.
 struct LoopTiming {
-    double timeConstantS = 0.0;  ///< slowest closed-loop time constant of J s² + k_p s + k_i
-    double settleS = 0.0;        ///< settle time after each frequency change ...
-    double settlePeriods = 0.0;  ///< ... and at least this many periods of the new frequency
-    double maxSettleS = 0.5;     ///< cap of the period rule
-    double minMeasureS = 0.0;    ///< minimum measured time per frequency (all windows together)
+    double timeConstantS = 0.0; ///< slowest closed-loop time constant of J s² + k_p s + k_i
+    double settleS = 0.0;       ///< settle time after each frequency change ...
+    double settlePeriods = 0.0; ///< ... and at least this many periods of the new frequency
+    double maxSettleS = 0.5;    ///< cap of the period rule
+    double minMeasureS = 0.0;   ///< minimum measured time per frequency (all windows together)
 };
 
 /// Slowest time constant 1/|Re s| of the rigid velocity loop J s² + k_p s + k_i = 0 (J = velocity.inertia),
@@ -56,16 +58,16 @@ struct FrfSegment {
 
 struct FrfPlan {
     FrfMethod method = FrfMethod::MultiSweep;
-    double fsHz = 0.0;          ///< trace rate
+    double fsHz = 0.0; ///< trace rate
     double amplitudeNm = 0.0;
-    std::vector<FrfSegment> segments;  ///< sine streams, in time order
-    std::vector<double> prbs;          ///< PRBS: one value per trace sample (after prbsStart)
-    std::int64_t prbsStart = 0;        ///< PRBS: first sample of the analysed record (after settling)
-    std::size_t nperseg = 0;           ///< PRBS: Welch segment length
+    std::vector<FrfSegment> segments; ///< sine streams, in time order
+    std::vector<double> prbs;         ///< PRBS: one value per trace sample (after prbsStart)
+    std::int64_t prbsStart = 0;       ///< PRBS: first sample of the analysed record (after settling)
+    std::size_t nperseg = 0;          ///< PRBS: Welch segment length
     std::size_t totalSamples = 0;
     LoopTiming timing;
-    double voltageLimitV = 0.0;  ///< points whose traced voltage reaches it are marked invalid (0: no check)
-    double fminHz = 0.0, fmaxHz = 0.0;  ///< requested range (PRBS output is thinned to it)
+    double voltageLimitV = 0.0;        ///< points whose traced voltage reaches it are marked invalid (0: no check)
+    double fminHz = 0.0, fmaxHz = 0.0; ///< requested range (PRBS output is thinned to it)
     int points = 0;
     /// Current-loop period h (the injection's tick) and velocity-loop period (T_c's hold) for the
     /// injection-hold correction; 0: taken from the trace metadata current_period_s, velocity_period_s.
@@ -95,6 +97,14 @@ Result<FrfPlan> planFrfTest(const FrfPlanOptions& options);
 /// Zero outside the plan.
 double frfExcitation(const FrfPlan& plan, double s);
 
+/// The FRF of plan's excitation x and response y, both one value per trace sample (x[i], y[i] at sample i of the
+/// plan): sine streams by dsp::sineStreamFrf on the plan's windows (the sweep recording names x and y with
+/// excitationName and responseName), PRBS by Welch H1 over the record after prbsStart, thinned to the plan's points.
+/// No hold correction and no drive metadata: the core of evaluateFrfTrace, shared with hal: (HalDrive.h), which
+/// evaluates the plant and the open loop from its servo-rate record.
+Result<FrfMeasurement> evaluateFrfSignals(const FrfPlan& plan, std::span<const double> x, std::span<const double> y,
+                                          const std::string& excitationName, const std::string& responseName);
+
 /// The sine-stream recording of a completed trace (channels injection_Nm and torque_cmd_Nm, the
 /// response is −torque_cmd_Nm), and the FRF: sine streams by dsp::sineStreamFrf, PRBS by Welch H1.
 /// The FRF is corrected for the injection hold (metadata injection_hold_corrected=true): sine streams
@@ -105,4 +115,4 @@ double frfExcitation(const FrfPlan& plan, double s);
 /// BadInput when the periods are neither in the plan nor in the trace metadata, or not in integer ratio.
 Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace);
 
-}  // namespace axistune::device
+} // namespace axistune::device
