@@ -126,9 +126,12 @@ int runDrive(const DriveOptions& o)
             nlohmann::json channels = nlohmann::json::array();
             for (const auto& c : sc->channels)
                 channels.push_back({{"name", c.name}, {"unit", c.unit}, {"description", c.description}});
-            axesJson[a]["scope"] = {{"fastest_rate_Hz", sc->fastestRateHz}, {"max_channels", sc->maxChannels},
-                                    {"max_divider", sc->maxDivider},        {"max_values", sc->maxValues},
-                                    {"ring_values", sc->ringValues},        {"channels", channels}};
+            axesJson[a]["scope"] = {{"fastest_rate_Hz", sc->fastestRateHz},
+                                    {"max_channels", sc->maxChannels},
+                                    {"max_divider", sc->maxDivider},
+                                    {"max_values", sc->maxValues},
+                                    {"ring_values", sc->ringValues},
+                                    {"channels", channels}};
         }
     }
     nlohmann::json out{{"connection", o.connect},

@@ -23,8 +23,8 @@ struct DriveIdentity {
     std::string vendor;
     std::string model;
     std::string firmware;
-    std::string machine;           ///< preset or machine name
-    std::vector<std::string> axes; ///< axis names, one drive axis each
+    std::string machine;            ///< preset or machine name
+    std::vector<std::string> axes;  ///< axis names, one drive axis each
 };
 
 enum class TestType {
@@ -43,10 +43,10 @@ enum class TestType {
 
 /// Excitation and analysis of an FRF test (docs/frequency-response-sim.md).
 enum class FrfMethod {
-    MultiSweep,   ///< sine stream at phase offsets 0, +120°, −120°: valid below the trace rate fs
-    Conventional, ///< sine stream at one phase offset: valid below fs/2
-    Prbs,         ///< PRBS with Welch H1 and coherence: valid below fs/2
-    Multisine,    ///< three-phase multisine, all lines at once: valid below fs (docs/multisine.md)
+    MultiSweep,    ///< sine stream at phase offsets 0, +120°, −120°: valid below the trace rate fs
+    Conventional,  ///< sine stream at one phase offset: valid below fs/2
+    Prbs,          ///< PRBS with Welch H1 and coherence: valid below fs/2
+    Multisine,     ///< three-phase multisine, all lines at once: valid below fs (docs/multisine.md)
 };
 
 const char* frfMethodName(FrfMethod m);
@@ -74,21 +74,21 @@ struct TestRequest {
     double fminHz = 10.0;
     double fmaxHz = 3900.0;
     int points = 60;
-    double amplitudePct = 5.0; ///< % of rated torque; refused above DriveLimits::frfAmplitudeMaxPct
+    double amplitudePct = 5.0;   ///< % of rated torque; refused above DriveLimits::frfAmplitudeMaxPct
     /// The excitation's peak in the units of the drive's injection point instead of amplitudePct (0: not given).
     /// Only drives whose capabilities say frfPeakInOutputUnits take it (hal:: the PID output's units); the others
     /// refuse a request that gives it.
     double amplitudePeak = 0.0;
     FrfQuantity frfQuantity = FrfQuantity::Default; ///< refused unless in DriveCapabilities::frfQuantities
-    double settleS = 0.0;                           ///< settle per frequency; 0: from the loop's dynamics
-    double minMeasureS = 0.0; ///< measured time per frequency at least; 0: from the loop's dynamics
+    double settleS = 0.0;        ///< settle per frequency; 0: from the loop's dynamics
+    double minMeasureS = 0.0;    ///< measured time per frequency at least; 0: from the loop's dynamics
     // Frf with FrfMethod::Multisine (docs/multisine.md): amplitudePct is the PEAK of the multisine,
     // settleS the settle time before the record (0: from the loop's dynamics); points is not used.
     double multisineSpacingHz = 0.0;                ///< line spacing of the band fminHz..fmaxHz; 0: fminHz/2
     std::vector<dsp::MultisineBand> multisineBands; ///< bands with their own spacing; empty: the one band above
-    int multisinePeriods = 0; ///< averaged periods (three phases each); 0: from the loop's dynamics
+    int multisinePeriods = 0;                       ///< averaged periods (three phases each); 0: from the loop's dynamics
     dsp::MultisinePhases multisinePhases = dsp::MultisinePhases::Clipping;
-    std::vector<std::pair<double, double>> multisineShape; ///< (f [Hz], relative amplitude); empty: flat
+    std::vector<std::pair<double, double>> multisineShape;  ///< (f [Hz], relative amplitude); empty: flat
     // Circle (CircleDriveTest.h; docs/ballbar.md "Circle tests through the drive"): `axis` is the first
     // plane axis ("x" role), `secondAxis` the second. The drive first moves both axes to the start point
     // (velocity [m/s] and acceleration [m/s²] of that move; 0: kCirclePositioning*), dwells durationS,
@@ -97,26 +97,26 @@ struct TestRequest {
     double radiusM = 0.0;
     double feedMPerS = 0.0;
     model::CircleDirection direction = model::CircleDirection::Ccw;
-    double centerXM = 0.0;      ///< circle centre: position of the first axis [m]
-    double centerYM = 0.0;      ///< circle centre: position of the second axis [m]
-    double dataStartDeg = 45.0; ///< angle at which the 360° data arc begins
-    double leadArcDeg = 90.0;   ///< lead-in and lead-out arcs
+    double centerXM = 0.0;  ///< circle centre: position of the first axis [m]
+    double centerYM = 0.0;  ///< circle centre: position of the second axis [m]
+    double dataStartDeg = 45.0;  ///< angle at which the 360° data arc begins
+    double leadArcDeg = 90.0;    ///< lead-in and lead-out arcs
 };
 
 /// The result of an FRF test: the closed velocity loop T = −T_c/d (spec §3.2 eq. 3.1) with validity.
 struct FrfMeasurement {
     dsp::FrequencyResponse frf;
-    dsp::SweepRecording sweep;         ///< sine streams: excitation d and response −T_c per window (empty for PRBS)
-    double motionTimeS = 0.0;          ///< machine time of the excitation (settling included)
-    std::vector<double> relativeNoise; ///< multisine: σ_H/|H| per point from the scatter over the periods (else empty)
+    dsp::SweepRecording sweep;  ///< sine streams: excitation d and response −T_c per window (empty for PRBS)
+    double motionTimeS = 0.0;   ///< machine time of the excitation (settling included)
+    std::vector<double> relativeNoise;  ///< multisine: σ_H/|H| per point from the scatter over the periods (else empty)
 };
 
 enum class TestState { Idle, Running, Completed, Aborted, Faulted };
 
 struct TestStatus {
     TestState state = TestState::Idle;
-    double progress = 0.0; ///< 0..1
-    std::string detail;    ///< fault or abort reason
+    double progress = 0.0;  ///< 0..1
+    std::string detail;     ///< fault or abort reason
 };
 
 const char* testStateName(TestState s);
@@ -140,9 +140,8 @@ struct DriveCapabilities {
     /// TestType::Step is a position step of the command by TestRequest::amplitude in the command's own units (hal::
     /// the configuration's, e.g. mm), held for durationS and stepped back; false: a motor velocity step [rad/s].
     bool stepIsPositionStep = false;
-    std::vector<FrfQuantity>
-        frfQuantities;  ///< quantities besides Default an FRF test can report (hal:: plant, open loop)
-    bool scope = false; ///< the scope answers (Drive::scopeCapabilities, armScope; docs/scope.md)
+    std::vector<FrfQuantity> frfQuantities; ///< quantities besides Default an FRF test can report (hal:: plant, open loop)
+    bool scope = false;                ///< the scope answers (Drive::scopeCapabilities, armScope; docs/scope.md)
 
     bool offers(TestType t) const;
     bool offers(FrfMethod m) const;
@@ -181,8 +180,7 @@ public:
     virtual Result<DriveIdentity> identify() = 0;
     /// Metadata of every parameter of an axis (units, limits, writability).
     virtual Result<std::vector<model::ParameterMeta>> parameterMetadata(const std::string& axis) = 0;
-    virtual Result<model::ParameterValues> readParameters(const std::string& axis,
-                                                          std::span<const std::string> keys) = 0;
+    virtual Result<model::ParameterValues> readParameters(const std::string& axis, std::span<const std::string> keys) = 0;
     /// Range-checked before anything changes; refused while a test runs unless writable during tests.
     virtual Status writeParameters(const std::string& axis, const model::ParameterValues& values) = 0;
     virtual Status startTest(const TestRequest& request) = 0;
@@ -240,10 +238,7 @@ public:
         return makeError(ErrorCode::NotFound, "this drive has no scope");
     }
     /// The last complete triggered capture, with its channels and units.
-    virtual Result<ScopeCapture> readScopeCapture()
-    {
-        return makeError(ErrorCode::NotFound, "this drive has no scope");
-    }
+    virtual Result<ScopeCapture> readScopeCapture() { return makeError(ErrorCode::NotFound, "this drive has no scope"); }
     /// Stops sampling; a complete capture stays readable.
     virtual Status stopScope() { return makeError(ErrorCode::NotFound, "this drive has no scope"); }
 };
@@ -257,4 +252,4 @@ struct ConnectionSettings {
 /// and what is wrong with it.
 Result<std::unique_ptr<Drive>> connect(const ConnectionSettings& settings);
 
-} // namespace axistune::device
+}  // namespace axistune::device

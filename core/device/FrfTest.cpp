@@ -50,7 +50,7 @@ GridPoint nearestGridFrequency(double f, double fs, double c, std::size_t mMin, 
             best = {fp, m};
         }
         if (err < 1e-3)
-            break; // the shortest window that lands within 0.1 % (else the best of the span)
+            break;  // the shortest window that lands within 0.1 % (else the best of the span)
     }
     return best;
 }
@@ -68,8 +68,8 @@ std::vector<double> logSpaced(double f0, double f1, int n)
 /// Current and velocity period: the plan's, else the trace metadata's.
 struct HoldPeriods {
     double currentS = 0.0, velocityS = 0.0;
-    int ticksPerVelocity = 1;  ///< N: current ticks per velocity period
-    int velocityPerSample = 1; ///< D: velocity periods per trace sample
+    int ticksPerVelocity = 1;   ///< N: current ticks per velocity period
+    int velocityPerSample = 1;  ///< D: velocity periods per trace sample
 };
 Result<HoldPeriods> holdPeriods(const FrfPlan& plan, const model::Capture& trace)
 {
@@ -90,12 +90,11 @@ Result<HoldPeriods> holdPeriods(const FrfPlan& plan, const model::Capture& trace
     const double n = p.velocityS / p.currentS, d = 1.0 / (plan.fsHz * p.velocityS);
     p.ticksPerVelocity = static_cast<int>(std::lround(n));
     p.velocityPerSample = static_cast<int>(std::lround(d));
-    if (p.ticksPerVelocity < 1 || std::abs(n - p.ticksPerVelocity) > 1e-6 * n || p.velocityPerSample < 1 ||
-        std::abs(d - p.velocityPerSample) > 1e-6 * d)
-        return makeError(ErrorCode::BadInput, "FRF trace: velocity period " + num(p.velocityS) +
-                                                  " s and trace period " + num(1.0 / plan.fsHz) +
-                                                  " s must be integer multiples of the current period " +
-                                                  num(p.currentS) + " s and of the velocity period");
+    if (p.ticksPerVelocity < 1 || std::abs(n - p.ticksPerVelocity) > 1e-6 * n || p.velocityPerSample < 1
+        || std::abs(d - p.velocityPerSample) > 1e-6 * d)
+        return makeError(ErrorCode::BadInput, "FRF trace: velocity period " + num(p.velocityS) + " s and trace period "
+                                                  + num(1.0 / plan.fsHz) + " s must be integer multiples of the current period "
+                                                  + num(p.currentS) + " s and of the velocity period");
     return p;
 }
 
@@ -124,7 +123,7 @@ Status correctHold(FrfMeasurement& out, const FrfPlan& plan, const HoldPeriods& 
     return Status::success();
 }
 
-} // namespace
+}  // namespace
 
 Status checkRatedTorqueFrfRequest(const TestRequest& r)
 {
@@ -132,23 +131,18 @@ Status checkRatedTorqueFrfRequest(const TestRequest& r)
         return makeError(ErrorCode::BadInput, "FRF quantity: this drive measures its own quantity only (the closed "
                                               "velocity loop); plant and open-loop quantities are hal:'s (--quantity)");
     if (r.amplitudePeak != 0.0)
-        return makeError(ErrorCode::BadInput,
-                         "FRF amplitude: this drive takes it in % of rated torque (amplitudePct, "
-                         "--amplitude-pct), not as a peak in output units (amplitudePeak, --amplitude)");
+        return makeError(ErrorCode::BadInput, "FRF amplitude: this drive takes it in % of rated torque (amplitudePct, "
+                                              "--amplitude-pct), not as a peak in output units (amplitudePeak, --amplitude)");
     return Status::success();
 }
 
 const char* frfMethodName(FrfMethod m)
 {
     switch (m) {
-    case FrfMethod::MultiSweep:
-        return "multisweep";
-    case FrfMethod::Conventional:
-        return "conventional";
-    case FrfMethod::Prbs:
-        return "prbs";
-    case FrfMethod::Multisine:
-        return "multisine";
+    case FrfMethod::MultiSweep: return "multisweep";
+    case FrfMethod::Conventional: return "conventional";
+    case FrfMethod::Prbs: return "prbs";
+    case FrfMethod::Multisine: return "multisine";
     }
     return "?";
 }
@@ -162,18 +156,17 @@ Result<LoopTiming> loopTimingFromParameters(const model::ParameterValues& v, dou
     };
     const double j = get("velocity.inertia"), kp = get("velocity.kp"), ki = get("velocity.ki");
     if (!(j > 0.0) || !(kp > 0.0)) {
-        return makeError(ErrorCode::BadInput,
-                         "the settle time follows from velocity.inertia, velocity.kp and velocity.ki: "
-                         "velocity.inertia and velocity.kp must be positive (or give the settle time)");
+        return makeError(ErrorCode::BadInput, "the settle time follows from velocity.inertia, velocity.kp and velocity.ki: "
+                                              "velocity.inertia and velocity.kp must be positive (or give the settle time)");
     }
     double tau = 0.0;
     const double disc = kp * kp - 4.0 * j * ki;
     if (ki <= 0.0)
         tau = j / kp;
     else if (disc >= 0.0)
-        tau = 2.0 * j / (kp - std::sqrt(disc)); // the slow real pole (−k_p + √disc)/(2J)
+        tau = 2.0 * j / (kp - std::sqrt(disc));  // the slow real pole (−k_p + √disc)/(2J)
     else
-        tau = 2.0 * j / kp; // complex pair, real part −k_p/(2J)
+        tau = 2.0 * j / kp;  // complex pair, real part −k_p/(2J)
     LoopTiming t;
     t.timeConstantS = tau;
     t.settleS = settleTc * tau;
@@ -194,14 +187,14 @@ Result<FrfPlan> planFrfTest(const FrfPlanOptions& o)
         return makeError(ErrorCode::OutOfRange, "FRF test: fmax must not be below fmin");
     const double fTop = o.method == FrfMethod::Prbs ? 0.5 * o.fsHz : o.fsHz;
     if (!(o.fmaxHz < fTop) && !(o.method == FrfMethod::Prbs && o.fmaxHz == fTop)) {
-        return makeError(ErrorCode::OutOfRange, "FRF test: fmax " + num(o.fmaxHz) + " Hz must lie below " + num(fTop) +
-                                                    " Hz (" + (o.method == FrfMethod::Prbs ? "fs/2" : "fs") +
-                                                    " at the trace rate " + num(o.fsHz) + " Hz)");
+        return makeError(ErrorCode::OutOfRange, "FRF test: fmax " + num(o.fmaxHz) + " Hz must lie below "
+                                                    + num(fTop) + " Hz (" + (o.method == FrfMethod::Prbs ? "fs/2" : "fs")
+                                                    + " at the trace rate " + num(o.fsHz) + " Hz)");
     }
     if (o.points < 1 || (o.points == 1 && o.fmaxHz != o.fminHz) || o.points > 10000)
         return makeError(ErrorCode::OutOfRange, "FRF test: points must lie in [2, 10000] (1 only when fmin = fmax)");
-    if (!(o.timing.settleS >= 0.0) || !(o.timing.minMeasureS >= 0.0) || o.timing.settleS > 10.0 ||
-        o.timing.minMeasureS > 10.0 || !(o.timing.settlePeriods >= 0.0) || !(o.timing.maxSettleS >= 0.0))
+    if (!(o.timing.settleS >= 0.0) || !(o.timing.minMeasureS >= 0.0) || o.timing.settleS > 10.0 || o.timing.minMeasureS > 10.0
+        || !(o.timing.settlePeriods >= 0.0) || !(o.timing.maxSettleS >= 0.0))
         return makeError(ErrorCode::OutOfRange, "FRF test: settle and measure times must lie in [0, 10] s");
 
     FrfPlan plan;
@@ -222,7 +215,7 @@ Result<FrfPlan> planFrfTest(const FrfPlanOptions& o)
         unsigned order = 0;
         while ((std::size_t{1} << order) < n)
             ++order;
-        const std::size_t record = 8 * n; // 15 Hann segments with half overlap
+        const std::size_t record = 8 * n;  // 15 Hann segments with half overlap
         dsp::PrbsOptions po;
         po.order = order;
         po.amplitude = o.amplitudeNm;
@@ -248,10 +241,9 @@ Result<FrfPlan> planFrfTest(const FrfPlanOptions& o)
     for (double target : logSpaced(o.fminHz, o.fmaxHz, o.points)) {
         const GridPoint g = nearestGridFrequency(target, o.fsHz, c, mMin, multi ? 0 : 1);
         if (g.m == 0 || g.freqHz <= last)
-            continue; // two targets on one grid frequency: measured once
+            continue;  // two targets on one grid frequency: measured once
         last = g.freqHz;
-        const double settleF =
-            std::max(o.timing.settleS, std::min(o.timing.settlePeriods / g.freqHz, o.timing.maxSettleS));
+        const double settleF = std::max(o.timing.settleS, std::min(o.timing.settlePeriods / g.freqHz, o.timing.maxSettleS));
         const auto settleSamples = static_cast<std::size_t>(std::ceil(settleF * o.fsHz - 1e-9));
         for (std::size_t w = 0; w < windows; ++w) {
             FrfSegment s;
@@ -370,8 +362,7 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
             for (const auto& s : plan.segments) {
                 bool hit = false;
                 for (std::size_t i = 0; i < s.measureSamples && !hit; ++i)
-                    hit =
-                        std::abs(volt->data[static_cast<std::size_t>(s.windowStart) + i]) >= 0.999 * plan.voltageLimitV;
+                    hit = std::abs(volt->data[static_cast<std::size_t>(s.windowStart) + i]) >= 0.999 * plan.voltageLimitV;
                 if (!hit)
                     continue;
                 auto it = std::find(out.frf.freqHz.begin(), out.frf.freqHz.end(), s.freqHz);
@@ -389,7 +380,7 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
     auto& md = out.frf.metadata;
     md["input"] = "injection_Nm";
     md["output"] = "-torque_cmd_Nm";
-    md["measurement"] = "complementary"; // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
+    md["measurement"] = "complementary";  // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
     md["amplitude_Nm"] = num(plan.amplitudeNm);
     md["settle_s"] = num(plan.timing.settleS);
     md["settle_periods"] = num(plan.timing.settlePeriods);
@@ -404,4 +395,4 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
     return out;
 }
 
-} // namespace axistune::device
+}  // namespace axistune::device

@@ -32,11 +32,11 @@ namespace axistune::device {
 
 /// Timing derived from the velocity loop's own dynamics.
 struct LoopTiming {
-    double timeConstantS = 0.0; ///< slowest closed-loop time constant of J s² + k_p s + k_i
-    double settleS = 0.0;       ///< settle time after each frequency change ...
-    double settlePeriods = 0.0; ///< ... and at least this many periods of the new frequency
-    double maxSettleS = 0.5;    ///< cap of the period rule
-    double minMeasureS = 0.0;   ///< minimum measured time per frequency (all windows together)
+    double timeConstantS = 0.0;  ///< slowest closed-loop time constant of J s² + k_p s + k_i
+    double settleS = 0.0;        ///< settle time after each frequency change ...
+    double settlePeriods = 0.0;  ///< ... and at least this many periods of the new frequency
+    double maxSettleS = 0.5;     ///< cap of the period rule
+    double minMeasureS = 0.0;    ///< minimum measured time per frequency (all windows together)
 };
 
 /// Slowest time constant 1/|Re s| of the rigid velocity loop J s² + k_p s + k_i = 0 (J = velocity.inertia),
@@ -58,16 +58,16 @@ struct FrfSegment {
 
 struct FrfPlan {
     FrfMethod method = FrfMethod::MultiSweep;
-    double fsHz = 0.0; ///< trace rate
+    double fsHz = 0.0;          ///< trace rate
     double amplitudeNm = 0.0;
-    std::vector<FrfSegment> segments; ///< sine streams, in time order
-    std::vector<double> prbs;         ///< PRBS: one value per trace sample (after prbsStart)
-    std::int64_t prbsStart = 0;       ///< PRBS: first sample of the analysed record (after settling)
-    std::size_t nperseg = 0;          ///< PRBS: Welch segment length
+    std::vector<FrfSegment> segments;  ///< sine streams, in time order
+    std::vector<double> prbs;          ///< PRBS: one value per trace sample (after prbsStart)
+    std::int64_t prbsStart = 0;        ///< PRBS: first sample of the analysed record (after settling)
+    std::size_t nperseg = 0;           ///< PRBS: Welch segment length
     std::size_t totalSamples = 0;
     LoopTiming timing;
-    double voltageLimitV = 0.0;        ///< points whose traced voltage reaches it are marked invalid (0: no check)
-    double fminHz = 0.0, fmaxHz = 0.0; ///< requested range (PRBS output is thinned to it)
+    double voltageLimitV = 0.0;  ///< points whose traced voltage reaches it are marked invalid (0: no check)
+    double fminHz = 0.0, fmaxHz = 0.0;  ///< requested range (PRBS output is thinned to it)
     int points = 0;
     /// Current-loop period h (the injection's tick) and velocity-loop period (T_c's hold) for the
     /// injection-hold correction; 0: taken from the trace metadata current_period_s, velocity_period_s.
@@ -115,4 +115,4 @@ Result<FrfMeasurement> evaluateFrfSignals(const FrfPlan& plan, std::span<const d
 /// BadInput when the periods are neither in the plan nor in the trace metadata, or not in integer ratio.
 Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace);
 
-} // namespace axistune::device
+}  // namespace axistune::device
