@@ -68,6 +68,10 @@ struct TestRequest {
     bool returnToStart = false; ///< Jog: move back (a reversal)
     double jerk = 0.0;          ///< Jog: jerk limit [m/s³] or [rad/s³] (rectangular jerk); 0 = trapezoid
     double durationS = 0.1;     ///< Step/Hold/CurrentStep: recording length; Jog: dwell before and after
+    /// Step: the caller means a position step of the command in its units. A drive whose step is one
+    /// (DriveCapabilities::stepIsPositionStep, hal:) refuses a step request without it, so that a velocity step in
+    /// rad/s is never taken for millimetres.
+    bool positionStep = false;
     int traceDivider = 0;       ///< 0: the drive's trace.divider parameter
     // Frf (durationS is not used: the length follows from the plan).
     FrfMethod frfMethod = FrfMethod::MultiSweep;

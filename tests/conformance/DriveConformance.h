@@ -180,6 +180,7 @@ protected:
             // A position step in the command's units (hal:: mm on the test machine, like the jog's distance), else a
             // motor velocity step.
             r.amplitude = m_caps.stepIsPositionStep ? 0.002 : std::min(10.0, 0.1 * m_limits.motorSpeedMaxRadS);
+            r.positionStep = m_caps.stepIsPositionStep;
             r.durationS = 0.2;
             break;
         case TestType::Jog:

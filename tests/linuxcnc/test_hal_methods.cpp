@@ -203,6 +203,7 @@ TEST_F(HalTestbed, PositionStepEqualsTheSimulatedPidAndPlant)
     r.axis = "pid.x";
     r.type = TestType::Step;
     r.amplitude = 0.01; // mm: P·e 0.02 N·m, D·e/T 0.47 N·m, below maxoutput 2 N·m
+    r.positionStep = true;
     r.durationS = 0.5;
     auto plan = drive->planTest(r);
     ASSERT_TRUE(plan) << plan.error().detail;
@@ -295,7 +296,12 @@ TEST_F(HalTestbed, RefusedMethodsAndStepsChangeNothing)
     step.type = TestType::Step;
     step.amplitude = 2.6; // FERROR 5 mm
     step.durationS = 0.2;
+    step.positionStep = true;
     cases.push_back({step, "at most half of the following-error limit"});
+    TestRequest velocityStep = step; // a caller that means a motor velocity step in rad/s (the simulator's step)
+    velocityStep.amplitude = 1.0;
+    velocityStep.positionStep = false;
+    cases.push_back({velocityStep, "a velocity step request is refused"});
     TestRequest noDuration = step;
     noDuration.amplitude = 0.01;
     noDuration.durationS = 0.0;

@@ -169,6 +169,9 @@ Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, doubl
 {
     if (r.type != TestType::Step)
         return makeError(ErrorCode::Internal, "planHalStep: a step request only");
+    if (!r.positionStep)
+        return makeError(ErrorCode::BadInput, "hal: steps the pid's position command (in its units), not the motor "
+                                              "velocity: a velocity step request is refused");
     if (!std::isfinite(r.amplitude) || r.amplitude == 0.0)
         return makeError(ErrorCode::OutOfRange,
                          "step must be a non-zero number: on hal: a position step of the command, in its units");
