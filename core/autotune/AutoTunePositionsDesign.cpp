@@ -105,14 +105,20 @@ Result<PiSearch> searchPi(const std::vector<Site>& sites, const StyleTargets& tg
                 double worstBw = kInf;
                 std::vector<dsp::LoopMargins> ms;
                 for (const auto& site : sites) {
-                    piLoops(*pi, site, l, t);
+                    l.resize(site.f.size());
+                    for (std::size_t k = 0; k < site.f.size(); ++k)
+                        l[k] = tuning::piResponse(*pi, site.f[k]) * site.p[k];
                     const auto m = marginsOf(site.f, l);
-                    ok = ok && std::isfinite(m.phaseMarginDeg) && m.phaseMarginDeg >= tg.phaseMarginDeg &&
+                    ok = std::isfinite(m.phaseMarginDeg) && m.phaseMarginDeg >= tg.phaseMarginDeg &&
                          m.gainMarginDb >= tg.gainMarginDb + kDesignGainReserveDb;
-                    worstBw = std::min(worstBw, closedLoopBandwidthHz(site.f, t).value_or(0.0));
-                    ms.push_back(m);
                     if (!ok)
                         break;
+                    // The closed loop only for a PI that keeps the margins here (most of the grid does not).
+                    t.resize(l.size());
+                    for (std::size_t k = 0; k < l.size(); ++k)
+                        t[k] = l[k] / (1.0 + l[k]);
+                    worstBw = std::min(worstBw, closedLoopBandwidthHz(site.f, t).value_or(0.0));
+                    ms.push_back(m);
                 }
                 if (ok && f > out.highestOkHz)
                     out.highestOkHz = f;
