@@ -2,11 +2,12 @@
 // The one-button tuner over the travel (issue 18 item 4; AutoTune.h Options::positions; docs/tuning.md "Over the
 // travel"): the drive moves the axis to N positions spread over its travel window (device::moveAxisTo: a hold to
 // find the axis, a jog by the difference), measures the adaptive FRF at each, finds the first resonance there (the
-// resonance map), places notches for the resonances of every position, designs the velocity PI whose predicted
-// margins hold at EVERY position (the worst case over the positions decides), the position gain whose position
-// loop keeps its gain margin at every position, evaluates a move, verifies by measuring again at every position and
-// applies or rolls back. The rules are core/tuning's; the thresholds are those of the single-position sequence
-// (AutoTune.cpp), restated here where they are used. The steps are in files of their own (AutoTunePositionsRun.h).
+// resonance map), chooses the notch design for the resonances of every position (AutoTunePositionsNotches.h), designs
+// the velocity PI whose predicted margins hold at EVERY position (the worst case over the positions decides), the
+// position gain whose position loop keeps its gain margin at every position, evaluates a move, verifies by measuring
+// again at every position and applies or rolls back. The rules are core/tuning's; the thresholds are those of the
+// single-position sequence (AutoTune.cpp), restated here where they are used. The steps are in files of their own
+// (AutoTunePositionsRun.h).
 #include "core/autotune/AutoTunePositionsRun.h"
 #include "core/device/MoveTo.h"
 #include "core/model/ResultJson.h"

@@ -19,6 +19,7 @@
 #include "core/tuning/VelocityLoop.h"
 
 #include <complex>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
