@@ -18,7 +18,7 @@ std::string wholeText(long long n)
     return std::string(buf, r.ptr);
 }
 
-dsp::LoopMargins marginsOf(const std::vector<double>& f, const std::vector<std::complex<double>>& l)
+dsp::LoopMargins loopMarginsOn(const std::vector<double>& f, const std::vector<std::complex<double>>& l)
 {
     dsp::FrequencyResponse r;
     for (std::size_t i = 0; i < f.size(); ++i)
@@ -108,7 +108,7 @@ Result<PiSearch> searchPi(const std::vector<Site>& sites, const StyleTargets& tg
                     l.resize(site.f.size());
                     for (std::size_t k = 0; k < site.f.size(); ++k)
                         l[k] = tuning::piResponse(*pi, site.f[k]) * site.p[k];
-                    const auto m = marginsOf(site.f, l);
+                    const auto m = loopMarginsOn(site.f, l);
                     ok = std::isfinite(m.phaseMarginDeg) && m.phaseMarginDeg >= tg.phaseMarginDeg &&
                          m.gainMarginDb >= tg.gainMarginDb + kDesignGainReserveDb;
                     if (!ok)
@@ -195,7 +195,7 @@ Result<Step> Positions::position()
     std::vector<std::complex<double>> l, t;
     for (const auto& site : m_sites) {
         piLoops(m_pi, site, l, t);
-        const auto m = marginsOf(site.f, positionOpen(site.f, t));
+        const auto m = loopMarginsOn(site.f, positionOpen(site.f, t));
         if (std::isfinite(m.gainMarginDb))
             limit = std::min(limit, std::pow(10.0, (m.gainMarginDb - tuning::kPositionGainMarginDb) / 20.0));
     }

@@ -176,7 +176,7 @@ Result<std::string> Positions::verify(Step& s)
         std::vector<std::complex<double>> tm, lh;
         validOf(a->measurement.frf, f, tm);
         validOf(dsp::openLoopFromClosedLoop(a->measurement.frf, dsp::LoopMeasurement::Complementary), lf, lh);
-        const auto m = marginsOf(lf, lh);
+        const auto m = loopMarginsOn(lf, lh);
         const auto bw = closedLoopBandwidthHz(f, tm);
         const auto pbw = closedLoopBandwidthHz(f, positionClosed(f, tm, m_kpPos));
         nlohmann::json p{{"position", site.x}, {"valid_lines", a->validLines}};

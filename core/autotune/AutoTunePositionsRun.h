@@ -48,7 +48,7 @@ struct Site {
 };
 
 /// Margins of the open loop `l` on the lines `f`.
-dsp::LoopMargins marginsOf(const std::vector<double>& f, const std::vector<std::complex<double>>& l);
+dsp::LoopMargins loopMarginsOn(const std::vector<double>& f, const std::vector<std::complex<double>>& l);
 std::optional<double> finiteOr(double v);
 /// Closed velocity loop and open loop of PI `pi` on a site's plant lines.
 void piLoops(const tuning::VelocityPi& pi, const Site& s, std::vector<std::complex<double>>& l,
