@@ -23,6 +23,12 @@ void Positions::returnToStart()
 {
     if (!m_moved)
         return;
+    // After an Abort the axis stays where the abort stopped it: Abort means stop, not a move back.
+    if (m_o.run.abort && m_o.run.abort->load()) {
+        m_r.reason += "; the axis was stopped where it stood and not moved back to " + num(m_start, 6) +
+                      (m_linear ? " m" : " rad");
+        return;
+    }
     auto r = device::moveAxisTo(m_drive, m_o.axis, m_start, {}, m_o.run);
     if (!r) {
         m_r.reason += "; the axis could not be moved back to " + num(m_start, 6) + " (" + r.error().detail + ")";

@@ -88,7 +88,7 @@ Result<PiSearch> searchPi(const std::vector<Site>& sites, const StyleTargets& tg
     out.fTop = fTop;
     // Every PI designed on any position's plant for a crossover on the grid and a phase margin of the style plus
     // the reserve steps; it must keep the margins on EVERY position's plant; the widest worst-case bandwidth wins.
-    std::vector<std::complex<double>> l, t;
+    std::vector<std::complex<double>> l, t, ls;
     for (std::size_t base = 0; base < sites.size(); ++base)
         for (const double extra : kDesignPhaseSteps) {
             const double pm = tg.phaseMarginDeg + kDesignPhaseReserveDeg + extra;
@@ -111,6 +111,15 @@ Result<PiSearch> searchPi(const std::vector<Site>& sites, const StyleTargets& tg
                     const auto m = loopMarginsOn(site.f, l);
                     ok = std::isfinite(m.phaseMarginDeg) && m.phaseMarginDeg >= tg.phaseMarginDeg &&
                          m.gainMarginDb >= tg.gainMarginDb + kDesignGainReserveDb;
+                    if (!ok)
+                        break;
+                    // And on the plant in motion (SlidingPlant.h), as the one-position sequence.
+                    ls.assign(site.f.size(), {});
+                    for (std::size_t k = 0; k < site.f.size() && k < site.pSlide.size(); ++k)
+                        ls[k] = tuning::piResponse(*pi, site.f[k]) * site.pSlide[k];
+                    const auto msl = loopMarginsOn(site.f, ls);
+                    ok = std::isfinite(msl.phaseMarginDeg) && msl.phaseMarginDeg >= tg.phaseMarginDeg &&
+                         msl.gainMarginDb >= tg.gainMarginDb + kDesignGainReserveDb;
                     if (!ok)
                         break;
                     // The closed loop only for a PI that keeps the margins here (most of the grid does not).
@@ -149,6 +158,10 @@ Result<Step> Positions::velocityPi(double capHz)
                   {"crossover_searched_Hz", {r.fBottom, r.fTop}},
                   {"running_kp_Nms_per_rad", value("velocity.kp")},
                   {"running_ki_Nm_per_rad", value("velocity.ki")}};
+    nlohmann::json damping = nlohmann::json::array();
+    for (const auto& site : m_sites)
+        damping.push_back({{"position", site.x}, {"standstill_damping_Nms_per_rad", site.standstillDampingNmsPerRad}});
+    s.measured["standstill_damping"] = damping;
     if (!r.found)
         return makeError(ErrorCode::Safety,
                          "the required velocity crossover " + num(fReq, 4) + " Hz cannot be reached with " +

@@ -4,6 +4,7 @@
 #include "core/autotune/AutoTunePositionsNotches.h"
 
 #include "core/autotune/AutoTunePositionsRun.h"
+#include "core/autotune/SlidingPlant.h"
 #include "core/tuning/VelocityLoopDesign.h"
 
 #include <algorithm>
@@ -275,6 +276,14 @@ Status Positions::plantsWith(const std::vector<dsp::NotchSpec>& specs, double ex
         if (!plant)
             return plant.error();
         site.plant = std::move(plant).value();
+        // The axis in motion (SlidingPlant.h): the damping friction adds at standstill removed, before the notches.
+        auto standstill = standstillDamping(site.plant);
+        if (!standstill)
+            return makeError(standstill.error().code, "at " + num(site.x, 4) + ": " + standstill.error().detail);
+        site.standstillDampingNmsPerRad = standstill->bNmsPerRad;
+        std::vector<std::complex<double>> slide(site.plant.size());
+        for (std::size_t i = 0; i < site.plant.size(); ++i)
+            slide[i] = slidingPlant(site.plant.h[i], standstill->bNmsPerRad) / site.plant.h[i];
         if (!specs.empty()) {
             auto pred = tuning::predictWithNotches(t, m_form, specs, execRateHz);
             if (!pred)
@@ -288,6 +297,10 @@ Status Positions::plantsWith(const std::vector<dsp::NotchSpec>& specs, double ex
             }
         }
         validOf(site.plant, site.f, site.p);
+        site.pSlide.clear();
+        for (std::size_t i = 0, k = 0; i < site.plant.size(); ++i)
+            if (k < site.f.size() && site.plant.freqHz[i] == site.f[k])
+                site.pSlide.push_back(site.p[k++] * slide[i]);
     }
     return {};
 }

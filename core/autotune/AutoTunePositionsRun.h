@@ -42,7 +42,9 @@ struct Site {
     device::AdaptiveFrfResult frf;
     dsp::FrequencyResponse plant; ///< P·Π N_new on the measured lines
     std::vector<double> f;
-    std::vector<std::complex<double>> p; ///< valid lines of `plant`
+    std::vector<std::complex<double>> p;      ///< valid lines of `plant`
+    std::vector<std::complex<double>> pSlide; ///< the same lines in motion: P/(1 − b·P) (SlidingPlant.h)
+    double standstillDampingNmsPerRad = 0.0;  ///< b = Re(1/P) on the plant's lowest lines
     std::optional<tuning::Resonance> first;
     PositionFinal fin;
 };

@@ -464,6 +464,8 @@ private slots:
         if (atPermille == 750) // the velocity gains were written before the Abort
             QVERIFY(r->steps.size() >= 5);
         QCOMPARE(readAll(ctx, "X"), before);
+        // Abort stops the axis where it stands; it is not moved back (and the reason says so).
+        QVERIFY2(r->reason.find("not moved back") != std::string::npos, r->reason.c_str());
     }
 
     void choicePageShowsTheCoresRefusals()
