@@ -330,6 +330,12 @@ int runCapture(const CaptureOptions& o)
     }
     if (auto st = prepareDrive(**drive, o); !st)
         return reportError(cmd, st.error());
+    if (req.type == device::TestType::Step) {
+        // On a drive whose step is a position step of the command (hal:), --amplitude is that step in the command's
+        // units (docs/cli.md); elsewhere a motor velocity step.
+        auto caps = (*drive)->capabilities(o.axis);
+        req.positionStep = caps && caps->stepIsPositionStep;
+    }
     // The drive plans the test first (Drive::planTest): a request beyond its limits is refused with the
     // drive's own words before anything moves, and the planned motion time is reported.
     auto plan = (*drive)->planTest(req);

@@ -107,6 +107,7 @@ int runDrive(const DriveOptions& o)
                          {"has_link", caps->hasLink},
                          {"frf_peak_in_output_units", caps->frfPeakInOutputUnits},
                          {"jog_in_command_units", caps->jogInCommandUnits},
+                         {"step_is_position_step", caps->stepIsPositionStep},
                          {"frf_quantities", quantities},
                          {"scope", caps->scope}}},
                        {"limits",

@@ -28,7 +28,7 @@ struct DriveIdentity {
 };
 
 enum class TestType {
-    Step,   ///< velocity step: amplitude [rad/s motor], duration [s]
+    Step,   ///< velocity step: amplitude [rad/s motor], duration [s] (hal:: a position step, stepIsPositionStep)
     Jog,    ///< position move: distance [axis units] at velocity [axis units/s], optional return
     Hold,   ///< position hold for duration [s]
     Frf,    ///< frequency response: torque injection in the closed velocity loop (FrfTest.h)
@@ -61,13 +61,17 @@ enum class FrfQuantity {
 struct TestRequest {
     std::string axis;
     TestType type = TestType::Step;
-    double amplitude = 0.0;     ///< Step: velocity step [rad/s]; CurrentStep: q-axis current step [A]
+    double amplitude = 0.0;     ///< Step: velocity step [rad/s] (hal:: position step, command units); CurrentStep: [A]
     double distance = 0.0;      ///< Jog: [m] or [rad]
     double velocity = 0.0;      ///< Jog: [m/s] or [rad/s]
     double acceleration = 0.0;  ///< Jog: [m/s²] or [rad/s²]
     bool returnToStart = false; ///< Jog: move back (a reversal)
     double jerk = 0.0;          ///< Jog: jerk limit [m/s³] or [rad/s³] (rectangular jerk); 0 = trapezoid
     double durationS = 0.1;     ///< Step/Hold/CurrentStep: recording length; Jog: dwell before and after
+    /// Step: the caller means a position step of the command in its units. A drive whose step is one
+    /// (DriveCapabilities::stepIsPositionStep, hal:) refuses a step request without it, so that a velocity step in
+    /// rad/s is never taken for millimetres.
+    bool positionStep = false;
     int traceDivider = 0;       ///< 0: the drive's trace.divider parameter
     // Frf (durationS is not used: the length follows from the plan).
     FrfMethod frfMethod = FrfMethod::MultiSweep;
@@ -137,6 +141,9 @@ struct DriveCapabilities {
     /// Jog distance, speed, acceleration and jerk in the command's own units (hal:: the configuration's, e.g. mm and
     /// mm/s); false: m or rad.
     bool jogInCommandUnits = false;
+    /// TestType::Step is a position step of the command by TestRequest::amplitude in the command's own units (hal::
+    /// the configuration's, e.g. mm), held for durationS and stepped back; false: a motor velocity step [rad/s].
+    bool stepIsPositionStep = false;
     std::vector<FrfQuantity> frfQuantities; ///< quantities besides Default an FRF test can report (hal:: plant, open loop)
     bool scope = false;                ///< the scope answers (Drive::scopeCapabilities, armScope; docs/scope.md)
 

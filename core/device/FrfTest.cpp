@@ -278,31 +278,20 @@ double frfExcitation(const FrfPlan& plan, double s)
     return plan.amplitudeNm * std::sin(model::kTwoPi * cycles + it->phaseOffsetDeg * model::kRadPerDeg);
 }
 
-Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace)
+Result<FrfMeasurement> evaluateFrfSignals(const FrfPlan& plan, std::span<const double> x, std::span<const double> y,
+                                          const std::string& excitationName, const std::string& responseName)
 {
-    const auto* d = trace.channel("injection_Nm");
-    const auto* tc = trace.channel("torque_cmd_Nm");
-    if (!d || !tc)
-        return makeError(ErrorCode::BadInput, "FRF trace: channels injection_Nm and torque_cmd_Nm are required");
-    if (d->data.size() < plan.totalSamples)
-        return makeError(ErrorCode::BadInput, "FRF trace: " + std::to_string(d->data.size()) + " samples, the plan needs "
-                                                  + std::to_string(plan.totalSamples));
-    auto periods = holdPeriods(plan, trace);
-    if (!periods)
-        return periods.error();
+    if (x.size() < plan.totalSamples || y.size() < plan.totalSamples)
+        return makeError(ErrorCode::BadInput, "FRF trace: " + std::to_string(std::min(x.size(), y.size())) +
+                                                  " samples, the plan needs " + std::to_string(plan.totalSamples));
     FrfMeasurement out;
     out.motionTimeS = plan.durationS();
     if (plan.method == FrfMethod::Prbs) {
         const auto first = static_cast<std::size_t>(plan.prbsStart);
         const std::size_t n = plan.totalSamples - first;
-        std::vector<double> x(d->data.begin() + static_cast<std::ptrdiff_t>(first),
-                              d->data.begin() + static_cast<std::ptrdiff_t>(first + n));
-        std::vector<double> y(n);
-        for (std::size_t i = 0; i < n; ++i)
-            y[i] = -tc->data[first + i];
         dsp::WelchOptions wo;
         wo.nperseg = plan.nperseg;
-        auto full = dsp::welchFrf(x, y, plan.fsHz, wo, dsp::FrfEstimator::H1);
+        auto full = dsp::welchFrf(x.subspan(first, n), y.subspan(first, n), plan.fsHz, wo, dsp::FrfEstimator::H1);
         if (!full)
             return full.error();
         // Bins in [fmin, fmax], thinned to about `points` log-spaced frequencies.
@@ -318,29 +307,54 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
         out.frf.metadata["method"] = "prbs";
         out.frf.metadata["fs_Hz"] = num(plan.fsHz);
         out.frf.metadata["nperseg"] = std::to_string(plan.nperseg);
-    } else {
-        dsp::SweepRecording& rec = out.sweep;
-        rec.fsHz = plan.fsHz;
-        rec.amplitude = plan.amplitudeNm;
-        rec.metadata["excitation"] = "injection_Nm";
-        rec.metadata["response"] = "-torque_cmd_Nm";
-        for (const auto& s : plan.segments) {
-            dsp::SweepBlock b;
-            b.freqHz = s.freqHz;
-            b.phaseOffsetDeg = s.phaseOffsetDeg;
-            const std::int64_t begin = s.windowStart - static_cast<std::int64_t>(s.settleSamples);
-            const std::int64_t end = s.windowStart + static_cast<std::int64_t>(s.measureSamples);
-            for (std::int64_t i = begin; i < end; ++i) {
-                b.sample.push_back(i - s.windowStart);
-                b.excitation.push_back(d->data[static_cast<std::size_t>(i)]);
-                b.response.push_back(-tc->data[static_cast<std::size_t>(i)]);
-            }
-            rec.blocks.push_back(std::move(b));
+        return out;
+    }
+    dsp::SweepRecording& rec = out.sweep;
+    rec.fsHz = plan.fsHz;
+    rec.amplitude = plan.amplitudeNm;
+    rec.metadata["excitation"] = excitationName;
+    rec.metadata["response"] = responseName;
+    for (const auto& s : plan.segments) {
+        dsp::SweepBlock b;
+        b.freqHz = s.freqHz;
+        b.phaseOffsetDeg = s.phaseOffsetDeg;
+        const std::int64_t begin = s.windowStart - static_cast<std::int64_t>(s.settleSamples);
+        const std::int64_t end = s.windowStart + static_cast<std::int64_t>(s.measureSamples);
+        for (std::int64_t i = begin; i < end; ++i) {
+            b.sample.push_back(i - s.windowStart);
+            b.excitation.push_back(x[static_cast<std::size_t>(i)]);
+            b.response.push_back(y[static_cast<std::size_t>(i)]);
         }
-        auto frf = dsp::sineStreamFrf(rec);
-        if (!frf)
-            return frf.error();
-        out.frf = std::move(frf).value();
+        rec.blocks.push_back(std::move(b));
+    }
+    auto frf = dsp::sineStreamFrf(rec);
+    if (!frf)
+        return frf.error();
+    out.frf = std::move(frf).value();
+    return out;
+}
+
+Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Capture& trace)
+{
+    const auto* d = trace.channel("injection_Nm");
+    const auto* tc = trace.channel("torque_cmd_Nm");
+    if (!d || !tc)
+        return makeError(ErrorCode::BadInput, "FRF trace: channels injection_Nm and torque_cmd_Nm are required");
+    if (d->data.size() < plan.totalSamples)
+        return makeError(ErrorCode::BadInput, "FRF trace: " + std::to_string(d->data.size()) +
+                                                  " samples, the plan needs " + std::to_string(plan.totalSamples));
+    auto periods = holdPeriods(plan, trace);
+    if (!periods)
+        return periods.error();
+    // The response is −T_c (the velocity controller's output opposes the injected disturbance).
+    std::vector<double> minusTc(tc->data.size());
+    for (std::size_t i = 0; i < minusTc.size(); ++i)
+        minusTc[i] = -tc->data[i];
+    auto evaluated = evaluateFrfSignals(plan, d->data, minusTc, "injection_Nm", "-torque_cmd_Nm");
+    if (!evaluated)
+        return evaluated.error();
+    FrfMeasurement out = std::move(evaluated).value();
+    if (plan.method != FrfMethod::Prbs) {
         // A window in which the current loop ran into its voltage limit is not a linear measurement.
         const auto* volt = trace.channel("voltage_V");
         std::size_t clamped = 0;

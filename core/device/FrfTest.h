@@ -24,6 +24,8 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace axistune::device {
@@ -94,6 +96,14 @@ Result<FrfPlan> planFrfTest(const FrfPlanOptions& options);
 /// The excitation at a (fractional) trace-sample position s (current-loop ticks between samples).
 /// Zero outside the plan.
 double frfExcitation(const FrfPlan& plan, double s);
+
+/// The FRF of plan's excitation x and response y, both one value per trace sample (x[i], y[i] at sample i of the
+/// plan): sine streams by dsp::sineStreamFrf on the plan's windows (the sweep recording names x and y with
+/// excitationName and responseName), PRBS by Welch H1 over the record after prbsStart, thinned to the plan's points.
+/// No hold correction and no drive metadata: the core of evaluateFrfTrace, shared with hal: (HalDrive.h), which
+/// evaluates the plant and the open loop from its servo-rate record.
+Result<FrfMeasurement> evaluateFrfSignals(const FrfPlan& plan, std::span<const double> x, std::span<const double> y,
+                                          const std::string& excitationName, const std::string& responseName);
 
 /// The sine-stream recording of a completed trace (channels injection_Nm and torque_cmd_Nm, the
 /// response is −torque_cmd_Nm), and the FRF: sine streams by dsp::sineStreamFrf, PRBS by Welch H1.

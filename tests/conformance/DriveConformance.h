@@ -177,7 +177,10 @@ protected:
         r.type = t;
         switch (t) {
         case TestType::Step:
-            r.amplitude = std::min(10.0, 0.1 * m_limits.motorSpeedMaxRadS);
+            // A position step in the command's units (hal:: mm on the test machine, like the jog's distance), else a
+            // motor velocity step.
+            r.amplitude = m_caps.stepIsPositionStep ? 0.002 : std::min(10.0, 0.1 * m_limits.motorSpeedMaxRadS);
+            r.positionStep = m_caps.stepIsPositionStep;
             r.durationS = 0.2;
             break;
         case TestType::Jog:
@@ -288,7 +291,7 @@ TEST_P(DriveConformance, CapabilitiesAndLimitsAreStated)
         EXPECT_GT(m_limits.currentStepMaxSpeedRadS, 0.0);
         EXPECT_GT(m_caps.currentTraceRateHz, 0.0);
     }
-    if (m_caps.offers(TestType::Step) && GetParam() != "replay") {
+    if (m_caps.offers(TestType::Step) && GetParam() != "replay" && !m_caps.stepIsPositionStep) {
         EXPECT_GT(m_limits.motorSpeedMaxRadS, 0.0);
     }
     // A test the drive does not advertise is refused, before anything moves.

@@ -133,7 +133,14 @@ inline Plant readPlant()
             getp("plant.x.bm"), getp("plant.x.bl"), getp("plant.x.lead"), static_cast<int>(getp("plant.x.substeps"))};
 }
 
-inline std::complex<double> exactResponse(const Plant& p, double periodS, double fHz)
+/// One servo period of the plant, x ← A x + B u, position y = C x (C picks the motor angle times lead/2π).
+struct PlantStateSpace {
+    Eigen::Matrix4d A;
+    Eigen::Vector4d B;
+    Eigen::RowVector4d C;
+};
+
+inline PlantStateSpace plantStateSpace(const Plant& p, double periodS)
 {
     const double h = periodS / p.substeps;
     Eigen::Matrix4d V = Eigen::Matrix4d::Identity(); // velocity update, state (θm, ωm, θl, ωl)
@@ -144,16 +151,22 @@ inline std::complex<double> exactResponse(const Plant& p, double periodS, double
     P(2, 3) = h;
     const Eigen::Matrix4d A1 = P * V;
     const Eigen::Vector4d B1 = P * Eigen::Vector4d(0.0, h / p.jm, 0.0, 0.0);
-    Eigen::Matrix4d A = Eigen::Matrix4d::Identity();
-    Eigen::Vector4d B = Eigen::Vector4d::Zero();
+    PlantStateSpace s{Eigen::Matrix4d::Identity(), Eigen::Vector4d::Zero(),
+                      Eigen::RowVector4d(p.lead / (2.0 * M_PI), 0.0, 0.0, 0.0)};
     for (int i = 0; i < p.substeps; ++i) {
-        B += A * B1;
-        A = A1 * A;
+        s.B += s.A * B1;
+        s.A = A1 * s.A;
     }
+    return s;
+}
+
+inline std::complex<double> exactResponse(const Plant& p, double periodS, double fHz)
+{
+    const PlantStateSpace s = plantStateSpace(p, periodS);
     const std::complex<double> z = std::polar(1.0, 2.0 * M_PI * fHz * periodS);
-    const Eigen::Matrix4cd M = z * Eigen::Matrix4cd::Identity() - A.cast<std::complex<double>>();
-    const Eigen::Vector4cd x = M.partialPivLu().solve(B.cast<std::complex<double>>());
-    return z * (p.lead / (2.0 * M_PI)) * x(0);
+    const Eigen::Matrix4cd M = z * Eigen::Matrix4cd::Identity() - s.A.cast<std::complex<double>>();
+    const Eigen::Vector4cd x = M.partialPivLu().solve(s.B.cast<std::complex<double>>());
+    return z * (s.C.cast<std::complex<double>>() * x)(0);
 }
 
 } // namespace axistune::testing

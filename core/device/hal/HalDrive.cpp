@@ -100,14 +100,16 @@ Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
 {
     if (r.type != TestType::Frf)
         return makeError(ErrorCode::BadInput,
-                         std::string("hal: runs FRF and jog tests only (not ") + testTypeName(r.type) + ")");
-    if (r.frfMethod != FrfMethod::Multisine)
+                         std::string("hal: runs FRF, jog and step tests only (not ") + testTypeName(r.type) + ")");
+    if (r.frfMethod != FrfMethod::Multisine && r.frfMethod != FrfMethod::MultiSweep && r.frfMethod != FrfMethod::Prbs)
         return makeError(ErrorCode::BadInput,
-                         std::string("hal: measures FRFs by multisine only (not ") + frfMethodName(r.frfMethod) + ")");
+                         std::string("hal: measures FRFs by multisine, multi-sweep or PRBS (not ") +
+                             frfMethodName(r.frfMethod) + ")");
     if (!(axis.periodNs > 0))
         return makeError(ErrorCode::BadInput, axis.thread + " has no period");
     HalFrfPlan plan;
     plan.axis = axis;
+    plan.method = r.frfMethod;
     plan.quantity = r.frfQuantity == FrfQuantity::OpenLoop ? FrfQuantity::OpenLoop : FrfQuantity::Plant;
     plan.fsHz = 1e9 / static_cast<double>(axis.periodNs);
     if (!(axis.maxOutput > 0.0))
@@ -126,6 +128,8 @@ Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
     if (peak > HalDrive::kMaxAmplitudePct / 100.0 * axis.maxOutput)
         return makeError(ErrorCode::OutOfRange, "FRF peak " + num(peak) + " refused: at most half of " + axis.pid +
                                                     ".maxoutput (" + num(0.5 * axis.maxOutput) + ")");
+    if (r.frfMethod != FrfMethod::Multisine)
+        return planHalStreams(r, std::move(plan), peak);
     dsp::MultisineDesignOptions mo;
     mo.fsHz = plan.fsHz;
     mo.ticksPerSample = 1;
@@ -165,52 +169,9 @@ Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
     return plan;
 }
 
-Result<HalMovePlan> planHalMove(const TestRequest& r, const HalAxis& axis)
-{
-    if (r.type != TestType::Jog)
-        return makeError(ErrorCode::BadInput,
-                         std::string("hal: runs FRF and jog tests only (not ") + testTypeName(r.type) + ")");
-    if (!r.returnToStart)
-        return makeError(ErrorCode::BadInput, "hal: moves out and back only (--back): AxisTune's offset to the "
-                                              "command must end at zero before it hands the command back");
-    if (!std::isfinite(r.distance) || r.distance == 0.0)
-        return makeError(ErrorCode::OutOfRange, "jog distance must be a non-zero number in the command's units");
-    if (!std::isfinite(r.velocity) || !(r.velocity > 0.0))
-        return makeError(ErrorCode::OutOfRange, "jog velocity must be positive (command units/s)");
-    if (!std::isfinite(r.acceleration) || !(r.acceleration > 0.0))
-        return makeError(ErrorCode::OutOfRange, "jog acceleration must be positive (command units/s²)");
-    if (!std::isfinite(r.jerk) || r.jerk < 0.0)
-        return makeError(ErrorCode::OutOfRange, "jog jerk must not be negative (0: a trapezoid)");
-    if (!std::isfinite(r.durationS) || r.durationS < 0.0)
-        return makeError(ErrorCode::OutOfRange, "jog dwell must not be negative");
-    if (!(axis.periodNs > 0))
-        return makeError(ErrorCode::BadInput, axis.thread + " has no period");
-    if (axis.commandSignal.empty())
-        return makeError(ErrorCode::BadInput, axis.pid + ".command is not linked to a net: AxisTune adds its move "
-                                                         "to the net the NC (or the HAL file) drives");
-    sim::MotionProfile profile;
-    profile.dwell(r.durationS);
-    profile.move(r.distance, r.velocity, r.acceleration, r.jerk);
-    profile.move(-r.distance, r.velocity, r.acceleration, r.jerk);
-    profile.dwell(r.durationS);
-    HalMovePlan plan;
-    plan.axis = axis;
-    plan.fsHz = 1e9 / static_cast<double>(axis.periodNs);
-    plan.distance = r.distance;
-    plan.velocity = r.velocity;
-    if (profile.duration() > HalDrive::kMaxTestS)
-        return makeError(ErrorCode::OutOfRange, "jog of " + num(profile.duration()) + " s refused: at most " +
-                                                    num(HalDrive::kMaxTestS) + " s");
-    const auto n = static_cast<std::size_t>(std::ceil(profile.duration() * plan.fsHz)) + 1;
-    plan.offset.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double x = profile.at(static_cast<double>(i) / plan.fsHz).position;
-        // The profile's own rounding must not end the move a few ulps away from zero, nor exceed the distance.
-        plan.offset[i] = std::abs(x) < 1e-12 * std::abs(r.distance) ? 0.0 : x;
-    }
-    plan.offset.back() = 0.0;
-    return plan;
-}
+namespace {
+Result<FrfMeasurement> evaluateHalMultisine(const HalFrfPlan& plan, const HalRecord& record);
+} // namespace
 
 Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& record)
 {
@@ -218,6 +179,34 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     if (record.columns.size() != kHalColumns || record.columns[DriveInput].size() != n ||
         record.columns[Feedback].size() != n || record.columns[PidOutput].size() != n)
         return makeError(ErrorCode::Internal, "HAL record does not match the plan");
+    const bool openLoop = plan.quantity == FrfQuantity::OpenLoop;
+    Result<FrfMeasurement> measured =
+        plan.streams ? evaluateHalStreams(plan, record) : evaluateHalMultisine(plan, record);
+    if (!measured)
+        return measured.error();
+    FrfMeasurement out = std::move(measured).value();
+    out.motionTimeS = static_cast<double>(n) / plan.fsHz;
+    auto& md = out.frf.metadata;
+    md["method"] = frfMethodName(plan.method);
+    md["fs_Hz"] = num(plan.fsHz);
+    md["quantity"] = openLoop ? "open-loop" : "plant";
+    md["input"] = "drive_input"; // <pid>.output + injection: what the drive receives
+    md["output"] = openLoop ? "-pid_output" : "feedback";
+    md["hal_units"] =
+        openLoop ? "none (PID output per PID output)" : "feedback per PID-output unit (the configuration's units)";
+    md["pid"] = plan.axis.pid;
+    md["thread"] = plan.axis.thread;
+    md["servo_period_ns"] = std::to_string(plan.axis.periodNs);
+    md["amplitude_peak"] = num(plan.peak());
+    md["first_sample"] = std::to_string(record.firstSample);
+    md["motion_time_s"] = num(out.motionTimeS);
+    return out;
+}
+
+namespace {
+/// The multisine part of evaluateHalFrf: dsp::analyzeMultisine over the averaged periods.
+Result<FrfMeasurement> evaluateHalMultisine(const HalFrfPlan& plan, const HalRecord& record)
+{
     const std::size_t skip = plan.settlePeriods * plan.design.periodSamples();
     const std::size_t len = plan.periods * plan.design.periodSamples();
     const std::span<const double> u(record.columns[DriveInput].data() + skip, len);
@@ -236,24 +225,13 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     FrfMeasurement out;
     out.frf = std::move(a->frf);
     out.relativeNoise = std::move(a->stats.relativeNoise);
-    out.motionTimeS = static_cast<double>(n) / plan.fsHz;
     auto& md = out.frf.metadata;
-    md["quantity"] = openLoop ? "open-loop" : "plant";
-    md["input"] = "drive_input"; // <pid>.output + injection: what the drive receives
-    md["output"] = openLoop ? "-pid_output" : "feedback";
-    md["hal_units"] =
-        openLoop ? "none (PID output per PID output)" : "feedback per PID-output unit (the configuration's units)";
-    md["pid"] = plan.axis.pid;
-    md["thread"] = plan.axis.thread;
-    md["servo_period_ns"] = std::to_string(plan.axis.periodNs);
-    md["amplitude_peak"] = num(plan.design.peak);
     md["amplitude_rms"] = num(plan.design.rms);
     md["settle_s"] = num(static_cast<double>(skip) / plan.fsHz);
     md["period_s"] = num(static_cast<double>(plan.design.periodSamples()) / plan.fsHz);
-    md["first_sample"] = std::to_string(record.firstSample);
-    md["motion_time_s"] = num(out.motionTimeS);
     return out;
 }
+} // namespace
 
 Result<std::unique_ptr<HalDrive>> HalDrive::open(const HalSessionOptions& options)
 {
@@ -435,8 +413,8 @@ Result<DriveCapabilities> HalDrive::capabilities(const std::string& axis)
     if (!a)
         return a.error();
     DriveCapabilities c;
-    c.testTypes = {TestType::Frf, TestType::Jog};
-    c.frfMethods = {FrfMethod::Multisine};
+    c.testTypes = {TestType::Frf, TestType::Jog, TestType::Step};
+    c.frfMethods = {FrfMethod::Multisine, FrfMethod::MultiSweep, FrfMethod::Prbs};
     c.traceRateHz = a->periodNs > 0 ? 1e9 / static_cast<double>(a->periodNs) : 0.0;
     c.currentTraceRateHz = 0.0;
     c.evaluatesFrf = true;
@@ -444,6 +422,7 @@ Result<DriveCapabilities> HalDrive::capabilities(const std::string& axis)
     c.hasLink = true;
     c.frfPeakInOutputUnits = true;
     c.jogInCommandUnits = true;
+    c.stepIsPositionStep = true;
     c.scope = true;
     c.frfQuantities = {FrfQuantity::Plant, FrfQuantity::OpenLoop};
     return c;
@@ -472,12 +451,23 @@ Result<HalMovePlan> HalDrive::movePlan(const TestRequest& request) const
     auto a = discoverAxis(m_options, request.axis);
     if (!a)
         return a.error();
+    if (request.type == TestType::Step)
+        return planHalStep(request, *a, followingErrorTrip(*a));
     return planHalMove(request, *a);
+}
+
+double HalDrive::followingErrorTrip(const HalAxis& axis) const
+{
+    const auto f = m_ferror.find(axis.pid);
+    const double ferror = f != m_ferror.end() ? f->second : 0.0;
+    if (ferror > 0.0 && axis.maxError > 0.0)
+        return std::min(ferror, axis.maxError);
+    return ferror > 0.0 ? ferror : std::max(axis.maxError, 0.0);
 }
 
 Result<TestPlan> HalDrive::planTest(const TestRequest& request)
 {
-    if (request.type == TestType::Jog) {
+    if (request.type == TestType::Jog || request.type == TestType::Step) {
         auto move = movePlan(request);
         if (!move)
             return move.error();
@@ -509,7 +499,7 @@ Status HalDrive::startTest(const TestRequest& request)
     // The scope may run on: the test records through sampler.0, the scope through sampler.1 (HalSampler.h).
     std::optional<HalFrfPlan> frf;
     std::optional<HalMovePlan> move;
-    if (request.type == TestType::Jog) {
+    if (request.type == TestType::Jog || request.type == TestType::Step) {
         auto m = movePlan(request);
         if (!m)
             return m.error();
@@ -536,20 +526,17 @@ Status HalDrive::startTest(const TestRequest& request)
     InjectionSettings settings;
     HalAxis axis;
     if (frf) {
-        excitation.reserve(frf->totalSamples());
-        for (std::size_t p = 0; p < frf->settlePeriods + frf->periods; ++p)
-            excitation.insert(excitation.end(), frf->design.table.begin(), frf->design.table.end());
-        settings.limit = frf->design.peak;
+        excitation = frf->excitation();
+        settings.limit = frf->peak();
         axis = frf->axis;
     } else {
         excitation = move->offset;
         settings.point = InjectionPoint::PidCommand;
         settings.limit = std::abs(move->distance) * (1.0 + 1e-9);
-        settings.returnRate = move->velocity;
+        settings.returnRate = move->returnRate;
         axis = move->axis;
     }
-    if (auto f = m_ferror.find(axis.pid); f != m_ferror.end() && f->second > 0.0)
-        settings.maxError = axis.maxError > 0.0 ? std::min(axis.maxError, f->second) : f->second;
+    settings.maxError = followingErrorTrip(axis);
     m_plan = std::move(frf);
     m_move = std::move(move);
     m_record.reset();
@@ -676,8 +663,13 @@ Result<model::Capture> HalDrive::readTrace()
     auto& md = c.metadata;
     if (m_plan) {
         md["test"] = "frf";
-        md["method"] = "multisine";
-        md["amplitude_peak"] = num(m_plan->design.peak);
+        md["method"] = frfMethodName(m_plan->method);
+        md["amplitude_peak"] = num(m_plan->peak());
+    } else if (m_move->type == TestType::Step) {
+        md["test"] = "step";
+        md["step"] = num(m_move->distance); // a position step of the command, in its units
+        md["step_sample"] = std::to_string(m_move->stepAt);
+        md["step_back_sample"] = std::to_string(m_move->backAt);
     } else {
         md["test"] = "jog";
         md["distance"] = num(m_move->distance);

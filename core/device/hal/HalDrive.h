@@ -4,12 +4,14 @@
 // loop such as scripts/hal-testbed) seen as a drive. An axis is a `pid` instance whose do-pid-calcs runs on a
 // thread; the drive input is the net driven by <pid>.output, the feedback the net into <pid>.feedback; units
 // are the HAL's. Parameters are the pid's gain pins (setp with read-back). Tests: FRF by multisine through
-// AxisTune's guarded injection at the PID output (HalAxis.h), evaluated here with core's DSP as the plant
-// feedback / (PID output + injection); a move out and back through the same injection at the PID command. Nothing is
+// AxisTune's guarded injection at the PID output (HalAxis.h): multisine, multi-sweep or PRBS, evaluated with core's
+// DSP as the plant feedback / (PID output + injection) or the open loop; a jog out and back and a position step
+// through the same injection at the PID command. Nothing is
 // inserted between tests; every test removes what it inserted.
 
 #include "core/device/Drive.h"
 #include "core/device/DriveRegistry.h"
+#include "core/device/FrfTest.h"
 #include "core/device/hal/HalAxis.h"
 #include "core/device/hal/HalScope.h"
 #include "core/dsp/Multisine.h"
@@ -33,30 +35,52 @@ Result<HalSessionOptions> halSessionFromEnvironment();
 /// The gain and limit pins of a LinuxCNC `pid` AxisTune offers as parameters (those the instance has).
 std::vector<model::ParameterMeta> pidParameterMetadata();
 
-/// An FRF test of a `hal:` axis as planned from the request and the axis: the multisine, how many periods settle
-/// and how many are averaged, and the excitation streamed one value per servo period.
+/// An FRF test of a `hal:` axis as planned from the request and the axis, one excitation value per servo period: a
+/// multisine (its design, how many periods settle and how many are averaged), or sine streams of the multi-sweep
+/// method or a PRBS planned by core's planFrfTest at the servo rate (FrfTest.h; `streams`).
 struct HalFrfPlan {
     HalAxis axis;
-    dsp::MultisineDesign design;
-    std::size_t settlePeriods = 1;
-    std::size_t periods = 3;
+    FrfMethod method = FrfMethod::Multisine;
+    dsp::MultisineDesign design;            ///< multisine
+    std::shared_ptr<const FrfPlan> streams; ///< multi-sweep, PRBS
+    std::size_t settlePeriods = 1;          ///< multisine
+    std::size_t periods = 3;                ///< multisine
     double fsHz = 0.0;
     FrfQuantity quantity = FrfQuantity::Plant;
-    std::size_t totalSamples() const { return (settlePeriods + periods) * design.periodSamples(); }
+    std::size_t totalSamples() const
+    {
+        return streams ? streams->totalSamples : (settlePeriods + periods) * design.periodSamples();
+    }
+    /// The largest |excitation| (the injection's limit): the multisine's peak, the sine or PRBS amplitude.
+    double peak() const { return streams ? streams->amplitudeNm : design.peak; }
+    /// The excitation, one value per servo period (totalSamples() values).
+    std::vector<double> excitation() const;
 };
 
-/// Checks a request against the axis (multisine only, band below half the servo rate, peak at most half of
-/// maxoutput, at most HalDrive::kMaxTestS of motion) and plans it. Errors name the field and the limit.
+/// Checks a request against the axis (multisine, multi-sweep or PRBS; lines below half the servo rate, peak at most
+/// half of maxoutput, at most HalDrive::kMaxTestS of motion) and plans it. Errors name the field and the limit.
 Result<HalFrfPlan> planHalFrf(const TestRequest& request, const HalAxis& axis);
 
-/// A move of a `hal:` axis (TestType::Jog with returnToStart): out by `distance` and back, in the pid command's units,
-/// added to the command the pid follows as an offset (HalAxis.h, InjectionPoint::PidCommand): dwell, move, move back,
-/// dwell. The profile is MotionProfile's (trapezoid, or S-curve with a jerk limit).
+/// The multi-sweep or PRBS part of planHalFrf (HalTestMethods.cpp): `plan` holds the axis, rate and quantity, `peak`
+/// the checked excitation peak. Settle and measure times from the request, else kHalStreamSettleS and
+/// kHalStreamMeasureS (hal: does not know the loop's dynamics).
+Result<HalFrfPlan> planHalStreams(const TestRequest& request, HalFrfPlan plan, double peak);
+inline constexpr double kHalStreamSettleS = 0.2;  ///< default settle per frequency (and before a PRBS record) [s]
+inline constexpr double kHalStreamMeasureS = 0.2; ///< default measured time per frequency (three windows) [s]
+
+/// A move of a `hal:` axis, added to the command the pid follows as an offset (HalAxis.h, InjectionPoint::PidCommand),
+/// in the pid command's units. TestType::Jog with returnToStart: out by `distance` and back (dwell, move, move back,
+/// dwell), MotionProfile's trapezoid or S-curve. TestType::Step: a position step of `distance` (TestRequest::amplitude)
+/// held for the request's duration, then a step back to zero held as long (docs/linuxcnc.md "Step").
 struct HalMovePlan {
     HalAxis axis;
+    TestType type = TestType::Jog;
     double fsHz = 0.0;
     double distance = 0.0;      ///< command units
-    double velocity = 0.0;      ///< command units/s; also the speed at which a tripped move returns
+    double velocity = 0.0;      ///< jog: command units/s
+    double returnRate = 0.0;    ///< command units/s at which a tripped or aborted move returns to zero
+    std::size_t stepAt = 0;     ///< step: the first sample at +distance
+    std::size_t backAt = 0;     ///< step: the first sample back at zero
     std::vector<double> offset; ///< one value per servo period, first and last 0
 };
 
@@ -64,9 +88,20 @@ struct HalMovePlan {
 /// HalDrive::kMaxTestS, the pid's command linked) and plans it.
 Result<HalMovePlan> planHalMove(const TestRequest& request, const HalAxis& axis);
 
+/// Checks a step request against the axis and plans it: the step (TestRequest::amplitude, command units) at most half
+/// of `followingErrorTrip` (the smaller of the pid's maxerror and the joint's FERROR: right after the step the
+/// following error equals it; no limit: refused), a positive duration, at most HalDrive::kMaxTestS, the pid's command
+/// linked. The step comes after a tenth of the duration (at least one period) at rest.
+Result<HalMovePlan> planHalStep(const TestRequest& request, const HalAxis& axis, double followingErrorTrip);
+inline constexpr double kHalStepReturnS = 0.1; ///< a tripped or aborted step ramps back to zero in this time [s]
+
 /// The FRF of a completed record of that plan with its metadata: the plant feedback / drive input, or the open
 /// loop −(PID output) / drive input.
 Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& record);
+
+/// The multi-sweep or PRBS part of evaluateHalFrf: core's evaluateFrfSignals (FrfTest.h) on the record's drive input
+/// and feedback (or −PID output).
+Result<FrfMeasurement> evaluateHalStreams(const HalFrfPlan& plan, const HalRecord& record);
 
 class HalDrive : public Drive {
 public:
@@ -109,6 +144,7 @@ private:
     Status checkAxis(const std::string& axis) const;
     Result<HalFrfPlan> plan(const TestRequest& request) const;
     Result<HalMovePlan> movePlan(const TestRequest& request) const;
+    double followingErrorTrip(const HalAxis& axis) const; ///< the injection's trip: min of maxerror and FERROR
     void joinWorker();
     void run(HalAxis axis, InjectionSettings settings, std::vector<double> excitation);
 
