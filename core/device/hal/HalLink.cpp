@@ -7,14 +7,111 @@
 #include <hal.h>
 #pragma GCC diagnostic pop
 
+#include <cerrno>
+#include <charconv>
 #include <chrono>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <mutex>
 #include <pthread.h>
 #include <sched.h>
+#include <sys/ipc.h>
+#include <sys/shm.h>
 
 namespace axistune::device::hal {
+namespace {
+
+// hal_init and hal_exit keep their own process-wide state (a reference count, the shared memory's address) without a
+// lock: the test's client and the scope's may open and close on different threads, so each call holds this mutex.
+std::mutex& halLifecycleMutex()
+{
+    static std::mutex m;
+    return m;
+}
+
+// LinuxCNC 2.9's user-space rtapi_init() (src/rtapi/uspace_common.h) keeps the address of its UUID shared memory (a
+// mutex and a counter that number HAL components) in a static from the process's first call. When the process's last
+// HAL component exits, that memory is unmapped; the next hal_init() maps it again, often at another address, and
+// then locks the mutex and increments the counter through the stale pointer: a segfault, or a silent write into
+// whatever the process mapped there since (a large vector). Seen as an intermittent crash when one test's client
+// closed and the next one's opened. AxisTune therefore holds one RTAPI reference for the life of the process (it
+// registers nothing in HAL) so that memory stays where rtapi_init remembers it; and when the HAL session is restarted
+// under a running AxisTune (`realtime stop` removes the segment, the new session creates another), the new segment
+// is attached at that same address in place of the old one, so the components AxisTune registers are numbered by
+// the running session's counter.
+constexpr key_t kRtapiUuidKey = 0x48484c34; // UUID_KEY in uspace_common.h and the `realtime` script
+
+struct RtapiHold {
+    int id = -1;        // the RTAPI module id of the hold
+    int segment = -1;   // the UUID segment mapped at `address`
+    void* address = nullptr;
+    bool replaced = false; // a restarted session's segment is at `address`: the kernel detaches it at exit
+    ~RtapiHold()
+    {
+        if (id >= 0 && !replaced)
+            rtapi_exit(id);
+    }
+};
+
+// The address at which this process maps SysV segment `segment` (/proc/self/maps names the segment by its key and
+// gives its id as the inode); nullptr when it is not mapped.
+void* mappedAddressOf(int segment)
+{
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line)) {
+        if (line.find("/SYSV48484c34") == std::string::npos)
+            continue;
+        std::istringstream fields(line);
+        std::string range, perms, offset, device;
+        long long inode = -1;
+        fields >> range >> perms >> offset >> device >> inode;
+        if (inode != segment)
+            continue;
+        std::uintptr_t start = 0;
+        const auto dash = range.find('-');
+        const auto [end, ec] = std::from_chars(range.data(), range.data() + dash, start, 16);
+        if (ec == std::errc() && end == range.data() + dash)
+            return reinterpret_cast<void*>(start);
+    }
+    return nullptr;
+}
+
+// Called with halLifecycleMutex held; an empty string on success, else what failed (retried on the next open).
+std::string holdRtapiForTheProcess()
+{
+    static RtapiHold hold;
+    if (hold.id < 0) {
+        hold.id = rtapi_init("AXISTUNE_HOLD");
+        if (hold.id < 0)
+            return "rtapi_init failed (LinuxCNC's UUID shared memory)";
+        hold.segment = shmget(kRtapiUuidKey, 0, 0);
+        hold.address = hold.segment >= 0 ? mappedAddressOf(hold.segment) : nullptr;
+        if (!hold.address)
+            return "LinuxCNC's UUID shared memory is not where rtapi_init mapped it";
+        return {};
+    }
+    const int current = shmget(kRtapiUuidKey, 0, 0);
+    if (current < 0 || current == hold.segment)
+        return {}; // the same session (or none: hal_init then says so)
+    // A new session: its segment replaces the old one at the address rtapi_init remembers.
+    if (shmat(current, hold.address, SHM_REMAP) != hold.address)
+        return std::string("the HAL session was restarted and its UUID shared memory cannot be attached where "
+                           "LinuxCNC's library expects it (") +
+               std::strerror(errno) + "): restart AxisTune";
+    hold.segment = current;
+    hold.replaced = true;
+    return {};
+}
+
+} // namespace
 
 Result<std::unique_ptr<HalClient>> HalClient::open(const std::string& name, int heartbeatPeriodMs)
 {
+    std::unique_lock lifecycle(halLifecycleMutex());
+    if (const std::string held = holdRtapiForTheProcess(); !held.empty())
+        return makeError(ErrorCode::Device, "cannot join the HAL session as '" + name + "': " + held);
     std::unique_ptr<HalClient> c(new HalClient);
     c->m_name = name;
     c->m_comp = hal_init(name.c_str());
@@ -30,6 +127,7 @@ Result<std::unique_ptr<HalClient>> HalClient::open(const std::string& name, int 
     **pin = 0;
     c->m_heartbeat = pin;
     hal_ready(c->m_comp);
+    lifecycle.unlock();
     HalClient* self = c.get();
     c->m_thread = std::thread([self, heartbeatPeriodMs] {
         auto** p = static_cast<hal_u32_t**>(self->m_heartbeat);
@@ -52,8 +150,10 @@ HalClient::~HalClient()
     m_stop = true;
     if (m_thread.joinable())
         m_thread.join();
-    if (m_comp >= 0)
+    if (m_comp >= 0) {
+        std::lock_guard lifecycle(halLifecycleMutex());
         hal_exit(m_comp);
+    }
 }
 
 Result<double> HalClient::readPin(const std::string& pin) const
