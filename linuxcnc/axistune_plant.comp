@@ -4,12 +4,18 @@ The motor (inertia jm) drives the load (inertia jl) through a spring (k, c); vis
 Coulomb friction fc on the motor side, a ball screw of pitch 'lead' turns motor angle into axis position,
 and an encoder of resolution 'resolution' quantizes the position feedback.
 
+With kv > 0 the component is a velocity-mode drive: the drive input is 'velocity_cmd' [mm/s] and the drive's
+own velocity loop, a proportional gain kv on the motor speed evaluated every substep, makes the torque
+kv (velocity_cmd/(lead/2 pi) - motor speed); the 'torque' pin is then not read. With kv = 0 (the default)
+the drive input is 'torque' (torque mode).
+
 Each servo period is divided into 'substeps' equal steps h of semi-implicit Euler
 (v += a h; x += v h), so with fc = 0 and resolution = 0 the component is the linear recurrence
 x[n+1] = A x[n] + B u[n] with A, B the substep matrices raised to the substeps-th power: a test can
 compute its exact discrete-time response from these lines. docs/linuxcnc.md gives the equations.""";
 
-pin in float torque "Motor torque command [N·m]: the drive input (PID output plus injection)";
+pin in float torque "Motor torque command [N·m]: the drive input in torque mode (kv = 0)";
+pin in float velocity_cmd "Axis velocity command [mm/s]: the drive input in velocity mode (kv > 0)";
 pin out float position "Axis position from the motor encoder [mm], quantized to resolution";
 pin out float velocity "Axis velocity at the motor [mm/s]";
 pin out float load_position "Load position [mm], not quantized";
@@ -25,6 +31,7 @@ param rw float fc = 0.0 "Coulomb friction on the motor [N·m]";
 param rw float lead = 10.0 "Ball-screw lead [mm/rev]";
 param rw float resolution = 0.0 "Encoder resolution [mm]; 0: no quantization";
 param rw u32 substeps = 20 "Integration steps per servo period";
+param rw float kv = 0.0 "Velocity-mode drive: its velocity-loop gain [N·m·s/rad]; 0: torque mode";
 
 variable double thm = 0;
 variable double wm = 0;
@@ -44,7 +51,8 @@ FUNCTION(_) {
     unsigned i;
     for (i = 0; i < n; ++i) {
         double spring = k * (thm - thl) + c * (wm - wl);
-        double wmNew = wm + h * (torque - spring - bm * wm) / jm;
+        double drive = kv > 0.0 ? kv * (velocity_cmd / mmPerRad - wm) : torque;
+        double wmNew = wm + h * (drive - spring - bm * wm) / jm;
         double wlNew = wl + h * (spring - bl * wl) / jl;
         if (fc > 0.0) {
             /* Coulomb friction: decelerates, and holds the motor when it would reverse within the step */

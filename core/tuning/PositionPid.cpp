@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace axistune::tuning {
 namespace {
@@ -39,6 +40,28 @@ double wrapDeg(double a)
     while (a <= -180.0)
         a += 360.0;
     return a;
+}
+
+/// The ω² and ω coefficients of 1/P ≈ (−a₂ω² + j·a₁ω)·e^{jωτ} on the given lines, τ the loop's delay: expanded in
+/// ωτ, Re ≈ −a₂ω² + (a₂τ²/2)ω⁴ and Im ≈ a₁ω − (a₂τ + a₁τ²/2)ω³ + (a₂τ³/6)ω⁵, each fitted linearly by least squares.
+struct RigidFit {
+    double omega2 = 0.0, omega1 = 0.0;
+};
+
+RigidFit fitInverse(const std::vector<double>& freqHz, std::span<const cd> plant, const std::vector<std::size_t>& lines)
+{
+    const auto m = static_cast<Eigen::Index>(lines.size());
+    Eigen::MatrixXd ar(m, 2), ai(m, 3);
+    Eigen::VectorXd yr(m), yi(m);
+    for (Eigen::Index r = 0; r < m; ++r) {
+        const std::size_t k = lines[static_cast<std::size_t>(r)];
+        const double w = kTwoPi * freqHz[k];
+        const cd inv = 1.0 / plant[k];
+        ar(r, 0) = -w * w, ar(r, 1) = w * w * w * w;
+        ai(r, 0) = w, ai(r, 1) = -w * w * w, ai(r, 2) = w * w * w * w * w;
+        yr(r) = inv.real(), yi(r) = inv.imag();
+    }
+    return {ar.colPivHouseholderQr().solve(yr)(0), ai.colPivHouseholderQr().solve(yi)(0)};
 }
 
 } // namespace
@@ -277,26 +300,14 @@ Result<PositionPidDesign> designPositionPid(const std::vector<double>& freqHz,
         best.rules.push_back("FF1 = FF2 = 0: too few measured lines below " + num(ffBand) +
                              " Hz to fit the rigid body");
     } else if (torque) {
-        // 1/P ≈ (−Jω² + jbω)·e^{jωτ}, τ the loop's delay, expanded in ωτ:
-        //   Re ≈ −J ω² + (Jτ²/2) ω⁴,   Im ≈ b ω − (Jτ + bτ²/2) ω³ + (Jτ³/6) ω⁵   (least squares, each linear)
-        const auto m = static_cast<Eigen::Index>(ffLines.size());
-        Eigen::MatrixXd ar(m, 2), ai(m, 3);
-        Eigen::VectorXd yr(m), yi(m);
-        for (Eigen::Index r = 0; r < m; ++r) {
-            const std::size_t k = ffLines[static_cast<std::size_t>(r)];
-            const double w = kTwoPi * freqHz[k];
-            const cd inv = 1.0 / plant[k];
-            ar(r, 0) = -w * w, ar(r, 1) = w * w * w * w;
-            ai(r, 0) = w, ai(r, 1) = -w * w * w, ai(r, 2) = w * w * w * w * w;
-            yr(r) = inv.real(), yi(r) = inv.imag();
-        }
-        best.inertia = ar.colPivHouseholderQr().solve(yr)(0);
-        best.viscous = ai.colPivHouseholderQr().solve(yi)(0);
-        const std::string fit = "1/P ≈ (−Jω² + jbω)·e^{jωτ} (τ the loop's delay) fitted on " +
+        const RigidFit fit = fitInverse(freqHz, plant, ffLines);
+        best.inertia = fit.omega2;
+        best.viscous = fit.omega1;
+        const std::string how = "1/P ≈ (−Jω² + jbω)·e^{jωτ} (τ the loop's delay) fitted on " +
                                 std::to_string(ffLines.size()) + " lines up to " + num(ffBand) + " Hz";
         if (best.inertia > 0.0) {
             best.gains.ff2 = best.inertia;
-            best.rules.push_back("FF2 = " + num(best.gains.ff2) + ": the inertia J of " + fit);
+            best.rules.push_back("FF2 = " + num(best.gains.ff2) + ": the inertia J of " + how);
         } else {
             best.rules.push_back("FF2 = 0: the rigid-body fit gave no positive inertia");
         }
@@ -306,6 +317,22 @@ Result<PositionPidDesign> designPositionPid(const std::vector<double>& freqHz,
         } else {
             best.rules.push_back("FF1 = 0: the fit gave no positive viscous friction");
         }
+    } else if (ffLines.size() >= 4u) {
+        // A velocity drive with its own velocity loop, a lag T, and the loop's delay τ: P ≈ K/(jω(1 + jωT))·e^{−jωτ},
+        // so 1/P ≈ (jω/K − ω²T/K)·e^{jωτ}: the torque case's fit with b = 1/K (and J = T/K). Averaging |P|·ω instead
+        // would read K low by the lag's 1/√(1 + (ωT)²) near the crossover.
+        const RigidFit fit = fitInverse(freqHz, plant, ffLines);
+        if (fit.omega1 > 0.0) {
+            best.viscous = 1.0 / fit.omega1; // K of P ≈ K/(jω)
+            best.gains.ff1 = fit.omega1;
+            best.rules.push_back("FF1 = " + num(best.gains.ff1) +
+                                 ": 1/K of P ≈ K/(jω(1 + jωT))·e^{−jωτ} (T the drive's velocity-loop lag, τ the loop's "
+                                 "delay) fitted on " +
+                                 std::to_string(ffLines.size()) + " lines up to " + num(ffBand) + " Hz");
+        } else {
+            best.rules.push_back("FF1 = 0: the fit gave no positive 1/K");
+        }
+        best.rules.push_back("FF2 = 0: a velocity drive follows the velocity command itself");
     } else {
         double sum = 0.0;
         for (std::size_t k : ffLines)

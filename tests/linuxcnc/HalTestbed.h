@@ -80,12 +80,16 @@ inline double getp(const std::string& name)
 
 class HalTestbed : public ::testing::Test {
 protected:
-    void startBed(long periodNs)
+    /// Starts the test machine (its torque-mode INI, or `ini`) with the servo period `periodNs`.
+    void startBed(long periodNs, const std::string& ini = {})
     {
         if (!m_lock)
             m_lock = std::make_unique<axistune::testing::HalMachineLock>();
         ASSERT_TRUE(m_lock->held()) << "cannot open /tmp/axistune-hal-machine.lock";
-        auto st = runScript({"start", "--period", std::to_string(periodNs)});
+        std::vector<std::string> args{"start", "--period", std::to_string(periodNs)};
+        if (!ini.empty())
+            args.insert(args.end(), {"--ini", ini});
+        auto st = runScript(args);
         ASSERT_TRUE(st) << st.error().detail;
         m_started = true;
     }
@@ -125,12 +129,14 @@ inline std::vector<std::pair<std::string, std::string>> changedLines(const std::
 struct Plant {
     double jm, jl, k, c, bm, bl, lead;
     int substeps;
+    double kv = 0.0; ///< velocity-mode drive gain; then u is velocity_cmd [mm/s] and the torque kv(u·2π/lead − ωm)
 };
 
 inline Plant readPlant()
 {
     return {getp("plant.x.jm"), getp("plant.x.jl"), getp("plant.x.k"),    getp("plant.x.c"),
-            getp("plant.x.bm"), getp("plant.x.bl"), getp("plant.x.lead"), static_cast<int>(getp("plant.x.substeps"))};
+            getp("plant.x.bm"), getp("plant.x.bl"), getp("plant.x.lead"), static_cast<int>(getp("plant.x.substeps")),
+            getp("plant.x.kv")};
 }
 
 /// One servo period of the plant, x ← A x + B u, position y = C x (C picks the motor angle times lead/2π).
@@ -144,13 +150,15 @@ inline PlantStateSpace plantStateSpace(const Plant& p, double periodS)
 {
     const double h = periodS / p.substeps;
     Eigen::Matrix4d V = Eigen::Matrix4d::Identity(); // velocity update, state (θm, ωm, θl, ωl)
-    V.row(1) += h * Eigen::RowVector4d(-p.k / p.jm, -(p.c + p.bm) / p.jm, p.k / p.jm, p.c / p.jm);
+    V.row(1) += h * Eigen::RowVector4d(-p.k / p.jm, -(p.c + p.bm + p.kv) / p.jm, p.k / p.jm, p.c / p.jm);
     V.row(3) += h * Eigen::RowVector4d(p.k / p.jl, p.c / p.jl, -p.k / p.jl, -(p.c + p.bl) / p.jl);
     Eigen::Matrix4d P = Eigen::Matrix4d::Identity(); // position update with the new velocities
     P(0, 1) = h;
     P(2, 3) = h;
     const Eigen::Matrix4d A1 = P * V;
-    const Eigen::Vector4d B1 = P * Eigen::Vector4d(0.0, h / p.jm, 0.0, 0.0);
+    // The drive input's gain into the motor's acceleration: 1/Jm for a torque; kv·(2π/lead)/Jm for a velocity command.
+    const double inputGain = p.kv > 0.0 ? p.kv * 2.0 * M_PI / p.lead : 1.0;
+    const Eigen::Vector4d B1 = P * Eigen::Vector4d(0.0, h * inputGain / p.jm, 0.0, 0.0);
     PlantStateSpace s{Eigen::Matrix4d::Identity(), Eigen::Vector4d::Zero(),
                       Eigen::RowVector4d(p.lead / (2.0 * M_PI), 0.0, 0.0, 0.0)};
     for (int i = 0; i < p.substeps; ++i) {

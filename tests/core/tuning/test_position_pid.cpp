@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Position PID design for an NC-closed position loop (core/tuning/PositionPid), on analytic plants.
 #include "core/tuning/PositionPid.h"
+#include "core/model/Number.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -117,6 +118,34 @@ TEST(PositionPid, VelocityDriveHasNoDerivativeAndFeedsForwardOneOverK)
     EXPECT_EQ(d->gains.d, 0.0);
     EXPECT_NEAR(d->gains.ff1 * kv, 1.0, 0.02);
     EXPECT_GE(d->predicted.phaseMarginDeg, 49.5);
+}
+
+// A velocity drive whose own velocity loop is a first-order lag (bandwidth 40 Hz, as the LinuxCNC test machine's
+// velocity-mode drive) with one servo period of delay: P = K/(jω(1 + jω/ω_v))·e^{−jωT}. FF1 must be 1/K within 1 %
+// (the fit models the lag and the delay); averaging |P|·ω up to the crossover would read K low by the lag's
+// 1/√(1 + (ω/ω_v)²), several % at a crossover of a few Hz below ω_v.
+TEST(PositionPid, VelocityDriveWithALaggingVelocityLoopFeedsForwardOneOverK)
+{
+    const double kv = 0.9967, wv = 2.0 * std::numbers::pi * 40.0;
+    const auto f = lines(2.0, 450.0, 2.0);
+    std::vector<cd> p(f.size());
+    for (std::size_t k = 0; k < f.size(); ++k) {
+        const double w = 2.0 * std::numbers::pi * f[k];
+        p[k] = kv / (cd(0.0, w) * cd(1.0, w / wv)) * std::polar(1.0, -w * kT);
+    }
+    PositionPidOptions o;
+    o.input = DriveInput::Velocity;
+    auto d = designPositionPid(f, p, kT, o);
+    ASSERT_TRUE(d) << d.error().detail;
+    EXPECT_NEAR(d->gains.ff1 * kv, 1.0, 0.01);
+    EXPECT_EQ(d->gains.ff2, 0.0);
+    double averaged = 0.0;
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < f.size() && f[k] <= d->crossoverHz; ++k, ++n)
+        averaged += std::abs(p[k]) * 2.0 * std::numbers::pi * f[k];
+    RecordProperty("crossover_Hz", model::formatShortest(d->crossoverHz));
+    RecordProperty("ff1_times_K", model::formatShortest(d->gains.ff1 * kv));
+    RecordProperty("averaged_K_over_K", model::formatShortest(averaged / static_cast<double>(n) / kv));
 }
 
 TEST(PositionPid, RefusesWhatItCannotTrust)
