@@ -3,8 +3,11 @@
 // Python module), from a copy of Debian's stock sim/tklinuxcnc/servo_sim configuration: a gain changed live through
 // `linuxcnc:` and written by `axistune-cli persist` into the INI is what the next full LinuxCNC started from that INI
 // runs with (issue 17, Persist).
+#include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
+#include "core/model/Number.h"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdlib>
@@ -191,4 +194,88 @@ TEST_F(FullLinuxCnc, ServoSimOpenLoopMeasuredThroughLinuxCncEqualsItsHalFileAndG
     std::cout << "servo_sim open loop: " << valid << " valid lines; crossover " << m["phase_margin_Hz"] << " Hz, PM "
               << m["phase_margin_deg"] << " deg; the HAL file's model " << fcModel << " Hz, " << pmModel << " deg\n";
     fs::remove_all(dir);
+}
+
+// Issue 17 item 2: a jog through LinuxCNC's own motion. On a full headless LinuxCNC (servo_sim, inch), `capture
+// --test jog --back` on linuxcnc: sends a joint jog out and back through LinuxCNC's NML channels while hal: records:
+// the command the pid follows (feedback + following error) rises by the distance and comes back (to 1e-6 in), its
+// speed reaches the asked velocity and its acceleration the joint's MAX_ACCELERATION (finite differences of the 1 kHz
+// record; motion plans a trapezoid), AxisTune's own offset stays 0, the nets are as before; a gentler acceleration
+// than the joint's, or a speed above MAX_VELOCITY, is refused with exit 2 naming the key.
+TEST_F(FullLinuxCnc, JogThroughLinuxCncsMotionIsRecordedOutAndBack)
+{
+    ASSERT_TRUE(fs::exists(kServoSim / "servo_sim.ini")) << "linuxcnc-uspace's sample configurations are missing";
+    const fs::path dir = fs::path(::testing::TempDir()) / "full-linuxcnc-jog";
+    fs::remove_all(dir);
+    fs::copy(kServoSim, dir, fs::copy_options::recursive);
+    const fs::path ini = dir / "servo_sim.ini";
+    // servo_sim compensates its X screw (COMP_FILE screwcompX.dat): motion then adds up to 3 thousandths of an inch,
+    // switched with the direction, to the command the pid follows. Without it that command is the jog's own path.
+    {
+        std::istringstream in(slurp(ini));
+        std::string text, line;
+        while (std::getline(in, line))
+            if (line.rfind("COMP_FILE", 0) != 0)
+                text += line + "\n";
+        std::ofstream(ini, std::ios::binary) << text;
+    }
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::string cli = std::string(AXISTUNE_CLI) + " capture --connect linuxcnc:" + ini.string() + " --axis X";
+    start(ini);
+    const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
+    const std::string csv = (dir / "jog.csv").string();
+    const std::string log = (dir / "jog.log").string();
+    // 0.5 in at 1 in/s: servo_sim's joint 0 has MAX_VELOCITY 1.67 in/s and MAX_ACCELERATION 20 in/s².
+    const std::string jog = cli + " --test jog --distance 0.5 --velocity 1 --back --duration 0.2 ";
+    const std::string out = (dir / "jog.json").string();
+    const int rc = std::system((jog + "--acceleration 20 --out " + csv + " >" + out + " 2>" + log).c_str());
+    ASSERT_EQ(rc, 0) << slurp(log);
+    // stdout is the CLI's JSON alone (LinuxCNC's status library prints on stdout when it first reads the status), and
+    // the record is as long as planned.
+    const auto summary = nlohmann::json::parse(slurp(out));
+    EXPECT_EQ(summary.at("samples"), summary.at("planned_samples"));
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+    const int gentle = std::system((jog + "--acceleration 5 --out " + (dir / "never.csv").string() + " 2>" + log).c_str());
+    EXPECT_EQ(WEXITSTATUS(gentle), 2);
+    EXPECT_NE(slurp(log).find("MAX_ACCELERATION = 20"), std::string::npos) << slurp(log);
+    const int fast = std::system(
+        (cli + " --test jog --distance 0.5 --velocity 2 --back --acceleration 20 --out " + (dir / "never.csv").string() +
+         " 2>" + log)
+            .c_str());
+    EXPECT_EQ(WEXITSTATUS(fast), 2);
+    EXPECT_NE(slurp(log).find("MAX_VELOCITY = 1.67"), std::string::npos) << slurp(log);
+    EXPECT_FALSE(fs::exists(dir / "never.csv"));
+    stop();
+
+    auto trace = io::readCaptureCsvFile(csv);
+    ASSERT_TRUE(trace) << trace.error().detail;
+    EXPECT_NE(trace->metadata.at("moved_by").find("LinuxCNC's motion"), std::string::npos);
+    const auto* fb = trace->channel("feedback");
+    const auto* fe = trace->channel("following_error");
+    const auto* offset = trace->channel("position_offset");
+    ASSERT_TRUE(fb && fe && offset);
+    const std::size_t n = fb->data.size();
+    ASSERT_GT(n, 1000u);
+    std::vector<double> cmd(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        cmd[i] = fb->data[i] + fe->data[i];
+        ASSERT_EQ(offset->data[i], 0.0) << "row " << i;
+    }
+    const double c0 = cmd.front();
+    const double top = *std::max_element(cmd.begin(), cmd.end());
+    EXPECT_NEAR(top - c0, 0.5, 1e-6);
+    EXPECT_NEAR(cmd.back(), c0, 1e-6);
+    const double T = 1e-3;
+    double vmax = 0.0, amax = 0.0;
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        vmax = std::max(vmax, std::abs(cmd[i + 1] - cmd[i]) / T);
+        amax = std::max(amax, std::abs(cmd[i + 1] - 2.0 * cmd[i] + cmd[i - 1]) / (T * T));
+    }
+    // The planner's speed plateau is the asked 1 in/s (to its rounding, 1 %); its acceleration the joint's 20 in/s².
+    // A second difference over a corner of the trapezoid reads at most the full acceleration, so the largest one is
+    // 20 in/s² within 5 % (the planner's segment boundaries fall between samples).
+    EXPECT_NEAR(vmax, 1.0, 0.01);
+    EXPECT_NEAR(amax, 20.0, 1.0);
+    RecordProperty("peak_velocity", model::formatShortest(vmax));
+    RecordProperty("peak_acceleration", model::formatShortest(amax));
 }

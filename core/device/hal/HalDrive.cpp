@@ -489,6 +489,38 @@ Result<TestPlan> HalDrive::planTest(const TestRequest& request)
 
 Status HalDrive::startTest(const TestRequest& request)
 {
+    return start(request, {}, 0.0);
+}
+
+Status HalDrive::startExternalJog(const TestRequest& request, double recordS, ExternalMove move)
+{
+    if (request.type != TestType::Jog || !move)
+        return makeError(ErrorCode::Internal, "startExternalJog: a jog and a mover");
+    if (!(recordS > 0.0) || !(recordS <= kMaxTestS))
+        return makeError(ErrorCode::OutOfRange, "a recorded move of " + num(recordS) + " s: at most " +
+                                                    num(kMaxTestS) + " s");
+    return start(request, std::move(move), recordS);
+}
+
+Result<TestPlan> HalDrive::planExternalJog(const TestRequest& request, double recordS) const
+{
+    if (request.type != TestType::Jog)
+        return makeError(ErrorCode::Internal, "planExternalJog: a jog");
+    if (!(recordS > 0.0) || !(recordS <= kMaxTestS))
+        return makeError(ErrorCode::OutOfRange, "a recorded move of " + num(recordS) + " s: at most " +
+                                                    num(kMaxTestS) + " s");
+    auto move = movePlan(request);
+    if (!move)
+        return move.error();
+    TestPlan p;
+    p.traceRateHz = move->fsHz;
+    p.recordSamples = static_cast<std::size_t>(std::ceil(recordS * move->fsHz)) + 1;
+    p.motionTimeS = static_cast<double>(p.recordSamples) / move->fsHz;
+    return p;
+}
+
+Status HalDrive::start(const TestRequest& request, ExternalMove external, double recordS)
+{
     {
         std::lock_guard lock(m_mutex);
         if (auto st = noTestRunning(m_status, "test start"); !st)
@@ -504,6 +536,11 @@ Status HalDrive::startTest(const TestRequest& request)
         if (!m)
             return m.error();
         move = std::move(*m);
+        if (external) {
+            // Someone else moves the axis: AxisTune only records, its offset to the command held at 0.
+            move->offset.assign(static_cast<std::size_t>(std::ceil(recordS * move->fsHz)) + 1, 0.0);
+            move->external = true;
+        }
     } else {
         auto f = this->plan(request);
         if (!f)
@@ -532,7 +569,7 @@ Status HalDrive::startTest(const TestRequest& request)
     } else {
         excitation = move->offset;
         settings.point = InjectionPoint::PidCommand;
-        settings.limit = std::abs(move->distance) * (1.0 + 1e-9);
+        settings.limit = std::abs(move->distance) * (1.0 + 1e-9); // an external move's offset stays 0
         settings.returnRate = move->returnRate;
         axis = move->axis;
     }
@@ -546,13 +583,14 @@ Status HalDrive::startTest(const TestRequest& request)
         m_linkLost = false;
         m_status = TestStatus{TestState::Running, 0.0, ""};
     }
-    m_worker = std::thread([this, a = std::move(axis), settings, x = std::move(excitation)]() mutable {
-        run(std::move(a), settings, std::move(x));
-    });
+    m_worker = std::thread(
+        [this, a = std::move(axis), settings, x = std::move(excitation), e = std::move(external)]() mutable {
+            run(std::move(a), settings, std::move(x), std::move(e));
+        });
     return Status::success();
 }
 
-void HalDrive::run(HalAxis axis, InjectionSettings settings, std::vector<double> excitation)
+void HalDrive::run(HalAxis axis, InjectionSettings settings, std::vector<double> excitation, ExternalMove external)
 {
     auto finish = [&](TestState state, std::string detail) {
         // A failure after which HAL no longer answers, or no longer runs the axis's pid on a thread (a stopped
@@ -583,10 +621,36 @@ void HalDrive::run(HalAxis axis, InjectionSettings settings, std::vector<double>
         m_status.progress = std::max(m_status.progress, std::min(p, 1.0));
         m_changed.notify_all();
     };
+    // An external move runs beside the recording. It is stopped when the test is aborted or the record ends first;
+    // when it fails, the recording stops too (through the abort flag) and the test fails with the move's reason.
+    std::atomic<bool> stopMove{false}, moveDone{false}, moveFailed{false};
+    Status moved = Status::success();
+    std::thread mover;
+    if (external)
+        mover = std::thread([&] {
+            moved = external(stopMove);
+            if (!moved && !stopMove.load()) {
+                moveFailed = true;
+                m_abort = true;
+            }
+            moveDone = true;
+        });
     auto record = runExcitation(**client, **injection, excitation, control);
+    if (mover.joinable()) {
+        const bool endedFirst = !moveDone.load();
+        stopMove = true;
+        mover.join();
+        if (moveFailed)
+            record = moved.error();
+        else if (record && endedFirst)
+            record = makeError(ErrorCode::Device, "the move did not end within the record of " +
+                                                      num(static_cast<double>(excitation.size()) * 1e-9 *
+                                                          static_cast<double>(axis.periodNs)) +
+                                                      " s; it was stopped");
+    }
     const Status removed = (*injection)->remove();
     if (!record) {
-        const bool aborted = m_abort.load();
+        const bool aborted = m_abort.load() && !moveFailed.load();
         return finish(aborted ? TestState::Aborted : TestState::Faulted,
                       record.error().detail + (removed ? "" : "; removing the injection: " + removed.error().detail));
     }
@@ -674,6 +738,8 @@ Result<model::Capture> HalDrive::readTrace()
         md["test"] = "jog";
         md["distance"] = num(m_move->distance);
         md["velocity"] = num(m_move->velocity);
+        md["moved_by"] = m_move->external ? "LinuxCNC's motion (a joint jog through NML)"
+                                          : "AxisTune's offset to the pid's command";
     }
     md["axis"] = axis.pid;
     md["fs_Hz"] = num(fsHz);

@@ -18,6 +18,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -82,6 +83,7 @@ struct HalMovePlan {
     std::size_t stepAt = 0;     ///< step: the first sample at +distance
     std::size_t backAt = 0;     ///< step: the first sample back at zero
     std::vector<double> offset; ///< one value per servo period, first and last 0
+    bool external = false;      ///< the move is made by someone else (startExternalJog); the offset stays 0
 };
 
 /// Checks a jog request against the axis (out and back, finite positive speed and acceleration, at most
@@ -138,6 +140,16 @@ public:
     /// trips at the smaller of the two. 0 or less: none.
     void setFollowingErrorLimit(const std::string& pid, double limit);
 
+    /// Moves the axis with, while AxisTune records (linuxcnc:'s jog through LinuxCNC's own motion): `run` is called on
+    /// the test's worker once the recording has begun and must make the whole move; `stop` turns true when the test
+    /// is aborted or the record ends first, and `run` must then stop the motion and return.
+    using ExternalMove = std::function<Status(const std::atomic<bool>& stop)>;
+    /// A jog out and back (checked as planHalMove checks it) that `move` makes instead of AxisTune's offset to the
+    /// command; the record lasts `recordS` (the move, its dwells and the mover's latency) and the offset stays 0.
+    Status startExternalJog(const TestRequest& request, double recordS, ExternalMove move);
+    /// The plan of such a jog (checked as startExternalJog checks it).
+    Result<TestPlan> planExternalJog(const TestRequest& request, double recordS) const;
+
 private:
     explicit HalDrive(HalSessionOptions options) : m_options(std::move(options)) {}
     Result<std::vector<std::string>> pidNames() const;
@@ -146,7 +158,8 @@ private:
     Result<HalMovePlan> movePlan(const TestRequest& request) const;
     double followingErrorTrip(const HalAxis& axis) const; ///< the injection's trip: min of maxerror and FERROR
     void joinWorker();
-    void run(HalAxis axis, InjectionSettings settings, std::vector<double> excitation);
+    Status start(const TestRequest& request, ExternalMove external, double recordS);
+    void run(HalAxis axis, InjectionSettings settings, std::vector<double> excitation, ExternalMove external);
 
     HalSessionOptions m_options;
     std::thread m_worker;

@@ -3,13 +3,20 @@
 
 #include "core/model/Number.h"
 
+#include "core/sim/MotionProfile.h"
+
 #include <algorithm>
+#include <cmath>
+#include <chrono>
 #include <filesystem>
+#include <optional>
+#include <thread>
 
 namespace axistune::device::hal {
 namespace {
 
 const std::string kScheme = "linuxcnc:";
+constexpr double kMotionJogMarginS = 1.0; ///< a jog through motion: the task's replies and settling in position [s]
 
 std::string axisList(const std::vector<std::pair<std::string, std::string>>& axes)
 {
@@ -160,7 +167,98 @@ Status LinuxCncDrive::startTest(const TestRequest& request)
     if (!r)
         return r.error();
     m_lastAxis = request.axis;
+    // A jog of a joint goes through LinuxCNC's own motion where a LinuxCNC task answers on the configuration's NML
+    // channels (a full LinuxCNC); on a bare HAL loop started from the INI it is AxisTune's offset to the pid's command,
+    // as on hal: (the trace's `moved_by` says which).
+    auto viaMotion = motionJog(*r);
+    if (!viaMotion)
+        return viaMotion.error();
+    if (*viaMotion) {
+        const MotionJog jog = **viaMotion;
+        LinuxCncMotion* motion = m_motion.get();
+        return m_hal->startExternalJog(jog.request, jog.recordS, [motion, jog](const std::atomic<bool>& stop) -> Status {
+            const TestRequest& q = jog.request;
+            const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(q.durationS);
+            while (std::chrono::steady_clock::now() < until) {
+                if (stop.load())
+                    return makeError(ErrorCode::Aborted, "aborted");
+                std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            }
+            if (auto st = motion->jogIncrement(jog.joint, q.distance, q.velocity, stop, jog.moveTimeout); !st)
+                return st;
+            return motion->jogIncrement(jog.joint, -q.distance, q.velocity, stop, jog.moveTimeout);
+        });
+    }
     return m_hal->startTest(*r);
+}
+
+Result<double> LinuxCncDrive::jointNumber(int joint, const char* key) const
+{
+    const std::string section = "JOINT_" + std::to_string(joint);
+    const IniEntry* e = m_config.ini.find(section, key);
+    if (!e)
+        return makeError(ErrorCode::NotFound, m_config.ini.path + ": [" + section + "]" + key + " is not set");
+    auto v = model::parseNumber(e->value);
+    if (!v || !(*v > 0.0))
+        return makeError(ErrorCode::BadInput, m_config.ini.path + ":" + std::to_string(e->line) + ": [" + section +
+                                                  "]" + key + " '" + e->value + "' is not a positive number");
+    return *v;
+}
+
+Result<std::optional<LinuxCncDrive::MotionJog>> LinuxCncDrive::motionJog(const TestRequest& r)
+{
+    if (r.type != TestType::Jog)
+        return std::optional<MotionJog>{};
+    const PidInstance* pid = m_config.findPid(r.axis);
+    if (!pid || pid->joint < 0)
+        return std::optional<MotionJog>{};
+    if (!m_motion) {
+        const IniEntry* nml = m_config.ini.find("EMC", "NML_FILE");
+        auto motion = LinuxCncMotion::open(nml ? nml->value : LinuxCncMotion::kDefaultNmlFile);
+        if (!motion)
+            return std::optional<MotionJog>{}; // no LinuxCNC task: a bare HAL loop from this INI
+        m_motion = std::move(motion).value();
+    }
+    const int joint = pid->joint;
+    // Motion jogs at the request's speed (at most the joint's MAX_VELOCITY) with the joint's own acceleration
+    // (MAX_ACCELERATION): a request for a gentler acceleration cannot be honoured and is refused, never changed.
+    auto maxVelocity = jointNumber(joint, "MAX_VELOCITY");
+    if (!maxVelocity)
+        return maxVelocity.error();
+    auto acceleration = jointNumber(joint, "MAX_ACCELERATION");
+    if (!acceleration)
+        return acceleration.error();
+    const std::string section = "[JOINT_" + std::to_string(joint) + "]";
+    if (r.velocity > *maxVelocity)
+        return makeError(ErrorCode::OutOfRange, "jog velocity " + model::formatShortest(r.velocity) +
+                                                    " refused: LinuxCNC's motion limits joint " +
+                                                    std::to_string(joint) + " to " + section + "MAX_VELOCITY = " +
+                                                    model::formatShortest(*maxVelocity));
+    if (r.acceleration < *acceleration)
+        return makeError(ErrorCode::OutOfRange,
+                         "jog acceleration " + model::formatShortest(r.acceleration) +
+                             " refused: LinuxCNC's motion jogs joint " + std::to_string(joint) + " with " + section +
+                             "MAX_ACCELERATION = " + model::formatShortest(*acceleration) +
+                             " and cannot jog more gently (ask for that acceleration or more; hal: moves with an "
+                             "offset at any acceleration)");
+    if (r.jerk > 0.0)
+        return makeError(ErrorCode::BadInput, "a jerk limit cannot be asked of LinuxCNC's jog (it jogs a trapezoid)");
+    if (!(r.durationS >= 0.0) || !std::isfinite(r.durationS))
+        return makeError(ErrorCode::OutOfRange, "jog dwell must not be negative");
+    sim::MotionProfile profile;
+    profile.dwell(r.durationS);
+    profile.move(r.distance, r.velocity, *acceleration);
+    profile.move(-r.distance, r.velocity, *acceleration);
+    profile.dwell(r.durationS);
+    MotionJog jog;
+    jog.joint = joint;
+    jog.request = r;
+    jog.request.acceleration = *acceleration; // what motion uses; planHalMove checks the rest as for an offset move
+    // The record: the move and its dwells, plus a second for the task's replies and the joint settling in position.
+    jog.recordS = profile.duration() + kMotionJogMarginS;
+    jog.moveTimeout =
+        std::chrono::milliseconds(static_cast<long long>(1000.0 * (0.5 * profile.duration() + kMotionJogMarginS)));
+    return std::optional<MotionJog>(jog);
 }
 
 Result<TestStatus> LinuxCncDrive::pollTest()
@@ -240,6 +338,11 @@ Result<TestPlan> LinuxCncDrive::planTest(const TestRequest& request)
     auto r = onPid(request);
     if (!r)
         return r.error();
+    auto viaMotion = motionJog(*r);
+    if (!viaMotion)
+        return viaMotion.error();
+    if (*viaMotion)
+        return m_hal->planExternalJog((*viaMotion)->request, (*viaMotion)->recordS);
     return m_hal->planTest(*r);
 }
 

@@ -10,8 +10,11 @@
 #include "core/device/DriveRegistry.h"
 #include "core/device/hal/HalDrive.h"
 #include "core/device/hal/LinuxCncConfig.h"
+#include "core/device/hal/LinuxCncMotion.h"
 
+#include <chrono>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 
@@ -51,12 +54,26 @@ public:
 private:
     LinuxCncDrive() = default;
     Result<TestRequest> onPid(const TestRequest& request) const;
+    /// A joint's positive number [JOINT_n]KEY; errors name the file, line and key.
+    Result<double> jointNumber(int joint, const char* key) const;
+    /// A jog out and back through LinuxCNC's own motion (LinuxCncMotion.h) while hal: records.
+    struct MotionJog {
+        int joint = -1;
+        TestRequest request; ///< on the pid, with the acceleration motion uses
+        double recordS = 0.0;
+        std::chrono::milliseconds moveTimeout{0}; ///< for each of the two moves
+    };
+    /// A jog request (on the pid) as a jog through motion, checked against the joint's MAX_VELOCITY and
+    /// MAX_ACCELERATION; nullopt when it is AxisTune's offset instead (not a jog, no joint, or no LinuxCNC task answers
+    /// on the configuration's NML channels).
+    Result<std::optional<MotionJog>> motionJog(const TestRequest& r);
 
     LinuxCncConfig m_config;
     std::unique_ptr<HalDrive> m_hal;
     std::vector<std::pair<std::string, std::string>> m_axes; ///< (axis name, pid) in joint order
     std::string m_machine;
     std::string m_lastAxis; ///< axis of the last test
+    std::unique_ptr<LinuxCncMotion> m_motion; ///< LinuxCNC's task over NML, once a jog has found it running
 };
 
 /// The axis name of a pid of a configuration: its letter, `jointN`, or the pid's own name.
