@@ -244,6 +244,13 @@ TEST_F(FullLinuxCnc, JogThroughLinuxCncsMotionIsRecordedOutAndBack)
             .c_str());
     EXPECT_EQ(WEXITSTATUS(fast), 2);
     EXPECT_NE(slurp(log).find("MAX_VELOCITY = 1.67"), std::string::npos) << slurp(log);
+    // With the machine switched off (through LinuxCNC's Python module, as an operator's GUI would): refused, exit 4.
+    ASSERT_EQ(std::system("cd / && /usr/bin/python3 -c 'import linuxcnc; c = linuxcnc.command(); "
+                          "c.state(linuxcnc.STATE_OFF); c.wait_complete(5)' >/dev/null 2>&1"),
+              0);
+    const int off = std::system((jog + "--acceleration 20 --out " + (dir / "never.csv").string() + " 2>" + log).c_str());
+    EXPECT_EQ(WEXITSTATUS(off), 4);
+    EXPECT_NE(slurp(log).find("machine is not on"), std::string::npos) << slurp(log);
     EXPECT_FALSE(fs::exists(dir / "never.csv"));
     stop();
 

@@ -220,6 +220,11 @@ Result<std::optional<LinuxCncDrive::MotionJog>> LinuxCncDrive::motionJog(const T
         m_motion = std::move(motion).value();
     }
     const int joint = pid->joint;
+    auto on = m_motion->machineOn();
+    if (!on)
+        return on.error();
+    if (!*on)
+        return makeError(ErrorCode::Safety, "LinuxCNC's machine is not on (E-stop or off): no jog");
     // Motion jogs at the request's speed (at most the joint's MAX_VELOCITY) with the joint's own acceleration
     // (MAX_ACCELERATION): a request for a gentler acceleration cannot be honoured and is refused, never changed.
     auto maxVelocity = jointNumber(joint, "MAX_VELOCITY");
