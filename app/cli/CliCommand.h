@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+namespace axistune::autotune {
+struct UndoneParameter;
+}
+
 namespace axistune::cli {
 
 struct CliCommand {
@@ -36,6 +40,11 @@ int writeResult(const std::string& command, const std::string& text, const std::
 /// or Inf, which JSON would show as null; otherwise writes the dump (indent < 0: one line) and a newline.
 int writeJsonResult(const std::string& command, const nlohmann::json& result, const std::string& outPath,
                     int indent = 2);
+
+/// The result of an undo (autotune --undo, pid-tune --undo): `out` with `undone[]` (key, was, now) added, written
+/// as writeJsonResult does, and "  key: was -> now" per parameter on stderr.
+int writeUndone(const std::string& command, nlohmann::json out, const std::vector<autotune::UndoneParameter>& undone,
+                const std::string& outPath);
 
 /// Help text of --connect: "drive to use: " and the registered URI forms (core/device/DriveRegistry.h).
 std::string connectOptionHelp();

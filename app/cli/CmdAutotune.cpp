@@ -62,15 +62,9 @@ int runUndo(const AutotuneOptions& o)
     auto undone = autotune::undoTune(**drive, *tune, o.force);
     if (!undone)
         return reportError(cmd, undone.error());
-    nlohmann::json out{{"axis", tune->axis}, {"connection", o.connect}, {"from", model::displayPath(o.undoPath)}};
-    nlohmann::json list = nlohmann::json::array();
-    for (const auto& u : *undone)
-        list.push_back({{"key", u.key}, {"was", u.applied}, {"now", u.restored}});
-    out["undone"] = list;
-    for (const auto& u : *undone)
-        std::cerr << "  " << u.key << ": " << model::formatNumber(u.applied, 7) << " -> "
-                  << model::formatNumber(u.restored, 7) << "\n";
-    return writeJsonResult(cmd, out, o.outPath);
+    return writeUndone(cmd,
+                       {{"axis", tune->axis}, {"connection", o.connect}, {"from", model::displayPath(o.undoPath)}},
+                       *undone, o.outPath);
 }
 
 int runAutotune(const AutotuneOptions& o)

@@ -5,11 +5,13 @@
 // behind each number, and with --apply writes them live and measures again: the measured margins against the
 // prediction. If the measured loop misses the margins, the gains from before are put back (exit 4).
 #include "app/cli/CliCommand.h"
+#include "core/autotune/Undo.h"
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"
 #include "core/device/hal/HalAxis.h"
 #include "core/device/hal/HalDrive.h"
 #include "core/device/hal/LinuxCncDrive.h"
+#include "core/model/InputLimits.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 #include "core/sim/MotionProfile.h"
@@ -41,6 +43,8 @@ struct PidTuneOptions {
     bool removeNotch = false;
     std::string move; ///< DIST:VEL:ACC in the command's units
     std::string out;
+    std::string undoPath; ///< --undo RESULT.json
+    bool force = false;
 };
 
 /// A move out and back (--move DIST:VEL:ACC, the command's units), dwelling kMoveDwellS before and after.
@@ -148,8 +152,59 @@ nlohmann::json marginsJson(const tuning::PositionLoopMargins& m)
     return j;
 }
 
+/// --undo RESULT.json: the gains an applied pid-tune wrote go back to the ones that ran before it (`running.gains`),
+/// when HAL still holds what it applied (`proposed.gains`) or with --force; the notch it inserted is removed.
+int runPidTuneUndo(const PidTuneOptions& o)
+{
+    const std::string cmd = "pid-tune --undo";
+    const std::string from = model::displayPath(o.undoPath);
+    auto bad = [&](const std::string& what) { return reportError(cmd, makeError(ErrorCode::BadInput, what)); };
+    if (o.apply || o.removeNotch || !o.move.empty())
+        return bad("--apply, --remove-notch and --move are options of a tune, not of --undo");
+    auto j = model::readJsonFile(o.undoPath);
+    if (!j)
+        return reportError(cmd, j.error());
+    if (!j->contains("applied") || !(*j)["applied"].is_boolean() || !(*j)["applied"].get<bool>())
+        return bad(from + ": field 'applied' is not true: that run wrote nothing to undo");
+    if (!j->contains("axis") || !(*j)["axis"].is_string())
+        return bad(from + ": field 'axis' is missing");
+    autotune::AppliedTune tune;
+    tune.axis = (*j)["axis"].get<std::string>();
+    if (tune.axis != o.axis)
+        return bad("--axis " + o.axis + " but " + from + " tuned axis " + tune.axis);
+    for (const std::string& key : kGainKeys) {
+        const auto was = j->value(nlohmann::json::json_pointer("/running/gains/" + key), nlohmann::json());
+        const auto now = j->value(nlohmann::json::json_pointer("/proposed/gains/" + key), nlohmann::json());
+        if (!was.is_number())
+            return bad(from + ": field 'running.gains." + key + "' is missing or not a number");
+        if (!now.is_number())
+            return bad(from + ": field 'proposed.gains." + key + "' is missing or not a number");
+        tune.before[key] = was.get<double>();
+        tune.applied[key] = now.get<double>();
+    }
+    auto drive = device::connect({o.connect, 1});
+    if (!drive)
+        return reportError(cmd, drive.error());
+    auto undone = autotune::undoTune(**drive, tune, o.force);
+    if (!undone)
+        return reportError(cmd, undone.error());
+    nlohmann::json out{{"axis", tune.axis}, {"connection", o.connect}, {"from", from}, {"notch_removed", false}};
+    if (j->contains("proposed") && (*j)["proposed"].contains("notch")) {
+        auto st = withHalAxis(**drive, o, [](const device::hal::HalSessionOptions& s, const device::hal::HalAxis&) {
+            return device::hal::removeNotch(s);
+        });
+        if (!st)
+            return reportError(cmd, makeError(st.error().code, "the gains were put back, but removing the notch: " +
+                                                                   st.error().detail));
+        out["notch_removed"] = true;
+    }
+    return writeUndone(cmd, out, *undone, o.out);
+}
+
 int runPidTune(const PidTuneOptions& o)
 {
+    if (!o.undoPath.empty())
+        return runPidTuneUndo(o);
     const std::string cmd = "pid-tune";
     if (!o.removeNotch && o.amplitude <= 0.0 && o.amplitudePct <= 0.0)
         return reportError(cmd,
@@ -435,6 +490,10 @@ const CliRegistrar kRegistrar{
                         "DIST:VEL:ACC (command units): predict the following error of this move out and back; with "
                         "--apply, run it and report the measured peak");
          sub.add_option("--out", o->out, "result JSON (also printed)");
+         sub.add_option("--undo", o->undoPath,
+                        "RESULT.json of an applied run: put back the gains that ran before it (running.gains) and "
+                        "remove its notch; refused when HAL no longer holds what it applied");
+         sub.add_flag("--force", o->force, "with --undo: put them back even when the gains changed since");
          return [o] { return runPidTune(*o); };
      }}};
 

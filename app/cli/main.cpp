@@ -2,9 +2,11 @@
 // axistune-cli: every analysis and capture without the GUI. Results as JSON on stdout (or --out),
 // errors on stderr with exit codes 2 (bad input), 3 (device error), 4 (safety stop).
 #include "app/cli/CliCommand.h"
+#include "core/autotune/Undo.h"
 #include "core/device/DriveRegistry.h"
 #include "core/io/AtomicFile.h"
 #include "core/model/InputLimits.h"
+#include "core/model/Number.h"
 
 #include <iostream>
 #include <memory>
@@ -47,6 +49,19 @@ int writeJsonResult(const std::string& command, const nlohmann::json& result, co
     if (!text)
         return reportError(command, text.error());
     return writeResult(command, *text + "\n", outPath);
+}
+
+int writeUndone(const std::string& command, nlohmann::json out, const std::vector<autotune::UndoneParameter>& undone,
+                const std::string& outPath)
+{
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& u : undone) {
+        list.push_back({{"key", u.key}, {"was", u.applied}, {"now", u.restored}});
+        std::cerr << "  " << u.key << ": " << model::formatNumber(u.applied, 7) << " -> "
+                  << model::formatNumber(u.restored, 7) << "\n";
+    }
+    out["undone"] = list;
+    return writeJsonResult(command, out, outPath);
 }
 
 }  // namespace axistune::cli

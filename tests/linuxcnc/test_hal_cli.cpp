@@ -17,6 +17,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -308,4 +309,56 @@ TEST_F(HalTestbed, AutotuneOnAPositionPidNamesPidTuneAndChangesNothing)
     EXPECT_NE(err.find("pid-tune"), std::string::npos) << err;
     EXPECT_EQ(halText({"-s", "show", "sig"}), sigBefore);
     EXPECT_EQ(halText({"-s", "show", "funct"}), functBefore);
+}
+
+// Issue 17 item 3's undo: `pid-tune --undo RESULT.json` puts back the gains that ran before an applied pid-tune (its
+// `running.gains`) and removes the notch it inserted: every gain reads back as before (halcmd's 7 digits), the nets and
+// functions are as before the tune; a second undo is refused with exit 4 and changes nothing (HAL no longer holds what
+// the run applied); the result of a run that applied nothing is refused with exit 2 naming the field.
+TEST_F(HalTestbed, CliPidTuneUndoPutsBackTheGainsThatRanBefore)
+{
+    startBed(1000000);
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
+    const std::string funBefore = halText({"-s", "show", "funct"});
+    const std::vector<std::string> keys{"Pgain", "Igain", "Dgain", "FF1", "FF2"};
+    std::map<std::string, double> before;
+    for (const auto& k : keys)
+        before[k] = getp("pid.x." + k);
+    const std::string dir = ::testing::TempDir();
+    const std::string result = dir + "/pid-tune-undo.json";
+    const std::string log = dir + "/pid-tune-undo.log";
+    auto slurpLog = [&] {
+        std::ifstream l(log);
+        return std::string(std::istreambuf_iterator<char>(l), {});
+    };
+    const std::string base = std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x ";
+    const std::string tune = base + "--amplitude 0.2 --pm 50 --gm 8 --apply --out " + result + " >/dev/null 2>" + log;
+    int rc = std::system(tune.c_str());
+    if (rc != 0 && slurpLog().find("the heartbeat was lost") != std::string::npos) { // as in the test above
+        std::printf("[ note ] pid-tune --apply refused: the injection's heartbeat was lost under load; run again\n");
+        rc = std::system(tune.c_str());
+    }
+    ASSERT_EQ(rc, 0) << slurpLog();
+    EXPECT_NE(getp("pid.x.Pgain"), before["Pgain"]);
+    ASSERT_NE(halText({"-s", "show", "funct"}), funBefore) << "the run inserted no notch: the undo's removal is untested";
+
+    ASSERT_EQ(std::system((base + "--undo " + result + " >" + dir + "/undo.json 2>" + log).c_str()), 0) << slurpLog();
+    for (const auto& k : keys)
+        EXPECT_NEAR(getp("pid.x." + k), before[k], 1e-6 * std::abs(before[k])) << k;
+    EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
+    EXPECT_EQ(halText({"-s", "show", "funct"}), funBefore);
+    std::ifstream undoOut(dir + "/undo.json");
+    const auto undone = nlohmann::json::parse(undoOut);
+    EXPECT_EQ(undone.at("undone").size(), keys.size());
+    EXPECT_TRUE(undone.at("notch_removed").get<bool>());
+
+    EXPECT_EQ(WEXITSTATUS(std::system((base + "--undo " + result + " >/dev/null 2>" + log).c_str())), 4);
+    for (const auto& k : keys)
+        EXPECT_NEAR(getp("pid.x." + k), before[k], 1e-6 * std::abs(before[k])) << k;
+
+    const std::string dry = dir + "/pid-tune-dry.json";
+    std::ofstream(dry) << R"({"axis": "pid.x", "applied": false})";
+    EXPECT_EQ(WEXITSTATUS(std::system((base + "--undo " + dry + " >/dev/null 2>" + log).c_str())), 2);
+    EXPECT_NE(slurpLog().find("'applied'"), std::string::npos) << slurpLog();
 }

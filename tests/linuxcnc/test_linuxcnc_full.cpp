@@ -225,8 +225,10 @@ TEST_F(FullLinuxCnc, JogThroughLinuxCncsMotionIsRecordedOutAndBack)
     const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
     const std::string csv = (dir / "jog.csv").string();
     const std::string log = (dir / "jog.log").string();
-    // 0.5 in at 1 in/s: servo_sim's joint 0 has MAX_VELOCITY 1.67 in/s and MAX_ACCELERATION 20 in/s².
-    const std::string jog = cli + " --test jog --distance 0.5 --velocity 1 --back --duration 0.2 ";
+    // 0.5 in at 0.25 in/s: servo_sim's joint 0 has MAX_VELOCITY 1.67 in/s and MAX_ACCELERATION 20 in/s², FERROR
+    // 0.05 in. Slowly: without an RT kernel a loaded machine can stall the servo thread for a tenth of a second, and
+    // at 1 in/s that is more than FERROR (once, at load 7, LinuxCNC switched the machine off during this test).
+    const std::string jog = cli + " --test jog --distance 0.5 --velocity 0.25 --back --duration 0.2 ";
     const std::string out = (dir / "jog.json").string();
     const int rc = std::system((jog + "--acceleration 20 --out " + csv + " >" + out + " 2>" + log).c_str());
     ASSERT_EQ(rc, 0) << slurp(log);
@@ -278,10 +280,10 @@ TEST_F(FullLinuxCnc, JogThroughLinuxCncsMotionIsRecordedOutAndBack)
         vmax = std::max(vmax, std::abs(cmd[i + 1] - cmd[i]) / T);
         amax = std::max(amax, std::abs(cmd[i + 1] - 2.0 * cmd[i] + cmd[i - 1]) / (T * T));
     }
-    // The planner's speed plateau is the asked 1 in/s (to its rounding, 1 %); its acceleration the joint's 20 in/s².
+    // The planner's speed plateau is the asked 0.25 in/s (to its rounding, 1 %); its acceleration the joint's 20 in/s².
     // A second difference over a corner of the trapezoid reads at most the full acceleration, so the largest one is
     // 20 in/s² within 5 % (the planner's segment boundaries fall between samples).
-    EXPECT_NEAR(vmax, 1.0, 0.01);
+    EXPECT_NEAR(vmax, 0.25, 0.0025);
     EXPECT_NEAR(amax, 20.0, 1.0);
     RecordProperty("peak_velocity", model::formatShortest(vmax));
     RecordProperty("peak_acceleration", model::formatShortest(amax));

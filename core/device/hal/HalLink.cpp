@@ -49,7 +49,11 @@ struct RtapiHold {
     bool replaced = false; // a restarted session's segment is at `address`: the kernel detaches it at exit
     ~RtapiHold()
     {
-        if (id >= 0 && !replaced)
+        // rtapi_exit detaches the segment it mapped first and then looks it up: only while no stopped session has
+        // removed it (marked it for destruction; LinuxCNC would print its failed lookup). The kernel detaches the
+        // rest at exit.
+        shmid_ds ds{};
+        if (id >= 0 && !replaced && shmctl(segment, IPC_STAT, &ds) == 0 && (ds.shm_perm.mode & SHM_DEST) == 0)
             rtapi_exit(id);
     }
 };

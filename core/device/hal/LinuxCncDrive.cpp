@@ -220,11 +220,6 @@ Result<std::optional<LinuxCncDrive::MotionJog>> LinuxCncDrive::motionJog(const T
         m_motion = std::move(motion).value();
     }
     const int joint = pid->joint;
-    auto on = m_motion->machineOn();
-    if (!on)
-        return on.error();
-    if (!*on)
-        return makeError(ErrorCode::Safety, "LinuxCNC's machine is not on (E-stop or off): no jog");
     // Motion jogs at the request's speed (at most the joint's MAX_VELOCITY) with the joint's own acceleration
     // (MAX_ACCELERATION): a request for a gentler acceleration cannot be honoured and is refused, never changed.
     auto maxVelocity = jointNumber(joint, "MAX_VELOCITY");
@@ -250,6 +245,12 @@ Result<std::optional<LinuxCncDrive::MotionJog>> LinuxCncDrive::motionJog(const T
         return makeError(ErrorCode::BadInput, "a jerk limit cannot be asked of LinuxCNC's jog (it jogs a trapezoid)");
     if (!(r.durationS >= 0.0) || !std::isfinite(r.durationS))
         return makeError(ErrorCode::OutOfRange, "jog dwell must not be negative");
+    // The request is checked first (the same answer whatever state the machine is in), then the machine.
+    auto on = m_motion->machineOn();
+    if (!on)
+        return on.error();
+    if (!*on)
+        return makeError(ErrorCode::Safety, "LinuxCNC's machine is not on (E-stop or off): no jog");
     sim::MotionProfile profile;
     profile.dwell(r.durationS);
     profile.move(r.distance, r.velocity, *acceleration);
