@@ -9,14 +9,31 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <system_error>
+#include <vector>
 
 namespace axistune::store::testutil {
 
+/// A new folder under the system's temporary folder, removed with its contents when the test process exits (the
+/// kill test's stores are about 100 MB each; forked children leave with _exit and remove nothing).
 inline std::filesystem::path tempDir(const std::string& tag)
 {
+    static struct Reaper {
+        std::vector<std::filesystem::path> dirs;
+        ~Reaper()
+        {
+            for (const auto& d : dirs) {
+                std::error_code ec;
+                std::filesystem::remove_all(d, ec);
+            }
+        }
+    } reaper;
     std::string tmpl = (std::filesystem::temp_directory_path() / ("axistune-store-" + tag + "-XXXXXX")).string();
     char* d = mkdtemp(tmpl.data());
-    return d ? std::filesystem::path(d) : std::filesystem::temp_directory_path();
+    if (!d)
+        return std::filesystem::temp_directory_path();
+    reaper.dirs.emplace_back(d);
+    return reaper.dirs.back();
 }
 
 /// Channel k, sample i: sin(0.001*i*(k+1)) + k — every value differs, so a swapped or shifted
