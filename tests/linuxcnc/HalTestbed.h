@@ -5,6 +5,7 @@
 
 #include "core/device/hal/HalCmd.h"
 #include "core/device/hal/HalText.h"
+#include "core/dsp/FrequencyResponse.h"
 #include "core/model/Number.h"
 
 #include <Eigen/Dense>
@@ -13,6 +14,7 @@
 #include <complex>
 #include <gtest/gtest.h>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -175,6 +177,35 @@ inline std::complex<double> exactResponse(const Plant& p, double periodS, double
     const Eigen::Matrix4cd M = z * Eigen::Matrix4cd::Identity() - s.A.cast<std::complex<double>>();
     const Eigen::Vector4cd x = M.partialPivLu().solve(s.B.cast<std::complex<double>>());
     return z * (s.C.cast<std::complex<double>>() * x)(0);
+}
+
+/// The largest departure of a measured plant FRF (every line valid) from the plant's exact response at the servo
+/// period `periodS`: |20 log10 |ratio|| [dB] and |arg ratio| [deg]. An invalid line fails the calling test.
+struct ExactDeparture {
+    double dB = 0.0, deg = 0.0;
+};
+inline ExactDeparture departureFromExact(const dsp::FrequencyResponse& frf, const Plant& plant, double periodS)
+{
+    ExactDeparture w;
+    for (std::size_t i = 0; i < frf.size(); ++i) {
+        EXPECT_TRUE(frf.valid[i]) << frf.freqHz[i] << " Hz";
+        const std::complex<double> ratio = frf.h[i] / exactResponse(plant, periodS, frf.freqHz[i]);
+        w.dB = std::max(w.dB, std::abs(20.0 * std::log10(std::abs(ratio))));
+        w.deg = std::max(w.deg, std::abs(std::arg(ratio)) * 180.0 / M_PI);
+    }
+    return w;
+}
+
+/// pid-tune's result after --apply: the measured margins meet issue 17's (PM ≥ 45°, GM ≥ 6 dB) and lie within
+/// 3° / 1 dB of the prediction.
+inline void expectVerifiedMargins(const nlohmann::json& result)
+{
+    const auto& predicted = result.at("proposed").at("predicted");
+    const auto& measured = result.at("verified").at("measured");
+    EXPECT_GE(measured.at("phase_margin_deg").get<double>(), 45.0);
+    EXPECT_GE(measured.at("gain_margin_dB").get<double>(), 6.0);
+    EXPECT_NEAR(measured.at("phase_margin_deg").get<double>(), predicted.at("phase_margin_deg").get<double>(), 3.0);
+    EXPECT_NEAR(measured.at("gain_margin_dB").get<double>(), predicted.at("gain_margin_dB").get<double>(), 1.0);
 }
 
 } // namespace axistune::testing

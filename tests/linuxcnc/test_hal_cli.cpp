@@ -194,12 +194,9 @@ TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
     }
     EXPECT_TRUE(j.at("applied").get<bool>());
     EXPECT_EQ(j.at("drive_input"), "torque");
+    expectVerifiedMargins(j);
     const auto& predicted = j.at("proposed").at("predicted");
     const auto& measured = j.at("verified").at("measured");
-    EXPECT_GE(measured.at("phase_margin_deg").get<double>(), 45.0);
-    EXPECT_GE(measured.at("gain_margin_dB").get<double>(), 6.0);
-    EXPECT_NEAR(measured.at("phase_margin_deg").get<double>(), predicted.at("phase_margin_deg").get<double>(), 3.0);
-    EXPECT_NEAR(measured.at("gain_margin_dB").get<double>(), predicted.at("gain_margin_dB").get<double>(), 1.0);
     EXPECT_EQ(j.at("proposed").at("rules").size(), 6u); // crossover, P, I, D, FF2, FF1
     ASSERT_TRUE(j.at("proposed").contains("notch")) << j.dump(2);
     EXPECT_NEAR(j.at("proposed").at("notch").at("f0_Hz").get<double>() / fr, 1.0, 0.02);

@@ -43,8 +43,9 @@ void drainRows(device::Drive& d, device::ScopeCapture& all, std::uint64_t& next,
         ASSERT_TRUE(rows) << rows.error().detail;
         if (rows->rows == 0)
             return;
-        if (started)
+        if (started) {
             ASSERT_EQ(rows->firstSample, next) << "scope rows lost";
+        }
         started = true;
         device::appendScopeRows(all, *rows);
         next = rows->firstSample + rows->rows;
@@ -173,8 +174,9 @@ TEST_F(HalTestbed, ScopeSamplesAnyPin)
     for (std::size_t i = 0; i < sc2->rows(); ++i) {
         const bool s = sc2->columns[1][i] != 0.0;
         ASSERT_EQ(s, std::abs(sc2->columns[0][i]) == maxOutput) << "row " << i;
-        if (i > 0)
+        if (i > 0) {
             ASSERT_EQ(sc2->columns[2][i], s ? sc2->columns[2][i - 1] + 1.0 : 0.0) << "row " << i;
+        }
         saturatedRows += s;
     }
     EXPECT_GT(saturatedRows, 10u);

@@ -50,13 +50,7 @@ TEST_F(HalTestbed, VelocityModePlantFrfEqualsTheExactDiscreteResponse)
     auto frf = io::readFrfCsvFile(out);
     ASSERT_TRUE(frf) << frf.error().detail;
     ASSERT_GT(frf->size(), 400u);
-    double worstDb = 0.0, worstDeg = 0.0;
-    for (std::size_t i = 0; i < frf->size(); ++i) {
-        ASSERT_TRUE(frf->valid[i]) << frf->freqHz[i] << " Hz";
-        const std::complex<double> ratio = frf->h[i] / exactResponse(plant, 1e-3, frf->freqHz[i]);
-        worstDb = std::max(worstDb, std::abs(20.0 * std::log10(std::abs(ratio))));
-        worstDeg = std::max(worstDeg, std::abs(std::arg(ratio)) * 180.0 / M_PI);
-    }
+    const auto [worstDb, worstDeg] = departureFromExact(*frf, plant, 1e-3);
     EXPECT_LE(worstDb, 0.1);
     EXPECT_LE(worstDeg, 0.5);
     RecordProperty("worst_dB", model::formatShortest(worstDb));
@@ -89,12 +83,8 @@ TEST_F(HalTestbed, CliPidTuneOnAVelocityModeDriveAppliesAndVerifiesItsProposal)
     const auto j = nlohmann::json::parse(f);
     EXPECT_EQ(j.at("drive_input"), "velocity");
     EXPECT_TRUE(j.at("applied").get<bool>());
-    const auto& predicted = j.at("proposed").at("predicted");
+    expectVerifiedMargins(j);
     const auto& measured = j.at("verified").at("measured");
-    EXPECT_GE(measured.at("phase_margin_deg").get<double>(), 45.0);
-    EXPECT_GE(measured.at("gain_margin_dB").get<double>(), 6.0);
-    EXPECT_NEAR(measured.at("phase_margin_deg").get<double>(), predicted.at("phase_margin_deg").get<double>(), 3.0);
-    EXPECT_NEAR(measured.at("gain_margin_dB").get<double>(), predicted.at("gain_margin_dB").get<double>(), 1.0);
     RecordProperty("crossover_Hz", model::formatShortest(measured.at("crossover_Hz").get<double>()));
     RecordProperty("pm_measured", model::formatShortest(measured.at("phase_margin_deg").get<double>()));
     RecordProperty("gm_measured", model::formatShortest(measured.at("gain_margin_dB").get<double>()));
