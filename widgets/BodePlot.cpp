@@ -447,6 +447,14 @@ int BodePlot::markerCount() const
     return static_cast<int>(m_markers.size());
 }
 
+void BodePlot::setMagnitudeTitle(const QString& title)
+{
+    m_magRect->axis(QCPAxis::atLeft)->setLabel(title.isEmpty() ? detail::axisTitle(tr("Magnitude"), tr("dB")) : title);
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+QString BodePlot::magnitudeTitle() const { return m_magRect->axis(QCPAxis::atLeft)->label(); }
+
 void BodePlot::setPhaseUnwrapped(bool unwrapped)
 {
     if (unwrapped == m_unwrapped)

@@ -54,6 +54,10 @@ public:
     void clearMarkers();
     int markerCount() const;
 
+    /// The magnitude axis's title (e.g. with the response's units); empty: "Magnitude [dB]".
+    void setMagnitudeTitle(const QString& title);
+    QString magnitudeTitle() const;
+
     /// Phase drawn unwrapped (continuous) instead of in (-180, 180]. Default: wrapped.
     void setPhaseUnwrapped(bool unwrapped);
     bool phaseUnwrapped() const { return m_unwrapped; }

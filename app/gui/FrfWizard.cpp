@@ -72,6 +72,9 @@ device::TestRequest FrfWizard::request() const
     r.fmaxHz = field("fmaxHz").toDouble();
     r.points = field("points").toInt();
     r.amplitudePct = field("amplitudePct").toDouble();
+    if (m_safety->driveInfo().peakInOutputUnits())
+        r.amplitudePeak = field("amplitudePeak").toDouble(); // the drive's output units (hal:: the PID output's)
+    r.frfQuantity = m_config->selectedQuantity();
     if (r.frfMethod == device::FrfMethod::Multisine && r.points > 0)
         // Lines on a linear grid: at least `points` of them in the band, never coarser than the
         // drive's default fmin/2 (docs/wizards/frf.md).
@@ -92,7 +95,8 @@ void FrfWizard::onRunFinished(bool ok)
         return;
     }
     m_measurement = replies.back().frf;
-    m_result->setMeasurement(m_measurement->frf, m_lastRequest.frfMethod);
+    m_result->setMeasurement(m_measurement->frf, m_lastRequest.frfMethod, m_safety->driveInfo().frfMaxHz(),
+                             m_safety->driveInfo().outputSignal());
 }
 
 void FrfWizard::onPageChanged(int id)
@@ -100,6 +104,19 @@ void FrfWizard::onPageChanged(int id)
     if (id != SaveId)
         return;
     const auto& a = m_result->analysis();
+    if (m_lastRequest.amplitudePeak > 0.0) {
+        m_save->showSaved(tr("Finish stores: the settings (axis %1, %2, %3–%4 Hz, peak %5 in the units of %6), the "
+                             "measured frequency response (%7 points) and the %n resonance(s) found.",
+                             nullptr, static_cast<int>(a.resonances.size()))
+                              .arg(QString::fromStdString(m_lastRequest.axis),
+                                   QString::fromLatin1(device::frfMethodName(m_lastRequest.frfMethod)))
+                              .arg(m_lastRequest.fminHz)
+                              .arg(m_lastRequest.fmaxHz)
+                              .arg(m_lastRequest.amplitudePeak)
+                              .arg(m_safety->driveInfo().outputSignal())
+                              .arg(m_result->measured().size()));
+        return;
+    }
     m_save->showSaved(tr("Finish stores: the settings (axis %1, %2, %3–%4 Hz, %5 points, %6 % of rated torque), the "
                          "measured frequency response (%7 points) and the %n resonance(s) found.",
                          nullptr, static_cast<int>(a.resonances.size()))
@@ -121,10 +138,20 @@ nlohmann::json FrfWizard::inputsJson() const
     j["fmin_Hz"] = r.fminHz;
     j["fmax_Hz"] = r.fmaxHz;
     j["points"] = r.points;
-    j["amplitude_pct"] = r.amplitudePct;
-    const double rated = m_safety->driveInfo().ratedTorqueNm();
-    if (std::isfinite(rated))
-        j["amplitude_Nm"] = model::torqueNmFromRatedPct(r.amplitudePct, rated);
+    if (r.amplitudePeak > 0.0) {
+        // The peak in the drive's output units (hal:: the PID output's), and which signal that is.
+        j["amplitude_peak"] = r.amplitudePeak;
+        j["amplitude_signal"] = m_safety->driveInfo().outputSignal().toStdString();
+    } else {
+        j["amplitude_pct"] = r.amplitudePct;
+        const double rated = m_safety->driveInfo().ratedTorqueNm();
+        if (std::isfinite(rated))
+            j["amplitude_Nm"] = model::torqueNmFromRatedPct(r.amplitudePct, rated);
+    }
+    if (r.frfQuantity == device::FrfQuantity::Plant)
+        j["quantity"] = "plant";
+    else if (r.frfQuantity == device::FrfQuantity::OpenLoop)
+        j["quantity"] = "open-loop";
     j["connection"] = m_ctx.drive().uri().toStdString();
     if (std::isfinite(m_config->estimatedMotionS()))
         j["estimated_motion_s"] = m_config->estimatedMotionS();

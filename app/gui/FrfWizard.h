@@ -29,6 +29,7 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QCheckBox;
 class QLabel;
 class QLineEdit;
@@ -49,19 +50,32 @@ struct FrfDriveInfo {
     QString axis;
     model::ParameterValues values;
     std::optional<device::DriveLimits> limits; ///< the drive's own limits (Drive::limits); unset: unknown
+    std::optional<device::DriveCapabilities> capabilities; ///< Drive::capabilities; unset: unknown
     QString limitsError;                       ///< why the limits are unknown
+    /// The drive takes the FRF peak in its injection point's own units (hal:: the PID output's), not in % of rated
+    /// torque (DriveCapabilities::frfPeakInOutputUnits).
+    bool peakInOutputUnits() const { return capabilities && capabilities->frfPeakInOutputUnits; }
+    /// The signal whose units the peak is in (DriveCapabilities::frfOutputSignal, e.g. "pid.x.output").
+    QString outputSignal() const;
     /// The drive's FRF amplitude limit [% of rated torque] (NaN when unknown).
     double maxAmplitudePct() const;
+    /// The drive's FRF peak limit in the output's units (DriveLimits::frfPeakMax; NaN when unknown or not given).
+    double maxPeak() const;
+    /// Highest FRF frequency the drive measures, exclusive (DriveCapabilities::frfMaxHz; 0: no own limit).
+    double frfMaxHz() const { return capabilities ? capabilities->frfMaxHz : 0.0; }
     double ratedTorqueNm() const;  ///< motor.rated_current × motor.torque_constant (NaN when unknown)
     double traceRateHz() const;    ///< 1 / (trace.divider × velocity.period) (NaN when unknown)
 };
 
-/// Safety step: SafetyPage plus the excitation amplitude (wizard field "amplitudePct").
+/// Safety step: SafetyPage plus the excitation amplitude (wizard field "amplitudePct" in % of rated torque, or
+/// "amplitudePeak" in the output's units on a drive that takes the peak so, hal:).
 class FrfSafetyPage : public SafetyPage {
     Q_OBJECT
 public:
     explicit FrfSafetyPage(AppContext& ctx, QWidget* parent = nullptr);
     QDoubleSpinBox* amplitude() const { return m_amplitude; }
+    /// The peak in the output's units (shown instead of amplitude() when the drive takes it).
+    QDoubleSpinBox* amplitudePeak() const { return m_peak; }
     const FrfDriveInfo& driveInfo() const { return m_info; }
     void initializePage() override;
     /// Also waits for the drive values (the amplitude in N·m is shown before the confirmation counts).
@@ -80,8 +94,11 @@ private:
     int m_describeRequest = 0;
     int m_answersPending = 0;
     bool m_infoPending = false;
+    void showAmplitudeMode();
     QDoubleSpinBox* m_amplitude = nullptr;
+    QDoubleSpinBox* m_peak = nullptr;
     QLabel* m_amplitudeText = nullptr;
+    QFormLayout* m_form = nullptr;
 };
 
 /// Method and band (fields "method", "fminHz", "fmaxHz", "points") with the estimated motion time.
@@ -93,6 +110,9 @@ public:
     QDoubleSpinBox* fmin() const { return m_fmin; }
     QDoubleSpinBox* fmax() const { return m_fmax; }
     QSpinBox* points() const { return m_points; }
+    /// What the FRF reports, when the drive offers a choice (DriveCapabilities::frfQuantities; hidden otherwise).
+    QComboBox* quantity() const { return m_quantity; }
+    device::FrfQuantity selectedQuantity() const;
     /// Motion time of the planned test [s]; NaN while unknown or when the plan is refused.
     double estimatedMotionS() const { return m_motionS; }
     device::FrfMethod selectedMethod() const;
@@ -103,7 +123,10 @@ private:
     void updateEstimate();
     AppContext& m_ctx;
     const FrfSafetyPage& m_safety;
+    void offerMethods();
     QComboBox* m_method = nullptr;
+    QComboBox* m_quantity = nullptr;
+    QLabel* m_quantityLabel = nullptr;
     QDoubleSpinBox* m_fmin = nullptr;
     QDoubleSpinBox* m_fmax = nullptr;
     QSpinBox* m_points = nullptr;
@@ -128,8 +151,12 @@ class FrfResultPage : public QWizardPage {
     Q_OBJECT
 public:
     explicit FrfResultPage(QWidget* parent = nullptr);
-    /// The measured FRF to show (set by the wizard before the page is entered).
-    void setMeasurement(const dsp::FrequencyResponse& frf, device::FrfMethod method);
+    /// The measured FRF to show (set by the wizard before the page is entered); `frfMaxHz` the drive's highest
+    /// measurable frequency (0: none of its own), `outputSignal` what a peak in output units is in (may be empty).
+    void setMeasurement(const dsp::FrequencyResponse& frf, device::FrfMethod method, double frfMaxHz = 0.0,
+                        const QString& outputSignal = QString());
+    /// The measured quantity as its metadata say: "plant", "open-loop", or empty (the closed velocity loop).
+    QString quantity() const { return m_quantity; }
     widgets::BodePlot* bodePlot() const { return m_plot; }
     QTableWidget* resonanceTable() const { return m_table; }
     const dsp::FrequencyResponse& measured() const { return m_frf; }
@@ -145,6 +172,9 @@ private:
     dsp::FrequencyResponse m_frf;
     device::FrfMethod m_method = device::FrfMethod::MultiSweep;
     double m_fsHz = 0.0;
+    double m_frfMaxHz = 0.0;
+    QString m_quantity;
+    QString m_outputSignal;
     FrfAnalysis m_analysis;
     bool m_done = false;
     widgets::BodePlot* m_plot = nullptr;

@@ -7,6 +7,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/FrfWizard.h"
 #include "core/dsp/LoopAnalysis.h"
+#include "core/tuning/PositionPid.h"
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
 #include "widgets/BodePlot.h"
@@ -21,6 +22,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
@@ -28,6 +30,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <cmath>
+#include <complex>
 #include <limits>
 
 namespace axistune {
@@ -56,9 +59,23 @@ double FrfDriveInfo::maxAmplitudePct() const
     return limits ? limits->frfAmplitudeMaxPct : kNaN;
 }
 
+double FrfDriveInfo::maxPeak() const
+{
+    return limits && limits->frfPeakMax > 0.0 ? limits->frfPeakMax : kNaN;
+}
+
+QString FrfDriveInfo::outputSignal() const
+{
+    return capabilities ? QString::fromStdString(capabilities->frfOutputSignal) : QString();
+}
+
 double FrfDriveInfo::traceRateHz() const
 {
-    return 1.0 / (valueOr(values, "trace.divider", kNaN) * valueOr(values, "velocity.period", kNaN));
+    const double fs = 1.0 / (valueOr(values, "trace.divider", kNaN) * valueOr(values, "velocity.period", kNaN));
+    if (std::isfinite(fs))
+        return fs;
+    // A drive without those parameters (hal:: the servo thread's rate) states its trace rate itself.
+    return capabilities && capabilities->traceRateHz > 0.0 ? capabilities->traceRateHz : kNaN;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -67,14 +84,17 @@ double FrfDriveInfo::traceRateHz() const
 FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx, parent), m_ctx(ctx)
 {
     setObjectName("frfSafetyPage");
+    // The keys a drive has are shown (a LinuxCNC pid has the second row's).
     setLimitKeys({"motor.rated_current", "motor.torque_constant", "motor.max_current", "drive.max_voltage",
-                  "velocity.kp", "velocity.ki", "velocity.inertia", "trace.divider"});
+                  "velocity.kp", "velocity.ki", "velocity.inertia", "trace.divider", "maxoutput", "maxerror", "Pgain",
+                  "Igain", "Dgain"});
     setMotionDescription(
         tr("The axis holds velocity 0 in velocity mode while a small torque disturbance is added to the "
            "velocity-controller output. The axis vibrates with small amplitude at each test frequency; it does "
            "not travel. Abort stops the excitation at once and restores the parameters."));
     auto* row = new QWidget(this);
     auto* form = new QFormLayout(row);
+    m_form = form;
     form->setContentsMargins(0, 0, 0, 0);
     m_amplitude = new QDoubleSpinBox(row);
     m_amplitude->setObjectName("frfAmplitude");
@@ -84,6 +104,14 @@ FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx,
     m_amplitude->setValue(5.0);
     m_amplitude->setSuffix(tr(" % of rated torque"));
     form->addRow(tr("Excitation amplitude:"), m_amplitude);
+    m_peak = new QDoubleSpinBox(row);
+    m_peak->setObjectName("frfAmplitudePeak");
+    m_peak->setRange(0.0, 1e9); // above the drive's maximum: refused with a message, not clamped
+    m_peak->setDecimals(4);
+    m_peak->setSingleStep(0.01);
+    m_peak->setValue(0.0);      // set from the drive's limit when it is read
+    form->addRow(tr("Excitation peak:"), m_peak);
+    form->setRowVisible(m_peak, false);
     m_amplitudeText = new QLabel(row);
     m_amplitudeText->setObjectName("frfAmplitudeText");
     m_amplitudeText->setWordWrap(true);
@@ -92,11 +120,14 @@ FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx,
     if (auto* lay = qobject_cast<QVBoxLayout*>(layout()))
         lay->insertWidget(lay->count() - 1, row);
     registerField("amplitudePct", m_amplitude, "value", SIGNAL(valueChanged(double)));
-    connect(m_amplitude, &QDoubleSpinBox::valueChanged, this, [this] {
+    registerField("amplitudePeak", m_peak, "value", SIGNAL(valueChanged(double)));
+    auto amplitudeChanged = [this] {
         confirmation()->setChecked(false);  // a new amplitude needs a new confirmation
         showAmplitude();
         emit completeChanged();
-    });
+    };
+    connect(m_amplitude, &QDoubleSpinBox::valueChanged, this, amplitudeChanged);
+    connect(m_peak, &QDoubleSpinBox::valueChanged, this, amplitudeChanged);
     if (auto* axisBox = findChild<QComboBox*>())
         connect(axisBox, &QComboBox::currentTextChanged, this, [this] { readInfo(); });
     showAmplitude();
@@ -124,11 +155,13 @@ void FrfSafetyPage::readInfo()
                 m_info.values = r.ok ? r.values : model::ParameterValues{};
             } else {
                 m_info.limits = r.ok ? r.limits : std::nullopt;
+                m_info.capabilities = r.ok ? r.capabilities : std::nullopt;
                 m_info.limitsError = r.ok ? QString() : r.error;
             }
             if (--m_answersPending > 0)
                 return;
             m_infoPending = false;
+            showAmplitudeMode();
             showAmplitude();
             emit driveInfoChanged();
             emit completeChanged();
@@ -143,8 +176,63 @@ void FrfSafetyPage::readInfo()
     emit completeChanged();
 }
 
+void FrfSafetyPage::showAmplitudeMode()
+{
+    const bool peak = m_info.peakInOutputUnits();
+    m_form->setRowVisible(m_amplitude, !peak);
+    m_form->setRowVisible(m_peak, peak);
+    if (!peak) {
+        setMotionDescription(
+            tr("The axis holds velocity 0 in velocity mode while a small torque disturbance is added to the "
+               "velocity-controller output. The axis vibrates with small amplitude at each test frequency; it does "
+               "not travel. Abort stops the excitation at once and restores the parameters."));
+        return;
+    }
+    const QString signal = m_info.outputSignal();
+    m_peak->setSuffix(tr(" (units of %1)").arg(signal));
+    const double maxPeak = m_info.maxPeak();
+    // A fifth of the drive's limit to start with (hal:: a tenth of maxoutput), in the output's own units.
+    if (std::isfinite(maxPeak) && (m_peak->value() <= 0.0 || m_peak->value() > maxPeak)) {
+        const QSignalBlocker block(m_peak);
+        m_peak->setDecimals(std::clamp(3 - static_cast<int>(std::floor(std::log10(maxPeak))), 2, 9));
+        const double v = 0.2 * maxPeak;
+        const double step = std::pow(10.0, std::floor(std::log10(v)) - 1.0); // two significant digits
+        m_peak->setValue(std::floor(v / step) * step);
+    }
+    setMotionDescription(tr("The NC keeps closing its position loop while a small multisine is added to %1, the "
+                            "drive's input, at every servo period. The axis vibrates with small amplitude about "
+                            "where it stands; it does not travel. A following error above the limit or Abort stops "
+                            "the excitation at once, and what AxisTune inserted into the machine is removed.")
+                             .arg(signal));
+}
+
 void FrfSafetyPage::showAmplitude()
 {
+    if (m_info.peakInOutputUnits()) {
+        const double peak = m_peak->value();
+        const double maxPeak = m_info.maxPeak();
+        const QString signal = m_info.outputSignal();
+        if (!std::isfinite(maxPeak)) {
+            m_amplitudeText->setText(tr("<span style='color:#b00000'>The drive states no limit for the peak in the "
+                                        "units of %1: no test.</span>")
+                                         .arg(signal.toHtmlEscaped()));
+        } else if (!(peak > 0.0)) {
+            m_amplitudeText->setText(tr("<span style='color:#b00000'>Refused: the peak must be above 0.</span>"));
+        } else if (peak > maxPeak) {
+            m_amplitudeText->setText(tr("<span style='color:#b00000'>Refused: the drive allows a peak of at most %1 "
+                                        "in the units of %2.</span>")
+                                         .arg(maxPeak, 0, 'g', 4)
+                                         .arg(signal.toHtmlEscaped()));
+        } else {
+            m_amplitudeText->setText(tr("Peak %1 of the injected signal, in the units of %2 (the drive allows at "
+                                        "most %3, %4 % of its output limit).")
+                                         .arg(peak, 0, 'g', 4)
+                                         .arg(signal)
+                                         .arg(maxPeak, 0, 'g', 4)
+                                         .arg(m_info.maxAmplitudePct(), 0, 'g', 3));
+        }
+        return;
+    }
     const double pct = m_amplitude->value();
     const double maxPct = m_info.maxAmplitudePct();
     if (!m_infoPending && !m_info.axis.isEmpty() && !std::isfinite(maxPct)) {
@@ -178,6 +266,9 @@ void FrfSafetyPage::showAmplitude()
 bool FrfSafetyPage::isComplete() const
 {
     // An unknown limit (NaN) fails the comparison: the drive must state it before the test is offered.
+    if (m_info.peakInOutputUnits())
+        return SafetyPage::isComplete() && !m_infoPending && m_peak->value() > 0.0 &&
+               m_peak->value() <= m_info.maxPeak();
     return SafetyPage::isComplete() && !m_infoPending && m_amplitude->value() <= m_info.maxAmplitudePct();
 }
 
@@ -194,11 +285,12 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
     auto* form = new QFormLayout;
     m_method = new QComboBox(this);
     m_method->setObjectName("frfMethod");
-    m_method->addItem(tr("Multi-sweep sine stream (valid up to the trace rate)"), int(device::FrfMethod::MultiSweep));
-    m_method->addItem(tr("Conventional sine stream (valid up to half the trace rate)"), int(device::FrfMethod::Conventional));
-    m_method->addItem(tr("PRBS with Welch averaging and coherence (up to half the trace rate)"), int(device::FrfMethod::Prbs));
-    m_method->addItem(tr("Multisine, all lines at once (valid up to the trace rate)"), int(device::FrfMethod::Multisine));
     form->addRow(tr("Method:"), m_method);
+    m_quantity = new QComboBox(this);
+    m_quantity->setObjectName("frfQuantity");
+    m_quantityLabel = new QLabel(tr("Measured quantity:"), this);
+    form->addRow(m_quantityLabel, m_quantity);
+    offerMethods();
     m_fmin = new QDoubleSpinBox(this);
     m_fmin->setObjectName("frfFmin");
     m_fmin->setRange(0.1, 100000.0);
@@ -239,10 +331,12 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
         updateEstimate();
     };
     connect(m_method, &QComboBox::currentIndexChanged, this, changed);
+    connect(m_quantity, &QComboBox::currentIndexChanged, this, changed);
     connect(m_fmin, &QDoubleSpinBox::valueChanged, this, changed);
     connect(m_fmax, &QDoubleSpinBox::valueChanged, this, changed);
     connect(m_points, &QSpinBox::valueChanged, this, changed);
     connect(&m_safety, &FrfSafetyPage::driveInfoChanged, this, [this, changed] {
+        offerMethods();
         if (wizard() && wizard()->currentPage() == this)
             changed();
     });
@@ -253,10 +347,63 @@ device::FrfMethod FrfConfigPage::selectedMethod() const
     return static_cast<device::FrfMethod>(m_method->currentData().toInt());
 }
 
+device::FrfQuantity FrfConfigPage::selectedQuantity() const
+{
+    return m_quantity->count() > 0 ? static_cast<device::FrfQuantity>(m_quantity->currentData().toInt())
+                                   : device::FrfQuantity::Default;
+}
+
+void FrfConfigPage::offerMethods()
+{
+    // The methods and quantities the drive advertises (Drive::capabilities); all methods while they are unknown.
+    const auto& caps = m_safety.driveInfo().capabilities;
+    const QSignalBlocker blockMethod(m_method);
+    const QSignalBlocker blockQuantity(m_quantity);
+    const int keep = m_method->currentIndex() >= 0 ? m_method->currentData().toInt() : -1;
+    m_method->clear();
+    const std::pair<device::FrfMethod, QString> methods[] = {
+        {device::FrfMethod::MultiSweep, tr("Multi-sweep sine stream (valid up to the trace rate)")},
+        {device::FrfMethod::Conventional, tr("Conventional sine stream (valid up to half the trace rate)")},
+        {device::FrfMethod::Prbs, tr("PRBS with Welch averaging and coherence (up to half the trace rate)")},
+        {device::FrfMethod::Multisine, tr("Multisine, all lines at once (valid up to the trace rate)")},
+    };
+    for (const auto& [m, text] : methods)
+        if (!caps || caps->offers(m))
+            m_method->addItem(text, int(m));
+    if (const int i = m_method->findData(keep); i >= 0)
+        m_method->setCurrentIndex(i);
+    const int keepQuantity = m_quantity->currentIndex() >= 0 ? m_quantity->currentData().toInt() : -1;
+    m_quantity->clear();
+    if (caps)
+        for (auto q : caps->frfQuantities) {
+            if (q == device::FrfQuantity::Plant)
+                m_quantity->addItem(tr("Plant: feedback / drive input"), int(q));
+            else if (q == device::FrfQuantity::OpenLoop)
+                m_quantity->addItem(tr("Open loop with the running gains: −controller output / drive input"), int(q));
+        }
+    if (const int i = m_quantity->findData(keepQuantity); i >= 0)
+        m_quantity->setCurrentIndex(i);
+    m_quantity->setVisible(m_quantity->count() > 0);
+    m_quantityLabel->setVisible(m_quantity->count() > 0);
+}
+
 void FrfConfigPage::initializePage()
 {
+    offerMethods();
     const double fs = m_safety.driveInfo().traceRateHz();
-    if (std::isfinite(fs)) {
+    const double frfMax = m_safety.driveInfo().frfMaxHz();
+    if (frfMax > 0.0) {
+        // The drive's own limit (hal:: lines below half the servo rate): the default band ends at 90 % of it.
+        m_validity->setText(tr("Trace rate fs = %1 Hz. This drive measures lines below %2 Hz only; the band must end "
+                               "below that.")
+                                .arg(fs, 0, 'f', 0)
+                                .arg(frfMax, 0, 'f', 0));
+        if (m_fmax->value() >= frfMax)
+            m_fmax->setValue(std::floor(0.9 * frfMax));
+        if (m_method->count() == 0)
+            m_validity->setText(m_validity->text() + QLatin1Char(' ') +
+                                tr("<span style='color:#b00000'>The drive offers no FRF method on this axis.</span>"));
+    } else if (std::isfinite(fs)) {
         m_validity->setText(tr("Trace rate fs = %1 Hz. The multi-sweep and multisine methods measure up to fs; the "
                                "conventional sine stream and PRBS only up to fs/2 = %2 Hz (points above are marked "
                                "not valid).")
@@ -353,10 +500,15 @@ FrfResultPage::FrfResultPage(QWidget* parent) : QWizardPage(parent)
     });
 }
 
-void FrfResultPage::setMeasurement(const dsp::FrequencyResponse& frf, device::FrfMethod method)
+void FrfResultPage::setMeasurement(const dsp::FrequencyResponse& frf, device::FrfMethod method, double frfMaxHz,
+                                   const QString& outputSignal)
 {
     m_frf = frf;
     m_method = method;
+    m_frfMaxHz = frfMaxHz;
+    m_outputSignal = outputSignal;
+    const auto q = frf.metadata.find("quantity");
+    m_quantity = q == frf.metadata.end() ? QString() : QString::fromStdString(q->second);
     m_done = false;
     m_analysis = {};
     // The rate only draws the validity bands and the note under the plot: 0 (unknown) when unreadable.
@@ -374,7 +526,26 @@ void FrfResultPage::initializePage()
         m_summary->setText(tr("No frequency response was measured."));
         return;
     }
-    m_plot->addResponse(m_frf, tr("Measured"));
+    // The quantity and its units as the drive's metadata name them (hal:: the plant or the open position loop).
+    const QString signal = m_outputSignal.isEmpty() ? tr("the drive input") : m_outputSignal;
+    if (m_quantity == QLatin1String("plant")) {
+        setSubTitle(tr("The measured plant: feedback per unit of drive input (%1 plus the injection), where it is "
+                       "valid, and the resonances found.")
+                        .arg(signal));
+        m_plot->setMagnitudeTitle(tr("Plant [dB re 1 position unit per output unit]"));
+    } else if (m_quantity == QLatin1String("open-loop")) {
+        setSubTitle(tr("The measured open position loop with the running gains: −controller output / drive input "
+                       "(dimensionless), where it is valid, and the resonances found."));
+        m_plot->setMagnitudeTitle(tr("Open loop |L| [dB]"));
+    } else {
+        setSubTitle(tr("The measured closed velocity loop, where it is valid, and the resonances found."));
+        m_plot->setMagnitudeTitle(QString());
+    }
+    m_table->setHorizontalHeaderItem(
+        3, new QTableWidgetItem(m_quantity.isEmpty() ? tr("Open-loop gain [dB]") : tr("Level of the analysed response [dB]")));
+    m_plot->addResponse(m_frf, m_quantity == QLatin1String("plant")       ? tr("Measured plant")
+                               : m_quantity == QLatin1String("open-loop") ? tr("Measured open loop")
+                                                                            : tr("Measured"));
     addBands();
     m_plot->setFrequencyRange(m_frf.freqHz.front() / 1.15, m_frf.freqHz.back() * 1.15);
     m_summary->setText(tr("Analysing…"));
@@ -391,6 +562,34 @@ void FrfResultPage::initializePage()
         a.analysedForm = complementary
                              ? QCoreApplication::translate("FrfResultPage", "the open loop L = T/(1−T) of the measured T")
                              : QCoreApplication::translate("FrfResultPage", "the measured response");
+        const auto q = frf.metadata.find("quantity");
+        if (q != frf.metadata.end() && q->second == "plant") {
+            // A plant falls as its rigid body (f⁻² under torque, f⁻¹ under a velocity command), with an anti-resonance
+            // before each resonance: its resonance is the peak of |P|·ω^order above the median of the band, as
+            // pid-tune reads it (tuning::plantResonance), not an outlier of a local baseline.
+            std::vector<double> f;
+            std::vector<std::complex<double>> h;
+            for (std::size_t i = 0; i < frf.size(); ++i)
+                if (i >= frf.valid.size() || frf.valid[i]) {
+                    f.push_back(frf.freqHz[i]);
+                    h.push_back(frf.h[i]);
+                }
+            auto input = tuning::driveInputFromSlope(f, h);
+            if (!input) {
+                a.error = QString::fromStdString(input.error().detail);
+                return a;
+            }
+            a.analysedForm = *input == tuning::DriveInput::Torque
+                                 ? QCoreApplication::translate("FrfResultPage",
+                                                               "|plant|·ω² (flat for the rigid body of a torque drive; "
+                                                               "its peak at least 6 dB above its median)")
+                                 : QCoreApplication::translate("FrfResultPage",
+                                                               "|plant|·ω (flat for a velocity drive; its peak at least "
+                                                               "6 dB above its median)");
+            if (auto r = tuning::plantResonance(f, h, *input, 0.0))
+                a.resonances.push_back(*r);
+            return a;
+        }
         tuning::ResonanceOptions o;
         o.fminHz = frf.freqHz.front();
         o.fmaxHz = frf.freqHz.back();
@@ -409,7 +608,11 @@ void FrfResultPage::addBands()
 {
     const auto& f = m_frf.freqHz;
     const double top = f.back() * 1.15;
-    if (m_fsHz > 0.0) {
+    if (m_frfMaxHz > 0.0) {
+        // The drive measures nothing from its own limit up (hal:: half the servo rate), by any method.
+        if (top > m_frfMaxHz)
+            m_plot->addBand(m_frfMaxHz, std::max(top, 2.0 * m_frfMaxHz), widgets::BodePlot::BandKind::NotMeasurable);
+    } else if (m_fsHz > 0.0) {
         if (top > m_fsHz / 2.0)
             m_plot->addBand(m_fsHz / 2.0, m_fsHz, widgets::BodePlot::BandKind::MultiSweepOnly);
         if (top > m_fsHz)
@@ -443,6 +646,15 @@ void FrfResultPage::showAnalysis()
     for (bool v : m_frf.valid)
         valid += v ? 1 : 0;
     QString text = tr("%1 of %2 points valid.").arg(valid).arg(m_frf.size());
+    const QString signal = m_outputSignal.isEmpty() ? tr("the drive input") : m_outputSignal;
+    if (m_quantity == QLatin1String("plant"))
+        text = tr("Plant in the feedback's position units per unit of %1 (the configuration's units, e.g. mm per "
+                  "N·m).")
+                   .arg(signal) +
+               QLatin1Char(' ') + text;
+    else if (m_quantity == QLatin1String("open-loop"))
+        text = tr("Open position loop, dimensionless (controller output per unit of %1).").arg(signal) +
+               QLatin1Char(' ') + text;
     if (m_fsHz > 0.0)
         text += QLatin1Char(' ') + tr("Trace rate fs = %1 Hz.").arg(m_fsHz, 0, 'f', 0);
     if (!m_analysis.error.isEmpty()) {

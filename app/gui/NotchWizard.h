@@ -112,6 +112,9 @@ public:
 
 private:
     void onParameters(const axistune::gui::DriveReply& r);
+    void readDrive();
+    void startOffline();
+    void showRefusal(const QString& why);
     void startAnalysis();
     void showAnalysis();
     void fillTable();
@@ -201,6 +204,9 @@ public:
     double execRateHz() const { return m_execRateHz; }
     double traceRateHz() const { return m_traceRateHz; }
     bool safetyConfirmed() const { return m_safetyConfirmed; }
+    /// Why this wizard cannot apply notches on the connected axis (a position PID the NC closes, hal:); empty: it can.
+    QString ncPidRefusal() const { return m_ncPidRefusal; }
+    void setNcPidRefusal(const QString& why) { m_ncPidRefusal = why; }
     bool saved() const { return m_savedId > 0; }
     qint64 savedSessionId() const { return m_savedId; }
     bool savedAborted() const { return m_savedAborted; }
@@ -272,6 +278,7 @@ private:
     qint64 m_savedId = 0;
     bool m_savedAborted = false;
     QString m_abortReason;
+    QString m_ncPidRefusal;
 };
 
 }  // namespace gui

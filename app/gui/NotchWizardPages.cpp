@@ -206,7 +206,24 @@ NotchSourcePage::NotchSourcePage(NotchWizard& wizard, AppContext& ctx) : QWizard
     connect(m_sessions, &QListWidget::currentRowChanged, this, &QWizardPage::completeChanged);
 }
 
-void NotchSourcePage::initializePage() { fillSessions(); }
+void NotchSourcePage::initializePage()
+{
+    fillSessions();
+    m_measure->setEnabled(true);
+    const QStringList axes = m_ctx.axes();
+    if (!m_ctx.drive().isConnected() || axes.isEmpty())
+        return;
+    // A position PID the NC closes (hal:) has no notch slots: say so here, before anything is measured.
+    checkNcPositionPid(m_ctx, axes.front(), this, NcPidRefusal::Notch, [this](const QString& why) {
+        m_wizard.setNcPidRefusal(why);
+        if (why.isEmpty())
+            return;
+        m_measure->setEnabled(false);
+        m_session->setChecked(true);
+        m_note->setText(QStringLiteral("<span style='color:#b00000'>%1</span>").arg(why.toHtmlEscaped()));
+        emit completeChanged();
+    });
+}
 
 void NotchSourcePage::fillSessions()
 {
@@ -391,14 +408,49 @@ void NotchProposePage::initializePage()
     }
     if (m_wizard.axis().isEmpty())
         m_wizard.setAxis(field("axis").toString());
-    if (m_ctx.drive().isConnected() && m_ctx.axes().contains(m_wizard.axis())) {
-        m_status->setText(tr("Reading the existing filters and the execution rate of axis %1…").arg(m_wizard.axis()));
-        m_readRequest =
-            connectReply(m_ctx.drive().readParameters(m_wizard.axis()), this, &NotchProposePage::onParameters);
+    if (m_ctx.drive().isConnected() && !m_ctx.axes().isEmpty()) {
+        // First what the axis is: a position PID the NC closes (hal:) gets no proposal to apply, and says why.
+        const QString axis = m_ctx.axes().contains(m_wizard.axis()) ? m_wizard.axis() : m_ctx.axes().front();
+        m_status->setText(tr("Asking the drive what axis %1 is…").arg(axis));
         m_busy = true;
         emit completeChanged();
+        checkNcPositionPid(m_ctx, axis, this, NcPidRefusal::Notch, [this](const QString& why) {
+            m_wizard.setNcPidRefusal(why);
+            if (!why.isEmpty())
+                showRefusal(why);
+            else
+                readDrive();
+        });
         return;
     }
+    if (m_ctx.drive().isConnected())
+        readDrive();
+    else
+        startOffline();
+}
+
+void NotchProposePage::showRefusal(const QString& why)
+{
+    m_busy = false;
+    m_status->setText(QStringLiteral("<span style='color:#b00000'>%1</span>").arg(why.toHtmlEscaped()));
+    m_measuredId = m_plot->addResponse(m_wizard.measured(), tr("Measured"));
+    emit completeChanged();
+}
+
+void NotchProposePage::readDrive()
+{
+    if (!m_ctx.axes().contains(m_wizard.axis())) {
+        startOffline();
+        return;
+    }
+    m_status->setText(tr("Reading the existing filters and the execution rate of axis %1…").arg(m_wizard.axis()));
+    m_readRequest = connectReply(m_ctx.drive().readParameters(m_wizard.axis()), this, &NotchProposePage::onParameters);
+    m_busy = true;
+    emit completeChanged();
+}
+
+void NotchProposePage::startOffline()
+{
     m_status->setText(tr("Not connected to axis %1: execution rate %2 Hz assumed, existing filters unknown.")
                           .arg(m_wizard.axis())
                           .arg(m_wizard.execRateHz()));

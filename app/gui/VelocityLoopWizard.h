@@ -94,12 +94,17 @@ public:
     QDoubleSpinBox* inertia() const { return m_jm; }
     QDoubleSpinBox* bandwidth() const { return m_wl; }
     QDoubleSpinBox* gainFactor() const { return m_k; }
+    /// Why this wizard refuses the chosen axis (empty: it does not).
+    QString refusal() const { return m_refusalText; }
 
 private:
     void modelSessionChosen();
+    void checkAxis();
     AppContext& m_ctx;
     VelocityLoopData& m_d;
     QComboBox* m_axis = nullptr;
+    QLabel* m_refusal = nullptr; ///< why the axis cannot be tuned here (a position PID the NC closes, hal:)
+    QString m_refusalText;
     QRadioButton* m_inertiaMethod = nullptr;
     QRadioButton* m_frfMethod = nullptr;
     QComboBox* m_modelSessions = nullptr;

@@ -26,6 +26,7 @@
 #include <QRadioButton>
 #include <QSplitter>
 #include <QTableWidget>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -70,6 +71,13 @@ VelocityLoopSourcePage::VelocityLoopSourcePage(AppContext& ctx, VelocityLoopData
     top->addWidget(new QLabel(tr("Axis:"), this));
     top->addWidget(m_axis, 1);
     lay->addLayout(top);
+    m_refusal = new QLabel(this);
+    m_refusal->setObjectName("vlRefusal");
+    m_refusal->setWordWrap(true);
+    m_refusal->setStyleSheet("color: #b00000");
+    m_refusal->hide();
+    lay->addWidget(m_refusal);
+    connect(m_axis, &QComboBox::currentTextChanged, this, [this] { checkAxis(); });
     auto* methods = new QButtonGroup(this);
     m_inertiaMethod = new QRadioButton(tr("From the fitted inertia: K_P = k·√2·ω_l·J_m, K_I = k·ω_l²·J_m"), this);
     m_inertiaMethod->setObjectName("vlInertiaMethod");
@@ -132,10 +140,28 @@ VelocityLoopSourcePage::VelocityLoopSourcePage(AppContext& ctx, VelocityLoopData
     connect(m_modelSessions, &QComboBox::currentIndexChanged, this, &VelocityLoopSourcePage::modelSessionChosen);
 }
 
+void VelocityLoopSourcePage::checkAxis()
+{
+    m_refusalText.clear();
+    m_refusal->hide();
+    emit completeChanged();
+    // A position PID the NC closes (hal:, linuxcnc:) has no drive velocity loop: refused here, naming its tuner.
+    checkNcPositionPid(m_ctx, m_axis->currentText(), this, NcPidRefusal::VelocityLoop, [this](const QString& why) {
+        m_refusalText = why;
+        m_refusal->setText(why);
+        m_refusal->setVisible(!why.isEmpty());
+        emit completeChanged();
+    });
+}
+
 void VelocityLoopSourcePage::initializePage()
 {
-    m_axis->clear();
-    m_axis->addItems(m_ctx.axes());
+    {
+        const QSignalBlocker block(m_axis);
+        m_axis->clear();
+        m_axis->addItems(m_ctx.axes());
+    }
+    checkAxis();
     const QSignalBlocker b(m_modelSessions);
     m_modelSessions->clear();
     m_modelSessions->addItem(tr("entered below"), QVariant::fromValue<qint64>(0));
@@ -198,6 +224,8 @@ void VelocityLoopSourcePage::modelSessionChosen()
 
 bool VelocityLoopSourcePage::isComplete() const
 {
+    if (!m_refusalText.isEmpty())
+        return false;
     if (m_frfMethod->isChecked())
         return m_measure->isChecked() ? m_ctx.drive().isConnected() : m_frfSessions->currentIndex() >= 0;
     return true;

@@ -166,8 +166,7 @@ Result<AutoTuneResult> Sequence::run()
     // An axis whose position loop the NC closes with a PID (hal:, linuxcnc:: its FRF reports the plant and the open
     // position loop in the PID output's units) has no drive velocity loop for this sequence to tune: its one-button
     // tuner is pid-tune (docs/linuxcnc.md "Tuning from the command line").
-    if (m_caps.frfPeakInOutputUnits && std::find(m_caps.frfQuantities.begin(), m_caps.frfQuantities.end(),
-                                                 device::FrfQuantity::OpenLoop) != m_caps.frfQuantities.end())
+    if (device::isNcPositionPid(m_caps))
         return makeError(ErrorCode::BadInput,
                          "axis " + axis +
                              " is a position PID the NC closes (no drive velocity loop to tune): use axistune-cli "

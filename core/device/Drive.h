@@ -145,6 +145,11 @@ struct DriveCapabilities {
     /// the configuration's, e.g. mm), held for durationS and stepped back; false: a motor velocity step [rad/s].
     bool stepIsPositionStep = false;
     std::vector<FrfQuantity> frfQuantities; ///< quantities besides Default an FRF test can report (hal:: plant, open loop)
+    /// frfPeakInOutputUnits: the signal whose units the peak is in (hal:: "pid.x.output"); empty otherwise.
+    std::string frfOutputSignal;
+    /// Highest frequency an FRF line may have [Hz], exclusive (hal:: half the servo rate, where a line would fold);
+    /// 0: no limit of the drive's own (the methods' validity up to traceRateHz applies).
+    double frfMaxHz = 0.0;
     bool scope = false;                ///< the scope answers (Drive::scopeCapabilities, armScope; docs/scope.md)
 
     bool offers(TestType t) const;
@@ -154,6 +159,9 @@ struct DriveCapabilities {
 /// The limits a drive enforces on one axis before a test starts; +infinity: no limit of its own.
 struct DriveLimits {
     double frfAmplitudeMaxPct = 0.0;      ///< FRF excitation (multisine: its peak) [% of rated torque]
+    /// DriveCapabilities::frfPeakInOutputUnits: the largest FRF peak in those units (hal:: half of the pid's
+    /// maxoutput); 0 otherwise.
+    double frfPeakMax = 0.0;
     double currentStepMaxA = 0.0;         ///< largest q-axis current step [A]
     double currentStepMaxS = 0.0;         ///< longest current-step record [s]
     double currentStepMaxSpeedRadS = 0.0; ///< motor speed a current step may reach [rad/s]
@@ -161,6 +169,11 @@ struct DriveLimits {
     double testDurationMaxS = 0.0;        ///< step, hold and current-step record, jog dwell [s]
     double travelWindow = 0.0;            ///< |position| of jog targets and circles [m or rad]
 };
+
+/// The axis is a position loop the NC closes with a PID around the drive (hal:, linuxcnc:): its FRF reports the plant
+/// and the open position loop in the PID output's units, and there is no drive velocity loop or notch slot to tune; its
+/// tuner is `axistune-cli pid-tune` (docs/linuxcnc.md).
+bool isNcPositionPid(const DriveCapabilities& caps);
 
 /// What a test request will do, before it runs (Drive::planTest).
 struct TestPlan {

@@ -153,4 +153,10 @@ bool DriveCapabilities::offers(FrfMethod m) const
     return offers(TestType::Frf) && std::find(frfMethods.begin(), frfMethods.end(), m) != frfMethods.end();
 }
 
+bool isNcPositionPid(const DriveCapabilities& caps)
+{
+    return caps.frfPeakInOutputUnits &&
+           std::find(caps.frfQuantities.begin(), caps.frfQuantities.end(), FrfQuantity::OpenLoop) != caps.frfQuantities.end();
+}
+
 } // namespace axistune::device

@@ -129,6 +129,54 @@ std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const 
     return f[static_cast<std::size_t>(peak - v.begin())];
 }
 
+std::optional<Resonance> plantResonance(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
+                                        DriveInput input, double aboveHz, double minRiseDb)
+{
+    const auto at = plantResonanceHz(freqHz, plant, input, aboveHz, minRiseDb);
+    if (!at)
+        return std::nullopt;
+    std::vector<double> f, level;
+    for (std::size_t k = 0; k < freqHz.size() && k < plant.size(); ++k) {
+        if (!(freqHz[k] > aboveHz))
+            continue;
+        const double w = kTwoPi * freqHz[k];
+        const double x = std::abs(plant[k]) * (input == DriveInput::Torque ? w * w : w);
+        if (!std::isfinite(x) || !(x > 0.0))
+            continue;
+        f.push_back(freqHz[k]);
+        level.push_back(20.0 * std::log10(x));
+    }
+    const auto peak = static_cast<std::size_t>(std::find(f.begin(), f.end(), *at) - f.begin());
+    std::vector<double> sorted = level;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+    Resonance r;
+    r.freqHz = *at;
+    r.levelDb = level[peak];
+    r.baselineDb = sorted[sorted.size() / 2];
+    r.peakDb = r.levelDb - r.baselineDb;
+    r.index = peak;
+    // The −3 dB points, interpolated linearly in f between the lines that bracket them.
+    const double cut = r.levelDb - 3.0;
+    std::optional<double> lo, hi;
+    for (std::size_t k = peak; k-- > 0;)
+        if (level[k] < cut) {
+            lo = f[k] + (cut - level[k]) / (level[k + 1] - level[k]) * (f[k + 1] - f[k]);
+            break;
+        }
+    for (std::size_t k = peak + 1; k < level.size(); ++k)
+        if (level[k] < cut) {
+            hi = f[k - 1] + (level[k - 1] - cut) / (level[k - 1] - level[k]) * (f[k] - f[k - 1]);
+            break;
+        }
+    if (lo && hi) {
+        r.widthHz = *hi - *lo;
+    } else if (lo || hi) {
+        r.widthHz = 2.0 * (lo ? r.freqHz - *lo : *hi - r.freqHz);
+        r.widthOneSided = true;
+    }
+    return r;
+}
+
 Result<std::vector<std::complex<double>>> effectivePlant(const std::vector<double>& freqHz,
                                                          const std::vector<std::complex<double>>& openLoop,
                                                          const PositionPid& running, double periodS)

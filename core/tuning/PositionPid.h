@@ -15,6 +15,8 @@
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Result.h"
 
+#include "core/tuning/Resonance.h"
+
 #include <complex>
 #include <optional>
 #include <string>
@@ -96,6 +98,13 @@ struct PositionPidDesign {
 /// same quantity over the lines above `aboveHz`; nullopt when there is none (or fewer than 5 lines there).
 std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
                                        DriveInput input, double aboveHz, double minRiseDb = 6.0);
+
+/// plantResonanceHz with what a resonance table shows, on L(f) = 20·log10(|P|·ω^order) (order 2 torque, 1 velocity):
+/// freqHz the peak line, levelDb L there, baselineDb the median of L over the lines above `aboveHz`, peakDb the rise
+/// above it, widthHz between the lines where L first falls 3 dB below the peak on each side (twice the one half
+/// found, widthOneSided, when the band ends first); nullopt as plantResonanceHz.
+std::optional<Resonance> plantResonance(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
+                                        DriveInput input, double aboveHz, double minRiseDb = 6.0);
 
 /// The highest crossover at which a PID meets both margins over every measured line. Errors: too few lines, a
 /// non-finite line, no crossover that meets the margins (the reason says which margin failed where).

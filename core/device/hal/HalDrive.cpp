@@ -425,15 +425,19 @@ Result<DriveCapabilities> HalDrive::capabilities(const std::string& axis)
     c.stepIsPositionStep = true;
     c.scope = true;
     c.frfQuantities = {FrfQuantity::Plant, FrfQuantity::OpenLoop};
+    c.frfOutputSignal = a->pid + ".output";
+    c.frfMaxHz = 0.5 * c.traceRateHz; // planHalFrf: every line below half the servo rate
     return c;
 }
 
 Result<DriveLimits> HalDrive::limits(const std::string& axis)
 {
-    if (auto st = checkAxis(axis); !st)
-        return st.error();
+    auto a = discoverAxis(m_options, axis);
+    if (!a)
+        return a.error();
     DriveLimits l;
     l.frfAmplitudeMaxPct = kMaxAmplitudePct;
+    l.frfPeakMax = kMaxAmplitudePct / 100.0 * a->maxOutput; // planHalFrf's limit; 0 when maxoutput is 0 (no test)
     l.testDurationMaxS = kMaxTestS;
     return l;
 }

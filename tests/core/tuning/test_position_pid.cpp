@@ -201,4 +201,17 @@ TEST(PlantResonance, FindsTheModeOfATwoMassPlantAndNoneOnARigidBody)
     ASSERT_TRUE(r.has_value());
     EXPECT_NEAR(*r, 120.0, 1.0);
     EXPECT_FALSE(tuning::plantResonanceHz(f, rigid, tuning::DriveInput::Torque, 20.0).has_value());
+    // With what the GUI's resonance table shows: the −3 dB width of a lightly damped mode is its half-power bandwidth
+    // 2ζ·f_r = 4.8 Hz (within 0.5 Hz: the lines are 1 Hz apart, interpolated linearly); the rise above the median of
+    // the lines, which lie at or above the high-frequency asymptote, is at most the peak over that asymptote,
+    // (1 − (f_a/f_r)²)/(2ζ) = 13.9 (22.85 dB).
+    const auto full = tuning::plantResonance(f, twoMass, tuning::DriveInput::Torque, 20.0);
+    ASSERT_TRUE(full.has_value());
+    EXPECT_EQ(full->freqHz, *r);
+    EXPECT_NEAR(full->widthHz, 2.0 * zr * 120.0, 0.5);
+    EXPECT_FALSE(full->widthOneSided);
+    EXPECT_GT(full->peakDb, 6.0);
+    EXPECT_LE(full->peakDb, 20.0 * std::log10((1.0 - std::pow(80.0 / 120.0, 2)) / (2.0 * zr)) + 0.01);
+    EXPECT_NEAR(full->levelDb - full->baselineDb, full->peakDb, 1e-12);
+    EXPECT_FALSE(tuning::plantResonance(f, rigid, tuning::DriveInput::Torque, 20.0).has_value());
 }

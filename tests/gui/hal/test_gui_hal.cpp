@@ -1,0 +1,297 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The GUI's wizards on LinuxCNC's HAL (issue 17 item 6, docs/linuxcnc.md "The wizards on hal:"): each test starts the
+// repository's test machine through the fixture (tests/linuxcnc/HalTestbed.h: scripts/hal-testbed under the machine-wide
+// lock), connects an AppContext to hal: and drives the wizards as a user would, offscreen.
+//
+// Expected numbers come from outside the code under test: the plant's exact discrete-time response computed from the
+// component's own update equations and its pins (HalTestbed.h exactResponse, read with halcmd getp), the output limit
+// read with halcmd getp, and the drive's documented plan (one settling period and three averaged periods of the
+// multisine, docs/linuxcnc.md "The hal: connection").
+// First: HAL's headers use the name "signals", which Qt defines as a macro.
+#include "tests/linuxcnc/HalTestbed.h"
+
+#include "app/gui/AppContext.h"
+#include "app/gui/FrfWizard.h"
+#include "app/gui/NotchWizard.h"
+#include "app/gui/VelocityLoopWizard.h"
+
+#include "core/device/Drive.h"
+#include "core/dsp/FrequencyResponse.h"
+#include "tests/gui/GuiTestUtil.h"
+#include "widgets/BodePlot.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QPointer>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTemporaryDir>
+
+#include <cmath>
+#include <complex>
+
+using namespace axistune;
+using axistune::gui::FrfWizard;
+using axistune::testing::halText;
+using axistune::testing::maybeScreenshot;
+using axistune::testing::netsOf;
+using axistune::testing::waitUntil;
+
+namespace {
+
+class GuiOnHal : public axistune::testing::HalTestbed {
+protected:
+    /// Starts the test machine (1 kHz servo thread) and connects `ctx` to hal: as the app does (AXISTUNE_HALCMD).
+    void connectBed(gui::AppContext& ctx)
+    {
+        startBed(1000000);
+        if (HasFatalFailure())
+            return;
+        qputenv("AXISTUNE_HALCMD", QByteArray::fromStdString(axistune::testing::kScript + " halcmd"));
+        m_sig = halText({"-s", "show", "sig"});
+        m_funct = halText({"-s", "show", "funct"});
+        ASSERT_TRUE(m_tmp.isValid());
+        ASSERT_TRUE(ctx.openDatabase(m_tmp.filePath("hal.db")));
+        ctx.drive().connectTo(QStringLiteral("hal:"));
+        ASSERT_TRUE(waitUntil([&] { return ctx.drive().isConnected(); }, 30000)) << "hal: did not connect";
+        ASSERT_TRUE(ctx.axes().contains(QStringLiteral("pid.x"))) << ctx.axes().join(' ').toStdString();
+    }
+    /// HAL's nets (names, types, writers, readers) and functions are as they were before the test.
+    void expectHalUnchanged()
+    {
+        EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), netsOf(m_sig));
+        EXPECT_EQ(halText({"-s", "show", "funct"}), m_funct);
+    }
+    std::string m_sig, m_funct;
+    QTemporaryDir m_tmp;
+};
+
+QLabel* amplitudeText(FrfWizard& w) { return w.safetyPage()->findChild<QLabel*>("frfAmplitudeText"); }
+
+// Issue 17 item 6: the FRF wizard on hal: pid.x. The amplitude is a peak in the PID output's units, bounded by the
+// drive's limit (half of maxoutput, read here with halcmd); the method offered is the one the drive advertises
+// (multisine); the quantity is the plant; the motion time is the drive's plan; the plotted plant equals the exact
+// discrete response within 0.1 dB and 0.5° (issue 17's tolerance, the one HalTestbed.MultisinePlantFrfEqualsThe-
+// ExactDiscreteResponse holds through the CLI path, measured there at 0.0006 dB); HAL's nets are unchanged afterwards.
+TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
+{
+    gui::AppContext ctx;
+    connectBed(ctx);
+    if (HasFatalFailure())
+        return;
+    const double maxOutput = axistune::testing::getp("pid.x.maxoutput");
+    ASSERT_GT(maxOutput, 0.0);
+    const double maxPeak = 0.5 * maxOutput; // docs/linuxcnc.md: above half of maxoutput the test is refused
+
+    auto* wizard = new FrfWizard(ctx);
+    QPointer<FrfWizard> guard(wizard);
+    FrfWizard& w = *wizard;
+    w.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+    auto* safety = w.safetyPage();
+    ASSERT_TRUE(waitUntil([&] { return safety->driveInfo().capabilities.has_value(); }, 30000))
+        << amplitudeText(w)->text().toStdString();
+    EXPECT_EQ(safety->axis(), QStringLiteral("pid.x"));
+    // The peak in the PID output's units is asked, not % of rated torque.
+    EXPECT_TRUE(safety->driveInfo().peakInOutputUnits());
+    EXPECT_FALSE(safety->amplitude()->isVisibleTo(&w));
+    EXPECT_TRUE(safety->amplitudePeak()->isVisibleTo(&w));
+    EXPECT_TRUE(safety->amplitudePeak()->suffix().contains("pid.x.output")) << safety->amplitudePeak()->suffix().toStdString();
+    EXPECT_NEAR(safety->driveInfo().maxPeak(), maxPeak, 1e-9 * maxPeak);
+    // Above the drive's limit: refused with the limit named, Next stays off even with the confirmation.
+    safety->amplitudePeak()->setValue(1.02 * maxPeak);
+    safety->confirmation()->setChecked(true);
+    EXPECT_FALSE(w.button(QWizard::NextButton)->isEnabled());
+    EXPECT_TRUE(amplitudeText(w)->text().contains("Refused")) << amplitudeText(w)->text().toStdString();
+    // A tenth of maxoutput (the CLI's documented 0.2 N·m on this machine).
+    const double peak = 0.1 * maxOutput;
+    safety->amplitudePeak()->setValue(peak);
+    EXPECT_FALSE(w.button(QWizard::NextButton)->isEnabled()); // a new amplitude needs a new confirmation
+    safety->confirmation()->setChecked(true);
+    ASSERT_TRUE(w.button(QWizard::NextButton)->isEnabled()) << amplitudeText(w)->text().toStdString();
+    maybeScreenshot(&w, "frf-hal-01-safety");
+    w.next();
+    ASSERT_EQ(w.currentId(), int(FrfWizard::ConfigId));
+
+    auto* cfg = w.configPage();
+    // The methods and quantities the drive advertises (hal:: multisine; plant and open loop).
+    ASSERT_EQ(cfg->method()->count(), 1);
+    EXPECT_EQ(cfg->selectedMethod(), device::FrfMethod::Multisine);
+    EXPECT_TRUE(cfg->quantity()->isVisibleTo(&w));
+    ASSERT_EQ(cfg->quantity()->count(), 2);
+    EXPECT_EQ(cfg->selectedQuantity(), device::FrfQuantity::Plant);
+    // The default band ends below half the servo rate (lines above it would fold): 90 % of 500 Hz.
+    EXPECT_DOUBLE_EQ(cfg->fmax()->value(), 450.0);
+    // 2–450 Hz with 224 points: the wizard's line spacing min(fmin/2, (fmax − fmin)/points) = 1 Hz, a window of 1 s
+    // (1000 servo periods); a period of the three-phase multisine is three windows (docs/multisine.md), and the drive
+    // plans one settling period and three averaged ones (docs/linuxcnc.md): (1 + 3) × 3 × 1 s = 12 s of motion.
+    cfg->fmin()->setValue(2.0);
+    cfg->points()->setValue(224);
+    ASSERT_TRUE(waitUntil([&] { return cfg->isComplete(); }, 30000))
+        << cfg->findChild<QLabel*>("frfEstimate")->text().toStdString();
+    EXPECT_NEAR(cfg->estimatedMotionS(), 12.0, 1e-9);
+    // Above the drive's band limit the drive's refusal is shown and Next stays off.
+    cfg->fmax()->setValue(500.0);
+    ASSERT_TRUE(waitUntil([&] { return cfg->findChild<QLabel*>("frfEstimate")->text().contains("half the servo rate"); },
+                          30000))
+        << cfg->findChild<QLabel*>("frfEstimate")->text().toStdString();
+    EXPECT_FALSE(cfg->isComplete());
+    cfg->fmax()->setValue(450.0);
+    ASSERT_TRUE(waitUntil([&] { return cfg->isComplete(); }, 30000));
+    maybeScreenshot(&w, "frf-hal-02-method");
+    const device::TestRequest req = w.request();
+    EXPECT_DOUBLE_EQ(req.amplitudePeak, peak);
+    EXPECT_EQ(req.frfQuantity, device::FrfQuantity::Plant);
+    EXPECT_DOUBLE_EQ(req.multisineSpacingHz, 1.0);
+    w.next();
+    ASSERT_EQ(w.currentId(), int(FrfWizard::RunId));
+    ASSERT_TRUE(waitUntil([&] { return !w.runPage()->isRunning(); }, 120000));
+    ASSERT_TRUE(w.runPage()->succeeded()) << w.runPage()->failure().toStdString();
+    maybeScreenshot(&w, "frf-hal-03-run");
+    w.next();
+    ASSERT_EQ(w.currentId(), int(FrfWizard::ResultId));
+    auto* res = w.resultPage();
+    ASSERT_TRUE(waitUntil([&] { return res->analysed(); }, 30000));
+    maybeScreenshot(&w, "frf-hal-04-result");
+
+    // The plant, feedback / drive input, every line against the exact discrete response of the running plant.
+    EXPECT_EQ(res->quantity(), QStringLiteral("plant"));
+    EXPECT_TRUE(res->bodePlot()->magnitudeTitle().contains("Plant")) << res->bodePlot()->magnitudeTitle().toStdString();
+    const auto& frf = res->measured();
+    // Lines every 1 Hz inside 2–450 Hz, none missing.
+    ASSERT_GE(frf.size(), 440u);
+    EXPECT_GE(frf.freqHz.front(), 2.0 - 1e-9);
+    EXPECT_LE(frf.freqHz.back(), 450.0 + 1e-9);
+    for (std::size_t i = 1; i < frf.size(); ++i)
+        ASSERT_NEAR(frf.freqHz[i] - frf.freqHz[i - 1], 1.0, 1e-9) << "at " << frf.freqHz[i] << " Hz";
+    RecordProperty("lines", std::to_string(frf.size()) + " from " + model::formatShortest(frf.freqHz.front()) +
+                                " to " + model::formatShortest(frf.freqHz.back()) + " Hz");
+    const axistune::testing::Plant plant = axistune::testing::readPlant();
+    double worstDb = 0.0, worstDeg = 0.0, worstPlotDb = 0.0;
+    for (std::size_t i = 0; i < frf.size(); ++i) {
+        const std::complex<double> exact = axistune::testing::exactResponse(plant, 1e-3, frf.freqHz[i]);
+        const std::complex<double> ratio = frf.h[i] / exact;
+        ASSERT_TRUE(std::isfinite(std::abs(ratio)) && std::abs(exact) > 0.0) << frf.freqHz[i] << " Hz";
+        worstDb = std::max(worstDb, std::abs(20.0 * std::log10(std::abs(ratio))));
+        worstDeg = std::max(worstDeg, std::abs(std::arg(ratio)) * 180.0 / M_PI);
+        // What the plot draws is that response, point by point.
+        worstPlotDb = std::max(worstPlotDb,
+                               std::abs(res->bodePlot()->magnitudeDbAt(0, frf.freqHz[i]) - dsp::magnitudeDb(frf.h[i])));
+    }
+    EXPECT_LE(worstDb, 0.1);
+    EXPECT_LE(worstDeg, 0.5);
+    EXPECT_LE(worstPlotDb, 1e-6);
+    RecordProperty("worst_dB", model::formatShortest(worstDb));
+    RecordProperty("worst_deg", model::formatShortest(worstDeg));
+    // The two-mass resonance in the table: the peak of the exact response's |H|·(2πf)² (flat for the rigid body of this
+    // torque-driven plant; docs/linuxcnc.md reads it at 106.92 Hz) within 2 % (issue 17's tolerance for the modes).
+    double exactPeakHz = 0.0, exactPeak = 0.0;
+    for (double f = 80.0; f <= 150.0; f += 0.01) {
+        const double m = std::abs(axistune::testing::exactResponse(plant, 1e-3, f)) * std::pow(2.0 * M_PI * f, 2);
+        if (m > exactPeak) {
+            exactPeak = m;
+            exactPeakHz = f;
+        }
+    }
+    ASSERT_EQ(res->analysis().resonances.size(), 1u)
+        << res->analysis().error.toStdString() << " " << res->analysis().analysedForm.toStdString();
+    EXPECT_NEAR(res->analysis().resonances.front().freqHz, exactPeakHz, 0.02 * exactPeakHz);
+    EXPECT_EQ(res->resonanceTable()->rowCount(), int(res->analysis().resonances.size()));
+    EXPECT_EQ(res->bodePlot()->markerCount(), int(res->analysis().resonances.size()));
+    for (const auto& r : res->analysis().resonances)
+        RecordProperty("resonance_Hz", model::formatShortest(r.freqHz));
+
+    w.next();
+    ASSERT_EQ(w.currentId(), int(FrfWizard::SaveId));
+    w.savePage()->openDocumentBox()->setChecked(false);
+    maybeScreenshot(&w, "frf-hal-05-save");
+    // Save and hand over to the notch wizard: on hal: it says it cannot insert the biquad and names pid-tune.
+    QPointer<QWizard> opened;
+    QObject::connect(&w, &FrfWizard::notchWizardOpened, [&](QWizard* n) { opened = n; });
+    w.savePage()->openNotchButton()->click();
+    ASSERT_GT(w.savedSessionId(), 0);
+    auto saved = ctx.database()->loadSession(w.savedSessionId());
+    ASSERT_TRUE(saved.ok());
+    EXPECT_DOUBLE_EQ(saved->inputs.at("amplitude_peak").get<double>(), peak);
+    EXPECT_EQ(saved->inputs.at("amplitude_signal").get<std::string>(), "pid.x.output");
+    EXPECT_EQ(saved->inputs.at("quantity").get<std::string>(), "plant");
+    EXPECT_FALSE(saved->inputs.contains("amplitude_pct"));
+    auto* notch = qobject_cast<gui::NotchWizard*>(opened.data());
+    ASSERT_TRUE(notch);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(notch));
+    ASSERT_EQ(notch->currentId(), int(gui::NotchWizard::kPropose));
+    ASSERT_TRUE(waitUntil([&] { return !notch->ncPidRefusal().isEmpty(); }, 30000));
+    EXPECT_TRUE(notch->ncPidRefusal().contains("pid-tune")) << notch->ncPidRefusal().toStdString();
+    EXPECT_TRUE(notch->ncPidRefusal().contains("biquad"));
+    EXPECT_TRUE(notch->ncPidRefusal().contains("pid.x.output"));
+    QTest::qWait(200);
+    EXPECT_FALSE(notch->proposePage()->isComplete());
+    EXPECT_FALSE(notch->button(QWizard::NextButton)->isEnabled());
+    EXPECT_TRUE(notch->rows().empty()); // nothing proposed to apply
+    maybeScreenshot(notch, "notch-hal-refused");
+    notch->close();
+    ASSERT_TRUE(waitUntil([&] { return opened.isNull(); }, 5000));
+    if (guard)
+        delete guard.data();
+
+    // Nothing AxisTune inserted is left in HAL, and the pid's gains are as the configuration set them.
+    expectHalUnchanged();
+}
+
+// Issue 17 item 6: the notch and the velocity/position wizards on hal: refuse at their first page with a message that
+// names axistune-cli pid-tune, before anything is measured or written; HAL is unchanged.
+TEST_F(GuiOnHal, NotchAndVelocityWizardsRefuseNamingPidTune)
+{
+    gui::AppContext ctx;
+    connectBed(ctx);
+    if (HasFatalFailure())
+        return;
+    {
+        gui::NotchWizard n(ctx);
+        n.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&n));
+        ASSERT_EQ(n.currentId(), int(gui::NotchWizard::kSource));
+        ASSERT_TRUE(waitUntil([&] { return !n.ncPidRefusal().isEmpty(); }, 30000));
+        EXPECT_TRUE(n.ncPidRefusal().contains("pid-tune")) << n.ncPidRefusal().toStdString();
+        // No new measurement offered (the drive-slot notch needs the multi-sweep of a drive's velocity loop).
+        EXPECT_FALSE(n.sourcePage()->measureButton()->isEnabled());
+        EXPECT_TRUE(n.sourcePage()->sessionButton()->isChecked());
+        maybeScreenshot(&n, "notch-hal-source");
+    }
+    {
+        gui::VelocityLoopWizard v(ctx);
+        v.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&v));
+        auto* source = v.findChild<gui::VelocityLoopSourcePage*>();
+        ASSERT_TRUE(source);
+        ASSERT_TRUE(waitUntil([&] { return !source->refusal().isEmpty(); }, 30000));
+        EXPECT_TRUE(source->refusal().contains("pid-tune")) << source->refusal().toStdString();
+        EXPECT_TRUE(source->refusal().contains("pid.x"));
+        EXPECT_FALSE(source->isComplete());
+        EXPECT_FALSE(v.button(QWizard::NextButton)->isEnabled());
+        maybeScreenshot(&v, "velocity-hal-refused");
+    }
+    expectHalUnchanged();
+    // The gains the configuration set are unchanged (nothing was written).
+    EXPECT_DOUBLE_EQ(axistune::testing::getp("pid.x.Pgain"), 2.0);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    // Offscreen unless a display is chosen (xvfb-run for screenshots).
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    axistune::testing::installLanguageFromEnv();
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
