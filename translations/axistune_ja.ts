@@ -212,6 +212,16 @@
         <source>the measured response</source>
         <translation>測定した応答</translation>
     </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>|plant|·ω² (flat for the rigid body of a torque drive; its peak at least 6 dB above its median)</source>
+        <translation>|プラント|·ω² (トルク指令のサーボアンプでは剛体部分が平坦。ピークが中央値より 6 dB 以上高いもの)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>|plant|·ω (flat for a velocity drive; its peak at least 6 dB above its median)</source>
+        <translation>|プラント|·ω (速度指令のサーボアンプでは平坦。ピークが中央値より 6 dB 以上高いもの)</translation>
+    </message>
 </context>
 <context>
     <name>HistoryView</name>
@@ -2158,6 +2168,31 @@
         <source>not connected</source>
         <translation>未接続</translation>
     </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Measured quantity:</source>
+        <translation>測定する量:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Plant: feedback / drive input</source>
+        <translation>プラント: フィードバック / サーボアンプ入力</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Open loop with the running gains: −controller output / drive input</source>
+        <translation>現在のゲインでの開ループ: −制御器出力 / サーボアンプ入力</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Trace rate fs = %1 Hz. This drive measures lines below %2 Hz only; the band must end below that.</source>
+        <translation>トレース周波数 fs = %1 Hz。このサーボアンプは %2 Hz 未満の周波数線しか測定できません。帯域はそれより下で終わる必要があります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;The drive offers no FRF method on this axis.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;このサーボアンプはこの軸で周波数応答の測定方法を提供していません。&lt;/span&gt;</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::FrfResultPage</name>
@@ -2238,6 +2273,56 @@
         <source>Only one −3 dB crossing inside the band: twice the half width.</source>
         <translation>帯域内の −3 dB 交差が 1 つだけ: 半値幅の 2 倍。</translation>
     </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>the drive input</source>
+        <translation>サーボアンプ入力</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>The measured plant: feedback per unit of drive input (%1 plus the injection), where it is valid, and the resonances found.</source>
+        <translation>測定したプラント: サーボアンプ入力 (%1 + 注入信号) 1 単位あたりのフィードバック、その有効範囲、見つかった共振。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Plant [dB re 1 position unit per output unit]</source>
+        <translation>プラント [dB、出力 1 単位あたり位置 1 単位基準]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>The measured open position loop with the running gains: −controller output / drive input (dimensionless), where it is valid, and the resonances found.</source>
+        <translation>現在のゲインで測定した位置ループの開ループ: −制御器出力 / サーボアンプ入力 (無次元)、その有効範囲、見つかった共振。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Open loop |L| [dB]</source>
+        <translation>開ループ |L| [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Level of the analysed response [dB]</source>
+        <translation>解析した応答のレベル [dB]</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Measured plant</source>
+        <translation>測定したプラント</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Measured open loop</source>
+        <translation>測定した開ループ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Plant in the feedback&apos;s position units per unit of %1 (the configuration&apos;s units, e.g. mm per N·m).</source>
+        <translation>プラントは %1 の 1 単位あたりのフィードバック位置単位で表します (構成の単位、例: mm/N·m)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Open position loop, dimensionless (controller output per unit of %1).</source>
+        <translation>位置ループの開ループ、無次元 (%1 の 1 単位あたりの制御器出力)。</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::FrfSafetyPage</name>
@@ -2278,6 +2363,41 @@
     <message>
         <source>%1 % of rated torque (reading the drive&apos;s limit…).</source>
         <translation>定格トルクの %1 % (サーボアンプの上限を読み取り中…)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Excitation peak:</source>
+        <translation>加振ピーク値:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source> (units of %1)</source>
+        <translation> (%1 の単位)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>The NC keeps closing its position loop while a small multisine is added to %1, the drive&apos;s input, at every servo period. The axis vibrates with small amplitude about where it stands; it does not travel. A following error above the limit or Abort stops the excitation at once, and what AxisTune inserted into the machine is removed.</source>
+        <translation>NC が位置ループを閉じたまま、サーボアンプ入力である %1 に小さなマルチサインをサーボ周期ごとに加えます。軸は現在位置の周りで小さな振幅で振動し、移動はしません。位置偏差が制限を超えるか中止すると加振はすぐに止まり、AxisTune が機械に挿入したものは取り除かれます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;The drive states no limit for the peak in the units of %1: no test.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;サーボアンプが %1 の単位でのピーク値の上限を示していません: 測定できません。&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;Refused: the peak must be above 0.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;拒否: ピーク値は 0 より大きくなければなりません。&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>&lt;span style=&apos;color:#b00000&apos;&gt;Refused: the drive allows a peak of at most %1 in the units of %2.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b00000&apos;&gt;拒否: サーボアンプが許すピーク値は %2 の単位で最大 %1 です。&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" />
+        <source>Peak %1 of the injected signal, in the units of %2 (the drive allows at most %3, %4 % of its output limit).</source>
+        <translation>注入信号のピーク値 %1 (%2 の単位。サーボアンプが許す最大値は %3、出力制限の %4 %)。</translation>
     </message>
 </context>
 <context>
@@ -2346,6 +2466,13 @@
         <location filename="../app/gui/FrfWizard.cpp" line="223" />
         <source>The wizard was closed during the run.</source>
         <translation>実行中にウィザードが閉じられました。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/FrfWizard.cpp" />
+        <source>Finish stores: the settings (axis %1, %2, %3–%4 Hz, peak %5 in the units of %6), the measured frequency response (%7 points) and the %n resonance(s) found.</source>
+        <translation>
+            <numerusform>完了で保存する内容: 設定 (軸 %1、%2、%3–%4 Hz、%6 の単位でピーク値 %5)、測定した周波数応答 (%7 点)、見つかった %n 個の共振。</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4364,6 +4491,11 @@
         <location filename="../app/gui/NotchWizardPages.cpp" line="582" />
         <source>Analysis failed: %1</source>
         <translation>解析に失敗しました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" />
+        <source>Asking the drive what axis %1 is…</source>
+        <translation>軸 %1 の種類をサーボアンプに問い合わせています…</translation>
     </message>
 </context>
 <context>
@@ -8218,6 +8350,19 @@ margin [dB]</source>
         <location filename="../app/gui/AutoTuneWizard.cpp" />
         <source>Automatic tuning</source>
         <translation>自動調整</translation>
+    </message>
+</context>
+<context>
+    <name>WizardPages</name>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" />
+        <source>Axis %1 is a position loop the NC closes with a PID (%2): its notch is LinuxCNC&apos;s biquad component, inserted after %3, not a filter slot of a drive. This wizard cannot insert it yet. Use axistune-cli pid-tune --connect %2 --axis %1 --apply: it measures the plant, proposes the notch with P, I, D, FF1 and FF2, inserts it and verifies the margins (--remove-notch takes it out again). The FRF wizard measures and shows the plant.</source>
+        <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。そのノッチフィルタはサーボアンプのフィルタスロットではなく、%3 の後に挿入する LinuxCNC の biquad コンポーネントです。このウィザードはまだそれを挿入できません。axistune-cli pid-tune --connect %2 --axis %1 --apply を使ってください: プラントを測定し、P、I、D、FF1、FF2 とともにノッチフィルタを提案し、挿入して余裕を検証します (--remove-notch で再び取り除けます)。プラントの測定と表示は周波数応答ウィザードで行えます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/WizardPages.cpp" />
+        <source>Axis %1 is a position loop the NC closes with a PID (%2): there is no drive velocity loop for this wizard to tune. Tune it with axistune-cli pid-tune --connect %2 --axis %1: it measures the plant and the open loop, proposes P, I, D, FF1, FF2 and a notch with the predicted margins, and with --apply writes and verifies them.</source>
+        <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。このウィザードで調整するサーボアンプの速度ループはありません。axistune-cli pid-tune --connect %2 --axis %1 で調整してください: プラントと開ループを測定し、P、I、D、FF1、FF2 とノッチフィルタを予測余裕とともに提案し、--apply で書き込んで検証します。</translation>
     </message>
 </context>
 </TS>

@@ -453,7 +453,10 @@ void BodePlot::setMagnitudeTitle(const QString& title)
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
-QString BodePlot::magnitudeTitle() const { return m_magRect->axis(QCPAxis::atLeft)->label(); }
+QString BodePlot::magnitudeTitle() const
+{
+    return m_magRect->axis(QCPAxis::atLeft)->label();
+}
 
 void BodePlot::setPhaseUnwrapped(bool unwrapped)
 {

@@ -103,29 +103,23 @@ void FrfWizard::onPageChanged(int id)
 {
     if (id != SaveId)
         return;
-    const auto& a = m_result->analysis();
-    if (m_lastRequest.amplitudePeak > 0.0) {
-        m_save->showSaved(tr("Finish stores: the settings (axis %1, %2, %3–%4 Hz, peak %5 in the units of %6), the "
-                             "measured frequency response (%7 points) and the %n resonance(s) found.",
-                             nullptr, static_cast<int>(a.resonances.size()))
-                              .arg(QString::fromStdString(m_lastRequest.axis),
-                                   QString::fromLatin1(device::frfMethodName(m_lastRequest.frfMethod)))
-                              .arg(m_lastRequest.fminHz)
-                              .arg(m_lastRequest.fmaxHz)
-                              .arg(m_lastRequest.amplitudePeak)
-                              .arg(m_safety->driveInfo().outputSignal())
-                              .arg(m_result->measured().size()));
-        return;
-    }
-    m_save->showSaved(tr("Finish stores: the settings (axis %1, %2, %3–%4 Hz, %5 points, %6 % of rated torque), the "
-                         "measured frequency response (%7 points) and the %n resonance(s) found.",
-                         nullptr, static_cast<int>(a.resonances.size()))
-                          .arg(QString::fromStdString(m_lastRequest.axis),
-                               QString::fromLatin1(device::frfMethodName(m_lastRequest.frfMethod)))
-                          .arg(m_lastRequest.fminHz)
-                          .arg(m_lastRequest.fmaxHz)
-                          .arg(m_lastRequest.points)
-                          .arg(m_lastRequest.amplitudePct)
+    const auto& r = m_lastRequest;
+    const int n = static_cast<int>(m_result->analysis().resonances.size());
+    // A drive that takes the peak in its output's units (hal:) gets it stored and shown so; the others in % of rated
+    // torque with the number of points.
+    const bool peak = r.amplitudePeak > 0.0;
+    const QString text =
+        peak ? tr("Finish stores: the settings (axis %1, %2, %3–%4 Hz, peak %5 in the units of %6), the measured "
+                  "frequency response (%7 points) and the %n resonance(s) found.",
+                  nullptr, n)
+             : tr("Finish stores: the settings (axis %1, %2, %3–%4 Hz, %5 points, %6 % of rated torque), the measured "
+                  "frequency response (%7 points) and the %n resonance(s) found.",
+                  nullptr, n);
+    m_save->showSaved(text.arg(QString::fromStdString(r.axis), QString::fromLatin1(device::frfMethodName(r.frfMethod)))
+                          .arg(r.fminHz)
+                          .arg(r.fmaxHz)
+                          .arg(peak ? QStringLiteral("%1").arg(r.amplitudePeak) : QString::number(r.points),
+                               peak ? m_safety->driveInfo().outputSignal() : QStringLiteral("%1").arg(r.amplitudePct))
                           .arg(m_result->measured().size()));
 }
 

@@ -7,9 +7,9 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/FrfWizard.h"
 #include "core/dsp/LoopAnalysis.h"
-#include "core/tuning/PositionPid.h"
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
+#include "core/tuning/PositionPid.h"
 #include "widgets/BodePlot.h"
 
 #include <QCheckBox>
@@ -109,7 +109,7 @@ FrfSafetyPage::FrfSafetyPage(AppContext& ctx, QWidget* parent) : SafetyPage(ctx,
     m_peak->setRange(0.0, 1e9); // above the drive's maximum: refused with a message, not clamped
     m_peak->setDecimals(4);
     m_peak->setSingleStep(0.01);
-    m_peak->setValue(0.0);      // set from the drive's limit when it is read
+    m_peak->setValue(0.0); // set from the drive's limit when it is read
     form->addRow(tr("Excitation peak:"), m_peak);
     form->setRowVisible(m_peak, false);
     m_amplitudeText = new QLabel(row);
@@ -541,11 +541,12 @@ void FrfResultPage::initializePage()
         setSubTitle(tr("The measured closed velocity loop, where it is valid, and the resonances found."));
         m_plot->setMagnitudeTitle(QString());
     }
-    m_table->setHorizontalHeaderItem(
-        3, new QTableWidgetItem(m_quantity.isEmpty() ? tr("Open-loop gain [dB]") : tr("Level of the analysed response [dB]")));
+    m_table->setHorizontalHeaderItem(3, new QTableWidgetItem(m_quantity.isEmpty()
+                                                                 ? tr("Open-loop gain [dB]")
+                                                                 : tr("Level of the analysed response [dB]")));
     m_plot->addResponse(m_frf, m_quantity == QLatin1String("plant")       ? tr("Measured plant")
                                : m_quantity == QLatin1String("open-loop") ? tr("Measured open loop")
-                                                                            : tr("Measured"));
+                                                                          : tr("Measured"));
     addBands();
     m_plot->setFrequencyRange(m_frf.freqHz.front() / 1.15, m_frf.freqHz.back() * 1.15);
     m_summary->setText(tr("Analysing…"));
@@ -583,9 +584,9 @@ void FrfResultPage::initializePage()
                                  ? QCoreApplication::translate("FrfResultPage",
                                                                "|plant|·ω² (flat for the rigid body of a torque drive; "
                                                                "its peak at least 6 dB above its median)")
-                                 : QCoreApplication::translate("FrfResultPage",
-                                                               "|plant|·ω (flat for a velocity drive; its peak at least "
-                                                               "6 dB above its median)");
+                                 : QCoreApplication::translate(
+                                       "FrfResultPage", "|plant|·ω (flat for a velocity drive; its peak at least "
+                                                        "6 dB above its median)");
             if (auto r = tuning::plantResonance(f, h, *input, 0.0))
                 a.resonances.push_back(*r);
             return a;

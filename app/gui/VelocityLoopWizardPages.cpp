@@ -24,9 +24,9 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QRadioButton>
+#include <QSignalBlocker>
 #include <QSplitter>
 #include <QTableWidget>
-#include <QSignalBlocker>
 #include <QVBoxLayout>
 
 #include <algorithm>

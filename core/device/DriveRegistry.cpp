@@ -155,8 +155,8 @@ bool DriveCapabilities::offers(FrfMethod m) const
 
 bool isNcPositionPid(const DriveCapabilities& caps)
 {
-    return caps.frfPeakInOutputUnits &&
-           std::find(caps.frfQuantities.begin(), caps.frfQuantities.end(), FrfQuantity::OpenLoop) != caps.frfQuantities.end();
+    return caps.frfPeakInOutputUnits && std::find(caps.frfQuantities.begin(), caps.frfQuantities.end(),
+                                                  FrfQuantity::OpenLoop) != caps.frfQuantities.end();
 }
 
 } // namespace axistune::device

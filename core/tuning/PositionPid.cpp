@@ -104,10 +104,12 @@ std::complex<double> biquadNotchResponse(const BiquadNotch& n, double periodS, d
     return (1.0 - 2.0 * std::cos(w0) * z1 + z2) / ((1.0 + alpha) - 2.0 * std::cos(w0) * z1 + (1.0 - alpha) * z2);
 }
 
-std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
-                                       DriveInput input, double aboveHz, double minRiseDb)
+namespace {
+
+/// |P|·ω² (torque) or |P|·ω (velocity) on the finite, positive lines above `aboveHz`.
+void plantLevels(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant, DriveInput input,
+                 double aboveHz, std::vector<double>& f, std::vector<double>& v)
 {
-    std::vector<double> f, v;
     for (std::size_t k = 0; k < freqHz.size() && k < plant.size(); ++k) {
         if (!(freqHz[k] > aboveHz))
             continue;
@@ -118,6 +120,15 @@ std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const 
         f.push_back(freqHz[k]);
         v.push_back(x);
     }
+}
+
+} // namespace
+
+std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
+                                       DriveInput input, double aboveHz, double minRiseDb)
+{
+    std::vector<double> f, v;
+    plantLevels(freqHz, plant, input, aboveHz, f, v);
     if (v.size() < 5)
         return std::nullopt;
     std::vector<double> sorted = v;
@@ -129,23 +140,17 @@ std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const 
     return f[static_cast<std::size_t>(peak - v.begin())];
 }
 
-std::optional<Resonance> plantResonance(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
-                                        DriveInput input, double aboveHz, double minRiseDb)
+std::optional<Resonance> plantResonance(const std::vector<double>& freqHz,
+                                        const std::vector<std::complex<double>>& plant, DriveInput input,
+                                        double aboveHz, double minRiseDb)
 {
     const auto at = plantResonanceHz(freqHz, plant, input, aboveHz, minRiseDb);
     if (!at)
         return std::nullopt;
     std::vector<double> f, level;
-    for (std::size_t k = 0; k < freqHz.size() && k < plant.size(); ++k) {
-        if (!(freqHz[k] > aboveHz))
-            continue;
-        const double w = kTwoPi * freqHz[k];
-        const double x = std::abs(plant[k]) * (input == DriveInput::Torque ? w * w : w);
-        if (!std::isfinite(x) || !(x > 0.0))
-            continue;
-        f.push_back(freqHz[k]);
-        level.push_back(20.0 * std::log10(x));
-    }
+    plantLevels(freqHz, plant, input, aboveHz, f, level);
+    for (double& x : level)
+        x = 20.0 * std::log10(x);
     const auto peak = static_cast<std::size_t>(std::find(f.begin(), f.end(), *at) - f.begin());
     std::vector<double> sorted = level;
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());

@@ -14,7 +14,6 @@
 
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Result.h"
-
 #include "core/tuning/Resonance.h"
 
 #include <complex>
@@ -103,8 +102,9 @@ std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const 
 /// freqHz the peak line, levelDb L there, baselineDb the median of L over the lines above `aboveHz`, peakDb the rise
 /// above it, widthHz between the lines where L first falls 3 dB below the peak on each side (twice the one half
 /// found, widthOneSided, when the band ends first); nullopt as plantResonanceHz.
-std::optional<Resonance> plantResonance(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
-                                        DriveInput input, double aboveHz, double minRiseDb = 6.0);
+std::optional<Resonance> plantResonance(const std::vector<double>& freqHz,
+                                        const std::vector<std::complex<double>>& plant, DriveInput input,
+                                        double aboveHz, double minRiseDb = 6.0);
 
 /// The highest crossover at which a PID meets both margins over every measured line. Errors: too few lines, a
 /// non-finite line, no crossover that meets the margins (the reason says which margin failed where).

@@ -1,23 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The GUI's wizards on LinuxCNC's HAL (issue 17 item 6, docs/linuxcnc.md "The wizards on hal:"): each test starts the
-// repository's test machine through the fixture (tests/linuxcnc/HalTestbed.h: scripts/hal-testbed under the machine-wide
-// lock), connects an AppContext to hal: and drives the wizards as a user would, offscreen.
+// repository's test machine through the fixture (tests/linuxcnc/HalTestbed.h: scripts/hal-testbed under the
+// machine-wide lock), connects an AppContext to hal: and drives the wizards as a user would, offscreen.
 //
 // Expected numbers come from outside the code under test: the plant's exact discrete-time response computed from the
 // component's own update equations and its pins (HalTestbed.h exactResponse, read with halcmd getp), the output limit
 // read with halcmd getp, and the drive's documented plan (one settling period and three averaged periods of the
 // multisine, docs/linuxcnc.md "The hal: connection").
 // First: HAL's headers use the name "signals", which Qt defines as a macro.
-#include "tests/linuxcnc/HalTestbed.h"
-
 #include "app/gui/AppContext.h"
 #include "app/gui/FrfWizard.h"
 #include "app/gui/NotchWizard.h"
 #include "app/gui/VelocityLoopWizard.h"
-
 #include "core/device/Drive.h"
 #include "core/dsp/FrequencyResponse.h"
-#include "tests/gui/GuiTestUtil.h"
 #include "widgets/BodePlot.h"
 
 #include <QAbstractButton>
@@ -36,6 +32,9 @@
 
 #include <cmath>
 #include <complex>
+
+#include "tests/gui/GuiTestUtil.h"
+#include "tests/linuxcnc/HalTestbed.h"
 
 using namespace axistune;
 using axistune::gui::FrfWizard;
@@ -73,7 +72,10 @@ protected:
     QTemporaryDir m_tmp;
 };
 
-QLabel* amplitudeText(FrfWizard& w) { return w.safetyPage()->findChild<QLabel*>("frfAmplitudeText"); }
+QLabel* amplitudeText(FrfWizard& w)
+{
+    return w.safetyPage()->findChild<QLabel*>("frfAmplitudeText");
+}
 
 // Issue 17 item 6: the FRF wizard on hal: pid.x. The amplitude is a peak in the PID output's units, bounded by the
 // drive's limit (half of maxoutput, read here with halcmd); the method offered is the one the drive advertises
@@ -103,7 +105,8 @@ TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
     EXPECT_TRUE(safety->driveInfo().peakInOutputUnits());
     EXPECT_FALSE(safety->amplitude()->isVisibleTo(&w));
     EXPECT_TRUE(safety->amplitudePeak()->isVisibleTo(&w));
-    EXPECT_TRUE(safety->amplitudePeak()->suffix().contains("pid.x.output")) << safety->amplitudePeak()->suffix().toStdString();
+    EXPECT_TRUE(safety->amplitudePeak()->suffix().contains("pid.x.output"))
+        << safety->amplitudePeak()->suffix().toStdString();
     EXPECT_NEAR(safety->driveInfo().maxPeak(), maxPeak, 1e-9 * maxPeak);
     // Above the drive's limit: refused with the limit named, Next stays off even with the confirmation.
     safety->amplitudePeak()->setValue(1.02 * maxPeak);
@@ -139,8 +142,8 @@ TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
     EXPECT_NEAR(cfg->estimatedMotionS(), 12.0, 1e-9);
     // Above the drive's band limit the drive's refusal is shown and Next stays off.
     cfg->fmax()->setValue(500.0);
-    ASSERT_TRUE(waitUntil([&] { return cfg->findChild<QLabel*>("frfEstimate")->text().contains("half the servo rate"); },
-                          30000))
+    ASSERT_TRUE(waitUntil(
+        [&] { return cfg->findChild<QLabel*>("frfEstimate")->text().contains("half the servo rate"); }, 30000))
         << cfg->findChild<QLabel*>("frfEstimate")->text().toStdString();
     EXPECT_FALSE(cfg->isComplete());
     cfg->fmax()->setValue(450.0);
@@ -171,8 +174,8 @@ TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
     EXPECT_LE(frf.freqHz.back(), 450.0 + 1e-9);
     for (std::size_t i = 1; i < frf.size(); ++i)
         ASSERT_NEAR(frf.freqHz[i] - frf.freqHz[i - 1], 1.0, 1e-9) << "at " << frf.freqHz[i] << " Hz";
-    RecordProperty("lines", std::to_string(frf.size()) + " from " + model::formatShortest(frf.freqHz.front()) +
-                                " to " + model::formatShortest(frf.freqHz.back()) + " Hz");
+    RecordProperty("lines", std::to_string(frf.size()) + " from " + model::formatShortest(frf.freqHz.front()) + " to " +
+                                model::formatShortest(frf.freqHz.back()) + " Hz");
     const axistune::testing::Plant plant = axistune::testing::readPlant();
     double worstDb = 0.0, worstDeg = 0.0, worstPlotDb = 0.0;
     for (std::size_t i = 0; i < frf.size(); ++i) {
