@@ -124,8 +124,9 @@ void plantLevels(const std::vector<double>& freqHz, const std::vector<std::compl
 
 } // namespace
 
-std::optional<double> plantResonanceHz(const std::vector<double>& freqHz, const std::vector<std::complex<double>>& plant,
-                                       DriveInput input, double aboveHz, double minRiseDb)
+std::optional<double> plantResonanceHz(const std::vector<double>& freqHz,
+                                       const std::vector<std::complex<double>>& plant, DriveInput input, double aboveHz,
+                                       double minRiseDb)
 {
     std::vector<double> f, v;
     plantLevels(freqHz, plant, input, aboveHz, f, v);
