@@ -2285,8 +2285,8 @@
     </message>
     <message>
         <location filename="../app/gui/FrfWizardPages.cpp" />
-        <source>Plant [dB re 1 position unit per output unit]</source>
-        <translation>プラント [dB、出力 1 単位あたり位置 1 単位基準]</translation>
+        <source>Plant [dB]</source>
+        <translation>プラント [dB]</translation>
     </message>
     <message>
         <location filename="../app/gui/FrfWizardPages.cpp" />
@@ -4496,6 +4496,11 @@
         <location filename="../app/gui/NotchWizardPages.cpp" />
         <source>Asking the drive what axis %1 is…</source>
         <translation>軸 %1 の種類をサーボアンプに問い合わせています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NotchWizardPages.cpp" />
+        <source>Axis %1: this wizard applies no notch here; why, and what to use instead, is below.</source>
+        <translation>軸 %1: このウィザードではここにノッチフィルタを適用できません。理由と代わりに使うものは下に示します。</translation>
     </message>
 </context>
 <context>

@@ -532,7 +532,7 @@ void FrfResultPage::initializePage()
         setSubTitle(tr("The measured plant: feedback per unit of drive input (%1 plus the injection), where it is "
                        "valid, and the resonances found.")
                         .arg(signal));
-        m_plot->setMagnitudeTitle(tr("Plant [dB re 1 position unit per output unit]"));
+        m_plot->setMagnitudeTitle(tr("Plant [dB]"));
     } else if (m_quantity == QLatin1String("open-loop")) {
         setSubTitle(tr("The measured open position loop with the running gains: −controller output / drive input "
                        "(dimensionless), where it is valid, and the resonances found."));

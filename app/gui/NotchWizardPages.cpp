@@ -432,7 +432,11 @@ void NotchProposePage::initializePage()
 void NotchProposePage::showRefusal(const QString& why)
 {
     m_busy = false;
-    m_status->setText(QStringLiteral("<span style='color:#b00000'>%1</span>").arg(why.toHtmlEscaped()));
+    m_status->setText(QStringLiteral("<span style='color:#b00000'>%1</span>")
+                          .arg(tr("Axis %1: this wizard applies no notch here; why, and what to use instead, is below.")
+                                   .arg(m_wizard.axis())
+                                   .toHtmlEscaped()));
+    m_rules->setHtml(QStringLiteral("<p style='color:#b00000'>%1</p>").arg(why.toHtmlEscaped()));
     m_measuredId = m_plot->addResponse(m_wizard.measured(), tr("Measured"));
     emit completeChanged();
 }

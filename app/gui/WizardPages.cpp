@@ -173,7 +173,14 @@ void SafetyPage::onReply(const DriveReply& r)
 {
     if (r.id == m_metaRequest && r.ok) {
         m_metas = r.metadata;
-        m_readRequest = connectReply(m_ctx.drive().readParameters(r.axis, m_limitKeys), this, &SafetyPage::onReply);
+        // Only the keys this drive has (a LinuxCNC pid has none of a servo drive's, and the other way round).
+        QStringList keys;
+        for (const auto& k : m_limitKeys)
+            if (findMeta(m_metas, k.toStdString()))
+                keys << k;
+        if (keys.isEmpty())
+            return;
+        m_readRequest = connectReply(m_ctx.drive().readParameters(r.axis, keys), this, &SafetyPage::onReply);
     } else if (r.id == m_readRequest && r.ok) {
         m_limits->setRowCount(0);
         for (const auto& k : m_limitKeys) {

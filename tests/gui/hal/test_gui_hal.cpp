@@ -7,7 +7,11 @@
 // component's own update equations and its pins (HalTestbed.h exactResponse, read with halcmd getp), the output limit
 // read with halcmd getp, and the drive's documented plan (one settling period and three averaged periods of the
 // multisine, docs/linuxcnc.md "The hal: connection").
+// clang-format off
 // First: HAL's headers use the name "signals", which Qt defines as a macro.
+#include "tests/linuxcnc/HalTestbed.h"
+// clang-format on
+
 #include "app/gui/AppContext.h"
 #include "app/gui/FrfWizard.h"
 #include "app/gui/NotchWizard.h"
@@ -20,6 +24,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QListWidget>
@@ -34,7 +39,6 @@
 #include <complex>
 
 #include "tests/gui/GuiTestUtil.h"
-#include "tests/linuxcnc/HalTestbed.h"
 
 using namespace axistune;
 using axistune::gui::FrfWizard;
@@ -101,6 +105,11 @@ TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
     ASSERT_TRUE(waitUntil([&] { return safety->driveInfo().capabilities.has_value(); }, 30000))
         << amplitudeText(w)->text().toStdString();
     EXPECT_EQ(safety->axis(), QStringLiteral("pid.x"));
+    // The pid's limits and gains are listed (the servo drive's keys the page also asks for are not there): maxoutput,
+    // maxerror, Pgain, Igain, Dgain.
+    auto* limits = safety->findChild<QTableWidget*>();
+    ASSERT_TRUE(limits);
+    EXPECT_TRUE(waitUntil([&] { return limits->rowCount() == 5; }, 30000)) << limits->rowCount();
     // The peak in the PID output's units is asked, not % of rated torque.
     EXPECT_TRUE(safety->driveInfo().peakInOutputUnits());
     EXPECT_FALSE(safety->amplitude()->isVisibleTo(&w));
@@ -112,7 +121,13 @@ TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
     safety->amplitudePeak()->setValue(1.02 * maxPeak);
     safety->confirmation()->setChecked(true);
     EXPECT_FALSE(w.button(QWizard::NextButton)->isEnabled());
-    EXPECT_TRUE(amplitudeText(w)->text().contains("Refused")) << amplitudeText(w)->text().toStdString();
+    // The refusal names the limit (half of maxoutput as read above) and the signal, in the user's language.
+    EXPECT_EQ(amplitudeText(w)->text(),
+              QCoreApplication::translate("axistune::gui::FrfSafetyPage",
+                                          "<span style='color:#b00000'>Refused: the drive allows a peak of at most %1 "
+                                          "in the units of %2.</span>")
+                  .arg(maxPeak, 0, 'g', 4)
+                  .arg("pid.x.output"));
     // A tenth of maxoutput (the CLI's documented 0.2 N·m on this machine).
     const double peak = 0.1 * maxOutput;
     safety->amplitudePeak()->setValue(peak);
@@ -166,7 +181,8 @@ TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
 
     // The plant, feedback / drive input, every line against the exact discrete response of the running plant.
     EXPECT_EQ(res->quantity(), QStringLiteral("plant"));
-    EXPECT_TRUE(res->bodePlot()->magnitudeTitle().contains("Plant")) << res->bodePlot()->magnitudeTitle().toStdString();
+    EXPECT_EQ(res->bodePlot()->magnitudeTitle(),
+              QCoreApplication::translate("axistune::gui::FrfResultPage", "Plant [dB]"));
     const auto& frf = res->measured();
     // Lines every 1 Hz inside 2–450 Hz, none missing.
     ASSERT_GE(frf.size(), 440u);
