@@ -432,7 +432,9 @@ Result<DriveCapabilities> HalDrive::capabilities(const std::string& axis)
 
 Result<DriveLimits> HalDrive::limits(const std::string& axis)
 {
-    auto a = discoverAxis(m_options, axis);
+    if (auto st = checkAxis(axis); !st)
+        return st.error();
+    auto a = discoverAxis(m_options, axis); // its maxoutput bounds the FRF peak
     if (!a)
         return a.error();
     DriveLimits l;
