@@ -139,8 +139,14 @@ TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
     ASSERT_EQ(w.currentId(), int(FrfWizard::ConfigId));
 
     auto* cfg = w.configPage();
-    // The methods and quantities the drive advertises (hal:: multisine; plant and open loop).
-    ASSERT_EQ(cfg->method()->count(), 1);
+    // The methods and quantities the drive advertises (hal:: multisine, multi-sweep, PRBS; not the conventional sine
+    // stream; plant and open loop).
+    const auto& advertised = safety->driveInfo().capabilities->frfMethods;
+    ASSERT_EQ(cfg->method()->count(), int(advertised.size()));
+    for (auto m : advertised)
+        EXPECT_GE(cfg->method()->findData(int(m)), 0) << device::frfMethodName(m);
+    EXPECT_LT(cfg->method()->findData(int(device::FrfMethod::Conventional)), 0);
+    cfg->method()->setCurrentIndex(cfg->method()->findData(int(device::FrfMethod::Multisine)));
     EXPECT_EQ(cfg->selectedMethod(), device::FrfMethod::Multisine);
     EXPECT_TRUE(cfg->quantity()->isVisibleTo(&w));
     ASSERT_EQ(cfg->quantity()->count(), 2);
