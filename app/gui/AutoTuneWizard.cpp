@@ -602,11 +602,15 @@ AutoTuneWizard::AutoTuneWizard(AppContext& ctx, QWidget* parent) : QWizard(paren
     setWizardStyle(QWizard::ClassicStyle);
     m_choice = new AutoTuneChoicePage(ctx, m_data, this);
     m_run = new AutoTuneRunPage(ctx, m_data, this);
-    m_result = new AutoTuneResultPage(m_data, this);
+    m_result = new AutoTuneResultPage(ctx, m_data, this);
     setPage(Choice, m_choice);
     setPage(Run, m_run);
     setPage(Result, m_result);
     connect(m_run, &AutoTuneRunPage::runFinished, this, [this] {
+        if (m_closeWhenDone)
+            QWizard::reject();
+    });
+    connect(m_result, &AutoTuneResultPage::undoFinished, this, [this] {
         if (m_closeWhenDone)
             QWizard::reject();
     });
@@ -618,6 +622,10 @@ void AutoTuneWizard::reject()
     if (m_data.running) {
         m_closeWhenDone = true;
         m_run->abort();
+        return;
+    }
+    if (m_result->isUndoing()) { // the undo's answer (and its journal) first; the write itself is not interrupted
+        m_closeWhenDone = true;
         return;
     }
     QWizard::reject();
