@@ -116,6 +116,7 @@ void AutoTuneResultPage::confirmUndo(bool force)
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table->horizontalHeader()->setStretchLastSection(true);
     table->setSelectionMode(QAbstractItemView::NoSelection);
+    table->setFocusPolicy(Qt::NoFocus);
     QStringList changedKeys;
     for (const auto& [k, applied] : t.applied) {
         const int row = table->rowCount();
@@ -186,7 +187,7 @@ void AutoTuneResultPage::confirmUndo(bool force)
     });
     m_undoDialog = dlg;
     updateUndoButtons();
-    dlg->resize(720, 340);
+    dlg->resize(force ? 940 : 760, force ? 380 : 330);
     dlg->open();
 }
 
