@@ -26,31 +26,20 @@
 
 #include <cmath>
 
+#include "tests/gui/AutoTuneTestUtil.h"
 #include "tests/gui/GuiTestUtil.h"
 
 using namespace axistune;
 using namespace axistune::gui;
 using axistune::testing::maybeScreenshot;
+using axistune::testing::openOn;
+using axistune::testing::readAll;
 using axistune::testing::waitUntil;
 
 namespace {
 
 // The smallest budget that completes on vmc X (tst_autotunewizard, docs/tuning.md "The wizard").
 constexpr double kBudgetS = 6.0;
-
-model::ParameterValues readAll(AppContext& ctx, const QString& axis)
-{
-    model::ParameterValues out;
-    bool done = false;
-    auto* req = ctx.drive().readParameters(axis);
-    QObject::connect(req, &DriveRequest::finished, [&](const DriveReply& r) {
-        if (r.ok)
-            out = r.values;
-        done = true;
-    });
-    waitUntil([&] { return done; }, 20000);
-    return out;
-}
 
 std::vector<model::ParameterMeta> readMeta(AppContext& ctx, const QString& axis)
 {
@@ -155,10 +144,8 @@ private slots:
     {
         QTemporaryDir dir;
         AppContext ctx;
-        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
-        ctx.drive().connectTo("sim:vmc");
-        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
-        const auto before = readAll(ctx, "X");
+        model::ParameterValues before;
+        openOn(dir, ctx, before);
         QVERIFY(!before.empty());
         const auto metas = readMeta(ctx, "X");
         AutoTuneWizard w(ctx);
@@ -255,10 +242,8 @@ private slots:
     {
         QTemporaryDir dir;
         AppContext ctx;
-        QVERIFY(ctx.openDatabase(dir.filePath("store.sqlite")));
-        ctx.drive().connectTo("sim:vmc");
-        QVERIFY(waitUntil([&] { return ctx.drive().isConnected(); }, 20000));
-        const auto before = readAll(ctx, "X");
+        model::ParameterValues before;
+        openOn(dir, ctx, before);
         QVERIFY(!before.empty());
         AutoTuneWizard w(ctx);
         tuneAndShowResult(w);
