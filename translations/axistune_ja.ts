@@ -7671,6 +7671,11 @@
         <source>Cannot start: %1</source>
         <translation>開始できません: %1</translation>
     </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Travel window −%1 … +%1 %2: the positions are spread evenly from −%3 to +%3 %2, inside its ends by the servo lag of the moves between them (%4 %2: jog speed / position gain); the axis returns to where it stood.</source>
+        <translation>ストローク範囲 −%1 … +%1 %2: 位置は −%3 から +%3 %2 まで均等に配置されます (両端から、位置間の移動の追従遅れによる位置偏差 %4 %2 = ジョグ速度 / 位置ゲイン だけ内側)。終了後に軸は元の位置へ戻ります。</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::AutoTuneResultPage</name>

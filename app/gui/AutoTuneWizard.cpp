@@ -295,9 +295,18 @@ void AutoTuneChoicePage::queryTravel()
             m_travelPossible = true;
             const QString w = QString::number(r.travel->window, 'g', 4);
             const QString unit = r.travel->units.empty() ? tr("m or rad") : qs(r.travel->units);
-            m_travelNote->setText(tr("Travel window −%1 … +%1 %2: the positions are spread evenly from one end to the "
-                                     "other; the axis returns to where it stood.")
-                                      .arg(w, unit));
+            const double inset = r.travel->inset;
+            if (std::isfinite(inset) && inset > 0.0 && inset < r.travel->window)
+                m_travelNote->setText(
+                    tr("Travel window −%1 … +%1 %2: the positions are spread evenly from −%3 to +%3 %2, inside "
+                       "its ends by the servo lag of the moves between them (%4 %2: jog speed / position gain); the "
+                       "axis returns to where it stood.")
+                        .arg(w, unit, QString::number(r.travel->window - inset, 'g', 4),
+                             QString::number(inset, 'g', 3)));
+            else
+                m_travelNote->setText(tr("Travel window −%1 … +%1 %2: the positions are spread evenly from one end "
+                                         "to the other; the axis returns to where it stood.")
+                                          .arg(w, unit));
         }
         m_positions->setEnabled(m_travelPossible);
         if (!m_travelPossible && m_positions->value() > 1)

@@ -392,10 +392,12 @@ private slots:
                   pts[i].second, *withResonance[i].firstResonanceHeightDb, withResonance[i].phaseMarginDeg,
                   withResonance[i].gainMarginDb);
         }
-        // The positions span the travel window -0.75 ... +0.75 m (3 positions: the ends and the middle), and the
-        // resonance falls by at least 25 % from one end to the other (the preset's design, docs/simulator.md).
-        QVERIFY(std::abs(pos.front().position + 0.75) <= 1e-9);
-        QVERIFY(std::abs(pos.back().position - 0.75) <= 1e-9);
+        // The positions span the travel window -0.75 ... +0.75 m less the move's servo lag v/K_p = 0.5 m/s / 30 1/s
+        // at both ends (3 positions: the ends and the middle; docs/tuning.md "Over the travel"), and the resonance
+        // falls by at least 25 % from one end to the other (the preset's design, docs/simulator.md).
+        const double end = 0.75 - 0.5 / 30.0;
+        QVERIFY(std::abs(pos.front().position + end) <= 1e-9);
+        QVERIFY(std::abs(pos.back().position - end) <= 1e-9);
         QVERIFY(*pos.back().firstResonanceHz <= 0.75 * *pos.front().firstResonanceHz);
 
         // The table: every position's re-measured figures, shown to one decimal.
