@@ -7808,6 +7808,11 @@
         <source>Cannot start: %1</source>
         <translation>開始できません: %1</translation>
     </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" />
+        <source>Travel window −%1 … +%1 %2: the positions are spread evenly from −%3 to +%3 %2, inside its ends by the servo lag of the moves between them (%4 %2: jog speed / position gain); the axis returns to where it stood.</source>
+        <translation>ストローク範囲 −%1 … +%1 %2: 位置は −%3 から +%3 %2 まで均等に配置されます (両端から、位置間の移動の追従遅れによる位置偏差 %4 %2 = ジョグ速度 / 位置ゲイン だけ内側)。終了後に軸は元の位置へ戻ります。</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::AutoTuneResultPage</name>
@@ -8149,6 +8154,150 @@ margin [dB]</source>
         <location filename="../app/gui/AutoTuneWizard.cpp" />
         <source>Over %1 positions: the figures are the worst position's; every position is in the resonance map's table.</source>
         <translation>%1 位置で調整: 数値は最も悪い位置のものです。各位置の値は共振マップの表にあります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneResultPage.cpp" />
+        <source>Unit</source>
+        <translation>単位</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneResultPage.cpp" />
+        <source>Undo anyway…</source>
+        <translation>それでも元に戻す…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneResultPage.cpp" />
+        <source>Undo…</source>
+        <translation>元に戻す…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneResultPage.cpp" />
+        <source>Write back the values the parameters had before the run</source>
+        <translation>実行前のパラメータ値を書き戻します</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneResultPage.cpp" />
+        <source>Undo is not offered: %1</source>
+        <translation>元に戻すことはできません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Reading the parameters&apos; units failed (%1): values are shown in SI units.</source>
+        <translation>パラメータの単位の読み出しに失敗しました (%1): 値はSI単位で表示します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo the automatic tuning anyway</source>
+        <translation>自動調整をそれでも元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo the automatic tuning</source>
+        <translation>自動調整を元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo writes back the values the parameters of axis %1 had before the run, all in one write, and reads them back. Nothing moves. These parameters change:</source>
+        <translation>元に戻すと、軸 %1 のパラメータを実行前の値に一度の書き込みで書き戻し、読み出して確認します。軸は動きません。変更するパラメータ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Applied by the run</source>
+        <translation>実行で適用した値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>On the drive now</source>
+        <translation>現在のサーボアンプの値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>→ Before the run (written)</source>
+        <translation>→ 実行前の値 (書き込む値)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Changed after the run applied it: Undo anyway overwrites this value</source>
+        <translation>実行で適用した後に変更されています: それでも元に戻すとこの値を上書きします</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>The drive no longer holds what the run applied for %1 (marked red): someone or something changed it after the run. Undo anyway overwrites that later change with the value before the run.</source>
+        <translation>%1 (赤で表示) のサーボアンプの値は、実行で適用した値ではありません: 実行後に変更されています。それでも元に戻すと、その後の変更を実行前の値で上書きします。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Overwrite the later change of %1</source>
+        <translation>%1 のその後の変更を上書きする</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo anyway</source>
+        <translation>それでも元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo</source>
+        <translation>元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undoing: writing the values before the run and reading them back…</source>
+        <translation>元に戻しています: 実行前の値を書き込み、読み出しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Automatic tuning of axis %1: undo%2</source>
+        <translation>軸 %1 の自動調整: 元に戻す%2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source> (anyway)</source>
+        <translation> (上書きを承認)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>%1: %2 → %3 %4</source>
+        <translation>%1: %2 → %3 %4</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undone: %n parameter(s) written back to the values before the run and read back equal.</source>
+        <translation>
+            <numerusform>元に戻しました: %n 個のパラメータを実行前の値に書き戻し、読み出して一致を確認しました。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo refused, nothing written: %1 is %2 %3 on the drive, not the %4 %3 the run applied. It was changed after the run, and undoing would overwrite that change.</source>
+        <translation>元に戻すことを拒否しました (何も書き込んでいません): サーボアンプの %1 は %2 %3 で、実行で適用した %4 %3 ではありません。実行後に変更されており、元に戻すとその変更を上書きします。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Also changed: %1.</source>
+        <translation>他に変更されたもの: %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo anyway… overwrites it after a second confirmation.</source>
+        <translation>「それでも元に戻す…」は、もう一度確認した後に上書きします。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo refused, nothing written: %1</source>
+        <translation>元に戻すことを拒否しました (何も書き込んでいません): %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneUndo.cpp" />
+        <source>Undo failed: %1
+Read the axis&apos;s parameters to see what the drive holds.</source>
+        <translation>元に戻せませんでした: %1
+軸のパラメータを読み出して、サーボアンプの値を確認してください。</translation>
     </message>
 </context>
 <context>

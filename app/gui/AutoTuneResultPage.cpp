@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The one-button tuning wizard's result page (AutoTuneWizard.h; docs/tuning.md "The wizard"): the figures and the
 // parameters applied, the resonance map over the travel and the amplitude map.
+#include "app/gui/AppContext.h"
 #include "app/gui/AutoTuneWizard.h"
 #include "app/gui/AutoTuneWizardText.h"
 #include "widgets/CurvePlot.h"
 
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -27,7 +29,8 @@ using autotunetext::wasAborted;
 // ---------------------------------------------------------------------------------------------------------------
 // Result
 
-AutoTuneResultPage::AutoTuneResultPage(AutoTuneData& shared, QWidget* parent) : QWizardPage(parent), m_d(shared)
+AutoTuneResultPage::AutoTuneResultPage(AppContext& ctx, AutoTuneData& shared, QWidget* parent)
+    : QWizardPage(parent), m_ctx(ctx), m_d(shared)
 {
     setTitle(tr("Result"));
     auto* lay = new QVBoxLayout(this);
@@ -50,9 +53,9 @@ AutoTuneResultPage::AutoTuneResultPage(AutoTuneData& shared, QWidget* parent) : 
     fl->addWidget(m_figures, 1);
     m_parametersTitle = new QLabel(figuresTab);
     fl->addWidget(m_parametersTitle);
-    m_parameters = new QTableWidget(0, 3, figuresTab);
+    m_parameters = new QTableWidget(0, 4, figuresTab);
     m_parameters->setObjectName("atParameters");
-    m_parameters->setHorizontalHeaderLabels({tr("Parameter"), tr("Before"), tr("After")});
+    m_parameters->setHorizontalHeaderLabels({tr("Parameter"), tr("Before"), tr("After"), tr("Unit")});
     m_parameters->verticalHeader()->hide();
     m_parameters->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_parameters->horizontalHeader()->setStretchLastSection(true);
@@ -93,6 +96,24 @@ AutoTuneResultPage::AutoTuneResultPage(AutoTuneData& shared, QWidget* parent) : 
     m_session = new QLabel(this);
     m_session->setObjectName("atSession");
     lay->addWidget(m_session);
+    auto* undoRow = new QHBoxLayout;
+    m_undoState = new QLabel(this);
+    m_undoState->setObjectName("atUndoState");
+    m_undoState->setWordWrap(true);
+    m_undoState->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    undoRow->addWidget(m_undoState, 1);
+    m_undoAnyway = new QPushButton(tr("Undo anyway…"), this);
+    m_undoAnyway->setObjectName("atUndoAnyway");
+    undoRow->addWidget(m_undoAnyway);
+    m_undo = new QPushButton(tr("Undo…"), this);
+    m_undo->setObjectName("atUndo");
+    m_undo->setToolTip(tr("Write back the values the parameters had before the run"));
+    undoRow->addWidget(m_undo);
+    lay->addLayout(undoRow);
+    connect(m_undo, &QPushButton::clicked, this, [this] { confirmUndo(false); });
+    connect(m_undoAnyway, &QPushButton::clicked, this, [this] { confirmUndo(true); });
+    connect(&m_ctx.drive(), &DriveController::testRunningChanged, this, &AutoTuneResultPage::updateUndoButtons);
+    connect(&m_ctx.drive(), &DriveController::connectionChanged, this, &AutoTuneResultPage::updateUndoButtons);
     lay->addStretch(0); // takes the room of the hidden tables after a refusal
     setFinalPage(true);
 }
@@ -232,6 +253,15 @@ void AutoTuneResultPage::initializePage()
 {
     m_figures->setRowCount(0);
     m_parameters->setRowCount(0);
+    if (!m_undoing && !m_undone) { // a second call (the session id arrived) keeps an undo's outcome
+        m_tune.reset();
+        m_changed.clear();
+        m_driveNow.clear();
+        m_undoState->clear();
+        m_undoState->setStyleSheet(QString());
+    }
+    m_undo->setVisible(false);
+    m_undoAnyway->setVisible(false);
     const auto* r = m_d.result.get();
     const bool refused = !r || r->outcome == autotune::Outcome::Refused || !r->final;
     m_figures->setVisible(!refused);
@@ -309,15 +339,24 @@ void AutoTuneResultPage::initializePage()
     add(tr("Motion time of the sequence"), tr("%1 s").arg(f.motionTimeS, 0, 'f', 2), "motion_time_s");
     m_parametersTitle->setText(r->outcome == autotune::Outcome::DryRun ? tr("Parameters it would apply (not applied):")
                                                                        : tr("Parameters applied (old → new):"));
-    for (const auto& [k, v] : f.parameters) {
-        const int row = m_parameters->rowCount();
-        m_parameters->insertRow(row);
-        m_parameters->setItem(row, 0, item(qs(k)));
-        const auto it = r->before.find(k);
-        m_parameters->setItem(row, 1,
-                              item(it == r->before.end() ? QStringLiteral("–") : QString::number(it->second, 'g', 6)));
-        m_parameters->setItem(row, 2, item(QString::number(v, 'g', 6)));
+    fillParameters();
+    if (r->outcome != autotune::Outcome::Applied)
+        return;
+    // Undo: the applied run as core reads it from the result JSON (the CLI's `--undo` reads the same), and the
+    // parameters' metadata for the units of the diff.
+    auto tune = autotune::appliedTuneFromJson(j);
+    if (!tune) {
+        m_undoState->setText(tr("Undo is not offered: %1").arg(qs(tune.error().detail)));
+        return;
     }
+    m_tune = std::move(tune).value();
+    m_undo->setVisible(true);
+    if (m_ctx.drive().isConnected())
+        m_metaRequest =
+            connectReply(m_ctx.drive().readMetadata(qs(m_tune->axis)), this, &AutoTuneResultPage::onMetadata);
+    else
+        m_metasKnown = true;
+    updateUndoButtons();
 }
 
 } // namespace gui

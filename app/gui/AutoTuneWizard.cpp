@@ -295,9 +295,18 @@ void AutoTuneChoicePage::queryTravel()
             m_travelPossible = true;
             const QString w = QString::number(r.travel->window, 'g', 4);
             const QString unit = r.travel->units.empty() ? tr("m or rad") : qs(r.travel->units);
-            m_travelNote->setText(tr("Travel window −%1 … +%1 %2: the positions are spread evenly from one end to the "
-                                     "other; the axis returns to where it stood.")
-                                      .arg(w, unit));
+            const double inset = r.travel->inset;
+            if (std::isfinite(inset) && inset > 0.0 && inset < r.travel->window)
+                m_travelNote->setText(
+                    tr("Travel window −%1 … +%1 %2: the positions are spread evenly from −%3 to +%3 %2, inside "
+                       "its ends by the servo lag of the moves between them (%4 %2: jog speed / position gain); the "
+                       "axis returns to where it stood.")
+                        .arg(w, unit, QString::number(r.travel->window - inset, 'g', 4),
+                             QString::number(inset, 'g', 3)));
+            else
+                m_travelNote->setText(tr("Travel window −%1 … +%1 %2: the positions are spread evenly from one end "
+                                         "to the other; the axis returns to where it stood.")
+                                          .arg(w, unit));
         }
         m_positions->setEnabled(m_travelPossible);
         if (!m_travelPossible && m_positions->value() > 1)
@@ -602,11 +611,15 @@ AutoTuneWizard::AutoTuneWizard(AppContext& ctx, QWidget* parent) : QWizard(paren
     setWizardStyle(QWizard::ClassicStyle);
     m_choice = new AutoTuneChoicePage(ctx, m_data, this);
     m_run = new AutoTuneRunPage(ctx, m_data, this);
-    m_result = new AutoTuneResultPage(m_data, this);
+    m_result = new AutoTuneResultPage(ctx, m_data, this);
     setPage(Choice, m_choice);
     setPage(Run, m_run);
     setPage(Result, m_result);
     connect(m_run, &AutoTuneRunPage::runFinished, this, [this] {
+        if (m_closeWhenDone)
+            QWizard::reject();
+    });
+    connect(m_result, &AutoTuneResultPage::undoFinished, this, [this] {
         if (m_closeWhenDone)
             QWizard::reject();
     });
@@ -618,6 +631,10 @@ void AutoTuneWizard::reject()
     if (m_data.running) {
         m_closeWhenDone = true;
         m_run->abort();
+        return;
+    }
+    if (m_result->isUndoing()) { // the undo's answer (and its journal) first; the write itself is not interrupted
+        m_closeWhenDone = true;
         return;
     }
     QWizard::reject();

@@ -5,7 +5,8 @@
 //   choices (axis, style, time budget, dry run, the confirmation that the axis may move) →
 //   run (the nine steps with their state, the progress of the whole sequence, Abort, and what each finished step
 //        measured, chose and by which rule) →
-//   result (the final figures and the parameters old → new, or the refusal in red with "nothing was changed").
+//   result (the final figures and the parameters old → new, or the refusal in red with "nothing was changed"; after an
+//           applied run, Undo: AutoTuneUndo.cpp).
 // The sequence runs on the drive thread as one DriveController request (DriveControllerAutoTune.cpp), so the drive
 // is used by that thread only; Abort sets the request's token and the sequence restores every parameter it wrote.
 // Each run is saved as a session of kind "autotune" with the result JSON the CLI writes.
@@ -19,9 +20,12 @@
 
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
+class QDialog;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
@@ -145,7 +149,7 @@ private:
 class AutoTuneResultPage : public QWizardPage {
     Q_OBJECT
 public:
-    AutoTuneResultPage(AutoTuneData& data, QWidget* parent = nullptr);
+    AutoTuneResultPage(AppContext& ctx, AutoTuneData& data, QWidget* parent = nullptr);
     void initializePage() override;
 
     QLabel* outcome() const { return m_outcome; }
@@ -163,9 +167,40 @@ public:
     QLabel* amplitudeSummary() const { return m_ampSummary; }
     enum Tab { FiguresTab, ResonanceTab, AmplitudeTab };
 
+    // Undo of an applied run (docs/tuning.md "Undo in the wizard"; AutoTuneUndo.cpp): autotune::undoTune on the drive
+    // thread, the CLI's `autotune --undo` rules.
+    /// Shown after an applied run; opens the confirmation with the diff. Disabled while a test runs, while the undo
+    /// runs, and once undone.
+    QPushButton* undoButton() const { return m_undo; }
+    /// Shown after Undo was refused because the drive no longer holds what the run applied; opens a second
+    /// confirmation (a box to tick: overwrite the later change), then undoes with force.
+    QPushButton* undoAnywayButton() const { return m_undoAnyway; }
+    /// The outcome of the undo (refusal in red, naming the key).
+    QLabel* undoState() const { return m_undoState; }
+    /// The open confirmation ("atUndoConfirm": the diff table "atUndoDiff", for Undo anyway the box
+    /// "atUndoOverwrite"; the button box "atUndoButtons"), null when none is open.
+    QDialog* undoDialog() const { return m_undoDialog; }
+    bool isUndoing() const { return m_undoing; }
+    bool isUndone() const { return m_undone; }
+
+signals:
+    /// The undo answered (undone, refused or failed).
+    void undoFinished();
+
 private:
     void showResonanceMap(const nlohmann::json& result, bool linear);
     void showAmplitudeMap(const nlohmann::json& map);
+    void fillParameters();
+    /// A value in the parameter's display unit (the other wizards' apply pages), the SI value without metadata.
+    QString valueText(const std::string& key, double si) const;
+    QString unitText(const std::string& key) const;
+    void onMetadata(const DriveReply& reply);
+    void updateUndoButtons();
+    /// Shows the confirmation; `force`: the second one, after a refusal.
+    void confirmUndo(bool force);
+    void onUndoReply(const DriveReply& reply);
+    void saveUndoSession(const DriveReply& reply);
+    AppContext& m_ctx;
     AutoTuneData& m_d;
     QLabel* m_outcome = nullptr;
     QTabWidget* m_tabs = nullptr;
@@ -178,6 +213,20 @@ private:
     QLabel* m_parametersTitle = nullptr;
     QTableWidget* m_parameters = nullptr;
     QLabel* m_session = nullptr;
+    QPushButton* m_undo = nullptr;
+    QPushButton* m_undoAnyway = nullptr;
+    QLabel* m_undoState = nullptr;
+    QPointer<QDialog> m_undoDialog;
+    std::optional<autotune::AppliedTune> m_tune; ///< the applied run as core reads it back (appliedTuneFromJson)
+    std::vector<model::ParameterMeta> m_metas;
+    bool m_metasKnown = false; ///< the metadata answered (also with an error: then SI values, no unit)
+    int m_metaRequest = 0;
+    int m_undoRequest = 0;
+    bool m_undoing = false;
+    bool m_undoForced = false;
+    bool m_undone = false;
+    std::vector<autotune::ChangedParameter> m_changed; ///< the refusal's changed parameters
+    model::ParameterValues m_driveNow;                 ///< the applied keys as the drive held them at the refusal
 };
 
 class AutoTuneWizard : public QWizard {
@@ -190,7 +239,8 @@ public:
     AutoTuneChoicePage* choicePage() const { return m_choice; }
     AutoTuneRunPage* runPage() const { return m_run; }
     AutoTuneResultPage* resultPage() const { return m_result; }
-    /// Cancel while the sequence runs: aborts it and closes when it has answered (every parameter restored).
+    /// Cancel while the sequence runs: aborts it and closes when it has answered (every parameter restored). While an
+    /// undo runs: closes when it has answered.
     void reject() override;
 
 private:

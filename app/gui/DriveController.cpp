@@ -247,13 +247,22 @@ DriveController::~DriveController()
     m_thread->wait();
 }
 
+namespace {
+bool isTestKind(DriveReply::Kind k)
+{
+    return k == DriveReply::Kind::Test || k == DriveReply::Kind::AutoTune;
+}
+} // namespace
+
 DriveRequest* DriveController::post(DriveReply::Kind kind, std::function<DriveReply(DriveWorker&, int)> job, bool side)
 {
     const int id = m_nextId++;
     auto* req = new DriveRequest(id, kind, this);
-    m_open[id] = {req, req->m_cancel};
+    m_open[id] = {req, req->m_cancel, kind};
     if (m_pending++ == 0)
         emit busyChanged(true);
+    if (isTestKind(kind) && m_tests++ == 0)
+        emit testRunningChanged(true);
     QPointer<DriveController> self(this);
     DriveWorker* w = m_worker;
     std::function<void()> run = [self, w, id, job = std::move(job)]() {
@@ -293,6 +302,8 @@ void DriveController::onReply(const DriveReply& reply)
     QPointer<DriveRequest> req;
     if (auto it = m_open.find(reply.id); it != m_open.end()) {
         req = it->second.request;
+        if (isTestKind(it->second.kind) && --m_tests == 0)
+            emit testRunningChanged(false);
         m_open.erase(it);
     }
     if (req) {

@@ -16,6 +16,7 @@
 
 #include "core/autotune/AutoTune.h"
 #include "core/autotune/TravelChoice.h"
+#include "core/autotune/Undo.h"
 #include "core/device/Drive.h"
 #include "core/model/Capture.h"
 #include "core/model/Parameter.h"
@@ -53,7 +54,8 @@ struct DriveReply {
         Describe,
         Plan,
         Scope,
-        AutoTune
+        AutoTune,
+        AutoTuneUndo
     };
     int id = 0;
     Kind kind = Kind::Connect;
@@ -86,6 +88,12 @@ struct DriveReply {
     std::shared_ptr<const autotune::AutoTuneResult> autotune;
     // Describe by autoTuneTravel: whether the axis can be tuned over its travel, and the window (no motion)
     std::optional<autotune::TravelChoice> travel;
+    // AutoTuneUndo (autotune::undoTune): `ok` the parameters undone, each read back equal to its value before the run
+    // (`values`: the read-back). Refused without `force` because the drive no longer holds what the run applied:
+    // `code` Safety (NotFound for a missing key), `undoChanged` those parameters, `values` every applied key as the
+    // drive holds it now; nothing was written.
+    std::vector<autotune::UndoneParameter> undone;
+    std::vector<autotune::ChangedParameter> undoChanged;
 };
 
 class DriveWorker;
@@ -151,6 +159,10 @@ public:
     /// sequence restores every parameter it wrote (reply kind AutoTune; DriveControllerAutoTune.cpp). The options'
     /// `run`, `stepStarted` and `stepFinished` are set by the controller.
     DriveRequest* runAutoTune(const autotune::Options& options);
+    /// Undoes an applied run on the worker (autotune::undoTune, the CLI's `autotune --undo` rules): refused with
+    /// nothing written when the drive no longer holds what the run applied, unless `force`; otherwise every value
+    /// before the run in one write, read back (reply kind AutoTuneUndo; DriveControllerAutoTune.cpp).
+    DriveRequest* undoAutoTune(const autotune::AppliedTune& tune, bool force);
     /// Whether `axis` can be tuned over its travel and the travel window (autotune::travelChoice; reply kind
     /// Describe with `travel`); nothing moves.
     DriveRequest* autoTuneTravel(const QString& axis);
@@ -170,6 +182,8 @@ public:
 
     bool isConnected() const { return m_connected; }
     bool isBusy() const { return m_pending > 0; }
+    /// A test or the one-button tuner is queued or running (requests of kind Test and AutoTune without a reply yet).
+    bool isTestRunning() const { return m_tests > 0; }
     QString uri() const { return m_uri; }
     const std::optional<device::DriveIdentity>& identity() const { return m_identity; }
 
@@ -183,6 +197,8 @@ signals:
     /// The connection failed during a request (the request itself also replies with an error).
     void connectionLost(const QString& reason);
     void busyChanged(bool busy);
+    /// isTestRunning() changed.
+    void testRunningChanged(bool running);
 
 private:
     DriveRequest* post(DriveReply::Kind kind, std::function<DriveReply(DriveWorker&, int id)> job, bool side = false);
@@ -193,10 +209,12 @@ private:
     struct Open {
         QPointer<DriveRequest> request;
         std::shared_ptr<std::atomic<bool>> cancel; ///< the request's token (kept if the request is deleted)
+        DriveReply::Kind kind = DriveReply::Kind::Connect;
     };
     std::map<int, Open> m_open; ///< requests without a reply yet
     int m_nextId = 1;
     int m_pending = 0;
+    int m_tests = 0; ///< open requests of kind Test or AutoTune
     bool m_connected = false;
     QString m_uri;
     std::optional<device::DriveIdentity> m_identity;
@@ -220,6 +238,7 @@ public:
     DriveReply doPlan(int id, const device::TestRequest& request);
     DriveReply doAutoTune(int id, autotune::Options options, std::shared_ptr<std::atomic<bool>> cancel);
     DriveReply doAutoTuneTravel(int id, const QString& axis);
+    DriveReply doAutoTuneUndo(int id, const autotune::AppliedTune& tune, bool force);
     DriveReply doScopeCapabilities(int id, const QString& axis);
     DriveReply doArmScope(int id, const device::ScopeRequest& request);
     DriveReply doPollScope(int id, std::optional<std::uint64_t> rollFrom, std::uint64_t knownCaptures,

@@ -84,6 +84,49 @@ DriveReply DriveWorker::doAutoTuneTravel(int id, const QString& axis)
     return r;
 }
 
+DriveReply DriveWorker::doAutoTuneUndo(int id, const autotune::AppliedTune& tune, bool force)
+{
+    DriveReply r;
+    r.id = id;
+    r.kind = DriveReply::Kind::AutoTuneUndo;
+    r.axis = QString::fromStdString(tune.axis);
+    if (!m_drive)
+        return fail(r,
+                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+    if (!force) {
+        // The check undoTune makes, kept per parameter for the window (which key changed, to what); undoTune checks
+        // again before it writes.
+        std::vector<std::string> keys;
+        for (const auto& [k, v] : tune.applied)
+            keys.push_back(k);
+        auto now = m_drive->readParameters(tune.axis, keys);
+        if (!now)
+            return fail(r, now.error());
+        if (auto changed = autotune::changedSinceApplied(*now, tune); !changed.empty()) {
+            r.values = *now;
+            const Error e = autotune::changedRefusal(tune, changed);
+            r.undoChanged = std::move(changed);
+            r.code = e.code;
+            r.error = QString::fromStdString(e.detail);
+            return r;
+        }
+    }
+    auto undone = autotune::undoTune(*m_drive, tune, force);
+    if (!undone)
+        return fail(r, undone.error());
+    r.undone = std::move(undone).value();
+    for (const auto& u : r.undone)
+        r.values[u.key] = u.restored;
+    r.ok = true;
+    return r;
+}
+
+DriveRequest* DriveController::undoAutoTune(const autotune::AppliedTune& tune, bool force)
+{
+    return post(DriveReply::Kind::AutoTuneUndo,
+                [tune, force](DriveWorker& w, int id) { return w.doAutoTuneUndo(id, tune, force); });
+}
+
 DriveRequest* DriveController::autoTuneTravel(const QString& axis)
 {
     return post(DriveReply::Kind::Describe, [axis](DriveWorker& w, int id) { return w.doAutoTuneTravel(id, axis); });

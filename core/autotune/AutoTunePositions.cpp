@@ -9,6 +9,7 @@
 // single-position sequence (AutoTune.cpp), restated here where they are used. The steps are in files of their own
 // (AutoTunePositionsRun.h).
 #include "core/autotune/AutoTunePositionsRun.h"
+#include "core/autotune/TravelChoice.h"
 #include "core/device/MoveTo.h"
 #include "core/model/ResultJson.h"
 
@@ -122,19 +123,33 @@ Result<AutoTuneResult> Positions::run()
         m_motion += here->motionTimeS;
         s.motionTimeS = here->motionTimeS;
         const double w = *window;
-        for (int i = 0; i < m_o.positions; ++i) {
+        // Inside the window by the move's servo lag (positionsInset): a move's overshoot must not take the axis out
+        // of a window the drive checks on the measured position.
+        const double kp = value("position.kp");
+        const double inset = positionsInset(m_linear, kp);
+        auto spread = positionsOverTravel(w, inset, m_o.positions);
+        if (!spread)
+            return refuse(spread.error().detail, spread.error().code);
+        for (const double x : *spread) {
             Site site;
-            site.x = -w + 2.0 * w * static_cast<double>(i) / static_cast<double>(m_o.positions - 1);
+            site.x = x;
             m_sites.push_back(std::move(site));
         }
         m_pct = std::min(m_t.frfAmplitudePct, limits->frfAmplitudeMaxPct);
         nlohmann::json xs = nlohmann::json::array();
         for (const auto& site : m_sites)
             xs.push_back(site.x);
-        s.measured = {{"travel_window", w}, {"start_position", m_start}, {"axis_units", m_linear ? "m" : "rad"}};
-        s.chosen = {{"positions", xs}, {"frf_amplitude_pct", m_pct}, {"time_budget_s", m_o.timeBudgetS}};
+        s.measured = {{"travel_window", w},
+                      {"start_position", m_start},
+                      {"axis_units", m_linear ? "m" : "rad"},
+                      {"position_gain_per_s", kp}};
+        s.chosen = {
+            {"positions", xs}, {"inset", inset}, {"frf_amplitude_pct", m_pct}, {"time_budget_s", m_o.timeBudgetS}};
         s.rule = wholeText(m_o.positions) + " positions evenly over the drive's travel window -" + num(w, 4) +
-                 " ... +" + num(w, 4) + (m_linear ? " m" : " rad") +
+                 " ... +" + num(w, 4) + (m_linear ? " m" : " rad") + ", inset from its ends by the move's servo lag " +
+                 "v/K_p = " + num(m_linear ? device::kMoveToSpeedLinear : device::kMoveToSpeedRotary, 3) +
+                 (m_linear ? " m/s" : " rad/s") + " / " + num(kp, 4) + " 1/s = " + num(inset, 4) +
+                 (m_linear ? " m" : " rad") + " (the overshoot of a move stays inside it)" +
                  ", reached by jogs the drive checks against its limits; FRF peak " + num(m_t.frfAmplitudePct, 3) +
                  " % of rated torque (" + styleName(m_o.style) +
                  "), at most the drive's limit; every test within the "

@@ -14,6 +14,28 @@ double defaultTimeBudgetS(int positions)
     return kDefaultBudgetPerPositionS * static_cast<double>(positions < 1 ? 1 : positions);
 }
 
+double positionsInset(bool linear, double positionGainPerS)
+{
+    if (!(positionGainPerS > 0.0) || !std::isfinite(positionGainPerS))
+        return std::nan("");
+    return (linear ? device::kMoveToSpeedLinear : device::kMoveToSpeedRotary) / positionGainPerS;
+}
+
+Result<std::vector<double>> positionsOverTravel(double window, double inset, int n)
+{
+    if (n < 2)
+        return makeError(ErrorCode::BadInput, "positions over the travel: need at least 2");
+    if (!(inset >= 0.0) || !std::isfinite(inset) || !(window > inset))
+        return makeError(ErrorCode::BadInput, "the travel window +-" + model::formatNumber(window, 4) +
+                                                  " leaves no room inside the inset " + model::formatNumber(inset, 4) +
+                                                  " (the move's servo lag v/K_p) from its ends");
+    const double w = window - inset;
+    std::vector<double> xs;
+    for (int i = 0; i < n; ++i)
+        xs.push_back(-w + 2.0 * w * static_cast<double>(i) / static_cast<double>(n - 1));
+    return xs;
+}
+
 Result<TravelChoice> travelChoice(device::Drive& drive, const std::string& axis)
 {
     auto caps = drive.capabilities(axis);
@@ -36,6 +58,11 @@ Result<TravelChoice> travelChoice(device::Drive& drive, const std::string& axis)
                 }
         }
     }
+    const std::vector<std::string> kpKey{"position.kp"};
+    if (auto kp = drive.readParameters(axis, kpKey); kp && kp->count("position.kp"))
+        c.inset = positionsInset(c.units != "rad", kp->at("position.kp"));
+    else
+        c.inset = std::nan("");
     return c;
 }
 

@@ -19,6 +19,19 @@ namespace axistune::autotune {
 inline constexpr double kDefaultBudgetPerPositionS = 30.0;
 double defaultTimeBudgetS(int positions);
 
+/// How far inside the travel window the positions over the travel stay [m or rad] (docs/tuning.md "Over the travel"):
+/// the servo lag v/K_p of the move that reaches them, v the jog speed of device::moveAxisTo (kMoveToSpeedLinear or
+/// kMoveToSpeedRotary) and K_p the position gain [1/s]. A position loop without feedforward trails its command by
+/// v/K_p while it moves at v; the feedforward the drive adds removes most of that lag, so the overshoot at the end of
+/// the move stays well inside it (sim:long-axis X at K_p = 30 1/s: 19 µm past the target against v/K_p = 16.7 mm),
+/// and a drive that checks the measured position against its window (axistune-simdrive) does not see the axis leave
+/// it. NaN when K_p is not finite and > 0.
+double positionsInset(bool linear, double positionGainPerS);
+
+/// N >= 2 positions evenly from −(window − inset) to +(window − inset); BadInput when the inset leaves no room
+/// (inset >= window), naming both.
+Result<std::vector<double>> positionsOverTravel(double window, double inset, int n);
+
 struct TravelChoice {
     /// Empty: positions along the travel can be chosen; else why not (the reason runAutoTunePositions would refuse
     /// with: no jog or hold test, jog distances in command units, no finite travel window — the rotary presets).
@@ -27,6 +40,9 @@ struct TravelChoice {
     /// "m" or "rad" when the drive names the unit of its position command (its scope channels) before any test;
     /// empty when it does not (the sequence then learns it from its first hold).
     std::string units;
+    /// positionsInset at the drive's position gain now (the units' kind; linear when not named); NaN when the drive
+    /// gives no position gain.
+    double inset = 0.0;
 };
 
 /// Asks the drive (capabilities, limits, scope channels); no motion. Errors: the drive's (unknown axis, link).

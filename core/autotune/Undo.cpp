@@ -54,6 +54,29 @@ Result<AppliedTune> appliedTuneFromJson(const nlohmann::json& j)
     return t;
 }
 
+std::vector<ChangedParameter> changedSinceApplied(const model::ParameterValues& now, const AppliedTune& tune)
+{
+    std::vector<ChangedParameter> out;
+    for (const auto& [k, v] : tune.applied) {
+        const auto it = now.find(k);
+        if (it == now.end())
+            out.push_back({k, v, std::nullopt});
+        else if (!readsBackAs(it->second, v))
+            out.push_back({k, v, it->second});
+    }
+    return out;
+}
+
+Error changedRefusal(const AppliedTune& tune, const std::vector<ChangedParameter>& changed)
+{
+    const auto& c = changed.front();
+    if (!c.now)
+        return makeError(ErrorCode::NotFound, "axis " + tune.axis + " has no parameter " + c.key);
+    return makeError(ErrorCode::Safety, c.key + " is " + num(*c.now, 7) + ", not the " + num(c.applied, 7) +
+                                            " the run applied: it was changed since, and undoing would "
+                                            "overwrite that (nothing written)");
+}
+
 Result<std::vector<UndoneParameter>> undoTune(device::Drive& drive, const AppliedTune& tune, bool force)
 {
     std::vector<std::string> keys;
@@ -63,15 +86,8 @@ Result<std::vector<UndoneParameter>> undoTune(device::Drive& drive, const Applie
     if (!now)
         return now.error();
     if (!force)
-        for (const auto& [k, v] : tune.applied) {
-            const auto it = now->find(k);
-            if (it == now->end())
-                return makeError(ErrorCode::NotFound, "axis " + tune.axis + " has no parameter " + k);
-            if (!readsBackAs(it->second, v))
-                return makeError(ErrorCode::Safety, k + " is " + num(it->second, 7) + ", not the " + num(v, 7) +
-                                                        " the run applied: it was changed since, and undoing would "
-                                                        "overwrite that (nothing written)");
-        }
+        if (const auto changed = changedSinceApplied(*now, tune); !changed.empty())
+            return changedRefusal(tune, changed);
     model::ParameterValues back;
     for (const auto& k : keys)
         back[k] = tune.before.at(k);

@@ -8,6 +8,7 @@
 #include "core/model/Result.h"
 
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,21 @@ struct UndoneParameter {
     double applied = 0.0;  ///< what the run applied (and the drive held before the undo)
     double restored = 0.0; ///< what the drive holds after the undo (read back; equals the value before the run)
 };
+
+/// A parameter the drive no longer holds as the run applied it.
+struct ChangedParameter {
+    std::string key;
+    double applied = 0.0;      ///< what the run applied
+    std::optional<double> now; ///< what the drive holds now (none: the axis has no such parameter)
+};
+
+/// The parameters of `tune.applied` whose value in `now` (the drive's, read just before) is not what the run applied
+/// (within the read-back tolerance), in key order; empty when the drive holds every one as applied.
+std::vector<ChangedParameter> changedSinceApplied(const model::ParameterValues& now, const AppliedTune& tune);
+
+/// The refusal of undoTune without `force` for the first of `changed` (non-empty): NotFound for a missing key,
+/// Safety naming the key, its value now and the value applied.
+Error changedRefusal(const AppliedTune& tune, const std::vector<ChangedParameter>& changed);
 
 /// Writes `tune.before` for every key of `tune.applied`. Refused, with nothing written, when the drive does not hold
 /// what the run applied (within the read-back tolerance: a later change would be overwritten) unless `force`;

@@ -112,7 +112,7 @@ Result<MoveToResult> moveAxisTo(Drive& drive, const std::string& axis, double ta
     jog.distance = distance;
     jog.velocity = o.velocity;
     if (!(jog.velocity > 0.0))
-        jog.velocity = r.linear ? 0.5 : 2.0;
+        jog.velocity = r.linear ? kMoveToSpeedLinear : kMoveToSpeedRotary;
     jog.acceleration = o.acceleration > 0.0 ? o.acceleration : (r.linear ? 2.0 : 20.0);
     jog.durationS = o.dwellS;
     auto jogPlan = drive.planTest(jog);

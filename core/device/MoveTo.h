@@ -14,8 +14,13 @@
 
 namespace axistune::device {
 
+/// The jog speed of moveAxisTo unless MoveToOptions::velocity is set: 0.5 m/s (linear) or 2 rad/s (rotary).
+inline constexpr double kMoveToSpeedLinear = 0.5;
+inline constexpr double kMoveToSpeedRotary = 2.0;
+
 struct MoveToOptions {
-    double velocity = 0.0; ///< [m/s or rad/s]; 0: 0.5 m/s or 2 rad/s (the drive refuses what its speed limit forbids)
+    double velocity = 0.0;     ///< [m/s or rad/s]; 0: kMoveToSpeedLinear or kMoveToSpeedRotary (the drive refuses what
+                               ///< its speed limit forbids)
     double acceleration = 0.0; ///< [m/s² or rad/s²]; 0: 2 m/s² or 20 rad/s²
     double dwellS = 0.05;      ///< jog dwell before and after (the axis settles at the target)
 };

@@ -21,6 +21,7 @@
 #include <string>
 
 #include "tests/app/cli/CliRunner.h"
+#include "tests/app/cli/SimDriveProcess.h"
 
 using axistune::testing::makeTempDir;
 using axistune::testing::readFileText;
@@ -29,6 +30,10 @@ using axistune::testing::runCli;
 namespace {
 
 constexpr double kPm = 45.0, kGm = 6.0; // issue 18
+// The outer positions of `--positions 3` on long-axis: its travel window 0.75 m less the move's servo lag v/K_p, v =
+// 0.5 m/s the jog speed of a move (docs/drive-seam.md "Moving to a position") and K_p = 30 1/s the preset's position
+// gain (resources/machines/long-axis.json).
+constexpr double kLongAxisEnd = 0.75 - 0.5 / 30.0;
 
 struct LoopFigures {
     double pm = NAN, gm = NAN;
@@ -61,11 +66,12 @@ std::string setOptions(const nlohmann::json& params)
     return s;
 }
 
-/// The ordinary capture the tests measure with, at position x, with `sets`.
-LoopFigures captureAt(const std::filesystem::path& dir, double x, const std::string& sets)
+/// The ordinary capture the tests measure with, at position x, with `sets`, on `connect`.
+LoopFigures captureAt(const std::filesystem::path& dir, double x, const std::string& sets,
+                      const std::string& connect = "sim:long-axis")
 {
     const auto out = (dir / "at.csv").string();
-    const auto r = runCli("capture --connect sim:long-axis --axis X --at " + nlohmann::json(x).dump() +
+    const auto r = runCli("capture --connect " + connect + " --axis X --at " + nlohmann::json(x).dump() +
                           " --test frf --method multisine --fmin 20 --fmax 3900 --spacing-hz 10 --adaptive "
                           "--time-budget 5 --amplitude-pct 10" +
                           sets + " --out " + out);
@@ -86,8 +92,9 @@ TEST(AutotunePositions, LongAxisThreePositionsKeepTheMarginsAtEveryPositionMeasu
     const auto& fin = j["final"];
     ASSERT_TRUE(fin.contains("positions"));
     ASSERT_EQ(fin["positions"].size(), 3u);
-    // Spread over the drive's travel window of the preset, +-0.75 m (resources/machines/long-axis.json).
-    const double expected[] = {-0.75, 0.0, 0.75};
+    // Spread over the drive's travel window of the preset, +-0.75 m (resources/machines/long-axis.json), inset from
+    // its ends by the move's servo lag v/K_p (docs/tuning.md "Over the travel").
+    const double expected[] = {-kLongAxisEnd, 0.0, kLongAxisEnd};
     ASSERT_TRUE(j.contains("resonance_map"));
     ASSERT_EQ(j["resonance_map"].size(), 3u);
     for (std::size_t i = 0; i < 3; ++i) {
@@ -136,6 +143,43 @@ TEST(AutotunePositions, LongAxisThreePositionsKeepTheMarginsAtEveryPositionMeasu
                   << " deg, GM " << m.gm << " dB\n";
         EXPECT_GE(m.pm, kPm) << x;
         EXPECT_GE(m.gm, kGm) << x;
+    }
+    std::filesystem::remove_all(dir);
+}
+
+// Over Modbus: axistune-simdrive checks the measured table position against its travel window while a test runs and
+// stops a jog that leaves it (docs/modbus.md). With the positions on the window's ends a move overshot them by about
+// 19 um and the server stopped it ("left the travel window"); inset by the move's servo lag v/K_p (16.7 mm) the run
+// completes. The server's window is set to the preset's 0.75 m (its default is 0.5 m). The server keeps the applied
+// parameters, so the ordinary captures afterwards measure the tuned loop at each position without --set.
+TEST(AutotunePositions, LongAxisThreePositionsOverModbusStayInsideTheServersTravelWindow)
+{
+    axistune::testing::SimDrive srv("--preset long-axis --travel-limit 0.75");
+    ASSERT_GT(srv.port(), 0);
+    const std::string uri = "modbus://127.0.0.1:" + std::to_string(srv.port());
+    const auto dir = makeTempDir("autotune-positions-modbus");
+    const auto result = (dir / "result.json").string();
+    const auto r = runCli("autotune --connect " + uri + " --axis X --positions 3 --out " + result);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(readFileText(result));
+    ASSERT_EQ(j["outcome"], "applied") << j.value("reason", "");
+    const auto& fin = j["final"];
+    ASSERT_EQ(fin["positions"].size(), 3u);
+    const double expected[] = {-kLongAxisEnd, 0.0, kLongAxisEnd};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto& p = fin["positions"][i];
+        const double x = p["position"].get<double>();
+        EXPECT_NEAR(x, expected[i], 1e-9);
+        // The margins the run re-measured at every position, and an ordinary capture there afterwards.
+        EXPECT_GE(p["phase_margin_deg"].get<double>(), kPm) << x;
+        EXPECT_GE(p["gain_margin_dB"].get<double>(), kGm) << x;
+        const auto m = captureAt(dir, x, "", uri);
+        std::cout << "long-axis over Modbus --positions 3, at " << x << " m: measured PM " << m.pm << " deg, GM "
+                  << m.gm << " dB; final " << p["phase_margin_deg"] << " deg, " << p["gain_margin_dB"] << " dB\n";
+        EXPECT_GE(m.pm, kPm) << x;
+        EXPECT_GE(m.gm, kGm) << x;
+        EXPECT_NEAR(m.pm, p["phase_margin_deg"].get<double>(), 3.0) << x;
+        EXPECT_NEAR(m.gm, p["gain_margin_dB"].get<double>(), 1.0) << x;
     }
     std::filesystem::remove_all(dir);
 }

@@ -7,6 +7,7 @@
 #include "core/autotune/TravelChoice.h"
 #include "core/device/MoveTo.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace axistune;
@@ -20,6 +21,33 @@ TEST(TravelChoice, LongAxisHasItsTravelWindowInMetres)
     EXPECT_TRUE(t->refusal.empty()) << t->refusal;
     EXPECT_EQ(t->window, 0.75); // the preset's stated window, passed through unchanged
     EXPECT_EQ(t->units, "m");
+    // The positions' inset: the jog speed 0.5 m/s over the preset's position gain 30 1/s
+    // (resources/machines/long-axis.json), by hand 1/60 m.
+    EXPECT_NEAR(t->inset, 0.5 / 30.0, 1e-15);
+}
+
+TEST(TravelChoice, PositionsStayInsideTheWindowByTheMovesServoLag)
+{
+    // v/K_p: 0.5 m/s (linear) or 2 rad/s (rotary) over K_p, by hand.
+    EXPECT_DOUBLE_EQ(autotune::positionsInset(true, 30.0), 0.5 / 30.0);
+    EXPECT_DOUBLE_EQ(autotune::positionsInset(false, 40.0), 2.0 / 40.0);
+    EXPECT_TRUE(std::isnan(autotune::positionsInset(true, 0.0)));
+    EXPECT_TRUE(std::isnan(autotune::positionsInset(true, std::nan(""))));
+    // Evenly over -(W - inset) ... +(W - inset): W = 0.75, inset 0.05 → -0.7, -0.35, 0, 0.35, 0.7.
+    auto xs = autotune::positionsOverTravel(0.75, 0.05, 5);
+    ASSERT_TRUE(xs.ok());
+    const double want[] = {-0.7, -0.35, 0.0, 0.35, 0.7};
+    ASSERT_EQ(xs->size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i)
+        EXPECT_NEAR((*xs)[i], want[i], 1e-15);
+    // No room: refused naming the window and the inset; a NaN inset (no position gain) is refused too.
+    auto none = autotune::positionsOverTravel(0.01, 0.0167, 3);
+    ASSERT_FALSE(none.ok());
+    EXPECT_EQ(none.error().code, ErrorCode::BadInput);
+    EXPECT_NE(none.error().detail.find("0.01"), std::string::npos) << none.error().detail;
+    EXPECT_NE(none.error().detail.find("0.0167"), std::string::npos) << none.error().detail;
+    EXPECT_FALSE(autotune::positionsOverTravel(0.75, std::nan(""), 3).ok());
+    EXPECT_FALSE(autotune::positionsOverTravel(0.75, 0.01, 1).ok());
 }
 
 TEST(TravelChoice, RotaryPresetAxisIsRefusedWithTheSequencesReason)
