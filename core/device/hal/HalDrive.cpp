@@ -508,23 +508,6 @@ Status HalDrive::startExternalJog(const TestRequest& request, double recordS, Ex
     return start(request, std::move(move), recordS);
 }
 
-Result<TestPlan> HalDrive::planExternalJog(const TestRequest& request, double recordS) const
-{
-    if (request.type != TestType::Jog)
-        return makeError(ErrorCode::Internal, "planExternalJog: a jog");
-    if (!(recordS > 0.0) || !(recordS <= kMaxTestS))
-        return makeError(ErrorCode::OutOfRange, "a recorded move of " + num(recordS) + " s: at most " +
-                                                    num(kMaxTestS) + " s");
-    auto move = movePlan(request);
-    if (!move)
-        return move.error();
-    TestPlan p;
-    p.traceRateHz = move->fsHz;
-    p.recordSamples = static_cast<std::size_t>(std::ceil(recordS * move->fsHz)) + 1;
-    p.motionTimeS = static_cast<double>(p.recordSamples) / move->fsHz;
-    return p;
-}
-
 Status HalDrive::start(const TestRequest& request, ExternalMove external, double recordS)
 {
     {

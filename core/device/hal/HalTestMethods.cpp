@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The hal: tests besides the multisine (docs/linuxcnc.md "Tests"): FRF by multi-sweep and by PRBS, planned by
 // core's planFrfTest at the servo rate and evaluated by core's evaluateFrfSignals (FrfTest.h, the code the simulator
-// and the host evaluation use); the jog out and back and the position step, both an offset added to the pid's command.
+// and the host evaluation use); the jog out and back and the position step, both an offset added to the pid's
+// command; the plan of a jog someone else makes (planExternalJog).
 #include "core/device/hal/HalDrive.h"
 #include "core/model/Number.h"
 #include "core/sim/MotionProfile.h"
@@ -212,6 +213,23 @@ Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, doubl
     std::fill(plan.offset.begin() + static_cast<std::ptrdiff_t>(plan.stepAt),
               plan.offset.begin() + static_cast<std::ptrdiff_t>(plan.backAt), r.amplitude);
     return plan;
+}
+
+Result<TestPlan> HalDrive::planExternalJog(const TestRequest& request, double recordS) const
+{
+    if (request.type != TestType::Jog)
+        return makeError(ErrorCode::Internal, "planExternalJog: a jog");
+    if (!(recordS > 0.0) || !(recordS <= kMaxTestS))
+        return makeError(ErrorCode::OutOfRange, "a recorded move of " + num(recordS) + " s: at most " +
+                                                    num(kMaxTestS) + " s");
+    auto move = movePlan(request);
+    if (!move)
+        return move.error();
+    TestPlan p;
+    p.traceRateHz = move->fsHz;
+    p.recordSamples = static_cast<std::size_t>(std::ceil(recordS * move->fsHz)) + 1;
+    p.motionTimeS = static_cast<double>(p.recordSamples) / move->fsHz;
+    return p;
 }
 
 } // namespace axistune::device::hal
