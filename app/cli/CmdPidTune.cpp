@@ -5,12 +5,12 @@
 // behind each number, and with --apply writes them live and measures again: the measured margins against the
 // prediction. If the measured loop misses the margins, the gains from before are put back (exit 4).
 #include "app/cli/CliCommand.h"
+#include "core/autotune/PidTune.h"
 #include "core/autotune/Undo.h"
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"
+#include "core/device/hal/AxisNotch.h"
 #include "core/device/hal/HalAxis.h"
-#include "core/device/hal/HalDrive.h"
-#include "core/device/hal/LinuxCncDrive.h"
 #include "core/model/InputLimits.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
@@ -88,51 +88,13 @@ std::vector<double> moveCommand(const MoveSpec& m, double periodS)
     return r;
 }
 
-const std::vector<std::string> kGainKeys{"Pgain", "Igain", "Dgain", "FF1", "FF2"};
-
-/// The open loop measured with the running gains (multisine, FrfQuantity::OpenLoop).
-Result<device::FrfMeasurement> measureOpenLoop(device::Drive& drive, const PidTuneOptions& o, double fmaxHz)
-{
-    device::TestRequest r;
-    r.axis = o.axis;
-    r.type = device::TestType::Frf;
-    r.frfMethod = device::FrfMethod::Multisine;
-    r.frfQuantity = device::FrfQuantity::OpenLoop;
-    r.fminHz = o.fmin;
-    r.fmaxHz = fmaxHz;
-    r.amplitudePeak = o.amplitude;
-    r.amplitudePct = o.amplitudePct > 0.0 ? o.amplitudePct : 5.0;
-    r.multisinePeriods = o.periods;
-    auto plan = drive.planTest(r);
-    if (!plan)
-        return plan.error();
-    device::RunOptions run;
-    run.readTrace = false;
-    auto done = device::runTest(drive, r, run);
-    if (!done)
-        return done.error();
-    if (!done->frf)
-        return makeError(ErrorCode::Device, "the drive returned no frequency response");
-    return std::move(*done->frf);
-}
-
 /// Runs `fn` with the HAL session and the axis's pid (hal: names the pid, linuxcnc: maps the letter to it).
 template <typename Fn> Status withHalAxis(device::Drive& drive, const PidTuneOptions& o, Fn&& fn)
 {
-    auto session = device::hal::halSessionFromEnvironment();
-    if (!session)
-        return session.error();
-    std::string pid = o.axis;
-    if (auto* lc = dynamic_cast<device::hal::LinuxCncDrive*>(&drive)) {
-        auto p = lc->pidOf(o.axis);
-        if (!p)
-            return p.error();
-        pid = *p;
-    }
-    auto axis = device::hal::discoverAxis(*session, pid);
-    if (!axis)
-        return axis.error();
-    return fn(*session, *axis);
+    auto a = device::hal::halAxisOf(drive, o.axis);
+    if (!a)
+        return a.error();
+    return fn(a->session, a->axis);
 }
 
 nlohmann::json gainsJson(const tuning::PositionPid& g)
@@ -172,7 +134,7 @@ int runPidTuneUndo(const PidTuneOptions& o)
     tune.axis = (*j)["axis"].get<std::string>();
     if (tune.axis != o.axis)
         return bad("--axis " + o.axis + " but " + from + " tuned axis " + tune.axis);
-    for (const std::string& key : kGainKeys) {
+    for (const std::string& key : autotune::pidGainKeys()) {
         const auto was = j->value(nlohmann::json::json_pointer("/running/gains/" + key), nlohmann::json());
         const auto now = j->value(nlohmann::json::json_pointer("/proposed/gains/" + key), nlohmann::json());
         if (!was.is_number())
@@ -190,12 +152,10 @@ int runPidTuneUndo(const PidTuneOptions& o)
         return reportError(cmd, undone.error());
     nlohmann::json out{{"axis", tune.axis}, {"connection", o.connect}, {"from", from}, {"notch_removed", false}};
     if (j->contains("proposed") && (*j)["proposed"].contains("notch")) {
-        auto st = withHalAxis(**drive, o, [](const device::hal::HalSessionOptions& s, const device::hal::HalAxis&) {
-            return device::hal::removeNotch(s);
-        });
+        auto st = device::hal::removeAxisNotch(**drive, o.axis);
         if (!st)
-            return reportError(cmd, makeError(st.error().code, "the gains were put back, but removing the notch: " +
-                                                                   st.error().detail));
+            return reportError(cmd, makeError(st.error().code,
+                                              "the gains were put back, but removing the notch: " + st.error().detail));
         out["notch_removed"] = true;
     }
     return writeUndone(cmd, out, *undone, o.out);
@@ -216,99 +176,43 @@ int runPidTune(const PidTuneOptions& o)
     if (!drive)
         return reportError(cmd, drive.error());
     if (o.removeNotch) {
-        auto st = withHalAxis(**drive, o, [](const device::hal::HalSessionOptions& s, const device::hal::HalAxis&) {
-            return device::hal::removeNotch(s);
-        });
-        if (!st)
+        if (auto st = device::hal::removeAxisNotch(**drive, o.axis); !st)
             return reportError(cmd, st.error());
         std::cout << "{\"notch_removed\": true}\n";
         return 0;
     }
-    auto caps = (*drive)->capabilities(o.axis);
-    if (!caps)
-        return reportError(cmd, caps.error());
-    if (std::find(caps->frfQuantities.begin(), caps->frfQuantities.end(), device::FrfQuantity::OpenLoop) ==
-        caps->frfQuantities.end())
-        return reportError(
-            cmd, makeError(ErrorCode::BadInput, o.connect + " does not measure the open position loop: "
-                                                            "pid-tune is for a PID the NC closes (hal:, linuxcnc:)"));
-    const double fs = caps->traceRateHz;
-    const double periodS = 1.0 / fs;
-    const double fmaxHz = o.fmax > 0.0 ? o.fmax : 0.45 * fs;
-    auto before = (*drive)->readParameters(o.axis, kGainKeys);
-    if (!before)
-        return reportError(cmd, before.error());
-    const tuning::PositionPid running{before->at("Pgain"), before->at("Igain"), before->at("Dgain"), before->at("FF1"),
-                                      before->at("FF2")};
+    autotune::PidTuneRequest req;
+    req.axis = o.axis;
+    req.fminHz = o.fmin;
+    req.fmaxHz = o.fmax;
+    req.amplitude = o.amplitude;
+    req.amplitudePct = o.amplitudePct;
+    req.periods = o.periods;
+    req.phaseMarginDeg = o.phaseMarginDeg;
+    req.gainMarginDb = o.gainMarginDb;
+    if (o.driveInput == "torque" || o.driveInput == "velocity")
+        req.driveInput = o.driveInput == "torque" ? tuning::DriveInput::Torque : tuning::DriveInput::Velocity;
+    else if (o.driveInput != "auto")
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--drive-input must be auto, torque or velocity"));
+    if (o.notch != "auto" && o.notch != "none")
+        return reportError(cmd, makeError(ErrorCode::BadInput, "--notch must be auto or none"));
+    req.notch = o.notch == "auto";
 
     std::cerr << "pid-tune: measuring the open loop with the running gains\n";
-    auto measured = measureOpenLoop(**drive, o, fmaxHz);
+    auto measured = autotune::measurePidLoop(**drive, req, {});
     if (!measured)
         return reportError(cmd, measured.error());
-    const auto& f = measured->frf;
-    std::vector<double> freq;
-    std::vector<std::complex<double>> loop;
-    for (std::size_t i = 0; i < f.size(); ++i)
-        if (f.valid[i]) {
-            freq.push_back(f.freqHz[i]);
-            loop.push_back(f.h[i]);
-        }
-    auto plant = tuning::effectivePlant(freq, loop, running, periodS);
-    if (!plant)
-        return reportError(cmd, plant.error());
-    tuning::PositionPidOptions po;
-    po.phaseMarginDeg = o.phaseMarginDeg;
-    po.gainMarginDb = o.gainMarginDb;
-    std::string inputRule;
-    if (o.driveInput == "auto") {
-        auto input = tuning::driveInputFromSlope(freq, *plant);
-        if (!input)
-            return reportError(cmd, makeError(input.error().code,
-                                              input.error().detail + "; choose it with --drive-input torque|velocity"));
-        po.input = *input;
-        inputRule = "read from the slope of the measured plant over its lowest decade";
-    } else if (o.driveInput == "torque" || o.driveInput == "velocity") {
-        po.input = o.driveInput == "torque" ? tuning::DriveInput::Torque : tuning::DriveInput::Velocity;
-        inputRule = "given by --drive-input";
-    } else {
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--drive-input must be auto, torque or velocity"));
-    }
-    auto design = tuning::designPositionPid(freq, *plant, periodS, po);
-    if (!design)
-        return reportError(cmd, design.error());
-
-    // A notch at the plant's strongest resonance above the crossover, when it lets the crossover rise by 10 % or more
-    // (LinuxCNC's biquad: 0.5 ≤ Q ≤ 2; the Q with the highest crossover is taken).
-    std::optional<tuning::BiquadNotch> notch;
-    std::string notchRule;
-    if (o.notch == "auto") {
-        const auto resonance = tuning::plantResonanceHz(freq, *plant, po.input, 1.5 * design->crossoverHz);
-        if (!resonance) {
-            notchRule = "no resonance stands 6 dB above the plant's median above 1.5 × the crossover: no notch";
-        } else {
-            double bestCrossover = design->crossoverHz;
-            for (const double q : {2.0, 1.4, 1.0, 0.7, 0.5}) {
-                const tuning::BiquadNotch candidate{*resonance, q};
-                std::vector<std::complex<double>> notched(plant->size());
-                for (std::size_t k = 0; k < notched.size(); ++k)
-                    notched[k] = (*plant)[k] * tuning::biquadNotchResponse(candidate, periodS, freq[k]);
-                auto d = tuning::designPositionPid(freq, notched, periodS, po);
-                if (d && d->crossoverHz >= 1.1 * bestCrossover) {
-                    bestCrossover = d->crossoverHz;
-                    notch = candidate;
-                    design = std::move(d);
-                }
-            }
-            notchRule = notch ? "notch at the resonance " + model::formatNumber(*resonance, 5) + " Hz (peak of |P|·ω²" +
-                                    std::string(po.input == tuning::DriveInput::Torque ? "" : "/ω") + "), Q " +
-                                    model::formatNumber(notch->q, 3) +
-                                    ": the Q of 0.5–2 that lets the crossover rise most"
-                              : "a notch at the resonance " + model::formatNumber(*resonance, 5) +
-                                    " Hz would not raise the crossover by 10 %: no notch";
-        }
-    } else if (o.notch != "none") {
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--notch must be auto or none"));
-    }
+    auto proposal = autotune::proposePidTune(*measured, req);
+    if (!proposal)
+        return reportError(cmd, proposal.error());
+    const std::string inputRule = req.driveInput ? "given by --drive-input" : proposal->inputRule;
+    const double fs = measured->servoRateHz;
+    const double periodS = 1.0 / fs;
+    const double fmaxHz = measured->fmaxHz;
+    const auto& freq = measured->freqHz;
+    const auto& plant = measured->plant;
+    const tuning::PositionPid& running = measured->running;
+    const auto& notch = proposal->notch;
 
     // The following error of the move, predicted for the running and the proposed gains.
     std::optional<MoveSpec> move;
@@ -321,16 +225,16 @@ int runPidTune(const PidTuneOptions& o)
         move = *m;
         const auto command = moveCommand(*move, periodS);
         tuning::MovePredictionOptions mo;
-        mo.input = po.input;
+        mo.input = proposal->input;
         auto ept = withHalAxis(**drive, o, [&](const device::hal::HalSessionOptions&, const device::hal::HalAxis& a) {
             mo.errorPreviousTarget = a.errorPreviousTarget;
             return Status::success();
         });
         if (!ept)
             return reportError(cmd, ept.error());
-        auto now = tuning::predictMove(freq, *plant, running, periodS, command, mo);
+        auto now = tuning::predictMove(freq, plant, running, periodS, command, mo);
         mo.notch = notch;
-        auto proposed = tuning::predictMove(freq, *plant, design->gains, periodS, command, mo);
+        auto proposed = tuning::predictMove(freq, plant, proposal->gains, periodS, command, mo);
         if (!proposed)
             return reportError(cmd, makeError(proposed.error().code, "--move: " + proposed.error().detail));
         // A move that drives the output into its limit is not linear: the prediction would not hold, and the
@@ -367,91 +271,52 @@ int runPidTune(const PidTuneOptions& o)
     out["axis"] = o.axis;
     out["servo_rate_Hz"] = fs;
     out["band_Hz"] = {o.fmin, fmaxHz};
-    out["drive_input"] = po.input == tuning::DriveInput::Torque ? "torque" : "velocity";
+    out["drive_input"] = proposal->input == tuning::DriveInput::Torque ? "torque" : "velocity";
     out["drive_input_rule"] = inputRule;
     out["running"] = {{"gains", gainsJson(running)},
-                      {"margins", marginsJson(tuning::positionLoopMargins(freq, loop))},
+                      {"margins", marginsJson(proposal->runningMargins)},
                       {"motion_time_s", measured->motionTimeS}};
-    out["proposed"] = {
-        {"gains", gainsJson(design->gains)}, {"predicted", marginsJson(design->predicted)}, {"rules", design->rules}};
-    if (!notchRule.empty())
-        out["proposed"]["notch_rule"] = notchRule;
+    out["proposed"] = {{"gains", gainsJson(proposal->gains)},
+                       {"predicted", marginsJson(proposal->predicted)},
+                       {"rules", proposal->rules}};
+    if (!proposal->notchRule.empty())
+        out["proposed"]["notch_rule"] = proposal->notchRule;
     if (notch)
         out["proposed"]["notch"] = {{"f0_Hz", notch->f0Hz}, {"Q", notch->q}};
     int rc = 0;
     if (o.apply) {
-        const model::ParameterValues gains{{"Pgain", design->gains.p},
-                                           {"Igain", design->gains.i},
-                                           {"Dgain", design->gains.d},
-                                           {"FF1", design->gains.ff1},
-                                           {"FF2", design->gains.ff2}};
-        if (notch) {
-            auto st =
-                withHalAxis(**drive, o, [&](const device::hal::HalSessionOptions& s, const device::hal::HalAxis& a) {
-                    return device::hal::insertNotch(s, a, notch->f0Hz, notch->q);
-                });
-            if (!st)
-                return reportError(cmd, st.error());
-        }
-        if (auto st = (*drive)->writeParameters(o.axis, gains); !st)
-            return reportError(cmd, st.error());
-        std::cerr << "pid-tune: gains applied; measuring the open loop again\n";
-        auto after = measureOpenLoop(**drive, o, fmaxHz);
-        tuning::PositionLoopMargins m;
-        std::string refusal;
-        if (!after) {
-            refusal = "the verifying measurement failed: " + after.error().detail;
-        } else {
-            std::vector<double> fa;
-            std::vector<std::complex<double>> la;
-            for (std::size_t i = 0; i < after->frf.size(); ++i)
-                if (after->frf.valid[i]) {
-                    fa.push_back(after->frf.freqHz[i]);
-                    la.push_back(after->frf.h[i]);
-                }
-            m = tuning::positionLoopMargins(fa, la);
-            out["verified"] = {{"measured", marginsJson(m)}, {"motion_time_s", after->motionTimeS}};
-            if (!(m.phaseMarginDeg >= o.phaseMarginDeg - 3.0) || !(m.gainMarginDb >= o.gainMarginDb - 1.0))
-                refusal = "the measured loop misses the margins asked (phase margin " +
-                          model::formatNumber(m.phaseMarginDeg, 4) + " deg, gain margin " +
-                          model::formatNumber(m.gainMarginDb, 4) + " dB)";
-        }
-        if (!refusal.empty()) {
-            // Put back what ran before: nothing this command did stays on a loop it could not verify.
-            (void)(*drive)->writeParameters(o.axis, *before);
-            if (notch)
-                (void)withHalAxis(**drive, o, [](const device::hal::HalSessionOptions& s, const device::hal::HalAxis&) {
-                    return device::hal::removeNotch(s);
-                });
-            out["applied"] = false;
-            out["refused"] = refusal + "; the gains from before were restored";
+        auto applied = autotune::applyPidTune(**drive, req, *measured, *proposal, {});
+        if (!applied)
+            return reportError(cmd, applied.error());
+        if (applied->measuredOk)
+            out["verified"] = {{"measured", marginsJson(applied->measured)}, {"motion_time_s", applied->motionTimeS}};
+        out["applied"] = applied->applied;
+        if (!applied->applied) {
+            out["refused"] = applied->refusal;
             rc = exitCodeFor(ErrorCode::Safety);
-        } else {
-            out["applied"] = true;
-            if (move) {
-                // Verify by the move: the measured peak following error against the prediction.
-                device::TestRequest r;
-                r.axis = o.axis;
-                r.type = device::TestType::Jog;
-                r.distance = move->distance;
-                r.velocity = move->velocity;
-                r.acceleration = move->acceleration;
-                r.returnToStart = true;
-                r.durationS = kMoveDwellS;
-                std::cerr << "pid-tune: running the move to verify the predicted following error\n";
-                auto ran = device::runTest(**drive, r);
-                if (!ran) {
-                    moveJson["proposed"]["measured_error"] = ran.error().detail;
-                } else {
-                    const model::Channel* fe = ran->trace->channel("following_error");
-                    double peak = 0.0;
-                    if (fe)
-                        for (double e : fe->data)
-                            peak = std::max(peak, std::abs(e));
-                    moveJson["proposed"]["measured_peak_following_error"] = peak;
-                    moveJson["proposed"]["difference_pct"] =
-                        100.0 * (peak - movePredicted->peakError) / movePredicted->peakError;
-                }
+        } else if (move) {
+            // Verify by the move: the measured peak following error against the prediction.
+            device::TestRequest r;
+            r.axis = o.axis;
+            r.type = device::TestType::Jog;
+            r.distance = move->distance;
+            r.velocity = move->velocity;
+            r.acceleration = move->acceleration;
+            r.returnToStart = true;
+            r.durationS = kMoveDwellS;
+            std::cerr << "pid-tune: running the move to verify the predicted following error\n";
+            auto ran = device::runTest(**drive, r);
+            if (!ran) {
+                moveJson["proposed"]["measured_error"] = ran.error().detail;
+            } else {
+                const model::Channel* fe = ran->trace->channel("following_error");
+                double peak = 0.0;
+                if (fe)
+                    for (double e : fe->data)
+                        peak = std::max(peak, std::abs(e));
+                moveJson["proposed"]["measured_peak_following_error"] = peak;
+                moveJson["proposed"]["difference_pct"] =
+                    100.0 * (peak - movePredicted->peakError) / movePredicted->peakError;
             }
         }
     } else {

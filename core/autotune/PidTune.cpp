@@ -1,0 +1,302 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/autotune/PidTune.h"
+
+#include "core/device/hal/AxisNotch.h"
+#include "core/model/Number.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace axistune::autotune {
+
+const std::vector<std::string>& pidGainKeys()
+{
+    static const std::vector<std::string> keys{"Pgain", "Igain", "Dgain", "FF1", "FF2"};
+    return keys;
+}
+
+Status checkPidTuneRequest(const PidTuneRequest& r)
+{
+    if (r.axis.empty())
+        return makeError(ErrorCode::BadInput, "no axis given");
+    if (!(r.amplitude >= 0.0) || !(r.amplitudePct >= 0.0) || !std::isfinite(r.amplitude) ||
+        !std::isfinite(r.amplitudePct))
+        return makeError(ErrorCode::BadInput, "the excitation must be a positive number");
+    if (!(r.phaseMarginDeg >= 30.0 && r.phaseMarginDeg <= 80.0) || !(r.gainMarginDb >= 3.0 && r.gainMarginDb <= 20.0))
+        return makeError(ErrorCode::BadInput, "the phase margin asked must lie in 30..80 deg and the gain margin in "
+                                              "3..20 dB");
+    if (!(r.fminHz > 0.0) || (r.fmaxHz > 0.0 && !(r.fmaxHz > r.fminHz)))
+        return makeError(ErrorCode::BadInput, "the band must have 0 < fmin < fmax");
+    return Status::success();
+}
+
+namespace {
+
+Result<device::FrfMeasurement> measureOpenLoop(device::Drive& drive, const PidTuneRequest& o, double fmaxHz,
+                                               const device::RunOptions& run)
+{
+    device::TestRequest r;
+    r.axis = o.axis;
+    r.type = device::TestType::Frf;
+    r.frfMethod = device::FrfMethod::Multisine;
+    r.frfQuantity = device::FrfQuantity::OpenLoop;
+    r.fminHz = o.fminHz;
+    r.fmaxHz = fmaxHz;
+    r.amplitudePeak = o.amplitude;
+    r.amplitudePct = o.amplitudePct > 0.0 ? o.amplitudePct : 5.0;
+    r.multisinePeriods = o.periods;
+    if (auto plan = drive.planTest(r); !plan)
+        return plan.error();
+    device::RunOptions ro = run;
+    ro.readTrace = false;
+    auto done = device::runTest(drive, r, ro);
+    if (!done)
+        return done.error();
+    if (!done->frf)
+        return makeError(ErrorCode::Device, "the drive returned no frequency response");
+    return std::move(*done->frf);
+}
+
+void validLines(const dsp::FrequencyResponse& f, std::vector<double>& freq, std::vector<std::complex<double>>& h)
+{
+    for (std::size_t i = 0; i < f.size(); ++i)
+        if (f.valid[i]) {
+            freq.push_back(f.freqHz[i]);
+            h.push_back(f.h[i]);
+        }
+}
+
+std::string fmt(double x, int digits)
+{
+    return model::formatNumber(x, digits);
+}
+
+} // namespace
+
+Result<PidLoopMeasurement> measurePidLoop(device::Drive& drive, const PidTuneRequest& request,
+                                          const device::RunOptions& run)
+{
+    if (auto st = checkPidTuneRequest(request); !st)
+        return st.error();
+    auto caps = drive.capabilities(request.axis);
+    if (!caps)
+        return caps.error();
+    if (std::find(caps->frfQuantities.begin(), caps->frfQuantities.end(), device::FrfQuantity::OpenLoop) ==
+        caps->frfQuantities.end())
+        return makeError(ErrorCode::BadInput, "axis " + request.axis +
+                                                  ": the drive does not measure the open position loop; this tuning "
+                                                  "is for a PID the NC closes (hal:, linuxcnc:)");
+    PidLoopMeasurement m;
+    m.servoRateHz = caps->traceRateHz;
+    m.fmaxHz = request.fmaxHz > 0.0 ? request.fmaxHz : 0.45 * m.servoRateHz;
+    auto before = drive.readParameters(request.axis, pidGainKeys());
+    if (!before)
+        return before.error();
+    m.runningValues = *before;
+    m.running = {before->at("Pgain"), before->at("Igain"), before->at("Dgain"), before->at("FF1"), before->at("FF2")};
+    auto measured = measureOpenLoop(drive, request, m.fmaxHz, run);
+    if (!measured)
+        return measured.error();
+    validLines(measured->frf, m.freqHz, m.loop);
+    auto plant = tuning::effectivePlant(m.freqHz, m.loop, m.running, 1.0 / m.servoRateHz);
+    if (!plant)
+        return plant.error();
+    m.plant = std::move(plant).value();
+    m.motionTimeS = measured->motionTimeS;
+    m.frf = std::move(measured).value();
+    return m;
+}
+
+std::vector<std::complex<double>> predictedPidLoop(const PidLoopMeasurement& m, const tuning::PositionPid& gains,
+                                                   const std::optional<tuning::BiquadNotch>& notch)
+{
+    const double T = 1.0 / m.servoRateHz;
+    std::vector<std::complex<double>> l(m.plant.size());
+    for (std::size_t k = 0; k < l.size(); ++k) {
+        l[k] = tuning::pidResponse(gains, T, m.freqHz[k]) * m.plant[k];
+        if (notch)
+            l[k] *= tuning::biquadNotchResponse(*notch, T, m.freqHz[k]);
+    }
+    return l;
+}
+
+namespace {
+
+// GainsAndNotch: a notch at the plant's strongest resonance above the crossover, when it lets the crossover rise by
+// 10 % or more (LinuxCNC's biquad: 0.5 ≤ Q ≤ 2; the Q with the highest crossover is taken).
+Status proposeGains(const PidLoopMeasurement& m, const PidTuneRequest& o, const tuning::PositionPidOptions& po,
+                    PidTuneProposal& p)
+{
+    const double T = 1.0 / m.servoRateHz;
+    auto design = tuning::designPositionPid(m.freqHz, m.plant, T, po);
+    if (!design)
+        return design.error();
+    if (o.notch) {
+        p.resonanceHz = tuning::plantResonanceHz(m.freqHz, m.plant, po.input, 1.5 * design->crossoverHz);
+        if (!p.resonanceHz) {
+            p.notchRule = "no resonance stands 6 dB above the plant's median above 1.5 × the crossover: no notch";
+        } else {
+            double bestCrossover = design->crossoverHz;
+            for (const double q : {2.0, 1.4, 1.0, 0.7, 0.5}) {
+                const tuning::BiquadNotch candidate{*p.resonanceHz, q};
+                std::vector<std::complex<double>> notched(m.plant.size());
+                for (std::size_t k = 0; k < notched.size(); ++k)
+                    notched[k] = m.plant[k] * tuning::biquadNotchResponse(candidate, T, m.freqHz[k]);
+                auto d = tuning::designPositionPid(m.freqHz, notched, T, po);
+                if (d && d->crossoverHz >= 1.1 * bestCrossover) {
+                    bestCrossover = d->crossoverHz;
+                    p.notch = candidate;
+                    design = std::move(d);
+                }
+            }
+            p.notchRule = p.notch ? "notch at the resonance " + fmt(*p.resonanceHz, 5) + " Hz (peak of |P|·ω²" +
+                                        std::string(po.input == tuning::DriveInput::Torque ? "" : "/ω") + "), Q " +
+                                        fmt(p.notch->q, 3) + ": the Q of 0.5–2 that lets the crossover rise most"
+                                  : "a notch at the resonance " + fmt(*p.resonanceHz, 5) +
+                                        " Hz would not raise the crossover by 10 %: no notch";
+        }
+    }
+    p.gains = design->gains;
+    p.rules = design->rules;
+    p.predicted = design->predicted;
+    return Status::success();
+}
+
+// NotchOnly: the running gains stay; a notch at the plant's strongest resonance above the running crossover when it
+// raises the loop's gain margin by 1 dB or more while costing at most 3° of phase margin (the Q of 0.5–2 with the
+// largest gain margin).
+void proposeNotchOnly(const PidLoopMeasurement& m, const tuning::PositionPidOptions& po, PidTuneProposal& p)
+{
+    p.gains = m.running;
+    p.predicted = p.runningMargins;
+    const double above = p.runningMargins.crossoverHz > 0.0 ? 1.5 * p.runningMargins.crossoverHz : m.freqHz.front();
+    p.resonanceHz = tuning::plantResonanceHz(m.freqHz, m.plant, po.input, above);
+    if (!p.resonanceHz) {
+        p.notchRule = "no resonance stands 6 dB above the plant's median above 1.5 × the running crossover (" +
+                      fmt(p.runningMargins.crossoverHz, 4) + " Hz): no notch";
+        return;
+    }
+    std::optional<tuning::PositionLoopMargins> best;
+    for (const double q : {2.0, 1.4, 1.0, 0.7, 0.5}) {
+        const tuning::BiquadNotch candidate{*p.resonanceHz, q};
+        const auto margins = tuning::positionLoopMargins(m.freqHz, predictedPidLoop(m, m.running, candidate));
+        if (!(margins.phaseMarginDeg >= p.runningMargins.phaseMarginDeg - 3.0))
+            continue;
+        if (!best || margins.gainMarginDb > best->gainMarginDb) {
+            best = margins;
+            p.notch = candidate;
+        }
+    }
+    const std::string at = "the resonance " + fmt(*p.resonanceHz, 5) + " Hz (peak of |P|·ω²" +
+                           std::string(po.input == tuning::DriveInput::Torque ? "" : "/ω") + ")";
+    if (!best || !(best->gainMarginDb >= p.runningMargins.gainMarginDb + 1.0)) {
+        p.notch.reset();
+        p.notchRule = "a notch at " + at + " would not raise the running loop's gain margin by 1 dB without costing " +
+                      "more than 3° of phase margin: no notch";
+        return;
+    }
+    p.predicted = *best;
+    p.notchRule = "notch at " + at + ", Q " + fmt(p.notch->q, 3) + ": of Q 0.5–2, the largest gain margin (" +
+                  fmt(best->gainMarginDb, 3) + " dB, running " + fmt(p.runningMargins.gainMarginDb, 3) +
+                  " dB) at a phase margin at most 3° below the running loop's; the gains are not changed";
+}
+
+} // namespace
+
+Result<PidTuneProposal> proposePidTune(const PidLoopMeasurement& m, const PidTuneRequest& o)
+{
+    if (m.freqHz.size() < 5)
+        return makeError(ErrorCode::OutOfRange, "only " + std::to_string(m.freqHz.size()) +
+                                                    " valid lines were measured: too few to tune from");
+    PidTuneProposal p;
+    tuning::PositionPidOptions po;
+    po.phaseMarginDeg = o.phaseMarginDeg;
+    po.gainMarginDb = o.gainMarginDb;
+    if (!o.driveInput) {
+        auto input = tuning::driveInputFromSlope(m.freqHz, m.plant);
+        if (!input)
+            return makeError(
+                input.error().code,
+                input.error().detail +
+                    "; choose the drive input: torque or velocity (pid-tune --drive-input, the wizard's Drive input)");
+        po.input = *input;
+        p.inputRule = "read from the slope of the measured plant over its lowest decade";
+    } else {
+        po.input = *o.driveInput;
+        p.inputRule = "given by the user";
+    }
+    p.input = po.input;
+    p.runningMargins = tuning::positionLoopMargins(m.freqHz, m.loop);
+    if (o.scope == PidTuneScope::NotchOnly) {
+        proposeNotchOnly(m, po, p);
+    } else if (auto st = proposeGains(m, o, po, p); !st) {
+        return st.error();
+    }
+    p.predictedLoop = predictedPidLoop(m, p.gains, p.notch);
+    return p;
+}
+
+Result<PidTuneApplied> applyPidTune(device::Drive& drive, const PidTuneRequest& o, const PidLoopMeasurement& m,
+                                    const PidTuneProposal& p, const device::RunOptions& run)
+{
+    PidTuneApplied a;
+    auto before = drive.readParameters(o.axis, pidGainKeys());
+    if (!before)
+        return before.error();
+    a.before = *before;
+    if (p.notch)
+        if (auto st = device::hal::insertAxisNotch(drive, o.axis, p.notch->f0Hz, p.notch->q); !st)
+            return st.error();
+    auto restore = [&] {
+        if (!a.written.empty())
+            (void)drive.writeParameters(o.axis, a.before);
+        if (p.notch)
+            (void)device::hal::removeAxisNotch(drive, o.axis);
+    };
+    if (o.scope == PidTuneScope::GainsAndNotch) {
+        const model::ParameterValues gains{{"Pgain", p.gains.p},
+                                           {"Igain", p.gains.i},
+                                           {"Dgain", p.gains.d},
+                                           {"FF1", p.gains.ff1},
+                                           {"FF2", p.gains.ff2}};
+        if (auto st = drive.writeParameters(o.axis, gains); !st) {
+            restore();
+            return st.error();
+        }
+        a.written = gains;
+    }
+    PidTuneRequest again = o;
+    again.fmaxHz = m.fmaxHz;
+    auto after = measureOpenLoop(drive, again, m.fmaxHz, run);
+    if (!after) {
+        a.refusal = "the verifying measurement failed: " + after.error().detail;
+    } else {
+        std::vector<double> fa;
+        std::vector<std::complex<double>> la;
+        validLines(after->frf, fa, la);
+        a.measured = tuning::positionLoopMargins(fa, la);
+        a.measuredOk = true;
+        a.motionTimeS = after->motionTimeS;
+        a.frf = std::move(after).value();
+        const double pm = o.scope == PidTuneScope::NotchOnly ? std::min(o.phaseMarginDeg, p.predicted.phaseMarginDeg)
+                                                             : o.phaseMarginDeg;
+        const double gm =
+            o.scope == PidTuneScope::NotchOnly ? std::min(o.gainMarginDb, p.predicted.gainMarginDb) : o.gainMarginDb;
+        if (!(a.measured.phaseMarginDeg >= pm - 3.0) || !(a.measured.gainMarginDb >= gm - 1.0))
+            a.refusal = "the measured loop misses the margins asked (phase margin " +
+                        fmt(a.measured.phaseMarginDeg, 4) + " deg, gain margin " + fmt(a.measured.gainMarginDb, 4) +
+                        " dB)";
+    }
+    if (!a.refusal.empty()) {
+        // Put back what ran before: nothing stays on a loop that could not be verified.
+        restore();
+        a.refusal += "; the gains from before were restored";
+        if (p.notch)
+            a.refusal += " and the notch removed";
+        return a;
+    }
+    a.applied = true;
+    return a;
+}
+
+} // namespace axistune::autotune

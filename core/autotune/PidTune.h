@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Tuning a position PID the NC closes (LinuxCNC's `pid` through hal: or linuxcnc:; docs/linuxcnc.md "Tuning"), the
+// headless steps behind `axistune-cli pid-tune` and the velocity/position and notch wizards on such an axis:
+//   1. measurePidLoop: the open loop measured with the running gains (multisine, FrfQuantity::OpenLoop) and the
+//      effective plant P_eff = L / C_running (core/tuning/PositionPid.h);
+//   2. proposePidTune: P, I, D, FF1, FF2 for the margins asked and a biquad notch when it raises the crossover
+//      (PidTuneScope::GainsAndNotch), or a notch alone for the running gains (PidTuneScope::NotchOnly), each number
+//      with the rule that chose it; nothing moves;
+//   3. applyPidTune: inserts the notch, writes the gains live, measures again and compares the margins; a loop that
+//      misses them gets back what ran before (gains and notch).
+
+#include "core/device/Drive.h"
+#include "core/device/TestRunner.h"
+#include "core/model/Parameter.h"
+#include "core/model/Result.h"
+#include "core/tuning/PositionPid.h"
+
+#include <complex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace axistune::autotune {
+
+/// The pid's gain pins a tune writes (hal:'s parameter keys; linuxcnc: maps them to the INI's).
+const std::vector<std::string>& pidGainKeys();
+
+enum class PidTuneScope {
+    GainsAndNotch, ///< P, I, D, FF1, FF2 and a notch when it lets the crossover rise (pid-tune, the velocity wizard)
+    NotchOnly,     ///< a notch for the gains that run (the notch wizard); the gains are not changed
+};
+
+struct PidTuneRequest {
+    std::string axis;
+    double fminHz = 2.0;
+    double fmaxHz = 0.0;                          ///< 0: 0.45 × the servo rate
+    double amplitude = 0.0;                       ///< multisine peak in the PID output's units; 0: amplitudePct
+    double amplitudePct = 0.0;                    ///< % of the pid's maxoutput; 0 with amplitude 0: 5 %
+    int periods = 0;                              ///< averaged periods; 0: the drive's default
+    std::optional<tuning::DriveInput> driveInput; ///< none: read from the measured plant's slope
+    double phaseMarginDeg = 50.0;
+    double gainMarginDb = 8.0;
+    bool notch = true; ///< GainsAndNotch: consider a notch
+    PidTuneScope scope = PidTuneScope::GainsAndNotch;
+};
+
+/// The request's own limits (margins asked 30..80° and 3..20 dB, a positive excitation, fmin below fmax); BadInput
+/// naming the field.
+Status checkPidTuneRequest(const PidTuneRequest& request);
+
+/// The open loop as measured with the running gains.
+struct PidLoopMeasurement {
+    double servoRateHz = 0.0;
+    double fmaxHz = 0.0;
+    tuning::PositionPid running;
+    model::ParameterValues runningValues;    ///< the gain pins as read before the measurement
+    std::vector<double> freqHz;              ///< the valid lines
+    std::vector<std::complex<double>> loop;  ///< L = −(PID output)/(drive input) at them
+    std::vector<std::complex<double>> plant; ///< P_eff = L / C_running
+    double motionTimeS = 0.0;
+    std::optional<device::FrfMeasurement> frf; ///< the whole measurement (for a session)
+};
+
+/// Measures the open loop of the request's axis with the gains that run. Refused when the drive does not measure the
+/// open position loop (not a PID the NC closes), and with the drive's or the run's errors (Aborted on `run.abort`).
+Result<PidLoopMeasurement> measurePidLoop(device::Drive& drive, const PidTuneRequest& request,
+                                          const device::RunOptions& run);
+
+struct PidTuneProposal {
+    tuning::DriveInput input = tuning::DriveInput::Torque;
+    std::string inputRule;
+    tuning::PositionPid gains;                  ///< proposed (NotchOnly: the running gains)
+    tuning::PositionLoopMargins runningMargins; ///< of the measured loop
+    tuning::PositionLoopMargins predicted;      ///< of the proposed loop over the measured lines
+    std::vector<std::complex<double>> predictedLoop;
+    std::vector<std::string> rules;    ///< one sentence per gain (GainsAndNotch)
+    std::optional<double> resonanceHz; ///< the plant's strongest resonance looked at for the notch
+    std::optional<tuning::BiquadNotch> notch;
+    std::string notchRule;
+    bool changesSomething() const { return notch.has_value() || !rules.empty(); }
+};
+
+/// The proposal for a measurement (nothing moves). Errors: the drive input's slope read neither way (name it), no
+/// crossover that meets the margins (designPositionPid's reason).
+Result<PidTuneProposal> proposePidTune(const PidLoopMeasurement& measured, const PidTuneRequest& request);
+
+/// The open loop predicted for `gains` and `notch` on the measured plant, C·N·P_eff at the measured lines.
+std::vector<std::complex<double>> predictedPidLoop(const PidLoopMeasurement& measured, const tuning::PositionPid& gains,
+                                                   const std::optional<tuning::BiquadNotch>& notch);
+
+struct PidTuneApplied {
+    bool applied = false;    ///< the proposal runs now and met the margins; false: what ran before is back
+    std::string refusal;     ///< why not applied
+    bool measuredOk = false; ///< the verifying measurement ran (margins below are measured)
+    tuning::PositionLoopMargins measured;
+    double motionTimeS = 0.0;
+    model::ParameterValues before;             ///< the gain pins before
+    model::ParameterValues written;            ///< what was written (empty for NotchOnly)
+    std::optional<device::FrfMeasurement> frf; ///< the verifying measurement
+};
+
+/// Inserts the notch, writes the gains (read back), measures the open loop again and checks the measured margins
+/// against the asked ones (3° and 1 dB below them; NotchOnly: below the smaller of asked and predicted). A loop that
+/// misses them, a failed or aborted verifying measurement: the gains and notch from before are put back and
+/// `applied` is false with the reason. Errors (nothing left changed): the notch or the write refused.
+Result<PidTuneApplied> applyPidTune(device::Drive& drive, const PidTuneRequest& request,
+                                    const PidLoopMeasurement& measured, const PidTuneProposal& proposal,
+                                    const device::RunOptions& run);
+
+} // namespace axistune::autotune
