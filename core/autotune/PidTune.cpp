@@ -139,10 +139,18 @@ Status proposeGains(const PidLoopMeasurement& m, const PidTuneRequest& o, const 
             double bestCrossover = design->crossoverHz;
             for (const double q : {2.0, 1.4, 1.0, 0.7, 0.5}) {
                 const tuning::BiquadNotch candidate{*p.resonanceHz, q};
-                std::vector<std::complex<double>> notched(m.plant.size());
-                for (std::size_t k = 0; k < notched.size(); ++k)
-                    notched[k] = m.plant[k] * tuning::biquadNotchResponse(candidate, T, m.freqHz[k]);
-                auto d = tuning::designPositionPid(m.freqHz, notched, T, po);
+                // The notch's zero sits on the resonance's line: lines it takes 60 dB or more out of the loop are
+                // left out of the design (a loop gain of ~0 there meets any margin; the design refuses a zero).
+                std::vector<double> freq;
+                std::vector<std::complex<double>> notched;
+                for (std::size_t k = 0; k < m.plant.size(); ++k) {
+                    const auto n = tuning::biquadNotchResponse(candidate, T, m.freqHz[k]);
+                    if (std::abs(n) < 1e-3)
+                        continue;
+                    freq.push_back(m.freqHz[k]);
+                    notched.push_back(m.plant[k] * n);
+                }
+                auto d = tuning::designPositionPid(freq, notched, T, po);
                 if (d && d->crossoverHz >= 1.1 * bestCrossover) {
                     bestCrossover = d->crossoverHz;
                     p.notch = candidate;
