@@ -10,7 +10,7 @@
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"
 #include "core/device/hal/AxisNotch.h"
-#include "core/device/hal/HalAxis.h"
+#include "core/device/hal/HalDrive.h"
 #include "core/model/InputLimits.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
@@ -95,23 +95,6 @@ template <typename Fn> Status withHalAxis(device::Drive& drive, const PidTuneOpt
     if (!a)
         return a.error();
     return fn(a->session, a->axis);
-}
-
-nlohmann::json gainsJson(const tuning::PositionPid& g)
-{
-    return {{"Pgain", g.p}, {"Igain", g.i}, {"Dgain", g.d}, {"FF1", g.ff1}, {"FF2", g.ff2}};
-}
-
-nlohmann::json marginsJson(const tuning::PositionLoopMargins& m)
-{
-    nlohmann::json j = nlohmann::json::object();
-    model::putNumber(j, "crossover_Hz", m.crossoverHz, "no gain crossover in the measured band");
-    model::putNumber(j, "phase_margin_deg", m.phaseMarginDeg, "no gain crossover in the measured band");
-    model::putNumber(j, "gain_margin_dB", m.gainMarginDb,
-                     "the phase never crosses -180 deg where |L| < 1 in the measured band");
-    model::putNumber(j, "gain_margin_freq_Hz", std::isfinite(m.gainMarginDb) ? m.gainMarginFreqHz : NAN,
-                     "the phase never crosses -180 deg where |L| < 1 in the measured band");
-    return j;
 }
 
 /// --undo RESULT.json: the gains an applied pid-tune wrote go back to the ones that ran before it (`running.gains`),
@@ -208,7 +191,6 @@ int runPidTune(const PidTuneOptions& o)
     const std::string inputRule = req.driveInput ? "given by --drive-input" : proposal->inputRule;
     const double fs = measured->servoRateHz;
     const double periodS = 1.0 / fs;
-    const double fmaxHz = measured->fmaxHz;
     const auto& freq = measured->freqHz;
     const auto& plant = measured->plant;
     const tuning::PositionPid& running = measured->running;
@@ -266,33 +248,14 @@ int runPidTune(const PidTuneOptions& o)
                                 {"low_decade_order", proposed->lowDecadeOrder}};
     }
 
-    nlohmann::json out;
-    out["connection"] = o.connect;
-    out["axis"] = o.axis;
-    out["servo_rate_Hz"] = fs;
-    out["band_Hz"] = {o.fmin, fmaxHz};
-    out["drive_input"] = proposal->input == tuning::DriveInput::Torque ? "torque" : "velocity";
-    out["drive_input_rule"] = inputRule;
-    out["running"] = {{"gains", gainsJson(running)},
-                      {"margins", marginsJson(proposal->runningMargins)},
-                      {"motion_time_s", measured->motionTimeS}};
-    out["proposed"] = {{"gains", gainsJson(proposal->gains)},
-                       {"predicted", marginsJson(proposal->predicted)},
-                       {"rules", proposal->rules}};
-    if (!proposal->notchRule.empty())
-        out["proposed"]["notch_rule"] = proposal->notchRule;
-    if (notch)
-        out["proposed"]["notch"] = {{"f0_Hz", notch->f0Hz}, {"Q", notch->q}};
     int rc = 0;
+    std::optional<autotune::PidTuneApplied> applied;
     if (o.apply) {
-        auto applied = autotune::applyPidTune(**drive, req, *measured, *proposal, {});
-        if (!applied)
-            return reportError(cmd, applied.error());
-        if (applied->measuredOk)
-            out["verified"] = {{"measured", marginsJson(applied->measured)}, {"motion_time_s", applied->motionTimeS}};
-        out["applied"] = applied->applied;
+        auto a = autotune::applyPidTune(**drive, req, *measured, *proposal, {});
+        if (!a)
+            return reportError(cmd, a.error());
+        applied = std::move(a).value();
         if (!applied->applied) {
-            out["refused"] = applied->refusal;
             rc = exitCodeFor(ErrorCode::Safety);
         } else if (move) {
             // Verify by the move: the measured peak following error against the prediction.
@@ -319,9 +282,10 @@ int runPidTune(const PidTuneOptions& o)
                     100.0 * (peak - movePredicted->peakError) / movePredicted->peakError;
             }
         }
-    } else {
-        out["applied"] = false;
     }
+    nlohmann::json out = autotune::pidTuneJson(req, *measured, *proposal, applied ? &*applied : nullptr);
+    out["connection"] = o.connect;
+    out["drive_input_rule"] = inputRule;
     if (move)
         out["move"] = moveJson;
     if (const int w = writeJsonResult(cmd, out, o.out); w != 0)

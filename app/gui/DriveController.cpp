@@ -250,7 +250,7 @@ DriveController::~DriveController()
 namespace {
 bool isTestKind(DriveReply::Kind k)
 {
-    return k == DriveReply::Kind::Test || k == DriveReply::Kind::AutoTune;
+    return k == DriveReply::Kind::Test || k == DriveReply::Kind::AutoTune || k == DriveReply::Kind::PidTune;
 }
 } // namespace
 

@@ -38,6 +38,13 @@
 
 class QThread;
 
+namespace axistune::autotune {
+struct PidTuneRequest;
+struct PidLoopMeasurement;
+struct PidTuneProposal;
+struct PidTuneApplied;
+} // namespace axistune::autotune
+
 namespace axistune {
 namespace gui {
 
@@ -55,7 +62,8 @@ struct DriveReply {
         Plan,
         Scope,
         AutoTune,
-        AutoTuneUndo
+        AutoTuneUndo,
+        PidTune ///< measure and propose, or apply and verify, a position PID the NC closes (DriveControllerPidTune.cpp)
     };
     int id = 0;
     Kind kind = Kind::Connect;
@@ -94,6 +102,12 @@ struct DriveReply {
     // drive holds it now; nothing was written.
     std::vector<autotune::UndoneParameter> undone;
     std::vector<autotune::ChangedParameter> undoChanged;
+    // PidTune (DriveControllerPidTune.cpp): measurePidTune's measurement and proposal (`pidProposal` empty with
+    // `ok` false when the measurement is kept but no proposal could be made: `error` says why), applyPidTune's
+    // outcome (also a verified refusal, with what ran before put back).
+    std::shared_ptr<const autotune::PidLoopMeasurement> pidLoop;
+    std::shared_ptr<const autotune::PidTuneProposal> pidProposal;
+    std::shared_ptr<const autotune::PidTuneApplied> pidApplied;
 };
 
 class DriveWorker;
@@ -166,6 +180,17 @@ public:
     /// Whether `axis` can be tuned over its travel and the travel window (autotune::travelChoice; reply kind
     /// Describe with `travel`); nothing moves.
     DriveRequest* autoTuneTravel(const QString& axis);
+    /// A position PID the NC closes (hal:, linuxcnc:; core/autotune/PidTune.h): measures the open loop with the
+    /// running gains and proposes (reply kind PidTune with pidLoop and pidProposal); abortable like a test.
+    DriveRequest* measurePidTune(const autotune::PidTuneRequest& request);
+    /// Applies a proposal (notch, gains) and verifies it by measuring again; a loop that misses the margins, an
+    /// abort or a failed measurement puts back what ran before (reply kind PidTune with pidApplied).
+    DriveRequest* applyPidTune(const autotune::PidTuneRequest& request,
+                               std::shared_ptr<const autotune::PidLoopMeasurement> measured,
+                               std::shared_ptr<const autotune::PidTuneProposal> proposal);
+    /// Undoes an applied PID tune: the gains as undoAutoTune (refused when HAL no longer holds them, unless
+    /// `force`), then AxisTune's notch removed when `removeNotch` (reply kind AutoTuneUndo).
+    DriveRequest* undoPidTune(const autotune::AppliedTune& tune, bool removeNotch, bool force);
     // The scope (docs/scope.md "The GUI scope"). These requests also run between the polls of a running test
     // (the worker serves them from its side queue whenever the test reports progress), so the scope stays
     // live while a jog or a wizard's test moves the axis.
@@ -239,6 +264,11 @@ public:
     DriveReply doAutoTune(int id, autotune::Options options, std::shared_ptr<std::atomic<bool>> cancel);
     DriveReply doAutoTuneTravel(int id, const QString& axis);
     DriveReply doAutoTuneUndo(int id, const autotune::AppliedTune& tune, bool force);
+    DriveReply doPidTune(int id, std::shared_ptr<const autotune::PidTuneRequest> request,
+                         std::shared_ptr<const autotune::PidLoopMeasurement> measured,
+                         std::shared_ptr<const autotune::PidTuneProposal> proposal,
+                         std::shared_ptr<std::atomic<bool>> cancel);
+    DriveReply doPidTuneUndo(int id, const autotune::AppliedTune& tune, bool removeNotch, bool force);
     DriveReply doScopeCapabilities(int id, const QString& axis);
     DriveReply doArmScope(int id, const device::ScopeRequest& request);
     DriveReply doPollScope(int id, std::optional<std::uint64_t> rollFrom, std::uint64_t knownCaptures,

@@ -6,6 +6,7 @@
 #include "app/gui/NotchWizard.h"
 
 #include "app/gui/AppContext.h"
+#include "app/gui/NcPidPage.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/dsp/LoopMarginsJson.h"
@@ -95,6 +96,8 @@ NotchWizard::NotchWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_
     setPage(kVerifyRun, m_verifyRun);
     setPage(kVerify, m_verifyPage);
     setPage(kSave, m_save);
+    m_ncPid = new NcPidPage(ctx, autotune::PidTuneScope::NotchOnly, this);
+    setPage(kNcPid, m_ncPid);
     setStartId(kSource);
 
     addNote(m_measureRun, "measureAbortNote");

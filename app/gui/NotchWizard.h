@@ -39,6 +39,7 @@ namespace gui {
 
 class AppContext;
 class NotchWizard;
+class NcPidPage;
 
 /// One notch of the table: drive slot (1-based) and the drive's filter parameters.
 struct NotchRow {
@@ -175,7 +176,7 @@ private:
 class NotchWizard : public QWizard {
     Q_OBJECT
 public:
-    enum PageId { kSource = 0, kSafety, kMeasure, kPropose, kApply, kVerifyRun, kVerify, kSave };
+    enum PageId { kSource = 0, kSafety, kMeasure, kPropose, kApply, kVerifyRun, kVerify, kSave, kNcPid };
 
     explicit NotchWizard(AppContext& ctx, QWidget* parent = nullptr);
     ~NotchWizard() override;
@@ -204,9 +205,11 @@ public:
     double execRateHz() const { return m_execRateHz; }
     double traceRateHz() const { return m_traceRateHz; }
     bool safetyConfirmed() const { return m_safetyConfirmed; }
-    /// Why this wizard cannot apply notches on the connected axis (a position PID the NC closes, hal:); empty: it can.
+    /// Why this wizard's drive-slot proposal does not apply on the connected axis (a position PID the NC closes, hal:,
+    /// linuxcnc:: a new measurement goes to ncPidPage(), which proposes LinuxCNC's biquad); empty: it does.
     QString ncPidRefusal() const { return m_ncPidRefusal; }
     void setNcPidRefusal(const QString& why) { m_ncPidRefusal = why; }
+    NcPidPage* ncPidPage() const { return m_ncPid; }
     bool saved() const { return m_savedId > 0; }
     qint64 savedSessionId() const { return m_savedId; }
     bool savedAborted() const { return m_savedAborted; }
@@ -279,6 +282,7 @@ private:
     bool m_savedAborted = false;
     QString m_abortReason;
     QString m_ncPidRefusal;
+    NcPidPage* m_ncPid = nullptr;
 };
 
 }  // namespace gui

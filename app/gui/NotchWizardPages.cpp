@@ -3,6 +3,7 @@
 // prediction and margins), verify (measurement against prediction) and save. docs/wizards/notch.md.
 #include "app/gui/AppContext.h"
 #include "app/gui/NotchWizard.h"
+#include "app/gui/NcPidPage.h"
 #include "core/model/Number.h"
 #include "core/store/FrfCapture.h"
 #include "widgets/BodePlot.h"
@@ -29,6 +30,19 @@
 
 namespace axistune {
 namespace gui {
+
+namespace {
+/// Why the drive-slot proposal does not apply to a position PID the NC closes, and where Next goes instead.
+QString ncPidNotchRefusal(const QString& axis, const QString& uri, const QString& output)
+{
+    return QCoreApplication::translate(
+               "axistune::gui::NotchProposePage",
+               "Axis %1 is a position loop the NC closes with a PID (%2): it has no drive filter slots for this "
+               "proposal. Next measures its open loop with the gains that run and proposes LinuxCNC's biquad notch "
+               "after the PID output (net %3).")
+        .arg(axis, uri, output);
+}
+} // namespace
 
 namespace {
 
@@ -213,14 +227,19 @@ void NotchSourcePage::initializePage()
     const QStringList axes = m_ctx.axes();
     if (!m_ctx.drive().isConnected() || axes.isEmpty())
         return;
-    // A position PID the NC closes (hal:) has no notch slots: say so here, before anything is measured.
-    checkNcPositionPid(m_ctx, axes.front(), this, NcPidRefusal::Notch, [this](const QString& why) {
-        m_wizard.setNcPidRefusal(why);
-        if (why.isEmpty())
+    // A position PID the NC closes (hal:, linuxcnc:) has no notch slots: a new measurement goes to the NC PID page,
+    // which proposes LinuxCNC's biquad; say so here, before anything is measured.
+    const QString axis = axes.front();
+    checkNcPositionPid(m_ctx, axis, this, [this, axis](bool ncPid, const QString& output) {
+        m_wizard.setNcPidRefusal(ncPid ? ncPidNotchRefusal(axis, m_ctx.drive().uri(), output) : QString());
+        if (!ncPid)
             return;
-        m_measure->setEnabled(false);
-        m_session->setChecked(true);
-        m_note->setText(QStringLiteral("<span style='color:#b00000'>%1</span>").arg(why.toHtmlEscaped()));
+        m_wizard.ncPidPage()->setAxis(axis);
+        m_measure->setChecked(true);
+        m_note->setText(tr("Axis %1 is a position loop the NC closes with a PID (%2). A new measurement measures its "
+                           "open loop and proposes LinuxCNC's biquad notch after the PID output (net %3) for the "
+                           "gains that run.")
+                            .arg(axis, m_ctx.drive().uri(), output));
         emit completeChanged();
     });
 }
@@ -299,7 +318,12 @@ bool NotchSourcePage::validatePage()
     return false;
 }
 
-int NotchSourcePage::nextId() const { return fromSession() ? NotchWizard::kPropose : NotchWizard::kSafety; }
+int NotchSourcePage::nextId() const
+{
+    if (fromSession())
+        return NotchWizard::kPropose;
+    return m_wizard.ncPidRefusal().isEmpty() ? NotchWizard::kSafety : NotchWizard::kNcPid;
+}
 
 // ---------------------------------------------------------------------------------------------
 // NotchProposePage
@@ -414,12 +438,16 @@ void NotchProposePage::initializePage()
         m_status->setText(tr("Asking the drive what axis %1 is…").arg(axis));
         m_busy = true;
         emit completeChanged();
-        checkNcPositionPid(m_ctx, axis, this, NcPidRefusal::Notch, [this](const QString& why) {
-            m_wizard.setNcPidRefusal(why);
-            if (!why.isEmpty())
-                showRefusal(why);
-            else
+        checkNcPositionPid(m_ctx, axis, this, [this, axis](bool ncPid, const QString& output) {
+            if (!ncPid) {
+                m_wizard.setNcPidRefusal({});
                 readDrive();
+                return;
+            }
+            const QString why = ncPidNotchRefusal(axis, m_ctx.drive().uri(), output);
+            m_wizard.setNcPidRefusal(why);
+            m_wizard.ncPidPage()->setAxis(axis);
+            showRefusal(why);
         });
         return;
     }
@@ -615,15 +643,26 @@ void NotchProposePage::showRules()
     m_rules->setHtml(html);
 }
 
-bool NotchProposePage::isComplete() const { return !m_busy && !m_wizard.rows().empty(); }
+bool NotchProposePage::isComplete() const
+{
+    // A position PID the NC closes: no drive slots here; Next goes to the NC PID page (a new measurement there).
+    if (!m_wizard.ncPidRefusal().isEmpty())
+        return !m_busy;
+    return !m_busy && !m_wizard.rows().empty();
+}
 
 bool NotchProposePage::validatePage()
 {
+    if (!m_wizard.ncPidRefusal().isEmpty())
+        return true;
     m_wizard.applyPage()->setProposal(m_wizard.axis(), m_wizard.proposedValues());
     return true;
 }
 
-int NotchProposePage::nextId() const { return NotchWizard::kApply; }
+int NotchProposePage::nextId() const
+{
+    return m_wizard.ncPidRefusal().isEmpty() ? NotchWizard::kApply : NotchWizard::kNcPid;
+}
 
 // ---------------------------------------------------------------------------------------------
 // NotchVerifyPage

@@ -6,6 +6,7 @@
 
 #include "app/gui/AbortGuard.h"
 #include "app/gui/AppContext.h"
+#include "app/gui/NcPidPage.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/dsp/LoopAnalysis.h"
@@ -125,6 +126,9 @@ VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : Tunin
     setPage(VerifyRun, m_verifyRun);
     setPage(Verify, verify);
     setPage(Save, save);
+    m_ncPid = new NcPidPage(ctx, autotune::PidTuneScope::GainsAndNotch, this);
+    m_source->setNcPidPage(m_ncPid);
+    setPage(NcPid, m_ncPid);
     setStartId(Source);
     guardEarlyStops(ctx, m_apply, {m_run, m_verifyRun}, tr("the velocity-loop gains"),
                     [this] { return !m_run->replies().empty() || m_run->isRunning(); });

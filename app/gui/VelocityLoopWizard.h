@@ -37,6 +37,7 @@ namespace gui {
 
 class AppContext;
 class ApplyPage;
+class NcPidPage;
 class SafetyPage;
 class TestRunPage;
 
@@ -94,8 +95,12 @@ public:
     QDoubleSpinBox* inertia() const { return m_jm; }
     QDoubleSpinBox* bandwidth() const { return m_wl; }
     QDoubleSpinBox* gainFactor() const { return m_k; }
-    /// Why this wizard refuses the chosen axis (empty: it does not).
-    QString refusal() const { return m_refusalText; }
+    /// The chosen axis is a position loop the NC closes with a PID (hal:, linuxcnc:): Next goes to the wizard's
+    /// NcPidPage, which tunes its P, I, D, FF1, FF2 and notch instead of a drive velocity loop.
+    bool ncPid() const { return m_ncPid; }
+    /// What the page says about such an axis (empty otherwise).
+    QString ncPidNote() const;
+    void setNcPidPage(NcPidPage* page) { m_ncPidPage = page; }
 
 private:
     void modelSessionChosen();
@@ -103,8 +108,10 @@ private:
     AppContext& m_ctx;
     VelocityLoopData& m_d;
     QComboBox* m_axis = nullptr;
-    QLabel* m_refusal = nullptr; ///< why the axis cannot be tuned here (a position PID the NC closes, hal:)
-    QString m_refusalText;
+    QLabel* m_ncPidLabel = nullptr; ///< what happens to a position PID the NC closes (hal:, linuxcnc:)
+    bool m_checking = false;        ///< asking the drive what the axis is
+    bool m_ncPid = false;
+    NcPidPage* m_ncPidPage = nullptr;
     QRadioButton* m_inertiaMethod = nullptr;
     QRadioButton* m_frfMethod = nullptr;
     QComboBox* m_modelSessions = nullptr;
@@ -179,7 +186,7 @@ private:
 class VelocityLoopWizard : public TuningWizard {
     Q_OBJECT
 public:
-    enum PageId { Source, Safety, Run, Design, Apply, VerifyRun, Verify, Save };
+    enum PageId { Source, Safety, Run, Design, Apply, VerifyRun, Verify, Save, NcPid };
 
     explicit VelocityLoopWizard(AppContext& ctx, QWidget* parent = nullptr);
 
@@ -190,6 +197,7 @@ public:
     VelocityLoopDesignPage* designPage() const { return m_design; }
     ApplyPage* applyPage() const { return m_apply; }
     TestRunPage* verifyRunPage() const { return m_verifyRun; }
+    NcPidPage* ncPidPage() const { return m_ncPid; }
 
     /// Saves the session (Completed, or Aborted with the reason and whatever was measured).
     void saveSession(bool aborted, const QString& reason) override;
@@ -203,6 +211,7 @@ private:
     VelocityLoopDesignPage* m_design = nullptr;
     ApplyPage* m_apply = nullptr;
     TestRunPage* m_verifyRun = nullptr;
+    NcPidPage* m_ncPid = nullptr;
 };
 
 } // namespace gui

@@ -3,6 +3,7 @@
 // source and rule, design with prediction, verification. Method: spec/lost-motion-and-two-inertia.md
 // §2.8 (corrected 5.13), TI-5 §4.12 (margins), §4.11 (position gain).
 #include "app/gui/AppContext.h"
+#include "app/gui/NcPidPage.h"
 #include "app/gui/ParameterLookup.h"
 #include "app/gui/VelocityLoopWizard.h"
 #include "app/gui/WidgetUtil.h"
@@ -71,12 +72,12 @@ VelocityLoopSourcePage::VelocityLoopSourcePage(AppContext& ctx, VelocityLoopData
     top->addWidget(new QLabel(tr("Axis:"), this));
     top->addWidget(m_axis, 1);
     lay->addLayout(top);
-    m_refusal = new QLabel(this);
-    m_refusal->setObjectName("vlRefusal");
-    m_refusal->setWordWrap(true);
-    m_refusal->setStyleSheet("color: #b00000");
-    m_refusal->hide();
-    lay->addWidget(m_refusal);
+    m_ncPidLabel = new QLabel(this);
+    m_ncPidLabel->setObjectName("vlNcPid");
+    m_ncPidLabel->setWordWrap(true);
+    m_ncPidLabel->setStyleSheet("color: #1f4e9a");
+    m_ncPidLabel->hide();
+    lay->addWidget(m_ncPidLabel);
     connect(m_axis, &QComboBox::currentTextChanged, this, [this] { checkAxis(); });
     auto* methods = new QButtonGroup(this);
     m_inertiaMethod = new QRadioButton(tr("From the fitted inertia: K_P = k·√2·ω_l·J_m, K_I = k·ω_l²·J_m"), this);
@@ -142,14 +143,22 @@ VelocityLoopSourcePage::VelocityLoopSourcePage(AppContext& ctx, VelocityLoopData
 
 void VelocityLoopSourcePage::checkAxis()
 {
-    m_refusalText.clear();
-    m_refusal->hide();
+    m_ncPid = false;
+    m_ncPidLabel->hide();
+    m_checking = true;
     emit completeChanged();
-    // A position PID the NC closes (hal:, linuxcnc:) has no drive velocity loop: refused here, naming its tuner.
-    checkNcPositionPid(m_ctx, m_axis->currentText(), this, NcPidRefusal::VelocityLoop, [this](const QString& why) {
-        m_refusalText = why;
-        m_refusal->setText(why);
-        m_refusal->setVisible(!why.isEmpty());
+    // A position PID the NC closes (hal:, linuxcnc:) has no drive velocity loop: its PID is tuned on NcPidPage.
+    const QString axis = m_axis->currentText();
+    checkNcPositionPid(m_ctx, axis, this, [this, axis](bool ncPid, const QString&) {
+        if (axis != m_axis->currentText())
+            return; // another axis was chosen meanwhile
+        m_checking = false;
+        m_ncPid = ncPid;
+        m_ncPidLabel->setText(tr("Axis %1 is a position loop the NC closes with a PID (%2): there is no drive "
+                                 "velocity loop to tune. Next measures its open loop and proposes P, I, D, FF1, FF2 "
+                                 "and a notch for it; the choices below do not apply.")
+                                  .arg(axis, m_ctx.drive().uri()));
+        m_ncPidLabel->setVisible(ncPid);
         emit completeChanged();
     });
 }
@@ -222,10 +231,14 @@ void VelocityLoopSourcePage::modelSessionChosen()
         }
 }
 
+QString VelocityLoopSourcePage::ncPidNote() const { return m_ncPid ? m_ncPidLabel->text() : QString(); }
+
 bool VelocityLoopSourcePage::isComplete() const
 {
-    if (!m_refusalText.isEmpty())
+    if (m_checking)
         return false;
+    if (m_ncPid)
+        return true;
     if (m_frfMethod->isChecked())
         return m_measure->isChecked() ? m_ctx.drive().isConnected() : m_frfSessions->currentIndex() >= 0;
     return true;
@@ -234,6 +247,10 @@ bool VelocityLoopSourcePage::isComplete() const
 bool VelocityLoopSourcePage::validatePage()
 {
     m_d.axis = m_axis->currentText();
+    if (m_ncPid && m_ncPidPage) {
+        m_ncPidPage->setAxis(m_d.axis);
+        return true;
+    }
     m_d.method = m_frfMethod->isChecked() ? VelocityLoopData::Method::Frf : VelocityLoopData::Method::Inertia;
     m_d.frfSource =
         m_session->isChecked() ? VelocityLoopData::FrfSource::Session : VelocityLoopData::FrfSource::Measure;
@@ -262,6 +279,8 @@ bool VelocityLoopSourcePage::validatePage()
 
 int VelocityLoopSourcePage::nextId() const
 {
+    if (m_ncPid)
+        return VelocityLoopWizard::NcPid;
     return m_ctx.drive().isConnected() && m_axis->count() > 0 ? VelocityLoopWizard::Safety : VelocityLoopWizard::Design;
 }
 

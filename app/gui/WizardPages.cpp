@@ -99,40 +99,22 @@ Result<SessionFrf> loadSessionFrf(AppContext& ctx, qint64 sessionId)
     return SessionFrf{std::move(frf).value(), qs(rec->info.axis), qs(pick->name)};
 }
 
-void checkNcPositionPid(AppContext& ctx, const QString& axis, QObject* receiver, NcPidRefusal what,
-                        std::function<void(const QString&)> done)
+void checkNcPositionPid(AppContext& ctx, const QString& axis, QObject* receiver,
+                        std::function<void(bool ncPid, const QString& outputSignal)> done)
 {
-    if (!ctx.drive().isConnected() || axis.isEmpty())
+    if (!ctx.drive().isConnected() || axis.isEmpty()) {
+        done(false, {});
         return;
+    }
     auto* req = ctx.drive().describeAxis(axis);
     const int id = req->id();
-    const QString uri = ctx.drive().uri();
-    QObject::connect(req, &DriveRequest::finished, receiver, [id, axis, uri, what, done](const DriveReply& r) {
+    QObject::connect(req, &DriveRequest::finished, receiver, [id, done](const DriveReply& r) {
         if (r.id != id)
             return;
-        if (!r.ok || !r.capabilities || !device::isNcPositionPid(*r.capabilities)) {
-            done(QString());
-            return;
-        }
-        const QString output = QString::fromStdString(r.capabilities->frfOutputSignal);
-        if (what == NcPidRefusal::Notch) {
-            done(QCoreApplication::translate(
-                     "WizardPages",
-                     "Axis %1 is a position loop the NC closes with a PID (%2): its notch is LinuxCNC's biquad "
-                     "component, inserted after %3, not a filter slot of a drive. This wizard cannot insert it yet. "
-                     "Use axistune-cli pid-tune --connect %2 --axis %1 --apply: it measures the plant, proposes the "
-                     "notch with P, I, D, FF1 and FF2, inserts it and verifies the margins (--remove-notch takes it "
-                     "out again). The FRF wizard measures and shows the plant.")
-                     .arg(axis, uri, output));
-        } else {
-            done(QCoreApplication::translate(
-                     "WizardPages",
-                     "Axis %1 is a position loop the NC closes with a PID (%2): there is no drive velocity loop for "
-                     "this wizard to tune. Tune it with axistune-cli pid-tune --connect %2 --axis %1: it measures the "
-                     "plant and the open loop, proposes P, I, D, FF1, FF2 and a notch with the predicted margins, and "
-                     "with --apply writes and verifies them.")
-                     .arg(axis, uri));
-        }
+        if (!r.ok || !r.capabilities || !device::isNcPositionPid(*r.capabilities))
+            done(false, {});
+        else
+            done(true, QString::fromStdString(r.capabilities->frfOutputSignal));
     });
 }
 

@@ -34,14 +34,13 @@ class AppContext;
 /// SI value in the parameter's display unit, as text with 6 significant digits.
 QString displayParameterValue(const model::ParameterMeta& meta, double si);
 
-/// Which of the drive-tuning wizards asks (the refusal names what it would have done).
-enum class NcPidRefusal { Notch, VelocityLoop };
 /// Asks the connected drive (Drive::capabilities) whether `axis` is a position loop the NC closes with a PID
-/// (device::isNcPositionPid: hal:, linuxcnc:), which has no drive velocity loop and no notch slots for these wizards.
-/// `done` gets the refusal (translated, naming axistune-cli pid-tune), or an empty text when the axis is not such a
-/// loop or the drive cannot describe it (the wizard then goes on as before); not called when `receiver` is gone.
-void checkNcPositionPid(AppContext& ctx, const QString& axis, QObject* receiver, NcPidRefusal what,
-                        std::function<void(const QString&)> done);
+/// (device::isNcPositionPid: hal:, linuxcnc:), which has no drive velocity loop and no notch slots: the notch and
+/// velocity/position wizards then go on with their NcPidPage. `done` gets true and the net the PID output drives,
+/// or false when the axis is not such a loop or the drive cannot describe it (the wizard goes on as before); not
+/// called when `receiver` is gone.
+void checkNcPositionPid(AppContext& ctx, const QString& axis, QObject* receiver,
+                        std::function<void(bool ncPid, const QString& outputSignal)> done);
 
 /// The measured frequency response of a saved session, for wizards that start from one.
 struct SessionFrf {

@@ -171,10 +171,11 @@ Status proposeGains(const PidLoopMeasurement& m, const PidTuneRequest& o, const 
 }
 
 // NotchOnly: the running gains stay; a notch at the plant's strongest resonance above the running crossover when it
-// raises the loop's gain margin by 1 dB or more while costing at most 3° of phase margin (the Q of 0.5–2 with the
-// largest gain margin).
+// raises the loop's gain margin by 1 dB or more while the phase margin stays at the one asked (or, when the running
+// loop has less, falls by at most 3°): of Q 0.5–2, the one with the largest gain margin.
 void proposeNotchOnly(const PidLoopMeasurement& m, const tuning::PositionPidOptions& po, PidTuneProposal& p)
 {
+    const double pmFloor = std::min(po.phaseMarginDeg, p.runningMargins.phaseMarginDeg - 3.0);
     p.gains = m.running;
     p.predicted = p.runningMargins;
     const double above = p.runningMargins.crossoverHz > 0.0 ? 1.5 * p.runningMargins.crossoverHz : m.freqHz.front();
@@ -188,7 +189,7 @@ void proposeNotchOnly(const PidLoopMeasurement& m, const tuning::PositionPidOpti
     for (const double q : {2.0, 1.4, 1.0, 0.7, 0.5}) {
         const tuning::BiquadNotch candidate{*p.resonanceHz, q};
         const auto margins = tuning::positionLoopMargins(m.freqHz, predictedPidLoop(m, m.running, candidate));
-        if (!(margins.phaseMarginDeg >= p.runningMargins.phaseMarginDeg - 3.0))
+        if (!(margins.phaseMarginDeg >= pmFloor))
             continue;
         if (!best || margins.gainMarginDb > best->gainMarginDb) {
             best = margins;
@@ -199,14 +200,16 @@ void proposeNotchOnly(const PidLoopMeasurement& m, const tuning::PositionPidOpti
                            std::string(po.input == tuning::DriveInput::Torque ? "" : "/ω") + ")";
     if (!best || !(best->gainMarginDb >= p.runningMargins.gainMarginDb + 1.0)) {
         p.notch.reset();
-        p.notchRule = "a notch at " + at + " would not raise the running loop's gain margin by 1 dB without costing " +
-                      "more than 3° of phase margin: no notch";
+        p.notchRule = "a notch at " + at + " would not raise the running loop's gain margin by 1 dB with the phase " +
+                      "margin at least " + fmt(pmFloor, 3) + "° (the one asked, or 3° below the running loop's when " +
+                      "that is less): no notch";
         return;
     }
     p.predicted = *best;
     p.notchRule = "notch at " + at + ", Q " + fmt(p.notch->q, 3) + ": of Q 0.5–2, the largest gain margin (" +
                   fmt(best->gainMarginDb, 3) + " dB, running " + fmt(p.runningMargins.gainMarginDb, 3) +
-                  " dB) at a phase margin at most 3° below the running loop's; the gains are not changed";
+                  " dB) with the phase margin at least " + fmt(pmFloor, 3) +
+                  "° (the one asked, or 3° below the running " + "loop's when that is less); the gains are not changed";
 }
 
 } // namespace

@@ -17,6 +17,7 @@
 #include "core/tuning/PositionPid.h"
 
 #include <complex>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,7 +29,9 @@ const std::vector<std::string>& pidGainKeys();
 
 enum class PidTuneScope {
     GainsAndNotch, ///< P, I, D, FF1, FF2 and a notch when it lets the crossover rise (pid-tune, the velocity wizard)
-    NotchOnly,     ///< a notch for the gains that run (the notch wizard); the gains are not changed
+    NotchOnly,     ///< a notch for the gains that run (the notch wizard); the gains are not changed. Rule: a notch at
+                   ///< the strongest resonance above 1.5 × the running crossover when it raises the gain margin by
+                   ///< 1 dB or more with the phase margin at least min(asked, running − 3°); Q with the largest GM
 };
 
 struct PidTuneRequest {
@@ -107,5 +110,12 @@ struct PidTuneApplied {
 Result<PidTuneApplied> applyPidTune(device::Drive& drive, const PidTuneRequest& request,
                                     const PidLoopMeasurement& measured, const PidTuneProposal& proposal,
                                     const device::RunOptions& run);
+
+/// The result JSON of a tune (docs/linuxcnc.md "Tuning from the command line", pid-tune's --out; the wizards' session
+/// result): axis, scope, servo_rate_Hz, band_Hz, drive_input (+ _rule), running {gains, margins, motion_time_s},
+/// proposed {gains, predicted, rules, notch_rule, notch {f0_Hz, Q}}, applied, and with `applied`: verified
+/// {measured, motion_time_s} and refused.
+nlohmann::json pidTuneJson(const PidTuneRequest& request, const PidLoopMeasurement& measured,
+                           const PidTuneProposal& proposal, const PidTuneApplied* applied = nullptr);
 
 } // namespace axistune::autotune

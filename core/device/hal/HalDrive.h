@@ -33,6 +33,14 @@ namespace axistune::device::hal {
 /// "scripts/hal-testbed halcmd" for the repository's test machine run as root), else `halcmd`.
 Result<HalSessionOptions> halSessionFromEnvironment();
 
+/// The HAL session (halSessionFromEnvironment) and the `pid` of an axis of a hal: or linuxcnc: drive: hal: names the
+/// pid, linuxcnc: maps its axis name to the joint's pid (AxisNotch.cpp). BadInput for a drive of another backend.
+struct DriveHalAxis {
+    HalSessionOptions session;
+    HalAxis axis;
+};
+Result<DriveHalAxis> halAxisOf(Drive& drive, const std::string& axis);
+
 /// The gain and limit pins of a LinuxCNC `pid` AxisTune offers as parameters (those the instance has).
 std::vector<model::ParameterMeta> pidParameterMetadata();
 
