@@ -217,7 +217,7 @@ int NotchWizard::nextId() const
     case kMeasure:
         return kPropose;
     case kPropose:
-        return kApply;
+        return m_propose->nextId(); // kApply, or kNcPid for a position PID the NC closes
     case kApply:
         return m_apply->applied() ? (visitedIds().contains(kSafety) ? kVerifyRun : kSafety) : kSave;
     case kVerifyRun:
