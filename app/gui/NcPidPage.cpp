@@ -18,6 +18,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -33,14 +34,17 @@ QString num(double x, int digits = 4)
     return std::isfinite(x) ? QString::fromStdString(model::formatNumber(x, digits)) : QStringLiteral("∞");
 }
 
-/// The open loop at the measured lines as an FRF (for the plot and the session).
-dsp::FrequencyResponse loopFrf(const std::vector<double>& f, const std::vector<std::complex<double>>& l,
-                               const char* quantity)
+/// The open loop at the measured lines as an FRF (for the plot and the session). With a notch: the lines it takes
+/// 60 dB or more out of the loop (its zero sits on the resonance's line) are marked invalid, as the design leaves
+/// them out, so the plot is not scaled to a −300 dB spike.
+dsp::FrequencyResponse loopFrf(const autotune::PidLoopMeasurement& m, const std::vector<std::complex<double>>& l,
+                               const std::optional<tuning::BiquadNotch>& notch = std::nullopt)
 {
     dsp::FrequencyResponse r;
-    for (std::size_t k = 0; k < f.size(); ++k)
-        r.push(f[k], l[k], NAN, true);
-    r.metadata["quantity"] = quantity;
+    for (std::size_t k = 0; k < m.freqHz.size(); ++k)
+        r.push(m.freqHz[k], l[k], NAN,
+               !notch || std::abs(tuning::biquadNotchResponse(*notch, 1.0 / m.servoRateHz, m.freqHz[k])) >= 1e-3);
+    r.metadata["quantity"] = "open_loop";
     return r;
 }
 
@@ -56,7 +60,9 @@ NcPidPage::NcPidPage(AppContext& ctx, autotune::PidTuneScope scope, QWidget* par
     m_intro = new QLabel(this);
     m_intro->setWordWrap(true);
     lay->addWidget(m_intro);
+    // Two columns of settings, so the table and the plot keep the height.
     auto* form = new QFormLayout;
+    auto* form2 = new QFormLayout;
     m_axisBox = new QComboBox(this);
     m_axisBox->setObjectName("ncPidAxis");
     form->addRow(tr("Axis:"), m_axisBox);
@@ -67,17 +73,23 @@ NcPidPage::NcPidPage(AppContext& ctx, autotune::PidTuneScope scope, QWidget* par
     m_input->addItem(tr("from the measured slope"));
     m_input->addItem(tr("torque or current"));
     m_input->addItem(tr("velocity"));
-    form->addRow(tr("Drive input (what the PID output commands):"), m_input);
+    form2->addRow(tr("Drive input (what the PID output commands):"), m_input);
     m_pm = spin(this, 30.0, 80.0, 50.0, 1, QString::fromUtf8(" °"), "ncPidPhaseMargin");
-    form->addRow(tr("Phase margin asked:"), m_pm);
+    form2->addRow(tr("Phase margin asked:"), m_pm);
     m_gm = spin(this, 3.0, 20.0, 8.0, 1, tr(" dB"), "ncPidGainMargin");
-    form->addRow(tr("Gain margin asked:"), m_gm);
+    form2->addRow(tr("Gain margin asked:"), m_gm);
     m_notch = new QCheckBox(tr("Propose LinuxCNC's biquad notch when it lets the crossover rise"), this);
     m_notch->setObjectName("ncPidNotch");
     m_notch->setChecked(true);
     m_notch->setVisible(scope == autotune::PidTuneScope::GainsAndNotch);
-    form->addRow(QString(), m_notch);
-    lay->addLayout(form);
+
+    auto* columns = new QHBoxLayout;
+    columns->addLayout(form, 1);
+    columns->addSpacing(16);
+    columns->addLayout(form2, 1);
+    lay->addLayout(columns);
+    if (scope == autotune::PidTuneScope::GainsAndNotch)
+        lay->addWidget(m_notch);
     m_confirm = new QCheckBox(tr("The axis is free to move over the whole test, nobody is inside the machine, "
                                  "and the emergency stop is within reach."),
                               this);
@@ -107,11 +119,18 @@ NcPidPage::NcPidPage(AppContext& ctx, autotune::PidTuneScope scope, QWidget* par
     lay->addWidget(m_status);
     m_table =
         makeTable(this, {tr("Quantity"), tr("Running"), tr("Proposed"), tr("Verified"), tr("Rule")}, "ncPidTable");
-    lay->addWidget(m_table, 1);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_table);
     m_plot = new widgets::BodePlot(this);
     m_plot->setObjectName("ncPidPlot");
     m_plot->setMagnitudeTitle(tr("Open loop L [dB]"));
-    lay->addWidget(m_plot, 2);
+    split->addWidget(m_plot);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+    lay->addWidget(split, 1);
+    m_table->setWordWrap(true);
+    m_table->horizontalHeader()->setSectionResizeMode(4, QHeaderView::Stretch);
+    setMinimumSize(1100, 820);
     connect(m_measure, &QPushButton::clicked, this, &NcPidPage::measure);
     connect(m_apply, &QPushButton::clicked, this, &NcPidPage::applyProposal);
     connect(m_undo, &QPushButton::clicked, this, &NcPidPage::undo);
@@ -400,7 +419,9 @@ void NcPidPage::showTable()
     marginRow(tr("Gain margin [dB]"), [](const tuning::PositionLoopMargins& m) { return m.gainMarginDb; });
     addRow(m_table, {tr("Motion time [s]"), num(m_measured->motionTimeS, 3), QString(),
                      verified ? num(m_applied->motionTimeS, 3) : QString(), QString()});
-    m_table->resizeColumnsToContents();
+    for (int c = 0; c < 4; ++c)
+        m_table->resizeColumnToContents(c);
+    m_table->resizeRowsToContents();
 }
 
 void NcPidPage::showPlot()
@@ -408,9 +429,9 @@ void NcPidPage::showPlot()
     m_plot->clearResponses();
     if (!m_measured)
         return;
-    m_plot->addResponse(loopFrf(m_measured->freqHz, m_measured->loop, "open_loop"), tr("measured, running gains"));
+    m_plot->addResponse(loopFrf(*m_measured, m_measured->loop), tr("measured, running gains"));
     if (m_proposal && m_proposal->changesSomething())
-        m_plot->addResponse(loopFrf(m_measured->freqHz, m_proposal->predictedLoop, "open_loop"), tr("predicted"),
+        m_plot->addResponse(loopFrf(*m_measured, m_proposal->predictedLoop, m_proposal->notch), tr("predicted"),
                             QColor(), Qt::DashLine);
     if (m_applied && m_applied->frf)
         m_plot->addResponse(m_applied->frf->frf, tr("verified (measured after applying)"));
@@ -441,7 +462,7 @@ void NcPidPage::saveSession(const QString& note, store::SessionStatus status)
     if (m_measured && m_proposal) {
         rec.captures.push_back(
             {"open loop, predicted",
-             store::frfAsCapture(loopFrf(m_measured->freqHz, m_proposal->predictedLoop, "open_loop"))});
+             store::frfAsCapture(loopFrf(*m_measured, m_proposal->predictedLoop, m_proposal->notch))});
         auto j = autotune::pidTuneJson(m_asked, *m_measured, *m_proposal, m_applied.get());
         j["connection"] = rec.inputs["connection"];
         rec.results.push_back({"pid-tune", j, {}});
