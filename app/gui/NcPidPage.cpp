@@ -35,15 +35,15 @@ QString num(double x, int digits = 4)
 }
 
 /// The open loop at the measured lines as an FRF (for the plot and the session). With a notch: the lines it takes
-/// 60 dB or more out of the loop (its zero sits on the resonance's line) are marked invalid, as the design leaves
-/// them out, so the plot is not scaled to a −300 dB spike.
+/// 60 dB or more out of the loop (its zero sits on the resonance's line) are left out, as the design leaves them
+/// out, so the plot is not scaled to a −300 dB spike of the prediction.
 dsp::FrequencyResponse loopFrf(const autotune::PidLoopMeasurement& m, const std::vector<std::complex<double>>& l,
                                const std::optional<tuning::BiquadNotch>& notch = std::nullopt)
 {
     dsp::FrequencyResponse r;
     for (std::size_t k = 0; k < m.freqHz.size(); ++k)
-        r.push(m.freqHz[k], l[k], NAN,
-               !notch || std::abs(tuning::biquadNotchResponse(*notch, 1.0 / m.servoRateHz, m.freqHz[k])) >= 1e-3);
+        if (!notch || std::abs(tuning::biquadNotchResponse(*notch, 1.0 / m.servoRateHz, m.freqHz[k])) >= 1e-3)
+            r.push(m.freqHz[k], l[k], NAN, true);
     r.metadata["quantity"] = "open_loop";
     return r;
 }
