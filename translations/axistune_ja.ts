@@ -466,224 +466,289 @@
 <context>
     <name>Parameter</name>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="14" />
+        <location filename="../app/gui/ParameterText.cpp" line="15" />
         <source>Maximum current (peak)</source>
         <translation>最大電流 (ピーク)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="15" />
+        <location filename="../app/gui/ParameterText.cpp" line="16" />
         <source>Rated current (peak)</source>
         <translation>定格電流 (ピーク)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="16" />
+        <location filename="../app/gui/ParameterText.cpp" line="17" />
         <source>Torque constant</source>
         <translation>トルク定数</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="17" />
+        <location filename="../app/gui/ParameterText.cpp" line="18" />
         <source>Maximum voltage</source>
         <translation>最大電圧</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="18" />
+        <location filename="../app/gui/ParameterText.cpp" line="19" />
         <source>Current-loop period</source>
         <translation>電流ループ周期</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="19" />
+        <location filename="../app/gui/ParameterText.cpp" line="20" />
         <source>Current proportional gain k_p</source>
         <translation>電流比例ゲイン k_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="20" />
+        <location filename="../app/gui/ParameterText.cpp" line="21" />
         <source>Current integral gain k_i</source>
         <translation>電流積分ゲイン k_i</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="21" />
+        <location filename="../app/gui/ParameterText.cpp" line="22" />
         <source>PI ratio α</source>
         <translation>PI率 α</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="22" />
+        <location filename="../app/gui/ParameterText.cpp" line="23" />
         <source>Dead time</source>
         <translation>むだ時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="23" />
+        <location filename="../app/gui/ParameterText.cpp" line="24" />
         <source>Velocity-loop period</source>
         <translation>速度ループ周期</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="24" />
+        <location filename="../app/gui/ParameterText.cpp" line="25" />
         <source>Velocity proportional gain</source>
         <translation>速度比例ゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="25" />
+        <location filename="../app/gui/ParameterText.cpp" line="26" />
         <source>Velocity integral gain</source>
         <translation>速度積分ゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="26" />
+        <location filename="../app/gui/ParameterText.cpp" line="27" />
         <source>Velocity integral divider</source>
         <translation>速度積分の分周比</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="27" />
+        <location filename="../app/gui/ParameterText.cpp" line="28" />
         <source>Inertia for torque feedforward</source>
         <translation>トルクフィードフォワード用イナーシャ</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="28" />
+        <location filename="../app/gui/ParameterText.cpp" line="29" />
         <source>Position-loop period</source>
         <translation>位置ループ周期</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="29" />
+        <location filename="../app/gui/ParameterText.cpp" line="30" />
         <source>Position gain</source>
         <translation>位置ゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="30" />
+        <location filename="../app/gui/ParameterText.cpp" line="31" />
         <source>Velocity feedforward</source>
         <translation>速度フィードフォワード</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="31" />
+        <location filename="../app/gui/ParameterText.cpp" line="32" />
         <source>Torque feedforward</source>
         <translation>トルクフィードフォワード</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="32" />
+        <location filename="../app/gui/ParameterText.cpp" line="33" />
         <source>Feedback (0 semi-closed, 1 full-closed)</source>
         <translation>フィードバック (0 セミクローズド, 1 フルクローズド)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="33" />
+        <location filename="../app/gui/ParameterText.cpp" line="34" />
         <source>Notch 1 centre</source>
         <translation>ノッチフィルタ 1 中心周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="34" />
+        <location filename="../app/gui/ParameterText.cpp" line="35" />
         <source>Notch 1 width</source>
         <translation>ノッチフィルタ 1 帯域幅</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="35" />
+        <location filename="../app/gui/ParameterText.cpp" line="36" />
         <source>Notch 1 depth</source>
         <translation>ノッチフィルタ 1 深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="36" />
+        <location filename="../app/gui/ParameterText.cpp" line="37" />
         <source>Notch 2 centre</source>
         <translation>ノッチフィルタ 2 中心周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="37" />
+        <location filename="../app/gui/ParameterText.cpp" line="38" />
         <source>Notch 2 width</source>
         <translation>ノッチフィルタ 2 帯域幅</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="38" />
+        <location filename="../app/gui/ParameterText.cpp" line="39" />
         <source>Notch 2 depth</source>
         <translation>ノッチフィルタ 2 深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="39" />
+        <location filename="../app/gui/ParameterText.cpp" line="40" />
         <source>Notch 3 centre</source>
         <translation>ノッチフィルタ 3 中心周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="40" />
+        <location filename="../app/gui/ParameterText.cpp" line="41" />
         <source>Notch 3 width</source>
         <translation>ノッチフィルタ 3 帯域幅</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="41" />
+        <location filename="../app/gui/ParameterText.cpp" line="42" />
         <source>Notch 3 depth</source>
         <translation>ノッチフィルタ 3 深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="42" />
+        <location filename="../app/gui/ParameterText.cpp" line="43" />
         <source>Notch 4 centre</source>
         <translation>ノッチフィルタ 4 中心周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="43" />
+        <location filename="../app/gui/ParameterText.cpp" line="44" />
         <source>Notch 4 width</source>
         <translation>ノッチフィルタ 4 帯域幅</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="44" />
+        <location filename="../app/gui/ParameterText.cpp" line="45" />
         <source>Notch 4 depth</source>
         <translation>ノッチフィルタ 4 深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="45" />
+        <location filename="../app/gui/ParameterText.cpp" line="46" />
         <source>Torque low-pass cutoff (0 = off)</source>
         <translation>トルク指令ローパスフィルタ遮断周波数 (0 = 無効)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="46" />
+        <location filename="../app/gui/ParameterText.cpp" line="47" />
         <source>Lost-motion compensation (0 off, 1 conventional, 2 proposed)</source>
         <translation>ロストモーション補正 (0 無効, 1 従来法, 2 提案法)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="47" />
+        <location filename="../app/gui/ParameterText.cpp" line="48" />
         <source>Conventional backlash amount</source>
         <translation>従来法のバックラッシ補正量</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="48" />
+        <location filename="../app/gui/ParameterText.cpp" line="49" />
         <source>Lost-motion coefficient A</source>
         <translation>ロストモーション係数 A</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="49" />
+        <location filename="../app/gui/ParameterText.cpp" line="50" />
         <source>Lost-motion coefficient B</source>
         <translation>ロストモーション係数 B</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="50" />
+        <location filename="../app/gui/ParameterText.cpp" line="51" />
         <source>Ball-screw length offset x0</source>
         <translation>ボールねじ長さオフセット x0</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="51" />
+        <location filename="../app/gui/ParameterText.cpp" line="52" />
         <source>Trace divider (of the velocity period)</source>
         <translation>トレース分周比 (速度ループ周期の倍数)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="52" />
+        <location filename="../app/gui/ParameterText.cpp" line="53" />
         <source>Vibration-suppression filter (0 off, 1 semi-closed F_m, 2 full-closed F_L)</source>
         <translation>振動抑制フィルタ (0 なし、1 セミクローズド F_m、2 フルクローズド F_L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="53" />
+        <location filename="../app/gui/ParameterText.cpp" line="54" />
         <source>Suppression filter frequency f0</source>
         <translation>振動抑制フィルタの周波数 f0</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="54" />
+        <location filename="../app/gui/ParameterText.cpp" line="55" />
         <source>Suppression filter damping zeta</source>
         <translation>振動抑制フィルタの減衰比 zeta</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="55" />
+        <location filename="../app/gui/ParameterText.cpp" line="56" />
         <source>F_L time constant tau</source>
         <translation>F_L の時定数 tau</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="56" />
+        <location filename="../app/gui/ParameterText.cpp" line="57" />
         <source>Reversal compensation pulse amplitude (velocity command)</source>
         <translation>象限突起補正パルスの振幅（速度指令）</translation>
     </message>
     <message>
-        <location filename="../app/gui/ParameterText.cpp" line="57" />
+        <location filename="../app/gui/ParameterText.cpp" line="58" />
         <source>Reversal compensation pulse time constant</source>
         <translation>象限突起補正パルスの時定数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="60" />
+        <source>Proportional gain P</source>
+        <translation>比例ゲイン P</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="61" />
+        <source>Integral gain I</source>
+        <translation>積分ゲイン I</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="62" />
+        <source>Derivative gain D</source>
+        <translation>微分ゲイン D</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="63" />
+        <source>Feedforward FF0</source>
+        <translation>フィードフォワード FF0</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="64" />
+        <source>Velocity feedforward FF1</source>
+        <translation>速度フィードフォワード FF1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="65" />
+        <source>Acceleration feedforward FF2</source>
+        <translation>加速度フィードフォワード FF2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="66" />
+        <source>Jerk feedforward FF3</source>
+        <translation>加加速度フィードフォワード FF3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="67" />
+        <source>Output bias</source>
+        <translation>出力バイアス</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="68" />
+        <source>Deadband</source>
+        <translation>不感帯</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="69" />
+        <source>Error limit</source>
+        <translation>偏差制限</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="70" />
+        <source>Integrator limit</source>
+        <translation>積分制限</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="71" />
+        <source>Error-rate limit</source>
+        <translation>偏差変化率制限</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ParameterText.cpp" line="72" />
+        <source>Output limit</source>
+        <translation>出力制限</translation>
     </message>
 </context>
 <context>
@@ -5909,295 +5974,295 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::NcPidPage</name>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="53" />
+        <location filename="../app/gui/NcPidPage.cpp" line="57" />
         <source>Notch for a position PID the NC closes</source>
         <translation>NCが閉じる位置PIDのノッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="54" />
+        <location filename="../app/gui/NcPidPage.cpp" line="58" />
         <source>Position PID the NC closes</source>
         <translation>NCが閉じる位置PID</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="62" />
+        <location filename="../app/gui/NcPidPage.cpp" line="68" />
         <source>Axis:</source>
         <translation>軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="63" />
+        <location filename="../app/gui/NcPidPage.cpp" line="69" />
         <source> % of maxoutput</source>
         <translation> % (maxoutput比)</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="64" />
+        <location filename="../app/gui/NcPidPage.cpp" line="70" />
         <source>Excitation peak (multisine at the PID output):</source>
         <translation>加振ピーク (PID出力でのマルチサイン):</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="67" />
+        <location filename="../app/gui/NcPidPage.cpp" line="73" />
         <source>from the measured slope</source>
         <translation>測定した傾きから</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="68" />
-        <location filename="../app/gui/NcPidPage.cpp" line="387" />
+        <location filename="../app/gui/NcPidPage.cpp" line="74" />
+        <location filename="../app/gui/NcPidPage.cpp" line="406" />
         <source>torque or current</source>
         <translation>トルクまたは電流</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="69" />
-        <location filename="../app/gui/NcPidPage.cpp" line="387" />
+        <location filename="../app/gui/NcPidPage.cpp" line="75" />
+        <location filename="../app/gui/NcPidPage.cpp" line="406" />
         <source>velocity</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="70" />
+        <location filename="../app/gui/NcPidPage.cpp" line="76" />
         <source>Drive input (what the PID output commands):</source>
         <translation>サーボアンプ入力 (PID出力が指令するもの):</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="72" />
+        <location filename="../app/gui/NcPidPage.cpp" line="78" />
         <source>Phase margin asked:</source>
         <translation>要求する位相余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="73" />
+        <location filename="../app/gui/NcPidPage.cpp" line="79" />
         <source> dB</source>
         <translation> dB</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="74" />
+        <location filename="../app/gui/NcPidPage.cpp" line="80" />
         <source>Gain margin asked:</source>
         <translation>要求するゲイン余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="75" />
+        <location filename="../app/gui/NcPidPage.cpp" line="81" />
         <source>Propose LinuxCNC's biquad notch when it lets the crossover rise</source>
         <translation>交差周波数を上げられるときは LinuxCNC の biquad ノッチを提案する</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="81" />
+        <location filename="../app/gui/NcPidPage.cpp" line="93" />
         <source>The axis is free to move over the whole test, nobody is inside the machine, and the emergency stop is within reach.</source>
         <translation>テスト全体を通じて軸は自由に動くことができ、機械の中には誰もおらず、非常停止ボタンに手が届きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="87" />
+        <location filename="../app/gui/NcPidPage.cpp" line="99" />
         <source>Measure and propose</source>
         <translation>測定して提案</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="90" />
+        <location filename="../app/gui/NcPidPage.cpp" line="102" />
         <source>Insert the notch and verify</source>
         <translation>ノッチを挿入して検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="90" />
+        <location filename="../app/gui/NcPidPage.cpp" line="102" />
         <source>Apply and verify</source>
         <translation>適用して検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="92" />
+        <location filename="../app/gui/NcPidPage.cpp" line="104" />
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="94" />
+        <location filename="../app/gui/NcPidPage.cpp" line="106" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="109" />
+        <location filename="../app/gui/NcPidPage.cpp" line="121" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="109" />
+        <location filename="../app/gui/NcPidPage.cpp" line="121" />
         <source>Running</source>
         <translation>現在値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="109" />
+        <location filename="../app/gui/NcPidPage.cpp" line="121" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="109" />
+        <location filename="../app/gui/NcPidPage.cpp" line="121" />
         <source>Verified</source>
         <translation>検証値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="109" />
+        <location filename="../app/gui/NcPidPage.cpp" line="121" />
         <source>Rule</source>
         <translation>ルール</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="113" />
+        <location filename="../app/gui/NcPidPage.cpp" line="126" />
         <source>Open loop L [dB]</source>
         <translation>開ループ L [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="163" />
+        <location filename="../app/gui/NcPidPage.cpp" line="182" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): it has no drive filter slots. Its notch is LinuxCNC's biquad component (a notch with 0.5 ≤ Q ≤ 2), inserted after the PID output. This page measures the open loop with the gains that run, proposes a notch at the plant's strongest resonance when it raises the gain margin, inserts it and verifies it by measuring again; the gains are not changed.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプのフィルタスロットはありません。そのノッチは LinuxCNC の biquad コンポーネント (0.5 ≤ Q ≤ 2 のノッチ) で、PID 出力の後に挿入します。このページは現在のゲインで開ループを測定し、ゲイン余裕が上がるときは制御対象の最も強い共振にノッチを提案し、挿入して再測定で検証します。ゲインは変更しません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="169" />
+        <location filename="../app/gui/NcPidPage.cpp" line="188" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): there is no drive velocity loop. This page measures the open loop with the gains that run, proposes P, I, D, FF1 and FF2 (and a biquad notch after the PID output when it lets the crossover rise) for the margins asked, with the rule behind each number, applies them live and verifies them by measuring again. A loop that misses the margins gets back what ran before.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプの速度ループはありません。このページは現在のゲインで開ループを測定し、要求された余裕に対して P、I、D、FF1、FF2 (交差周波数を上げられるときは PID 出力の後の biquad ノッチも) を各値のルールとともに提案し、運転中に適用して再測定で検証します。余裕を満たさないループは元の設定に戻します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="245" />
+        <location filename="../app/gui/NcPidPage.cpp" line="264" />
         <source>Measuring the open loop of %1 with the gains that run…</source>
         <translation>現在のゲインで %1 の開ループを測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="260" />
+        <location filename="../app/gui/NcPidPage.cpp" line="279" />
         <source>Aborted: the excitation stopped and what AxisTune inserted was removed. %1</source>
         <translation>中止しました: 加振を止め、AxisTune が挿入したものを取り除きました。%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="261" />
+        <location filename="../app/gui/NcPidPage.cpp" line="280" />
         <source>Measured, but no proposal: %1</source>
         <translation>測定しましたが提案はありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="261" />
+        <location filename="../app/gui/NcPidPage.cpp" line="280" />
         <source>The measurement failed: %1</source>
         <translation>測定に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="272" />
+        <location filename="../app/gui/NcPidPage.cpp" line="291" />
         <source>Nothing to change: %1</source>
         <translation>変更するものはありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="275" />
+        <location filename="../app/gui/NcPidPage.cpp" line="294" />
         <source>Proposed: a notch at %1 Hz, Q %2. Nothing was written yet.</source>
         <translation>提案: %1 Hz、Q %2 のノッチ。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="277" />
+        <location filename="../app/gui/NcPidPage.cpp" line="296" />
         <source>Proposed below with the predicted margins. Nothing was written yet.</source>
         <translation>提案と予測余裕を下に示します。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="280" />
+        <location filename="../app/gui/NcPidPage.cpp" line="299" />
         <source>proposed, not applied</source>
         <translation>提案のみ、未適用</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="289" />
+        <location filename="../app/gui/NcPidPage.cpp" line="308" />
         <source>Inserting the notch and measuring the open loop again…</source>
         <translation>ノッチを挿入し、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="290" />
+        <location filename="../app/gui/NcPidPage.cpp" line="309" />
         <source>Writing the gains (read back) and measuring the open loop again…</source>
         <translation>ゲインを書き込み (読み戻し確認)、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="301" />
+        <location filename="../app/gui/NcPidPage.cpp" line="320" />
         <source>Not applied: %1. Nothing was left changed.</source>
         <translation>適用しませんでした: %1。変更は残っていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="307" />
+        <location filename="../app/gui/NcPidPage.cpp" line="326" />
         <source>Applied and verified: the measured margins are in the table. Undo puts back what ran before.</source>
         <translation>適用して検証しました: 測定した余裕は表にあります。「元に戻す」で以前の設定に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="309" />
+        <location filename="../app/gui/NcPidPage.cpp" line="328" />
         <source>Not kept: %1</source>
         <translation>保持しませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="312" />
+        <location filename="../app/gui/NcPidPage.cpp" line="331" />
         <source>applied and verified</source>
         <translation>適用・検証済み</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="327" />
+        <location filename="../app/gui/NcPidPage.cpp" line="346" />
         <source>Putting back what ran before…</source>
         <translation>以前の設定に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="338" />
+        <location filename="../app/gui/NcPidPage.cpp" line="357" />
         <source>Undo refused: %1</source>
         <translation>元に戻すことを拒否しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="341" />
+        <location filename="../app/gui/NcPidPage.cpp" line="360" />
         <source>undone</source>
         <translation>元に戻した</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="343" />
+        <location filename="../app/gui/NcPidPage.cpp" line="362" />
         <source>Undone: the notch was removed.</source>
         <translation>元に戻しました: ノッチを取り除きました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="344" />
+        <location filename="../app/gui/NcPidPage.cpp" line="363" />
         <source>Undone: the gains that ran before are back (read back)%1.</source>
         <translation>元に戻しました: 以前のゲインに戻りました (読み戻し確認)%1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="345" />
+        <location filename="../app/gui/NcPidPage.cpp" line="364" />
         <source> and the notch was removed</source>
         <translation>、ノッチも取り除きました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="383" />
+        <location filename="../app/gui/NcPidPage.cpp" line="402" />
         <source>Notch f0 [Hz]</source>
         <translation>ノッチ f0 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="383" />
+        <location filename="../app/gui/NcPidPage.cpp" line="402" />
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="385" />
+        <location filename="../app/gui/NcPidPage.cpp" line="404" />
         <source>Notch Q</source>
         <translation>ノッチ Q</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="386" />
+        <location filename="../app/gui/NcPidPage.cpp" line="405" />
         <source>Drive input</source>
         <translation>サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="393" />
-        <location filename="../app/gui/NcPidPage.cpp" line="398" />
+        <location filename="../app/gui/NcPidPage.cpp" line="412" />
+        <location filename="../app/gui/NcPidPage.cpp" line="417" />
         <source>Crossover [Hz]</source>
         <translation>交差周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="399" />
+        <location filename="../app/gui/NcPidPage.cpp" line="418" />
         <source>Phase margin [°]</source>
         <translation>位相余裕 [°]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="400" />
+        <location filename="../app/gui/NcPidPage.cpp" line="419" />
         <source>Gain margin [dB]</source>
         <translation>ゲイン余裕 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="401" />
+        <location filename="../app/gui/NcPidPage.cpp" line="420" />
         <source>Motion time [s]</source>
         <translation>動作時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="411" />
+        <location filename="../app/gui/NcPidPage.cpp" line="432" />
         <source>measured, running gains</source>
         <translation>測定、現在のゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="413" />
+        <location filename="../app/gui/NcPidPage.cpp" line="434" />
         <source>predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="416" />
+        <location filename="../app/gui/NcPidPage.cpp" line="437" />
         <source>verified (measured after applying)</source>
         <translation>検証 (適用後に測定)</translation>
     </message>

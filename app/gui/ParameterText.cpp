@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Generated list of the drive-parameter labels of core/sim/AxisParameters.cpp, so lupdate sees them.
+// Generated list of the drive-parameter labels of core/sim/AxisParameters.cpp and of LinuxCNC's pid pins
+// (core/device/hal/HalDrive.cpp), so lupdate sees them.
 // tests/gui/tst_parametertext.cpp fails when a label is missing here.
 #include "app/gui/ParameterText.h"
 
@@ -55,6 +56,20 @@ const char* const kLabels[] = {
     QT_TRANSLATE_NOOP("Parameter", "F_L time constant tau"),
     QT_TRANSLATE_NOOP("Parameter", "Reversal compensation pulse amplitude (velocity command)"),
     QT_TRANSLATE_NOOP("Parameter", "Reversal compensation pulse time constant"),
+    // LinuxCNC pid pins (core/device/hal/HalDrive.cpp kPidPins)
+    QT_TRANSLATE_NOOP("Parameter", "Proportional gain P"),
+    QT_TRANSLATE_NOOP("Parameter", "Integral gain I"),
+    QT_TRANSLATE_NOOP("Parameter", "Derivative gain D"),
+    QT_TRANSLATE_NOOP("Parameter", "Feedforward FF0"),
+    QT_TRANSLATE_NOOP("Parameter", "Velocity feedforward FF1"),
+    QT_TRANSLATE_NOOP("Parameter", "Acceleration feedforward FF2"),
+    QT_TRANSLATE_NOOP("Parameter", "Jerk feedforward FF3"),
+    QT_TRANSLATE_NOOP("Parameter", "Output bias"),
+    QT_TRANSLATE_NOOP("Parameter", "Deadband"),
+    QT_TRANSLATE_NOOP("Parameter", "Error limit"),
+    QT_TRANSLATE_NOOP("Parameter", "Integrator limit"),
+    QT_TRANSLATE_NOOP("Parameter", "Error-rate limit"),
+    QT_TRANSLATE_NOOP("Parameter", "Output limit"),
 };
 // clang-format on
 }  // namespace

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Every drive-parameter label of the simulated axes is in the GUI's translation list, and the
-// Japanese translation shows it in Japanese.
+// Every drive-parameter label of the simulated axes and of LinuxCNC's pid pins is in the GUI's translation list, and
+// the Japanese translation shows it in Japanese.
+// clang-format off
+// First: HAL's headers use the name "signals", which Qt defines as a macro.
+#include "core/device/hal/HalDrive.h"
+// clang-format on
 #include "app/gui/ParameterText.h"
 #include "core/sim/AxisParameters.h"
 
@@ -20,6 +24,8 @@ private slots:
                 QVERIFY2(axistune::gui::hasParameterLabel(m.label), m.label.c_str());
             }
         }
+        for (const auto& m : axistune::device::hal::pidParameterMetadata())
+            QVERIFY2(axistune::gui::hasParameterLabel(m.label), m.label.c_str());
     }
     void japaneseTranslationApplies()
     {
@@ -28,6 +34,7 @@ private slots:
         QCoreApplication::installTranslator(&tr);
         QCOMPARE(axistune::gui::parameterLabel("PI ratio α"), QString::fromUtf8("PI率 α"));
         QCOMPARE(axistune::gui::parameterLabel("Dead time"), QString::fromUtf8("むだ時間"));
+        QCOMPARE(axistune::gui::parameterLabel("Proportional gain P"), QString::fromUtf8("比例ゲイン P"));
         QCoreApplication::removeTranslator(&tr);
     }
 };
