@@ -141,12 +141,7 @@ NcPidPage::NcPidPage(AppContext& ctx, autotune::PidTuneScope scope, QWidget* par
             return;
         // Another axis: what was measured belongs to the old one.
         m_axis = axis;
-        m_measured.reset();
-        m_proposal.reset();
-        m_applied.reset();
-        m_undone = false;
-        m_table->setRowCount(0);
-        m_plot->clearResponses();
+        clearResult();
         m_status->clear();
         showIntro();
         updateButtons();
@@ -252,15 +247,20 @@ void NcPidPage::track(DriveRequest* r)
     updateButtons();
 }
 
-void NcPidPage::measure()
+void NcPidPage::clearResult()
 {
-    m_asked = request();
     m_measured.reset();
     m_proposal.reset();
     m_applied.reset();
     m_undone = false;
     m_table->setRowCount(0);
     m_plot->clearResponses();
+}
+
+void NcPidPage::measure()
+{
+    m_asked = request();
+    clearResult();
     setStatus(tr("Measuring the open loop of %1 with the gains that run…").arg(m_axis));
     auto* r = m_ctx.drive().measurePidTune(m_asked);
     connect(r, &DriveRequest::finished, this, &NcPidPage::onMeasured);

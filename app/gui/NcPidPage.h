@@ -85,6 +85,7 @@ private:
     void updateButtons();
     void saveSession(const QString& note, store::SessionStatus status);
     void showIntro();
+    void clearResult(); ///< forgets the measurement, proposal and apply shown
 
     AppContext& m_ctx;
     autotune::PidTuneScope m_scope;
