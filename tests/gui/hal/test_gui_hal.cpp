@@ -390,7 +390,7 @@ TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
 // running gains stay, a biquad at the plant's resonance (within 2 % of the exact one) raises the running loop's gain
 // margin by at least the 1 dB its rule asks with the phase margin kept at the 50° asked, the measured margins after
 // inserting it lie within 3° / 1 dB of the prediction, and removing it (Undo) leaves HAL's nets and functions as they
-// were.
+// were. First an Abort mid-measurement: nothing proposed, HAL as before, the session kept as aborted.
 TEST_F(GuiOnHal, NotchWizardInsertsABiquadForTheRunningGains)
 {
     gui::AppContext ctx;
@@ -407,6 +407,24 @@ TEST_F(GuiOnHal, NotchWizardInsertsABiquadForTheRunningGains)
     n.next();
     ASSERT_EQ(n.currentId(), int(gui::NotchWizard::kNcPid));
     gui::NcPidPage& page = *n.ncPidPage();
+    // Abort during the measurement (12 s of motion): the excitation stops, what AxisTune inserted leaves HAL, nothing
+    // is proposed, and the session is kept as aborted.
+    page.confirmation()->setChecked(true);
+    page.measureButton()->click();
+    ASSERT_TRUE(page.busy());
+    QTest::qWait(1500);
+    ASSERT_TRUE(page.busy());
+    page.abortButton()->click();
+    ASSERT_TRUE(waitUntil([&] { return !page.busy(); }, 30000));
+    EXPECT_FALSE(page.measurement());
+    EXPECT_FALSE(page.proposal());
+    EXPECT_FALSE(page.applyButton()->isEnabled());
+    ASSERT_TRUE(waitUntil([&] { return page.savedSessionId() > 0 && page.pendingSaves() == 0; }, 30000));
+    auto aborted = ctx.database()->loadSession(page.savedSessionId());
+    ASSERT_TRUE(aborted.ok());
+    EXPECT_EQ(aborted->info.status, store::SessionStatus::Aborted) << aborted->info.note;
+    expectHalUnchanged();
+    page.confirmation()->setChecked(false);
     measureOn(page);
     if (HasFatalFailure())
         return;
