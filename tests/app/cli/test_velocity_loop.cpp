@@ -100,3 +100,21 @@ TEST(CliVelocityLoop, BadInputExitsTwoWithTheReason)
     EXPECT_NE(r.err.find("phase margin"), std::string::npos) << r.err;
     std::filesystem::remove_all(dir);
 }
+
+// pid-tune is for a position PID the NC closes: on a drive that closes its own loops (sim:) it is refused, naming why,
+// with nothing moved or written; options outside their limits are refused naming the option (exit 2 each).
+TEST(CliPidTuneRefusals, ADriveThatClosesItsOwnLoopsAndBadOptionsExitTwo)
+{
+    auto r = runCli("pid-tune --connect sim:vmc --axis X --amplitude-pct 5");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("PID the NC closes"), std::string::npos) << r.err;
+    r = runCli("pid-tune --connect sim:vmc --axis X --amplitude-pct 5 --pm 90");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--pm"), std::string::npos) << r.err;
+    r = runCli("pid-tune --connect sim:vmc --axis X --amplitude-pct 5 --notch maybe");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--notch"), std::string::npos) << r.err;
+    r = runCli("pid-tune --connect sim:vmc --axis X");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--amplitude"), std::string::npos) << r.err;
+}
