@@ -1446,7 +1446,7 @@
     </message>
     <message>
         <location filename="../app/gui/AutoTuneWizard.cpp" line="160" />
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="456" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="469" />
         <source>Gentle</source>
         <translation>ソフト</translation>
     </message>
@@ -1457,7 +1457,7 @@
     </message>
     <message>
         <location filename="../app/gui/AutoTuneWizard.cpp" line="162" />
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="459" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="472" />
         <source>Standard</source>
         <translation>標準</translation>
     </message>
@@ -1468,7 +1468,7 @@
     </message>
     <message>
         <location filename="../app/gui/AutoTuneWizard.cpp" line="163" />
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="458" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="471" />
         <source>Stiff</source>
         <translation>高剛性</translation>
     </message>
@@ -1508,7 +1508,12 @@
         <translation>軸が動いてよい: ストローク範囲内に障害物がなく、停止できる (非常停止が手元にある)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="250" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="231" />
+        <source>Undo an earlier run…</source>
+        <translation>以前の実行を元に戻す…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="259" />
         <source>Start</source>
         <translation>開始</translation>
     </message>
@@ -1568,35 +1573,87 @@
         <translation>振幅マップ: 加振振幅 (定格トルク比 %):</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="284" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="233" />
+        <source>Puts back the parameters an earlier applied run of this wizard changed, from its saved session (a run of axistune-cli autotune: its --undo RESULT.json)</source>
+        <translation>このウィザードの以前に適用した実行が変更したパラメータを、保存されたセッションから元に戻します (axistune-cli autotune の実行は --undo RESULT.json で)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="295" />
         <source>Asking the drive for the travel window…</source>
         <translation>サーボアンプにストローク範囲を問い合わせ中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="291" />
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="293" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="302" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="304" />
         <source>Over the travel not available: %1</source>
         <translation>ストローク全体での調整は使えません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="297" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="308" />
         <source>m or rad</source>
         <translation>m または rad</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="307" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="318" />
         <source>Travel window −%1 … +%1 %2: the positions are spread evenly from one end to the other; the axis returns to where it stood.</source>
         <translation>ストローク範囲 −%1 … +%1 %2: 位置は一端から他端まで均等に配置され、終了後に軸は元の位置へ戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="349" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="360" />
         <source>Cannot start: %1</source>
         <translation>開始できません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="301" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="312" />
         <source>Travel window −%1 … +%1 %2: the positions are spread evenly from −%3 to +%3 %2, inside its ends by the servo lag of the moves between them (%4 %2: jog speed / position gain); the axis returns to where it stood.</source>
         <translation>ストローク範囲 −%1 … +%1 %2: 位置は −%3 から +%3 %2 まで均等に配置されます (両端から、位置間の移動の追従遅れによる位置偏差 %4 %2 = ジョグ速度 / 位置ゲイン だけ内側)。終了後に軸は元の位置へ戻ります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="39" />
+        <source>No store is open.</source>
+        <translation>データベースが開かれていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="44" />
+        <source>Reading session %1 failed: %2</source>
+        <translation>セッション %1 の読み出しに失敗しました: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="49" />
+        <source>Session %1 is not a run of the automatic tuning.</source>
+        <translation>セッション %1 は自動調整の実行ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="54" />
+        <source>Session %1: %2</source>
+        <translation>セッション %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="58" />
+        <source>Session %1 tuned axis %2, which this connection does not have.</source>
+        <translation>セッション %1 は軸 %2 を調整しましたが、この接続にはその軸がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="77" />
+        <source>Undo an earlier run</source>
+        <translation>以前の実行を元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="79" />
+        <source>Applied runs of the automatic tuning saved for %1, newest first. The next page shows what the chosen run changed; nothing is written before you confirm Undo there.</source>
+        <translation>%1 に保存された自動調整の適用済み実行 (新しい順)。次のページで選んだ実行が変更した内容を表示します。そこで「元に戻す」を確認するまで何も書き込みません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="100" />
+        <source>Session %1 (%2), axis %3: %n parameter(s) applied</source>
+        <translation>
+            <numerusform>セッション %1 (%2)、軸 %3: %n 個のパラメータを適用</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="108" />
+        <source>No applied run of the automatic tuning is saved for the axes of %1.</source>
+        <translation>%1 の軸について保存された自動調整の適用済み実行はありません。</translation>
     </message>
 </context>
 <context>
@@ -1618,7 +1675,7 @@
     </message>
     <message>
         <location filename="../app/gui/AutoTuneResultPage.cpp" line="58" />
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="110" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="118" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
@@ -1633,141 +1690,141 @@
         <translation>適用後</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="296" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="300" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="297" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="301" />
         <source>The session is saved to the store when one is open.</source>
         <translation>ストアが開いていればセッションを保存します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="301" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="305" />
         <source>The run could not start: %1.
 Nothing was changed.</source>
         <translation>実行を開始できませんでした: %1。
 何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="303" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="307" />
         <source>%1: %2
 RESTORING THE PARAMETERS FAILED: check the drive's parameters.</source>
         <translation>%1: %2
 パラメータを元に戻せませんでした: サーボアンプのパラメータを確認してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="304" />
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="307" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="308" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="311" />
         <source>Aborted</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="304" />
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="307" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="308" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="311" />
         <source>Refused</source>
         <translation>拒否</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="306" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="310" />
         <source>%1: %2
 Nothing was changed: every parameter was restored and read back equal.</source>
         <translation>%1: %2
 何も変更していません: すべてのパラメータを元に戻し、読み出して一致を確認しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="313" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="317" />
         <source>Dry run finished: every parameter was restored; the values below were not applied.</source>
         <translation>試行が完了しました: すべてのパラメータを元に戻しました。以下の値は適用していません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="314" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="318" />
         <source>Applied: the parameters below are written and read back equal.</source>
         <translation>適用しました: 以下のパラメータを書き込み、読み出して一致を確認しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="328" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="332" />
         <source>Phase margin (re-measured)</source>
         <translation>位相余裕 (再測定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="328" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="332" />
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="329" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="333" />
         <source>Gain margin (re-measured)</source>
         <translation>ゲイン余裕 (再測定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="329" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="333" />
         <source>%1 dB</source>
         <translation>%1 dB</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="330" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="334" />
         <source>Velocity bandwidth (−3 dB)</source>
         <translation>速度ループ帯域 (−3 dB)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="330" />
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="331" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="334" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="335" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="331" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="335" />
         <source>Position bandwidth (−3 dB)</source>
         <translation>位置ループ帯域 (−3 dB)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="332" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="336" />
         <source>Settling time of the move</source>
         <translation>移動の整定時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="333" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="337" />
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="333" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="337" />
         <source>not settled within the record</source>
         <translation>記録内で整定せず</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="335" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="339" />
         <source>Peak following error</source>
         <translation>最大位置偏差</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="336" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="340" />
         <source>%1 µm</source>
         <translation>%1 µm</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="337" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="341" />
         <source>%1 mrad</source>
         <translation>%1 mrad</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="339" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="343" />
         <source>Motion time of the sequence</source>
         <translation>全手順の動作時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="339" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="343" />
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="340" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="344" />
         <source>Parameters it would apply (not applied):</source>
         <translation>適用される予定のパラメータ (適用していません):</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="341" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="345" />
         <source>Parameters applied (old → new):</source>
         <translation>適用したパラメータ (変更前 → 変更後):</translation>
     </message>
@@ -1943,13 +2000,13 @@ margin [dB]</source>
         <translation>比較した %2 本のうち %1 本の周波数線が非線形 (2 つの振幅の差が合成標準誤差の %3 倍を超える線を非線形とします)。現在のゲインでの移動のピークトルク: 定格トルクの %4 %。設計に使った振幅: 定格トルクの %5 %。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="317" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="321" />
         <source>Over %1 positions: the figures are the worst position's; every position is in the resonance map's table.</source>
         <translation>%1 位置で調整: 数値は最も悪い位置のものです。各位置の値は共振マップの表にあります。</translation>
     </message>
     <message>
         <location filename="../app/gui/AutoTuneResultPage.cpp" line="58" />
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="113" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="121" />
         <source>Unit</source>
         <translation>単位</translation>
     </message>
@@ -1969,281 +2026,301 @@ margin [dB]</source>
         <translation>実行前のパラメータ値を書き戻します</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneResultPage.cpp" line="349" />
+        <location filename="../app/gui/AutoTuneResultPage.cpp" line="353" />
         <source>Undo is not offered: %1</source>
         <translation>元に戻すことはできません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="54" />
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="125" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="51" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="133" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="72" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="80" />
         <source>Reading the parameters' units failed (%1): values are shown in SI units.</source>
         <translation>パラメータの単位の読み出しに失敗しました (%1): 値はSI単位で表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="98" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="106" />
         <source>Undo the automatic tuning anyway</source>
         <translation>自動調整をそれでも元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="98" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="106" />
         <source>Undo the automatic tuning</source>
         <translation>自動調整を元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="102" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="110" />
         <source>Undo writes back the values the parameters of axis %1 had before the run, all in one write, and reads them back. Nothing moves. These parameters change:</source>
         <translation>元に戻すと、軸 %1 のパラメータを実行前の値に一度の書き込みで書き戻し、読み出して確認します。軸は動きません。変更するパラメータ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="110" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="118" />
         <source>Applied by the run</source>
         <translation>実行で適用した値</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="112" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="120" />
         <source>On the drive now</source>
         <translation>現在のサーボアンプの値</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="113" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="121" />
         <source>→ Before the run (written)</source>
         <translation>→ 実行前の値 (書き込む値)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="136" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="144" />
         <source>Changed after the run applied it: Undo anyway overwrites this value</source>
         <translation>実行で適用した後に変更されています: それでも元に戻すとこの値を上書きします</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="149" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="157" />
         <source>The drive no longer holds what the run applied for %1 (marked red): someone or something changed it after the run. Undo anyway overwrites that later change with the value before the run.</source>
         <translation>%1 (赤で表示) のサーボアンプの値は、実行で適用した値ではありません: 実行後に変更されています。それでも元に戻すと、その後の変更を実行前の値で上書きします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="155" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="163" />
         <source>Overwrite the later change of %1</source>
         <translation>%1 のその後の変更を上書きする</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="162" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="170" />
         <source>Undo anyway</source>
         <translation>それでも元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="162" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="170" />
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="177" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="185" />
         <source>Undoing: writing the values before the run and reading them back…</source>
         <translation>元に戻しています: 実行前の値を書き込み、読み出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="180" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="188" />
         <source>Automatic tuning of axis %1: undo%2</source>
         <translation>軸 %1 の自動調整: 元に戻す%2</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="180" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="188" />
         <source> (anyway)</source>
         <translation> (上書きを承認)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="205" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="213" />
         <source>%1: %2 → %3 %4</source>
         <translation>%1: %2 → %3 %4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="207" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="215" />
         <source>Undone: %n parameter(s) written back to the values before the run and read back equal.</source>
         <translation>
             <numerusform>元に戻しました: %n 個のパラメータを実行前の値に書き戻し、読み出して一致を確認しました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="221" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="229" />
         <source>Undo refused, nothing written: %1 is %2 %3 on the drive, not the %4 %3 the run applied. It was changed after the run, and undoing would overwrite that change.</source>
         <translation>元に戻すことを拒否しました (何も書き込んでいません): サーボアンプの %1 は %2 %3 で、実行で適用した %4 %3 ではありません。実行後に変更されており、元に戻すとその変更を上書きします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="224" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="232" />
         <source>Also changed: %1.</source>
         <translation>他に変更されたもの: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="225" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="233" />
         <source>Undo anyway… overwrites it after a second confirmation.</source>
         <translation>「それでも元に戻す…」は、もう一度確認した後に上書きします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="230" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="238" />
         <source>Undo refused, nothing written: %1</source>
         <translation>元に戻すことを拒否しました (何も書き込んでいません): %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="231" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="239" />
         <source>Undo failed: %1
 Read the axis's parameters to see what the drive holds.</source>
         <translation>元に戻せませんでした: %1
 軸のパラメータを読み出して、サーボアンプの値を確認してください。</translation>
     </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="146" />
+        <source>An earlier run: session %1.</source>
+        <translation>以前の実行: セッション %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="148" />
+        <source>Session %1: %2</source>
+        <translation>セッション %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="154" />
+        <source>Session %1 applied these parameters to axis %2. Undo writes back the values they had before it, in one write, read back, when the drive still holds what the run applied.</source>
+        <translation>セッション %1 は軸 %2 にこれらのパラメータを適用しました。サーボアンプが実行の適用した値をまだ保持していれば、「元に戻す」は実行前の値を一度に書き戻し、読み戻して確認します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/AutoTuneEarlier.cpp" line="160" />
+        <source>Parameters the run applied (before → applied):</source>
+        <translation>実行が適用したパラメータ (実行前 → 適用値):</translation>
+    </message>
 </context>
 <context>
     <name>axistune::gui::AutoTuneRunPage</name>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="373" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="386" />
         <source>Running the sequence</source>
         <translation>手順を実行中</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="374" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="387" />
         <source>Abort stops the motion at once; every parameter the run wrote is restored and read back.</source>
         <translation>中止すると動作をすぐに止め、実行中に書き込んだすべてのパラメータを元に戻して読み出します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="379" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="392" />
         <source>Step</source>
         <translation>手順</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="379" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="392" />
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="395" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="408" />
         <source>What each finished step measured, what it chose and the rule.</source>
         <translation>完了した各手順の測定値、選んだ値、規則。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="404" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="417" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="416" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="429" />
         <source>Result &gt;</source>
         <translation>結果 &gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="452" />
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="496" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="465" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="509" />
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="455" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="468" />
         <source>Axis %1, style %2, time budget %3 s%4.</source>
         <translation>軸 %1、スタイル %2、時間予算 %3 s%4。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="461" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="474" />
         <source>, dry run</source>
         <translation>、試行のみ</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="474" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="487" />
         <source>Automatic tuning of axis %1 started</source>
         <translation>軸 %1 の自動調整を開始しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="485" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="498" />
         <source>Aborting: stopping the motion and restoring every parameter…</source>
         <translation>中止中: 動作を止め、すべてのパラメータを元に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="497" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="510" />
         <source>running…</source>
         <translation>実行中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="504" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="517" />
         <source>done</source>
         <translation>完了</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="511" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="524" />
         <source> (%1 s of motion)</source>
         <translation> (動作 %1 s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="512" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="525" />
         <source>Measured: %1</source>
         <translation>測定: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="513" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="526" />
         <source>Chosen: %1</source>
         <translation>選択: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="514" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="527" />
         <source>Rule: %1</source>
         <translation>規則: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="523" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="536" />
         <source>no answer from the drive</source>
         <translation>サーボアンプから応答がありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="525" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="538" />
         <source>The run could not start: %1. Nothing was changed.</source>
         <translation>実行を開始できませんでした: %1。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="530" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="543" />
         <source>aborted</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="530" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="543" />
         <source>refused</source>
         <translation>拒否</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="532" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="545" />
         <source>every parameter restored and read back equal</source>
         <translation>すべてのパラメータを元に戻し、読み出して一致を確認</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="533" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="546" />
         <source>RESTORING THE PARAMETERS FAILED: check the drive</source>
         <translation>パラメータを元に戻せませんでした: サーボアンプを確認してください</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="535" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="548" />
         <source>Aborted (%1): %2.</source>
         <translation>中止 (%1): %2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="535" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="548" />
         <source>Refused (%1): %2.</source>
         <translation>拒否 (%1): %2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="539" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="552" />
         <source>Finished (dry run): every parameter restored; see the result.</source>
         <translation>完了 (試行のみ): すべてのパラメータを元に戻しました。結果を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="540" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="553" />
         <source>Finished: the parameters are applied; see the result.</source>
         <translation>完了: パラメータを適用しました。結果を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="462" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="475" />
         <source> Over the travel: %1 positions.</source>
         <translation> ストローク全体で %1 位置。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="465" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="478" />
         <source> Amplitude map at %1 % of rated torque.</source>
         <translation> 振幅マップ: 定格トルクの %1 %。</translation>
     </message>
@@ -2296,7 +2373,7 @@ Read the axis's parameters to see what the drive holds.</source>
         <translation>9. 適用または元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneWizard.cpp" line="609" />
+        <location filename="../app/gui/AutoTuneWizard.cpp" line="622" />
         <source>Automatic tuning</source>
         <translation>自動調整</translation>
     </message>
@@ -6101,12 +6178,12 @@ Read the axis's parameters to see what the drive holds.</source>
         <translation>開ループ L [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="182" />
+        <location filename="../app/gui/NcPidPage.cpp" line="177" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): it has no drive filter slots. Its notch is LinuxCNC's biquad component (a notch with 0.5 ≤ Q ≤ 2), inserted after the PID output. This page measures the open loop with the gains that run, proposes a notch at the plant's strongest resonance when it raises the gain margin, inserts it and verifies it by measuring again; the gains are not changed.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプのフィルタスロットはありません。そのノッチは LinuxCNC の biquad コンポーネント (0.5 ≤ Q ≤ 2 のノッチ) で、PID 出力の後に挿入します。このページは現在のゲインで開ループを測定し、ゲイン余裕が上がるときは制御対象の最も強い共振にノッチを提案し、挿入して再測定で検証します。ゲインは変更しません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="188" />
+        <location filename="../app/gui/NcPidPage.cpp" line="183" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): there is no drive velocity loop. This page measures the open loop with the gains that run, proposes P, I, D, FF1 and FF2 (and a biquad notch after the PID output when it lets the crossover rise) for the margins asked, with the rule behind each number, applies them live and verifies them by measuring again. A loop that misses the margins gets back what ran before.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプの速度ループはありません。このページは現在のゲインで開ループを測定し、要求された余裕に対して P、I、D、FF1、FF2 (交差周波数を上げられるときは PID 出力の後の biquad ノッチも) を各値のルールとともに提案し、運転中に適用して再測定で検証します。余裕を満たさないループは元の設定に戻します。</translation>
     </message>

@@ -262,6 +262,10 @@ void AutoTuneResultPage::initializePage()
     }
     m_undo->setVisible(false);
     m_undoAnyway->setVisible(false);
+    if (m_d.stored) {
+        initializeStored();
+        return;
+    }
     const auto* r = m_d.result.get();
     const bool refused = !r || r->outcome == autotune::Outcome::Refused || !r->final;
     m_figures->setVisible(!refused);

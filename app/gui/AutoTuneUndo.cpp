@@ -44,18 +44,26 @@ QString AutoTuneResultPage::unitText(const std::string& key) const
 void AutoTuneResultPage::fillParameters()
 {
     m_parameters->setRowCount(0);
-    const auto* r = m_d.result.get();
-    if (!r || !r->final)
-        return;
-    for (const auto& [k, v] : r->final->parameters) {
+    auto addRow = [this](const std::string& k, const std::optional<double>& before, double applied) {
         const int row = m_parameters->rowCount();
         m_parameters->insertRow(row);
         const auto* m = model::findParameter(m_metas, k);
         m_parameters->setItem(row, 0, item(m ? tr("%1 (%2)").arg(parameterLabel(m->label), qs(k)) : qs(k)));
-        const auto it = r->before.find(k);
-        m_parameters->setItem(row, 1, item(it == r->before.end() ? QStringLiteral("–") : valueText(k, it->second)));
-        m_parameters->setItem(row, 2, item(valueText(k, v)));
+        m_parameters->setItem(row, 1, item(before ? valueText(k, *before) : QStringLiteral("–")));
+        m_parameters->setItem(row, 2, item(valueText(k, applied)));
         m_parameters->setItem(row, 3, item(unitText(k)));
+    };
+    if (m_d.stored && m_tune) { // an earlier run (AutoTuneEarlier.cpp): before → applied from its session
+        for (const auto& [k, v] : m_tune->applied)
+            addRow(k, m_tune->before.at(k), v);
+        return;
+    }
+    const auto* r = m_d.result.get();
+    if (!r || !r->final)
+        return;
+    for (const auto& [k, v] : r->final->parameters) {
+        const auto it = r->before.find(k);
+        addRow(k, it == r->before.end() ? std::nullopt : std::optional<double>(it->second), v);
     }
 }
 

@@ -227,6 +227,15 @@ AutoTuneChoicePage::AutoTuneChoicePage(AppContext& ctx, AutoTuneData& shared, QW
     m_confirm->setObjectName("atConfirm");
     lay->addWidget(m_confirm);
     lay->addStretch(1);
+    auto* earlier = new QHBoxLayout;
+    m_undoEarlier = new QPushButton(tr("Undo an earlier run…"), this);
+    m_undoEarlier->setObjectName("atUndoEarlier");
+    m_undoEarlier->setToolTip(tr("Puts back the parameters an earlier applied run of this wizard changed, from its "
+                                 "saved session (a run of axistune-cli autotune: its --undo RESULT.json)"));
+    earlier->addWidget(m_undoEarlier);
+    earlier->addStretch(1);
+    lay->addLayout(earlier);
+    connect(m_undoEarlier, &QPushButton::clicked, this, &AutoTuneChoicePage::chooseEarlierRun);
     connect(m_confirm, &QCheckBox::toggled, this, &QWizardPage::completeChanged);
     connect(m_axis, &QComboBox::currentTextChanged, this, &AutoTuneChoicePage::queryTravel);
     connect(m_budget, &QDoubleSpinBox::valueChanged, this, [this] {
@@ -257,6 +266,8 @@ QRadioButton* AutoTuneChoicePage::styleButton(autotune::Style s) const
 
 void AutoTuneChoicePage::initializePage()
 {
+    m_d.stored.reset();
+    m_undoEarlier->setEnabled(m_ctx.drive().isConnected() && m_ctx.database());
     const QString keep = m_axis->currentText();
     {
         const QSignalBlocker block(m_axis);
@@ -359,6 +370,8 @@ bool AutoTuneChoicePage::isComplete() const
 
 bool AutoTuneChoicePage::validatePage()
 {
+    if (m_d.stored)
+        return true; // an earlier run to undo: nothing runs
     QString why;
     m_d.options = collect(&why);
     return why.isEmpty();

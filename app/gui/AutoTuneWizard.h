@@ -52,6 +52,9 @@ struct AutoTuneData {
     bool running = false;
     bool abortPressed = false;
     qint64 sessionId = 0; ///< the saved session (0: not saved)
+    /// An earlier applied run chosen on the first page for Undo (its session's result JSON; AutoTuneEarlier.cpp):
+    /// the run page is skipped and the result page offers its Undo. Null for a run of this wizard.
+    std::shared_ptr<const nlohmann::json> stored;
 };
 
 /// The translated name of a step of the sequence ("frf" → "Adaptive frequency response").
@@ -82,14 +85,22 @@ public:
     QLabel* choiceError() const { return m_choiceError; }
     /// The answer of the travel query arrived for the current axis.
     bool travelKnown() const { return m_travelKnown; }
+    /// "Undo an earlier run…": lists the applied runs of the store's sessions on this machine's axes.
+    QPushButton* undoEarlierButton() const { return m_undoEarlier; }
+    /// Goes to the result page with the applied run of session `sessionId` (its Undo offered); false with the reason
+    /// when the session holds no applied run of an axis of this connection.
+    bool openEarlierRun(qint64 sessionId, QString* why);
+    int nextId() const override;
 
 private:
     /// The choices as the sequence's options; the reason when they cannot run (the core's checks).
     autotune::Options collect(QString* why) const;
     void queryTravel();
     void updateChoices();
+    void chooseEarlierRun();
     AppContext& m_ctx;
     AutoTuneData& m_d;
+    QPushButton* m_undoEarlier = nullptr;
     QComboBox* m_axis = nullptr;
     QSpinBox* m_positions = nullptr;
     QLabel* m_travelNote = nullptr;
@@ -151,6 +162,7 @@ class AutoTuneResultPage : public QWizardPage {
 public:
     AutoTuneResultPage(AppContext& ctx, AutoTuneData& data, QWidget* parent = nullptr);
     void initializePage() override;
+    void cleanupPage() override; ///< back to the first page: an earlier run chosen is forgotten
 
     QLabel* outcome() const { return m_outcome; }
     QTableWidget* figures() const { return m_figures; }
@@ -191,6 +203,8 @@ private:
     void showResonanceMap(const nlohmann::json& result, bool linear);
     void showAmplitudeMap(const nlohmann::json& map);
     void fillParameters();
+    /// The page for an earlier applied run (m_d.stored): its parameters before → applied and its Undo.
+    void initializeStored();
     /// A value in the parameter's display unit (the other wizards' apply pages), the SI value without metadata.
     QString valueText(const std::string& key, double si) const;
     QString unitText(const std::string& key) const;

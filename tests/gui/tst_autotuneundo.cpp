@@ -17,6 +17,8 @@
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QListWidget>
+#include <QListWidget>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSignalSpy>
@@ -236,6 +238,72 @@ private slots:
         QVERIFY(journal.ok());
         QCOMPARE(journal->size(), 2 * applied.size());
         maybeScreenshot(&w, "autotune-08-undone");
+    }
+
+    // An earlier run, from its saved session in a new wizard: the first page lists it, the result page shows what it
+    // applied (before → applied, from the session's result) and its Undo writes back every value before the run.
+    void undoOfAnEarlierRunFromItsSession()
+    {
+        QTemporaryDir dir;
+        AppContext ctx;
+        model::ParameterValues before;
+        openOn(dir, ctx, before);
+        QVERIFY(!before.empty());
+        qint64 session = 0;
+        model::ParameterValues applied;
+        {
+            AutoTuneWizard w(ctx);
+            tuneAndShowResult(w);
+            if (QTest::currentTestFailed())
+                return;
+            session = w.data().sessionId;
+            applied = w.data().result->final->parameters;
+        }
+        QVERIFY(readAll(ctx, "X") != before);
+
+        AutoTuneWizard w(ctx);
+        w.resize(1100, 760);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* c = w.choicePage();
+        QVERIFY(c->undoEarlierButton()->isEnabled());
+        c->undoEarlierButton()->click();
+        QDialog* d = nullptr;
+        QVERIFY(waitUntil(
+            [&] {
+                d = c->findChild<QDialog*>("atEarlierRuns");
+                return d && d->isVisible();
+            },
+            5000));
+        auto* list = d->findChild<QListWidget*>("atEarlierList");
+        QVERIFY(list);
+        QCOMPARE(list->count(), 1); // the one applied run
+        QCOMPARE(list->item(0)->data(Qt::UserRole).value<qint64>(), session);
+        maybeScreenshot(d, "autotune-11-earlier-runs");
+        d->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Open)->click();
+        QVERIFY(waitUntil([&] { return w.currentId() == int(AutoTuneWizard::Result); }, 5000));
+        auto* res = w.resultPage();
+        // One row per applied parameter, before → applied as the run wrote them.
+        QCOMPARE(res->parameters()->rowCount(), int(applied.size()));
+        QVERIFY(waitUntil([&] { return res->undoButton()->isEnabled(); }, 10000));
+        maybeScreenshot(&w, "autotune-12-earlier-run");
+        QSignalSpy saved(&ctx, &AppContext::sessionSaved);
+        QDialog* confirm = openConfirmation(res, res->undoButton());
+        QVERIFY(confirm);
+        QCOMPARE(confirm->findChild<QTableWidget*>("atUndoDiff")->rowCount(), int(applied.size()));
+        pressOk(confirm);
+        QVERIFY(waitUntil([&] { return !res->isUndoing(); }, 20000));
+        QVERIFY2(res->isUndone(), qPrintable(res->undoState()->text()));
+        // Every parameter of the axis equals its value before the tune (exact on the embedded simulator).
+        QCOMPARE(readAll(ctx, "X"), before);
+        const auto s = savedSession(ctx, saved, 1);
+        QCOMPARE(QString::fromStdString(s.info.kind), QString("autotune-undo"));
+        QCOMPARE(s.inputs["undoes_session"].get<qint64>(), session);
+        // Back to the first page: the earlier run is forgotten, a new run goes to the run page again.
+        w.back();
+        QCOMPARE(w.currentId(), int(AutoTuneWizard::Choice));
+        QVERIFY(!w.data().stored);
+        QCOMPARE(c->nextId(), int(AutoTuneWizard::Run));
     }
 
     void undoRefusesAChangedParameterThenUndoAnywayWrites()
