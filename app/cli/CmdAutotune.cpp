@@ -6,6 +6,7 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/autotune/AmplitudeMap.h"
 #include "core/autotune/AutoTune.h"
+#include "core/autotune/TravelChoice.h"
 #include "core/autotune/Undo.h"
 #include "core/device/ModbusDrive.h"
 #include "core/device/MoveTo.h"
@@ -62,8 +63,7 @@ int runUndo(const AutotuneOptions& o)
     auto undone = autotune::undoTune(**drive, *tune, o.force);
     if (!undone)
         return reportError(cmd, undone.error());
-    return writeUndone(cmd,
-                       {{"axis", tune->axis}, {"connection", o.connect}, {"from", model::displayPath(o.undoPath)}},
+    return writeUndone(cmd, {{"axis", tune->axis}, {"connection", o.connect}, {"from", model::displayPath(o.undoPath)}},
                        *undone, o.outPath);
 }
 
@@ -80,29 +80,14 @@ int runAutotune(const AutotuneOptions& o)
     auto style = autotune::parseStyle(o.style);
     if (!style)
         return bad("--style: " + style.error().detail);
-    if (!(o.timeBudgetS > 0.0) || !std::isfinite(o.timeBudgetS))
-        return bad("--time-budget must be > 0 s");
-    if (!(o.minBandwidthHz >= 0.0) || !std::isfinite(o.minBandwidthHz))
-        return bad("--min-bandwidth-hz must be >= 0 (0: the style's)");
-    if (o.positions < 1)
-        return bad("--positions must be >= 1 (got " + model::formatNumber(o.positions, 10) + ")");
     if (o.positions > 1 && !o.at.empty())
         return bad("--at and --positions N > 1 exclude each other (--positions spreads the positions over the "
                    "travel window itself)");
-    if (o.positions > 1 && !o.motorPath.empty())
-        return bad("--motor is for one position: --positions keeps the current loop (tune it without --positions "
-                   "first)");
     std::optional<double> at;
     if (!o.at.empty()) {
         at = model::parseNumber(o.at);
         if (!at || !std::isfinite(*at))
             return bad("--at: '" + o.at + "' is not a number");
-    }
-    if (!o.amplitudes.empty() && o.positions > 1)
-        return bad("--amplitudes is for one position: --positions N > 1 measures the plain adaptive FRF at each");
-    if (!o.amplitudes.empty()) {
-        if (auto st = autotune::checkAmplitudeList(o.amplitudes); !st)
-            return bad("--amplitudes: " + st.error().detail);
     }
     autotune::Options opts;
     opts.amplitudeMapPct = o.amplitudes;
@@ -119,6 +104,11 @@ int runAutotune(const AutotuneOptions& o)
             return reportError(cmd, m.error());
         opts.motor = *m;
     }
+    // The wizard's checks (core), named by the options.
+    if (auto st = autotune::checkChoices(
+            opts, {"--positions", "--time-budget", "--min-bandwidth-hz", "--amplitudes", "--motor"});
+        !st)
+        return reportError(cmd, st.error());
     auto drive = device::connectAny({o.connect, o.seed});
     if (!drive)
         return reportError(cmd, drive.error());

@@ -66,25 +66,25 @@ Result<TravelChoice> travelChoice(device::Drive& drive, const std::string& axis)
     return c;
 }
 
-Status checkChoices(const Options& o)
+Status checkChoices(const Options& o, const ChoiceNames& n)
 {
     auto bad = [](const std::string& what) { return makeError(ErrorCode::BadInput, what); };
-    if (!(o.timeBudgetS > 0.0) || !std::isfinite(o.timeBudgetS))
-        return bad("time budget: must be > 0 s");
-    if (!(o.minBandwidthHz >= 0.0) || !std::isfinite(o.minBandwidthHz))
-        return bad("required velocity crossover: must be >= 0 Hz (0: the style's)");
     if (o.positions < 1)
-        return bad("positions: must be >= 1 (got " + model::formatNumber(o.positions, 10) + ")");
+        return bad(n.positions + ": must be >= 1 (got " + model::formatNumber(o.positions, 10) + ")");
+    if (!(o.timeBudgetS > 0.0) || !std::isfinite(o.timeBudgetS))
+        return bad(n.timeBudget + ": must be > 0 s");
+    if (!(o.minBandwidthHz >= 0.0) || !std::isfinite(o.minBandwidthHz))
+        return bad(n.minBandwidth + ": must be >= 0 Hz (0: the style's)");
     if (!o.amplitudeMapPct.empty()) {
         if (o.positions > 1)
-            return bad("amplitude map: it is for one position; over the travel the plain adaptive FRF is measured "
-                       "at each position");
+            return bad(n.amplitudes + ": it is for one position; over the travel the plain adaptive FRF is measured "
+                                      "at each position");
         if (auto st = checkAmplitudeList(o.amplitudeMapPct); !st)
-            return bad("amplitude map: " + st.error().detail);
+            return bad(n.amplitudes + ": " + st.error().detail);
     }
     if (o.motor && o.positions > 1)
-        return bad("motor data: they are for one position; over the travel the current loop is kept (tune it at "
-                   "one position first)");
+        return bad(n.motor + ": they are for one position; over the travel the current loop is kept (tune it at "
+                             "one position first)");
     return {};
 }
 

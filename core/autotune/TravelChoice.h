@@ -48,10 +48,19 @@ struct TravelChoice {
 /// Asks the drive (capabilities, limits, scope channels); no motion. Errors: the drive's (unknown axis, link).
 Result<TravelChoice> travelChoice(device::Drive& drive, const std::string& axis);
 
-/// The choices that cannot run together or are out of range, as `axistune-cli autotune` refuses them: a time
-/// budget <= 0, a required crossover < 0, positions < 1, an amplitude list that checkAmplitudeList refuses, an
-/// amplitude map or motor data with positions >= 2 (both are for one position). BadInput naming the choice.
-Status checkChoices(const Options& options);
+/// How checkChoices names the choices in its messages: the wizard's words by default, the CLI's options there.
+struct ChoiceNames {
+    std::string positions = "positions";
+    std::string timeBudget = "time budget";
+    std::string minBandwidth = "required velocity crossover";
+    std::string amplitudes = "amplitude map";
+    std::string motor = "motor data";
+};
+
+/// The choices that cannot run together or are out of range, as the wizard and `axistune-cli autotune` refuse them:
+/// positions < 1, a time budget <= 0, a required crossover < 0, an amplitude list that checkAmplitudeList refuses,
+/// an amplitude map or motor data with positions >= 2 (both are for one position). BadInput naming the choice.
+Status checkChoices(const Options& options, const ChoiceNames& names = {});
 
 /// "5, 10, 20" (commas and/or blanks between the numbers; locale-free) → {5, 10, 20}; empty text → {}.
 /// BadInput naming the item that is not a number. The list's rules are checkAmplitudeList's.

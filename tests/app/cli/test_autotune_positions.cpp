@@ -215,13 +215,13 @@ TEST(AutotunePositions, RefusalsAndBadOptions)
     EXPECT_NE(r.err.find("no finite travel window"), std::string::npos) << r.err;
     r = runCli("autotune --connect sim:long-axis --axis X --positions 0 --out " + result);
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("--positions must be >= 1"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--positions: must be >= 1"), std::string::npos) << r.err;
     r = runCli("autotune --connect sim:long-axis --axis X --positions 3 --at 0.1 --out " + result);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("exclude each other"), std::string::npos) << r.err;
     r = runCli("autotune --connect sim:long-axis --axis X --positions 3 --amplitudes 5,10,20 --out " + result);
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find("--amplitudes is for one position"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--amplitudes: it is for one position"), std::string::npos) << r.err;
     r = runCli("capture --connect sim:long-axis --axis X --at 0.9 --test hold --out " + (dir / "h.csv").string());
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("outside the drive's travel window"), std::string::npos) << r.err;
