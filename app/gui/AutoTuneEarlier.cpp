@@ -159,13 +159,7 @@ void AutoTuneResultPage::initializeStored()
     m_parametersTitle->setVisible(true);
     m_parametersTitle->setText(tr("Parameters the run applied (before → applied):"));
     fillParameters();
-    m_undo->setVisible(true);
-    if (m_ctx.drive().isConnected())
-        m_metaRequest =
-            connectReply(m_ctx.drive().readMetadata(qs(m_tune->axis)), this, &AutoTuneResultPage::onMetadata);
-    else
-        m_metasKnown = true;
-    updateUndoButtons();
+    offerUndo();
 }
 
 } // namespace gui

@@ -354,13 +354,7 @@ void AutoTuneResultPage::initializePage()
         return;
     }
     m_tune = std::move(tune).value();
-    m_undo->setVisible(true);
-    if (m_ctx.drive().isConnected())
-        m_metaRequest =
-            connectReply(m_ctx.drive().readMetadata(qs(m_tune->axis)), this, &AutoTuneResultPage::onMetadata);
-    else
-        m_metasKnown = true;
-    updateUndoButtons();
+    offerUndo();
 }
 
 } // namespace gui

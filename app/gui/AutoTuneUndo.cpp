@@ -82,6 +82,17 @@ void AutoTuneResultPage::onMetadata(const DriveReply& reply)
     updateUndoButtons();
 }
 
+void AutoTuneResultPage::offerUndo()
+{
+    m_undo->setVisible(true);
+    if (m_ctx.drive().isConnected())
+        m_metaRequest =
+            connectReply(m_ctx.drive().readMetadata(qs(m_tune->axis)), this, &AutoTuneResultPage::onMetadata);
+    else
+        m_metasKnown = true;
+    updateUndoButtons();
+}
+
 void AutoTuneResultPage::updateUndoButtons()
 {
     const bool offered = m_tune.has_value();

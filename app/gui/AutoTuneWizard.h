@@ -209,6 +209,8 @@ private:
     QString valueText(const std::string& key, double si) const;
     QString unitText(const std::string& key) const;
     void onMetadata(const DriveReply& reply);
+    /// Shows Undo for m_tune and reads the axis's parameter metadata (the units of the diff).
+    void offerUndo();
     void updateUndoButtons();
     /// Shows the confirmation; `force`: the second one, after a refusal.
     void confirmUndo(bool force);
