@@ -109,6 +109,7 @@ private:
     VelocityLoopData& m_d;
     QComboBox* m_axis = nullptr;
     QLabel* m_ncPidLabel = nullptr; ///< what happens to a position PID the NC closes (hal:, linuxcnc:)
+    QList<QWidget*> m_choices;      ///< the rule and data groups (disabled for a PID the NC closes)
     bool m_checking = false;        ///< asking the drive what the axis is
     bool m_ncPid = false;
     NcPidPage* m_ncPidPage = nullptr;

@@ -89,6 +89,7 @@ VelocityLoopSourcePage::VelocityLoopSourcePage(AppContext& ctx, VelocityLoopData
     m_inertiaMethod->setChecked(true);
     auto* cols = new QHBoxLayout;
     auto* ig = new QGroupBox(this);
+    m_choices << ig;
     auto* il = new QVBoxLayout(ig);
     il->addWidget(m_inertiaMethod);
     auto* iform = new QFormLayout;
@@ -104,6 +105,7 @@ VelocityLoopSourcePage::VelocityLoopSourcePage(AppContext& ctx, VelocityLoopData
     il->addLayout(iform);
     cols->addWidget(ig, 1);
     auto* fg = new QGroupBox(this);
+    m_choices << fg;
     auto* fl = new QVBoxLayout(fg);
     fl->addWidget(m_frfMethod);
     auto* sources = new QButtonGroup(this);
@@ -129,6 +131,7 @@ VelocityLoopSourcePage::VelocityLoopSourcePage(AppContext& ctx, VelocityLoopData
     lay->addLayout(cols);
     auto* sform = new QFormLayout;
     m_step = spin(this, 0.1, 600, 10.0, 1, tr(" rad/s"), "vlStep");
+    m_choices << m_step;
     sform->addRow(tr("Velocity step before and after (motor):"), m_step);
     lay->addLayout(sform);
     m_note = new QLabel(this);
@@ -159,6 +162,8 @@ void VelocityLoopSourcePage::checkAxis()
                                  "and a notch for it; the choices below do not apply.")
                                   .arg(axis, m_ctx.drive().uri()));
         m_ncPidLabel->setVisible(ncPid);
+        for (QWidget* w : m_choices) // the drive velocity loop's choices: not for a PID the NC closes
+            w->setEnabled(!ncPid);
         emit completeChanged();
     });
 }
