@@ -265,16 +265,16 @@ void CurrentLoopWizard::saveSession(bool aborted, const QString& reason)
                 model::putNumber(o, prefix + "rise_time_s", riseS, notReached);
                 model::putNumber(o, prefix + "overshoot", overshoot, notReached);
             };
-            nlohmann::json m{{"capture", "current_step"},
-                             {"step_A", d.measured->amplitudeA},
-                             {"max_abs_difference", d.difference.maxAbs},
-                             {"rms_difference", d.difference.rms},
-                             {"samples_compared", d.difference.samples},
-                             {"verdict", d.measuredVerdict.toStdString()}};
-            figures(m, "", d.measuredFigures.riseTimeS, d.measuredFigures.overshoot);
-            figures(m, "design_", d.designFigures.riseTimeS, d.designFigures.overshoot);
-            figures(m, "predicted_", d.predictedFigures.riseTimeS, d.predictedFigures.overshoot);
-            v["measured"] = m;
+            nlohmann::json meas{{"capture", "current_step"},
+                                {"step_A", d.measured->amplitudeA},
+                                {"max_abs_difference", d.difference.maxAbs},
+                                {"rms_difference", d.difference.rms},
+                                {"samples_compared", d.difference.samples},
+                                {"verdict", d.measuredVerdict.toStdString()}};
+            figures(meas, "", d.measuredFigures.riseTimeS, d.measuredFigures.overshoot);
+            figures(meas, "design_", d.designFigures.riseTimeS, d.designFigures.overshoot);
+            figures(meas, "predicted_", d.predictedFigures.riseTimeS, d.predictedFigures.overshoot);
+            v["measured"] = meas;
             if (d.before) {
                 nlohmann::json b{{"capture", "current_step_before"}, {"step_A", d.before->amplitudeA}};
                 figures(b, "", d.beforeFigures.riseTimeS, d.beforeFigures.overshoot);

@@ -139,11 +139,11 @@ void CircleRunner::runNext()
     connect(req, &DriveRequest::progress, this, [this](double fraction, const QString&) {
         if (!m_running)
             return;
-        const int n = static_cast<int>(m_circles.size());
+        const int total = static_cast<int>(m_circles.size());
         const int done = static_cast<int>(m_traces.size());
         emit progress(done * kProgressSteps +
                           static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * kProgressSteps)),
-                      n * kProgressSteps, tr("Circle %1 of %2").arg(done + 1).arg(n));
+                      total * kProgressSteps, tr("Circle %1 of %2").arg(done + 1).arg(total));
     });
 }
 

@@ -56,17 +56,6 @@ void addJson(QTreeWidgetItem* parent, const QString& key, const nlohmann::json& 
     }
 }
 
-QTreeWidget* jsonTree(const QString& rootName, const nlohmann::json& j, QWidget* parent)
-{
-    auto* t = new QTreeWidget(parent);
-    t->setColumnCount(2);
-    t->setHeaderLabels({QObject::tr("Key"), QObject::tr("Value")});
-    t->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    addJson(t->invisibleRootItem(), rootName, j);
-    t->expandToDepth(1);
-    return t;
-}
-
 QTableWidget* table(const QStringList& headers, QWidget* parent)
 {
     auto* t = new QTableWidget(0, static_cast<int>(headers.size()), parent);
@@ -175,22 +164,22 @@ void SessionView::buildPlots()
 
 void SessionView::buildTables()
 {
-    auto* data = new QTreeWidget(m_tabs);
-    data->setObjectName("sessionData");
-    data->setColumnCount(2);
-    data->setHeaderLabels({tr("Key"), tr("Value")});
-    data->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    addJson(data->invisibleRootItem(), tr("inputs"), m_record.inputs);
+    auto* tree = new QTreeWidget(m_tabs);
+    tree->setObjectName("sessionData");
+    tree->setColumnCount(2);
+    tree->setHeaderLabels({tr("Key"), tr("Value")});
+    tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    addJson(tree->invisibleRootItem(), tr("inputs"), m_record.inputs);
     for (const auto& r : m_record.results) {
-        addJson(data->invisibleRootItem(), tr("result: %1").arg(qs(r.name)), r.data);
+        addJson(tree->invisibleRootItem(), tr("result: %1").arg(qs(r.name)), r.data);
         for (const auto& a : r.arrays) {
-            auto* item = new QTreeWidgetItem(data->invisibleRootItem()->child(data->topLevelItemCount() - 1),
-                                             {qs(a.name)});
+            auto* item =
+                new QTreeWidgetItem(tree->invisibleRootItem()->child(tree->topLevelItemCount() - 1), {qs(a.name)});
             item->setText(1, tr("[%1 values]").arg(a.data.size()));
         }
     }
-    data->expandToDepth(0);
-    m_tabs->addTab(data, tr("Inputs and results"));
+    tree->expandToDepth(0);
+    m_tabs->addTab(tree, tr("Inputs and results"));
 
     auto* sets = table({tr("Axis"), tr("Source"), tr("Time"), tr("Parameter"), tr("Value (SI)"), tr("Note")}, m_tabs);
     sets->setObjectName("sessionParameterSets");

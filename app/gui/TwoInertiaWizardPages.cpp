@@ -241,11 +241,11 @@ void TwoInertiaFitPage::initializePage()
                 m_d.velocityPeriodS = get("velocity.period", m_d.velocityPeriodS);
                 m_d.currentPeriodS = get("current.period", m_d.currentPeriodS);
                 if (!m_d.fromSession && m_d.measured) {
-                    auto& md = m_d.measured->metadata;
-                    md["loop_kp_Nms_per_rad"] = exact(m_d.loopPi.kpNmsPerRad);
-                    md["loop_ki_Nm_per_rad"] = exact(m_d.loopPi.kiNmPerRad);
-                    md["velocity_period_s"] = exact(m_d.velocityPeriodS);
-                    md["current_period_s"] = exact(m_d.currentPeriodS);
+                    auto& meta = m_d.measured->metadata;
+                    meta["loop_kp_Nms_per_rad"] = exact(m_d.loopPi.kpNmsPerRad);
+                    meta["loop_ki_Nm_per_rad"] = exact(m_d.loopPi.kiNmPerRad);
+                    meta["velocity_period_s"] = exact(m_d.velocityPeriodS);
+                    meta["current_period_s"] = exact(m_d.currentPeriodS);
                 }
             }
             analyse();

@@ -177,7 +177,6 @@ std::optional<AutoTuneResult> Sequence::velocityPi(double capHz)
 
 std::optional<AutoTuneResult> Sequence::position()
 {
-    const std::string& axis = m_o.axis;
     Step s;
     s.name = "position";
     if (!begin("position"))

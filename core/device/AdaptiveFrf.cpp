@@ -168,7 +168,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
     AdaptiveFrfResult out;
     std::vector<Line> lines;
     for (double f : (*plan1)->design.freqHz)
-        lines.push_back({f});
+        lines.emplace_back().f = f;
     // Voltage per injected torque |Z_i| of every line and the calibration of the predicted peak voltage.
     std::vector<double> zAbs(lines.size(), kNaN);
     double voltageScale = 0.0; ///< V_peak / sqrt(Σ |Z_i A_i|²) of the last pass below the limit

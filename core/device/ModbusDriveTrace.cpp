@@ -70,10 +70,10 @@ Result<model::Capture> ModbusDrive::readTrace()
     if (!cap.metadata.count("fs_Hz") && rateHz > 0.0) {
         model::setMetadataNumber(cap.metadata, "fs_Hz", rateHz);
     } else if (cap.metadata.count("fs_Hz")) {
-        const auto meta = model::metadataNumber(cap.metadata, "fs_Hz");
-        if (!meta)
-            return makeError(ErrorCode::Device, m_uri.text + ": trace " + meta.error().detail);
-        if (!(std::abs(*meta - rateHz) <= 1e-9 * std::abs(rateHz)))
+        const auto fsHz = model::metadataNumber(cap.metadata, "fs_Hz");
+        if (!fsHz)
+            return makeError(ErrorCode::Device, m_uri.text + ": trace " + fsHz.error().detail);
+        if (!(std::abs(*fsHz - rateHz) <= 1e-9 * std::abs(rateHz)))
             return makeError(ErrorCode::Device, m_uri.text + ": trace metadata says fs_Hz=" + cap.metadata["fs_Hz"] +
                                                     " but status.trace_rate_hz is " + model::formatNumber(rateHz, 17) +
                                                     " Hz");

@@ -288,7 +288,7 @@ Result<ReversalEvent> fitReversal(const io::BallBarTrace& t, int axis, double re
     std::vector<std::size_t> order(rel.size());
     for (std::size_t k = 0; k < order.size(); ++k)
         order[k] = k;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rel[a].first < rel[b].first; });
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return rel[i].first < rel[j].first; });
     std::vector<std::pair<double, double>> zone;
     const double h = f.coef(4);
     const double towards = h >= 0.0 ? 1.0 : -1.0; // direction from L0 to L1

@@ -700,8 +700,9 @@ TEST_P(DriveConformance, ScopeRollModeDeliversEverySampleOnce)
         ASSERT_TRUE(rows.ok()) << errorText(rows.error());
         if (rows->rows == 0)
             continue;
-        if (started)
+        if (started) {
             ASSERT_EQ(rows->firstSample, next) << "samples lost between reads";
+        }
         started = true;
         appendScopeRows(all, *rows);
         next = rows->firstSample + rows->rows;

@@ -2,7 +2,9 @@
 #include "core/device/hal/HalLink.h"
 
 #pragma GCC diagnostic push
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wvolatile"
+#endif
 #pragma GCC diagnostic ignored "-Wpedantic"
 #include <hal.h>
 #pragma GCC diagnostic pop

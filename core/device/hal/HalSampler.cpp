@@ -14,7 +14,6 @@ namespace {
 
 std::mutex g_mutex;
 std::weak_ptr<HalSamplerModule> g_module; ///< guarded by g_mutex
-std::int64_t g_periodNs = 0;              ///< the longest period a holder named; guarded by g_mutex
 
 } // namespace
 

@@ -152,7 +152,7 @@ TEST(CliBallBar, MalformedTracesExitWithCodeTwoAndAClearMessage)
     };
     for (const auto& c : cases) {
         const auto path = writeTemp(dir, c.file, c.text);
-        for (const std::string cmd : {"ballbar --in " + path, "lost-motion --axis x --ballbar " + path}) {
+        for (const auto& cmd : {"ballbar --in " + path, "lost-motion --axis x --ballbar " + path}) {
             auto r = runCli(cmd);
             EXPECT_EQ(r.exitCode, 2) << cmd << "\n" << r.err;
             EXPECT_NE(r.err.find(c.file), std::string::npos) << r.err;

@@ -419,10 +419,12 @@ TEST(ModbusAbuse, EveryAddressEdgeAndOutOfRangeWrite)
     // not mapped, is ILLEGAL DATA ADDRESS (2).
     for (const auto& [a, n] : blocks) {
         EXPECT_EQ(ask(readPdu(a, n)), 0) << "block at " << a;
-        if (a > 0 && !mapped[static_cast<std::size_t>(a - 1)])
+        if (a > 0 && !mapped[static_cast<std::size_t>(a - 1)]) {
             EXPECT_EQ(ask(readPdu(a - 1, n + 1)), 2) << "read from " << a - 1;
-        if (a + n < 65536 && !mapped[static_cast<std::size_t>(a + n)])
+        }
+        if (a + n < 65536 && !mapped[static_cast<std::size_t>(a + n)]) {
             EXPECT_EQ(ask(readPdu(a, n + 1)), 2) << "read past " << a + n;
+        }
     }
     // The ends of the register space and of the quantity.
     EXPECT_EQ(ask(readPdu(65535, 1)), 2);
@@ -453,8 +455,9 @@ TEST(ModbusAbuse, EveryAddressEdgeAndOutOfRangeWrite)
         const std::string key = p["key"];
         EXPECT_EQ(ask(writePdu(a, 1, 2, {0x3f80})), 2) << key << ": half a float pair";
         EXPECT_EQ(ask(writePdu(a + 1, 1, 2, {0})), 2) << key << ": second half";
-        if (!mapped[static_cast<std::size_t>(a - 1)])
+        if (!mapped[static_cast<std::size_t>(a - 1)]) {
             EXPECT_EQ(ask(writePdu(a - 1, 3, 6, {0, 0x3f80, 0})), 2) << key;
+        }
         const bool writable = p["writable"].get<bool>();
         const bool onX = !p.contains("axis_kinds") || p["axis_kinds"].dump().find("linear") != std::string::npos;
         const int expectRange = writable && onX ? 3 : 2; // read-only or absent: ILLEGAL DATA ADDRESS
@@ -502,7 +505,6 @@ TEST(ModbusAbuse, HeldAndSlowConnectionsDoNotBlockOtherClients)
     }
     // Two slow senders: one byte every 0.4 s and one byte a second, for 3 s; meanwhile another client
     // reads as fast as it can with a 1 s timeout and never misses.
-    std::atomic<bool> slowDone{false};
     std::atomic<int> slowClosed{0};
     auto slow = [&](std::chrono::milliseconds every) {
         Raw r(srv.port());

@@ -99,8 +99,9 @@ TEST_P(ModbusScopeTrigger, TriggerAtThePreTriggerRowOnAKnownStep)
     EXPECT_EQ(c->channels[1].unit, "s");
     const auto& v = c->columns[2];
     EXPECT_EQ(v[pre], kStepRadS);
-    if (pre > 0)
+    if (pre > 0) {
         EXPECT_EQ(v[pre - 1], 0.0);
+    }
     // The step lies between the trigger sample and the one before: its time within one scope period.
     const double tTrigger = c->columns[1][pre];
     EXPECT_NEAR(tTrigger, static_cast<double>(c->triggerSample * divider) * kTvS, 1e-12);
@@ -202,7 +203,7 @@ TEST(CliScope, TriggeredCaptureOnTheSimulatorAndOverModbusReloads)
     const auto dir = axistune::testing::makeTempDir("scope");
     SimDrive srv("--preset vmc --seed 7");
     ASSERT_GT(srv.port(), 0);
-    for (const std::string connect : {std::string("sim:vmc"), "modbus://127.0.0.1:" + std::to_string(srv.port())}) {
+    for (const auto& connect : {std::string("sim:vmc"), "modbus://127.0.0.1:" + std::to_string(srv.port())}) {
         const auto out = (dir / "trace.csv").string();
         const auto res = runCli("scope --connect " + connect +
                                 " --axis X --channels velocity_cmd_rad_s,motor_vel_rad_s,following_error_m --trigger "

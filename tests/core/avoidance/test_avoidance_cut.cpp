@@ -96,14 +96,16 @@ TEST(AvoidanceCut, SpindleFollowsACommandChangeAndTheDelayFollowsTheSpeed)
         // The command changes at the sample at 0.1 s; the process channels hold the state at the end of the
         // current-loop period (62.5 µs) that starts at the trace instant.
         const double dt = t->data[i] + 62.5e-6 - 0.1;
-        if (std::abs(dt - 0.002) < 2e-4)
+        if (std::abs(dt - 0.002) < 2e-4) {
             EXPECT_NEAR(n->data[i], 2800.0 + 200.0 * (1.0 - std::exp(-dt / 0.002)), 0.5) << t->data[i];
+        }
         if (dt > 0.02) {
             EXPECT_NEAR(n->data[i], 3000.0, 0.01);
             EXPECT_DOUBLE_EQ(cmd->data[i], 3000.0);
         }
-        if (dt < 0.0)
+        if (dt < 0.0) {
             EXPECT_DOUBLE_EQ(n->data[i], 2800.0);
+        }
     }
 }
 
@@ -312,8 +314,9 @@ TEST(AvoidanceCut, EscDithersAt13p86HzStaysInsideTheBoundsAndLowersTheVibration)
     for (std::size_t i = 0; i < n->data.size(); ++i) {
         ASSERT_GE(n->data[i], 1200.0 - 1e-6) << t->data[i];
         ASSERT_LE(n->data[i], 2200.0 + 1e-6) << t->data[i];
-        if (t->data[i] < 5.0)
+        if (t->data[i] < 5.0) {
             ASSERT_DOUBLE_EQ(n->data[i], 1700.0);
+        }
     }
     const double re = rmsLast(esc.capture, duration, 0.3);
     EXPECT_LE(re, 0.65 * rc) << "constant " << rc << " esc " << re;

@@ -80,8 +80,9 @@ TEST(DriveRegistry, SettingsFormsMakeTheirUris)
     EXPECT_EQ(mb.uriFromSettings(m).error().detail, "Drive over Modbus TCP: Host is required");
     // The timeout's unit is part of its description (the form shows it).
     for (const auto& s : mb.settings) {
-        if (s.name == "timeout_ms")
+        if (s.name == "timeout_ms") {
             EXPECT_EQ(s.unit, "ms");
+        }
     }
 
     const auto& replay = backend("replay:");

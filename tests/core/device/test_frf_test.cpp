@@ -109,8 +109,9 @@ TEST(FrfTest, MultiSweepWindowsAreThreeThirdsOfOneContinuousSine)
                 EXPECT_NEAR(frfExcitation(*plan, pos), expected, 1e-9) << f << " window " << w;
             }
         }
-        if (i > 0)
+        if (i > 0) {
             EXPECT_GT(f, plan->segments[i - 3].freqHz);
+        }
         EXPECT_NEAR(f / (10.0 * std::pow(390.0, (i / 3) / 24.0)), 1.0, 1e-2);
     }
     EXPECT_EQ(plan->totalSamples, static_cast<std::size_t>(plan->segments.back().windowStart) + plan->segments.back().measureSamples);

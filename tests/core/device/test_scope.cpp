@@ -108,8 +108,9 @@ TEST(Scope, CapabilitiesListTheChannelsWithUnits)
             found = true;
             EXPECT_EQ(c.unit, "m");
         }
-        if (c.name == "motor_vel_rad_s")
+        if (c.name == "motor_vel_rad_s") {
             EXPECT_EQ(c.unit, "rad/s");
+        }
     }
     EXPECT_TRUE(found);
     EXPECT_GE(s->maxChannels, 8);
@@ -138,8 +139,9 @@ TEST_P(ScopeTrigger, TriggerAtThePreTriggerRowOnTheStep)
         ASSERT_EQ(c.samples[i], c.samples[i - 1] + 1);
     const auto& v = c.columns[0];
     EXPECT_EQ(v[pre], kStepRadS);
-    if (pre > 0)
+    if (pre > 0) {
         EXPECT_EQ(v[pre - 1], 0.0);
+    }
     const std::uint64_t d = static_cast<std::uint64_t>(divider);
     EXPECT_EQ(c.triggerSample, (sc.expectedTriggerTick + d - 1) / d);
     // t_s of every row is its sample number × divider × T_v (the drive's own clock), to 1e-12 s.
@@ -230,8 +232,9 @@ TEST(Scope, RollModeStreamsEverySampleOnce)
         ASSERT_TRUE(drive->pollScope().ok());
         auto rows = drive->readScopeRows(next, 100000);
         ASSERT_TRUE(rows.ok());
-        if (!first)
+        if (!first) {
             ASSERT_EQ(rows->firstSample, next) << "samples lost";
+        }
         first = false;
         appendScopeRows(all, *rows);
         next = rows->firstSample + rows->rows;
@@ -388,8 +391,9 @@ TEST(ScopeCsv, ACaptureReloadsIdenticalFromItsCsv)
             EXPECT_EQ(t->capture.metadata.at("unit." + c->channels[k].name), c->channels[k].unit);
             ASSERT_EQ(t->capture.channels[k + 1].data, c->columns[k]) << c->channels[k].name;
         }
-        if (c->triggered)
+        if (c->triggered) {
             EXPECT_EQ(t->capture.metadata.at("trigger_row"), "100");
+        }
     }
     std::filesystem::remove_all(dir);
 }
@@ -436,8 +440,9 @@ std::pair<ScopeCapture, model::Capture> rollDuring(SimulatedDrive& drive, const 
         EXPECT_TRUE(rows.ok());
         if (!rows.ok() || !s.ok())
             break;
-        if (started)
+        if (started) {
             EXPECT_EQ(rows->firstSample, next) << "samples lost";
+        }
         started = true;
         appendScopeRows(all, *rows);
         next = rows->firstSample + rows->rows;

@@ -65,8 +65,9 @@ TEST(SimulatedDrive, StepTestTracesAndRestoresAndRefusesWritesWhileRunning)
     bool checkedBusy = false;
     RunOptions o;
     o.progress = [&](double, const std::string&) {
-        if (!checkedBusy) // while the test runs
+        if (!checkedBusy) { // while the test runs
             EXPECT_EQ(drive.writeParameters("A", {{"velocity.kp", 5.0}}).error().code, ErrorCode::Busy);
+        }
         checkedBusy = true;
     };
     auto run = runTest(drive, req, o);

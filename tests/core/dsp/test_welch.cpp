@@ -124,7 +124,7 @@ INSTANTIATE_TEST_SUITE_P(Scipy, WelchVsScipy,
                                            Case{"hann500_ov100", 500, 100, WelchWindow::Hann},
                                            Case{"hann255_odd", 255, std::nullopt, WelchWindow::Hann},
                                            Case{"boxcar128_ov0", 128, 0, WelchWindow::Rectangular}),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Welch, PeriodicHannWindow)
 {

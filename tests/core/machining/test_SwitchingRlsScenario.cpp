@@ -123,8 +123,9 @@ TEST(SwitchingRlsScenario, RecommendedVariantMeetsS1ToS4)
                 lo = std::min(lo, r.fcl);
                 hi = std::max(hi, r.fcl);
             }
-            if (r.mode != RlsMode::Rls4 && prop[i - 1].mode != RlsMode::Rls4)
+            if (r.mode != RlsMode::Rls4 && prop[i - 1].mode != RlsMode::Rls4) {
                 ASSERT_EQ(r.fcl, prop[i - 1].fcl) << r.t;
+            }
         }
         EXPECT_GE(lo, 0.18);
         EXPECT_LE(hi, 0.22);

@@ -62,8 +62,8 @@ TEST_P(LinearResponse, MatchesIndependentTransferFunction)
 INSTANTIATE_TEST_SUITE_P(Presets, LinearResponse,
                          ::testing::Values(Case{"vmc", "X"}, Case{"vmc", "Y"}, Case{"dd-table", "C"},
                                            Case{"two-inertia", "A"}),
-                         [](const auto& info) {
-                             std::string n = info.param.preset + "_" + info.param.axis;
+                         [](const auto& p) {
+                             std::string n = p.param.preset + "_" + p.param.axis;
                              for (auto& c : n)
                                  if (c == '-')
                                      c = '_';

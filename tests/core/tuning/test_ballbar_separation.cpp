@@ -109,8 +109,9 @@ TEST(BallBarSeparation, AnalyticPureBacklashIsAStepWithoutSpikes)
     // The trace is noise (0.05 µm) and the play: nothing reaches the 0.3 µm detection floor.
     EXPECT_TRUE(rep->spikes.empty());
     for (const auto& f : rep->findings)
-        if (f.name == "backlash_x")
+        if (f.name == "backlash_x") {
             EXPECT_EQ(f.ruleId, "backlash");
+        }
 }
 
 TEST(BallBarSeparation, AnalyticPureSpikesAreNotBacklash)
@@ -126,8 +127,9 @@ TEST(BallBarSeparation, AnalyticPureSpikesAreNotBacklash)
         EXPECT_LT(std::abs(*rep->backlashM[axis]), 0.1e-6) << axis;
     }
     for (const auto& f : rep->findings)
-        if (f.name == "backlash_x" || f.name == "backlash_y")
+        if (f.name == "backlash_x" || f.name == "backlash_y") {
             EXPECT_EQ(f.ruleId, "backlash.not_detected");
+        }
     // One spike per reversal: 5 µm outward at 1° after it (radially |cos| ≈ 1 there).
     ASSERT_EQ(rep->spikes.size(), 4u);
     for (double at : {90.0, 180.0, 270.0, 360.0}) {

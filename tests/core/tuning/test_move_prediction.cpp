@@ -114,7 +114,7 @@ TEST_P(MovePredictionLoop, EqualsTheLoopSimulatedStepByStep)
 }
 
 INSTANTIATE_TEST_SUITE_P(ErrorPreviousTarget, MovePredictionLoop, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "PreviousTarget" : "CurrentTarget"; });
+                         [](const auto& p) { return p.param ? "PreviousTarget" : "CurrentTarget"; });
 
 TEST(MovePrediction, ABandThatDoesNotReachTheRigidBodyIsRefused)
 {

@@ -233,8 +233,9 @@ TEST(Notch, WidthParameterGivesTheDigitalWidth)
         const double param = tuning::notchWidthParameter(f0, w, 16000.0);
         EXPECT_NEAR(digitalWidth({f0, param, 0.0}, 16000.0), w, 1e-9 * w) << f0;
         const double x = kPi * f0 / 16000.0;
-        if (f0 <= 3300.0)  // the spec's correction agrees within 1 % where its small-angle form holds
+        if (f0 <= 3300.0) { // the spec's correction agrees within 1 % where its small-angle form holds
             EXPECT_NEAR(param, w * x / (std::sin(x) * std::cos(x)), 0.01 * param) << f0;
+        }
     }
 }
 

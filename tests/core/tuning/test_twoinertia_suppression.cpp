@@ -13,13 +13,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 using namespace axistune;
 
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 tuning::TwoInertiaParams fittedBench()
 {
