@@ -802,17 +802,7 @@
         <translation>[%1 個の値] %2 … %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="63" />
-        <source>Key</source>
-        <translation>キー</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="63" />
-        <source>Value</source>
-        <translation>値</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="454" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="459" />
         <source>none</source>
         <translation>なし</translation>
     </message>
@@ -1675,7 +1665,7 @@
     </message>
     <message>
         <location filename="../app/gui/AutoTuneResultPage.cpp" line="58" />
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="118" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="129" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
@@ -2006,7 +1996,7 @@ margin [dB]</source>
     </message>
     <message>
         <location filename="../app/gui/AutoTuneResultPage.cpp" line="58" />
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="121" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="132" />
         <source>Unit</source>
         <translation>単位</translation>
     </message>
@@ -2032,7 +2022,7 @@ margin [dB]</source>
     </message>
     <message>
         <location filename="../app/gui/AutoTuneUndo.cpp" line="51" />
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="133" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="144" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -2042,109 +2032,109 @@ margin [dB]</source>
         <translation>パラメータの単位の読み出しに失敗しました (%1): 値はSI単位で表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="106" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="117" />
         <source>Undo the automatic tuning anyway</source>
         <translation>自動調整をそれでも元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="106" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="117" />
         <source>Undo the automatic tuning</source>
         <translation>自動調整を元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="110" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="121" />
         <source>Undo writes back the values the parameters of axis %1 had before the run, all in one write, and reads them back. Nothing moves. These parameters change:</source>
         <translation>元に戻すと、軸 %1 のパラメータを実行前の値に一度の書き込みで書き戻し、読み出して確認します。軸は動きません。変更するパラメータ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="118" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="129" />
         <source>Applied by the run</source>
         <translation>実行で適用した値</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="120" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="131" />
         <source>On the drive now</source>
         <translation>現在のサーボアンプの値</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="121" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="132" />
         <source>→ Before the run (written)</source>
         <translation>→ 実行前の値 (書き込む値)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="144" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="155" />
         <source>Changed after the run applied it: Undo anyway overwrites this value</source>
         <translation>実行で適用した後に変更されています: それでも元に戻すとこの値を上書きします</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="157" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="168" />
         <source>The drive no longer holds what the run applied for %1 (marked red): someone or something changed it after the run. Undo anyway overwrites that later change with the value before the run.</source>
         <translation>%1 (赤で表示) のサーボアンプの値は、実行で適用した値ではありません: 実行後に変更されています。それでも元に戻すと、その後の変更を実行前の値で上書きします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="163" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="174" />
         <source>Overwrite the later change of %1</source>
         <translation>%1 のその後の変更を上書きする</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="170" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="181" />
         <source>Undo anyway</source>
         <translation>それでも元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="170" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="181" />
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="185" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="196" />
         <source>Undoing: writing the values before the run and reading them back…</source>
         <translation>元に戻しています: 実行前の値を書き込み、読み出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="188" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="199" />
         <source>Automatic tuning of axis %1: undo%2</source>
         <translation>軸 %1 の自動調整: 元に戻す%2</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="188" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="199" />
         <source> (anyway)</source>
         <translation> (上書きを承認)</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="213" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="224" />
         <source>%1: %2 → %3 %4</source>
         <translation>%1: %2 → %3 %4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="215" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="226" />
         <source>Undone: %n parameter(s) written back to the values before the run and read back equal.</source>
         <translation>
             <numerusform>元に戻しました: %n 個のパラメータを実行前の値に書き戻し、読み出して一致を確認しました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="229" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="240" />
         <source>Undo refused, nothing written: %1 is %2 %3 on the drive, not the %4 %3 the run applied. It was changed after the run, and undoing would overwrite that change.</source>
         <translation>元に戻すことを拒否しました (何も書き込んでいません): サーボアンプの %1 は %2 %3 で、実行で適用した %4 %3 ではありません。実行後に変更されており、元に戻すとその変更を上書きします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="232" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="243" />
         <source>Also changed: %1.</source>
         <translation>他に変更されたもの: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="233" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="244" />
         <source>Undo anyway… overwrites it after a second confirmation.</source>
         <translation>「それでも元に戻す…」は、もう一度確認した後に上書きします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="238" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="249" />
         <source>Undo refused, nothing written: %1</source>
         <translation>元に戻すことを拒否しました (何も書き込んでいません): %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/AutoTuneUndo.cpp" line="239" />
+        <location filename="../app/gui/AutoTuneUndo.cpp" line="250" />
         <source>Undo failed: %1
 Read the axis's parameters to see what the drive holds.</source>
         <translation>元に戻せませんでした: %1
@@ -7506,7 +7496,7 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::SessionOverlay</name>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="312" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="301" />
         <source>session %1: %2</source>
         <translation>セッション %1: %2</translation>
     </message>
@@ -7634,165 +7624,165 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::SessionView</name>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="123" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="112" />
         <source>&lt;b&gt;Session %1&lt;/b&gt; — %2, machine %3, axis %4, %5 … %6, operator %7, status %8%9</source>
         <translation>&lt;b&gt;セッション %1&lt;/b&gt; — %2、機械 %3、軸 %4、%5 … %6、作業者 %7、状態 %8%9</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="126" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="115" />
         <source>(none)</source>
         <translation>(なし)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="130" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="119" />
         <source>&lt;br&gt;Note: %1</source>
         <translation>&lt;br&gt;メモ: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="136" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="125" />
         <source>Export captures as CSV…</source>
         <translation>計測データを CSV で書き出し…</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="137" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="126" />
         <source>Export plots…</source>
         <translation>プロットを書き出し…</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="159" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="148" />
         <source>Frequency response</source>
         <translation>周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="171" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="160" />
         <source>Trace: %1</source>
         <translation>トレース: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="181" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="170" />
         <source>Key</source>
         <translation>キー</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="181" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="170" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="183" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="172" />
         <source>inputs</source>
         <translation>入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="185" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="174" />
         <source>result: %1</source>
         <translation>結果: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="189" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="178" />
         <source>[%1 values]</source>
         <translation>[%1 個の値]</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="193" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="182" />
         <source>Inputs and results</source>
         <translation>入力と結果</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="195" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="203" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="184" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="192" />
         <source>Axis</source>
         <translation>軸</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="195" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="184" />
         <source>Source</source>
         <translation>出所</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="195" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="203" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="184" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="192" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="195" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="203" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="184" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="192" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="195" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="184" />
         <source>Value (SI)</source>
         <translation>値 (SI)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="195" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="184" />
         <source>Note</source>
         <translation>メモ</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="201" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="190" />
         <source>Parameter sets</source>
         <translation>パラメータセット</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="203" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="192" />
         <source>Old (SI)</source>
         <translation>旧値 (SI)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="203" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="192" />
         <source>New (SI)</source>
         <translation>新値 (SI)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="206" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="195" />
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="208" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="197" />
         <source>Journal</source>
         <translation>変更履歴</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="272" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="261" />
         <source>Export captures to</source>
         <translation>計測データの書き出し先</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="278" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="295" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="267" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="284" />
         <source>Export failed</source>
         <translation>書き出しに失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="280" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="297" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="269" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="286" />
         <source>Export</source>
         <translation>書き出し</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/SessionReviewView.cpp" line="280" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="297" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="269" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="286" />
         <source>%n file(s) written to %1</source>
         <translation>
             <numerusform>%1 に %n 個のファイルを書き出しました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="285" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="274" />
         <source>Export plots to</source>
         <translation>プロットの書き出し先</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="289" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="278" />
         <source>Image format</source>
         <translation>画像形式</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="289" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="278" />
         <source>Format:</source>
         <translation>形式:</translation>
     </message>
@@ -8462,194 +8452,194 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::VelocityLoopDesignPage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="294" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="299" />
         <source>Velocity loop: proposal and prediction</source>
         <translation>速度ループ: 提案と予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="295" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="300" />
         <source>Predicted open loop L = C·P and closed loop T = L/(1 + L) with the proposed PI, the margins before and after, the position gain with its stability limit, and the predicted velocity step.</source>
         <translation>提案した PI での開ループ L = C·P と閉ループ T = L/(1 + L) の予測、変更前後の余裕、安定限界付きの位置ゲイン、速度ステップ応答の予測。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="304" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="309" />
         <source>Time from the step</source>
         <translation>ステップからの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="304" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="309" />
         <source>Motor velocity / step</source>
         <translation>モータ速度 / ステップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="309" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="314" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="309" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="314" />
         <source>Before</source>
         <translation>適用前</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="309" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="314" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="321" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="326" />
         <source>Also apply the recommended position gain K_p (the verification step tests the velocity loop only)</source>
         <translation>推奨の位置ゲイン K_p も適用する（検証のステップは速度ループだけを試験します）</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="417" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="422" />
         <source>Chapter 5 rule (corrected 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m², K_I = k·ω_l²·J_m.</source>
         <translation>第 5 章の規則 (修正 5.13): K_P = k·√2·ω_l·J_m = %1·√2·2π·%2 Hz·%3 kg·m²、K_I = k·ω_l²·J_m。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="422" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="427" />
         <source>Margins on the measured plant: |C·P| = 1 and arg(C·P) = −180° + %1° at %2 Hz.</source>
         <translation>測定したプラントでの余裕: %2 Hz で |C·P| = 1 かつ arg(C·P) = −180° + %1°。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="375" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="380" />
         <source>No measured response.</source>
         <translation>測定した応答がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="400" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="405" />
         <source>No proposal: %1</source>
         <translation>提案なし: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="431" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="436" />
         <source>Open loop L (proposed)</source>
         <translation>開ループ L (提案)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="432" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="437" />
         <source>Closed loop T (proposed)</source>
         <translation>閉ループ T (提案)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="433" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="438" />
         <source>Plant P (measured)</source>
         <translation>プラント P (測定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="433" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="438" />
         <source>Plant P (model)</source>
         <translation>プラント P (モデル)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="437" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="442" />
         <source>crossover %1 Hz</source>
         <translation>交差周波数 %1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="442" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="447" />
         <source>Measured before</source>
         <translation>変更前の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="446" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="451" />
         <source>Predicted before</source>
         <translation>変更前の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="450" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="455" />
         <source>Predicted with the proposal</source>
         <translation>提案での予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="458" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="463" />
         <source>K_P</source>
         <translation>K_P</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="458" />
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="459" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="463" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="464" />
         <source>N·m·s/rad</source>
         <translation>N·m·s/rad</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="460" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="465" />
         <source>K_I</source>
         <translation>K_I</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="460" />
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="461" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="465" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="466" />
         <source>N·m/rad</source>
         <translation>N·m/rad</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="462" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="467" />
         <source>Gain crossover</source>
         <translation>ゲイン交差周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="463" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="468" />
         <source>Phase margin</source>
         <translation>位相余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="464" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="469" />
         <source>Gain margin</source>
         <translation>ゲイン余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="465" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="470" />
         <source>Peak sensitivity</source>
         <translation>感度関数のピーク</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="466" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="471" />
         <source>Step overshoot (predicted)</source>
         <translation>ステップ応答のオーバーシュート (予測)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="468" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="473" />
         <source>Step overshoot (measured)</source>
         <translation>ステップ応答のオーバーシュート (測定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="468" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="473" />
         <source>after applying</source>
         <translation>適用後</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="469" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="474" />
         <source>Position gain K_p</source>
         <translation>位置ゲイン K_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="471" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="476" />
         <source>Position gain stability limit</source>
         <translation>位置ゲインの安定限界</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="473" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="478" />
         <source>%1 1/s at %2 Hz</source>
         <translation>%1 1/s (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="474" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="479" />
         <source>none on the model</source>
         <translation>モデル上ではなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="478" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="483" />
         <source>Position gain: recommended min(limit·10^(−%1/20), crossover·2π/5); %2.</source>
         <translation>位置ゲイン: 推奨値 min(限界·10^(−%1/20), 交差周波数·2π/5); %2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="481" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="486" />
         <source>rigid model J_m with a delay of 1.5 velocity periods — fit a two-inertia model for the resonance</source>
         <translation>剛体モデル J_m と速度ループ周期 1.5 回分の遅れ — 共振を考慮するには 2慣性系モデルを同定してください</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="483" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="488" />
         <source>two-inertia model of session %1 with a delay of 1.5 velocity periods</source>
         <translation>セッション %1 の 2慣性系モデル (速度ループ周期 1.5 回分の遅れ付き)</translation>
     </message>
@@ -8720,82 +8710,82 @@ Read the axis's parameters to see what the drive holds.</source>
         <translation>測定した応答の余裕から (交差周波数と位相余裕)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="100" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="101" />
         <source>Fitted model from:</source>
         <translation>同定モデルの出所:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="101" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="102" />
         <source>Motor-side inertia J_m:</source>
         <translation>モータ側イナーシャ J_m:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="102" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="103" />
         <source>Bandwidth ω_l/2π (for k = 1):</source>
         <translation>帯域 ω_l/2π (k = 1 のとき):</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="103" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="104" />
         <source>Gain factor k:</source>
         <translation>ゲイン係数 k:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="110" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="112" />
         <source>Measure on the machine (torque injection, multi-sweep)</source>
         <translation>機械で測定 (トルク注入、複数回掃引)</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="112" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="114" />
         <source>From a saved session</source>
         <translation>保存済みセッションから</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="125" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="127" />
         <source>Crossover frequency:</source>
         <translation>交差周波数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="126" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="128" />
         <source>Phase margin:</source>
         <translation>位相余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="131" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="133" />
         <source> rad/s</source>
         <translation> rad/s</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="132" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="135" />
         <source>Velocity step before and after (motor):</source>
         <translation>変更前後の速度ステップ (モータ):</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="157" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="160" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): there is no drive velocity loop to tune. Next measures its open loop and proposes P, I, D, FF1, FF2 and a notch for it; the choices below do not apply.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。調整するサーボアンプの速度ループはありません。「次へ」で開ループを測定し、P、I、D、FF1、FF2 とノッチを提案します。下の選択は使いません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="176" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="181" />
         <source>entered below</source>
         <translation>以下に入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="181" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="186" />
         <source>Session %1: %2, %3 axis %4, %5</source>
         <translation>セッション %1: %2、%3 軸 %4、%5</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="201" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="206" />
         <source>Before and after applying, a velocity step of the set size is run on the drive.</source>
         <translation>適用の前後に、設定した大きさの速度ステップをサーボアンプで実行します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="202" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="207" />
         <source>Not connected: the proposal and prediction only; the steps, apply and verify need a connection.</source>
         <translation>未接続: 提案と予測のみ。ステップ応答、適用、検証には接続が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="225" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="230" />
         <source>Session %1: fitted J_m %2 kg·m², J_L %3 kg·m², K %4 N·m/rad; the prediction uses this two-inertia model.</source>
         <translation>セッション %1: 同定値 J_m %2 kg·m²、J_L %3 kg·m²、K %4 N·m/rad; 予測にはこの 2慣性系モデルを使います。</translation>
     </message>
@@ -8803,47 +8793,47 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::VelocityLoopVerifyPage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="523" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="528" />
         <source>Velocity loop: verification</source>
         <translation>速度ループ: 検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="524" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="529" />
         <source>The velocity step measured before and after applying, with the prediction.</source>
         <translation>適用前後に測定した速度ステップ応答と予測。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="528" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="533" />
         <source>Time from the step</source>
         <translation>ステップからの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="528" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="533" />
         <source>Motor velocity / step</source>
         <translation>モータ速度 / ステップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="546" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="551" />
         <source>Measured before</source>
         <translation>変更前の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="550" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="555" />
         <source>Measured after</source>
         <translation>適用後の測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="554" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="559" />
         <source>Predicted after</source>
         <translation>適用後の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="557" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="562" />
         <source>Overshoot: before %1 (measured), after %2 (measured), %3 predicted.</source>
         <translation>オーバーシュート: 変更前 %1 (測定)、変更後 %2 (測定)、予測 %3。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="559" />
+        <location filename="../app/gui/VelocityLoopWizardPages.cpp" line="564" />
         <source>No step after applying: %1</source>
         <translation>適用後のステップ応答なし: %1</translation>
     </message>
