@@ -98,7 +98,8 @@ template <typename Fn> Status withHalAxis(device::Drive& drive, const PidTuneOpt
 }
 
 /// --undo RESULT.json: the gains an applied pid-tune wrote go back to the ones that ran before it (`running.gains`),
-/// when HAL still holds what it applied (`proposed.gains`) or with --force; the notch it inserted is removed.
+/// when HAL still holds what it applied (`proposed.gains`, `proposed.notch`) or with --force; the notch is put back as
+/// it ran before (`running.notch`: inserted with its f0 and Q, or removed when there was none).
 int runPidTuneUndo(const PidTuneOptions& o)
 {
     const std::string cmd = "pid-tune --undo";
@@ -127,19 +128,36 @@ int runPidTuneUndo(const PidTuneOptions& o)
         tune.before[key] = was.get<double>();
         tune.applied[key] = now.get<double>();
     }
+    autotune::PidTuneNotchUndo notch{tune.axis, std::nullopt, std::nullopt};
+    for (auto [part, to] : {std::pair{"running", &notch.before}, std::pair{"proposed", &notch.applied}}) {
+        const auto n = j->value(nlohmann::json::json_pointer(std::string("/") + part + "/notch"), nlohmann::json());
+        if (n.is_null())
+            continue;
+        const auto f0 = n.is_object() ? n.value("f0_Hz", nlohmann::json()) : nlohmann::json();
+        const auto q = n.is_object() ? n.value("Q", nlohmann::json()) : nlohmann::json();
+        if (!f0.is_number() || !q.is_number())
+            return bad(from + ": field '" + part + ".notch' must hold the numbers f0_Hz and Q");
+        *to = tuning::BiquadNotch{f0.get<double>(), q.get<double>()};
+    }
     auto drive = device::connect({o.connect, 1});
     if (!drive)
         return reportError(cmd, drive.error());
+    // The notch is checked first: a refusal there leaves the gains as they are, too.
+    if (auto st = autotune::checkPidTuneNotchUndo(**drive, notch, o.force); !st)
+        return reportError(cmd, st.error());
     auto undone = autotune::undoTune(**drive, tune, o.force);
     if (!undone)
         return reportError(cmd, undone.error());
     nlohmann::json out{{"axis", tune.axis}, {"connection", o.connect}, {"from", from}, {"notch_removed", false}};
-    if (j->contains("proposed") && (*j)["proposed"].contains("notch")) {
-        auto st = device::hal::removeAxisNotch(**drive, o.axis);
+    if (notch.changes()) {
+        auto st = autotune::undoPidTuneNotch(**drive, notch);
         if (!st)
-            return reportError(cmd, makeError(st.error().code,
-                                              "the gains were put back, but removing the notch: " + st.error().detail));
-        out["notch_removed"] = true;
+            return reportError(cmd, makeError(st.error().code, "the gains were put back, but putting the notch back: " +
+                                                                   st.error().detail));
+        if (notch.before)
+            out["notch_restored"] = {{"f0_Hz", notch.before->f0Hz}, {"Q", notch.before->q}};
+        else
+            out["notch_removed"] = true;
     }
     return writeUndone(cmd, out, *undone, o.out);
 }
@@ -153,17 +171,6 @@ int runPidTune(const PidTuneOptions& o)
         return reportError(cmd,
                            makeError(ErrorCode::BadInput,
                                      "give the excitation: --amplitude PEAK (PID output units) or --amplitude-pct P"));
-    if (!(o.phaseMarginDeg >= 30.0 && o.phaseMarginDeg <= 80.0) || !(o.gainMarginDb >= 3.0 && o.gainMarginDb <= 20.0))
-        return reportError(cmd, makeError(ErrorCode::BadInput, "--pm must lie in 30..80 deg and --gm in 3..20 dB"));
-    auto drive = device::connect({o.connect, 1});
-    if (!drive)
-        return reportError(cmd, drive.error());
-    if (o.removeNotch) {
-        if (auto st = device::hal::removeAxisNotch(**drive, o.axis); !st)
-            return reportError(cmd, st.error());
-        std::cout << "{\"notch_removed\": true}\n";
-        return 0;
-    }
     autotune::PidTuneRequest req;
     req.axis = o.axis;
     req.fminHz = o.fmin;
@@ -180,6 +187,20 @@ int runPidTune(const PidTuneOptions& o)
     if (o.notch != "auto" && o.notch != "none")
         return reportError(cmd, makeError(ErrorCode::BadInput, "--notch must be auto or none"));
     req.notch = o.notch == "auto";
+    if (!o.removeNotch)
+        if (auto st = autotune::checkPidTuneRequest(req, {"--axis", "--amplitude / --amplitude-pct", "--pm", "--gm",
+                                                          "--fmin", "--fmax"});
+            !st)
+            return reportError(cmd, st.error());
+    auto drive = device::connect({o.connect, 1});
+    if (!drive)
+        return reportError(cmd, drive.error());
+    if (o.removeNotch) {
+        if (auto st = device::hal::removeAxisNotch(**drive, o.axis); !st)
+            return reportError(cmd, st.error());
+        std::cout << "{\"notch_removed\": true}\n";
+        return 0;
+    }
 
     std::cerr << "pid-tune: measuring the open loop with the running gains\n";
     auto measured = autotune::measurePidLoop(**drive, req, {});

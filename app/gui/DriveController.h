@@ -43,6 +43,7 @@ struct PidTuneRequest;
 struct PidLoopMeasurement;
 struct PidTuneProposal;
 struct PidTuneApplied;
+struct PidTuneNotchUndo;
 } // namespace axistune::autotune
 
 namespace axistune {
@@ -188,9 +189,10 @@ public:
     DriveRequest* applyPidTune(const autotune::PidTuneRequest& request,
                                std::shared_ptr<const autotune::PidLoopMeasurement> measured,
                                std::shared_ptr<const autotune::PidTuneProposal> proposal);
-    /// Undoes an applied PID tune: the gains as undoAutoTune (refused when HAL no longer holds them, unless
-    /// `force`), then AxisTune's notch removed when `removeNotch` (reply kind AutoTuneUndo).
-    DriveRequest* undoPidTune(const autotune::AppliedTune& tune, bool removeNotch, bool force);
+    /// Undoes an applied PID tune: the gains as undoAutoTune and AxisTune's notch put back as it ran before (refused,
+    /// nothing changed, when HAL no longer holds the gains or the notch the tune applied, unless `force`; reply kind
+    /// AutoTuneUndo).
+    DriveRequest* undoPidTune(const autotune::AppliedTune& tune, const autotune::PidTuneNotchUndo& notch, bool force);
     // The scope (docs/scope.md "The GUI scope"). These requests also run between the polls of a running test
     // (the worker serves them from its side queue whenever the test reports progress), so the scope stays
     // live while a jog or a wizard's test moves the axis.
@@ -268,7 +270,8 @@ public:
                          std::shared_ptr<const autotune::PidLoopMeasurement> measured,
                          std::shared_ptr<const autotune::PidTuneProposal> proposal,
                          std::shared_ptr<std::atomic<bool>> cancel);
-    DriveReply doPidTuneUndo(int id, const autotune::AppliedTune& tune, bool removeNotch, bool force);
+    DriveReply doPidTuneUndo(int id, const autotune::AppliedTune& tune, const autotune::PidTuneNotchUndo& notch,
+                             bool force);
     DriveReply doScopeCapabilities(int id, const QString& axis);
     DriveReply doArmScope(int id, const device::ScopeRequest& request);
     DriveReply doPollScope(int id, std::optional<std::uint64_t> rollFrom, std::uint64_t knownCaptures,

@@ -56,20 +56,28 @@ DriveReply DriveWorker::doPidTune(int id, std::shared_ptr<const autotune::PidTun
     return r;
 }
 
-DriveReply DriveWorker::doPidTuneUndo(int id, const autotune::AppliedTune& tune, bool removeNotch, bool force)
+DriveReply DriveWorker::doPidTuneUndo(int id, const autotune::AppliedTune& tune,
+                                      const autotune::PidTuneNotchUndo& notch, bool force)
 {
-    DriveReply r = tune.applied.empty() ? DriveReply{} : doAutoTuneUndo(id, tune, force);
+    DriveReply r;
     r.id = id;
     r.kind = DriveReply::Kind::AutoTuneUndo;
     r.axis = QString::fromStdString(tune.axis);
-    if (!tune.applied.empty() && !r.ok)
-        return r;
     if (!m_drive)
         return fail(r,
                     {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
-    if (removeNotch)
-        if (auto st = device::hal::removeAxisNotch(*m_drive, tune.axis); !st)
-            return fail(r, st.error());
+    // The notch is checked first: a refusal there leaves the gains as they are, too.
+    if (auto st = autotune::checkPidTuneNotchUndo(*m_drive, notch, force); !st)
+        return fail(r, st.error());
+    if (!tune.applied.empty()) {
+        r = doAutoTuneUndo(id, tune, force);
+        r.kind = DriveReply::Kind::AutoTuneUndo;
+        r.axis = QString::fromStdString(tune.axis);
+        if (!r.ok)
+            return r;
+    }
+    if (auto st = autotune::undoPidTuneNotch(*m_drive, notch); !st)
+        return fail(r, st.error());
     r.ok = true;
     return r;
 }
@@ -94,10 +102,11 @@ DriveRequest* DriveController::applyPidTune(const autotune::PidTuneRequest& requ
     return r;
 }
 
-DriveRequest* DriveController::undoPidTune(const autotune::AppliedTune& tune, bool removeNotch, bool force)
+DriveRequest* DriveController::undoPidTune(const autotune::AppliedTune& tune,
+                                           const autotune::PidTuneNotchUndo& notch, bool force)
 {
-    return post(DriveReply::Kind::AutoTuneUndo, [tune, removeNotch, force](DriveWorker& w, int id) {
-        return w.doPidTuneUndo(id, tune, removeNotch, force);
+    return post(DriveReply::Kind::AutoTuneUndo, [tune, notch, force](DriveWorker& w, int id) {
+        return w.doPidTuneUndo(id, tune, notch, force);
     });
 }
 

@@ -344,7 +344,8 @@ void NcPidPage::undo()
         tune.before[k] = m_applied->before.at(k);
     }
     setStatus(tr("Putting back what ran before…"));
-    auto* r = m_ctx.drive().undoPidTune(tune, m_proposal && m_proposal->notch, false);
+    autotune::PidTuneNotchUndo notch{tune.axis, m_applied->notchBefore, m_proposal->notch};
+    auto* r = m_ctx.drive().undoPidTune(tune, notch, false);
     connect(r, &DriveRequest::finished, this, &NcPidPage::onUndone);
     m_request = r;
     updateButtons();
@@ -358,10 +359,16 @@ void NcPidPage::onUndone(const DriveReply& r)
     } else {
         m_undone = true;
         saveSession(tr("undone"), store::SessionStatus::Completed);
+        const auto& before = m_applied->notchBefore;
+        const bool notchChanged = m_proposal && m_proposal->notchChanges();
+        const QString notch =
+            !notchChanged ? QString()
+            : before      ? tr("the notch from before (%1 Hz, Q %2) is back").arg(num(before->f0Hz), num(before->q, 3))
+                          : tr("the notch was removed");
         setStatus(m_scope == autotune::PidTuneScope::NotchOnly
-                      ? tr("Undone: the notch was removed.")
+                      ? tr("Undone: %1.").arg(notch)
                       : tr("Undone: the gains that ran before are back (read back)%1.")
-                            .arg(m_proposal && m_proposal->notch ? tr(" and the notch was removed") : QString()));
+                            .arg(notch.isEmpty() ? QString() : tr(", and %1").arg(notch)));
     }
     updateButtons();
 }
@@ -399,9 +406,11 @@ void NcPidPage::showTable()
     gainRow(QStringLiteral("FF1"), run.ff1, g.ff1, "FF1");
     gainRow(QStringLiteral("FF2"), run.ff2, g.ff2, "FF2");
     if (p) {
-        addRow(m_table, {tr("Notch f0 [Hz]"), tr("none"), p->notch ? num(p->notch->f0Hz) : tr("none"), QString(),
-                         qs(p->notchRule)});
-        addRow(m_table, {tr("Notch Q"), QString(), p->notch ? num(p->notch->q, 3) : QString(), QString(), QString()});
+        const auto& was = p->runningNotch;
+        addRow(m_table, {tr("Notch f0 [Hz]"), was ? num(was->f0Hz) : tr("none"),
+                         p->notch ? num(p->notch->f0Hz) : tr("none"), QString(), qs(p->notchRule)});
+        addRow(m_table, {tr("Notch Q"), was ? num(was->q, 3) : QString(), p->notch ? num(p->notch->q, 3) : QString(),
+                         QString(), QString()});
         addRow(m_table, {tr("Drive input"), QString(),
                          p->input == tuning::DriveInput::Torque ? tr("torque or current") : tr("velocity"), QString(),
                          qs(p->inputRule)});

@@ -3,7 +3,8 @@
 // Tuning a position PID the NC closes (LinuxCNC's `pid` through hal: or linuxcnc:; docs/linuxcnc.md "Tuning"), the
 // headless steps behind `axistune-cli pid-tune` and the velocity/position and notch wizards on such an axis:
 //   1. measurePidLoop: the open loop measured with the running gains (multisine, FrfQuantity::OpenLoop) and the
-//      effective plant P_eff = L / C_running (core/tuning/PositionPid.h);
+//      effective plant P_eff = L / (C_running · N_running) (core/tuning/PositionPid.h; N_running: AxisTune's notch
+//      when one runs after the pid, so that a second tune designs on the plant, not on plant × the first notch);
 //   2. proposePidTune: P, I, D, FF1, FF2 for the margins asked and a biquad notch when it raises the crossover
 //      (PidTuneScope::GainsAndNotch), or a notch alone for the running gains (PidTuneScope::NotchOnly), each number
 //      with the rule that chose it; nothing moves;
@@ -48,9 +49,19 @@ struct PidTuneRequest {
     PidTuneScope scope = PidTuneScope::GainsAndNotch;
 };
 
+/// How checkPidTuneRequest names the fields (the CLI passes its option names).
+struct PidTuneNames {
+    std::string axis = "axis";
+    std::string excitation = "the excitation";
+    std::string phaseMargin = "the phase margin asked";
+    std::string gainMargin = "the gain margin asked";
+    std::string fmin = "fmin";
+    std::string fmax = "fmax";
+};
+
 /// The request's own limits (margins asked 30..80° and 3..20 dB, a positive excitation, fmin below fmax); BadInput
-/// naming the field.
-Status checkPidTuneRequest(const PidTuneRequest& request);
+/// naming the field as `names` says.
+Status checkPidTuneRequest(const PidTuneRequest& request, const PidTuneNames& names = {});
 
 /// The open loop as measured with the running gains.
 struct PidLoopMeasurement {
@@ -60,7 +71,10 @@ struct PidLoopMeasurement {
     model::ParameterValues runningValues;    ///< the gain pins as read before the measurement
     std::vector<double> freqHz;              ///< the valid lines
     std::vector<std::complex<double>> loop;  ///< L = −(PID output)/(drive input) at them
-    std::vector<std::complex<double>> plant; ///< P_eff = L / C_running
+    std::vector<std::complex<double>> plant; ///< P_eff = L / (C_running · N_running): the plant without any notch
+    /// AxisTune's notch that ran after the pid during the measurement (it is inside L: the injection enters before
+    /// it); lines where it takes 60 dB or more out of L are left out of all three vectors.
+    std::optional<tuning::BiquadNotch> runningNotch;
     double motionTimeS = 0.0;
     std::optional<device::FrfMeasurement> frf; ///< the whole measurement (for a session)
 };
@@ -79,9 +93,11 @@ struct PidTuneProposal {
     std::vector<std::complex<double>> predictedLoop;
     std::vector<std::string> rules;    ///< one sentence per gain (GainsAndNotch)
     std::optional<double> resonanceHz; ///< the plant's strongest resonance looked at for the notch
-    std::optional<tuning::BiquadNotch> notch;
+    std::optional<tuning::BiquadNotch> notch;        ///< the notch that runs after an apply (none: no notch)
+    std::optional<tuning::BiquadNotch> runningNotch; ///< the one that ran during the measurement
     std::string notchRule;
-    bool changesSomething() const { return notch.has_value() || !rules.empty(); }
+    bool notchChanges() const;
+    bool changesSomething() const { return notchChanges() || !rules.empty(); }
 };
 
 /// The proposal for a measurement (nothing moves). Errors: the drive input's slope read neither way (name it), no
@@ -100,16 +116,36 @@ struct PidTuneApplied {
     double motionTimeS = 0.0;
     model::ParameterValues before;             ///< the gain pins before
     model::ParameterValues written;            ///< what was written (empty for NotchOnly)
+    std::optional<tuning::BiquadNotch> notchBefore; ///< AxisTune's notch after the pid before (read again at apply)
     std::optional<device::FrfMeasurement> frf; ///< the verifying measurement
 };
 
-/// Inserts the notch, writes the gains (read back), measures the open loop again and checks the measured margins
-/// against the asked ones (3° and 1 dB below them; NotchOnly: below the smaller of asked and predicted). A loop that
-/// misses them, a failed or aborted verifying measurement: the gains and notch from before are put back and
-/// `applied` is false with the reason. Errors (nothing left changed): the notch or the write refused.
+/// Inserts (or retunes) the proposal's notch, or removes the running one when the proposal has none, writes the gains
+/// (read back), measures the open loop again and checks the measured margins against the asked ones (3° and 1 dB
+/// below them; NotchOnly: below the smaller of asked and predicted). A loop that misses them, a failed or aborted
+/// verifying measurement: the gains and the notch from before (its f0 and Q) are put back and `applied` is false with
+/// the reason. Errors (nothing left changed): the notch or the write refused, or HAL's notch no longer the one the
+/// measurement ran with.
 Result<PidTuneApplied> applyPidTune(device::Drive& drive, const PidTuneRequest& request,
                                     const PidLoopMeasurement& measured, const PidTuneProposal& proposal,
                                     const device::RunOptions& run);
+
+/// The notch half of undoing an applied tune: the notch that ran before it and the one it applied (none: none).
+struct PidTuneNotchUndo {
+    std::string axis;
+    std::optional<tuning::BiquadNotch> before;
+    std::optional<tuning::BiquadNotch> applied;
+    bool changes() const;
+};
+
+/// Refused (Safety, naming both) when HAL's notch after the axis is no longer the one the tune applied (f0 and Q
+/// within 1e-5 relative: halcmd prints seven digits), unless `force`: putting the old one back would undo a later
+/// change. Nothing to check when the tune left the notch as it was. Call it before the gains are undone.
+Status checkPidTuneNotchUndo(device::Drive& drive, const PidTuneNotchUndo& undo, bool force);
+
+/// Puts the notch from before back (inserted with its f0 and Q, or removed when there was none); nothing when the tune
+/// left the notch as it was.
+Status undoPidTuneNotch(device::Drive& drive, const PidTuneNotchUndo& undo);
 
 /// The result JSON of a tune (docs/linuxcnc.md "Tuning from the command line", pid-tune's --out; the wizards' session
 /// result): axis, scope, servo_rate_Hz, band_Hz, drive_input (+ _rule), running {gains, margins, motion_time_s},

@@ -43,6 +43,8 @@ nlohmann::json pidTuneJson(const PidTuneRequest& request, const PidLoopMeasureme
     out["proposed"] = {{"gains", gainsJson(proposal.gains)},
                        {"predicted", marginsJson(proposal.predicted)},
                        {"rules", proposal.rules}};
+    if (measured.runningNotch)
+        out["running"]["notch"] = {{"f0_Hz", measured.runningNotch->f0Hz}, {"Q", measured.runningNotch->q}};
     if (!proposal.notchRule.empty())
         out["proposed"]["notch_rule"] = proposal.notchRule;
     if (proposal.notch)

@@ -179,6 +179,19 @@ inline std::complex<double> exactResponse(const Plant& p, double periodS, double
     return z * (s.C.cast<std::complex<double>>() * x)(0);
 }
 
+/// The plant's resonance at the servo period `periodS`: the peak of the exact response's |H|·ω² on a 0.01 Hz grid,
+/// 30 to 200 Hz.
+inline double exactResonanceHz(const Plant& p, double periodS)
+{
+    double fr = 0.0, hi = -1.0;
+    for (double f = 30.0; f <= 200.0; f += 0.01) {
+        const double v = std::abs(exactResponse(p, periodS, f)) * std::pow(2.0 * M_PI * f, 2);
+        if (v > hi)
+            hi = v, fr = f;
+    }
+    return fr;
+}
+
 /// The largest departure of a measured plant FRF (every line valid) from the plant's exact response at the servo
 /// period `periodS`: |20 log10 |ratio|| [dB] and |arg ratio| [deg]. An invalid line fails the calling test.
 struct ExactDeparture {

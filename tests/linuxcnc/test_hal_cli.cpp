@@ -134,14 +134,7 @@ TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
     const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
     const std::string funBefore = halText({"-s", "show", "funct"});
-    // The exact plant's resonance: the peak of |H|·ω² on a 0.01 Hz grid (as in the resonance test below).
-    const Plant pl = readPlant();
-    double fr = 0.0, hi = -1.0;
-    for (double f = 30.0; f <= 200.0; f += 0.01) {
-        const double v = std::abs(exactResponse(pl, 1e-3, f)) * std::pow(2.0 * M_PI * f, 2);
-        if (v > hi)
-            hi = v, fr = f;
-    }
+    const double fr = exactResonanceHz(readPlant(), 1e-3);
     const std::string cli = std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x --amplitude 0.2 --pm 50 "
                                                         "--gm 8 ";
     auto readJson = [](const std::string& path) {

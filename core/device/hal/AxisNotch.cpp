@@ -27,11 +27,46 @@ Result<DriveHalAxis> halAxisOf(Drive& drive, const std::string& axis)
     return DriveHalAxis{std::move(session).value(), std::move(a).value()};
 }
 
+namespace {
+
+/// The notch after the axis's pid; refused when it runs after another pid.
+Result<std::optional<AxisNotch>> notchOf(const DriveHalAxis& a)
+{
+    auto n = readNotch(a.session);
+    if (!n)
+        return n.error();
+    if (!*n)
+        return std::optional<AxisNotch>();
+    const std::string mine = a.axis.pid + ".output";
+    if ((*n)->pidOutput != mine)
+        return makeError(ErrorCode::BadInput,
+                         "AxisTune's notch runs after " +
+                             ((*n)->pidOutput.empty() ? std::string("no pid (its input is unlinked)")
+                                                      : (*n)->pidOutput) +
+                             ", not after " + mine + ": LinuxCNC loads it once per HAL session; remove it there first "
+                                                     "(pid-tune --remove-notch on that axis)");
+    return std::optional<AxisNotch>(AxisNotch{(*n)->f0Hz, (*n)->q});
+}
+
+} // namespace
+
+Result<std::optional<AxisNotch>> readAxisNotch(Drive& drive, const std::string& axis)
+{
+    if (!dynamic_cast<HalDrive*>(&drive) && !dynamic_cast<LinuxCncDrive*>(&drive))
+        return std::optional<AxisNotch>();
+    auto a = halAxisOf(drive, axis);
+    if (!a)
+        return a.error();
+    return notchOf(*a);
+}
+
 Status insertAxisNotch(Drive& drive, const std::string& axis, double f0Hz, double q)
 {
     auto a = halAxisOf(drive, axis);
     if (!a)
         return a.error();
+    if (auto n = notchOf(*a); !n)
+        return n.error();
     return insertNotch(a->session, a->axis, f0Hz, q);
 }
 
@@ -40,7 +75,17 @@ Status removeAxisNotch(Drive& drive, const std::string& axis)
     auto a = halAxisOf(drive, axis);
     if (!a)
         return a.error();
+    auto n = notchOf(*a);
+    if (!n)
+        return n.error();
+    if (!*n)
+        return Status::success();
     return removeNotch(a->session);
+}
+
+Status restoreAxisNotch(Drive& drive, const std::string& axis, const std::optional<AxisNotch>& before)
+{
+    return before ? insertAxisNotch(drive, axis, before->f0Hz, before->q) : removeAxisNotch(drive, axis);
 }
 
 } // namespace axistune::device::hal

@@ -365,6 +365,36 @@ Status removeNotch(const HalSessionOptions& options)
     return Status::success();
 }
 
+Result<std::optional<HalNotch>> readNotch(const HalSessionOptions& options)
+{
+    auto ps = pins(options);
+    if (!ps)
+        return ps.error();
+    const std::string notch = kNotchComponent;
+    if (!findPin(*ps, notch + ".out"))
+        return std::optional<HalNotch>();
+    HalNotch n;
+    if (const HalPin* in = findPin(*ps, notch + ".in"); in && !in->signal.empty()) {
+        auto sigs = signals(options);
+        if (!sigs)
+            return sigs.error();
+        if (const HalSignal* s = findSignal(*sigs, in->signal))
+            n.pidOutput = s->writer;
+    }
+    // f0 and Q are the component's parameters (not pins): getp prints the value alone.
+    for (auto [name, to] : {std::pair{".f0", &n.f0Hz}, std::pair{".Q", &n.q}}) {
+        auto text = runHalcmd(options, {"getp", notch + name});
+        if (!text)
+            return text.error();
+        auto x = model::parseNumber(std::string_view(*text).substr(0, text->find_first_of(" \n")));
+        if (!x)
+            return makeError(ErrorCode::Device, "halcmd getp " + notch + name + " printed '" + *text +
+                                                    "', not a number");
+        *to = *x;
+    }
+    return std::optional<HalNotch>(n);
+}
+
 Status insertNotch(const HalSessionOptions& options, const HalAxis& axis, double f0Hz, double q)
 {
     const double fs = axis.periodNs > 0 ? 1e9 / static_cast<double>(axis.periodNs) : 0.0;

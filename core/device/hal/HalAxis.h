@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -103,6 +104,17 @@ Status insertNotch(const HalSessionOptions& options, const HalAxis& axis, double
 /// Removes AxisTune's notch and relinks <pid>.output to the net the notch drove. Succeeds with nothing to do when
 /// there is no notch.
 Status removeNotch(const HalSessionOptions& options);
+
+/// AxisTune's notch as it runs in HAL.
+struct HalNotch {
+    std::string pidOutput; ///< the pin that feeds it (<pid>.output); empty when its input is linked to no writer
+    double f0Hz = 0.0;
+    double q = 0.0;
+};
+
+/// AxisTune's notch when it is loaded (f0, Q as the component holds them, and the pid output that feeds it); none
+/// when it is not.
+Result<std::optional<HalNotch>> readNotch(const HalSessionOptions& options);
 
 struct HalRecord {
     double sampleRateHz = 0.0;

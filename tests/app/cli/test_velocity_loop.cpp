@@ -111,6 +111,12 @@ TEST(CliPidTuneRefusals, ADriveThatClosesItsOwnLoopsAndBadOptionsExitTwo)
     r = runCli("pid-tune --connect sim:vmc --axis X --amplitude-pct 5 --pm 90");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("--pm"), std::string::npos) << r.err;
+    r = runCli("pid-tune --connect sim:vmc --axis X --amplitude-pct 5 --gm 30");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--gm must lie in 3..20 dB"), std::string::npos) << r.err;
+    r = runCli("pid-tune --connect sim:vmc --axis X --amplitude-pct 5 --fmin 100 --fmax 50");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("0 < --fmin < --fmax"), std::string::npos) << r.err;
     r = runCli("pid-tune --connect sim:vmc --axis X --amplitude-pct 5 --notch maybe");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("--notch"), std::string::npos) << r.err;

@@ -128,6 +128,75 @@ TEST(PidTune, NotchOnlyOnARigidBodyProposesNothing)
     EXPECT_NE(p->notchRule.find("no notch"), std::string::npos) << p->notchRule;
 }
 
+/// The measurement of the same loop with AxisTune's notch `n` running after the pid: L = C·N·P, and the plant without
+/// it, the lines at the notch's zero (|N| < 1e-3) left out (as measurePidLoop gives it).
+PidLoopMeasurement measurementThroughNotch(const tuning::PositionPid& running, const tuning::BiquadNotch& n)
+{
+    const auto all = measurement(running, true);
+    PidLoopMeasurement m = all;
+    m.runningNotch = n;
+    m.freqHz.clear(), m.loop.clear(), m.plant.clear();
+    for (std::size_t k = 0; k < all.freqHz.size(); ++k) {
+        const cd nk = notch(n.f0Hz, n.q, all.freqHz[k]);
+        if (std::abs(nk) < 1e-3)
+            continue;
+        m.freqHz.push_back(all.freqHz[k]);
+        m.plant.push_back(all.plant[k]);
+        m.loop.push_back(all.loop[k] * nk);
+    }
+    return m;
+}
+
+// A second notch-only tune over the notch the first one proposed: the candidates are judged on C·N·P with the plant
+// that has no notch, so the running notch is itself the best candidate and nothing better than it by 1 dB exists:
+// the proposal keeps it (no change), and its predicted loop is the measured one (C·N·P, not C·N·N·P).
+TEST(PidTune, NotchOnlyOverItsOwnNotchKeepsIt)
+{
+    PidTuneRequest r;
+    r.axis = "pid.0";
+    r.scope = PidTuneScope::NotchOnly;
+    r.driveInput = tuning::DriveInput::Torque;
+    auto first = proposePidTune(measurement(kRunning, true), r);
+    ASSERT_TRUE(first && first->notch);
+    const auto m = measurementThroughNotch(kRunning, *first->notch);
+    auto p = proposePidTune(m, r);
+    ASSERT_TRUE(p) << p.error().detail;
+    ASSERT_TRUE(p->notch) << p->notchRule;
+    EXPECT_EQ(p->notch->f0Hz, first->notch->f0Hz);
+    EXPECT_EQ(p->notch->q, first->notch->q);
+    EXPECT_FALSE(p->notchChanges());
+    EXPECT_FALSE(p->changesSomething());
+    EXPECT_NE(p->notchRule.find("no new notch; the running notch"), std::string::npos) << p->notchRule;
+    for (std::size_t k = 0; k < m.freqHz.size(); ++k)
+        EXPECT_NEAR(std::abs(p->predictedLoop[k] - m.loop[k]), 0.0, 1e-9 * std::abs(m.loop[k])) << m.freqHz[k];
+}
+
+// Gains without a notch (asked) over a running notch: the gains are designed for the plant alone, the proposal has no
+// notch (the running one is removed when it is applied, and its rule says so), and the predicted loop is C·P.
+TEST(PidTune, GainsWithoutANotchOverARunningNotchRemoveIt)
+{
+    const tuning::BiquadNotch running{150.0, 1.0};
+    const auto m = measurementThroughNotch(kRunning, running);
+    PidTuneRequest r;
+    r.axis = "pid.0";
+    r.driveInput = tuning::DriveInput::Torque;
+    r.notch = false;
+    auto p = proposePidTune(m, r);
+    ASSERT_TRUE(p) << p.error().detail;
+    EXPECT_FALSE(p->notch);
+    EXPECT_TRUE(p->notchChanges());
+    EXPECT_NE(p->notchRule.find("the running notch (150 Hz, Q 1) is removed"), std::string::npos) << p->notchRule;
+    // The same gains as a design on the plant measured without any notch.
+    auto plain = proposePidTune(measurement(kRunning, true), r);
+    ASSERT_TRUE(plain);
+    EXPECT_NEAR(p->gains.p, plain->gains.p, 1e-9 * plain->gains.p);
+    EXPECT_NEAR(p->gains.d, plain->gains.d, 1e-9 * plain->gains.d);
+    for (std::size_t k = 0; k < m.freqHz.size(); ++k) {
+        const cd expected = pid(p->gains, m.freqHz[k]) * m.plant[k];
+        EXPECT_NEAR(std::abs(p->predictedLoop[k] - expected), 0.0, 1e-9 * std::abs(expected)) << m.freqHz[k];
+    }
+}
+
 TEST(PidTune, GainsAndNotchRaiseTheCrossoverAboveTheDesignWithoutANotch)
 {
     const auto m = measurement(kRunning, true);

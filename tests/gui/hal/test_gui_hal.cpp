@@ -302,14 +302,7 @@ void applyOn(gui::NcPidPage& page)
 /// The plant's resonance: the peak of the exact response's |H|·ω² on a 0.01 Hz grid (as the CLI test reads it).
 double exactResonanceHz()
 {
-    const axistune::testing::Plant pl = axistune::testing::readPlant();
-    double fr = 0.0, hi = -1.0;
-    for (double f = 30.0; f <= 200.0; f += 0.01) {
-        const double v = std::abs(axistune::testing::exactResponse(pl, 1e-3, f)) * std::pow(2.0 * M_PI * f, 2);
-        if (v > hi)
-            hi = v, fr = f;
-    }
-    return fr;
+    return axistune::testing::exactResonanceHz(axistune::testing::readPlant(), 1e-3);
 }
 
 // Issue 17 item 6: the velocity/position wizard on hal: goes from its first page to the NC PID page, which measures
