@@ -174,7 +174,7 @@
         <location filename="../app/gui/DriveControllerDescribe.cpp" line="19" />
         <location filename="../app/gui/DriveControllerDescribe.cpp" line="40" />
         <location filename="../app/gui/DriveControllerPidTune.cpp" line="30" />
-        <location filename="../app/gui/DriveControllerPidTune.cpp" line="69" />
+        <location filename="../app/gui/DriveControllerPidTune.cpp" line="68" />
         <location filename="../app/gui/DriveControllerScope.cpp" line="15" />
         <source>Not connected</source>
         <translation>未接続</translation>
@@ -6072,13 +6072,13 @@ Read the axis's parameters to see what the drive holds.</source>
     </message>
     <message>
         <location filename="../app/gui/NcPidPage.cpp" line="74" />
-        <location filename="../app/gui/NcPidPage.cpp" line="406" />
+        <location filename="../app/gui/NcPidPage.cpp" line="415" />
         <source>torque or current</source>
         <translation>トルクまたは電流</translation>
     </message>
     <message>
         <location filename="../app/gui/NcPidPage.cpp" line="75" />
-        <location filename="../app/gui/NcPidPage.cpp" line="406" />
+        <location filename="../app/gui/NcPidPage.cpp" line="415" />
         <source>velocity</source>
         <translation>速度</translation>
     </message>
@@ -6253,83 +6253,94 @@ Read the axis's parameters to see what the drive holds.</source>
         <translation>以前の設定に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="357" />
+        <location filename="../app/gui/NcPidPage.cpp" line="358" />
         <source>Undo refused: %1</source>
         <translation>元に戻すことを拒否しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="360" />
+        <location filename="../app/gui/NcPidPage.cpp" line="361" />
         <source>undone</source>
         <translation>元に戻した</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="362" />
-        <source>Undone: the notch was removed.</source>
-        <translation>元に戻しました: ノッチを取り除きました。</translation>
+        <location filename="../app/gui/NcPidPage.cpp" line="366" />
+        <source>the notch from before (%1 Hz, Q %2) is back</source>
+        <translation>以前のノッチ (%1 Hz, Q %2) を戻しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="363" />
+        <location filename="../app/gui/NcPidPage.cpp" line="367" />
+        <source>the notch was removed</source>
+        <translation>ノッチを取り除きました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcPidPage.cpp" line="369" />
+        <source>Undone: %1.</source>
+        <translation>元に戻しました: %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcPidPage.cpp" line="371" />
+        <source>, and %1</source>
+        <translation>。また、%1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcPidPage.cpp" line="370" />
         <source>Undone: the gains that ran before are back (read back)%1.</source>
         <translation>元に戻しました: 以前のゲインに戻りました (読み戻し確認)%1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="364" />
-        <source> and the notch was removed</source>
-        <translation>、ノッチも取り除きました</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="402" />
+        <location filename="../app/gui/NcPidPage.cpp" line="410" />
         <source>Notch f0 [Hz]</source>
         <translation>ノッチ f0 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="402" />
+        <location filename="../app/gui/NcPidPage.cpp" line="410" />
+        <location filename="../app/gui/NcPidPage.cpp" line="411" />
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="404" />
+        <location filename="../app/gui/NcPidPage.cpp" line="412" />
         <source>Notch Q</source>
         <translation>ノッチ Q</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="405" />
+        <location filename="../app/gui/NcPidPage.cpp" line="414" />
         <source>Drive input</source>
         <translation>サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="412" />
-        <location filename="../app/gui/NcPidPage.cpp" line="417" />
+        <location filename="../app/gui/NcPidPage.cpp" line="421" />
+        <location filename="../app/gui/NcPidPage.cpp" line="426" />
         <source>Crossover [Hz]</source>
         <translation>交差周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="418" />
+        <location filename="../app/gui/NcPidPage.cpp" line="427" />
         <source>Phase margin [°]</source>
         <translation>位相余裕 [°]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="419" />
+        <location filename="../app/gui/NcPidPage.cpp" line="428" />
         <source>Gain margin [dB]</source>
         <translation>ゲイン余裕 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="420" />
+        <location filename="../app/gui/NcPidPage.cpp" line="429" />
         <source>Motion time [s]</source>
         <translation>動作時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="432" />
+        <location filename="../app/gui/NcPidPage.cpp" line="441" />
         <source>measured, running gains</source>
         <translation>測定、現在のゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="434" />
+        <location filename="../app/gui/NcPidPage.cpp" line="443" />
         <source>predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="437" />
+        <location filename="../app/gui/NcPidPage.cpp" line="446" />
         <source>verified (measured after applying)</source>
         <translation>検証 (適用後に測定)</translation>
     </message>

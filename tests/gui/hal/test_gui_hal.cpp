@@ -383,7 +383,8 @@ TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
 // running gains stay, a biquad at the plant's resonance (within 2 % of the exact one) raises the running loop's gain
 // margin by at least the 1 dB its rule asks with the phase margin kept at the 50° asked, the measured margins after
 // inserting it lie within 3° / 1 dB of the prediction, and removing it (Undo) leaves HAL's nets and functions as they
-// were. First an Abort mid-measurement: nothing proposed, HAL as before, the session kept as aborted.
+// were. First an Abort mid-measurement: nothing proposed, HAL as before, the session kept as aborted. In between, the
+// wizard opened a second time over the inserted notch proposes nothing (no notch on top of the notch).
 TEST_F(GuiOnHal, NotchWizardInsertsABiquadForTheRunningGains)
 {
     gui::AppContext ctx;
@@ -440,6 +441,38 @@ TEST_F(GuiOnHal, NotchWizardInsertsABiquadForTheRunningGains)
     RecordProperty("running_gain_margin_dB", model::formatShortest(p.runningMargins.gainMarginDb));
     RecordProperty("verified_gain_margin_dB", model::formatShortest(page.applied()->measured.gainMarginDb));
     maybeScreenshot(&n, "notch-hal-03-verified");
+    {
+        // The notch wizard opened again on the notched axis: the loop it measures runs through the notch, which the
+        // page divides out of the plant; the running notch is then the best candidate, nothing beats it by the 1 dB
+        // the rule asks, and nothing is proposed (no second notch on top of the first). HAL keeps the first notch.
+        gui::NotchWizard again(ctx);
+        again.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&again));
+        ASSERT_TRUE(waitUntil([&] { return !again.ncPidRefusal().isEmpty(); }, 30000));
+        again.next();
+        ASSERT_EQ(again.currentId(), int(gui::NotchWizard::kNcPid));
+        gui::NcPidPage& second = *again.ncPidPage();
+        measureOn(second);
+        if (HasFatalFailure())
+            return;
+        const auto& q = *second.proposal();
+        ASSERT_TRUE(q.runningNotch);
+        EXPECT_NEAR(q.runningNotch->f0Hz, p.notch->f0Hz, 1e-4 * p.notch->f0Hz); // as halcmd reads it back
+        EXPECT_DOUBLE_EQ(q.runningNotch->q, p.notch->q);
+        EXPECT_FALSE(q.changesSomething()) << q.notchRule;
+        EXPECT_NE(q.notchRule.find("the running notch"), std::string::npos) << q.notchRule;
+        EXPECT_FALSE(second.applyButton()->isEnabled());
+        // The running column of the table shows the notch that runs.
+        QTableWidget* t = second.table();
+        int row = -1;
+        for (int r = 0; r < t->rowCount(); ++r)
+            if (t->item(r, 0) && t->item(r, 0)->text() == gui::NcPidPage::tr("Notch f0 [Hz]"))
+                row = r;
+        ASSERT_GE(row, 0);
+        EXPECT_NEAR(t->item(row, 1)->text().toDouble(), p.notch->f0Hz, 0.01 * p.notch->f0Hz);
+        EXPECT_NEAR(axistune::testing::getp("axistune-notch.f0"), p.notch->f0Hz, 1e-4);
+        maybeScreenshot(&again, "notch-hal-04-again");
+    }
     page.undoButton()->click();
     ASSERT_TRUE(waitUntil([&] { return !page.busy(); }, 60000));
     ASSERT_TRUE(page.undone()) << page.status()->text().toStdString();
