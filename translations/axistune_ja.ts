@@ -6072,13 +6072,13 @@ Read the axis's parameters to see what the drive holds.</source>
     </message>
     <message>
         <location filename="../app/gui/NcPidPage.cpp" line="74" />
-        <location filename="../app/gui/NcPidPage.cpp" line="415" />
+        <location filename="../app/gui/NcPidPage.cpp" line="451" />
         <source>torque or current</source>
         <translation>トルクまたは電流</translation>
     </message>
     <message>
         <location filename="../app/gui/NcPidPage.cpp" line="75" />
-        <location filename="../app/gui/NcPidPage.cpp" line="415" />
+        <location filename="../app/gui/NcPidPage.cpp" line="451" />
         <source>velocity</source>
         <translation>速度</translation>
     </message>
@@ -6138,209 +6138,234 @@ Read the axis's parameters to see what the drive holds.</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="121" />
+        <location filename="../app/gui/NcPidPage.cpp" line="108" />
+        <source>Undo anyway</source>
+        <translation>それでも元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcPidPage.cpp" line="116" />
+        <source>Overwrite what changed in HAL since the apply with what ran before</source>
+        <translation>適用後に HAL で変更された値を、以前の値で上書きする</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcPidPage.cpp" line="131" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="121" />
+        <location filename="../app/gui/NcPidPage.cpp" line="131" />
         <source>Running</source>
         <translation>現在値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="121" />
+        <location filename="../app/gui/NcPidPage.cpp" line="131" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="121" />
+        <location filename="../app/gui/NcPidPage.cpp" line="131" />
         <source>Verified</source>
         <translation>検証値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="121" />
+        <location filename="../app/gui/NcPidPage.cpp" line="131" />
         <source>Rule</source>
         <translation>ルール</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="126" />
+        <location filename="../app/gui/NcPidPage.cpp" line="136" />
         <source>Open loop L [dB]</source>
         <translation>開ループ L [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="177" />
+        <location filename="../app/gui/NcPidPage.cpp" line="189" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): it has no drive filter slots. Its notch is LinuxCNC's biquad component (a notch with 0.5 ≤ Q ≤ 2), inserted after the PID output. This page measures the open loop with the gains that run, proposes a notch at the plant's strongest resonance when it raises the gain margin, inserts it and verifies it by measuring again; the gains are not changed.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプのフィルタスロットはありません。そのノッチは LinuxCNC の biquad コンポーネント (0.5 ≤ Q ≤ 2 のノッチ) で、PID 出力の後に挿入します。このページは現在のゲインで開ループを測定し、ゲイン余裕が上がるときは制御対象の最も強い共振にノッチを提案し、挿入して再測定で検証します。ゲインは変更しません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="183" />
+        <location filename="../app/gui/NcPidPage.cpp" line="195" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): there is no drive velocity loop. This page measures the open loop with the gains that run, proposes P, I, D, FF1 and FF2 (and a biquad notch after the PID output when it lets the crossover rise) for the margins asked, with the rule behind each number, applies them live and verifies them by measuring again. A loop that misses the margins gets back what ran before.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプの速度ループはありません。このページは現在のゲインで開ループを測定し、要求された余裕に対して P、I、D、FF1、FF2 (交差周波数を上げられるときは PID 出力の後の biquad ノッチも) を各値のルールとともに提案し、運転中に適用して再測定で検証します。余裕を満たさないループは元の設定に戻します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="264" />
+        <location filename="../app/gui/NcPidPage.cpp" line="281" />
         <source>Measuring the open loop of %1 with the gains that run…</source>
         <translation>現在のゲインで %1 の開ループを測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="279" />
+        <location filename="../app/gui/NcPidPage.cpp" line="296" />
         <source>Aborted: the excitation stopped and what AxisTune inserted was removed. %1</source>
         <translation>中止しました: 加振を止め、AxisTune が挿入したものを取り除きました。%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="280" />
+        <location filename="../app/gui/NcPidPage.cpp" line="297" />
         <source>Measured, but no proposal: %1</source>
         <translation>測定しましたが提案はありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="280" />
+        <location filename="../app/gui/NcPidPage.cpp" line="297" />
         <source>The measurement failed: %1</source>
         <translation>測定に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="291" />
+        <location filename="../app/gui/NcPidPage.cpp" line="308" />
         <source>Nothing to change: %1</source>
         <translation>変更するものはありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="294" />
+        <location filename="../app/gui/NcPidPage.cpp" line="311" />
         <source>Proposed: a notch at %1 Hz, Q %2. Nothing was written yet.</source>
         <translation>提案: %1 Hz、Q %2 のノッチ。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="296" />
+        <location filename="../app/gui/NcPidPage.cpp" line="313" />
         <source>Proposed below with the predicted margins. Nothing was written yet.</source>
         <translation>提案と予測余裕を下に示します。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="299" />
+        <location filename="../app/gui/NcPidPage.cpp" line="316" />
         <source>proposed, not applied</source>
         <translation>提案のみ、未適用</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="308" />
+        <location filename="../app/gui/NcPidPage.cpp" line="325" />
         <source>Inserting the notch and measuring the open loop again…</source>
         <translation>ノッチを挿入し、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="309" />
+        <location filename="../app/gui/NcPidPage.cpp" line="326" />
         <source>Writing the gains (read back) and measuring the open loop again…</source>
         <translation>ゲインを書き込み (読み戻し確認)、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="320" />
+        <location filename="../app/gui/NcPidPage.cpp" line="337" />
         <source>Not applied: %1. Nothing was left changed.</source>
         <translation>適用しませんでした: %1。変更は残っていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="326" />
+        <location filename="../app/gui/NcPidPage.cpp" line="343" />
         <source>Applied and verified: the measured margins are in the table. Undo puts back what ran before.</source>
         <translation>適用して検証しました: 測定した余裕は表にあります。「元に戻す」で以前の設定に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="328" />
+        <location filename="../app/gui/NcPidPage.cpp" line="345" />
         <source>Not kept: %1</source>
         <translation>保持しませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="331" />
+        <location filename="../app/gui/NcPidPage.cpp" line="348" />
         <source>applied and verified</source>
         <translation>適用・検証済み</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="346" />
+        <location filename="../app/gui/NcPidPage.cpp" line="374" />
         <source>Putting back what ran before…</source>
         <translation>以前の設定に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="358" />
+        <location filename="../app/gui/NcPidPage.cpp" line="374" />
+        <source>Putting back what ran before, over the later change…</source>
+        <translation>後からの変更を上書きして、以前の状態に戻しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcPidPage.cpp" line="391" />
         <source>Undo refused: %1</source>
         <translation>元に戻すことを拒否しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="361" />
+        <location filename="../app/gui/NcPidPage.cpp" line="396" />
         <source>undone</source>
         <translation>元に戻した</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="366" />
+        <location filename="../app/gui/NcPidPage.cpp" line="396" />
+        <source>undone anyway (over a later change)</source>
+        <translation>後からの変更を上書きして元に戻しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcPidPage.cpp" line="402" />
         <source>the notch from before (%1 Hz, Q %2) is back</source>
         <translation>以前のノッチ (%1 Hz, Q %2) を戻しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="367" />
+        <location filename="../app/gui/NcPidPage.cpp" line="403" />
         <source>the notch was removed</source>
         <translation>ノッチを取り除きました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="369" />
+        <location filename="../app/gui/NcPidPage.cpp" line="405" />
         <source>Undone: %1.</source>
         <translation>元に戻しました: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="371" />
+        <location filename="../app/gui/NcPidPage.cpp" line="407" />
         <source>, and %1</source>
         <translation>。また、%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="370" />
+        <location filename="../app/gui/NcPidPage.cpp" line="406" />
         <source>Undone: the gains that ran before are back (read back)%1.</source>
         <translation>元に戻しました: 以前のゲインに戻りました (読み戻し確認)%1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="410" />
+        <location filename="../app/gui/NcPidPage.cpp" line="388" />
+        <source>Undo refused: %1. To put back what ran before all the same, tick the box below and press Undo anyway.</source>
+        <translation>元に戻すことを拒否しました: %1。それでも以前の状態に戻すには、下のボックスにチェックを入れて「それでも元に戻す」を押してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/NcPidPage.cpp" line="446" />
         <source>Notch f0 [Hz]</source>
         <translation>ノッチ f0 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="410" />
-        <location filename="../app/gui/NcPidPage.cpp" line="411" />
+        <location filename="../app/gui/NcPidPage.cpp" line="446" />
+        <location filename="../app/gui/NcPidPage.cpp" line="447" />
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="412" />
+        <location filename="../app/gui/NcPidPage.cpp" line="448" />
         <source>Notch Q</source>
         <translation>ノッチ Q</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="414" />
+        <location filename="../app/gui/NcPidPage.cpp" line="450" />
         <source>Drive input</source>
         <translation>サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="421" />
-        <location filename="../app/gui/NcPidPage.cpp" line="426" />
+        <location filename="../app/gui/NcPidPage.cpp" line="457" />
+        <location filename="../app/gui/NcPidPage.cpp" line="462" />
         <source>Crossover [Hz]</source>
         <translation>交差周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="427" />
+        <location filename="../app/gui/NcPidPage.cpp" line="463" />
         <source>Phase margin [°]</source>
         <translation>位相余裕 [°]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="428" />
+        <location filename="../app/gui/NcPidPage.cpp" line="464" />
         <source>Gain margin [dB]</source>
         <translation>ゲイン余裕 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="429" />
+        <location filename="../app/gui/NcPidPage.cpp" line="465" />
         <source>Motion time [s]</source>
         <translation>動作時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="441" />
+        <location filename="../app/gui/NcPidPage.cpp" line="477" />
         <source>measured, running gains</source>
         <translation>測定、現在のゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="443" />
+        <location filename="../app/gui/NcPidPage.cpp" line="479" />
         <source>predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="446" />
+        <location filename="../app/gui/NcPidPage.cpp" line="482" />
         <source>verified (measured after applying)</source>
         <translation>検証 (適用後に測定)</translation>
     </message>

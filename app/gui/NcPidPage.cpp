@@ -105,10 +105,20 @@ NcPidPage::NcPidPage(AppContext& ctx, autotune::PidTuneScope scope, QWidget* par
     m_undo->setObjectName("ncPidUndo");
     m_abort = new QPushButton(tr("Abort"), this);
     m_abort->setObjectName("ncPidAbort");
+    m_undoAnyway = new QPushButton(tr("Undo anyway"), this);
+    m_undoAnyway->setObjectName("ncPidUndoAnyway");
     for (auto* b : {m_measure, m_apply, m_undo, m_abort})
         buttons->addWidget(b);
     buttons->addStretch(1);
     lay->addLayout(buttons);
+    // After a refused Undo: the second confirmation is this box; then Undo anyway.
+    auto* anyway = new QHBoxLayout;
+    m_overwrite = new QCheckBox(tr("Overwrite what changed in HAL since the apply with what ran before"), this);
+    m_overwrite->setObjectName("ncPidOverwrite");
+    anyway->addWidget(m_overwrite);
+    anyway->addWidget(m_undoAnyway);
+    anyway->addStretch(1);
+    lay->addLayout(anyway);
     m_bar = new QProgressBar(this);
     m_bar->setRange(0, 1000);
     lay->addWidget(m_bar);
@@ -134,6 +144,8 @@ NcPidPage::NcPidPage(AppContext& ctx, autotune::PidTuneScope scope, QWidget* par
     connect(m_measure, &QPushButton::clicked, this, &NcPidPage::measure);
     connect(m_apply, &QPushButton::clicked, this, &NcPidPage::applyProposal);
     connect(m_undo, &QPushButton::clicked, this, &NcPidPage::undo);
+    connect(m_undoAnyway, &QPushButton::clicked, this, &NcPidPage::undoAnyway);
+    connect(m_overwrite, &QCheckBox::toggled, this, &NcPidPage::updateButtons);
     connect(m_abort, &QPushButton::clicked, this, &NcPidPage::abortRun);
     connect(m_confirm, &QCheckBox::toggled, this, &NcPidPage::updateButtons);
     connect(m_axisBox, &QComboBox::currentTextChanged, this, [this](const QString& axis) {
@@ -223,6 +235,9 @@ void NcPidPage::updateButtons()
     m_apply->setEnabled(idle && connected && m_confirm->isChecked() && m_proposal && m_proposal->changesSomething() &&
                         !m_applied);
     m_undo->setEnabled(idle && connected && appliedNow);
+    m_overwrite->setVisible(m_undoRefused && appliedNow);
+    m_undoAnyway->setVisible(m_undoRefused && appliedNow);
+    m_undoAnyway->setEnabled(idle && connected && appliedNow && m_overwrite->isChecked());
     m_abort->setEnabled(!idle);
     for (QWidget* w : std::initializer_list<QWidget*>{m_axisBox, m_amplitude, m_input, m_pm, m_gm, m_notch})
         w->setEnabled(idle && !appliedNow);
@@ -253,6 +268,8 @@ void NcPidPage::clearResult()
     m_proposal.reset();
     m_applied.reset();
     m_undone = false;
+    m_undoRefused = false;
+    m_overwrite->setChecked(false);
     m_table->setRowCount(0);
     m_plot->clearResponses();
 }
@@ -335,6 +352,17 @@ void NcPidPage::onApplied(const DriveReply& r)
 
 void NcPidPage::undo()
 {
+    startUndo(false);
+}
+
+void NcPidPage::undoAnyway()
+{
+    if (m_overwrite->isChecked())
+        startUndo(true);
+}
+
+void NcPidPage::startUndo(bool force)
+{
     if (!m_applied || !m_applied->applied)
         return;
     autotune::AppliedTune tune;
@@ -343,9 +371,10 @@ void NcPidPage::undo()
         tune.applied[k] = v;
         tune.before[k] = m_applied->before.at(k);
     }
-    setStatus(tr("Putting back what ran before…"));
+    setStatus(force ? tr("Putting back what ran before, over the later change…") : tr("Putting back what ran before…"));
     autotune::PidTuneNotchUndo notch{tune.axis, m_applied->notchBefore, m_proposal->notch};
-    auto* r = m_ctx.drive().undoPidTune(tune, notch, false);
+    m_undoForced = force;
+    auto* r = m_ctx.drive().undoPidTune(tune, notch, force);
     connect(r, &DriveRequest::finished, this, &NcPidPage::onUndone);
     m_request = r;
     updateButtons();
@@ -355,10 +384,17 @@ void NcPidPage::onUndone(const DriveReply& r)
 {
     m_request = nullptr;
     if (!r.ok) {
-        setStatus(tr("Undo refused: %1").arg(r.error), true);
+        m_undoRefused = r.code == ErrorCode::Safety;
+        setStatus(m_undoRefused ? tr("Undo refused: %1. To put back what ran before all the same, tick the box below and "
+                                     "press Undo anyway.")
+                                      .arg(r.error)
+                                : tr("Undo refused: %1").arg(r.error),
+                  true);
     } else {
         m_undone = true;
-        saveSession(tr("undone"), store::SessionStatus::Completed);
+        m_undoRefused = false;
+        saveSession(m_undoForced ? tr("undone anyway (over a later change)") : tr("undone"),
+                    store::SessionStatus::Completed);
         const auto& before = m_applied->notchBefore;
         const bool notchChanged = m_proposal && m_proposal->notchChanges();
         const QString notch =

@@ -52,6 +52,8 @@ public:
     QPushButton* measureButton() const { return m_measure; }
     QPushButton* applyButton() const { return m_apply; }
     QPushButton* undoButton() const { return m_undo; }
+    QPushButton* undoAnywayButton() const { return m_undoAnyway; }
+    QCheckBox* overwriteBox() const { return m_overwrite; }
     QPushButton* abortButton() const { return m_abort; }
     QCheckBox* confirmation() const { return m_confirm; }
     QDoubleSpinBox* amplitudeBox() const { return m_amplitude; }
@@ -71,6 +73,7 @@ public slots:
     void measure();
     void applyProposal();
     void undo();
+    void undoAnyway(); ///< after a refused Undo: overwrites what changed since the apply (the box ticked first)
     void abortRun();
 
 private:
@@ -78,6 +81,7 @@ private:
     void onMeasured(const DriveReply& r);
     void onApplied(const DriveReply& r);
     void onUndone(const DriveReply& r);
+    void startUndo(bool force);
     void track(DriveRequest* r);
     void showTable();
     void showPlot();
@@ -101,6 +105,8 @@ private:
     QPushButton* m_measure = nullptr;
     QPushButton* m_apply = nullptr;
     QPushButton* m_undo = nullptr;
+    QPushButton* m_undoAnyway = nullptr;
+    QCheckBox* m_overwrite = nullptr;
     QPushButton* m_abort = nullptr;
     QProgressBar* m_bar = nullptr;
     QLabel* m_status = nullptr;
@@ -112,6 +118,8 @@ private:
     std::shared_ptr<const autotune::PidTuneProposal> m_proposal;
     std::shared_ptr<const autotune::PidTuneApplied> m_applied;
     bool m_undone = false;
+    bool m_undoRefused = false; ///< the last Undo was refused because HAL no longer holds what was applied
+    bool m_undoForced = false;
     qint64 m_sessionId = 0;
     int m_pendingSaves = 0;
 };

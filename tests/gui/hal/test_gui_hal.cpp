@@ -309,8 +309,9 @@ double exactResonanceHz()
 // the open loop, proposes P, I, D, FF1, FF2 and a biquad notch with a rule for each, applies them live and verifies
 // them: the measured margins meet the (PM ≥ 45°, GM ≥ 6 dB) within 3° / 1 dB of the prediction
 // (expectVerifiedMargins, as pid-tune's CLI test), HAL holds the proposed gains (halcmd getp) and the notch within 2 %
-// of the exact plant's resonance; Undo puts back the configuration's gains and removes the notch, leaving HAL's nets
-// and functions as they were; the session holds the three loops and the result.
+// of the exact plant's resonance; the session holds the three loops and the result. After a later change of Pgain in
+// HAL, Undo is refused with nothing written and Undo anyway (after its box is ticked) puts back the configuration's
+// gains and removes the notch, leaving HAL's nets and functions as they were.
 TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
 {
     gui::AppContext ctx;
@@ -370,12 +371,30 @@ TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
     EXPECT_TRUE(saved->result("pid-tune")->at("applied").get<bool>());
     EXPECT_EQ(saved->journal.size(), 5u);
 
+    // Someone changes Pgain in HAL after the apply: Undo is refused with nothing written (the later change named);
+    // Undo anyway appears and stays disabled until its box is ticked (the second confirmation); then it puts back
+    // the gains and removes the notch.
+    axistune::testing::halText({"setp", "pid.x.Pgain", "0.3"});
+    EXPECT_FALSE(page.undoAnywayButton()->isVisible());
     ASSERT_TRUE(page.undoButton()->isEnabled());
     page.undoButton()->click();
     ASSERT_TRUE(waitUntil([&] { return !page.busy(); }, 60000));
+    EXPECT_FALSE(page.undone());
+    EXPECT_TRUE(page.status()->text().contains(QStringLiteral("Pgain"))) << page.status()->text().toStdString();
+    EXPECT_DOUBLE_EQ(axistune::testing::getp("pid.x.Pgain"), 0.3);
+    EXPECT_NEAR(axistune::testing::getp("pid.x.Igain"), g.i, 1e-6 * std::abs(g.i)); // nothing written
+    EXPECT_NEAR(axistune::testing::getp("axistune-notch.f0"), page.proposal()->notch->f0Hz, 1e-4);
+    ASSERT_TRUE(page.undoAnywayButton()->isVisible());
+    EXPECT_FALSE(page.undoAnywayButton()->isEnabled());
+    maybeScreenshot(&v, "velocity-hal-04-undo-refused");
+    page.overwriteBox()->setChecked(true);
+    ASSERT_TRUE(page.undoAnywayButton()->isEnabled());
+    page.undoAnywayButton()->click();
+    ASSERT_TRUE(waitUntil([&] { return !page.busy(); }, 60000));
     ASSERT_TRUE(page.undone()) << page.status()->text().toStdString();
     EXPECT_DOUBLE_EQ(axistune::testing::getp("pid.x.Pgain"), pBefore);
-    maybeScreenshot(&v, "velocity-hal-04-undone");
+    EXPECT_FALSE(page.undoAnywayButton()->isVisible());
+    maybeScreenshot(&v, "velocity-hal-05-undone");
     expectHalUnchanged();
 }
 
