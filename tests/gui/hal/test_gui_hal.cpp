@@ -53,7 +53,10 @@ namespace {
 class GuiOnHal : public axistune::testing::HalTestbed {
 protected:
     /// Starts the test machine (1 kHz servo thread) and connects `ctx` to hal: as the app does (AXISTUNE_HALCMD).
-    void connectBed(gui::AppContext& ctx)
+    /// Starts the test machine and connects to it through `uri` (hal:, or linuxcnc: with the machine's own INI, whose
+    /// axis is X); `axis` is the name the connection gives pid.x.
+    void connectBed(gui::AppContext& ctx, const QString& uri = QStringLiteral("hal:"),
+                    const QString& axis = QStringLiteral("pid.x"))
     {
         startBed(1000000);
         if (HasFatalFailure())
@@ -63,9 +66,10 @@ protected:
         m_funct = halText({"-s", "show", "funct"});
         ASSERT_TRUE(m_tmp.isValid());
         ASSERT_TRUE(ctx.openDatabase(m_tmp.filePath("hal.db")));
-        ctx.drive().connectTo(QStringLiteral("hal:"));
-        ASSERT_TRUE(waitUntil([&] { return ctx.drive().isConnected(); }, 30000)) << "hal: did not connect";
-        ASSERT_TRUE(ctx.axes().contains(QStringLiteral("pid.x"))) << ctx.axes().join(' ').toStdString();
+        ctx.drive().connectTo(uri);
+        ASSERT_TRUE(waitUntil([&] { return ctx.drive().isConnected(); }, 30000)) << uri.toStdString()
+                                                                                  << " did not connect";
+        ASSERT_TRUE(ctx.axes().contains(axis)) << ctx.axes().join(' ').toStdString();
     }
     /// HAL's nets (names, types, writers, readers) and functions are as they were before the test.
     void expectHalUnchanged()
@@ -395,6 +399,49 @@ TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
     EXPECT_DOUBLE_EQ(axistune::testing::getp("pid.x.Pgain"), pBefore);
     EXPECT_FALSE(page.undoAnywayButton()->isVisible());
     maybeScreenshot(&v, "velocity-hal-05-undone");
+    expectHalUnchanged();
+}
+
+// The NC PID page through linuxcnc: (the test machine's own INI; its axis X is pid.x): the velocity/position wizard
+// names the axis by its letter, measures, proposes and applies gains and a notch through the INI's axis (HAL's
+// pid.x holds the proposed gains, the notch runs after pid.x), the measured margins lie within 3° / 1 dB of the
+// prediction, and Undo puts back the gains and removes the notch, leaving HAL as it was.
+TEST_F(GuiOnHal, NcPidPageThroughLinuxCncTunesAxisXByItsLetter)
+{
+    gui::AppContext ctx;
+    const QString ini =
+        QString::fromStdString(std::string(AXISTUNE_SOURCE_DIR) + "/linuxcnc/testbed/axistune-testbed.ini");
+    connectBed(ctx, QStringLiteral("linuxcnc:") + ini, QStringLiteral("X"));
+    if (HasFatalFailure())
+        return;
+    const double pBefore = axistune::testing::getp("pid.x.Pgain");
+    gui::VelocityLoopWizard v(ctx);
+    v.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&v));
+    ASSERT_TRUE(waitUntil([&] { return v.sourcePage()->ncPid(); }, 30000));
+    v.next();
+    ASSERT_EQ(v.currentId(), int(gui::VelocityLoopWizard::NcPid));
+    gui::NcPidPage& page = *v.ncPidPage();
+    EXPECT_EQ(page.axis(), QStringLiteral("X"));
+    measureOn(page);
+    if (HasFatalFailure())
+        return;
+    ASSERT_TRUE(page.proposal()->notch) << page.proposal()->notchRule;
+    applyOn(page);
+    if (HasFatalFailure())
+        return;
+    ASSERT_TRUE(page.applied()->applied) << page.applied()->refusal;
+    const auto& p = *page.proposal();
+    EXPECT_NEAR(page.applied()->measured.phaseMarginDeg, p.predicted.phaseMarginDeg, 3.0);
+    EXPECT_NEAR(page.applied()->measured.gainMarginDb, p.predicted.gainMarginDb, 1.0);
+    EXPECT_NEAR(axistune::testing::getp("pid.x.Pgain"), p.gains.p, 1e-6 * p.gains.p); // halcmd: 7 digits
+    EXPECT_NEAR(axistune::testing::getp("pid.x.Dgain"), p.gains.d, 1e-6 * p.gains.d);
+    EXPECT_NEAR(axistune::testing::getp("axistune-notch.f0"), p.notch->f0Hz, 1e-4);
+    ASSERT_TRUE(page.undoButton()->isEnabled());
+    page.undoButton()->click();
+    ASSERT_TRUE(waitUntil([&] { return !page.busy(); }, 60000));
+    ASSERT_TRUE(page.undone()) << page.status()->text().toStdString();
+    EXPECT_DOUBLE_EQ(axistune::testing::getp("pid.x.Pgain"), pBefore);
     expectHalUnchanged();
 }
 
