@@ -17,14 +17,34 @@ namespace gui {
 namespace {
 /// Relative tolerance of the read-back check (float32 on the Modbus link has 6e-8).
 constexpr double kReadBackRelTol = 1e-6;
-}  // namespace
+} // namespace
 
-bool isConnectionError(ErrorCode code) { return code == ErrorCode::Device || code == ErrorCode::Io; }
+bool isConnectionError(ErrorCode code)
+{
+    return code == ErrorCode::Device || code == ErrorCode::Io;
+}
 
 // ---------------------------------------------------------------------------------------------
 // Worker (runs on the drive thread)
 
 DriveWorker::~DriveWorker() = default;
+
+Error DriveWorker::notConnected()
+{
+    return {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()};
+}
+
+std::optional<DriveReply> DriveWorker::refuseBeforeStart(DriveReply r, const std::atomic<bool>& cancel)
+{
+    if (cancel.load()) {
+        r.code = ErrorCode::Aborted;
+        r.error = QCoreApplication::translate("DriveController", "Aborted by the user before the test started");
+        return r;
+    }
+    if (!m_drive)
+        return fail(r, notConnected());
+    return std::nullopt;
+}
 
 DriveReply DriveWorker::fail(DriveReply r, const Error& e)
 {
@@ -76,7 +96,7 @@ DriveReply DriveWorker::doMetadata(int id, const QString& axis)
     r.kind = DriveReply::Kind::Metadata;
     r.axis = axis;
     if (!m_drive)
-        return fail(r, {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r, notConnected());
     auto m = m_drive->parameterMetadata(axis.toStdString());
     if (!m)
         return fail(r, m.error());
@@ -92,7 +112,7 @@ DriveReply DriveWorker::doRead(int id, const QString& axis, const QStringList& k
     r.kind = DriveReply::Kind::ReadParameters;
     r.axis = axis;
     if (!m_drive)
-        return fail(r, {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r, notConnected());
     std::vector<std::string> k;
     for (const auto& s : keys)
         k.push_back(s.toStdString());
@@ -111,7 +131,7 @@ DriveReply DriveWorker::doWrite(int id, const QString& axis, const model::Parame
     r.kind = DriveReply::Kind::WriteParameters;
     r.axis = axis;
     if (!m_drive)
-        return fail(r, {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r, notConnected());
     const std::string a = axis.toStdString();
     if (auto s = m_drive->writeParameters(a, values); !s)
         return fail(r, s.error());
@@ -147,14 +167,8 @@ DriveReply DriveWorker::doTest(int id, const device::TestRequest& request, std::
     r.kind = DriveReply::Kind::Test;
     r.axis = qs(request.axis);
     r.testState = device::TestState::Aborted;
-    if (cancel->load()) {
-        // Aborted while queued: never started, nothing changed on the drive.
-        r.code = ErrorCode::Aborted;
-        r.error = QCoreApplication::translate("DriveController", "Aborted by the user before the test started");
-        return r;
-    }
-    if (!m_drive)
-        return fail(r, {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+    if (auto refused = refuseBeforeStart(r, *cancel))
+        return *refused;
     device::RunOptions o;
     o.abort = cancel.get();
     double lastReported = -1.0;
@@ -278,7 +292,8 @@ DriveRequest* DriveController::post(DriveReply::Kind kind, std::function<DriveRe
     };
     if (side) {
         w->enqueueSide(std::move(run));
-        QMetaObject::invokeMethod(w, [w]() { w->drainSide(); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            w, [w]() { w->drainSide(); }, Qt::QueuedConnection);
     } else {
         QMetaObject::invokeMethod(w, std::move(run), Qt::QueuedConnection);
     }
@@ -359,5 +374,5 @@ void DriveController::abort()
         open.cancel->store(true);
 }
 
-}  // namespace gui
-}  // namespace axistune
+} // namespace gui
+} // namespace axistune

@@ -291,6 +291,11 @@ signals:
 
 private:
     DriveReply fail(DriveReply r, const Error& e);
+    /// "Not connected" (Device), translated.
+    static Error notConnected();
+    /// A long job's refusal before it starts: Aborted when `cancel` was set while it was queued (it never started,
+    /// nothing changed on the drive), Device when no drive is connected; none when the job may run.
+    std::optional<DriveReply> refuseBeforeStart(DriveReply r, const std::atomic<bool>& cancel);
     std::unique_ptr<device::Drive> m_drive;
     std::mutex m_sideMutex;
     std::deque<std::function<void()>> m_side;

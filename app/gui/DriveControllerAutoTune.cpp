@@ -18,14 +18,8 @@ DriveReply DriveWorker::doAutoTune(int id, autotune::Options options, std::share
     r.id = id;
     r.kind = DriveReply::Kind::AutoTune;
     r.axis = QString::fromStdString(options.axis);
-    if (cancel->load()) {
-        r.code = ErrorCode::Aborted;
-        r.error = QCoreApplication::translate("DriveController", "Aborted by the user before the test started");
-        return r;
-    }
-    if (!m_drive)
-        return fail(r,
-                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+    if (auto refused = refuseBeforeStart(r, *cancel))
+        return *refused;
     // The bar counts the nine steps equally; within a step it follows the running test. It never falls (a second
     // design attempt runs steps 5 to 8 again while the bar waits).
     const auto& names = autotune::stepNames();
@@ -74,8 +68,7 @@ DriveReply DriveWorker::doAutoTuneTravel(int id, const QString& axis)
     r.kind = DriveReply::Kind::Describe;
     r.axis = axis;
     if (!m_drive)
-        return fail(r,
-                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r, notConnected());
     auto t = autotune::travelChoice(*m_drive, axis.toStdString());
     if (!t)
         return fail(r, t.error());
@@ -91,8 +84,7 @@ DriveReply DriveWorker::doAutoTuneUndo(int id, const autotune::AppliedTune& tune
     r.kind = DriveReply::Kind::AutoTuneUndo;
     r.axis = QString::fromStdString(tune.axis);
     if (!m_drive)
-        return fail(r,
-                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r, notConnected());
     if (!force) {
         // The check undoTune makes, kept per parameter for the window (which key changed, to what); undoTune checks
         // again before it writes.

@@ -15,8 +15,7 @@ DriveReply DriveWorker::doDescribe(int id, const QString& axis)
     r.kind = DriveReply::Kind::Describe;
     r.axis = axis;
     if (!m_drive)
-        return fail(r,
-                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r, notConnected());
     auto caps = m_drive->capabilities(axis.toStdString());
     if (!caps)
         return fail(r, caps.error());
@@ -36,8 +35,7 @@ DriveReply DriveWorker::doPlan(int id, const device::TestRequest& request)
     r.kind = DriveReply::Kind::Plan;
     r.axis = QString::fromStdString(request.axis);
     if (!m_drive)
-        return fail(r,
-                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r, notConnected());
     auto plan = m_drive->planTest(request);
     if (!plan)
         return fail(r, plan.error());

@@ -20,14 +20,8 @@ DriveReply DriveWorker::doPidTune(int id, std::shared_ptr<const autotune::PidTun
     r.id = id;
     r.kind = DriveReply::Kind::PidTune;
     r.axis = QString::fromStdString(request->axis);
-    if (cancel->load()) {
-        r.code = ErrorCode::Aborted;
-        r.error = QCoreApplication::translate("DriveController", "Aborted by the user before the test started");
-        return r;
-    }
-    if (!m_drive)
-        return fail(r,
-                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+    if (auto refused = refuseBeforeStart(r, *cancel))
+        return *refused;
     device::RunOptions run;
     run.abort = cancel.get();
     double shown = 0.0;
@@ -64,8 +58,7 @@ DriveReply DriveWorker::doPidTuneUndo(int id, const autotune::AppliedTune& tune,
     r.kind = DriveReply::Kind::AutoTuneUndo;
     r.axis = QString::fromStdString(tune.axis);
     if (!m_drive)
-        return fail(r,
-                    {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()});
+        return fail(r, notConnected());
     // The notch is checked first: a refusal there leaves the gains as they are, too.
     if (auto st = autotune::checkPidTuneNotchUndo(*m_drive, notch, force); !st)
         return fail(r, st.error());
@@ -102,12 +95,11 @@ DriveRequest* DriveController::applyPidTune(const autotune::PidTuneRequest& requ
     return r;
 }
 
-DriveRequest* DriveController::undoPidTune(const autotune::AppliedTune& tune,
-                                           const autotune::PidTuneNotchUndo& notch, bool force)
+DriveRequest* DriveController::undoPidTune(const autotune::AppliedTune& tune, const autotune::PidTuneNotchUndo& notch,
+                                           bool force)
 {
-    return post(DriveReply::Kind::AutoTuneUndo, [tune, notch, force](DriveWorker& w, int id) {
-        return w.doPidTuneUndo(id, tune, notch, force);
-    });
+    return post(DriveReply::Kind::AutoTuneUndo,
+                [tune, notch, force](DriveWorker& w, int id) { return w.doPidTuneUndo(id, tune, notch, force); });
 }
 
 } // namespace gui

@@ -10,10 +10,6 @@ namespace axistune {
 namespace gui {
 
 namespace {
-Error notConnected()
-{
-    return {ErrorCode::Device, QCoreApplication::translate("DriveController", "Not connected").toStdString()};
-}
 DriveReply scopeReply(int id)
 {
     DriveReply r;
