@@ -46,7 +46,7 @@ std::string errorText(const Error& e)
 std::string recordedCapture()
 {
     static const std::string path = [] {
-        const auto dir = testing::makeTempDir("conformance-replay");
+        static const auto dir = testing::makeTempDir("conformance-replay"); // removed when the process ends
         const std::string file = (dir / "step.csv").string();
         auto d = connect({"sim:vmc", kSeed});
         if (!d)

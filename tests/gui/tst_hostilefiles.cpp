@@ -23,6 +23,7 @@
 #include <QtTest>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "tests/app/cli/CliRunner.h"
 #include "tests/gui/GuiTestUtil.h"
@@ -49,6 +50,7 @@ QStringList fuzzInputs(const QString& target)
 struct SpecialFiles {
     QTemporaryDir dir;
     QStringList paths;
+    QByteArray raw; ///< the name that is not UTF-8, as bytes
     SpecialFiles(const QString& ext)
     {
         const QString fifo = dir.filePath("fifo" + ext);
@@ -58,13 +60,15 @@ struct SpecialFiles {
         QDir(dir.path()).mkdir("folder" + ext);
         paths << dir.filePath("folder" + ext);
         paths << dir.filePath("missing" + ext);
-        const QByteArray raw = QFile::encodeName(dir.path()) + "/name-\xff\xfe" + ext.toUtf8();
+        raw = QFile::encodeName(dir.path()) + "/name-\xff\xfe" + ext.toUtf8();
         if (FILE* f = std::fopen(raw.constData(), "w")) {
             std::fputs("x\n", f);
             std::fclose(f);
         }
         paths << QFile::decodeName(raw);
     }
+    // QTemporaryDir removes by decoded names and cannot name this file: it goes first, so the folder goes too.
+    ~SpecialFiles() { ::unlink(raw.constData()); }
 };
 
 /// The shown text names the file (its name; for a directory or /dev/zero the path).

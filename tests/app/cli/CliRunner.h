@@ -2,6 +2,8 @@
 #pragma once
 // Runs the real axistune-cli binary from end-to-end tests and captures exit code, stdout and stderr.
 
+#include "tests/ScopedTempDir.h"
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -28,13 +30,10 @@ inline std::string readFileText(const std::filesystem::path& p)
     return ss.str();
 }
 
-/// A fresh temporary directory for one test.
-inline std::filesystem::path makeTempDir(const std::string& tag)
+/// A fresh temporary directory for one test, removed with its contents when the returned object goes out of scope.
+inline ScopedTempDir makeTempDir(const std::string& tag)
 {
-    auto base = std::filesystem::temp_directory_path() / ("axistune-" + tag + "-XXXXXX");
-    std::string tmpl = base.string();
-    char* d = mkdtemp(tmpl.data());
-    return d ? std::filesystem::path(d) : std::filesystem::temp_directory_path();
+    return ScopedTempDir(tag);
 }
 
 /// Runs `AXISTUNE_CLI args` through the shell (args are passed as written).
@@ -49,7 +48,6 @@ inline CliResult runCli(const std::string& args)
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     r.out = readFileText(outPath);
     r.err = readFileText(errPath);
-    std::filesystem::remove_all(dir);
     return r;
 }
 

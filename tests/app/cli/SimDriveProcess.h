@@ -20,7 +20,6 @@ class SimDrive {
 public:
     explicit SimDrive(const std::string& args)
     {
-        m_dir = makeTempDir("simdrive");
         m_errPath = (m_dir / "stderr.txt").string();
         int fds[2];
         if (pipe(fds) != 0)
@@ -56,7 +55,6 @@ public:
         stop(SIGTERM);
         if (m_out >= 0)
             close(m_out);
-        std::filesystem::remove_all(m_dir);
     }
     /// Sends the signal and waits (at most 5 s) for the process; returns its exit status or -1.
     int stop(int sig)
@@ -85,7 +83,7 @@ public:
     std::string log() const { return readFileText(m_errPath); }
 
 private:
-    std::filesystem::path m_dir;
+    ScopedTempDir m_dir{"simdrive"};
     std::string m_errPath;
     pid_t m_pid = -1;
     int m_out = -1;

@@ -28,14 +28,16 @@ TEST(CliCapture, StepOnVmcWritesACaptureCsv)
 
 TEST(CliCapture, BadArgumentsGiveExitCode2WithAMessage)
 {
-    auto r = runCli("capture --connect sim:nosuch --axis X --out /tmp/x.csv");
+    const auto dir = makeTempDir("capture-bad"); // nothing is written there, unless a refusal fails
+    const std::string out = (dir / "x.csv").string();
+    auto r = runCli("capture --connect sim:nosuch --axis X --out " + out);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("nosuch"), std::string::npos);
-    r = runCli("capture --connect sim:vmc --axis W --out /tmp/x.csv");
+    r = runCli("capture --connect sim:vmc --axis W --out " + out);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("no axis 'W'"), std::string::npos);
-    r = runCli("capture --connect sim:vmc --axis X --test step --amplitude 1e9 --out /tmp/x.csv");
+    r = runCli("capture --connect sim:vmc --axis X --test step --amplitude 1e9 --out " + out);
     EXPECT_EQ(r.exitCode, 2);
-    r = runCli("capture --connect sim:vmc --axis X --test dance --out /tmp/x.csv");
+    r = runCli("capture --connect sim:vmc --axis X --test dance --out " + out);
     EXPECT_EQ(r.exitCode, 2);
 }

@@ -66,7 +66,9 @@ TEST(CliCaptureFrf, PrbsGivesCoherence)
 
 TEST(CliCaptureFrf, BadOptionsGiveExitCode2)
 {
-    const std::string base = "capture --connect sim:dd-table --axis C --test frf --out /tmp/axistune_simfrf_bad.csv ";
+    const auto dir = makeTempDir("capture-frf-bad"); // nothing is written there, unless a refusal fails
+    const std::string out = (dir / "axistune_simfrf_bad.csv").string();
+    const std::string base = "capture --connect sim:dd-table --axis C --test frf --out " + out + " ";
     auto r = runCli(base + "--method swoop");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("--method"), std::string::npos);
@@ -78,9 +80,10 @@ TEST(CliCaptureFrf, BadOptionsGiveExitCode2)
     EXPECT_NE(r.err.find("fmax"), std::string::npos);
     r = runCli(base + "--points 0");
     EXPECT_EQ(r.exitCode, 2);
-    r = runCli(base + "--method prbs --fmax 1000 --sweep-out /tmp/axistune_simfrf_bad_sweep.csv");
+    r = runCli(base + "--method prbs --fmax 1000 --sweep-out " + (dir / "axistune_simfrf_bad_sweep.csv").string());
     EXPECT_EQ(r.exitCode, 2);
-    r = runCli("capture --connect sim:vmc --axis X --test step --amplitude 1 --sweep-out /tmp/s.csv --out /tmp/axistune_simfrf_bad.csv");
+    r = runCli("capture --connect sim:vmc --axis X --test step --amplitude 1 --sweep-out " + (dir / "s.csv").string() +
+               " --out " + out);
     EXPECT_EQ(r.exitCode, 2);
     // A peak in output units is hal:'s (docs/linuxcnc.md); the simulated drive takes % of rated torque and says so.
     for (const char* method : {"multisweep", "multisine"}) {

@@ -260,7 +260,8 @@ TEST(CliCircle, SetAppliesCompensationAndInjectedErrorsReachTheBallbar)
 
 TEST(CliCircle, BadOptionsExitTwoWithAClearMessage)
 {
-    const auto out = (makeTempDir("circle") / "x.csv").string();
+    const auto dir = makeTempDir("circle");
+    const auto out = (dir / "x.csv").string();
     auto r = runCli("circle --connect sim:vmc --set Y:lostmotion.nothing=1 --out " + out);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("lostmotion.nothing"), std::string::npos) << r.err;

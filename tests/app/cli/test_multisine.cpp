@@ -112,7 +112,9 @@ TEST(CliMultisine, ShapedFromAPreviousFrfRuns)
 
 TEST(CliMultisine, BadOptionsExitTwo)
 {
-    const std::string base = "capture --connect sim:dd-table --axis C --test frf --out /tmp/never-written.csv ";
+    const auto dir = makeTempDir("multisine-bad"); // nothing is written there, unless a refusal fails
+    const std::string base =
+        "capture --connect sim:dd-table --axis C --test frf --out " + (dir / "never-written.csv").string() + " ";
     struct Case {
         std::string args, message;
     };

@@ -22,8 +22,6 @@ const std::string kData = AXISTUNE_TEST_DATA_DIR;
 
 class Robustness : public ::testing::Test {
 protected:
-    void SetUp() override { m_dir = makeTempDir("robust"); }
-    void TearDown() override { fs::remove_all(m_dir); }
     std::string write(const std::string& name, const std::string& text)
     {
         const auto p = m_dir / name;
@@ -31,7 +29,7 @@ protected:
         return p.string();
     }
     std::string quoted(const std::string& p) const { return "'" + p + "'"; }
-    fs::path m_dir;
+    ScopedTempDir m_dir{"robust"}; // one per test, removed after it
 };
 
 /// Exit 2 and the stderr names every fragment.

@@ -25,15 +25,12 @@ nlohmann::json readJson(const std::string& path)
 
 TEST(SimdriveMap, WriteMapGivesTheCommittedMap)
 {
-    char dir[] = "/tmp/axistune-mapXXXXXX";
-    ASSERT_NE(mkdtemp(dir), nullptr);
-    const std::string out = std::string(dir) + "/map.json";
+    const axistune::testing::ScopedTempDir dir("map");
+    const std::string out = (dir / "map.json").string();
     const std::string cmd = std::string(AXISTUNE_SIMDRIVE) + " --write-map " + out + " >/dev/null 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     const auto gen = readJson(out);
     const auto committed = readJson(std::string(AXISTUNE_TEST_DATA_DIR) + "/../../resources/drives/axistune-sim.json");
-    std::remove(out.c_str());
-    std::remove(dir);
     ASSERT_EQ(gen["fields"].size(), committed["fields"].size());
     for (const auto& [name, f] : committed["fields"].items()) {
         ASSERT_TRUE(gen["fields"].contains(name)) << name;

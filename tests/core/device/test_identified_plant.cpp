@@ -10,6 +10,7 @@
 #include "core/device/TestRunner.h"
 #include "core/ident/IdentificationJson.h"
 #include "core/ident/MotionIdentification.h"
+#include "tests/ScopedTempDir.h"
 
 #include <cmath>
 #include <filesystem>
@@ -31,9 +32,9 @@ std::string writeModel(ident::AxisMotion motion)
     r.viscous = {kFv, 1.0};
     r.coulomb = {kFc, 0.1};
     r.offset = {-3.1648, 0.04};
-    const auto path = std::filesystem::temp_directory_path() /
-                      (std::string("axistune-model-") + ident::axisMotionName(motion) + "-" +
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json");
+    static const axistune::testing::ScopedTempDir dir("model"); // removed when the process ends
+    const auto path = dir / (std::string("axistune-model-") + ident::axisMotionName(motion) + "-" +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json");
     std::ofstream(path) << ident::identificationToJson(r, motion).dump(2);
     return path.string();
 }

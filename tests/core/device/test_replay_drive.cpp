@@ -4,6 +4,7 @@
 // tests/conformance/.
 #include "core/device/Drive.h"
 #include "core/io/CaptureCsv.h"
+#include "tests/ScopedTempDir.h"
 
 #include <filesystem>
 #include <fstream>
@@ -14,9 +15,11 @@ namespace {
 
 std::string writeFile(const std::string& name, const std::string& text)
 {
-    // One directory per test: ctest runs the tests of this file as parallel processes.
+    // One directory per test, in one directory per process (ctest runs the tests of this file as parallel
+    // processes), removed when the process ends — also after a failed test.
+    static const axistune::testing::ScopedTempDir base("replay-test");
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const auto dir = std::filesystem::temp_directory_path() / "axistune-replay-test" / info->name();
+    const auto dir = base / info->name();
     std::filesystem::create_directories(dir);
     const auto path = (dir / name).string();
     std::ofstream(path) << text;

@@ -8,6 +8,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/io/ScopeCsv.h"
 #include "core/model/Number.h"
+#include "tests/ScopedTempDir.h"
 
 #include <cmath>
 #include <filesystem>
@@ -374,8 +375,7 @@ TEST(ScopeCsv, ACaptureReloadsIdenticalFromItsCsv)
     appendScopeRows(rolled, *rows);
     ASSERT_EQ(rolled.rows(), 200u); // one 50 ms slice at 4 kHz
 
-    const auto dir = std::filesystem::temp_directory_path() / "axistune-scope-csv-test";
-    std::filesystem::create_directories(dir);
+    const axistune::testing::ScopedTempDir dir("scope-csv-test");
     for (const ScopeCapture* c : std::initializer_list<const ScopeCapture*>{&sc.capture, &rolled}) {
         const auto path = (dir / "scope.csv").string();
         ASSERT_TRUE(io::writeCaptureCsvFile(path, scopeCaptureToTable(*c, "X", {{"connection", "sim:vmc"}})).ok());
@@ -395,7 +395,6 @@ TEST(ScopeCsv, ACaptureReloadsIdenticalFromItsCsv)
             EXPECT_EQ(t->capture.metadata.at("trigger_row"), "100");
         }
     }
-    std::filesystem::remove_all(dir);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 
 #include "tests/core/device/ServerThread.h"
+#include "tests/ScopedTempDir.h"
 
 namespace {
 
@@ -19,13 +20,7 @@ using namespace axistune;
 namespace fs = std::filesystem;
 
 struct StateDir {
-    fs::path dir;
-    StateDir()
-    {
-        char t[] = "/tmp/axistune-stateXXXXXX";
-        dir = mkdtemp(t);
-    }
-    ~StateDir() { fs::remove_all(dir); }
+    axistune::testing::ScopedTempDir dir{"state"};
     std::string write(const std::string& name, const std::string& text) const
     {
         std::ofstream(dir / name) << text;

@@ -2,6 +2,7 @@
 // io::writeFileAtomic / writeFileAtomicVia (core/io/AtomicFile.h): the target is either the old file
 // or the whole new one; a failed write removes its temporary file and names the target.
 #include "core/io/AtomicFile.h"
+#include "tests/ScopedTempDir.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -18,10 +19,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tempDir()
+axistune::testing::ScopedTempDir tempDir()
 {
-    std::string tmpl = (fs::temp_directory_path() / "axistune-atomic-XXXXXX").string();
-    return mkdtemp(tmpl.data());
+    return axistune::testing::ScopedTempDir("atomic");
 }
 
 std::string slurp(const fs::path& p)
@@ -58,7 +58,6 @@ TEST(AtomicFile, ReplacesAndKeepsThePermissions)
     ASSERT_TRUE(io::writeFileAtomic(p.string(), "").ok()); // an empty file when the content is empty
     EXPECT_EQ(fs::file_size(p), 0u);
     EXPECT_EQ(names(dir), std::vector<std::string>{"a.csv"});
-    fs::remove_all(dir);
 }
 
 TEST(AtomicFile, AFailingWriterLeavesTheOldFileAndNoTemporary)
@@ -80,7 +79,6 @@ TEST(AtomicFile, AFailingWriterLeavesTheOldFileAndNoTemporary)
     ASSERT_FALSE(st2.ok());
     EXPECT_NE(st2.error().detail.find("no file was written"), std::string::npos);
     EXPECT_FALSE(fs::exists(q));
-    fs::remove_all(dir);
 }
 
 TEST(AtomicFile, SymlinkIsFollowedAndFoldersAndMissingFoldersAreNamed)
@@ -101,7 +99,6 @@ TEST(AtomicFile, SymlinkIsFollowedAndFoldersAndMissingFoldersAreNamed)
     EXPECT_NE(missing.error().detail.find((dir / "nope" / "x.csv").string() + ": cannot create a file in"),
               std::string::npos);
     EXPECT_NE(missing.error().detail.find(std::strerror(ENOENT)), std::string::npos);
-    fs::remove_all(dir);
 }
 
 TEST(AtomicFile, DeviceTargetsAreWrittenInPlace)

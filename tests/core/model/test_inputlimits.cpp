@@ -4,6 +4,7 @@
 // UTF-8 in paths, and the NaN check at the JSON output boundary.
 #include "core/model/InputLimits.h"
 #include "core/model/ResultJson.h"
+#include "tests/ScopedTempDir.h"
 
 #include <cmath>
 #include <filesystem>
@@ -19,11 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tempDir()
+axistune::testing::ScopedTempDir tempDir()
 {
-    auto d = fs::temp_directory_path() / ("axistune-inputlimits-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
+    return axistune::testing::ScopedTempDir("inputlimits");
 }
 
 std::string errorOf(const Result<nlohmann::json>& r)
@@ -76,7 +75,6 @@ TEST(InputLimits, RefusesFifoDeviceDirectoryAndOversizedFiles)
     auto ok = readInputFile(big.string(), 11);
     ASSERT_TRUE(ok);
     EXPECT_EQ(*ok, "0123456789A");
-    fs::remove_all(dir);
 }
 
 TEST(InputLimits, JsonNumbersOutsideTheDoubleRangeNameLineAndKey)
