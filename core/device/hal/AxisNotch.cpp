@@ -29,22 +29,20 @@ Result<DriveHalAxis> halAxisOf(Drive& drive, const std::string& axis)
 
 namespace {
 
-/// The notch after the axis's pid; refused when it runs after another pid.
+/// The notch after the axis's pid; none when there is none or its input is linked to no pid (a leftover that is in
+/// no loop: inserting or removing the axis's notch clears it). Refused when it runs after another pid.
 Result<std::optional<AxisNotch>> notchOf(const DriveHalAxis& a)
 {
     auto n = readNotch(a.session);
     if (!n)
         return n.error();
-    if (!*n)
+    if (!*n || (*n)->pidOutput.empty())
         return std::optional<AxisNotch>();
     const std::string mine = a.axis.pid + ".output";
     if ((*n)->pidOutput != mine)
-        return makeError(ErrorCode::BadInput,
-                         "AxisTune's notch runs after " +
-                             ((*n)->pidOutput.empty() ? std::string("no pid (its input is unlinked)")
-                                                      : (*n)->pidOutput) +
-                             ", not after " + mine + ": LinuxCNC loads it once per HAL session; remove it there first "
-                                                     "(pid-tune --remove-notch on that axis)");
+        return makeError(ErrorCode::BadInput, "AxisTune's notch runs after " + (*n)->pidOutput + ", not after " + mine +
+                                                  ": LinuxCNC loads it once per HAL session; remove it there first "
+                                                  "(pid-tune --remove-notch on that axis)");
     return std::optional<AxisNotch>(AxisNotch{(*n)->f0Hz, (*n)->q});
 }
 
@@ -75,12 +73,9 @@ Status removeAxisNotch(Drive& drive, const std::string& axis)
     auto a = halAxisOf(drive, axis);
     if (!a)
         return a.error();
-    auto n = notchOf(*a);
-    if (!n)
+    if (auto n = notchOf(*a); !n)
         return n.error();
-    if (!*n)
-        return Status::success();
-    return removeNotch(a->session);
+    return removeNotch(a->session); // nothing to do when there is none
 }
 
 Status restoreAxisNotch(Drive& drive, const std::string& axis, const std::optional<AxisNotch>& before)

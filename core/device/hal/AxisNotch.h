@@ -19,9 +19,10 @@ struct AxisNotch {
     friend bool operator==(const AxisNotch&, const AxisNotch&) = default;
 };
 
-/// AxisTune's notch after the axis's pid as it runs now; none when there is none or the drive is not a HAL session
-/// (no notch of AxisTune's can run there). Refused when the notch runs after another pid: LinuxCNC loads it once per
-/// HAL session, and a tune of this axis would move it off the other one.
+/// AxisTune's notch after the axis's pid as it runs now; none when there is none, when its input is linked to no pid
+/// (a leftover in no loop), or when the drive is not a HAL session (no notch of AxisTune's can run there). Refused
+/// when the notch runs after another pid: LinuxCNC loads it once per HAL session, and a tune of this axis would move
+/// it off the other one.
 Result<std::optional<AxisNotch>> readAxisNotch(Drive& drive, const std::string& axis);
 
 /// Inserts (or retunes) AxisTune's notch after the axis's pid (insertNotch's refusals; refused as readAxisNotch when
