@@ -28,6 +28,7 @@
 #include <thread>
 #include <unistd.h>
 
+#include "tests/ScopedTempDir.h"
 #include "tests/linuxcnc/HalTestbed.h"
 
 using namespace axistune;
@@ -43,7 +44,8 @@ TEST_F(HalTestbed, AMoveTripsOnTheJointsFerrorAndGoesBack)
 {
     startBed(1000000);
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
-    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "ferror-testbed";
+    const ScopedTempDir tmp("ferror-testbed");
+    const std::filesystem::path dir = tmp.path();
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     const std::filesystem::path src = std::filesystem::path(AXISTUNE_SOURCE_DIR) / "linuxcnc/testbed";
@@ -86,7 +88,8 @@ TEST_F(HalTestbed, PersistedGainsAreReadByTheNextStart)
 {
     startBed(1000000);
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
-    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "persist-testbed";
+    const ScopedTempDir tmp("persist-testbed");
+    const std::filesystem::path dir = tmp.path();
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     const std::filesystem::path src = std::filesystem::path(AXISTUNE_SOURCE_DIR) / "linuxcnc/testbed";
@@ -141,8 +144,9 @@ TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
         std::ifstream f(path);
         return nlohmann::json::parse(f);
     };
-    const std::string plain = ::testing::TempDir() + "/pid-tune-plain.json";
-    const std::string plainLog = ::testing::TempDir() + "/pid-tune-plain.log";
+    const ScopedTempDir tmp("pid-tune");
+    const std::string plain = tmp.string() + "/pid-tune-plain.json";
+    const std::string plainLog = tmp.string() + "/pid-tune-plain.log";
     auto slurpLog = [](const std::string& p) {
         std::ifstream l(p);
         return std::string(std::istreambuf_iterator<char>(l), {});
@@ -158,10 +162,10 @@ TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
     ASSERT_EQ(plainRc, 0) << "pid-tune --notch none exit " << WEXITSTATUS(plainRc) << ": " << slurpLog(plainLog);
     const double plainCrossover = readJson(plain).at("proposed").at("predicted").at("crossover_Hz").get<double>();
 
-    const std::string out = ::testing::TempDir() + "/pid-tune.json";
+    const std::string out = tmp.string() + "/pid-tune.json";
     // With a move out and back (5 mm at 50 mm/s, 1000 mm/s²) run after the verification: issue 17 asks the measured
     // following error of a given move within 10 % of the prediction.
-    const std::string log = ::testing::TempDir() + "/pid-tune.log";
+    const std::string log = tmp.string() + "/pid-tune.log";
     int rc = std::system((cli + "--apply --move 5:50:1000 --out " + out + " 2>" + log).c_str());
     if (rc != 0 && slurpLog(log).find("the heartbeat was lost") != std::string::npos) { // as above
         std::printf("[ note ] pid-tune --apply refused: the injection's heartbeat was lost under load; run again\n");
@@ -218,7 +222,8 @@ TEST_F(HalTestbed, CliPidTuneAppliesAndVerifiesItsProposal)
 // first value of a key); in both, every pid gain in HAL equals the profile's within halcmd's seven digits.
 TEST_F(HalTestbed, NcExportForLinuxCncLoadsIntoHal)
 {
-    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "lcnc-export";
+    const ScopedTempDir tmp("lcnc-export");
+    const std::filesystem::path dir = tmp.path();
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     std::filesystem::permissions(dir, std::filesystem::perms::all); // the HAL user reads the files
@@ -289,7 +294,8 @@ TEST_F(HalTestbed, AutotuneOnAPositionPidNamesPidTuneAndChangesNothing)
     startBed(1000000);
     const auto sigBefore = halText({"-s", "show", "sig"});
     const auto functBefore = halText({"-s", "show", "funct"});
-    const std::string out = (std::filesystem::path(::testing::TempDir()) / "autotune-hal.err").string();
+    const ScopedTempDir tmp("autotune-hal");
+    const std::string out = tmp.string() + "/autotune-hal.err";
     const int rc =
         std::system((std::string(AXISTUNE_CLI) + " autotune --connect hal: --axis pid.x >/dev/null 2>" + out).c_str());
     EXPECT_EQ(WEXITSTATUS(rc), 2);
@@ -315,7 +321,8 @@ TEST_F(HalTestbed, CliPidTuneUndoPutsBackTheGainsThatRanBefore)
     std::map<std::string, double> before;
     for (const auto& k : keys)
         before[k] = getp("pid.x." + k);
-    const std::string dir = ::testing::TempDir();
+    const ScopedTempDir tmp("pid-tune-undo");
+    const std::string dir = tmp.string();
     const std::string result = dir + "/pid-tune-undo.json";
     const std::string log = dir + "/pid-tune-undo.log";
     auto slurpLog = [&] {

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <thread>
 
+#include "tests/ScopedTempDir.h"
 #include "tests/linuxcnc/HalTestbed.h"
 
 using namespace axistune;
@@ -332,7 +333,8 @@ TEST_F(HalTestbed, CliCapturesMultiSweepPrbsAndStep)
     startBed(1000000);
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
     const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
-    const std::string dir = ::testing::TempDir();
+    const ScopedTempDir tmp("hal-methods");
+    const std::string dir = tmp.string();
     const std::string cli = std::string(AXISTUNE_CLI) + " capture --connect hal: --axis pid.x ";
     const Plant plant = readPlant();
     for (const std::string method : {"multisweep", "prbs"}) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "tests/ScopedTempDir.h"
 #include "tests/linuxcnc/HalTestbed.h"
 
 namespace axistune::testing {
@@ -59,7 +60,8 @@ TEST_F(HalTestbed, CliPidTuneOverAnEarlierNotchDesignsOnThePlantAndUndoPutsItBac
         before[k] = getp("pid.x." + k);
     const double fr = exactResonanceHz(readPlant(), 1e-3);
 
-    const std::string dir = ::testing::TempDir();
+    const ScopedTempDir tmp("pid-tune-notch");
+    const std::string dir = tmp.string();
     const std::string result = dir + "/pid-tune-over-notch.json";
     const std::string log = dir + "/pid-tune-over-notch.log";
     const std::string base = std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x ";
@@ -106,6 +108,37 @@ TEST_F(HalTestbed, CliPidTuneOverAnEarlierNotchDesignsOnThePlantAndUndoPutsItBac
     EXPECT_DOUBLE_EQ(getp("axistune-notch.f0"), 150.0);
     for (const auto& k : keys)
         EXPECT_NEAR(getp("pid.x." + k), before[k], 1e-6 * std::abs(before[k])) << k;
+}
+
+// LinuxCNC loads AxisTune's notch once per HAL session: while it runs after another pid's output, a tune or a
+// --remove-notch on pid.x would move it off that axis. Both are refused naming the pin that feeds it, before anything
+// moves or changes (here the notch is fed by plant.x.load_position, standing in for another pid's output).
+TEST_F(HalTestbed, ANotchOnAnotherAxisIsNeitherMovedNorRemovedByThisAxis)
+{
+    startBed(1000000);
+    ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
+    {
+        auto axis = device::hal::discoverAxis(halOptions(), "pid.x");
+        ASSERT_TRUE(axis) << axis.error().detail;
+        auto st = device::hal::insertNotch(halOptions(), *axis, 150.0, 1.0);
+        ASSERT_TRUE(st) << st.error().detail;
+    }
+    halText({"unlinkp", "pid.x.output"});
+    halText({"linkps", "plant.x.load_position", "axistune-notch-in"});
+    const double pBefore = getp("pid.x.Pgain");
+    const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
+    const ScopedTempDir tmp("notch-other-axis");
+    const std::string log = tmp.string() + "/pid-tune.log";
+    const std::string base = std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x ";
+    for (const std::string& args : {std::string("--remove-notch"), std::string("--amplitude 0.2 --apply")}) {
+        const int rc = std::system((base + args + " >/dev/null 2>" + log).c_str());
+        EXPECT_EQ(WEXITSTATUS(rc), 2) << args << ": " << slurp(log);
+        EXPECT_NE(slurp(log).find("runs after plant.x.load_position, not after pid.x.output"), std::string::npos)
+            << args << ": " << slurp(log);
+        EXPECT_DOUBLE_EQ(getp("axistune-notch.f0"), 150.0) << args;
+        EXPECT_DOUBLE_EQ(getp("pid.x.Pgain"), pBefore) << args;
+        EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore) << args;
+    }
 }
 
 } // namespace axistune::testing

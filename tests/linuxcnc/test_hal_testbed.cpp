@@ -26,6 +26,7 @@
 #include <thread>
 #include <unistd.h>
 
+#include "tests/ScopedTempDir.h"
 #include "tests/linuxcnc/HalTestbed.h"
 
 using namespace axistune;
@@ -514,7 +515,8 @@ TEST_F(HalTestbed, CliCaptureThroughHalWritesThePlantFrf)
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
     const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
     const std::string funBefore = halText({"-s", "show", "funct"});
-    const std::string dir = ::testing::TempDir();
+    const ScopedTempDir tmp("hal-testbed");
+    const std::string dir = tmp.string();
     const std::string out = dir + "/hal-plant-frf.csv";
     const std::string cli = std::string(AXISTUNE_CLI) + " capture --connect hal: --axis pid.x --test frf --method "
                                                         "multisine --fmin 2 --fmax 450 ";

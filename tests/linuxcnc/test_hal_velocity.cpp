@@ -14,6 +14,7 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "tests/ScopedTempDir.h"
 #include "tests/linuxcnc/HalTestbed.h"
 
 namespace axistune::testing {
@@ -38,7 +39,8 @@ TEST_F(HalTestbed, VelocityModePlantFrfEqualsTheExactDiscreteResponse)
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
     const Plant plant = readPlant();
     ASSERT_EQ(plant.kv, 0.15);
-    const std::string dir = ::testing::TempDir();
+    const ScopedTempDir tmp("hal-velocity");
+    const std::string dir = tmp.string();
     const std::string out = dir + "/hal-velocity-frf.csv";
     const std::string log = dir + "/hal-velocity-frf.log";
     const int rc = std::system((std::string(AXISTUNE_CLI) +
@@ -65,7 +67,8 @@ TEST_F(HalTestbed, CliPidTuneOnAVelocityModeDriveAppliesAndVerifiesItsProposal)
     startBed(1000000, kVelocityIni);
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
     const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
-    const std::string dir = ::testing::TempDir();
+    const ScopedTempDir tmp("hal-velocity");
+    const std::string dir = tmp.string();
     const std::string out = dir + "/pid-tune-velocity.json";
     const std::string log = dir + "/pid-tune-velocity.log";
     const std::string cli = std::string(AXISTUNE_CLI) + " pid-tune --connect hal: --axis pid.x --amplitude 10 --pm 50 "

@@ -20,6 +20,7 @@
 #include <sys/wait.h>
 #include <vector>
 
+#include "tests/ScopedTempDir.h"
 #include "tests/linuxcnc/HalTestbed.h"
 
 using namespace axistune;
@@ -68,7 +69,8 @@ std::string slurp(const fs::path& p)
 TEST_F(FullLinuxCnc, PersistedGainIsReadByTheNextFullLinuxCnc)
 {
     ASSERT_TRUE(fs::exists(kServoSim / "servo_sim.ini")) << "linuxcnc-uspace's sample configurations are missing";
-    const fs::path dir = fs::path(::testing::TempDir()) / "full-linuxcnc-persist";
+    const ScopedTempDir tmp("full-linuxcnc-persist");
+    const fs::path dir = tmp.path();
     fs::remove_all(dir);
     fs::copy(kServoSim, dir, fs::copy_options::recursive); // symlinks followed: copies of the files
     const fs::path ini = dir / "servo_sim.ini";
@@ -131,7 +133,8 @@ TEST_F(FullLinuxCnc, ServoSimOpenLoopMeasuredThroughLinuxCncEqualsItsHalFileAndG
     // to 0 live for the measurement (every other gain as the INI has it), so the loop is the linear one above plus
     // the encoder's quantization.
     ASSERT_TRUE(fs::exists(kServoSim / "servo_sim.ini")) << "linuxcnc-uspace's sample configurations are missing";
-    const fs::path dir = fs::path(::testing::TempDir()) / "full-linuxcnc-frf";
+    const ScopedTempDir tmp("full-linuxcnc-frf");
+    const fs::path dir = tmp.path();
     fs::remove_all(dir);
     fs::copy(kServoSim, dir, fs::copy_options::recursive);
     const fs::path ini = dir / "servo_sim.ini";
@@ -205,7 +208,8 @@ TEST_F(FullLinuxCnc, ServoSimOpenLoopMeasuredThroughLinuxCncEqualsItsHalFileAndG
 TEST_F(FullLinuxCnc, JogThroughLinuxCncsMotionIsRecordedOutAndBack)
 {
     ASSERT_TRUE(fs::exists(kServoSim / "servo_sim.ini")) << "linuxcnc-uspace's sample configurations are missing";
-    const fs::path dir = fs::path(::testing::TempDir()) / "full-linuxcnc-jog";
+    const ScopedTempDir tmp("full-linuxcnc-jog");
+    const fs::path dir = tmp.path();
     fs::remove_all(dir);
     fs::copy(kServoSim, dir, fs::copy_options::recursive);
     const fs::path ini = dir / "servo_sim.ini";
