@@ -303,6 +303,11 @@ Status HalInjection::remove()
             if (halRuns) {
                 std::this_thread::sleep_for(std::chrono::milliseconds(100));
                 r = runHalcmd(m_options, args);
+                // The first unloadrt can report a failure and still unload (seen in CI at ctest -j2: the retry then
+                // says "streamer: not loaded"): what was to be unloaded is gone, which is the step's aim.
+                if (!r && args.front() == "unloadrt" && args.size() == 2 &&
+                    r.error().detail.find(args[1] + ": not loaded") != std::string::npos)
+                    r = std::string();
             }
         }
         if (!r && first)
