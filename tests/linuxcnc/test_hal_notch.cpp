@@ -112,7 +112,7 @@ TEST_F(HalTestbed, CliPidTuneOverAnEarlierNotchDesignsOnThePlantAndUndoPutsItBac
 
 // LinuxCNC loads AxisTune's notch once per HAL session: while it runs after another pid's output, a tune or a
 // --remove-notch on pid.x would move it off that axis. Both are refused naming the pin that feeds it, before anything
-// moves or changes (here the notch is fed by plant.x.load_position, standing in for another pid's output).
+// moves or changes (here the notch is fed by plant.x.load-position, standing in for another pid's output).
 TEST_F(HalTestbed, ANotchOnAnotherAxisIsNeitherMovedNorRemovedByThisAxis)
 {
     startBed(1000000);
@@ -124,7 +124,8 @@ TEST_F(HalTestbed, ANotchOnAnotherAxisIsNeitherMovedNorRemovedByThisAxis)
         ASSERT_TRUE(st) << st.error().detail;
     }
     halText({"unlinkp", "pid.x.output"});
-    halText({"linkps", "plant.x.load_position", "axistune-notch-in"});
+    halText({"linkps", "plant.x.load-position", "axistune-notch-in"});
+    halText({"net", "x-spare", "pid.x.output"}); // pid.x still drives a net of its own, as another axis's pid would
     const double pBefore = getp("pid.x.Pgain");
     const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
     const ScopedTempDir tmp("notch-other-axis");
@@ -133,7 +134,7 @@ TEST_F(HalTestbed, ANotchOnAnotherAxisIsNeitherMovedNorRemovedByThisAxis)
     for (const std::string& args : {std::string("--remove-notch"), std::string("--amplitude 0.2 --apply")}) {
         const int rc = std::system((base + args + " >/dev/null 2>" + log).c_str());
         EXPECT_EQ(WEXITSTATUS(rc), 2) << args << ": " << slurp(log);
-        EXPECT_NE(slurp(log).find("runs after plant.x.load_position, not after pid.x.output"), std::string::npos)
+        EXPECT_NE(slurp(log).find("runs after plant.x.load-position, not after pid.x.output"), std::string::npos)
             << args << ": " << slurp(log);
         EXPECT_DOUBLE_EQ(getp("axistune-notch.f0"), 150.0) << args;
         EXPECT_DOUBLE_EQ(getp("pid.x.Pgain"), pBefore) << args;
