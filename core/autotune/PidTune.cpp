@@ -265,7 +265,6 @@ tuning::PositionLoopMargins notchedMargins(const PidLoopMeasurement& m, const tu
 // raises the loop's gain margin by 1 dB or more while the phase margin stays at the one asked (or, when the running
 // loop has less, falls by at most 3°): of Q 0.5–2, the one with the largest gain margin. Over a running notch the
 // candidates are judged on the plant without it; when none is better by 1 dB the running notch stays.
-
 void proposeNotchOnly(const PidLoopMeasurement& m, const tuning::PositionPidOptions& po, PidTuneProposal& p)
 {
     const double pmFloor = std::min(po.phaseMarginDeg, p.runningMargins.phaseMarginDeg - 3.0);

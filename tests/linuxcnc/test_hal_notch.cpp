@@ -27,6 +27,15 @@ std::string slurp(const std::string& path)
     return std::string(std::istreambuf_iterator<char>(f), {});
 }
 
+/// AxisTune's notch inserted after pid.x by hand, as an earlier tune leaves it.
+void insertNotchAfterPidX(double f0Hz, double q)
+{
+    auto axis = device::hal::discoverAxis(halOptions(), "pid.x");
+    ASSERT_TRUE(axis) << axis.error().detail;
+    auto st = device::hal::insertNotch(halOptions(), *axis, f0Hz, q);
+    ASSERT_TRUE(st) << st.error().detail;
+}
+
 /// `halcmd -s show funct` without the code and data addresses (a component loaded again gets new ones).
 std::string functionsOf(const std::string& showFunct)
 {
@@ -41,17 +50,15 @@ std::string functionsOf(const std::string& showFunct)
 // design on L / (C·N): the measured margins meet issue 17's and lie within 3° / 1 dB of the prediction; the new notch
 // lies within 2 % of the exact plant's resonance; the result names the notch that ran. `--undo` then puts back the
 // gains and the 150 Hz notch (f0 and Q as halcmd reads them), and the nets and functions are as after the first
-// insertion (the notch's component loaded anew: its addresses differ); a second undo is refused with exit 4 (HAL no longer holds what the tune applied) and changes nothing.
+// insertion (the notch's component loaded anew: its addresses differ); a second undo is refused with exit 4 (HAL no
+// longer holds what the tune applied) and changes nothing.
 TEST_F(HalTestbed, CliPidTuneOverAnEarlierNotchDesignsOnThePlantAndUndoPutsItBack)
 {
     startBed(1000000);
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
-    {
-        auto axis = device::hal::discoverAxis(halOptions(), "pid.x");
-        ASSERT_TRUE(axis) << axis.error().detail;
-        auto st = device::hal::insertNotch(halOptions(), *axis, 150.0, 1.0);
-        ASSERT_TRUE(st) << st.error().detail;
-    }
+    insertNotchAfterPidX(150.0, 1.0);
+    if (HasFatalFailure())
+        return;
     const std::string sigBefore = netsOf(halText({"-s", "show", "sig"}));
     const std::string funBefore = functionsOf(halText({"-s", "show", "funct"}));
     const std::vector<std::string> keys{"Pgain", "Igain", "Dgain", "FF1", "FF2"};
@@ -117,12 +124,9 @@ TEST_F(HalTestbed, ANotchOnAnotherAxisIsNeitherMovedNorRemovedByThisAxis)
 {
     startBed(1000000);
     ::setenv("AXISTUNE_HALCMD", (kScript + " halcmd").c_str(), 1);
-    {
-        auto axis = device::hal::discoverAxis(halOptions(), "pid.x");
-        ASSERT_TRUE(axis) << axis.error().detail;
-        auto st = device::hal::insertNotch(halOptions(), *axis, 150.0, 1.0);
-        ASSERT_TRUE(st) << st.error().detail;
-    }
+    insertNotchAfterPidX(150.0, 1.0);
+    if (HasFatalFailure())
+        return;
     halText({"unlinkp", "pid.x.output"});
     halText({"linkps", "plant.x.load-position", "axistune-notch-in"});
     halText({"net", "x-spare", "pid.x.output"}); // pid.x still drives a net of its own, as another axis's pid would
