@@ -149,16 +149,19 @@ int runPidTuneUndo(const PidTuneOptions& o)
     if (!undone)
         return reportError(cmd, undone.error());
     nlohmann::json out{{"axis", tune.axis}, {"connection", o.connect}, {"from", from}, {"notch_removed", false}};
-    if (notch.changes()) {
-        auto st = autotune::undoPidTuneNotch(**drive, notch);
-        if (!st)
-            return reportError(cmd, makeError(st.error().code, "the gains were put back, but putting the notch back: " +
-                                                                   st.error().detail));
+    auto notchDone = autotune::undoPidTuneNotch(**drive, notch);
+    if (!notchDone)
+        return reportError(cmd,
+                           makeError(notchDone.error().code, "the gains were put back, but putting the notch back: " +
+                                                                 notchDone.error().detail));
+    if (notchDone->changed) {
         if (notch.before)
             out["notch_restored"] = {{"f0_Hz", notch.before->f0Hz}, {"Q", notch.before->q}};
         else
             out["notch_removed"] = true;
     }
+    // What HAL held just before (after --force: the later change) → what it holds now, as the GUI's session journal.
+    out["journal"] = autotune::pidTuneWritesJson(autotune::pidTuneUndoWrites(*undone, *notchDone));
     return writeUndone(cmd, out, *undone, o.out);
 }
 

@@ -44,6 +44,7 @@ struct PidLoopMeasurement;
 struct PidTuneProposal;
 struct PidTuneApplied;
 struct PidTuneNotchUndo;
+struct PidTuneNotchUndone;
 } // namespace axistune::autotune
 
 namespace axistune {
@@ -109,6 +110,9 @@ struct DriveReply {
     std::shared_ptr<const autotune::PidLoopMeasurement> pidLoop;
     std::shared_ptr<const autotune::PidTuneProposal> pidProposal;
     std::shared_ptr<const autotune::PidTuneApplied> pidApplied;
+    // AutoTuneUndo by undoPidTune: `undone` the gains (each from what HAL held just before), and the notch HAL held
+    // just before and the one put back (`changed` false when the tune left the notch as it was).
+    std::shared_ptr<const autotune::PidTuneNotchUndone> pidNotchUndone;
 };
 
 class DriveWorker;

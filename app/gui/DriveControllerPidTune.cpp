@@ -69,8 +69,10 @@ DriveReply DriveWorker::doPidTuneUndo(int id, const autotune::AppliedTune& tune,
         if (!r.ok)
             return r;
     }
-    if (auto st = autotune::undoPidTuneNotch(*m_drive, notch); !st)
-        return fail(r, st.error());
+    auto n = autotune::undoPidTuneNotch(*m_drive, notch);
+    if (!n)
+        return fail(r, n.error());
+    r.pidNotchUndone = std::make_shared<const autotune::PidTuneNotchUndone>(std::move(n).value());
     r.ok = true;
     return r;
 }

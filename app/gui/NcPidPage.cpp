@@ -269,6 +269,7 @@ void NcPidPage::clearResult()
     m_applied.reset();
     m_undone = false;
     m_undoRefused = false;
+    m_undoWrites.clear();
     m_overwrite->setChecked(false);
     m_table->setRowCount(0);
     m_plot->clearResponses();
@@ -393,6 +394,8 @@ void NcPidPage::onUndone(const DriveReply& r)
     } else {
         m_undone = true;
         m_undoRefused = false;
+        m_undoWrites = autotune::pidTuneUndoWrites(r.undone, r.pidNotchUndone ? *r.pidNotchUndone
+                                                                              : autotune::PidTuneNotchUndone{});
         saveSession(m_undoForced ? tr("undone anyway (over a later change)") : tr("undone"),
                     store::SessionStatus::Completed);
         const auto& before = m_applied->notchBefore;
@@ -520,27 +523,34 @@ void NcPidPage::saveSession(const QString& note, store::SessionStatus status)
     } else {
         rec.results.push_back({"error", {{"message", note.toStdString()}}, {}});
     }
-    if (m_undone && !m_applied->written.empty()) {
-        // Undo: the values applied go back to those before (read back by the undo).
-        for (const auto& [k, v] : m_applied->written) {
-            store::JournalEntry e;
-            e.axis = m_asked.axis;
-            e.key = k;
-            e.oldValue = v;
-            e.newValue = m_applied->before.at(k);
-            rec.journal.push_back(e);
-        }
-    } else if (m_applied && m_applied->applied && !m_applied->written.empty()) {
-        rec.parameterSets.push_back(
-            {0, m_asked.axis, store::ParameterSource::Applied, {}, "position PID page", m_applied->written});
-        for (const auto& [k, v] : m_applied->written) {
-            store::JournalEntry e;
-            e.axis = m_asked.axis;
-            e.key = k;
-            e.oldValue = m_applied->before.at(k);
-            e.newValue = v;
-            rec.journal.push_back(e);
-        }
+    // The journal: the gains and the notch an apply changed, or what an undo put back over what HAL held just before
+    // it (after Undo anyway, the later change it overwrote).
+    std::vector<autotune::PidTuneWrite> writes;
+    if (m_undone) {
+        writes = m_undoWrites;
+        // The gains read back after the undo are the axis's parameters again (as the autotune wizard's undo saves).
+        model::ParameterValues restored;
+        for (const auto& w : writes)
+            if (m_applied->written.count(w.key))
+                restored[w.key] = w.to;
+        if (!restored.empty())
+            rec.parameterSets.push_back(
+                {0, m_asked.axis, store::ParameterSource::Applied, {}, "position PID page: undo", restored});
+        if (!rec.results.empty() && rec.results.front().name == "pid-tune")
+            rec.results.front().data["undo_journal"] = autotune::pidTuneWritesJson(writes);
+    } else if (m_applied && m_applied->applied && m_proposal) {
+        if (!m_applied->written.empty())
+            rec.parameterSets.push_back(
+                {0, m_asked.axis, store::ParameterSource::Applied, {}, "position PID page", m_applied->written});
+        writes = autotune::pidTuneAppliedWrites(*m_applied, *m_proposal);
+    }
+    for (const auto& w : writes) {
+        store::JournalEntry e;
+        e.axis = m_asked.axis;
+        e.key = w.key;
+        e.oldValue = w.from;
+        e.newValue = w.to;
+        rec.journal.push_back(e);
     }
     QPointer<NcPidPage> self(this);
     ++m_pendingSaves;

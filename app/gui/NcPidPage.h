@@ -120,6 +120,8 @@ private:
     bool m_undone = false;
     bool m_undoRefused = false; ///< the last Undo was refused because HAL no longer holds what was applied
     bool m_undoForced = false;
+    /// The undo's writes (autotune::pidTuneUndoWrites): from what HAL held just before it to what it put back.
+    std::vector<autotune::PidTuneWrite> m_undoWrites;
     qint64 m_sessionId = 0;
     int m_pendingSaves = 0;
 };

@@ -445,11 +445,21 @@ Status checkPidTuneNotchUndo(device::Drive& drive, const PidTuneNotchUndo& undo,
     return Status::success();
 }
 
-Status undoPidTuneNotch(device::Drive& drive, const PidTuneNotchUndo& undo)
+Result<PidTuneNotchUndone> undoPidTuneNotch(device::Drive& drive, const PidTuneNotchUndo& undo)
 {
+    PidTuneNotchUndone done;
     if (!undo.changes())
-        return Status::success();
-    return device::hal::restoreAxisNotch(drive, undo.axis, asAxisNotch(undo.before));
+        return done;
+    // What HAL holds now, read before the write: a forced undo overwrites a later change, and the journal says which.
+    auto held = device::hal::readAxisNotch(drive, undo.axis);
+    if (!held)
+        return held.error();
+    done.held = asBiquad(*held);
+    if (auto st = device::hal::restoreAxisNotch(drive, undo.axis, asAxisNotch(undo.before)); !st)
+        return st.error();
+    done.changed = true;
+    done.restored = undo.before;
+    return done;
 }
 
 } // namespace axistune::autotune

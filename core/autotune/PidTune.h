@@ -11,6 +11,7 @@
 //   3. applyPidTune: inserts the notch, writes the gains live, measures again and compares the margins; a loop that
 //      misses them gets back what ran before (gains and notch).
 
+#include "core/autotune/Undo.h"
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"
 #include "core/model/Parameter.h"
@@ -143,14 +144,51 @@ struct PidTuneNotchUndo {
 /// change. Nothing to check when the tune left the notch as it was. Call it before the gains are undone.
 Status checkPidTuneNotchUndo(device::Drive& drive, const PidTuneNotchUndo& undo, bool force);
 
-/// Puts the notch from before back (inserted with its f0 and Q, or removed when there was none); nothing when the tune
-/// left the notch as it was.
-Status undoPidTuneNotch(device::Drive& drive, const PidTuneNotchUndo& undo);
+/// What undoPidTuneNotch found and left.
+struct PidTuneNotchUndone {
+    bool changed = false;                        ///< false: the tune left the notch as it was; nothing read or written
+    std::optional<tuning::BiquadNotch> held;     ///< HAL's notch just before the undo wrote over it (read; none: none)
+    std::optional<tuning::BiquadNotch> restored; ///< the notch now: the one from before the tune (none: removed)
+};
+
+/// Puts the notch from before back (inserted with its f0 and Q, or removed when there was none) and says what HAL
+/// held just before (read first: after a forced undo, a later change the journal records as overwritten); nothing
+/// when the tune left the notch as it was. Errors: the read or the restore refused.
+Result<PidTuneNotchUndone> undoPidTuneNotch(device::Drive& drive, const PidTuneNotchUndo& undo);
+
+/// One write of a tune or of its undo as a session's journal records it (store::JournalEntry's key, old and new
+/// value; docs/storage.md "Journal"): the gains by their keys (pidGainKeys), AxisTune's notch by the HAL names of
+/// the biquad's parameters, `axistune-notch.f0` [Hz] and `axistune-notch.Q`, and by `axistune-notch` for whether
+/// it runs after the axis's pid (1) or not (0).
+struct PidTuneWrite {
+    std::string key;
+    std::optional<double> from; ///< none: nothing before (f0 and Q of a notch inserted)
+    double to = 0.0;
+    friend bool operator==(const PidTuneWrite&, const PidTuneWrite&) = default;
+};
+
+/// The notch's change from `from` to `to`: inserted: `axistune-notch` 0 → 1, f0 and Q with nothing before; retuned:
+/// f0 and Q, before → after (both: the component is loaded again with both); removed: `axistune-notch` 1 → 0 only
+/// (f0 and Q have no value after it; the session's result keeps the notch removed); nothing when they are the same.
+std::vector<PidTuneWrite> pidTuneNotchWrites(const std::optional<tuning::BiquadNotch>& from,
+                                             const std::optional<tuning::BiquadNotch>& to);
+
+/// The journal of an apply: each gain written (`before` → `written`, in key order), then the notch's change
+/// (`notchBefore` → the proposal's notch); empty when the tune was not kept (what ran before is back).
+std::vector<PidTuneWrite> pidTuneAppliedWrites(const PidTuneApplied& applied, const PidTuneProposal& proposal);
+
+/// The journal of an undo: each gain from what the drive held just before the undo (UndoneParameter::applied; after
+/// a forced undo the later change, not the value the tune applied) to the one read back, then the notch from the one
+/// HAL held just before to the one put back.
+std::vector<PidTuneWrite> pidTuneUndoWrites(const std::vector<UndoneParameter>& gains, const PidTuneNotchUndone& notch);
+
+/// The writes as JSON: [{"key", "old" (null: nothing before), "new"}].
+nlohmann::json pidTuneWritesJson(const std::vector<PidTuneWrite>& writes);
 
 /// The result JSON of a tune (docs/linuxcnc.md "Tuning from the command line", pid-tune's --out; the wizards' session
 /// result): axis, scope, servo_rate_Hz, band_Hz, drive_input (+ _rule), running {gains, margins, motion_time_s},
 /// proposed {gains, predicted, rules, notch_rule, notch {f0_Hz, Q}}, applied, and with `applied`: verified
-/// {measured, motion_time_s} and refused.
+/// {measured, motion_time_s} and refused, or, when it was kept, journal (pidTuneWritesJson of pidTuneAppliedWrites).
 nlohmann::json pidTuneJson(const PidTuneRequest& request, const PidLoopMeasurement& measured,
                            const PidTuneProposal& proposal, const PidTuneApplied* applied = nullptr);
 

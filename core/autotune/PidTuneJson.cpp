@@ -55,6 +55,8 @@ nlohmann::json pidTuneJson(const PidTuneRequest& request, const PidLoopMeasureme
             out["verified"] = {{"measured", marginsJson(applied->measured)}, {"motion_time_s", applied->motionTimeS}};
         if (!applied->applied)
             out["refused"] = applied->refusal;
+        else
+            out["journal"] = pidTuneWritesJson(pidTuneAppliedWrites(*applied, proposal));
     }
     return out;
 }

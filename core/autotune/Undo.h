@@ -27,7 +27,9 @@ Result<AppliedTune> appliedTuneFromJson(const nlohmann::json& result);
 
 struct UndoneParameter {
     std::string key;
-    double applied = 0.0;  ///< what the run applied (and the drive held before the undo)
+    /// What the drive held just before the undo wrote over it: what the run applied, or, after an undo with
+    /// `force`, the later change (the run's value only for a key the drive did not report)
+    double applied = 0.0;
     double restored = 0.0; ///< what the drive holds after the undo (read back; equals the value before the run)
 };
 

@@ -349,6 +349,10 @@ TEST_F(HalTestbed, CliPidTuneUndoPutsBackTheGainsThatRanBefore)
     const auto undone = nlohmann::json::parse(undoOut);
     EXPECT_EQ(undone.at("undone").size(), keys.size());
     EXPECT_TRUE(undone.at("notch_removed").get<bool>());
+    // Its journal: the five gains, then the notch removed (it runs no more: 1 → 0).
+    ASSERT_EQ(undone.at("journal").size(), keys.size() + 1) << undone.dump(2);
+    EXPECT_EQ(undone.at("journal").back(),
+              nlohmann::json::parse(R"({"key": "axistune-notch", "old": 1.0, "new": 0.0})"));
 
     EXPECT_EQ(WEXITSTATUS(std::system((base + "--undo " + result + " >/dev/null 2>" + log).c_str())), 4);
     for (const auto& k : keys)

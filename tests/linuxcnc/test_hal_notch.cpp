@@ -93,6 +93,16 @@ TEST_F(HalTestbed, CliPidTuneOverAnEarlierNotchDesignsOnThePlantAndUndoPutsItBac
     EXPECT_NEAR(getp("axistune-notch.f0"), f0, 1e-4);
     const std::string rule = j.at("proposed").at("notch_rule").get<std::string>();
     EXPECT_NE(rule.find("replaces the running notch (150 Hz, Q 1)"), std::string::npos) << rule;
+    // The result's journal: the five gains, then the notch retuned from 150 Hz, Q 1 (docs/storage.md "Journal").
+    const auto& journal = j.at("journal");
+    ASSERT_EQ(journal.size(), 7u) << journal.dump(2);
+    EXPECT_EQ(journal[5].at("key"), "axistune-notch.f0");
+    EXPECT_DOUBLE_EQ(journal[5].at("old").get<double>(), 150.0);
+    EXPECT_NEAR(journal[5].at("new").get<double>(), getp("axistune-notch.f0"), 1e-4);
+    EXPECT_EQ(journal[6].at("key"), "axistune-notch.Q");
+    EXPECT_DOUBLE_EQ(journal[6].at("old").get<double>(), 1.0);
+    EXPECT_NEAR(journal[6].at("new").get<double>(), getp("axistune-notch.Q"), 1e-6);
+    const double f0Held = getp("axistune-notch.f0"), qHeld = getp("axistune-notch.Q");
     RecordProperty("predicted_phase_margin_deg",
                    model::formatShortest(j.at("proposed").at("predicted").at("phase_margin_deg").get<double>()));
     RecordProperty("measured_phase_margin_deg",
@@ -103,6 +113,15 @@ TEST_F(HalTestbed, CliPidTuneOverAnEarlierNotchDesignsOnThePlantAndUndoPutsItBac
     const auto undone = nlohmann::json::parse(slurp(undoOut));
     EXPECT_FALSE(undone.at("notch_removed").get<bool>());
     EXPECT_DOUBLE_EQ(undone.at("notch_restored").at("f0_Hz").get<double>(), 150.0);
+    // The undo's journal: the notch from what HAL held just before the undo (the tune's) back to 150 Hz, Q 1.
+    const auto& undoJournal = undone.at("journal");
+    ASSERT_EQ(undoJournal.size(), 7u) << undoJournal.dump(2);
+    EXPECT_EQ(undoJournal[5].at("key"), "axistune-notch.f0");
+    EXPECT_NEAR(undoJournal[5].at("old").get<double>(), f0Held, 1e-4);
+    EXPECT_DOUBLE_EQ(undoJournal[5].at("new").get<double>(), 150.0);
+    EXPECT_EQ(undoJournal[6].at("key"), "axistune-notch.Q");
+    EXPECT_NEAR(undoJournal[6].at("old").get<double>(), qHeld, 1e-6);
+    EXPECT_DOUBLE_EQ(undoJournal[6].at("new").get<double>(), 1.0);
     EXPECT_DOUBLE_EQ(getp("axistune-notch.f0"), 150.0);
     EXPECT_DOUBLE_EQ(getp("axistune-notch.Q"), 1.0);
     for (const auto& k : keys)

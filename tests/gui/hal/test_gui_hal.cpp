@@ -19,6 +19,7 @@
 #include "app/gui/VelocityLoopWizard.h"
 #include "core/device/Drive.h"
 #include "core/dsp/FrequencyResponse.h"
+#include "core/store/Database.h"
 #include "widgets/BodePlot.h"
 
 #include <QAbstractButton>
@@ -38,6 +39,10 @@
 
 #include <cmath>
 #include <complex>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "tests/gui/GuiTestUtil.h"
 
@@ -309,6 +314,67 @@ double exactResonanceHz()
     return axistune::testing::exactResonanceHz(axistune::testing::readPlant(), 1e-3);
 }
 
+const std::vector<std::string> kGainKeys{"Pgain", "Igain", "Dgain", "FF1", "FF2"};
+
+/// The gains of pid.x as HAL holds them (halcmd getp).
+std::map<std::string, double> halGains()
+{
+    std::map<std::string, double> g;
+    for (const auto& k : kGainKeys)
+        g[k] = axistune::testing::getp("pid.x." + k);
+    return g;
+}
+
+/// The journal entry of `key` in a saved session (each key at most once in a session of the NC PID page).
+const store::JournalEntry* journalEntry(const store::SessionRecord& s, const std::string& key)
+{
+    for (const auto& e : s.journal)
+        if (e.key == key)
+            return &e;
+    return nullptr;
+}
+
+/// The journal holds each gain from `from` to `to` (halcmd's values: 7 digits).
+void expectGainsJournaled(const store::SessionRecord& s, const std::map<std::string, double>& from,
+                          const std::map<std::string, double>& to)
+{
+    for (const auto& k : kGainKeys) {
+        const auto* e = journalEntry(s, k);
+        ASSERT_TRUE(e) << k;
+        ASSERT_TRUE(e->oldValue) << k;
+        EXPECT_NEAR(*e->oldValue, from.at(k), 1e-6 * std::abs(from.at(k)) + 1e-12) << k;
+        EXPECT_NEAR(e->newValue, to.at(k), 1e-6 * std::abs(to.at(k)) + 1e-12) << k;
+    }
+}
+
+/// The notch inserted where none ran, as the journal says it (docs/storage.md "Journal"): it runs (0 → 1), f0 and Q
+/// with nothing before and the values HAL holds now (halcmd getp).
+void expectNotchInsertedIn(const store::SessionRecord& s)
+{
+    const auto* runs = journalEntry(s, "axistune-notch");
+    ASSERT_TRUE(runs);
+    EXPECT_EQ(runs->oldValue, std::optional<double>(0.0));
+    EXPECT_EQ(runs->newValue, 1.0);
+    const auto* f0 = journalEntry(s, "axistune-notch.f0");
+    const auto* q = journalEntry(s, "axistune-notch.Q");
+    ASSERT_TRUE(f0 && q);
+    EXPECT_FALSE(f0->oldValue);
+    EXPECT_FALSE(q->oldValue);
+    EXPECT_NEAR(f0->newValue, axistune::testing::getp("axistune-notch.f0"), 1e-4);
+    EXPECT_NEAR(q->newValue, axistune::testing::getp("axistune-notch.Q"), 1e-6);
+}
+
+/// The notch removed: it runs no more (1 → 0); f0 and Q have no value after it, so they have no entry.
+void expectNotchRemovedIn(const store::SessionRecord& s)
+{
+    const auto* runs = journalEntry(s, "axistune-notch");
+    ASSERT_TRUE(runs);
+    EXPECT_EQ(runs->oldValue, std::optional<double>(1.0));
+    EXPECT_EQ(runs->newValue, 0.0);
+    EXPECT_FALSE(journalEntry(s, "axistune-notch.f0"));
+    EXPECT_FALSE(journalEntry(s, "axistune-notch.Q"));
+}
+
 // Issue 17 item 6: the velocity/position wizard on hal: goes from its first page to the NC PID page, which measures
 // the open loop, proposes P, I, D, FF1, FF2 and a biquad notch with a rule for each, applies them live and verifies
 // them: the measured margins meet the issue's (PM ≥ 45°, GM ≥ 6 dB) within 3° / 1 dB of the prediction
@@ -323,6 +389,7 @@ TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
     if (HasFatalFailure())
         return;
     const double pBefore = axistune::testing::getp("pid.x.Pgain");
+    const auto gainsBefore = halGains();
     gui::VelocityLoopWizard v(ctx);
     v.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&v));
@@ -373,7 +440,11 @@ TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
     EXPECT_EQ(saved->captures.size(), 3u);
     ASSERT_TRUE(saved->result("pid-tune"));
     EXPECT_TRUE(saved->result("pid-tune")->at("applied").get<bool>());
-    EXPECT_EQ(saved->journal.size(), 5u);
+    // Its journal: each gain from the value before the tune to the one HAL holds now, then the notch inserted.
+    EXPECT_EQ(saved->journal.size(), 8u);
+    expectGainsJournaled(*saved, gainsBefore, halGains());
+    expectNotchInsertedIn(*saved);
+    const qint64 applySession = page.savedSessionId();
 
     // Someone changes Pgain in HAL after the apply: Undo is refused with nothing written (the later change named);
     // Undo anyway appears and stays disabled until its box is ticked (the second confirmation); then it puts back
@@ -393,12 +464,23 @@ TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
     maybeScreenshot(&v, "velocity-hal-04-undo-refused");
     page.overwriteBox()->setChecked(true);
     ASSERT_TRUE(page.undoAnywayButton()->isEnabled());
+    const auto gainsHeld = halGains(); // Pgain 0.3, the later change
     page.undoAnywayButton()->click();
     ASSERT_TRUE(waitUntil([&] { return !page.busy(); }, 60000));
     ASSERT_TRUE(page.undone()) << page.status()->text().toStdString();
     EXPECT_DOUBLE_EQ(axistune::testing::getp("pid.x.Pgain"), pBefore);
     EXPECT_FALSE(page.undoAnywayButton()->isVisible());
     maybeScreenshot(&v, "velocity-hal-05-undone");
+    // The undo's session: its journal starts from what HAL held just before it wrote (Pgain 0.3, not the value the
+    // tune applied) and ends at what runs now (the gains before the tune), and the notch removed.
+    ASSERT_TRUE(waitUntil([&] { return page.savedSessionId() > applySession && page.pendingSaves() == 0; }, 30000));
+    auto undoneSession = ctx.database()->loadSession(page.savedSessionId());
+    ASSERT_TRUE(undoneSession.ok());
+    EXPECT_EQ(undoneSession->journal.size(), 6u);
+    ASSERT_TRUE(journalEntry(*undoneSession, "Pgain"));
+    EXPECT_NEAR(journalEntry(*undoneSession, "Pgain")->oldValue.value_or(NAN), 0.3, 1e-9);
+    expectGainsJournaled(*undoneSession, gainsHeld, gainsBefore);
+    expectNotchRemovedIn(*undoneSession);
     expectHalUnchanged();
 }
 
@@ -507,6 +589,13 @@ TEST_F(GuiOnHal, NotchWizardInsertsABiquadForTheRunningGains)
     RecordProperty("running_gain_margin_dB", model::formatShortest(p.runningMargins.gainMarginDb));
     RecordProperty("verified_gain_margin_dB", model::formatShortest(page.applied()->measured.gainMarginDb));
     maybeScreenshot(&n, "notch-hal-03-verified");
+    // The apply's session: no gain written, the notch inserted.
+    ASSERT_TRUE(waitUntil([&] { return page.pendingSaves() == 0; }, 30000));
+    const qint64 applySession = page.savedSessionId();
+    auto applied = ctx.database()->loadSession(applySession);
+    ASSERT_TRUE(applied.ok());
+    EXPECT_EQ(applied->journal.size(), 3u);
+    expectNotchInsertedIn(*applied);
     {
         // The notch wizard opened again on the notched axis: the loop it measures runs through the notch, which the
         // page divides out of the plant; the running notch is then the best candidate, nothing beats it by the 1 dB
@@ -543,6 +632,12 @@ TEST_F(GuiOnHal, NotchWizardInsertsABiquadForTheRunningGains)
     ASSERT_TRUE(waitUntil([&] { return !page.busy(); }, 60000));
     ASSERT_TRUE(page.undone()) << page.status()->text().toStdString();
     expectHalUnchanged();
+    // The undo's session: the notch removed, nothing else.
+    ASSERT_TRUE(waitUntil([&] { return page.savedSessionId() > applySession && page.pendingSaves() == 0; }, 30000));
+    auto undone = ctx.database()->loadSession(page.savedSessionId());
+    ASSERT_TRUE(undone.ok());
+    EXPECT_EQ(undone->journal.size(), 1u);
+    expectNotchRemovedIn(*undone);
 }
 
 } // namespace
