@@ -37,7 +37,7 @@ TestRequest stepRequest(double durationS)
     TestRequest r;
     r.axis = "X";
     r.type = TestType::Step;
-    r.amplitude = 20.0;
+    r.stepVelocityRadS = 20.0;
     r.durationS = durationS;
     return r;
 }

@@ -255,7 +255,7 @@ int runCapture(const CaptureOptions& o)
     req.traceDivider = o.divider;
     if (o.test == "step") {
         req.type = device::TestType::Step;
-        req.amplitude = o.amplitude;
+        req.stepVelocityRadS = o.amplitude;
     } else if (o.test == "jog") {
         req.type = device::TestType::Jog;
         req.distance = o.distance;
@@ -266,7 +266,7 @@ int runCapture(const CaptureOptions& o)
         req.type = device::TestType::Hold;
     } else if (o.test == "current-step") {
         req.type = device::TestType::CurrentStep;
-        req.amplitude = o.amplitude;
+        req.currentA = o.amplitude;
     } else if (o.test == "frf") {
         req.type = device::TestType::Frf;
         if (o.method == "multisweep")
@@ -333,8 +333,8 @@ int runCapture(const CaptureOptions& o)
     if (req.type == device::TestType::Step) {
         // On a drive whose step is a position step of the command (hal:), --amplitude is that step in the command's
         // units (docs/cli.md); elsewhere a motor velocity step.
-        auto caps = (*drive)->capabilities(o.axis);
-        req.positionStep = caps && caps->stepIsPositionStep;
+        if (auto caps = (*drive)->capabilities(o.axis); caps && caps->stepIsPositionStep)
+            std::swap(req.stepPosition, req.stepVelocityRadS);
     }
     // The drive plans the test first (Drive::planTest): a request beyond its limits is refused with the
     // drive's own words before anything moves, and the planned motion time is reported.

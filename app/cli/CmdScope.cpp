@@ -121,7 +121,7 @@ Result<device::ScopeCapture> captureTriggered(device::Drive& drive, const ScopeO
             device::TestRequest step;
             step.axis = o.axis;
             step.type = device::TestType::Step;
-            step.amplitude = o.stepRadS;
+            step.stepVelocityRadS = o.stepRadS;
             step.durationS = std::max(0.05, 1.2 * o.lengthS);
             if (auto run = device::runTest(drive, step, {}); !run)
                 return run.error();

@@ -97,7 +97,7 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : TuningW
         device::TestRequest r;
         r.axis = m_data.axis.toStdString();
         r.type = device::TestType::CurrentStep;
-        r.amplitude = m_data.stepAmplitudeA;
+        r.currentA = m_data.stepAmplitudeA;
         r.durationS = m_data.stepRecordS;
         return std::vector<device::TestRequest>{r};
     };

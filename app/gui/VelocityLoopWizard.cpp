@@ -98,7 +98,7 @@ VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : Tunin
         device::TestRequest s;
         s.axis = axis;
         s.type = device::TestType::Step;
-        s.amplitude = m_data.stepRadS;
+        s.stepVelocityRadS = m_data.stepRadS;
         s.durationS = m_data.stepDurationS;
         reqs.push_back(s);
         return reqs;
@@ -112,7 +112,7 @@ VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : Tunin
         device::TestRequest s;
         s.axis = m_data.axis.toStdString();
         s.type = device::TestType::Step;
-        s.amplitude = m_data.stepRadS;
+        s.stepVelocityRadS = m_data.stepRadS;
         s.durationS = m_data.stepDurationS;
         return std::vector<device::TestRequest>{s};
     });

@@ -4,6 +4,7 @@
 // JSON file, so another drive family is another file.
 #include "app/simdrive/RegisterMapTemplate.h"
 
+#include "core/device/TestRegisterCodec.h"
 #include "core/sim/AxisParameters.h"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ std::string simRegisterMapJson()
     using nlohmann::ordered_json;
     ordered_json j;
     j["family"] = "axistune-sim";
-    j["version"] = 1;
+    j["version"] = 2;
     j["description"] =
         "AxisTune simulated drive (axistune-simdrive). All data in holding registers (function codes 3, 6, 16, 23). "
         "Addresses are 0-based PDU addresses. Unit id = unit_id_base + axis index.";
@@ -59,49 +60,55 @@ std::string simRegisterMapJson()
     add("status.trace_rate_hz", 116, "f64", 4, "trace sample rate [Hz]");
     add("status.message", 120, "string", 64,
         "why the last request or test was refused or stopped, 128 ASCII characters");
-    add("test.type", 200, "u16", 1, "enum test_type");
-    add("test.flags", 201, "u16", 1, "bit set of enum test_flag");
-    add("test.trace_divider", 202, "u16", 1, "trace every N velocity periods (0: parameter trace.divider)");
-    add("test.freq_count", 203, "u16", 1, "frf: number of frequencies");
-    add("test.trace_channel_mask", 204, "u32", 2, "bit i: keep trace channel i (0: all)");
-    add("test.amplitude", 206, "f64", 4,
-        "step: motor velocity step [rad/s]; current_step: q-axis current step [A]; frf: excitation amplitude [% "
-        "of rated torque]");
-    add("test.distance", 210, "f64", 4, "jog: distance [m or rad]");
-    add("test.velocity", 214, "f64", 4, "jog: velocity [m/s or rad/s]");
-    add("test.acceleration", 218, "f64", 4, "jog: acceleration [m/s^2 or rad/s^2]");
-    add("test.duration", 222, "f64", 4, "step/hold/current_step: recording length; jog: dwell before and after [s]");
-    add("test.offset", 226, "f64", 4, "excitation offset (reserved)");
-    add("test.freq_start", 230, "f64", 4, "frf: lowest frequency [Hz]");
-    add("test.freq_end", 234, "f64", 4, "frf: highest frequency [Hz]");
-    add("test.frf_method", 238, "u16", 1, "frf: enum frf_method");
-    add("test.reserved", 239, "u16", 1, "reserved, reads 0");
-    add("test.settle", 240, "f64", 4, "frf: settle time per frequency [s] (0: from the loop dynamics)");
-    add("test.min_measure", 244, "f64", 4, "frf: minimum measured time per frequency [s] (0: from the loop dynamics)");
-    add("test.multisine_periods", 248, "u16", 1, "frf multisine: averaged periods (0: from the loop dynamics)");
-    add("test.multisine_phases", 249, "u16", 1, "frf multisine: enum multisine_phases");
-    add("test.multisine_band_count", 250, "u16", 1,
-        "frf multisine: bands in use, 1..4 (0: one band freq_start..freq_end with spacing freq_start/2)");
-    add("test.multisine_reserved", 251, "u16", 1, "reserved, reads 0");
+    // The test configuration: every field carries one quantity of the request (core/device/TestRegisterCodec.h),
+    // described by the codec's own words.
+    auto carry = [&](const std::string& name, int address, const std::string& type, const std::string& quantity) {
+        add(name, address, type, 1, device::findTestQuantity(quantity)->meaning);
+        f[name]["carries"] = quantity;
+    };
+    carry("test.type", 200, "u16", "test.type");
+    carry("test.flags", 201, "u16", "test.flags");
+    carry("test.trace_divider", 202, "u16", "test.trace_divider");
+    carry("test.freq_count", 203, "u16", "frf.points");
+    carry("test.trace_channel_mask", 204, "u32", "trace.channel_mask");
+    carry("test.step_velocity", 206, "f64", "step.velocity_rad_s");
+    carry("test.distance", 210, "f64", "jog.distance");
+    carry("test.velocity", 214, "f64", "jog.velocity");
+    carry("test.acceleration", 218, "f64", "jog.acceleration");
+    carry("test.duration", 222, "f64", "test.duration_s");
+    carry("test.current_step", 226, "f64", "current_step.current_a");
+    carry("test.freq_start", 230, "f64", "frf.fmin_hz");
+    carry("test.freq_end", 234, "f64", "frf.fmax_hz");
+    carry("test.frf_method", 238, "u16", "frf.method");
+    carry("test.reserved", 239, "u16", "reserved");
+    carry("test.settle", 240, "f64", "frf.settle_s");
+    carry("test.min_measure", 244, "f64", "frf.min_measure_s");
+    carry("test.multisine_periods", 248, "u16", "multisine.periods");
+    carry("test.multisine_phases", 249, "u16", "multisine.phases");
+    carry("test.multisine_band_count", 250, "u16", "multisine.band_count");
+    carry("test.multisine_reserved", 251, "u16", "reserved");
     for (int b = 0; b < 4; ++b) {
-        const std::string n = "test.multisine_band" + std::to_string(b + 1), band = "band " + std::to_string(b + 1);
-        add(n + "_fmin", 252 + 12 * b, "f64", 4, "frf multisine: " + band + ", lowest line [Hz]");
-        add(n + "_fmax", 256 + 12 * b, "f64", 4, "frf multisine: " + band + ", highest line [Hz]");
-        add(n + "_spacing", 260 + 12 * b, "f64", 4, "frf multisine: " + band + ", line spacing [Hz]");
+        const std::string n = "test.multisine_band" + std::to_string(b + 1), q = "multisine.band" + std::to_string(b + 1);
+        carry(n + "_fmin", 252 + 12 * b, "f64", q + ".fmin_hz");
+        carry(n + "_fmax", 256 + 12 * b, "f64", q + ".fmax_hz");
+        carry(n + "_spacing", 260 + 12 * b, "f64", q + ".spacing_hz");
     }
     add("command.code", 300, "u16", 1, "enum command; written together with command.token");
     add("command.token", 301, "u16", 1, "sequence token: a command repeated with the same token is not executed twice");
     add("heartbeat.counter", 310, "u16", 1,
         "written by the client while a test runs; the watchdog stops the test when it goes silent");
-    add("circle.second_axis", 340, "u16", 1,
-        "circle: axis index (unit id - unit_id_base) of the second plane axis; the first is the unit started");
-    add("circle.direction", 341, "u16", 1, "circle: enum circle_direction");
-    add("circle.radius", 342, "f64", 4, "circle: radius [m]");
-    add("circle.feed", 346, "f64", 4, "circle: feed along the path [m/s]");
-    add("circle.center_x", 350, "f64", 4, "circle: centre, position of the first axis [m]");
-    add("circle.center_y", 354, "f64", 4, "circle: centre, position of the second axis [m]");
-    add("circle.data_start_deg", 358, "f64", 4, "circle: angle at which the 360 deg data arc begins [deg]");
-    add("circle.lead_arc_deg", 362, "f64", 4, "circle: lead-in and lead-out arc [deg]");
+    carry("circle.second_axis", 340, "u16", "circle.second_axis");
+    carry("circle.direction", 341, "u16", "circle.direction");
+    carry("circle.radius", 342, "f64", "circle.radius_m");
+    carry("circle.feed", 346, "f64", "circle.feed_m_per_s");
+    carry("circle.center_x", 350, "f64", "circle.center_x_m");
+    carry("circle.center_y", 354, "f64", "circle.center_y_m");
+    carry("circle.data_start_deg", 358, "f64", "circle.data_start_deg");
+    carry("circle.lead_arc_deg", 362, "f64", "circle.lead_arc_deg");
+    // Map version 2: the test block 200-299 is full; the jog's jerk and the FRF excitation follow the circle block
+    // (version 1 carried the step, the current step, the FRF amplitude and the jerk in one register, test.amplitude).
+    carry("test.jog_jerk", 366, "f64", "jog.jerk");
+    carry("test.frf_amplitude", 370, "f64", "frf.amplitude_pct");
     // The drive describes itself (docs/drive-seam.md, docs/modbus.md "Capabilities, limits and plans").
     add("describe.test_types", 600, "u16", 1, "bit i: the axis runs test_type i");
     add("describe.frf_methods", 601, "u16", 1, "bit i: frf_method i is offered");

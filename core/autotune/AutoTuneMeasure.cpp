@@ -99,7 +99,7 @@ std::optional<AutoTuneResult> Sequence::currentLoop()
         device::TestRequest c;
         c.axis = axis;
         c.type = device::TestType::CurrentStep;
-        c.amplitude = m_stepA;
+        c.currentA = m_stepA;
         c.durationS = std::min(0.005, m_limits.currentStepMaxS);
         auto run = test(c, "the current step", s.motionTimeS);
         if (!run)

@@ -28,13 +28,13 @@ struct DriveIdentity {
 };
 
 enum class TestType {
-    Step,   ///< velocity step: amplitude [rad/s motor], duration [s] (hal:: a position step, stepIsPositionStep)
+    Step,   ///< velocity step stepVelocityRadS [rad/s motor], duration [s] (hal:: a position step stepPosition)
     Jog,    ///< position move: distance [axis units] at velocity [axis units/s], optional return
     Hold,   ///< position hold for duration [s]
     Frf,    ///< frequency response: torque injection in the closed velocity loop (FrfTest.h)
     Circle, ///< ball-bar circle of two axes together (CircleDriveTest.h, docs/ballbar.md)
     /// q-axis current step (docs/simulator.md "Current-step test"): velocity and position loops open, the
-    /// current command steps from 0 to `amplitude` [A] 10 % into the recording and holds; `durationS` is the
+    /// current command steps from 0 to `currentA` [A] 10 % into the recording and holds; `durationS` is the
     /// recording length, traced at every current-loop period (fs = 1/current.period). Afterwards the axis
     /// holds its position again. Refused beyond the drive's limits (DriveLimits: current, record length,
     /// motor speed reached).
@@ -61,17 +61,19 @@ enum class FrfQuantity {
 struct TestRequest {
     std::string axis;
     TestType type = TestType::Step;
-    double amplitude = 0.0;     ///< Step: velocity step [rad/s] (hal:: position step, command units); CurrentStep: [A]
+    /// Step on a drive whose step is a motor velocity step (sim:, modbus://): the step [rad/s at the motor].
+    double stepVelocityRadS = 0.0;
+    /// Step on a drive whose step is a position step of the command (DriveCapabilities::stepIsPositionStep, hal:):
+    /// the step in the command's units. Each drive refuses the step quantity it does not take, so that a velocity
+    /// step in rad/s is never taken for millimetres, nor millimetres for rad/s.
+    double stepPosition = 0.0;
+    double currentA = 0.0;      ///< CurrentStep: the q-axis current step [A]
     double distance = 0.0;      ///< Jog: [m] or [rad]
     double velocity = 0.0;      ///< Jog: [m/s] or [rad/s]
     double acceleration = 0.0;  ///< Jog: [m/s²] or [rad/s²]
     bool returnToStart = false; ///< Jog: move back (a reversal)
     double jerk = 0.0;          ///< Jog: jerk limit [m/s³] or [rad/s³] (rectangular jerk); 0 = trapezoid
     double durationS = 0.1;     ///< Step/Hold/CurrentStep: recording length; Jog: dwell before and after
-    /// Step: the caller means a position step of the command in its units. A drive whose step is one
-    /// (DriveCapabilities::stepIsPositionStep, hal:) refuses a step request without it, so that a velocity step in
-    /// rad/s is never taken for millimetres.
-    bool positionStep = false;
     int traceDivider = 0;       ///< 0: the drive's trace.divider parameter
     // Frf (durationS is not used: the length follows from the plan).
     FrfMethod frfMethod = FrfMethod::MultiSweep;

@@ -2,7 +2,7 @@
 // Modbus TCP client of the Drive seam; protocol and register map in docs/modbus.md.
 #include "core/device/ModbusDrive.h"
 
-#include "core/device/MultisineTest.h"
+#include "core/device/TestRegisterCodec.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -373,31 +373,6 @@ Status ModbusDrive::writeParameters(const std::string& axis, const model::Parame
     return Status::success();
 }
 
-Status ModbusDrive::encodeMultisine(const TestRequest& request, const std::function<std::uint16_t*(const std::string&)>& at) const
-{
-    const char* phases = request.multisinePhases == dsp::MultisinePhases::Schroeder ? "schroeder" : "clipping";
-    if (!m_map.fields.count("test.multisine_band4_spacing") || !m_map.fields.count("test.multisine_periods")
-        || m_map.code("multisine_phases", phases) < 0)
-        return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no multisine test fields");
-    if (!request.multisineShape.empty())
-        return makeError(ErrorCode::BadInput, "a shaped multisine cannot be sent over Modbus: the test block carries no spectrum");
-    const auto bands = multisineBandsOf(request);
-    if (bands.size() > 4)
-        return makeError(ErrorCode::OutOfRange, "at most 4 multisine bands over Modbus (got " + std::to_string(bands.size()) + ")");
-    if (request.multisinePeriods < 0 || request.multisinePeriods > 65535)
-        return makeError(ErrorCode::OutOfRange, "multisine periods must lie in 0..65535");
-    *at("test.multisine_periods") = static_cast<std::uint16_t>(request.multisinePeriods);
-    *at("test.multisine_phases") = static_cast<std::uint16_t>(m_map.code("multisine_phases", phases));
-    *at("test.multisine_band_count") = static_cast<std::uint16_t>(bands.size());
-    for (std::size_t b = 0; b < bands.size(); ++b) {
-        const std::string p = "test.multisine_band" + std::to_string(b + 1);
-        encodeF64(bands[b].fminHz, m_map.wordOrder, at(p + "_fmin"));
-        encodeF64(bands[b].fmaxHz, m_map.wordOrder, at(p + "_fmax"));
-        encodeF64(bands[b].spacingHz, m_map.wordOrder, at(p + "_spacing"));
-    }
-    return Status::success();
-}
-
 Status ModbusDrive::startTest(const TestRequest& request)
 {
     auto unit = writeTestBlock(request);
@@ -416,73 +391,27 @@ Result<int> ModbusDrive::writeTestBlock(const TestRequest& request)
     auto a = axisInfo(request.axis);
     if (!a)
         return a.error();
-    const char* type = request.type == TestType::Step   ? "step"
-                       : request.type == TestType::Jog  ? "jog"
-                       : request.type == TestType::Hold ? "hold"
-                       : request.type == TestType::Circle ? "circle"
-                       : request.type == TestType::CurrentStep ? "current_step"
-                                                        : "frf";
-    const int code = m_map.code("test_type", type);
-    if (code < 0)
-        return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no test type '" + type + "'");
-    if (request.traceDivider < 0 || request.traceDivider > 65535)
-        return makeError(ErrorCode::OutOfRange, "trace divider must lie in 0..65535");
-    // The whole test block in one write: from the first to the last "test." field of the map.
-    int lo = 65536, hi = 0;
-    for (const auto& [n, f] : m_map.fields) {
-        if (n.rfind("test.", 0) == 0)
-            lo = std::min(lo, f.address), hi = std::max(hi, f.address + f.count);
-    }
-    const auto& first = m_map.field("test.type");
-    std::vector<std::uint16_t> w(static_cast<std::size_t>(hi - lo));
-    if (first.address != lo || hi - lo > 123)
-        return makeError(ErrorCode::Internal,
-                         "register map " + m_map.family + ": the test block must start at test.type and fit one write");
-    auto at = [&](const std::string& f) {
-        return &w[static_cast<std::size_t>(m_map.field(f).address - first.address)];
-    };
-    const WordOrder o = m_map.wordOrder;
-    *at("test.type") = static_cast<std::uint16_t>(code);
-    *at("test.flags") =
-        static_cast<std::uint16_t>(request.returnToStart ? m_map.code("test_flag", "return_to_start") : 0);
-    *at("test.trace_divider") = static_cast<std::uint16_t>(request.traceDivider);
-    encodeF64(request.amplitude, o, at("test.amplitude"));
-    encodeF64(request.distance, o, at("test.distance"));
-    encodeF64(request.velocity, o, at("test.velocity"));
-    encodeF64(request.acceleration, o, at("test.acceleration"));
-    encodeF64(request.durationS, o, at("test.duration"));
-    if (request.type == TestType::Jog)
-        encodeF64(request.jerk, o, at("test.amplitude"));  // jog: the jerk limit (0: trapezoid)
     if (request.type == TestType::Frf) {
         if (auto st = checkRatedTorqueFrfRequest(request); !st)
             return st.error();
-        const char* method = request.frfMethod == FrfMethod::Prbs           ? "prbs"
-                             : request.frfMethod == FrfMethod::Conventional ? "conventional"
-                             : request.frfMethod == FrfMethod::Multisine    ? "multisine"
-                                                                            : "multisweep";
-        if (!m_map.fields.count("test.frf_method") || m_map.code("frf_method", method) < 0)
-            return makeError(ErrorCode::BadInput,
-                             "drive family " + m_map.family + " has no FRF method '" + method + "'");
-        if (request.points < 1 || request.points > 65535)
-            return makeError(ErrorCode::OutOfRange, "FRF points must lie in 1..65535");
-        *at("test.frf_method") = static_cast<std::uint16_t>(m_map.code("frf_method", method));
-        *at("test.freq_count") = static_cast<std::uint16_t>(request.points);
-        encodeF64(request.amplitudePct, o, at("test.amplitude"));
-        encodeF64(request.fminHz, o, at("test.freq_start"));
-        encodeF64(request.fmaxHz, o, at("test.freq_end"));
-        encodeF64(request.settleS, o, at("test.settle"));
-        encodeF64(request.minMeasureS, o, at("test.min_measure"));
-        if (request.frfMethod == FrfMethod::Multisine) {
-            if (auto st = encodeMultisine(request, [&](const std::string& f) { return at(f); }); !st)
-                return st.error();
-        }
     }
-    if (auto st =
-            writeRegs(a->unit, first.address, w.data(), static_cast<int>(w.size()), "writing the test configuration");
-        !st)
-        return st.error();
-    if (request.type == TestType::Circle) {
-        if (auto st = writeCircleBlock(request, a->unit); !st)
+    // The request as the quantities the map's fields carry (TestRegisterCodec.h), every carrying field written:
+    // the test block and, after the circle block, the jog's jerk and the FRF amplitude.
+    auto values = testValuesOf(request, m_map, [this](const std::string& axis) -> Result<int> {
+        auto i = axisInfo(axis);
+        if (!i)
+            return i.error();
+        return i->unit - m_map.unitIdBase;
+    });
+    if (!values)
+        return values.error();
+    auto writes = encodeTestRegisters(*values, m_map);
+    if (!writes)
+        return writes.error();
+    for (const auto& w : *writes) {
+        if (auto st = writeRegs(a->unit, w.address, w.words.data(), static_cast<int>(w.words.size()),
+                                "writing the test configuration");
+            !st)
             return st.error();
     }
     return a->unit;
@@ -598,40 +527,6 @@ Result<TestPlan> ModbusDrive::planTest(const TestRequest& request)
     p.motionTimeS = decodeF64(at("plan.motion_s"), m_map.wordOrder);
     p.traceRateHz = decodeF64(at("plan.trace_rate_hz"), m_map.wordOrder);
     return p;
-}
-
-Status ModbusDrive::writeCircleBlock(const TestRequest& request, int unit)
-{
-    // The circle block (docs/modbus.md "Circle test"): written after the test block, before start_test.
-    const std::string names[] = {"circle.second_axis", "circle.direction", "circle.radius",       "circle.feed",
-                                 "circle.center_x",    "circle.center_y",  "circle.data_start_deg", "circle.lead_arc_deg"};
-    int lo = 65536, hi = 0;
-    for (const auto& n : names) {
-        if (!m_map.fields.count(n))
-            return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no circle test field " + n);
-        lo = std::min(lo, m_map.field(n).address);
-        hi = std::max(hi, m_map.field(n).address + m_map.field(n).count);
-    }
-    if (hi - lo > 123)
-        return makeError(ErrorCode::Internal, "register map " + m_map.family + ": the circle block must fit one write");
-    auto second = axisInfo(request.secondAxis);
-    if (!second)
-        return makeError(second.error().code, "circle test: second plane axis: " + second.error().detail);
-    std::vector<std::uint16_t> w(static_cast<std::size_t>(hi - lo));
-    auto at = [&](const std::string& f) { return &w[static_cast<std::size_t>(m_map.field(f).address - lo)]; };
-    const WordOrder o = m_map.wordOrder;
-    *at("circle.second_axis") = static_cast<std::uint16_t>(second->unit - m_map.unitIdBase);
-    const int dir = m_map.code("circle_direction", request.direction == model::CircleDirection::Cw ? "cw" : "ccw");
-    if (dir < 0)
-        return makeError(ErrorCode::BadInput, "drive family " + m_map.family + " has no enum circle_direction");
-    *at("circle.direction") = static_cast<std::uint16_t>(dir);
-    encodeF64(request.radiusM, o, at("circle.radius"));
-    encodeF64(request.feedMPerS, o, at("circle.feed"));
-    encodeF64(request.centerXM, o, at("circle.center_x"));
-    encodeF64(request.centerYM, o, at("circle.center_y"));
-    encodeF64(request.dataStartDeg, o, at("circle.data_start_deg"));
-    encodeF64(request.leadArcDeg, o, at("circle.lead_arc_deg"));
-    return writeRegs(unit, lo, w.data(), static_cast<int>(w.size()), "writing the circle configuration");
 }
 
 Status ModbusDrive::heartbeat()

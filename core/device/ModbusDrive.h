@@ -94,15 +94,11 @@ private:
     Status readRegs(int unit, int address, int count, std::uint16_t* out, const std::string& what);
     Status writeRegs(int unit, int address, const std::uint16_t* values, int count, const std::string& what);
     Status command(int unit, const std::string& name);
-    /// The test block (and circle block) of a request written to the axis's unit.
+    /// Every field of the map that carries a test quantity, written from the request to the axis's unit.
     Result<int> writeTestBlock(const TestRequest& request);
     /// Reads a run of named fields of one unit in one request; fails naming a field the map lacks.
     Result<std::vector<std::uint16_t>> readFields(int unit, const std::vector<std::string>& names, int& first,
                                                   const std::string& what);
-    /// The multisine fields of the test block (periods, phases, up to 4 bands); a shape is refused.
-    Status encodeMultisine(const TestRequest& request, const std::function<std::uint16_t*(const std::string&)>& at) const;
-    /// The circle fields (second axis, direction, radius, feed, centre, arcs) of a Circle request.
-    Status writeCircleBlock(const TestRequest& request, int unit);
     Status loadAxes();
     Result<AxisInfo> axisInfo(const std::string& axis);
     Result<std::string> readText(int unit, std::uint16_t channel);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Register map loader and register encodings; the format is described in docs/modbus.md.
 #include "core/device/RegisterMap.h"
+#include "core/device/TestRegisterCodec.h"
 
 #include "core/model/InputLimits.h"
 #include "core/sim/MachineDefinition.h"
@@ -127,18 +128,6 @@ const std::vector<std::string>& requiredRegisterFields()
                                             "status.trace_rate_hz",
                                             "status.message",
                                             "test.type",
-                                            "test.flags",
-                                            "test.trace_divider",
-                                            "test.trace_channel_mask",
-                                            "test.amplitude",
-                                            "test.distance",
-                                            "test.velocity",
-                                            "test.acceleration",
-                                            "test.duration",
-                                            "test.offset",
-                                            "test.freq_start",
-                                            "test.freq_end",
-                                            "test.freq_count",
                                             "command.code",
                                             "command.token",
                                             "heartbeat.counter",
@@ -196,6 +185,8 @@ Status checkLayout(const RegisterMap& m, const std::string& source)
     const auto& ch = m.field("trace.select_channel");
     if (ch.address != off.address + off.count)
         return makeError(ErrorCode::BadInput, source + ": 'trace.select_channel' must follow 'trace.select_offset'");
+    if (m.field("test.type").carries != "test.type")
+        return makeError(ErrorCode::BadInput, source + ": 'test.type' must carry test.type");
     const auto& code = m.field("command.code");
     if (m.field("command.token").address != code.address + 1)
         return makeError(ErrorCode::BadInput, source + ": 'command.token' must follow 'command.code'");
@@ -237,6 +228,23 @@ Result<RegisterMap> parseRegisterMap(const std::string& jsonText, const std::str
             rf.type = *t;
             rf.count = registerCount(rf.type) > 0 ? registerCount(rf.type) : f.at("count").get<int>();
             rf.description = f.value("description", std::string());
+            rf.carries = f.value("carries", std::string());
+            if (!rf.carries.empty()) {
+                const TestQuantity* q = findTestQuantity(rf.carries);
+                if (!q)
+                    return makeError(ErrorCode::BadInput,
+                                     source + ": " + where + ": carries unknown quantity '" + rf.carries + "'");
+                const bool whole = rf.type == RegisterType::U16 || rf.type == RegisterType::U32;
+                const bool real = rf.type == RegisterType::F32 || rf.type == RegisterType::F64;
+                if (q->whole ? !whole : !real)
+                    return makeError(ErrorCode::BadInput, source + ": " + where + ": " + rf.carries + " needs a " +
+                                                              (q->whole ? "u16 or u32" : "f32 or f64") + " field");
+                for (const auto& [other, of] : m.fields) {
+                    if (of.carries == rf.carries && rf.carries != "reserved")
+                        return makeError(ErrorCode::BadInput, source + ": " + where + " and field '" + other +
+                                                                  "' both carry " + rf.carries);
+                }
+            }
             m.fields[n] = rf;
         }
         for (const auto& [g, values] : j.at("enums").items()) {

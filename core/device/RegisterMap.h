@@ -28,6 +28,8 @@ struct RegisterField {
     RegisterType type = RegisterType::U16;
     int count = 1; ///< registers
     std::string description;
+    /// The test request quantity the field holds ("step.velocity_rad_s", TestRegisterCodec.h); empty: none.
+    std::string carries;
 };
 
 struct ParameterRegister {

@@ -36,13 +36,17 @@ Result<std::unique_ptr<SimDriveServer>> SimDriveServer::create(const SimDriveSer
     for (const auto& a : def->axes)
         s->m_axes.push_back(
             {a.name, a.kind == sim::AxisKind::Linear ? "linear" : "rotary", s->m_drive->simulator(a.name)});
-    s->m_config.resize(s->m_axes.size());
     s->m_refusedConfig.resize(s->m_axes.size());
     s->m_scopeConfig.resize(s->m_axes.size());
     auto map = loadRegisterMap(options.mapFamily);
     if (!map)
         return map.error();
     s->m_map = std::move(map).value();
+    // Before anything is written the fields hold what an unset request holds (a 0.1 s record, 45° data start, ...).
+    auto unset = testValuesOf(TestRequest{}, s->m_map, [](const std::string&) -> Result<int> { return 0; });
+    if (!unset)
+        return unset.error();
+    s->m_config.assign(s->m_axes.size(), *unset);
     // Register → slot table for the engine.
     s->m_owner.assign(kRegisterSpace, -1);
     for (const auto& [n, f] : s->m_map.fields) {

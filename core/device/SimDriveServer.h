@@ -11,6 +11,7 @@
 #include "core/device/FaultInjection.h"
 #include "core/device/RegisterMap.h"
 #include "core/device/SimulatedDrive.h"
+#include "core/device/TestRegisterCodec.h"
 
 #include <array>
 #include <atomic>
@@ -84,19 +85,6 @@ private:
         std::string kind; ///< "linear" or "rotary"
         sim::AxisSimulator* sim = nullptr;
     };
-    struct TestConfig {
-        std::uint16_t type = 0, flags = 0, traceDivider = 0, freqCount = 0, frfMethod = 0;
-        std::uint32_t channelMask = 0;
-        double amplitude = 0, distance = 0, velocity = 0, acceleration = 0, duration = 0.1, offset = 0, freqStart = 0,
-               freqEnd = 0, settle = 0, minMeasure = 0;
-        // FRF multisine (docs/modbus.md): periods, phases, bands in use and fmin/fmax/spacing per band.
-        std::uint16_t msPeriods = 0, msPhases = 0, msBandCount = 0;
-        std::array<double, 12> msBands{};
-        // Circle (docs/modbus.md "Circle test"): second plane axis (index), direction, geometry.
-        std::uint16_t circleSecondAxis = 0, circleDirection = 0;
-        double circleRadius = 0, circleFeed = 0, circleCenterX = 0, circleCenterY = 0, circleDataStartDeg = 45,
-               circleLeadArcDeg = 90;
-    };
     using Clock = std::chrono::steady_clock;
 
     SimDriveServer() = default;
@@ -126,8 +114,8 @@ private:
     // The circle test of two axes (SimDriveServerCircle.cpp).
     int startCircle(int unitIndex, TestRequest& request);
     void checkCircleSecondAxis();
-    int writeCircleField(const RegisterField& f, int unitIndex, const std::uint16_t* words);
-    bool encodeCircleField(const RegisterField& f, int unitIndex, std::uint16_t* buf);
+    /// The test type configured on a unit ("step", "frf", ...: the map's name of its test.type code).
+    std::string configuredType(int unitIndex) const;
     // The scope (SimDriveServerScope.cpp; docs/modbus.md "Scope").
     struct ScopeConfig {
         std::uint16_t mode = 0, divider = 1, triggerChannel = 0, edge = 0;
@@ -161,7 +149,7 @@ private:
     };
     std::vector<Slot> m_slots;
 
-    std::vector<TestConfig> m_config; ///< per unit
+    std::vector<TestValues> m_config; ///< per unit: the quantities its carrying fields hold (TestRegisterCodec.h)
     /// Per unit: test-block fields whose last write was refused (name → why); start_test refuses
     /// while this is not empty.
     std::vector<std::map<std::string, std::string>> m_refusedConfig;

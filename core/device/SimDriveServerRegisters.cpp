@@ -11,21 +11,6 @@
 #include <modbus/modbus.h>
 
 namespace axistune::device {
-namespace {
-
-/// Index 0..11 of "test.multisine_bandB_{fmin,fmax,spacing}" in TestConfig::msBands, else -1.
-int multisineBandSlot(const std::string& n)
-{
-    const std::string prefix = "test.multisine_band";
-    if (n.rfind(prefix, 0) != 0 || n.size() < prefix.size() + 2 || n[prefix.size()] < '1' || n[prefix.size()] > '4')
-        return -1;
-    const int band = n[prefix.size()] - '1';
-    const std::string what = n.substr(prefix.size() + 1);
-    const int k = what == "_fmin" ? 0 : what == "_fmax" ? 1 : what == "_spacing" ? 2 : -1;
-    return k < 0 ? -1 : 3 * band + k;
-}
-
-}  // namespace
 
 int SimDriveServer::refuse(int exception, const std::string& message)
 {
@@ -172,7 +157,6 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
     const WordOrder o = m_map.wordOrder;
     const std::string& n = f.name;
     const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
-    const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
     auto u16 = [&](int v) { buf[0] = static_cast<std::uint16_t>(v); };
     auto text = [&](const std::string& s) { encodeString(s, f.count, buf); };
     if (n.rfind("identity.", 0) == 0 && encodeIdentity(f, ui, buf))
@@ -210,39 +194,11 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
     }
     if (n == "status.message")
         return text(m_message);
-    if (n == "test.type")
-        return u16(c.type);
-    if (n == "test.flags")
-        return u16(c.flags);
-    if (n == "test.trace_divider")
-        return u16(c.traceDivider);
-    if (n == "test.freq_count")
-        return u16(c.freqCount);
-    if (n == "test.frf_method")
-        return u16(c.frfMethod);
-    if (n == "test.trace_channel_mask")
-        return encodeU32(c.channelMask, o, buf);
-    if (n == "test.multisine_periods")
-        return u16(c.msPeriods);
-    if (n == "test.multisine_phases")
-        return u16(c.msPhases);
-    if (n == "test.multisine_band_count")
-        return u16(c.msBandCount);
-    if (n == "test.multisine_reserved")
-        return u16(0);
-    if (const int b = multisineBandSlot(n); b >= 0)
-        return encodeF64(c.msBands[static_cast<std::size_t>(b)], o, buf);
-    const std::pair<const char*, double> f64s[] = {
-        {"test.amplitude", c.amplitude},       {"test.distance", c.distance}, {"test.velocity", c.velocity},
-        {"test.acceleration", c.acceleration}, {"test.duration", c.duration}, {"test.offset", c.offset},
-        {"test.freq_start", c.freqStart},      {"test.freq_end", c.freqEnd},  {"test.settle", c.settle},
-        {"test.min_measure", c.minMeasure}};
-    for (const auto& [key, v] : f64s) {
-        if (n == key)
-            return encodeF64(v, o, buf);
+    if (!f.carries.empty()) { // a test quantity: as written (TestRegisterCodec.h)
+        const auto& values = m_config[static_cast<std::size_t>(ui)];
+        const auto it = values.find(f.carries);
+        return encodeCarried(f, it == values.end() ? 0.0 : it->second, o, buf);
     }
-    if (n.rfind("circle.", 0) == 0 && encodeCircleField(f, ui, buf))
-        return;
     if (n == "heartbeat.counter")
         return u16(m_heartbeat);
     if (n == "trace.select_offset")
@@ -293,7 +249,6 @@ int SimDriveServer::readRegisters(int unitId, int address, int count, std::uint1
 
 int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16_t* w)
 {
-    TestConfig& c = m_config[static_cast<std::size_t>(ui)];
     const std::string& n = f.name;
     const WordOrder o = m_map.wordOrder;
     if (n == "heartbeat.counter") {
@@ -309,65 +264,21 @@ int SimDriveServer::writeField(const RegisterField& f, int ui, const std::uint16
         m_selChannel = w[0];
         return 0;
     }
-    if (n.rfind("circle.", 0) == 0)
-        return writeCircleField(f, ui, w);
     if (n.rfind("scope.", 0) == 0)
         return writeScopeField(f, ui, w);
-    if (n.rfind("test.", 0) != 0)
+    if (f.carries.empty())
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "field " + n + " is read-only");
     if (m_state == "running")
         return refuse(MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY, "test configuration cannot change while a test runs");
-    if (f.type == RegisterType::F64) {
-        const double v = decodeF64(w, o);
-        if (!std::isfinite(v))
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, n + " must be finite");
-        double* target = n == "test.amplitude"      ? &c.amplitude
-                         : n == "test.distance"     ? &c.distance
-                         : n == "test.velocity"     ? &c.velocity
-                         : n == "test.acceleration" ? &c.acceleration
-                         : n == "test.duration"     ? &c.duration
-                         : n == "test.offset"       ? &c.offset
-                         : n == "test.freq_start"   ? &c.freqStart
-                         : n == "test.freq_end"     ? &c.freqEnd
-                         : n == "test.settle"       ? &c.settle
-                         : n == "test.min_measure"  ? &c.minMeasure
-                                                    : nullptr;
-        if (const int b = multisineBandSlot(n); b >= 0)
-            target = &c.msBands[static_cast<std::size_t>(b)];
-        if (target)
-            *target = v;
+    if (f.carries == "reserved")
         return 0;
-    }
-    if (n == "test.type") {
-        if (m_map.name("test_type", w[0]).empty())
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "unknown test type " + std::to_string(w[0]));
-        c.type = w[0];
-    } else if (n == "test.trace_divider") {
-        if (w[0] > 1000)
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
-                          "trace divider " + std::to_string(w[0]) + " outside 0..1000");
-        c.traceDivider = w[0];
-    } else if (n == "test.flags") {
-        c.flags = w[0];
-    } else if (n == "test.frf_method") {
-        if (m_map.name("frf_method", w[0]).empty())
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "unknown FRF method " + std::to_string(w[0]));
-        c.frfMethod = w[0];
-    } else if (n == "test.multisine_periods") {
-        c.msPeriods = w[0];
-    } else if (n == "test.multisine_phases") {
-        if (m_map.name("multisine_phases", w[0]).empty())
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "unknown multisine phases " + std::to_string(w[0]));
-        c.msPhases = w[0];
-    } else if (n == "test.multisine_band_count") {
-        if (w[0] > 4)
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "multisine band count " + std::to_string(w[0]) + " outside 0..4");
-        c.msBandCount = w[0];
-    } else if (n == "test.freq_count") {
-        c.freqCount = w[0];
-    } else if (n == "test.trace_channel_mask") {
-        c.channelMask = decodeU32(w, o);
-    }
+    const double v = decodeCarried(f, w, o);
+    if (auto st = checkTestValue(f, m_map, v); !st)
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, st.error().detail);
+    if (f.carries == "test.trace_divider" && v > 1000) // this drive's own limit
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
+                      "trace divider " + model::formatNumber(v, 6) + " outside 0..1000");
+    m_config[static_cast<std::size_t>(ui)][f.carries] = v;
     return 0;
 }
 
@@ -379,7 +290,7 @@ void SimDriveServer::markRefusedConfig(int ui, int address, int count, const std
         if (si < 0 || !m_slots[static_cast<std::size_t>(si)].field)
             continue;
         const std::string& n = m_slots[static_cast<std::size_t>(si)].field->name;
-        if (n.rfind("test.", 0) == 0 || n.rfind("circle.", 0) == 0)
+        if (!m_slots[static_cast<std::size_t>(si)].field->carries.empty())
             refused[n] = why;
     }
 }
@@ -392,7 +303,7 @@ int SimDriveServer::writeRegisters(int unitId, int address, const std::uint16_t*
     if (address < 0 || count < 1 || address + count > static_cast<int>(m_owner.size()))
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS, "registers beyond 65535");
     // A write is all or nothing: what a refused write may have touched is put back.
-    const TestConfig config = m_config[static_cast<std::size_t>(ui)];
+    const TestValues config = m_config[static_cast<std::size_t>(ui)];
     const auto heartbeat = m_heartbeat;
     const auto lastHeartbeat = m_lastHeartbeat;
     const auto selOffset = m_selOffset;

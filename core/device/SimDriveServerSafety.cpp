@@ -18,12 +18,18 @@ std::string num(double v) { return model::formatNumber(v, 4); }
 
 } // namespace
 
+std::string SimDriveServer::configuredType(int ui) const
+{
+    const auto& values = m_config[static_cast<std::size_t>(ui)];
+    const auto it = values.find("test.type");
+    return it == values.end() ? std::string() : m_map.name("test_type", static_cast<int>(it->second));
+}
+
 int SimDriveServer::buildRequest(int ui, TestRequest& req)
 {
     const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
-    const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
     const SafetyLimits& lim = m_opt.safety;
-    const std::string type = m_map.name("test_type", c.type);
+    const std::string type = configuredType(ui);
     // A test never runs on a block the drive refused (it would run on what was there before); the
     // circle block counts for circle tests only.
     std::string refusedFields, refusedWhy;
@@ -37,75 +43,58 @@ int SimDriveServer::buildRequest(int ui, TestRequest& req)
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test configuration refused earlier (" + refusedFields +
                                                                ": " + refusedWhy +
                                                                "); write a valid test block before start_test");
-    req.axis = ax.name;
-    req.amplitude = c.amplitude;
-    req.distance = c.distance;
-    req.velocity = c.velocity;
-    req.acceleration = c.acceleration;
-    req.returnToStart = (c.flags & m_map.code("test_flag", "return_to_start")) != 0;
-    req.durationS = c.duration;
-    req.traceDivider = c.traceDivider;
+    std::vector<std::string> names;
+    for (const auto& a : m_axes)
+        names.push_back(a.name);
+    auto decoded = testRequestOf(m_config[static_cast<std::size_t>(ui)], m_map, ax.name, names);
+    if (!decoded)
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, decoded.error().detail);
+    req = std::move(decoded).value();
     const std::string u = ax.kind == "linear" ? " m" : " rad";
-    if (type == "step") {
-        req.type = TestType::Step;
-        if (std::abs(c.amplitude) > lim.speedLimitRadS)
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "step amplitude " + num(c.amplitude) +
+    switch (req.type) {
+    case TestType::Step:
+        if (std::abs(req.stepVelocityRadS) > lim.speedLimitRadS)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "step amplitude " + num(req.stepVelocityRadS) +
                                                                    " rad/s exceeds the speed limit " +
                                                                    num(lim.speedLimitRadS) + " rad/s");
-    } else if (type == "jog" || type == "hold") {
-        req.type = type == "jog" ? TestType::Jog : TestType::Hold;
-        req.jerk = type == "jog" ? c.amplitude : 0.0;  // test.amplitude carries a jog's jerk limit
-        const double target = ax.sim->positionCommand() + (type == "jog" ? c.distance : 0.0);
+        break;
+    case TestType::Jog:
+    case TestType::Hold: {
+        const bool jog = req.type == TestType::Jog;
+        const double target = ax.sim->positionCommand() + (jog ? req.distance : 0.0);
         if (ax.kind == "linear" && std::abs(target) > lim.travelLimit)
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
                           "jog target " + num(target) + u + " outside the travel window ±" + num(lim.travelLimit) + u);
-        const double motorSpeed = ax.kind == "linear" ? c.velocity / ax.sim->parameter("plant.screw_lead") : c.velocity;
-        if (type == "jog" && std::abs(motorSpeed) > lim.speedLimitRadS)
+        const double motorSpeed =
+            ax.kind == "linear" ? req.velocity / ax.sim->parameter("plant.screw_lead") : req.velocity;
+        if (jog && std::abs(motorSpeed) > lim.speedLimitRadS)
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog velocity means " + num(motorSpeed) +
                                                                    " rad/s at the motor, above the speed limit " +
                                                                    num(lim.speedLimitRadS) + " rad/s");
-    } else if (type == "current_step") {
+        break;
+    }
+    case TestType::CurrentStep: {
         // The drive's own excitation limit in % of rated torque holds for the current step too; the
         // embedded drive adds its limits (fraction of max current, record length, speed reached).
-        req.type = TestType::CurrentStep;
         const double ratedTorque =
             model::ratedTorqueNm(ax.sim->parameter("motor.rated_current"), ax.sim->parameter("motor.torque_constant"));
-        const double torque = std::abs(c.amplitude) * ax.sim->parameter("motor.torque_constant");
+        const double torque = std::abs(req.currentA) * ax.sim->parameter("motor.torque_constant");
         const double torqueLimit = model::torqueNmFromRatedPct(lim.amplitudeLimitPct, ratedTorque);
         if (!(torque <= torqueLimit))
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
-                          "current step " + num(c.amplitude) + " A means " + num(torque) +
+                          "current step " + num(req.currentA) + " A means " + num(torque) +
                               " Nm, above the drive's limit " + num(lim.amplitudeLimitPct) +
                               " % of the rated torque (" + num(torqueLimit) + " Nm)");
-    } else if (type == "frf") {
-        req.type = TestType::Frf;
-        const std::string method = m_map.name("frf_method", c.frfMethod);
-        req.frfMethod = method == "prbs"           ? FrfMethod::Prbs
-                        : method == "conventional" ? FrfMethod::Conventional
-                        : method == "multisine"    ? FrfMethod::Multisine
-                                                   : FrfMethod::MultiSweep;
-        if (req.frfMethod == FrfMethod::Multisine) {
-            req.multisinePeriods = c.msPeriods;
-            req.multisinePhases = m_map.name("multisine_phases", c.msPhases) == "schroeder" ? dsp::MultisinePhases::Schroeder
-                                                                                             : dsp::MultisinePhases::Clipping;
-            for (std::size_t b = 0; b < c.msBandCount; ++b)
-                req.multisineBands.push_back({c.msBands[3 * b], c.msBands[3 * b + 1], c.msBands[3 * b + 2]});
-        }
-        req.fminHz = c.freqStart;
-        req.fmaxHz = c.freqEnd;
-        req.points = c.freqCount;
-        req.amplitudePct = c.amplitude;
-        req.settleS = c.settle;
-        req.minMeasureS = c.minMeasure;
-        if (!(c.amplitude <= lim.amplitudeLimitPct))
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "excitation amplitude " + num(c.amplitude) +
+        break;
+    }
+    case TestType::Frf:
+        if (!(req.amplitudePct <= lim.amplitudeLimitPct))
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "excitation amplitude " + num(req.amplitudePct) +
                                                                    " % of the rated torque above the drive's limit " +
                                                                    num(lim.amplitudeLimitPct) + " %");
-    } else if (type == "circle") {
-        if (const int r = startCircle(ui, req); r != 0)
-            return r;
-    } else {
-        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "test type '" + type + "' is not supported by this drive");
+        break;
+    case TestType::Circle:
+        return startCircle(ui, req);
     }
     return 0;
 }
@@ -140,8 +129,6 @@ int SimDriveServer::startTest(int ui)
     if (m_state == "running")
         return refuse(MODBUS_EXCEPTION_SLAVE_OR_SERVER_BUSY, "a test is already running");
     const Axis& ax = m_axes[static_cast<std::size_t>(ui)];
-    const std::string type = m_map.name("test_type", m_config[static_cast<std::size_t>(ui)].type);
-    const TestConfig& c = m_config[static_cast<std::size_t>(ui)];
     TestRequest req;
     if (const int ex = buildRequest(ui, req); ex != 0)
         return ex;
@@ -152,13 +139,17 @@ int SimDriveServer::startTest(int ui)
     m_message.clear();
     m_progress = 0.0;
     m_testUnit = ui;
-    m_testSecondUnit = type == "circle" ? c.circleSecondAxis : -1;
+    m_testSecondUnit = -1;
+    for (std::size_t i = 0; req.type == TestType::Circle && i < m_axes.size(); ++i) {
+        if (m_axes[i].name == req.secondAxis)
+            m_testSecondUnit = static_cast<int>(i);
+    }
     m_testStartMachineS = ax.sim->time();
     m_testStartWall = m_lastHeartbeat = Clock::now();
     m_trace.reset();
     m_frfBlob.clear();
     m_frfMeta.clear();
-    log("test " + type + " started on axis " + ax.name);
+    log(std::string("test ") + testTypeName(req.type) + " started on axis " + ax.name);
     return 0;
 }
 
@@ -199,7 +190,7 @@ void SimDriveServer::checkSafety()
         model::ratedTorqueNm(s.parameter("motor.rated_current"), s.parameter("motor.torque_constant"));
     const double torqueLimit = model::torqueNmFromRatedPct(lim.amplitudeLimitPct, ratedTorque);
     const bool fullClosed = s.parameter("position.feedback") > 0.5;
-    const std::string type = m_map.name("test_type", m_config[static_cast<std::size_t>(m_testUnit)].type);
+    const std::string type = configuredType(m_testUnit);
     const bool positionTest = type == "jog" || type == "hold" || type == "circle"; // the position loop is closed only there
     const double followingError =
         positionTest ? s.loopPositionCommand() - (fullClosed ? s.tablePosition() : s.motorPosition()) : 0.0;
@@ -230,7 +221,9 @@ void SimDriveServer::takeTrace()
         return;
     }
     model::Capture cap = std::move(t).value();
-    const std::uint32_t mask = m_config[static_cast<std::size_t>(m_testUnit)].channelMask;
+    const auto& values = m_config[static_cast<std::size_t>(m_testUnit)];
+    const auto maskAt = values.find("trace.channel_mask");
+    const auto mask = maskAt == values.end() ? 0u : static_cast<std::uint32_t>(maskAt->second);
     if (mask != 0) {
         std::vector<model::Channel> keep;
         for (std::size_t i = 0; i < cap.channels.size() && i < 32; ++i) {
@@ -250,7 +243,7 @@ void SimDriveServer::takeTrace()
 
 void SimDriveServer::takeFrequencyResponse()
 {
-    if (m_map.name("test_type", m_config[static_cast<std::size_t>(m_testUnit)].type) != "frf")
+    if (configuredType(m_testUnit) != "frf")
         return;
     auto r = m_drive->readFrequencyResponse();
     if (!r) {

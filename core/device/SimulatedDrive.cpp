@@ -145,8 +145,11 @@ Result<double> SimulatedDrive::checkMotion(const sim::AxisSimulator& sim, const 
                                                     model::formatNumber(kMaxTestDurationS, 6) + "] s");
     switch (request.type) {
     case TestType::Step:
-        if (!std::isfinite(request.amplitude) || std::abs(request.amplitude) > kMaxMotorSpeedRadS)
-            return makeError(ErrorCode::OutOfRange, "step amplitude " + model::formatNumber(request.amplitude, 6) +
+        if (request.stepPosition != 0.0)
+            return makeError(ErrorCode::BadInput, "this drive steps the motor velocity (stepVelocityRadS, rad/s): a "
+                                                  "position step request is refused");
+        if (!std::isfinite(request.stepVelocityRadS) || std::abs(request.stepVelocityRadS) > kMaxMotorSpeedRadS)
+            return makeError(ErrorCode::OutOfRange, "step amplitude " + model::formatNumber(request.stepVelocityRadS, 6) +
                                                         " rad/s refused: it must be finite and at most " +
                                                         model::formatNumber(kMaxMotorSpeedRadS, 4) +
                                                         " rad/s (6000 min^-1)");
@@ -213,7 +216,7 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     switch (request.type) {
     case TestType::Step: {
         sim.setControlMode(sim::ControlMode::Velocity);
-        const double t0 = sim.time() + 0.01 * request.durationS, amp = request.amplitude;
+        const double t0 = sim.time() + 0.01 * request.durationS, amp = request.stepVelocityRadS;
         sim.setVelocityCommand([t0, amp](double t) { return t >= t0 ? amp : 0.0; });
         break;
     }
@@ -506,9 +509,9 @@ Result<SimulatedDrive::CurrentStepTiming> SimulatedDrive::planCurrentStep(const 
     const double iMax = v.at("motor.max_current"), kt = v.at("motor.torque_constant"), j = v.at("plant.inertia_motor");
     const double limitA = kMaxCurrentStepFraction * iMax;
     const auto g = [](double x) { return model::formatNumber(x, 6); }; // printf's %g
-    if (!std::isfinite(r.amplitude) || r.amplitude == 0.0 || std::abs(r.amplitude) > limitA) {
+    if (!std::isfinite(r.currentA) || r.currentA == 0.0 || std::abs(r.currentA) > limitA) {
         return makeError(ErrorCode::OutOfRange,
-                         "current step " + g(r.amplitude) + " A refused: it must be finite, non-zero and at most " +
+                         "current step " + g(r.currentA) + " A refused: it must be finite, non-zero and at most " +
                              g(100.0 * kMaxCurrentStepFraction) + " % of motor.max_current (" + g(limitA) + " A)");
     }
     if (!std::isfinite(r.durationS) || !(r.durationS > 0.0) || r.durationS > kMaxCurrentStepS) {
@@ -527,10 +530,10 @@ Result<SimulatedDrive::CurrentStepTiming> SimulatedDrive::planCurrentStep(const 
     // With the velocity loop open the motor accelerates freely: k_t·|I|·t / J_m at the end of the record, with
     // the rotor inertia alone (a motor datum; the coupled load can only make it slower).
     const double stepS = static_cast<double>(c.ticks - c.preTicks) * c.h;
-    const double speed = j > 0.0 ? kt * std::abs(r.amplitude) * stepS / j : std::numeric_limits<double>::infinity();
+    const double speed = j > 0.0 ? kt * std::abs(r.currentA) * stepS / j : std::numeric_limits<double>::infinity();
     if (!(speed <= kMaxCurrentStepSpeedRadS)) {
         return makeError(ErrorCode::OutOfRange,
-                         "current step " + g(r.amplitude) + " A for " + g(stepS) +
+                         "current step " + g(r.currentA) + " A for " + g(stepS) +
                              " s refused: the motor would reach about " + model::formatNumber(speed, 3) +
                              " rad/s (k_t·I·t/J_m with the rotor inertia J_m " + g(j) + " kg·m²), above the " +
                              g(kMaxCurrentStepSpeedRadS) + " rad/s a current step may reach; lower or shorten it");
@@ -548,7 +551,7 @@ Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const T
     // The record starts on a whole current tick; the step comes preTicks later and holds to the end.
     const double t0 = sim.time();
     const double tStep = t0 + static_cast<double>(c->preTicks) * h;
-    const double amp = r.amplitude, half = 0.5 * h;
+    const double amp = r.currentA, half = 0.5 * h;
     sim.setControlMode(sim::ControlMode::Current);
     sim.setCurrentCommand([tStep, amp, half](double t) { return t >= tStep - half ? amp : 0.0; });
     sim.startTrace(sim::TraceRate::Current);
@@ -564,7 +567,7 @@ void SimulatedDrive::endCurrentStepRecord()
     m_trace = m_active->takeTrace();
     m_trace->metadata["test"] = "current_step";
     m_trace->metadata["step_start_s"] = m_stepStart;
-    model::setMetadataNumber(m_trace->metadata, "step_amplitude_A", m_request ? m_request->amplitude : 0.0);
+    model::setMetadataNumber(m_trace->metadata, "step_amplitude_A", m_request ? m_request->currentA : 0.0);
     m_trace->metadata["voltage_clamped_ticks"] = std::to_string(m_active->voltageClampCount() - m_clampsAtStart);
     m_active->setCurrentCommand({});
     m_active->holdPosition();

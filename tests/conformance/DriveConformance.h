@@ -54,7 +54,7 @@ std::string recordedCapture()
         TestRequest r;
         r.axis = "X";
         r.type = TestType::Step;
-        r.amplitude = 10.0;
+        r.stepVelocityRadS = 10.0;
         r.durationS = 0.2;
         if (!(*d)->startTest(r))
             return std::string();
@@ -179,8 +179,10 @@ protected:
         case TestType::Step:
             // A position step in the command's units (hal:: mm on the test machine, like the jog's distance), else a
             // motor velocity step.
-            r.amplitude = m_caps.stepIsPositionStep ? 0.002 : std::min(10.0, 0.1 * m_limits.motorSpeedMaxRadS);
-            r.positionStep = m_caps.stepIsPositionStep;
+            if (m_caps.stepIsPositionStep)
+                r.stepPosition = 0.002;
+            else
+                r.stepVelocityRadS = std::min(10.0, 0.1 * m_limits.motorSpeedMaxRadS);
             r.durationS = 0.2;
             break;
         case TestType::Jog:
@@ -194,7 +196,7 @@ protected:
             r.durationS = 0.2;
             break;
         case TestType::CurrentStep:
-            r.amplitude = 0.5 * m_limits.currentStepMaxA;
+            r.currentA = 0.5 * m_limits.currentStepMaxA;
             r.durationS = std::min(0.02, m_limits.currentStepMaxS);
             break;
         case TestType::Frf:
@@ -226,7 +228,8 @@ protected:
             }
             if (m_drive->planTest(r))
                 return r;
-            r.amplitude *= 0.5;
+            for (double* a : {&r.stepVelocityRadS, &r.stepPosition, &r.currentA})
+                *a *= 0.5;
         }
         return std::nullopt;
     }
@@ -473,6 +476,27 @@ TEST_P(DriveConformance, EveryAdvertisedTestRunsToCompletionAsPlanned)
     }
 }
 
+// A step's quantity is the drive's own (TestRequest::stepVelocityRadS or ::stepPosition, as
+// DriveCapabilities::stepIsPositionStep says): a step given in the other one is refused before anything moves, so
+// that millimetres are never taken for rad/s. A replay plays what it recorded whatever is asked.
+TEST_P(DriveConformance, AStepInTheOtherQuantityIsRefused)
+{
+    if (!offered(m_caps.offers(TestType::Step) && GetParam() != "replay", "a step in the other quantity is refused",
+                 "a step test of its own"))
+        return;
+    auto r = requestFor(TestType::Step).value();
+    std::swap(r.stepVelocityRadS, r.stepPosition);
+    auto plan = m_drive->planTest(r);
+    ASSERT_FALSE(plan.ok());
+    EXPECT_EQ(plan.error().code, ErrorCode::BadInput) << errorText(plan.error());
+    auto st = m_drive->startTest(r);
+    ASSERT_FALSE(st.ok());
+    EXPECT_EQ(st.error().code, ErrorCode::BadInput) << errorText(st.error());
+    auto s = m_drive->pollTest();
+    ASSERT_TRUE(s.ok()) << errorText(s.error());
+    EXPECT_NE(s->state, TestState::Running);
+}
+
 TEST_P(DriveConformance, AbortMidTestRestoresTheParameters)
 {
     const auto before = m_drive->readParameters(m_axis, {});
@@ -655,7 +679,7 @@ TEST_P(DriveConformance, ScopeTriggersAtThePreTriggerRowOnAStep)
     r.axis = m_axis;
     r.channels = {"velocity_cmd_rad_s"};
     r.triggerChannel = "velocity_cmd_rad_s";
-    r.triggerLevel = 0.5 * step.amplitude;
+    r.triggerLevel = 0.5 * step.stepVelocityRadS;
     r.edge = ScopeEdge::Rising;
     r.preTriggerPct = 30.0;
     r.lengthSamples = 200;
@@ -671,7 +695,7 @@ TEST_P(DriveConformance, ScopeTriggersAtThePreTriggerRowOnAStep)
     EXPECT_EQ(cap->missingSamples(), 0u);
     EXPECT_LT(cap->columns[0][59], r.triggerLevel);
     EXPECT_GE(cap->columns[0][60], r.triggerLevel);
-    EXPECT_EQ(cap->columns[0][60], step.amplitude); // the step itself, not a ramp through the level
+    EXPECT_EQ(cap->columns[0][60], step.stepVelocityRadS); // the step itself, not a ramp through the level
 }
 
 TEST_P(DriveConformance, ScopeRollModeDeliversEverySampleOnce)

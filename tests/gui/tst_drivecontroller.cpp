@@ -92,7 +92,7 @@ private slots:
         axistune::device::TestRequest t;
         t.axis = "X";
         t.type = axistune::device::TestType::Step;
-        t.amplitude = 10.0;  // rad/s
+        t.stepVelocityRadS = 10.0;  // rad/s
         t.durationS = 0.1;
         const DriveReply r = rc.wait(c.runTest(t));
         QVERIFY2(r.ok, qPrintable(r.error));

@@ -61,7 +61,7 @@ axistune::device::TestRequest stepTest()
     axistune::device::TestRequest t;
     t.axis = "X";
     t.type = axistune::device::TestType::Step;
-    t.amplitude = 5.0; // rad/s
+    t.stepVelocityRadS = 5.0; // rad/s
     t.durationS = 0.05;
     return t;
 }

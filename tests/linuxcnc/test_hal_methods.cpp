@@ -203,8 +203,7 @@ TEST_F(HalTestbed, PositionStepEqualsTheSimulatedPidAndPlant)
     TestRequest r;
     r.axis = "pid.x";
     r.type = TestType::Step;
-    r.amplitude = 0.01; // mm: P·e 0.02 N·m, D·e/T 0.47 N·m, below maxoutput 2 N·m
-    r.positionStep = true;
+    r.stepPosition = 0.01; // mm: P·e 0.02 N·m, D·e/T 0.47 N·m, below maxoutput 2 N·m
     r.durationS = 0.5;
     auto plan = drive->planTest(r);
     ASSERT_TRUE(plan) << plan.error().detail;
@@ -253,14 +252,14 @@ TEST_F(HalTestbed, PositionStepEqualsTheSimulatedPidAndPlant)
         worstY = std::max(worstY, std::abs(y->data[k] - s.C * x));
     }
     EXPECT_LT(peakU, maxOut); // the linear range: the limit never acted
-    EXPECT_LE(worstY, 1e-9 * r.amplitude);
-    EXPECT_LE(worstE, 1e-9 * r.amplitude);
-    EXPECT_LE(worstU, 1e-9 * r.amplitude * D / T);
+    EXPECT_LE(worstY, 1e-9 * r.stepPosition);
+    EXPECT_LE(worstE, 1e-9 * r.stepPosition);
+    EXPECT_LE(worstU, 1e-9 * r.stepPosition * D / T);
     RecordProperty("worst_feedback_difference", model::formatShortest(worstY));
     // The step response itself: the feedback has moved most of the way by the end of the hold and is back near zero
     // at the end.
-    EXPECT_GT(y->data[549], 0.5 * r.amplitude);
-    EXPECT_LT(std::abs(y->data[n - 1]), 0.5 * r.amplitude);
+    EXPECT_GT(y->data[549], 0.5 * r.stepPosition);
+    EXPECT_LT(std::abs(y->data[n - 1]), 0.5 * r.stepPosition);
 }
 
 // Refusals before anything is inserted, each with its reason, in planTest and startTest alike; the HAL's nets and
@@ -295,16 +294,15 @@ TEST_F(HalTestbed, RefusedMethodsAndStepsChangeNothing)
     TestRequest step;
     step.axis = "pid.x";
     step.type = TestType::Step;
-    step.amplitude = 2.6; // FERROR 5 mm
+    step.stepPosition = 2.6; // FERROR 5 mm
     step.durationS = 0.2;
-    step.positionStep = true;
     cases.push_back({step, "at most half of the following-error limit"});
     TestRequest velocityStep = step; // a caller that means a motor velocity step in rad/s (the simulator's step)
-    velocityStep.amplitude = 1.0;
-    velocityStep.positionStep = false;
+    velocityStep.stepPosition = 0.0;
+    velocityStep.stepVelocityRadS = 1.0;
     cases.push_back({velocityStep, "a velocity step request is refused"});
     TestRequest noDuration = step;
-    noDuration.amplitude = 0.01;
+    noDuration.stepPosition = 0.01;
     noDuration.durationS = 0.0;
     cases.push_back({noDuration, "duration must be positive"});
     for (const auto& c : cases) {
@@ -317,7 +315,7 @@ TEST_F(HalTestbed, RefusedMethodsAndStepsChangeNothing)
     }
     // Without a following-error limit a step is a safety refusal.
     halText({"setp", "pid.x.maxerror", "0"});
-    step.amplitude = 0.01;
+    step.stepPosition = 0.01;
     auto unbounded = drive->planTest(step);
     ASSERT_FALSE(unbounded);
     EXPECT_EQ(unbounded.error().code, ErrorCode::Safety);

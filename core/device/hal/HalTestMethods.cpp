@@ -170,10 +170,10 @@ Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, doubl
 {
     if (r.type != TestType::Step)
         return makeError(ErrorCode::Internal, "planHalStep: a step request only");
-    if (!r.positionStep)
+    if (r.stepVelocityRadS != 0.0)
         return makeError(ErrorCode::BadInput, "hal: steps the pid's position command (in its units), not the motor "
                                               "velocity: a velocity step request is refused");
-    if (!std::isfinite(r.amplitude) || r.amplitude == 0.0)
+    if (!std::isfinite(r.stepPosition) || r.stepPosition == 0.0)
         return makeError(ErrorCode::OutOfRange,
                          "step must be a non-zero number: on hal: a position step of the command, in its units");
     if (!std::isfinite(r.durationS) || !(r.durationS > 0.0))
@@ -185,9 +185,9 @@ Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, doubl
         return makeError(ErrorCode::Safety, "step refused: " + axis.pid +
                                                 ".maxerror is 0 and the joint has no FERROR: the following error of a "
                                                 "step equals the step, and nothing would bound it");
-    if (std::abs(r.amplitude) > 0.5 * followingErrorTrip)
+    if (std::abs(r.stepPosition) > 0.5 * followingErrorTrip)
         return makeError(ErrorCode::OutOfRange,
-                         "step of " + num(r.amplitude) +
+                         "step of " + num(r.stepPosition) +
                              " refused: at most half of the "
                              "following-error limit (" +
                              num(followingErrorTrip) + ", the smaller of " + axis.pid +
@@ -196,8 +196,8 @@ Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, doubl
     plan.axis = axis;
     plan.type = TestType::Step;
     plan.fsHz = 1e9 / static_cast<double>(axis.periodNs);
-    plan.distance = r.amplitude;
-    plan.returnRate = std::abs(r.amplitude) / kHalStepReturnS;
+    plan.distance = r.stepPosition;
+    plan.returnRate = std::abs(r.stepPosition) / kHalStepReturnS;
     const double total = 2.1 * r.durationS;
     if (total > HalDrive::kMaxTestS)
         return makeError(ErrorCode::OutOfRange, "step of " + num(total) +
@@ -211,7 +211,7 @@ Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, doubl
     plan.backAt = rest + hold;
     plan.offset.assign(rest + 2 * hold, 0.0);
     std::fill(plan.offset.begin() + static_cast<std::ptrdiff_t>(plan.stepAt),
-              plan.offset.begin() + static_cast<std::ptrdiff_t>(plan.backAt), r.amplitude);
+              plan.offset.begin() + static_cast<std::ptrdiff_t>(plan.backAt), r.stepPosition);
     return plan;
 }
 

@@ -39,7 +39,7 @@ device::TestRequest step(double amplitude, double duration, int divider)
     device::TestRequest r;
     r.axis = "X";
     r.type = device::TestType::Step;
-    r.amplitude = amplitude;
+    r.stepVelocityRadS = amplitude;
     r.durationS = duration;
     r.traceDivider = divider;
     return r;

@@ -578,7 +578,7 @@ TEST(ModbusAbuse, RefusedTestBlockNeverStarts)
     SimDrive srv("--preset vmc");
     ASSERT_GT(srv.port(), 0);
     const auto map = registerMap();
-    const int type = fieldAddress("test.type"), amp = fieldAddress("test.amplitude"),
+    const int type = fieldAddress("test.type"), amp = fieldAddress("test.step_velocity"),
               dur = fieldAddress("test.duration"), code = fieldAddress("command.code"),
               state = fieldAddress("status.state"), echo = fieldAddress("status.command_token_echo");
     const int stepCode = map["enums"]["test_type"]["step"].get<int>();

@@ -82,7 +82,7 @@ TEST_P(ModbusScopeTrigger, TriggerAtThePreTriggerRowOnAKnownStep)
     TestRequest step;
     step.axis = "X";
     step.type = TestType::Step;
-    step.amplitude = kStepRadS;
+    step.stepVelocityRadS = kStepRadS;
     step.durationS = 1.0;
     auto run = runTest(*d, step, {});
     ASSERT_TRUE(run.ok()) << run.error().detail;

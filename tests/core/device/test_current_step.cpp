@@ -20,7 +20,7 @@ TestRequest currentStep(double amplitudeA, double durationS, const std::string& 
     TestRequest r;
     r.axis = axis;
     r.type = TestType::CurrentStep;
-    r.amplitude = amplitudeA;
+    r.currentA = amplitudeA;
     r.durationS = durationS;
     return r;
 }
@@ -92,7 +92,7 @@ TEST(SimulatedDriveCurrentStep, TracesAtTheCurrentRateAndHoldsAfterwards)
                         TestRequest r;
                         r.axis = "X";
                         r.type = TestType::Step;
-                        r.amplitude = 1.0;
+                        r.stepVelocityRadS = 1.0;
                         r.durationS = 0.01;
                         return r;
                     }())

@@ -54,7 +54,7 @@ TestRequest step(const std::string& axis, double amplitude, double duration)
     TestRequest r;
     r.axis = axis;
     r.type = TestType::Step;
-    r.amplitude = amplitude;
+    r.stepVelocityRadS = amplitude;
     r.durationS = duration;
     return r;
 }
@@ -417,7 +417,7 @@ TEST(ModbusDrive, CurrentStepOverModbusIsTheEmbeddedTrace)
     TestRequest r;
     r.axis = "Y";
     r.type = TestType::CurrentStep;
-    r.amplitude = 4.0;
+    r.currentA = 4.0;
     r.durationS = 0.005;
     const auto traces = devtest::tracesOfEach({remote.get(), local.get()}, r);
     const auto& tr = traces[0];
@@ -453,7 +453,7 @@ TEST(ModbusDrive, CurrentStepRefusedByTheDriveAndByTheServer)
     TestRequest r;
     r.axis = "X";
     r.type = TestType::CurrentStep;
-    r.amplitude = 4.0;
+    r.currentA = 4.0;
     r.durationS = 0.002;
     auto st = d->startTest(r);
     ASSERT_FALSE(st.ok());
@@ -461,7 +461,7 @@ TEST(ModbusDrive, CurrentStepRefusedByTheDriveAndByTheServer)
     EXPECT_NE(st.error().detail.find("current step 4 A means 2.036 Nm, above the drive's limit 20 %"), std::string::npos)
         << st.error().detail;
     // Inside the server's limit but beyond the record length of the drive: the drive's own message.
-    r.amplitude = 3.0;
+    r.currentA = 3.0;
     r.durationS = 0.06;
     st = d->startTest(r);
     ASSERT_FALSE(st.ok());
@@ -491,7 +491,7 @@ TEST(ModbusDrive, ANewClientRunsItsOwnTestNotTheLastClientsRetry)
     TestRequest r;
     r.axis = "X";
     r.type = TestType::CurrentStep;
-    r.amplitude = 3.0;
+    r.currentA = 3.0;
     r.durationS = 0.002;
     ASSERT_TRUE(second->startTest(r).ok());
     auto s = finish(*second);
@@ -501,14 +501,14 @@ TEST(ModbusDrive, ANewClientRunsItsOwnTestNotTheLastClientsRetry)
     EXPECT_EQ(t->metadata.at("fs_Hz"), "16000"); // the current step's trace, not the velocity step's (4000)
     EXPECT_EQ(t->size(), 32u);
     // And a refusal reaches the second client too.
-    r.amplitude = 45.0;
+    r.currentA = 45.0;
     auto st = second->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().detail.find("40 A"), std::string::npos) << st.error().detail;
 }
 
 // The vibration-suppression parameters (suppression.*, docs/modbus.md) and a jog's jerk limit (carried
-// in test.amplitude) reach the served drive: the filtered rectangular-jerk jog on the two-inertia
+// in test.jog_jerk, a register of its own since map version 2) reach the served drive: the filtered rectangular-jerk jog on the two-inertia
 // bench is the embedded drive's bit for bit (values chosen exact in float32), and a filter mode that
 // does not match the feedback is refused over the wire with a message naming both parameters.
 TEST(ModbusDrive, SuppressionFilterAndJerkLimitedJogAreTheEmbeddedOnes)

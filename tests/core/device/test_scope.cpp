@@ -72,7 +72,7 @@ StepCapture captureStep(SimulatedDrive& drive, const ScopeRequest& r)
     TestRequest step;
     step.axis = "X";
     step.type = TestType::Step;
-    step.amplitude = kStepRadS;
+    step.stepVelocityRadS = kStepRadS;
     step.durationS = kStepDurationS;
     EXPECT_TRUE(runTest(drive, step, {}).ok());
     // The simulated drive steps at 1 % of the record (SimulatedDrive::startTest).
@@ -171,7 +171,7 @@ TEST(Scope, FallingEdgeFiresWhereTheStepEndsNotWhereItBegins)
     TestRequest step;
     step.axis = "X";
     step.type = TestType::Step;
-    step.amplitude = kStepRadS;
+    step.stepVelocityRadS = kStepRadS;
     step.durationS = kStepDurationS;
     ASSERT_TRUE(runTest(*drive, step, {}).ok());
     for (int i = 0; i < 4; ++i)
@@ -194,7 +194,7 @@ TEST(Scope, NormalModeReArmsAndKeepsTheLastCapture)
     TestRequest step;
     step.axis = "X";
     step.type = TestType::Step;
-    step.amplitude = kStepRadS;
+    step.stepVelocityRadS = kStepRadS;
     step.durationS = kStepDurationS;
     for (int k = 1; k <= 2; ++k) {
         for (int i = 0; i < 3; ++i)

@@ -60,7 +60,7 @@ TEST(SimulatedDrive, StepTestTracesAndRestoresAndRefusesWritesWhileRunning)
     TestRequest req;
     req.axis = "A";
     req.type = TestType::Step;
-    req.amplitude = 1.0;
+    req.stepVelocityRadS = 1.0;
     req.durationS = 0.3;
     bool checkedBusy = false;
     RunOptions o;

@@ -170,7 +170,7 @@ TEST(TestRunner, ProgressNeverFallsAndEndsAtOne)
     TestRequest r;
     r.axis = "X";
     r.type = TestType::Step;
-    r.amplitude = 10.0;
+    r.stepVelocityRadS = 10.0;
     r.durationS = 0.2;
     std::vector<double> seen;
     RunOptions o;

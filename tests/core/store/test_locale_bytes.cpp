@@ -91,7 +91,7 @@ Files writeEverything(const char* name, const fs::path& dir)
         device::TestRequest step;
         step.axis = "X";
         step.type = device::TestType::CurrentStep;
-        step.amplitude = 2.5;
+        step.currentA = 2.5;
         step.durationS = 0.004;
         EXPECT_EQ(runToEnd(**drive, step).state, device::TestState::Completed);
         auto trace = (*drive)->readTrace();
