@@ -182,7 +182,7 @@ std::vector<PidTuneWrite> pidTuneAppliedWrites(const PidTuneApplied& applied, co
 /// HAL held just before to the one put back.
 std::vector<PidTuneWrite> pidTuneUndoWrites(const std::vector<UndoneParameter>& gains, const PidTuneNotchUndone& notch);
 
-/// The writes as JSON: [{"key", "old" (null: nothing before), "new"}].
+/// The writes as JSON: [{"key", "old" (absent: nothing before), "new"}].
 nlohmann::json pidTuneWritesJson(const std::vector<PidTuneWrite>& writes);
 
 /// The result JSON of a tune (docs/linuxcnc.md "Tuning from the command line", pid-tune's --out; the wizards' session

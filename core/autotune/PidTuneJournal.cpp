@@ -58,8 +58,13 @@ std::vector<PidTuneWrite> pidTuneUndoWrites(const std::vector<UndoneParameter>& 
 nlohmann::json pidTuneWritesJson(const std::vector<PidTuneWrite>& writes)
 {
     nlohmann::json out = nlohmann::json::array();
-    for (const auto& w : writes)
-        out.push_back({{"key", w.key}, {"old", w.from ? nlohmann::json(*w.from) : nlohmann::json()}, {"new", w.to}});
+    for (const auto& w : writes) {
+        nlohmann::json e{{"key", w.key}};
+        if (w.from) // absent, not null: nothing before (result files hold numbers only)
+            e["old"] = *w.from;
+        e["new"] = w.to;
+        out.push_back(std::move(e));
+    }
     return out;
 }
 

@@ -646,3 +646,55 @@ TEST(ModbusAbuse, RefusedTestBlockNeverStarts)
     EXPECT_EQ(countLines(srv.log(), "test step started"), 2u);
     expectNormalService(srv, 0.625f);
 }
+
+// Map version 2 (docs/modbus.md "One quantity per register"): a raw client that knows only the JSON map writes a
+// current step into test.current_step; the velocity-step register beside it, holding 7 rad/s, is not read as
+// amperes. The server's refusal names the current it took from test.current_step.
+TEST(ModbusAbuse, ACurrentStepIsReadFromItsOwnRegister)
+{
+    SimDrive srv("--preset vmc");
+    ASSERT_GT(srv.port(), 0);
+    const auto map = registerMap();
+    const int type = fieldAddress("test.type"), velocity = fieldAddress("test.step_velocity"),
+              current = fieldAddress("test.current_step"), dur = fieldAddress("test.duration"),
+              code = fieldAddress("command.code"), state = fieldAddress("status.state"),
+              echo = fieldAddress("status.command_token_echo"), rate = fieldAddress("status.trace_rate_hz");
+    EXPECT_NE(current, velocity);
+    const int startCode = map["enums"]["command"]["start_test"].get<int>();
+    const int completed = map["enums"]["state"]["completed"].get<int>(),
+              running = map["enums"]["state"]["running"].get<int>();
+    Client c(srv.port());
+    ASSERT_TRUE(c.connected());
+    auto start = [&]() {
+        const auto t = static_cast<std::uint16_t>((*c.read(echo, 1))[0] + 1);
+        return c.write(code, {static_cast<std::uint16_t>(startCode), t});
+    };
+    ASSERT_TRUE(c.write(type, {static_cast<std::uint16_t>(map["enums"]["test_type"]["current_step"].get<int>())}));
+    ASSERT_TRUE(c.write(velocity, f64Words(7.0)));
+    ASSERT_TRUE(c.write(current, f64Words(45.0)));
+    ASSERT_TRUE(c.write(dur, f64Words(0.004)));
+    EXPECT_FALSE(start()); // 45 A: above the drive's limit (the vmc motor's rated 15.3 A)
+    const auto msg = c.read(fieldAddress("status.message"), 64);
+    ASSERT_TRUE(msg.has_value());
+    std::string text;
+    for (auto w : *msg) {
+        text += static_cast<char>(w >> 8);
+        text += static_cast<char>(w & 0xff);
+    }
+    EXPECT_NE(text.find("current step 45 A"), std::string::npos) << text;
+    ASSERT_TRUE(c.write(current, f64Words(2.0)));
+    ASSERT_TRUE(start()) << modbus_strerror(c.lastErrno());
+    int s = running;
+    for (int k = 0; k < 200 && s == running; ++k) {
+        std::this_thread::sleep_for(10ms);
+        s = (*c.read(state, 1))[0];
+    }
+    EXPECT_EQ(s, completed);
+    // A current step traces at the current-loop rate (vmc: 16 kHz), a velocity step at 4 kHz.
+    const auto r = c.read(rate, 4);
+    ASSERT_TRUE(r.has_value());
+    const auto sixteen = f64Words(16000.0);
+    EXPECT_EQ(*r, sixteen);
+    EXPECT_EQ(c.read(velocity, 4), f64Words(7.0));
+    EXPECT_EQ(countLines(srv.log(), "test current_step started"), 1u);
+}
