@@ -249,8 +249,14 @@ Result<RegisterMap> parseRegisterMap(const std::string& jsonText, const std::str
         }
         for (const auto& [g, values] : j.at("enums").items()) {
             where = "enum '" + g + "'";
-            for (const auto& [n, v] : values.items())
-                m.enums[g][n] = v.get<int>();
+            std::map<int, std::string> named;
+            for (const auto& [n, v] : values.items()) {
+                const int code = v.get<int>();
+                if (auto [it, fresh] = named.emplace(code, n); !fresh)
+                    return makeError(ErrorCode::BadInput, source + ": " + where + ": '" + it->second + "' and '" + n +
+                                                              "' have the same code " + std::to_string(code));
+                m.enums[g][n] = code;
+            }
         }
         for (const auto& p : j.at("parameters")) {
             ParameterRegister pr;

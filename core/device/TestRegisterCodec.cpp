@@ -308,8 +308,8 @@ Status checkTestValue(const RegisterField& field, const RegisterMap& map, double
         return Status::success();
     if (!std::isfinite(value))
         return makeError(ErrorCode::BadInput, field.name + " must be finite");
-    if (q->whole && (value < 0.0 || value != std::floor(value)))
-        return makeError(ErrorCode::BadInput, field.name + " must be a whole number ≥ 0");
+    if (q->whole && (value < 0.0 || value != std::floor(value) || value > 2147483647.0))
+        return makeError(ErrorCode::BadInput, field.name + " must be a whole number in 0..2147483647");
     if (!q->enumGroup.empty() && map.name(q->enumGroup, static_cast<int>(value)).empty())
         return makeError(ErrorCode::BadInput,
                          field.name + ": unknown " + q->enumGroup + " code " + model::formatNumber(value, 6));

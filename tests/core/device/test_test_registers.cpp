@@ -347,6 +347,13 @@ TEST(TestRegisters, AMapWhoseFieldsCarryNonsenseIsRefusedWhenLoaded)
     ASSERT_FALSE(m);
     EXPECT_NE(m.error().detail.find("step.position needs a f32 or f64 field"), std::string::npos)
         << m.error().detail;
+    // An enumeration whose codes are not unique would decode a test as another one.
+    auto j = committedMap();
+    j["enums"]["test_type"]["frf"] = 0;
+    m = parseRegisterMap(j.dump(), "bad.json");
+    ASSERT_FALSE(m);
+    EXPECT_NE(m.error().detail.find("enum 'test_type': 'frf' and 'step' have the same code 0"), std::string::npos)
+        << m.error().detail;
     // A family that carries the position step (a drive that steps its position command) takes it.
     m = parseRegisterMap(withField("test.position_step", {{"address", 380}, {"type", "f64"}, {"carries", "step.position"}}),
                          "ok.json");
