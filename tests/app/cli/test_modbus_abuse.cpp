@@ -260,6 +260,19 @@ void expectNormalService(const SimDrive& srv, float kpValue)
     EXPECT_EQ(c.read(kp, 2), f32Words(0.5f));
 }
 
+/// status.message as text (two ASCII characters per register, high byte first); empty when the read fails.
+std::string statusMessage(Client& c)
+{
+    std::string text;
+    if (const auto msg = c.read(fieldAddress("status.message"), 64)) {
+        for (auto w : *msg) {
+            text += static_cast<char>(w >> 8);
+            text += static_cast<char>(w & 0xff);
+        }
+    }
+    return text;
+}
+
 std::size_t countLines(const std::string& log, const std::string& phrase)
 {
     std::size_t n = 0;
@@ -630,13 +643,7 @@ TEST(ModbusAbuse, RefusedTestBlockNeverStarts)
         EXPECT_EQ(c.read(amp, 4), f64Words(1.0)) << what;
     }
     // The refusal is in status.message and the log.
-    const auto msg = c.read(fieldAddress("status.message"), 64);
-    ASSERT_TRUE(msg.has_value());
-    std::string text;
-    for (auto w : *msg) {
-        text += static_cast<char>(w >> 8);
-        text += static_cast<char>(w & 0xff);
-    }
+    const std::string text = statusMessage(c);
     EXPECT_NE(text.find("refused earlier"), std::string::npos) << text;
     EXPECT_EQ(countLines(srv.log(), "test configuration refused earlier"), refusals.size());
     // A valid amplitude written again: the same start is accepted.
@@ -674,13 +681,7 @@ TEST(ModbusAbuse, ACurrentStepIsReadFromItsOwnRegister)
     ASSERT_TRUE(c.write(current, f64Words(45.0)));
     ASSERT_TRUE(c.write(dur, f64Words(0.004)));
     EXPECT_FALSE(start()); // 45 A: above the drive's limit (the vmc motor's rated 15.3 A)
-    const auto msg = c.read(fieldAddress("status.message"), 64);
-    ASSERT_TRUE(msg.has_value());
-    std::string text;
-    for (auto w : *msg) {
-        text += static_cast<char>(w >> 8);
-        text += static_cast<char>(w & 0xff);
-    }
+    const std::string text = statusMessage(c);
     EXPECT_NE(text.find("current step 45 A"), std::string::npos) << text;
     ASSERT_TRUE(c.write(current, f64Words(2.0)));
     ASSERT_TRUE(start()) << modbus_strerror(c.lastErrno());

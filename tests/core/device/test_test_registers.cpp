@@ -126,37 +126,39 @@ TEST(TestRegisters, EachQuantityLandsInItsOwnRegisters)
     const auto map = simMap();
     const auto j = committedMap();
     auto at = [&](const char* field) { return j["fields"][field]["address"].get<int>(); };
+    auto encode = [&](const TestRequest& r) {
+        auto w = encodeTestRegisters(*testValuesOf(r, map, indexOf), map);
+        EXPECT_TRUE(w.ok());
+        return w.ok() ? *w : std::vector<RegisterWrite>{};
+    };
     TestRequest step;
     step.axis = "X";
     step.type = TestType::Step;
     step.stepVelocityRadS = 12.5;
-    auto w = encodeTestRegisters(*testValuesOf(step, map, indexOf), map);
-    ASSERT_TRUE(w.ok());
-    EXPECT_EQ(wordsAt(*w, at("test.step_velocity"), 4), f64Words(12.5));
-    EXPECT_EQ(wordsAt(*w, at("test.current_step"), 4), f64Words(0.0));
+    auto w = encode(step);
+    EXPECT_EQ(wordsAt(w, at("test.step_velocity"), 4), f64Words(12.5));
+    EXPECT_EQ(wordsAt(w, at("test.current_step"), 4), f64Words(0.0));
     TestRequest current = step;
     current.type = TestType::CurrentStep;
     current.stepVelocityRadS = 0.0;
     current.currentA = 3.0;
-    w = encodeTestRegisters(*testValuesOf(current, map, indexOf), map);
-    ASSERT_TRUE(w.ok());
-    EXPECT_EQ(wordsAt(*w, at("test.current_step"), 4), f64Words(3.0));
-    EXPECT_EQ(wordsAt(*w, at("test.step_velocity"), 4), f64Words(0.0));
+    w = encode(current);
+    EXPECT_EQ(wordsAt(w, at("test.current_step"), 4), f64Words(3.0));
+    EXPECT_EQ(wordsAt(w, at("test.step_velocity"), 4), f64Words(0.0));
     TestRequest jog = step;
     jog.type = TestType::Jog;
     jog.stepVelocityRadS = 0.0;
     jog.jerk = 125000.0;
     jog.acceleration = 1250.0;
-    w = encodeTestRegisters(*testValuesOf(jog, map, indexOf), map);
-    ASSERT_TRUE(w.ok());
-    EXPECT_EQ(wordsAt(*w, at("test.jog_jerk"), 4), f64Words(125000.0));
-    EXPECT_EQ(wordsAt(*w, at("test.acceleration"), 4), f64Words(1250.0));
+    w = encode(jog);
+    EXPECT_EQ(wordsAt(w, at("test.jog_jerk"), 4), f64Words(125000.0));
+    EXPECT_EQ(wordsAt(w, at("test.acceleration"), 4), f64Words(1250.0));
     // Two writes: the test block 200-299, then circle block, jerk and FRF amplitude 340-373.
-    ASSERT_EQ(w->size(), 2u);
-    EXPECT_EQ((*w)[0].address, 200);
-    EXPECT_EQ((*w)[0].words.size(), 100u);
-    EXPECT_EQ((*w)[1].address, 340);
-    EXPECT_EQ((*w)[1].words.size(), 34u);
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_EQ(w[0].address, 200);
+    EXPECT_EQ(w[0].words.size(), 100u);
+    EXPECT_EQ(w[1].address, 340);
+    EXPECT_EQ(w[1].words.size(), 34u);
 }
 
 TEST(TestRegisters, EveryTestKindComesBackUnchanged)
