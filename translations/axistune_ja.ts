@@ -164,35 +164,22 @@
 <context>
     <name>DriveController</name>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="79" />
-        <location filename="../app/gui/DriveController.cpp" line="95" />
-        <location filename="../app/gui/DriveController.cpp" line="114" />
-        <location filename="../app/gui/DriveController.cpp" line="157" />
-        <location filename="../app/gui/DriveControllerAutoTune.cpp" line="28" />
-        <location filename="../app/gui/DriveControllerAutoTune.cpp" line="78" />
-        <location filename="../app/gui/DriveControllerAutoTune.cpp" line="95" />
-        <location filename="../app/gui/DriveControllerDescribe.cpp" line="19" />
-        <location filename="../app/gui/DriveControllerDescribe.cpp" line="40" />
-        <location filename="../app/gui/DriveControllerPidTune.cpp" line="30" />
-        <location filename="../app/gui/DriveControllerPidTune.cpp" line="68" />
-        <location filename="../app/gui/DriveControllerScope.cpp" line="15" />
+        <location filename="../app/gui/DriveController.cpp" line="34" />
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="132" />
+        <location filename="../app/gui/DriveController.cpp" line="152" />
         <source>Read-back of %1 on axis %2 gave %3 instead of %4</source>
         <translation>軸 %2 の %1 の読み出し値が %4 ではなく %3 でした</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="172" />
+        <location filename="../app/gui/DriveController.cpp" line="186" />
         <source>Aborted by the user</source>
         <translation>ユーザーにより中止されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="153" />
-        <location filename="../app/gui/DriveControllerAutoTune.cpp" line="23" />
-        <location filename="../app/gui/DriveControllerPidTune.cpp" line="25" />
+        <location filename="../app/gui/DriveController.cpp" line="41" />
         <source>Aborted by the user before the test started</source>
         <translation>テスト開始前にユーザーにより中止されました</translation>
     </message>
@@ -3117,22 +3104,22 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::DriveController</name>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="237" />
+        <location filename="../app/gui/DriveController.cpp" line="251" />
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="293" />
+        <location filename="../app/gui/DriveController.cpp" line="308" />
         <source>Connected: %1</source>
         <translation>接続中: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="294" />
+        <location filename="../app/gui/DriveController.cpp" line="309" />
         <source>Connection to %1 failed: %2</source>
         <translation>%1 への接続に失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="298" />
+        <location filename="../app/gui/DriveController.cpp" line="313" />
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
@@ -6072,13 +6059,13 @@ Read the axis's parameters to see what the drive holds.</source>
     </message>
     <message>
         <location filename="../app/gui/NcPidPage.cpp" line="74" />
-        <location filename="../app/gui/NcPidPage.cpp" line="451" />
+        <location filename="../app/gui/NcPidPage.cpp" line="454" />
         <source>torque or current</source>
         <translation>トルクまたは電流</translation>
     </message>
     <message>
         <location filename="../app/gui/NcPidPage.cpp" line="75" />
-        <location filename="../app/gui/NcPidPage.cpp" line="451" />
+        <location filename="../app/gui/NcPidPage.cpp" line="454" />
         <source>velocity</source>
         <translation>速度</translation>
     </message>
@@ -6188,184 +6175,184 @@ Read the axis's parameters to see what the drive holds.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプの速度ループはありません。このページは現在のゲインで開ループを測定し、要求された余裕に対して P、I、D、FF1、FF2 (交差周波数を上げられるときは PID 出力の後の biquad ノッチも) を各値のルールとともに提案し、運転中に適用して再測定で検証します。余裕を満たさないループは元の設定に戻します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="281" />
+        <location filename="../app/gui/NcPidPage.cpp" line="282" />
         <source>Measuring the open loop of %1 with the gains that run…</source>
         <translation>現在のゲインで %1 の開ループを測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="296" />
+        <location filename="../app/gui/NcPidPage.cpp" line="297" />
         <source>Aborted: the excitation stopped and what AxisTune inserted was removed. %1</source>
         <translation>中止しました: 加振を止め、AxisTune が挿入したものを取り除きました。%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="297" />
+        <location filename="../app/gui/NcPidPage.cpp" line="298" />
         <source>Measured, but no proposal: %1</source>
         <translation>測定しましたが提案はありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="297" />
+        <location filename="../app/gui/NcPidPage.cpp" line="298" />
         <source>The measurement failed: %1</source>
         <translation>測定に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="308" />
+        <location filename="../app/gui/NcPidPage.cpp" line="309" />
         <source>Nothing to change: %1</source>
         <translation>変更するものはありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="311" />
+        <location filename="../app/gui/NcPidPage.cpp" line="312" />
         <source>Proposed: a notch at %1 Hz, Q %2. Nothing was written yet.</source>
         <translation>提案: %1 Hz、Q %2 のノッチ。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="313" />
+        <location filename="../app/gui/NcPidPage.cpp" line="314" />
         <source>Proposed below with the predicted margins. Nothing was written yet.</source>
         <translation>提案と予測余裕を下に示します。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="316" />
+        <location filename="../app/gui/NcPidPage.cpp" line="317" />
         <source>proposed, not applied</source>
         <translation>提案のみ、未適用</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="325" />
+        <location filename="../app/gui/NcPidPage.cpp" line="326" />
         <source>Inserting the notch and measuring the open loop again…</source>
         <translation>ノッチを挿入し、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="326" />
+        <location filename="../app/gui/NcPidPage.cpp" line="327" />
         <source>Writing the gains (read back) and measuring the open loop again…</source>
         <translation>ゲインを書き込み (読み戻し確認)、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="337" />
+        <location filename="../app/gui/NcPidPage.cpp" line="338" />
         <source>Not applied: %1. Nothing was left changed.</source>
         <translation>適用しませんでした: %1。変更は残っていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="343" />
+        <location filename="../app/gui/NcPidPage.cpp" line="344" />
         <source>Applied and verified: the measured margins are in the table. Undo puts back what ran before.</source>
         <translation>適用して検証しました: 測定した余裕は表にあります。「元に戻す」で以前の設定に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="345" />
+        <location filename="../app/gui/NcPidPage.cpp" line="346" />
         <source>Not kept: %1</source>
         <translation>保持しませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="348" />
+        <location filename="../app/gui/NcPidPage.cpp" line="349" />
         <source>applied and verified</source>
         <translation>適用・検証済み</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="374" />
+        <location filename="../app/gui/NcPidPage.cpp" line="375" />
         <source>Putting back what ran before…</source>
         <translation>以前の設定に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="374" />
+        <location filename="../app/gui/NcPidPage.cpp" line="375" />
         <source>Putting back what ran before, over the later change…</source>
         <translation>後からの変更を上書きして、以前の状態に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="391" />
+        <location filename="../app/gui/NcPidPage.cpp" line="392" />
         <source>Undo refused: %1</source>
         <translation>元に戻すことを拒否しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="396" />
+        <location filename="../app/gui/NcPidPage.cpp" line="399" />
         <source>undone</source>
         <translation>元に戻した</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="396" />
+        <location filename="../app/gui/NcPidPage.cpp" line="399" />
         <source>undone anyway (over a later change)</source>
         <translation>後からの変更を上書きして元に戻しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="402" />
+        <location filename="../app/gui/NcPidPage.cpp" line="405" />
         <source>the notch from before (%1 Hz, Q %2) is back</source>
         <translation>以前のノッチ (%1 Hz, Q %2) を戻しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="403" />
+        <location filename="../app/gui/NcPidPage.cpp" line="406" />
         <source>the notch was removed</source>
         <translation>ノッチを取り除きました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="405" />
+        <location filename="../app/gui/NcPidPage.cpp" line="408" />
         <source>Undone: %1.</source>
         <translation>元に戻しました: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="407" />
+        <location filename="../app/gui/NcPidPage.cpp" line="410" />
         <source>, and %1</source>
         <translation>。また、%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="406" />
+        <location filename="../app/gui/NcPidPage.cpp" line="409" />
         <source>Undone: the gains that ran before are back (read back)%1.</source>
         <translation>元に戻しました: 以前のゲインに戻りました (読み戻し確認)%1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="388" />
+        <location filename="../app/gui/NcPidPage.cpp" line="389" />
         <source>Undo refused: %1. To put back what ran before all the same, tick the box below and press Undo anyway.</source>
         <translation>元に戻すことを拒否しました: %1。それでも以前の状態に戻すには、下のボックスにチェックを入れて「それでも元に戻す」を押してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="446" />
+        <location filename="../app/gui/NcPidPage.cpp" line="449" />
         <source>Notch f0 [Hz]</source>
         <translation>ノッチ f0 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="446" />
-        <location filename="../app/gui/NcPidPage.cpp" line="447" />
+        <location filename="../app/gui/NcPidPage.cpp" line="449" />
+        <location filename="../app/gui/NcPidPage.cpp" line="450" />
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="448" />
+        <location filename="../app/gui/NcPidPage.cpp" line="451" />
         <source>Notch Q</source>
         <translation>ノッチ Q</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="450" />
+        <location filename="../app/gui/NcPidPage.cpp" line="453" />
         <source>Drive input</source>
         <translation>サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="457" />
-        <location filename="../app/gui/NcPidPage.cpp" line="462" />
+        <location filename="../app/gui/NcPidPage.cpp" line="460" />
+        <location filename="../app/gui/NcPidPage.cpp" line="465" />
         <source>Crossover [Hz]</source>
         <translation>交差周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="463" />
+        <location filename="../app/gui/NcPidPage.cpp" line="466" />
         <source>Phase margin [°]</source>
         <translation>位相余裕 [°]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="464" />
+        <location filename="../app/gui/NcPidPage.cpp" line="467" />
         <source>Gain margin [dB]</source>
         <translation>ゲイン余裕 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="465" />
+        <location filename="../app/gui/NcPidPage.cpp" line="468" />
         <source>Motion time [s]</source>
         <translation>動作時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="477" />
+        <location filename="../app/gui/NcPidPage.cpp" line="480" />
         <source>measured, running gains</source>
         <translation>測定、現在のゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="479" />
+        <location filename="../app/gui/NcPidPage.cpp" line="482" />
         <source>predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="482" />
+        <location filename="../app/gui/NcPidPage.cpp" line="485" />
         <source>verified (measured after applying)</source>
         <translation>検証 (適用後に測定)</translation>
     </message>
