@@ -356,6 +356,13 @@ TEST(TestRegisters, AMapWhoseFieldsCarryNonsenseIsRefusedWhenLoaded)
     ASSERT_FALSE(m);
     EXPECT_NE(m.error().detail.find("enum 'test_type': 'frf' and 'step' have the same code 0"), std::string::npos)
         << m.error().detail;
+    // A version 1 map (no "carries") is refused with the reason, not read as a drive without tests.
+    j = committedMap();
+    j["fields"]["test.type"].erase("carries");
+    m = parseRegisterMap(j.dump(), "v1.json");
+    ASSERT_FALSE(m);
+    EXPECT_NE(m.error().detail.find("'test.type' must carry test.type (register map version 2"), std::string::npos)
+        << m.error().detail;
     // A family that carries the position step (a drive that steps its position command) takes it.
     m = parseRegisterMap(withField("test.position_step", {{"address", 380}, {"type", "f64"}, {"carries", "step.position"}}),
                          "ok.json");
