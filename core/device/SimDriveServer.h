@@ -114,6 +114,8 @@ private:
     // The circle test of two axes (SimDriveServerCircle.cpp).
     int startCircle(int unitIndex, TestRequest& request);
     void checkCircleSecondAxis();
+    /// Index of the axis named `name`, -1 when the drive has none.
+    int axisIndex(const std::string& name) const;
     /// The test type configured on a unit ("step", "frf", ...: the map's name of its test.type code).
     std::string configuredType(int unitIndex) const;
     // The scope (SimDriveServerScope.cpp; docs/modbus.md "Scope").

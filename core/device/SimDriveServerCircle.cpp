@@ -7,7 +7,6 @@
 #include "core/model/Units.h"
 #include "core/device/SimDriveServer.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <modbus/modbus.h>
@@ -22,18 +21,27 @@ std::string num(double v) { return model::formatNumber(v, 4); }
 int SimDriveServer::startCircle(int ui, TestRequest& req)
 {
     const Axis& first = m_axes[static_cast<std::size_t>(ui)];
-    const auto second = std::find_if(m_axes.begin(), m_axes.end(), [&](const Axis& a) { return a.name == req.secondAxis; });
-    if (second == m_axes.end() || second->name == first.name)
-        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
-                      "circle: second axis index " + std::to_string(second - m_axes.begin()) +
-                          " must name another axis of this drive (axis " + first.name + " is index " +
-                          std::to_string(ui) + ")");
+    const int secondIndex = axisIndex(req.secondAxis); // decoded from circle.second_axis: one of the drive's axes
+    if (secondIndex < 0 || secondIndex == ui)
+        return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "circle: the second plane axis must be another axis of this "
+                                                           "drive, not axis " + first.name + " (index " +
+                                                               std::to_string(ui) + ")");
+    const Axis& second = m_axes[static_cast<std::size_t>(secondIndex)];
     CircleLimits lim;
     lim.travelWindowM = m_opt.safety.travelLimit;
     lim.maxMotorSpeedRadS = m_opt.safety.speedLimitRadS;
-    if (auto st = checkCircleRequest(req, *first.sim, *second->sim, lim); !st)
+    if (auto st = checkCircleRequest(req, *first.sim, *second.sim, lim); !st)
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, st.error().detail);
     return 0;
+}
+
+int SimDriveServer::axisIndex(const std::string& name) const
+{
+    for (std::size_t i = 0; i < m_axes.size(); ++i) {
+        if (m_axes[i].name == name)
+            return static_cast<int>(i);
+    }
+    return -1;
 }
 
 void SimDriveServer::checkCircleSecondAxis()

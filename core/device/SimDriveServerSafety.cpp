@@ -139,11 +139,7 @@ int SimDriveServer::startTest(int ui)
     m_message.clear();
     m_progress = 0.0;
     m_testUnit = ui;
-    m_testSecondUnit = -1;
-    for (std::size_t i = 0; req.type == TestType::Circle && i < m_axes.size(); ++i) {
-        if (m_axes[i].name == req.secondAxis)
-            m_testSecondUnit = static_cast<int>(i);
-    }
+    m_testSecondUnit = req.type == TestType::Circle ? axisIndex(req.secondAxis) : -1;
     m_testStartMachineS = ax.sim->time();
     m_testStartWall = m_lastHeartbeat = Clock::now();
     m_trace.reset();

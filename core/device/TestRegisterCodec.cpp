@@ -92,7 +92,6 @@ Result<E> enumOf(const RegisterMap& map, const std::string& group, double code, 
                                               model::formatNumber(code, 6) + (name.empty() ? "" : " ('" + name + "')"));
 }
 
-const char* phasesName(dsp::MultisinePhases p) { return p == dsp::MultisinePhases::Schroeder ? "schroeder" : "clipping"; }
 const char* directionName(model::CircleDirection d) { return d == model::CircleDirection::Cw ? "cw" : "ccw"; }
 
 } // namespace
@@ -185,7 +184,7 @@ Result<TestValues> testValuesOf(const TestRequest& r, const RegisterMap& map,
         put(q, r.*m, r.*m != unset.*m);
     putEnum("frf.method", "frf_method", frfMethodName(r.frfMethod), r.frfMethod != unset.frfMethod);
     putEnum("frf.quantity", "frf_quantity", frfQuantityName(r.frfQuantity), r.frfQuantity != unset.frfQuantity);
-    putEnum("multisine.phases", "multisine_phases", phasesName(r.multisinePhases),
+    putEnum("multisine.phases", "multisine_phases", dsp::multisinePhasesName(r.multisinePhases),
             r.multisinePhases != unset.multisinePhases);
     if (!r.multisineShape.empty())
         missing.push_back("multisine.shape");
@@ -272,7 +271,7 @@ Result<TestRequest> testRequestOf(const TestValues& values, const RegisterMap& m
     }
     if (has("multisine.phases")) {
         static const dsp::MultisinePhases ps[] = {dsp::MultisinePhases::Clipping, dsp::MultisinePhases::Schroeder};
-        auto p = enumOf(map, "multisine_phases", at("multisine.phases"), ps, phasesName);
+        auto p = enumOf(map, "multisine_phases", at("multisine.phases"), ps, dsp::multisinePhasesName);
         if (!p)
             return p.error();
         r.multisinePhases = *p;
