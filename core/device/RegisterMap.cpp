@@ -57,7 +57,7 @@ bool ParameterRegister::availableOn(const std::string& axisKind) const
 
 const RegisterField& RegisterMap::field(const std::string& n) const
 {
-    static const RegisterField kNone{"", -1, RegisterType::U16, 0, ""};
+    static const RegisterField kNone{"", -1, RegisterType::U16, 0, "", ""};
     auto it = fields.find(n);
     return it == fields.end() ? kNone : it->second;
 }
