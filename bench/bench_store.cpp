@@ -2,6 +2,7 @@
 // Store benchmarks (DESIGN.md targets): save and reopen a session with 8 channels x 1,000,000 samples
 // (< 1 s each), list 1,000 sessions (< 100 ms). Figures and command: docs/storage.md.
 #include "core/store/Database.h"
+#include "core/store/SessionRecord.h"
 
 #include <benchmark/benchmark.h>
 

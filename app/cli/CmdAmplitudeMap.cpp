@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 

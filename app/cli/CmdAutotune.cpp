@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 

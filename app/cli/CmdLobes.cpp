@@ -15,6 +15,7 @@
 #include <limits>
 #include <memory>
 #include <sstream>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 namespace {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <thread>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 namespace {

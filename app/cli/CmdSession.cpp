@@ -3,9 +3,11 @@
 #include "app/cli/CliCommand.h"
 #include "core/store/Database.h"
 #include "core/store/SessionExport.h"
+#include "core/store/SessionRecord.h"
 
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 

@@ -6,9 +6,11 @@
 #include "app/cli/CliCommand.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
+#include "core/io/Profile.h"
 #include "core/model/InputLimits.h"
 #include "core/store/Database.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 
 #include <algorithm>
 #include <array>
@@ -21,6 +23,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 

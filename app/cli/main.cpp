@@ -10,6 +10,7 @@
 
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace axistune::cli {
 

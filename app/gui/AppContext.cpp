@@ -2,6 +2,7 @@
 #include "app/gui/AppContext.h"
 
 #include "app/gui/SessionSaver.h"
+#include "core/store/SessionRecord.h"
 
 #include <QDateTime>
 #include <QEventLoop>

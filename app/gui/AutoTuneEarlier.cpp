@@ -9,6 +9,7 @@
 #include "app/gui/AutoTuneWizardText.h"
 #include "core/autotune/Undo.h"
 #include "core/store/Database.h"
+#include "core/store/SessionRecord.h"
 
 #include <QDialog>
 #include <QDialogButtonBox>

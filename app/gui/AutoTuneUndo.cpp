@@ -10,6 +10,7 @@
 #include "app/gui/ParameterText.h"
 #include "app/gui/WizardPages.h"
 #include "core/model/Units.h"
+#include "core/store/SessionRecord.h"
 
 #include <QCheckBox>
 #include <QDialog>

@@ -7,6 +7,7 @@
 #include "app/gui/AutoTuneWizardText.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/autotune/TravelChoice.h"
+#include "core/store/SessionRecord.h"
 #include "widgets/CurvePlot.h"
 
 #include <QButtonGroup>

@@ -4,6 +4,7 @@
 #include "app/gui/WidgetUtil.h"
 
 #include <map>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

@@ -8,7 +8,7 @@
 
 #include <QCoreApplication>
 #include <QString>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 #include <vector>

@@ -9,6 +9,7 @@
 #include "app/gui/WizardPages.h"
 #include "core/store/Database.h"
 #include "widgets/CurvePlot.h"
+#include "core/io/Profile.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -30,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

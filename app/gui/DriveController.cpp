@@ -10,6 +10,7 @@
 #include <QThread>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

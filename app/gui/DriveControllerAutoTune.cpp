@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

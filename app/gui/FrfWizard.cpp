@@ -12,6 +12,7 @@
 #include "core/model/Constants.h"
 #include "core/store/Database.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 
 #include <QAbstractButton>
 #include <QCheckBox>
@@ -24,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

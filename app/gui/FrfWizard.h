@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <optional>
 #include <vector>
+#include <nlohmann/json_fwd.hpp>
 
 class QComboBox;
 class QDoubleSpinBox;

@@ -5,7 +5,9 @@
 
 #include "app/gui/AppContext.h"
 #include "core/model/Units.h"
+#include "core/store/SessionRecord.h"
 #include "widgets/CurvePlot.h"
+#include "core/io/Profile.h"
 
 #include <QComboBox>
 #include <QDateTime>
@@ -22,6 +24,7 @@
 #include <deque>
 #include <map>
 #include <optional>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

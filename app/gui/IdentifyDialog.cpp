@@ -31,6 +31,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

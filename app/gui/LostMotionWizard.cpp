@@ -9,6 +9,7 @@
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/model/ResultJson.h"
+#include "core/store/SessionRecord.h"
 
 #include <QLabel>
 #include <QVBoxLayout>

@@ -11,6 +11,7 @@
 #include "core/io/FrfCsv.h"
 #include "core/machining/MachiningJson.h"
 #include "core/machining/ToolModeFit.h"
+#include "core/store/SessionRecord.h"
 
 #include <QComboBox>
 #include <QFileDialog>
@@ -26,6 +27,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

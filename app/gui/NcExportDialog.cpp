@@ -25,6 +25,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

@@ -6,6 +6,7 @@
 #include "core/model/Number.h"
 #include "core/store/Database.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 #include "widgets/BodePlot.h"
 
 #include <QCheckBox>

@@ -12,6 +12,7 @@
 #include "core/dsp/LoopMarginsJson.h"
 #include "core/model/ResultJson.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 #include "core/tuning/VelocityLoopDesign.h"
 
 #include <QBoxLayout>
@@ -21,6 +22,7 @@
 #include <QPushButton>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

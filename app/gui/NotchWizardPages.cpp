@@ -7,6 +7,7 @@
 #include "core/model/Number.h"
 #include "core/store/FrfCapture.h"
 #include "widgets/BodePlot.h"
+#include "core/store/SessionRecord.h"
 
 #include <QCoreApplication>
 #include <QDoubleSpinBox>

@@ -9,6 +9,7 @@
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 #include "widgets/BodePlot.h"
 #include "widgets/CurvePlot.h"
 #include "widgets/PolarPlot.h"
@@ -25,6 +26,7 @@
 #include <cmath>
 #include <memory>
 #include <set>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

@@ -8,11 +8,13 @@
 // file (plots embedded as data URIs) and a PDF through Qt's printing.
 
 #include "core/store/Database.h"
+#include "core/store/SessionRecord.h"
 
 #include <QCoreApplication>
 #include <QImage>
 #include <QString>
 #include <QVector>
+#include <nlohmann/json_fwd.hpp>
 
 class QTextDocument;
 class QObject;

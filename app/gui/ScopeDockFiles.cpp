@@ -9,6 +9,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/io/ScopeCsv.h"
 #include "core/model/Number.h"
+#include "core/store/SessionRecord.h"
 #include "widgets/CurvePlot.h"
 #include "widgets/TimeTracePlot.h"
 

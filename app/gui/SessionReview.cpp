@@ -5,6 +5,7 @@
 #include "app/gui/SessionReviewView.h"
 
 #include "app/gui/ReportDialog.h"
+#include "core/store/SessionRecord.h"
 
 #include <QComboBox>
 #include <QEvent>

@@ -6,6 +6,7 @@
 #include "core/io/FrfCsv.h"
 #include "core/model/Number.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 #include "widgets/BodePlot.h"
 #include "widgets/TimeTracePlot.h"
 
@@ -22,6 +23,7 @@
 #include <QTableWidget>
 #include <QTreeWidget>
 #include <QVBoxLayout>
+#include <nlohmann/json.hpp>
 
 namespace axistune {
 namespace gui {

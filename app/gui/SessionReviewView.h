@@ -8,6 +8,7 @@
 
 #include "core/dsp/FrequencyResponse.h"
 #include "core/store/Database.h"
+#include "core/store/SessionRecord.h"
 
 #include <QString>
 #include <QStringList>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/SessionSaver.h"
+#include "core/store/SessionRecord.h"
 
 #include <QMetaObject>
 #include <QSemaphore>

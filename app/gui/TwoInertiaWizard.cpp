@@ -9,6 +9,7 @@
 #include "app/gui/WizardRegistry.h"
 #include "core/model/Constants.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 
 #include <QLabel>
 #include <QVBoxLayout>

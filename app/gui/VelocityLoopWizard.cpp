@@ -13,6 +13,7 @@
 #include "core/dsp/LoopMarginsJson.h"
 #include "core/model/ResultJson.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 #include "core/tuning/VelocityLoopDesignJson.h"
 
 #include <QLabel>

@@ -13,6 +13,7 @@
 #include "core/tuning/VelocityLoopDesign.h"
 #include "widgets/BodePlot.h"
 #include "widgets/CurvePlot.h"
+#include "core/store/SessionRecord.h"
 
 #include <QButtonGroup>
 #include <QCheckBox>

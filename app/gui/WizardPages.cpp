@@ -6,6 +6,7 @@
 
 #include "core/model/Units.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <ctime>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 namespace {
 

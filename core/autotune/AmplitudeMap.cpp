@@ -11,6 +11,7 @@
 #include <complex>
 #include <limits>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 namespace axistune::autotune {
 

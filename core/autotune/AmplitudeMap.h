@@ -14,7 +14,7 @@
 #include "core/model/Result.h"
 
 #include <complex>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>

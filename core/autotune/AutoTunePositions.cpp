@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 namespace axistune::autotune {
 

@@ -3,6 +3,7 @@
 // (DriveRegistry.h, docs/drive-seam.md, docs/modbus.md).
 #include "core/device/DriveRegistry.h"
 #include "core/device/ModbusDrive.h"
+#include <nlohmann/json.hpp>
 
 namespace axistune::device {
 

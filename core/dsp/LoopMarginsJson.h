@@ -6,7 +6,7 @@
 
 #include "core/dsp/LoopAnalysis.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace axistune::dsp {
 

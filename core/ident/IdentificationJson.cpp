@@ -6,6 +6,7 @@
 #include "core/model/ResultJson.h"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 namespace axistune::ident {
 namespace {

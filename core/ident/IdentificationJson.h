@@ -6,7 +6,7 @@
 #include "core/ident/MotionIdentification.h"
 #include "core/model/Result.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 namespace axistune::ident {

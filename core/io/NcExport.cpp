@@ -2,6 +2,7 @@
 // NC parameter-file export from map files (docs/formats-profile.md "NC map files").
 #include "core/io/NcExport.h"
 
+#include "core/io/Profile.h"
 #include "core/model/InputLimits.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
@@ -12,6 +13,7 @@
 #include <cstdlib>
 #include <map>
 #include <set>
+#include <nlohmann/json.hpp>
 
 namespace axistune::io {
 namespace {

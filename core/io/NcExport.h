@@ -8,7 +8,7 @@
 #include "core/io/Profile.h"
 #include "core/model/Result.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 #include <vector>

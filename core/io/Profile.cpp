@@ -14,6 +14,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <nlohmann/json.hpp>
 
 namespace axistune::io {
 namespace {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <sys/stat.h>
+#include <nlohmann/json.hpp>
 
 namespace axistune::model {
 namespace {

@@ -7,7 +7,7 @@
 // model::dumpResultJson (InputLimits.h), the output boundary of every JSON result, refuses NaN, Inf
 // and null anywhere.
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>

@@ -9,7 +9,7 @@
 #include "core/sim/PlantModel.h"
 
 #include <map>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 

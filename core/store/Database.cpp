@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The SQLite store: opening with checks, migrations, machines, parameters, models, profiles
 // (DESIGN.md "Storage", docs/storage.md).
+#include "core/io/Profile.h"
 #include "core/store/Database.h"
 
 #include "core/store/DatabaseDetail.h"
 #include "core/store/Schema.h"
+#include "core/store/SessionRecord.h"
 
 #include <SQLiteCpp/SQLiteCpp.h>
 #include <array>
@@ -16,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sqlite3.h>
+#include <nlohmann/json.hpp>
 
 namespace axistune::store {
 

@@ -6,16 +6,15 @@
 // during a save leaves the previous state intact. Layout and usage: docs/storage.md.
 //
 // Thread affinity: a Database is used from one thread at a time (one connection).
+// The records it saves and loads: StoreTypes.h (no JSON) and SessionRecord.h (with JSON data).
 
-#include "core/io/Profile.h"
-#include "core/model/Capture.h"
 #include "core/model/Parameter.h"
 #include "core/model/Result.h"
+#include "core/store/StoreTypes.h"
 
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,97 +22,11 @@
 namespace SQLite {
 class Database;
 }
+namespace axistune::io {
+struct MachineProfile;
+}
 
 namespace axistune::store {
-
-enum class ParameterSource { Read, Proposed, Applied, Imported };
-enum class SessionStatus { Completed, Aborted, Failed };
-
-const char* toString(ParameterSource s);
-const char* toString(SessionStatus s);
-Result<ParameterSource> parameterSourceFrom(const std::string& s);
-Result<SessionStatus> sessionStatusFrom(const std::string& s);
-
-/// UTC time as ISO 8601 with milliseconds, "2026-11-22T05:33:33.120Z".
-std::string nowIso8601();
-
-struct ParameterSet {
-    std::int64_t id = 0;  ///< assigned by the store
-    std::string axis;
-    ParameterSource source = ParameterSource::Read;
-    std::string time;  ///< empty: now
-    std::string note;
-    model::ParameterValues values;
-};
-
-struct ModelRecord {
-    std::int64_t id = 0;
-    std::string axis;
-    std::string kind;  ///< io::modelKinds()
-    std::string time;  ///< empty: now
-    nlohmann::json data;
-};
-
-struct JournalEntry {
-    std::int64_t id = 0;
-    std::string machine;  ///< filled when read back
-    std::string axis;
-    std::string key;
-    std::optional<double> oldValue;  ///< none when the old value was unknown
-    double newValue = 0.0;
-    std::string time;  ///< empty: now
-    std::optional<std::int64_t> sessionId;
-};
-
-struct SessionInfo {
-    std::int64_t id = 0;
-    std::string machine;  ///< may be empty (analysis of files without a machine)
-    std::string axis;
-    std::string kind;     ///< "frf", "current-loop", "profile-import", ...
-    std::string started;  ///< empty: now
-    std::string finished; ///< empty: now
-    SessionStatus status = SessionStatus::Completed;
-    std::string appVersion;  ///< empty: this build's version
-    std::string operatorName;
-    std::string note;
-    int captureCount = 0;  ///< filled by listSessions/loadSession
-    int resultCount = 0;
-};
-
-struct NamedCapture {
-    std::string name;
-    model::Capture capture;
-};
-
-struct SessionResult {
-    std::string name;
-    nlohmann::json data;
-    std::vector<model::Channel> arrays;  ///< named arrays, e.g. "f_Hz", "mag_dB"
-};
-
-/// Everything one session recorded. Parameter sets, models and journal entries listed here are saved
-/// in the same transaction and linked to the session (the store never changes a profile without a
-/// session saying why).
-struct SessionRecord {
-    SessionInfo info;
-    std::vector<std::string> machineAxes;  ///< axes to create (in order) if the machine lacks them
-    std::string machineDescription;        ///< when not empty, replaces the machine's description
-    nlohmann::json inputs = nlohmann::json::object();
-    std::vector<NamedCapture> captures;
-    std::vector<SessionResult> results;
-    std::vector<ParameterSet> parameterSets;
-    std::vector<ModelRecord> models;
-    std::vector<JournalEntry> journal;
-
-    /// The data of the first result of this name, or nullptr.
-    const nlohmann::json* result(const std::string& name) const
-    {
-        for (const auto& r : results)
-            if (r.name == name)
-                return &r.data;
-        return nullptr;
-    }
-};
 
 /// After a failed open or a failed first save: removes a 0-byte "-wal" and a "-shm" smaller than one
 /// wal-index page (what SQLite leaves when it cannot set up the log, e.g. on a full disk; no live

@@ -4,8 +4,11 @@
 #include "core/store/Database.h"
 
 #include "core/store/DatabaseDetail.h"
+#include "core/store/SessionRecord.h"
+#include "core/io/Profile.h"
 
 #include <SQLiteCpp/SQLiteCpp.h>
+#include <nlohmann/json.hpp>
 
 namespace axistune::store {
 

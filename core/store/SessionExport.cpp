@@ -5,11 +5,13 @@
 #include "core/io/CaptureCsv.h"
 #include "core/io/Profile.h"
 #include "core/model/ResultJson.h"
+#include "core/store/SessionRecord.h"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json.hpp>
 
 namespace axistune::store {
 

@@ -7,7 +7,7 @@
 #include "core/model/Result.h"
 #include "core/store/Database.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 

@@ -3,6 +3,7 @@
 
 #include "core/dsp/LoopMarginsJson.h"
 #include "core/model/ResultJson.h"
+#include <nlohmann/json.hpp>
 
 namespace axistune::tuning {
 

@@ -6,7 +6,7 @@
 
 #include "core/tuning/VelocityLoopDesign.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace axistune::tuning {
 

@@ -22,6 +22,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <nlohmann/json.hpp>
 
 namespace axistune::fuzz {
 

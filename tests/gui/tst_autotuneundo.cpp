@@ -28,6 +28,7 @@
 
 #include <cmath>
 
+#include "core/store/SessionRecord.h"
 #include "tests/gui/AutoTuneTestUtil.h"
 #include "tests/gui/GuiTestUtil.h"
 

@@ -39,9 +39,11 @@
 
 #include <cmath>
 #include <set>
+#include <nlohmann/json.hpp>
 
 #include "tests/gui/AutoTuneTestUtil.h"
 #include "tests/gui/GuiTestUtil.h"
+#include "core/store/SessionRecord.h"
 
 using namespace axistune;
 using namespace axistune::gui;

@@ -8,6 +8,7 @@
 #include <QRegularExpression>
 #include <QTranslator>
 #include <QtTest>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 

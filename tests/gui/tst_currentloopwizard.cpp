@@ -49,6 +49,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "tests/app/cli/SimDriveProcess.h"
 #include "tests/gui/GuiTestUtil.h"

@@ -16,6 +16,7 @@
 
 #include <optional>
 
+#include "core/store/SessionRecord.h"
 #include "tests/gui/DriveTestRequests.h"
 #include "tests/gui/GuiTestUtil.h"
 

@@ -24,6 +24,7 @@
 
 #include <sys/stat.h>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/app/cli/CliRunner.h"
 #include "tests/gui/GuiTestUtil.h"

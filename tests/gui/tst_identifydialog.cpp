@@ -18,6 +18,7 @@
 #include <QtTest>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "tests/gui/GuiTestUtil.h"
 

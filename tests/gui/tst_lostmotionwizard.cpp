@@ -12,6 +12,7 @@
 #include "tests/app/cli/SimDriveProcess.h"
 #include "tests/gui/GuiTestUtil.h"
 #include "widgets/PolarPlot.h"
+#include "core/store/SessionRecord.h"
 
 #include <QAbstractButton>
 #include <QCheckBox>
@@ -25,6 +26,7 @@
 #include <QtTest>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 using namespace axistune::gui;

@@ -35,10 +35,12 @@
 #include <cmath>
 #include <complex>
 #include <utility>
+#include <nlohmann/json.hpp>
 
 #include "tests/app/cli/CliRunner.h"
 #include "tests/core/machining/RealToolFrf.h"
 #include "tests/gui/GuiTestUtil.h"
+#include "core/store/SessionRecord.h"
 
 using namespace axistune;
 using axistune::gui::AppContext;

@@ -8,6 +8,7 @@
 #include "app/gui/ParameterInspector.h"
 #include "app/gui/SettingsDialog.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/store/SessionRecord.h"
 #include "tests/app/cli/SimDriveProcess.h"
 #include "tests/gui/GuiTestUtil.h"
 

@@ -21,6 +21,7 @@
 #include "core/store/FrfCapture.h"
 #include "core/tuning/FrfComparison.h"
 #include "widgets/BodePlot.h"
+#include "core/store/SessionRecord.h"
 
 #include <QAbstractButton>
 #include <QCheckBox>

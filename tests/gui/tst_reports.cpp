@@ -16,6 +16,7 @@
 #include "core/io/NcExport.h"
 #include "core/io/Profile.h"
 #include "core/store/FrfCapture.h"
+#include "core/store/SessionRecord.h"
 #include "widgets/CurvePlot.h"
 
 #include <QFile>
@@ -32,6 +33,7 @@
 #include <complex>
 #include <memory>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 #include "tests/gui/GuiTestUtil.h"
 

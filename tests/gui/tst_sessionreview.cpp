@@ -6,6 +6,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/SessionReview.h"
 #include "app/gui/SessionReviewView.h"
+#include "core/store/SessionRecord.h"
 #include "tests/gui/GuiTestUtil.h"
 
 #include "core/io/CaptureCsv.h"
@@ -25,6 +26,7 @@
 #include <complex>
 #include <memory>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 using axistune::gui::SessionReview;
 using axistune::gui::SessionView;

@@ -29,6 +29,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 using namespace axistune::gui;

@@ -26,6 +26,7 @@
 #include <complex>
 #include <numbers>
 
+#include "core/store/SessionRecord.h"
 #include "tests/gui/GuiTestUtil.h"
 
 using namespace axistune;

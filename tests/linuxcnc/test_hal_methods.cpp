@@ -14,6 +14,7 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <thread>
+#include <nlohmann/json.hpp>
 
 #include "tests/ScopedTempDir.h"
 #include "tests/linuxcnc/HalTestbed.h"

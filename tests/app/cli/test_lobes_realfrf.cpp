@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <nlohmann/json.hpp>
 
 #include "tests/app/cli/CliRunner.h"
 #include "tests/core/machining/RealToolFrf.h"

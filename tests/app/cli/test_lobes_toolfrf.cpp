@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <nlohmann/json.hpp>
 
 #include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"

@@ -21,6 +21,7 @@
 #include <sys/socket.h>
 #include <thread>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/app/cli/ModbusTestUtil.h"
 #include "tests/app/cli/SimDriveProcess.h"

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/NumberText.h"
 #include "tests/app/cli/CliRunner.h"

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/app/cli/CliRunner.h"
 #include "tests/app/cli/OutputScan.h"

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <regex>
 #include <sys/stat.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/app/cli/CliRunner.h"
 

@@ -2,6 +2,7 @@
 // axistune-cli profile / import / export / session end to end against a temporary store.
 #include "core/io/CaptureCsv.h"
 #include "core/store/Database.h"
+#include "core/store/SessionRecord.h"
 #include "tests/app/cli/CliRunner.h"
 
 #include <gtest/gtest.h>

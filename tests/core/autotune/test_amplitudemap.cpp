@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <iostream>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 using autotune::detail::NotchDesign;

@@ -4,6 +4,7 @@
 #include "core/device/DriveRegistry.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace axistune::device {
 namespace {

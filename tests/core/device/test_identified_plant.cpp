@@ -17,6 +17,7 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 using namespace axistune::device;

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/core/device/ServerThread.h"
 #include "tests/ScopedTempDir.h"

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <sstream>
 #include <sys/stat.h>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 namespace fs = std::filesystem;

@@ -5,6 +5,7 @@
 #include "core/io/Profile.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 using namespace axistune::io;

@@ -4,6 +4,7 @@
 #include "core/machining/StabilityLobes.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 using namespace axistune::machining;

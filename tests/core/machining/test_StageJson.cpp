@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <numbers>
 #include <string>
+#include <nlohmann/json.hpp>
 
 using namespace axistune::machining;
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Store: sessions, parameters, models, journal and profiles written and read back.
+#include "core/io/Profile.h"
 #include "core/store/Database.h"
+#include "core/store/SessionRecord.h"
 #include "tests/core/store/StoreTestUtil.h"
 
 #include <SQLiteCpp/SQLiteCpp.h>
@@ -8,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 using namespace axistune;
 using namespace axistune::store;

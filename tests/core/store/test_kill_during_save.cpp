@@ -3,6 +3,7 @@
 // every kill the file must pass PRAGMA integrity_check, open normally, and every session saved before
 // must read back bit-exact; the interrupted session is either absent or complete.
 #include "core/store/Database.h"
+#include "core/store/SessionRecord.h"
 #include "tests/core/store/StoreTestUtil.h"
 
 #include <gtest/gtest.h>

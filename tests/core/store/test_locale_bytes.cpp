@@ -22,7 +22,9 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <nlohmann/json.hpp>
 
+#include "core/store/SessionRecord.h"
 #include "tests/core/store/StoreTestUtil.h"
 
 namespace axistune {

@@ -4,6 +4,7 @@
 // its data.
 #include "core/store/Database.h"
 #include "core/store/Schema.h"
+#include "core/store/SessionRecord.h"
 #include "tests/core/store/StoreTestUtil.h"
 
 #include <SQLiteCpp/SQLiteCpp.h>

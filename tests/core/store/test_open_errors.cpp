@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Store: files that are not a usable AxisTune store are refused with a message naming the file.
 #include "core/store/Database.h"
+#include "core/store/SessionRecord.h"
 #include "tests/core/store/StoreTestUtil.h"
 
 #include <SQLiteCpp/SQLiteCpp.h>

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <nlohmann/json.hpp>
 
 using namespace axistune::tuning;
 

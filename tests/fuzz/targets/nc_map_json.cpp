@@ -4,6 +4,7 @@
 // notice and every mapped value (or an export refusal naming the map).
 #include "core/io/NcExport.h"
 
+#include "core/io/Profile.h"
 #include "tests/fuzz/FuzzTarget.h"
 
 using namespace axistune;

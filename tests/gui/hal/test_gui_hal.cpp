@@ -9,6 +9,7 @@
 // multisine, docs/linuxcnc.md "The hal: connection").
 // clang-format off
 // First: HAL's headers use the name "signals", which Qt defines as a macro.
+#include "core/store/SessionRecord.h"
 #include "tests/linuxcnc/HalTestbed.h"
 // clang-format on
 
