@@ -13,7 +13,8 @@ if(AXISTUNE_LLD)
   add_link_options(-fuse-ld=lld)
 endif()
 
-# AXISTUNE_PCH: precompiled headers. Each group of targets with the same compiler flags shares one precompiled
+# AXISTUNE_PCH: precompiled headers (the GUI's force-include <QtWidgets>, so Qt's keywords signals, slots and emit
+# are macros in every GUI file and must not be used as names in core headers the GUI includes). Each group of targets with the same compiler flags shares one precompiled
 # header, built once by a small "donor" target (axistune_pch_donor) and reused by the others (REUSE_FROM).
 # Parsing the standard library, Eigen and nlohmann/json (and Qt, GoogleTest) took a third of a typical file's
 # compile time. ccache caches files built with them (sloppiness pch_defines,time_macros, set in the launcher).

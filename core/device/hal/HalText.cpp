@@ -129,9 +129,9 @@ const HalPin* findPin(const std::vector<HalPin>& pins, std::string_view name)
     return nullptr;
 }
 
-const HalSignal* findSignal(const std::vector<HalSignal>& signals, std::string_view name)
+const HalSignal* findSignal(const std::vector<HalSignal>& halSignals, std::string_view name)
 {
-    for (const auto& s : signals)
+    for (const auto& s : halSignals)
         if (s.name == name)
             return &s;
     return nullptr;

@@ -46,6 +46,6 @@ Result<std::vector<HalSignal>> parseSignals(std::string_view text);
 Result<std::vector<HalThread>> parseThreads(std::string_view text);
 
 const HalPin* findPin(const std::vector<HalPin>& pins, std::string_view name);
-const HalSignal* findSignal(const std::vector<HalSignal>& signals, std::string_view name);
+const HalSignal* findSignal(const std::vector<HalSignal>& halSignals, std::string_view name);
 
 } // namespace axistune::device::hal
