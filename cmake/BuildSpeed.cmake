@@ -13,11 +13,13 @@ if(AXISTUNE_LLD)
   add_link_options(-fuse-ld=lld)
 endif()
 
-# AXISTUNE_PCH: precompiled headers (the GUI's force-include <QtWidgets>, so Qt's keywords signals, slots and emit
-# are macros in every GUI file and must not be used as names in core headers the GUI includes). Each group of targets with the same compiler flags shares one precompiled
+# AXISTUNE_PCH: precompiled headers. Each group of targets with the same compiler flags shares one precompiled
 # header, built once by a small "donor" target (axistune_pch_donor) and reused by the others (REUSE_FROM).
 # Parsing the standard library, Eigen and nlohmann/json (and Qt, GoogleTest) took a third of a typical file's
 # compile time. ccache caches files built with them (sloppiness pch_defines,time_macros, set in the launcher).
+# The GUI's headers force-include <QtWidgets>: Qt's keywords signals, slots and emit are macros in every GUI file,
+# so a core header the GUI includes must not use them as names. A missing include is hidden by the precompiled
+# header: compile touched files once with -DAXISTUNE_PCH=OFF (docs/build-time.md).
 option(AXISTUNE_PCH "precompiled headers for the standard library, Eigen, JSON, Qt and GoogleTest" ON)
 # Clang stamps a precompiled header with the time its headers were last changed and refuses it after a fresh clone;
 # without the stamp ccache can restore it (and the files built with it) from the cache.

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The SQLite store: opening with checks, migrations, machines, parameters, models, profiles
 // (DESIGN.md "Storage", docs/storage.md).
-#include "core/io/Profile.h"
 #include "core/store/Database.h"
 
+#include "core/io/Profile.h"
 #include "core/store/DatabaseDetail.h"
 #include "core/store/Schema.h"
 #include "core/store/SessionRecord.h"
