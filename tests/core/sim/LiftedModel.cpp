@@ -149,9 +149,40 @@ LiftedCurrentTick buildLiftedCurrentTick(const sim::AxisDefinition& axis)
     return out;
 }
 
-LiftedVelocityLoop buildLiftedVelocityLoop(const sim::AxisDefinition& axis)
+namespace {
+
+/// The velocity PI with the backward-difference velocity on Z = [z, θprev, Iv] (z: the current tick's state), as rows
+/// over Z without the reference: ω = (enc·z − θprev)/T, e = −ω, Iv' = Iv + kiv T e, T_c = kpv e + Iv'.
+struct VelocityPiRows {
+    double tv = 0.0, kpv = 0.0, kiv = 0.0;
+    Eigen::RowVectorXd encZ, wZ, ivNextZ, tcZ;
+};
+
+VelocityPiRows velocityPiRows(const sim::AxisDefinition& axis, const Eigen::RowVectorXd& encoder)
 {
     const auto& v = axis.values;
+    VelocityPiRows r;
+    r.tv = v.at("velocity.period");
+    r.kpv = v.at("velocity.kp");
+    r.kiv = v.at("velocity.ki");
+    const auto nz = static_cast<int>(encoder.size());
+    const int nZ = nz + 2;
+    r.encZ = Eigen::RowVectorXd::Zero(nZ);
+    r.encZ.head(nz) = encoder;
+    r.wZ = r.encZ / r.tv;
+    r.wZ(nz) = -1.0 / r.tv;
+    const Eigen::RowVectorXd eZ = -r.wZ;
+    Eigen::RowVectorXd ivZ = Eigen::RowVectorXd::Zero(nZ);
+    ivZ(nz + 1) = 1.0;
+    r.ivNextZ = ivZ + r.kiv * r.tv * eZ;
+    r.tcZ = r.kpv * eZ + r.ivNextZ;
+    return r;
+}
+
+}  // namespace
+
+LiftedVelocityLoop buildLiftedVelocityLoop(const sim::AxisDefinition& axis)
+{
     const LiftedCurrentTick tick = buildLiftedCurrentTick(axis);
     const auto nz = static_cast<int>(tick.mz.rows());
     Eigen::MatrixXd m4 = Eigen::MatrixXd::Identity(nz, nz);
@@ -160,23 +191,17 @@ LiftedVelocityLoop buildLiftedVelocityLoop(const sim::AxisDefinition& axis)
         n4 = tick.mz * n4 + tick.nzv;
         m4 = tick.mz * m4;
     }
-    // Velocity loop on Z = [z, θprev, Iv], input r, output ω_meas = (enc·z − θprev)/T.
-    const double tv = v.at("velocity.period");
-    const double kpv = v.at("velocity.kp"), kiv = v.at("velocity.ki");
+    // Velocity loop on Z = [z, θprev, Iv], input r, output ω_meas = (enc·z − θprev)/T; the reference enters e = r − w
+    // with weight 1: Iv' gets kiv T r, T_c gets (kpv + kiv T) r.
+    const VelocityPiRows pi = velocityPiRows(axis, tick.encoder);
     const int nZ = nz + 2;
-    Eigen::RowVectorXd encZ = Eigen::RowVectorXd::Zero(nZ);
-    encZ.head(nz) = tick.encoder;
-    Eigen::RowVectorXd wZ = encZ / tv;
-    wZ(nz) = -1.0 / tv;
-    // e = r − w ; Iv' = Iv + kiv T e ; Tc = kpv e + Iv'
-    Eigen::RowVectorXd eZ = -wZ;
-    const double eR = 1.0;
-    Eigen::RowVectorXd ivZ = Eigen::RowVectorXd::Zero(nZ);
-    ivZ(nz + 1) = 1.0;
-    const Eigen::RowVectorXd ivNextZ = ivZ + kiv * tv * eZ;
-    const double ivNextR = kiv * tv * eR;
-    const Eigen::RowVectorXd tcZ = kpv * eZ + ivNextZ;
-    const double tcR = kpv * eR + ivNextR;
+    const double ivNextR = pi.kiv * pi.tv;
+    const double tcR = pi.kpv + ivNextR;
+    const Eigen::RowVectorXd& encZ = pi.encZ;
+    const Eigen::RowVectorXd& wZ = pi.wZ;
+    const Eigen::RowVectorXd& ivNextZ = pi.ivNextZ;
+    const Eigen::RowVectorXd& tcZ = pi.tcZ;
+    const double tv = pi.tv;
     LiftedVelocityLoop out;
     out.a = Eigen::MatrixXd::Zero(nZ, nZ);
     out.b = Eigen::VectorXd::Zero(nZ);
@@ -231,20 +256,14 @@ LiftedInjectionLoop buildLiftedInjectionLoop(const sim::AxisDefinition& axis)
         gz.col(i) = col;
     }
     const Eigen::VectorXd n4 = gz.rowwise().sum();
-    const auto& v = axis.values;
-    const double tv = v.at("velocity.period");
-    const double kpv = v.at("velocity.kp"), kiv = v.at("velocity.ki");
     // Z = [z, θprev, Iv]; ω = (enc·z − θprev)/T ; e = −ω ; Iv' = Iv + kiv T e ; T_c = kpv e + Iv'.
+    const VelocityPiRows pi = velocityPiRows(axis, tick.encoder);
     const int nZ = nz + 2;
-    Eigen::RowVectorXd encZ = Eigen::RowVectorXd::Zero(nZ);
-    encZ.head(nz) = tick.encoder;
-    Eigen::RowVectorXd wZ = encZ / tv;
-    wZ(nz) = -1.0 / tv;
-    const Eigen::RowVectorXd eZ = -wZ;
-    Eigen::RowVectorXd ivZ = Eigen::RowVectorXd::Zero(nZ);
-    ivZ(nz + 1) = 1.0;
-    const Eigen::RowVectorXd ivNextZ = ivZ + kiv * tv * eZ;
-    const Eigen::RowVectorXd tcZ = kpv * eZ + ivNextZ;
+    const Eigen::RowVectorXd& encZ = pi.encZ;
+    const Eigen::RowVectorXd& wZ = pi.wZ;
+    const Eigen::RowVectorXd& ivNextZ = pi.ivNextZ;
+    const Eigen::RowVectorXd& tcZ = pi.tcZ;
+    const double tv = pi.tv;
     LiftedInjectionLoop out;
     out.a = Eigen::MatrixXd::Zero(nZ, nZ);
     out.a.topLeftCorner(nz, nz) = m4;
