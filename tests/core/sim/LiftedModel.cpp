@@ -197,22 +197,17 @@ LiftedVelocityLoop buildLiftedVelocityLoop(const sim::AxisDefinition& axis)
     const int nZ = nz + 2;
     const double ivNextR = pi.kiv * pi.tv;
     const double tcR = pi.kpv + ivNextR;
-    const Eigen::RowVectorXd& encZ = pi.encZ;
-    const Eigen::RowVectorXd& wZ = pi.wZ;
-    const Eigen::RowVectorXd& ivNextZ = pi.ivNextZ;
-    const Eigen::RowVectorXd& tcZ = pi.tcZ;
-    const double tv = pi.tv;
     LiftedVelocityLoop out;
     out.a = Eigen::MatrixXd::Zero(nZ, nZ);
     out.b = Eigen::VectorXd::Zero(nZ);
     out.a.topLeftCorner(nz, nz) = m4;
-    out.a.topRows(nz) += n4 * tcZ;
+    out.a.topRows(nz) += n4 * pi.tcZ;
     out.b.head(nz) = n4 * tcR;
-    out.a.row(nz) = encZ;
-    out.a.row(nz + 1) = ivNextZ;
+    out.a.row(nz) = pi.encZ;
+    out.a.row(nz + 1) = pi.ivNextZ;
     out.b(nz + 1) = ivNextR;
-    out.c = wZ;
-    out.periodS = tv;
+    out.c = pi.wZ;
+    out.periodS = pi.tv;
     return out;
 }
 
@@ -259,22 +254,17 @@ LiftedInjectionLoop buildLiftedInjectionLoop(const sim::AxisDefinition& axis)
     // Z = [z, θprev, Iv]; ω = (enc·z − θprev)/T ; e = −ω ; Iv' = Iv + kiv T e ; T_c = kpv e + Iv'.
     const VelocityPiRows pi = velocityPiRows(axis, tick.encoder);
     const int nZ = nz + 2;
-    const Eigen::RowVectorXd& encZ = pi.encZ;
-    const Eigen::RowVectorXd& wZ = pi.wZ;
-    const Eigen::RowVectorXd& ivNextZ = pi.ivNextZ;
-    const Eigen::RowVectorXd& tcZ = pi.tcZ;
-    const double tv = pi.tv;
     LiftedInjectionLoop out;
     out.a = Eigen::MatrixXd::Zero(nZ, nZ);
     out.a.topLeftCorner(nz, nz) = m4;
-    out.a.topRows(nz) += n4 * tcZ;
-    out.a.row(nz) = encZ;
-    out.a.row(nz + 1) = ivNextZ;
+    out.a.topRows(nz) += n4 * pi.tcZ;
+    out.a.row(nz) = pi.encZ;
+    out.a.row(nz + 1) = pi.ivNextZ;
     out.g = Eigen::MatrixXd::Zero(nZ, velDiv);
     out.g.topRows(nz) = gz;
-    out.torqueCmd = tcZ;
-    out.velocity = wZ;
-    out.periodS = tv;
+    out.torqueCmd = pi.tcZ;
+    out.velocity = pi.wZ;
+    out.periodS = pi.tv;
     out.currentPeriodS = tick.currentPeriodS;
     return out;
 }
