@@ -24,13 +24,13 @@ TestRequest firstPass()
 {
     TestRequest r;
     r.axis = "C";
-    r.type = TestType::Frf;
-    r.frfMethod = FrfMethod::Multisine;
-    r.fminHz = 20.0;
-    r.fmaxHz = 3900.0;
-    r.amplitudePct = 5.0; // the CLI's default
+    auto& f = r.test.emplace<FrfTest>();
+    f.method = FrfMethod::Multisine;
+    f.fminHz = 20.0;
+    f.fmaxHz = 3900.0;
+    f.amplitudePct = 5.0; // the CLI's default
     if (const char* s = std::getenv("AXISTUNE_BENCH_SPACING"))
-        r.multisineSpacingHz = std::atof(s);
+        f.multisineSpacingHz = std::atof(s);
     return r;
 }
 
@@ -61,7 +61,7 @@ void BM_PlainMultisine(benchmark::State& state)
             return;
         }
         auto r = firstPass();
-        r.multisinePeriods = static_cast<int>(state.range(0));
+        r.frf().multisinePeriods = static_cast<int>(state.range(0));
         auto run = runTest(**drive, r);
         if (!run || !run->frf) {
             state.SkipWithError("the multisine failed");

@@ -36,12 +36,12 @@ void BM_EventLoopLatencyDuringFrfCapture(benchmark::State& state)
     }
     device::TestRequest req;
     req.axis = "C";
-    req.type = device::TestType::Frf;
-    req.frfMethod = device::FrfMethod::MultiSweep;
-    req.fminHz = 100.0;
-    req.fmaxHz = 3900.0;
-    req.points = static_cast<int>(state.range(0));
-    req.amplitudePct = 3.0;
+    auto& frf = req.test.emplace<device::FrfTest>();
+    frf.method = device::FrfMethod::MultiSweep;
+    frf.fminHz = 100.0;
+    frf.fmaxHz = 3900.0;
+    frf.points = static_cast<int>(state.range(0));
+    frf.amplitudePct = 3.0;
     std::vector<double> lateMs;
     int progressSignals = 0;
     for (auto _ : state) {

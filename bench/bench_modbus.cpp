@@ -32,13 +32,13 @@ struct Server {
     std::string uri() const { return "modbus://127.0.0.1:" + std::to_string(server->port()); }
 };
 
-TestRequest stepRequest(double durationS)
+TestRequest stepRequest(double recordS)
 {
     TestRequest r;
     r.axis = "X";
-    r.type = TestType::Step;
-    r.stepVelocityRadS = 20.0;
-    r.durationS = durationS;
+    auto& s = r.test.emplace<StepTest>();
+    s.velocityRadS = 20.0;
+    s.recordS = recordS;
     return r;
 }
 
@@ -102,8 +102,7 @@ void BM_MultiSweep(benchmark::State& state, bool modbus)
     auto d = std::move(connectAny({modbus ? srv->uri() : "sim:dd-table", 1})).value();
     TestRequest r;
     r.axis = d->identify()->axes.front();
-    r.type = TestType::Frf;
-    r.amplitudePct = 5.0;
+    r.test.emplace<FrfTest>().amplitudePct = 5.0;
     RunOptions o;
     o.readTrace = false;
     for (auto _ : state) {

@@ -104,14 +104,15 @@ void runFrf(benchmark::State& state, const std::string& kind, const TestRequest&
             if (!once(*first))
                 return;
             // The shape of capture --shape-from: 1/|H| of the valid lines, limited to rangeDb.
+            auto& shape = r.frf().multisineShape;
             double top = 0.0;
             for (std::size_t i = 0; i < last.frf.size(); ++i) {
                 if (last.frf.valid[i]) {
-                    r.multisineShape.emplace_back(last.frf.freqHz[i], 1.0 / std::abs(last.frf.h[i]));
-                    top = std::max(top, r.multisineShape.back().second);
+                    shape.emplace_back(last.frf.freqHz[i], 1.0 / std::abs(last.frf.h[i]));
+                    top = std::max(top, shape.back().second);
                 }
             }
-            for (auto& [f, w] : r.multisineShape)
+            for (auto& [f, w] : shape)
                 w = std::max(w, top * std::pow(10.0, -rangeDb / 20.0)) / top;
         }
         if (!once(r))
@@ -131,19 +132,19 @@ TestRequest base(FrfMethod method, double amplitudePct)
 {
     TestRequest r;
     r.axis = "C";
-    r.type = TestType::Frf;
-    r.frfMethod = method;
-    r.fminHz = 20.0;
-    r.fmaxHz = 3900.0;
-    r.amplitudePct = amplitudePct;
+    auto& f = r.test.emplace<FrfTest>();
+    f.method = method;
+    f.fminHz = 20.0;
+    f.fmaxHz = 3900.0;
+    f.amplitudePct = amplitudePct;
     return r;
 }
 
 void BM_Multisine(benchmark::State& state, std::string kind, double amplitudePct, double spacingHz)
 {
     TestRequest r = base(FrfMethod::Multisine, amplitudePct);
-    r.multisineSpacingHz = spacingHz;
-    r.multisinePeriods = static_cast<int>(state.range(0));
+    r.frf().multisineSpacingHz = spacingHz;
+    r.frf().multisinePeriods = static_cast<int>(state.range(0));
     runFrf(state, kind, r);
 }
 
@@ -151,17 +152,17 @@ void BM_Multisine(benchmark::State& state, std::string kind, double amplitudePct
 void BM_MultisineShaped(benchmark::State& state, std::string kind, double amplitudePct, double rangeDb)
 {
     TestRequest first = base(FrfMethod::Multisine, amplitudePct);
-    first.multisineSpacingHz = 10.0;
-    first.multisinePeriods = 2;
+    first.frf().multisineSpacingHz = 10.0;
+    first.frf().multisinePeriods = 2;
     TestRequest r = first;
-    r.multisinePeriods = static_cast<int>(state.range(0));
+    r.frf().multisinePeriods = static_cast<int>(state.range(0));
     runFrf(state, kind, r, &first, rangeDb);
 }
 
 void BM_MultiSweep(benchmark::State& state, std::string kind, double amplitudePct)
 {
     TestRequest r = base(FrfMethod::MultiSweep, amplitudePct);
-    r.points = static_cast<int>(state.range(0));
+    r.frf().points = static_cast<int>(state.range(0));
     runFrf(state, kind, r);
 }
 

@@ -124,7 +124,7 @@ bool parseDouble(const std::string& s, double& x)
 /// The multisine fields of the request from --band, --spacing-hz, --periods, --phases, --shape-from.
 /// The shape from a previous FRF: relative amplitude ∝ 1/|H| (more excitation where the loop answers
 /// less), limited to a range of shapeRangeDb below the largest weight.
-Status multisineRequest(const CaptureOptions& o, device::TestRequest& req)
+Status multisineRequest(const CaptureOptions& o, device::FrfTest& req)
 {
     const bool multisine = o.method == "multisine";
     if (!multisine) {
@@ -252,51 +252,53 @@ int runCapture(const CaptureOptions& o)
         return reportError(cmd, drive.error());
     device::TestRequest req;
     req.axis = o.axis;
-    req.durationS = o.duration;
     req.traceDivider = o.divider;
     if (o.test == "step") {
-        req.type = device::TestType::Step;
-        req.stepVelocityRadS = o.amplitude;
+        auto& s = req.test.emplace<device::StepTest>();
+        s.velocityRadS = o.amplitude;
+        s.recordS = o.duration;
     } else if (o.test == "jog") {
-        req.type = device::TestType::Jog;
-        req.distance = o.distance;
-        req.velocity = o.velocity;
-        req.acceleration = o.acceleration;
-        req.returnToStart = o.back;
+        auto& j = req.test.emplace<device::JogTest>();
+        j.distance = o.distance;
+        j.velocity = o.velocity;
+        j.acceleration = o.acceleration;
+        j.returnToStart = o.back;
+        j.dwellS = o.duration;
     } else if (o.test == "hold") {
-        req.type = device::TestType::Hold;
+        req.test.emplace<device::HoldTest>().recordS = o.duration;
     } else if (o.test == "current-step") {
-        req.type = device::TestType::CurrentStep;
-        req.currentA = o.amplitude;
+        auto& c = req.test.emplace<device::CurrentStepTest>();
+        c.currentA = o.amplitude;
+        c.recordS = o.duration;
     } else if (o.test == "frf") {
-        req.type = device::TestType::Frf;
+        auto& f = req.test.emplace<device::FrfTest>();
         if (o.method == "multisweep")
-            req.frfMethod = device::FrfMethod::MultiSweep;
+            f.method = device::FrfMethod::MultiSweep;
         else if (o.method == "conventional")
-            req.frfMethod = device::FrfMethod::Conventional;
+            f.method = device::FrfMethod::Conventional;
         else if (o.method == "prbs")
-            req.frfMethod = device::FrfMethod::Prbs;
+            f.method = device::FrfMethod::Prbs;
         else if (o.method == "multisine")
-            req.frfMethod = device::FrfMethod::Multisine;
+            f.method = device::FrfMethod::Multisine;
         else
             return reportError(cmd, makeError(ErrorCode::BadInput, "--method must be multisweep, conventional, prbs or multisine (got '"
                                                                        + o.method + "')"));
-        if (auto st = multisineRequest(o, req); !st)
+        if (auto st = multisineRequest(o, f); !st)
             return reportError(cmd, st.error());
-        req.fminHz = o.fmin;
-        req.fmaxHz = o.fmax;
-        req.points = o.points;
-        req.amplitudePct = o.amplitudePct;
-        req.amplitudePeak = o.amplitude; // 0 unless given: the peak in the injection point's own units (hal:)
+        f.fminHz = o.fmin;
+        f.fmaxHz = o.fmax;
+        f.points = o.points;
+        f.amplitudePct = o.amplitudePct;
+        f.amplitudePeak = o.amplitude; // 0 unless given: the peak in the injection point's own units (hal:)
         if (o.quantity == "plant")
-            req.frfQuantity = device::FrfQuantity::Plant;
+            f.quantity = device::FrfQuantity::Plant;
         else if (o.quantity == "open-loop")
-            req.frfQuantity = device::FrfQuantity::OpenLoop;
+            f.quantity = device::FrfQuantity::OpenLoop;
         else if (o.quantity != "default")
             return reportError(cmd, makeError(ErrorCode::BadInput, "--quantity must be default, plant or open-loop (got '" +
                                                                        o.quantity + "')"));
-        req.settleS = o.settle;
-        req.minMeasureS = o.minMeasure;
+        f.settleS = o.settle;
+        f.minMeasureS = o.minMeasure;
     } else {
         return reportError(cmd, makeError(ErrorCode::BadInput, "--test must be step, jog, hold, current-step, frf or circle (got '" + o.test + "')"));
     }
@@ -331,11 +333,11 @@ int runCapture(const CaptureOptions& o)
     }
     if (auto st = prepareDrive(**drive, o); !st)
         return reportError(cmd, st.error());
-    if (req.type == device::TestType::Step) {
+    if (req.type() == device::TestType::Step) {
         // On a drive whose step is a position step of the command (hal:), --amplitude is that step in the command's
         // units (docs/cli.md); elsewhere a motor velocity step.
         if (auto caps = (*drive)->capabilities(o.axis); caps && caps->stepIsPositionStep)
-            std::swap(req.stepPosition, req.stepVelocityRadS);
+            std::swap(req.step().position, req.step().velocityRadS);
     }
     // The drive plans the test first (Drive::planTest): a request beyond its limits is refused with the
     // drive's own words before anything moves, and the planned motion time is reported.

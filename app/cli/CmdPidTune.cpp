@@ -285,12 +285,12 @@ int runPidTune(const PidTuneOptions& o)
             // Verify by the move: the measured peak following error against the prediction.
             device::TestRequest r;
             r.axis = o.axis;
-            r.type = device::TestType::Jog;
-            r.distance = move->distance;
-            r.velocity = move->velocity;
-            r.acceleration = move->acceleration;
-            r.returnToStart = true;
-            r.durationS = kMoveDwellS;
+            auto& j = r.test.emplace<device::JogTest>();
+            j.distance = move->distance;
+            j.velocity = move->velocity;
+            j.acceleration = move->acceleration;
+            j.returnToStart = true;
+            j.dwellS = kMoveDwellS;
             std::cerr << "pid-tune: running the move to verify the predicted following error\n";
             auto ran = device::runTest(**drive, r);
             if (!ran) {

@@ -121,9 +121,9 @@ Result<device::ScopeCapture> captureTriggered(device::Drive& drive, const ScopeO
         if (!stepped && s->state == device::ScopeState::Waiting) {
             device::TestRequest step;
             step.axis = o.axis;
-            step.type = device::TestType::Step;
-            step.stepVelocityRadS = o.stepRadS;
-            step.durationS = std::max(0.05, 1.2 * o.lengthS);
+            auto& stepTest = step.test.emplace<device::StepTest>();
+            stepTest.velocityRadS = o.stepRadS;
+            stepTest.recordS = std::max(0.05, 1.2 * o.lengthS);
             if (auto run = device::runTest(drive, step, {}); !run)
                 return run.error();
             stepped = true;

@@ -97,9 +97,9 @@ CurrentLoopWizard::CurrentLoopWizard(AppContext& ctx, QWidget* parent) : TuningW
     auto stepRequest = [this] {
         device::TestRequest r;
         r.axis = m_data.axis.toStdString();
-        r.type = device::TestType::CurrentStep;
-        r.currentA = m_data.stepAmplitudeA;
-        r.durationS = m_data.stepRecordS;
+        auto& c = r.test.emplace<device::CurrentStepTest>();
+        c.currentA = m_data.stepAmplitudeA;
+        c.recordS = m_data.stepRecordS;
         return std::vector<device::TestRequest>{r};
     };
     // The same step before applying, with the gains the drive holds: the comparison for the one after.

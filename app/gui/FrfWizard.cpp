@@ -68,19 +68,19 @@ device::TestRequest FrfWizard::request() const
 {
     device::TestRequest r;
     r.axis = field("axis").toString().toStdString();
-    r.type = device::TestType::Frf;
-    r.frfMethod = m_config->selectedMethod();
-    r.fminHz = field("fminHz").toDouble();
-    r.fmaxHz = field("fmaxHz").toDouble();
-    r.points = field("points").toInt();
-    r.amplitudePct = field("amplitudePct").toDouble();
+    auto& f = r.test.emplace<device::FrfTest>();
+    f.method = m_config->selectedMethod();
+    f.fminHz = field("fminHz").toDouble();
+    f.fmaxHz = field("fmaxHz").toDouble();
+    f.points = field("points").toInt();
+    f.amplitudePct = field("amplitudePct").toDouble();
     if (m_safety->driveInfo().peakInOutputUnits())
-        r.amplitudePeak = field("amplitudePeak").toDouble(); // the drive's output units (hal:: the PID output's)
-    r.frfQuantity = m_config->selectedQuantity();
-    if (r.frfMethod == device::FrfMethod::Multisine && r.points > 0)
+        f.amplitudePeak = field("amplitudePeak").toDouble(); // the drive's output units (hal:: the PID output's)
+    f.quantity = m_config->selectedQuantity();
+    if (f.method == device::FrfMethod::Multisine && f.points > 0)
         // Lines on a linear grid: at least `points` of them in the band, never coarser than the
         // drive's default fmin/2 (docs/wizards/frf.md).
-        r.multisineSpacingHz = std::min(r.fminHz / 2.0, (r.fmaxHz - r.fminHz) / r.points);
+        f.multisineSpacingHz = std::min(f.fminHz / 2.0, (f.fmaxHz - f.fminHz) / f.points);
     return r;
 }
 
@@ -97,7 +97,7 @@ void FrfWizard::onRunFinished(bool ok)
         return;
     }
     m_measurement = replies.back().frf;
-    m_result->setMeasurement(m_measurement->frf, m_lastRequest.frfMethod, m_safety->driveInfo().frfMaxHz(),
+    m_result->setMeasurement(m_measurement->frf, m_lastRequest.frf().method, m_safety->driveInfo().frfMaxHz(),
                              m_safety->driveInfo().outputSignal());
 }
 
@@ -105,7 +105,7 @@ void FrfWizard::onPageChanged(int id)
 {
     if (id != SaveId)
         return;
-    const auto& r = m_lastRequest;
+    const auto& r = m_lastRequest.frf();
     const int n = static_cast<int>(m_result->analysis().resonances.size());
     // A drive that takes the peak in its output's units (hal:) gets it stored and shown so; the others in % of rated
     // torque with the number of points.
@@ -117,7 +117,8 @@ void FrfWizard::onPageChanged(int id)
              : tr("Finish stores: the settings (axis %1, %2, %3–%4 Hz, %5 points, %6 % of rated torque), the measured "
                   "frequency response (%7 points) and the %n resonance(s) found.",
                   nullptr, n);
-    m_save->showSaved(text.arg(QString::fromStdString(r.axis), QString::fromLatin1(device::frfMethodName(r.frfMethod)))
+    const QString axis = QString::fromStdString(m_lastRequest.axis);
+    m_save->showSaved(text.arg(axis, QString::fromLatin1(device::frfMethodName(r.method)))
                           .arg(r.fminHz)
                           .arg(r.fmaxHz)
                           .arg(peak ? QStringLiteral("%1").arg(r.amplitudePeak) : QString::number(r.points),
@@ -127,10 +128,10 @@ void FrfWizard::onPageChanged(int id)
 
 nlohmann::json FrfWizard::inputsJson() const
 {
-    const auto& r = m_lastRequest;
+    const auto& r = m_lastRequest.frf();
     nlohmann::json j;
-    j["axis"] = r.axis;
-    j["method"] = device::frfMethodName(r.frfMethod);
+    j["axis"] = m_lastRequest.axis;
+    j["method"] = device::frfMethodName(r.method);
     j["fmin_Hz"] = r.fminHz;
     j["fmax_Hz"] = r.fmaxHz;
     j["points"] = r.points;
@@ -144,9 +145,9 @@ nlohmann::json FrfWizard::inputsJson() const
         if (std::isfinite(rated))
             j["amplitude_Nm"] = model::torqueNmFromRatedPct(r.amplitudePct, rated);
     }
-    if (r.frfQuantity == device::FrfQuantity::Plant)
+    if (r.quantity == device::FrfQuantity::Plant)
         j["quantity"] = "plant";
-    else if (r.frfQuantity == device::FrfQuantity::OpenLoop)
+    else if (r.quantity == device::FrfQuantity::OpenLoop)
         j["quantity"] = "open-loop";
     j["connection"] = m_ctx.drive().uri().toStdString();
     if (std::isfinite(m_config->estimatedMotionS()))

@@ -248,7 +248,7 @@ private:
     TestRunPage* m_run = nullptr;
     FrfResultPage* m_result = nullptr;
     FrfSavePage* m_save = nullptr;
-    device::TestRequest m_lastRequest;
+    device::TestRequest m_lastRequest{{}, device::FrfTest{}}; ///< always of kind Frf (request())
     std::shared_ptr<const device::FrfMeasurement> m_measurement;
     bool m_runSaved = false;  ///< the session of the current run is stored
     std::int64_t m_sessionId = 0;

@@ -193,19 +193,19 @@ device::TestRequest NotchWizard::frfRequest() const
 {
     device::TestRequest r;
     r.axis = (m_axis.isEmpty() ? field("axis").toString() : m_axis).toStdString();
-    r.type = device::TestType::Frf;
-    r.frfMethod = device::FrfMethod::MultiSweep;
-    r.amplitudePct = m_source->amplitudePct();
+    auto& f = r.test.emplace<device::FrfTest>();
+    f.method = device::FrfMethod::MultiSweep;
+    f.amplitudePct = m_source->amplitudePct();
     if (!m_measured.empty()) {  // verification: the band and points of the source FRF
-        r.fminHz = m_measured.freqHz.front();
-        r.fmaxHz = m_measured.freqHz.back();
-        r.points = static_cast<int>(std::min<std::size_t>(m_measured.size(), 400));
+        f.fminHz = m_measured.freqHz.front();
+        f.fmaxHz = m_measured.freqHz.back();
+        f.points = static_cast<int>(std::min<std::size_t>(m_measured.size(), 400));
         return r;
     }
-    r.fminHz = m_source->fminHz();
+    f.fminHz = m_source->fminHz();
     const double fs = m_traceRateHz > 0.0 ? m_traceRateHz : 4000.0;
-    r.fmaxHz = m_source->fmaxHz() > 0.0 ? m_source->fmaxHz() : 0.975 * fs;
-    r.points = m_source->points();
+    f.fmaxHz = m_source->fmaxHz() > 0.0 ? m_source->fmaxHz() : 0.975 * fs;
+    f.points = m_source->points();
     return r;
 }
 
@@ -327,7 +327,8 @@ void NotchWizard::saveSession(store::SessionStatus status, const QString& note)
     rec.info.note = note.toStdString();
     if (m_ctx.drive().identity())
         rec.machineAxes = m_ctx.drive().identity()->axes;
-    const auto req = frfRequest();
+    const auto request = frfRequest();
+    const auto& req = request.frf();
     rec.inputs = {{"source", m_origin.toStdString()},
                   {"axis", m_axis.toStdString()},
                   {"method", "multisweep"},

@@ -595,12 +595,12 @@ void ScopeDock::startJog()
     const double scale = linearAxis() ? 1e-3 : std::numbers::pi / 180.0;
     device::TestRequest t;
     t.axis = axis().toStdString();
-    t.type = device::TestType::Jog;
-    t.distance = m_jogDistance->value() * scale;
-    t.velocity = m_jogSpeed->value() * scale;
-    t.acceleration = m_jogAccel->value() * scale;
-    t.returnToStart = m_jogReturn->isChecked();
-    t.durationS = 0.1;
+    auto& j = t.test.emplace<device::JogTest>();
+    j.distance = m_jogDistance->value() * scale;
+    j.velocity = m_jogSpeed->value() * scale;
+    j.acceleration = m_jogAccel->value() * scale;
+    j.returnToStart = m_jogReturn->isChecked();
+    j.dwellS = 0.1;
     m_jog = m_ctx.drive().runTest(t);
     connect(m_jog.data(), &DriveRequest::finished, this, &ScopeDock::onJogDone);
     m_ctx.log(tr("Jog on axis %1: %2 at %3%4")

@@ -37,13 +37,13 @@ device::TestRequest profileJog(const QString& axis, const tuning::MotionProfile&
 {
     device::TestRequest r;
     r.axis = axis.toStdString();
-    r.type = device::TestType::Jog;
-    r.distance = p.vMax * (tuning::sCurveRampS(p) + p.cruiseS);
-    r.velocity = p.vMax;
-    r.acceleration = p.aMax;
-    r.jerk = p.jerk;
-    r.returnToStart = false;  // a second move would start while the first still rings
-    r.durationS = p.settleS;
+    auto& j = r.test.emplace<device::JogTest>();
+    j.distance = p.vMax * (tuning::sCurveRampS(p) + p.cruiseS);
+    j.velocity = p.vMax;
+    j.acceleration = p.aMax;
+    j.jerk = p.jerk;
+    j.returnToStart = false; // a second move would start while the first still rings
+    j.dwellS = p.settleS;
     return r;
 }
 
@@ -114,15 +114,12 @@ TwoInertiaWizard::TwoInertiaWizard(AppContext& ctx, QWidget* parent) : TuningWiz
     m_run = new TestRunPage(ctx, this);
     m_run->setObjectName("tiRunPage");
     m_run->setRequestFactory([this] {
-        device::TestRequest r;
-        r.axis = m_safety->axis().toStdString();
-        r.type = device::TestType::Frf;
-        r.frfMethod = device::FrfMethod::MultiSweep;
-        r.fminHz = m_data.fminHz;
-        r.fmaxHz = m_data.fmaxHz;
-        r.points = m_data.points;
-        r.amplitudePct = m_data.amplitudePct;
-        return std::vector<device::TestRequest>{r};
+        const device::FrfTest frf{.method = device::FrfMethod::MultiSweep,
+                                  .fminHz = m_data.fminHz,
+                                  .fmaxHz = m_data.fmaxHz,
+                                  .points = m_data.points,
+                                  .amplitudePct = m_data.amplitudePct};
+        return std::vector<device::TestRequest>{{.axis = m_safety->axis().toStdString(), .test = frf}};
     });
     m_fit = new TwoInertiaFitPage(ctx, m_data, m_run, this);
     m_apply = new ApplyPage(ctx, this);

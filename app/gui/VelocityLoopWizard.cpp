@@ -86,21 +86,18 @@ VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : Tunin
         const std::string axis = m_data.axis.toStdString();
         if (m_data.method == VelocityLoopData::Method::Frf &&
             m_data.frfSource == VelocityLoopData::FrfSource::Measure) {
-            device::TestRequest f;
-            f.axis = axis;
-            f.type = device::TestType::Frf;
-            f.frfMethod = device::FrfMethod::MultiSweep;
-            f.fminHz = m_data.fminHz;
-            f.fmaxHz = m_data.fmaxHz;
-            f.points = m_data.points;
-            f.amplitudePct = m_data.amplitudePct;
-            reqs.push_back(f);
+            const device::FrfTest frf{.method = device::FrfMethod::MultiSweep,
+                                      .fminHz = m_data.fminHz,
+                                      .fmaxHz = m_data.fmaxHz,
+                                      .points = m_data.points,
+                                      .amplitudePct = m_data.amplitudePct};
+            reqs.push_back({.axis = axis, .test = frf});
         }
         device::TestRequest s;
         s.axis = axis;
-        s.type = device::TestType::Step;
-        s.stepVelocityRadS = m_data.stepRadS;
-        s.durationS = m_data.stepDurationS;
+        auto& step = s.test.emplace<device::StepTest>();
+        step.velocityRadS = m_data.stepRadS;
+        step.recordS = m_data.stepDurationS;
         reqs.push_back(s);
         return reqs;
     });
@@ -112,9 +109,9 @@ VelocityLoopWizard::VelocityLoopWizard(AppContext& ctx, QWidget* parent) : Tunin
     m_verifyRun->setRequestFactory([this] {
         device::TestRequest s;
         s.axis = m_data.axis.toStdString();
-        s.type = device::TestType::Step;
-        s.stepVelocityRadS = m_data.stepRadS;
-        s.durationS = m_data.stepDurationS;
+        auto& step = s.test.emplace<device::StepTest>();
+        step.velocityRadS = m_data.stepRadS;
+        step.recordS = m_data.stepDurationS;
         return std::vector<device::TestRequest>{s};
     });
     auto* verify = new VelocityLoopVerifyPage(m_data, m_verifyRun, this);

@@ -50,7 +50,7 @@ QTableWidget* makeTable(QWidget* parent, const QStringList& headers)
 }
 QString testName(const device::TestRequest& r)
 {
-    switch (r.type) {
+    switch (r.type()) {
     case device::TestType::Step:
         return QCoreApplication::translate("TestRunPage", "velocity step");
     case device::TestType::Jog:
@@ -58,9 +58,11 @@ QString testName(const device::TestRequest& r)
     case device::TestType::Hold:
         return QCoreApplication::translate("TestRunPage", "position hold");
     case device::TestType::Frf:
-        return QCoreApplication::translate("TestRunPage", "frequency response (%1)").arg(qs(device::frfMethodName(r.frfMethod)));
+        return QCoreApplication::translate("TestRunPage", "frequency response (%1)")
+            .arg(qs(device::frfMethodName(r.frf().method)));
     case device::TestType::Circle:
-        return QCoreApplication::translate("TestRunPage", "circle of %1 and %2").arg(qs(r.axis), qs(r.secondAxis));
+        return QCoreApplication::translate("TestRunPage", "circle of %1 and %2")
+            .arg(qs(r.axis), qs(r.circle().secondAxis));
     case device::TestType::CurrentStep:
         return QCoreApplication::translate("TestRunPage", "current step");
     }

@@ -17,7 +17,7 @@ std::string simRegisterMapJson()
     using nlohmann::ordered_json;
     ordered_json j;
     j["family"] = "axistune-sim";
-    j["version"] = 2;
+    j["version"] = 3;
     j["description"] =
         "AxisTune simulated drive (axistune-simdrive). All data in holding registers (function codes 3, 6, 16, 23). "
         "Addresses are 0-based PDU addresses. Unit id = unit_id_base + axis index.";
@@ -75,7 +75,7 @@ std::string simRegisterMapJson()
     carry("test.distance", 210, "f64", "jog.distance");
     carry("test.velocity", 214, "f64", "jog.velocity");
     carry("test.acceleration", 218, "f64", "jog.acceleration");
-    carry("test.duration", 222, "f64", "test.duration_s");
+    carry("test.record", 222, "f64", "test.record_s");
     carry("test.current_step", 226, "f64", "current_step.current_a");
     carry("test.freq_start", 230, "f64", "frf.fmin_hz");
     carry("test.freq_end", 234, "f64", "frf.fmax_hz");
@@ -109,6 +109,12 @@ std::string simRegisterMapJson()
     // (version 1 carried the step, the current step, the FRF amplitude and the jerk in one register, test.amplitude).
     carry("test.jog_jerk", 366, "f64", "jog.jerk");
     carry("test.frf_amplitude", 370, "f64", "frf.amplitude_pct");
+    // Map version 3: one request type per test kind (core/device/Drive.h). Version 2's test.duration meant the record
+    // length of a step, hold or current step and the dwell of a jog or circle, and a circle's move to its start point
+    // used the jog's velocity and acceleration; the dwell and that move now have registers of their own.
+    carry("test.dwell", 374, "f64", "test.dwell_s");
+    carry("circle.positioning_speed", 378, "f64", "circle.positioning_m_per_s");
+    carry("circle.positioning_accel", 382, "f64", "circle.positioning_m_per_s2");
     // The drive describes itself (docs/drive-seam.md, docs/modbus.md "Capabilities, limits and plans").
     add("describe.test_types", 600, "u16", 1, "bit i: the axis runs test_type i");
     add("describe.frf_methods", 601, "u16", 1, "bit i: frf_method i is offered");

@@ -133,17 +133,17 @@ Result<AmplitudeMap> measureAmplitudeMap(device::Drive& drive, const AmplitudeMa
     for (std::size_t a = 0; a < na; ++a) {
         device::TestRequest r;
         r.axis = o.axis;
-        r.type = device::TestType::Frf;
-        r.frfMethod = device::FrfMethod::Multisine;
-        r.fminHz = o.fminHz;
-        r.fmaxHz = fmax;
-        r.multisineSpacingHz = o.spacingHz;
-        r.multisinePeriods = o.periods;
-        r.amplitudePct = o.amplitudesPct[a];
+        auto& f = r.test.emplace<device::FrfTest>();
+        f.method = device::FrfMethod::Multisine;
+        f.fminHz = o.fminHz;
+        f.fmaxHz = fmax;
+        f.multisineSpacingHz = o.spacingHz;
+        f.multisinePeriods = o.periods;
+        f.amplitudePct = o.amplitudesPct[a];
         if (o.timeBudgetS > 0.0) {
             auto plan = drive.planTest(r);
             if (plan && map.motionTimeS + plan->motionTimeS > o.timeBudgetS)
-                return makeError(ErrorCode::Safety, "the amplitude map at " + num(r.amplitudePct, 3) +
+                return makeError(ErrorCode::Safety, "the amplitude map at " + num(f.amplitudePct, 3) +
                                                         " % would take " + num(plan->motionTimeS, 3) +
                                                         " s of motion, beyond its budget (" + num(o.timeBudgetS, 3) +
                                                         " s, " + num(map.motionTimeS, 3) + " s used)");
@@ -151,14 +151,14 @@ Result<AmplitudeMap> measureAmplitudeMap(device::Drive& drive, const AmplitudeMa
         auto t = device::runTest(drive, r, run);
         if (!t) {
             const auto& e = t.error();
-            return makeError(e.code, "amplitude map at " + num(r.amplitudePct, 3) + " %: " + e.detail);
+            return makeError(e.code, "amplitude map at " + num(f.amplitudePct, 3) + " %: " + e.detail);
         }
         if (!t->frf)
             return makeError(ErrorCode::Device,
-                             "amplitude map at " + num(r.amplitudePct, 3) + " %: the drive gave no frequency response");
+                             "amplitude map at " + num(f.amplitudePct, 3) + " %: the drive gave no frequency response");
         const auto& m = *t->frf;
         AmplitudeRun ar;
-        ar.amplitudePct = r.amplitudePct;
+        ar.amplitudePct = f.amplitudePct;
         ar.motionTimeS = m.motionTimeS;
         const auto& md = m.frf.metadata;
         const auto pk = md.find("peak_Nm");
@@ -327,15 +327,16 @@ Result<BacklashEstimate> backlashFromReversal(const model::Capture& c)
 device::TestRequest backlashReversal(const std::string& axis, double distanceM, double velocityMPerS,
                                      double accelerationMPerS2)
 {
-    device::TestRequest j;
-    j.axis = axis;
-    j.type = device::TestType::Jog;
+    device::JogTest j;
     j.distance = distanceM;
     j.velocity = velocityMPerS;
     j.acceleration = accelerationMPerS2;
     j.returnToStart = true;
-    j.durationS = kBacklashDwellS;
-    return j;
+    j.dwellS = kBacklashDwellS;
+    device::TestRequest r;
+    r.axis = axis;
+    r.test = j;
+    return r;
 }
 
 Result<BacklashEstimate> measureBacklash(device::Drive& drive, const std::string& axis, double distanceM,
@@ -357,14 +358,15 @@ Result<BacklashEstimate> measureBacklash(device::Drive& drive, const std::string
 
 device::TestRequest moveEvaluationRequest(const std::string& axis, bool linear)
 {
-    device::TestRequest j;
-    j.axis = axis;
-    j.type = device::TestType::Jog;
+    device::JogTest j;
     j.distance = linear ? 0.01 : 0.2;
     j.velocity = linear ? 0.05 : 1.0;
     j.acceleration = linear ? 1.0 : 20.0;
-    j.durationS = 0.15;
-    return j;
+    j.dwellS = 0.15;
+    device::TestRequest r;
+    r.axis = axis;
+    r.test = j;
+    return r;
 }
 
 Result<InUseMap> amplitudeMapInUse(device::Drive& drive, const AmplitudeMapOptions& options, bool linear,

@@ -17,9 +17,10 @@ std::optional<AutoTuneResult> Sequence::move()
     s.name = "move";
     if (!begin("move"))
         return aborted("move");
-    const device::TestRequest j = moveEvaluationRequest(axis, m_linear);
+    const device::TestRequest move = moveEvaluationRequest(axis, m_linear);
+    const device::JogTest& j = move.jog();
     const double window = m_linear ? 1e-6 : 1e-5;
-    auto run = test(j, "the point-to-point move", s.motionTimeS);
+    auto run = test(move, "the point-to-point move", s.motionTimeS);
     if (!run)
         return refuse(run.error().detail, run.error().code);
     if (!run->trace)

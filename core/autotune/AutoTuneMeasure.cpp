@@ -31,12 +31,12 @@ std::optional<AutoTuneResult> Sequence::safetyEnvelope()
     {
         device::TestRequest h;
         h.axis = axis;
-        h.type = device::TestType::Hold;
-        h.durationS = 0.05;
+        auto& ht = h.test.emplace<device::HoldTest>();
+        ht.recordS = 0.05;
         auto run = test(h, "the standstill check (hold)", hold.motionTimeS);
         if (!run)
             return refuse(run.error().detail, run.error().code);
-        hold.measured = {{"max_torque_Nm", m_maxTorqueNm}, {"standstill_s", h.durationS}};
+        hold.measured = {{"max_torque_Nm", m_maxTorqueNm}, {"standstill_s", ht.recordS}};
         for (const auto& [k, v] : {std::pair<const char*, double>{"frf_amplitude_max_pct", m_limits.frfAmplitudeMaxPct},
                                    {"current_step_max_A", m_limits.currentStepMaxA},
                                    {"motor_speed_max_rad_s", m_limits.motorSpeedMaxRadS},
@@ -99,9 +99,9 @@ std::optional<AutoTuneResult> Sequence::currentLoop()
     if (m_caps.offers(device::TestType::CurrentStep) && m_caps.currentTraceRateHz > 0.0 && m_stepA > 0.0) {
         device::TestRequest c;
         c.axis = axis;
-        c.type = device::TestType::CurrentStep;
-        c.currentA = m_stepA;
-        c.durationS = std::min(0.005, m_limits.currentStepMaxS);
+        auto& cur = c.test.emplace<device::CurrentStepTest>();
+        cur.currentA = m_stepA;
+        cur.recordS = std::min(0.005, m_limits.currentStepMaxS);
         auto run = test(c, "the current step", s.motionTimeS);
         if (!run)
             return refuse(run.error().detail, run.error().code);

@@ -80,22 +80,22 @@ Result<Step> Positions::move()
     Step s;
     s.name = "move";
     // A point-to-point move of 10 mm (0.2 rad) back and forth at the last position, with the tuned gains.
-    device::TestRequest j;
-    j.axis = m_o.axis;
-    j.type = device::TestType::Jog;
+    device::TestRequest r;
+    r.axis = m_o.axis;
+    auto& j = r.test.emplace<device::JogTest>();
     j.distance = (m_sites.back().x > 0.0 ? -1.0 : 1.0) * (m_linear ? 0.01 : 0.2);
     j.velocity = m_linear ? 0.05 : 1.0;
     j.acceleration = m_linear ? 1.0 : 20.0;
     j.returnToStart = true;
-    j.durationS = 0.15;
+    j.dwellS = 0.15;
     const double window = m_linear ? 1e-6 : 1e-5;
-    auto plan = m_drive.planTest(j);
+    auto plan = m_drive.planTest(r);
     if (plan && m_motion + plan->motionTimeS > m_o.timeBudgetS)
         return makeError(ErrorCode::Safety,
                          "the move would exceed the time budget (" + num(m_o.timeBudgetS, 3) + " s)");
     device::RunOptions ro = m_o.run;
     ro.readTrace = true;
-    auto run = device::runTest(m_drive, j, ro);
+    auto run = device::runTest(m_drive, r, ro);
     if (!run)
         return makeError(run.error().code, "the point-to-point move: " + run.error().detail);
     double t = plan ? plan->motionTimeS : 0.0;

@@ -92,12 +92,12 @@ Result<device::AdaptiveFrfResult> Run::frf(double amplitudePct, double budgetS, 
 {
     device::TestRequest r;
     r.axis = m_o.axis;
-    r.type = device::TestType::Frf;
-    r.frfMethod = device::FrfMethod::Multisine;
-    r.fminHz = kFrfMinHz;
-    r.fmaxHz = 0.975 * m_caps.traceRateHz;
-    r.multisineSpacingHz = kFrfSpacingHz;
-    r.amplitudePct = amplitudePct;
+    auto& f = r.test.emplace<device::FrfTest>();
+    f.method = device::FrfMethod::Multisine;
+    f.fminHz = kFrfMinHz;
+    f.fmaxHz = 0.975 * m_caps.traceRateHz;
+    f.multisineSpacingHz = kFrfSpacingHz;
+    f.amplitudePct = amplitudePct;
     budgetS = std::min(budgetS, m_o.timeBudgetS - m_motion);
     if (!(budgetS > 0.0))
         return makeError(ErrorCode::Safety, "the FRF has no time left in the budget (" + num(m_o.timeBudgetS, 3) +

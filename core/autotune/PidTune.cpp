@@ -38,14 +38,14 @@ Result<device::FrfMeasurement> measureOpenLoop(device::Drive& drive, const PidTu
 {
     device::TestRequest r;
     r.axis = o.axis;
-    r.type = device::TestType::Frf;
-    r.frfMethod = device::FrfMethod::Multisine;
-    r.frfQuantity = device::FrfQuantity::OpenLoop;
-    r.fminHz = o.fminHz;
-    r.fmaxHz = fmaxHz;
-    r.amplitudePeak = o.amplitude;
-    r.amplitudePct = o.amplitudePct > 0.0 ? o.amplitudePct : 5.0;
-    r.multisinePeriods = o.periods;
+    auto& f = r.test.emplace<device::FrfTest>();
+    f.method = device::FrfMethod::Multisine;
+    f.quantity = device::FrfQuantity::OpenLoop;
+    f.fminHz = o.fminHz;
+    f.fmaxHz = fmaxHz;
+    f.amplitudePeak = o.amplitude;
+    f.amplitudePct = o.amplitudePct > 0.0 ? o.amplitudePct : 5.0;
+    f.multisinePeriods = o.periods;
     if (auto plan = drive.planTest(r); !plan)
         return plan.error();
     device::RunOptions ro = run;

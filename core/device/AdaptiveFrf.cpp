@@ -107,7 +107,7 @@ const char* invalidReasonName(InvalidReason r)
 Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first, const AdaptiveFrfOptions& o,
                                          const RunOptions& runOptions)
 {
-    if (first.type != TestType::Frf || first.frfMethod != FrfMethod::Multisine)
+    if (first.type() != TestType::Frf || first.frf().method != FrfMethod::Multisine)
         return makeError(ErrorCode::BadInput, "the adaptive FRF is a multisine measurement (--method multisine)");
     if (!(o.timeBudgetS > 0.0) || !std::isfinite(o.timeBudgetS))
         return makeError(ErrorCode::BadInput, "the time budget must be > 0 s");
@@ -207,11 +207,12 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         auto zOf = [&](std::size_t i) { return std::isfinite(zAbs[i]) ? zAbs[i] : zFallback; };
         // Time of a pass over all of them: settle + P periods.
         TestRequest probe = first;
-        probe.multisineBands.clear();
+        FrfTest& pf = probe.frf();
+        pf.multisineBands.clear();
         for (const auto& [a, b] : groupBands(todo))
-            probe.multisineBands.push_back({lines[a].f - 0.5 * spacing, lines[b].f + 0.5 * spacing, spacing});
-        probe.multisineShape.clear();
-        probe.multisinePeriods = 2;
+            pf.multisineBands.push_back({lines[a].f - 0.5 * spacing, lines[b].f + 0.5 * spacing, spacing});
+        pf.multisineShape.clear();
+        pf.multisinePeriods = 2;
         auto pp = hostPlan(probe);
         if (!pp)
             return pp.error();
@@ -258,25 +259,26 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         const auto runs = groupBands(chosen);
         for (int attempt = 0; attempt < 2; ++attempt) {
             TestRequest next = first;
-            next.multisineBands.clear();
+            FrfTest& nf = next.frf();
+            nf.multisineBands.clear();
             for (const auto& [a, b] : runs)
-                next.multisineBands.push_back({lines[a].f - 0.5 * spacing, lines[b].f + 0.5 * spacing, spacing});
-            next.fminHz = next.multisineBands.front().fminHz;
-            next.fmaxHz = next.multisineBands.back().fmaxHz;
-            next.multisineSpacingHz = spacing;
-            next.multisinePeriods = periods;
+                nf.multisineBands.push_back({lines[a].f - 0.5 * spacing, lines[b].f + 0.5 * spacing, spacing});
+            nf.fminHz = nf.multisineBands.front().fminHz;
+            nf.fmaxHz = nf.multisineBands.back().fmaxHz;
+            nf.multisineSpacingHz = spacing;
+            nf.multisinePeriods = periods;
             std::vector<double> ampReq(lines.size(), 0.0);
             double maxReq = 0.0;
             for (std::size_t i : chosen) {
                 ampReq[i] = std::sqrt(need[i] / periods);
                 maxReq = std::max(maxReq, ampReq[i]);
             }
-            next.multisineShape.clear();
+            nf.multisineShape.clear();
             if (shapedOk)
                 for (const auto& [a, b] : runs)
                     for (std::size_t i = a; i <= b; ++i)
-                        next.multisineShape.push_back({lines[i].f, std::max(ampReq[i], kFillWeight * maxReq)});
-            next.amplitudePct = maxPct;
+                        nf.multisineShape.push_back({lines[i].f, std::max(ampReq[i], kFillWeight * maxReq)});
+            nf.amplitudePct = maxPct;
             auto p = hostPlan(next);
             if (!p)
                 return p.error();
@@ -304,7 +306,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
                     by = "voltage limit";
                 }
             }
-            next.amplitudePct = 100.0 * peak / ratedNm;
+            nf.amplitudePct = 100.0 * peak / ratedNm;
             auto drivePlan = drive.planTest(next);
             if (!drivePlan && shapedOk) {
                 shapedOk = false; // a drive that takes no spectrum (Modbus): flat bands from here on
@@ -342,11 +344,12 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         }
         AdaptiveFrfPass rec;
         rec.lines = plan->design.freqHz.size();
-        rec.bands = request.multisineBands.empty() ? 1 : request.multisineBands.size();
-        rec.peakPct = request.amplitudePct;
+        const FrfTest& rf = request.frf();
+        rec.bands = rf.multisineBands.empty() ? 1 : rf.multisineBands.size();
+        rec.peakPct = rf.amplitudePct;
         rec.periods = static_cast<int>(plan->periods);
         rec.motionTimeS = m.motionTimeS;
-        rec.shaped = !request.multisineShape.empty();
+        rec.shaped = !rf.multisineShape.empty();
         rec.limitedBy = limitedBy;
         const auto clampedIt = m.frf.metadata.find("voltage_clamped_samples");
         rec.voltageReached = clampedIt != m.frf.metadata.end() && clampedIt->second != "0";

@@ -29,13 +29,13 @@ struct CircleLimits {
     double maxMotorSpeedRadS = kMaxMotorSpeedRadS;  ///< feed and positioning speed at the motor
 };
 
-/// The circle options of a request (data arc, lead arcs, dwell = durationS; no geometric errors).
+/// The circle options of a Circle request (data arc, lead arcs, dwell = CircleTest::dwellS; no geometric errors).
 sim::CircleTestOptions circleOptionsOf(const TestRequest& request);
 /// The Circle test request of a circle (the inverse of circleOptionsOf; the seed and the geometric errors of
 /// the options are the simulator's, not the drive's, and are not carried).
 TestRequest circleRequestOf(const sim::CircleTestOptions& circle);
 
-/// Positioning speed and acceleration of a request (its own, or the defaults when 0).
+/// Positioning speed and acceleration of a Circle request (positioningMPerS, positioningMPerS2; the defaults when 0).
 double circlePositioningSpeed(const TestRequest& request);
 double circlePositioningAccel(const TestRequest& request);
 

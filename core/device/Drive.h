@@ -15,6 +15,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace axistune::device {
@@ -27,18 +28,14 @@ struct DriveIdentity {
     std::vector<std::string> axes;  ///< axis names, one drive axis each
 };
 
+/// The kinds of test; each has its own request type below (StepTest, JogTest, ...), in this order in TestKind.
 enum class TestType {
-    Step,   ///< velocity step stepVelocityRadS [rad/s motor], duration [s] (hal:: a position step stepPosition)
-    Jog,    ///< position move: distance [axis units] at velocity [axis units/s], optional return
-    Hold,   ///< position hold for duration [s]
-    Frf,    ///< frequency response: torque injection in the closed velocity loop (FrfTest.h)
-    Circle, ///< ball-bar circle of two axes together (CircleDriveTest.h, docs/ballbar.md)
-    /// q-axis current step (docs/simulator.md "Current-step test"): velocity and position loops open, the
-    /// current command steps from 0 to `currentA` [A] 10 % into the recording and holds; `durationS` is the
-    /// recording length, traced at every current-loop period (fs = 1/current.period). Afterwards the axis
-    /// holds its position again. Refused beyond the drive's limits (DriveLimits: current, record length,
-    /// motor speed reached).
-    CurrentStep,
+    Step,        ///< StepTest: a velocity step at the motor (hal:: a position step of the command)
+    Jog,         ///< JogTest: a position move, optionally back
+    Hold,        ///< HoldTest: the axis holds its position while recorded
+    Frf,         ///< FrfTest: frequency response, torque injection in the closed velocity loop (FrfTest.h)
+    Circle,      ///< CircleTest: ball-bar circle of two axes together (CircleDriveTest.h, docs/ballbar.md)
+    CurrentStep, ///< CurrentStepTest: q-axis current step, loops open (docs/simulator.md "Current-step test")
 };
 
 /// Excitation and analysis of an FRF test (docs/frequency-response-sim.md).
@@ -58,56 +55,114 @@ enum class FrfQuantity {
     OpenLoop, ///< −(controller output) / drive input: the open position loop with the running gains (hal:)
 };
 
-struct TestRequest {
-    std::string axis;
-    TestType type = TestType::Step;
-    /// Step on a drive whose step is a motor velocity step (sim:, modbus://): the step [rad/s at the motor].
-    double stepVelocityRadS = 0.0;
-    /// Step on a drive whose step is a position step of the command (DriveCapabilities::stepIsPositionStep, hal:):
-    /// the step in the command's units. Each drive refuses the step quantity it does not take, so that a velocity
-    /// step in rad/s is never taken for millimetres, nor millimetres for rad/s.
-    double stepPosition = 0.0;
-    double currentA = 0.0;      ///< CurrentStep: the q-axis current step [A]
-    double distance = 0.0;      ///< Jog: [m] or [rad]
-    double velocity = 0.0;      ///< Jog: [m/s] or [rad/s]
-    double acceleration = 0.0;  ///< Jog: [m/s²] or [rad/s²]
-    bool returnToStart = false; ///< Jog: move back (a reversal)
-    double jerk = 0.0;          ///< Jog: jerk limit [m/s³] or [rad/s³] (rectangular jerk); 0 = trapezoid
-    double durationS = 0.1;     ///< Step/Hold/CurrentStep: recording length; Jog: dwell before and after
-    int traceDivider = 0;       ///< 0: the drive's trace.divider parameter
-    // Frf (durationS is not used: the length follows from the plan).
-    FrfMethod frfMethod = FrfMethod::MultiSweep;
+/// TestType::Step. A drive takes the step quantity its capabilities name and refuses the other (BadInput, before
+/// anything moves), so that a velocity step in rad/s is never taken for millimetres, nor millimetres for rad/s.
+struct StepTest {
+    /// A drive whose step is a motor velocity step (sim:, modbus://): the step [rad/s at the motor].
+    double velocityRadS = 0.0;
+    /// A drive whose step is a position step of the command (DriveCapabilities::stepIsPositionStep, hal:): the step
+    /// in the command's units, held for recordS and stepped back.
+    double position = 0.0;
+    double recordS = 0.1; ///< recording length [s]
+};
+
+/// TestType::Jog: a position move, optionally back (a reversal). Units: m or rad, or the command's own units where
+/// DriveCapabilities::jogInCommandUnits (hal:).
+struct JogTest {
+    double distance = 0.0;
+    double velocity = 0.0;
+    double acceleration = 0.0;
+    double jerk = 0.0;          ///< jerk limit (rectangular jerk); 0: a trapezoid
+    bool returnToStart = false; ///< move back to the start (a reversal)
+    double dwellS = 0.1;        ///< dwell before and after the move [s]
+};
+
+/// TestType::Hold: the axis holds its position while it is recorded.
+struct HoldTest {
+    double recordS = 0.1; ///< recording length [s]
+};
+
+/// TestType::CurrentStep (docs/simulator.md "Current-step test"): velocity and position loops open, the q-axis
+/// current command steps from 0 to currentA 10 % into the recording and holds, traced at every current-loop period.
+/// Afterwards the axis holds its position again. Refused beyond the drive's limits (DriveLimits: current, record
+/// length, motor speed reached).
+struct CurrentStepTest {
+    double currentA = 0.0; ///< the q-axis current step [A]
+    double recordS = 0.1;  ///< recording length [s]
+};
+
+/// TestType::Frf (FrfTest.h): torque injection in the closed velocity loop. The record length follows from the plan.
+struct FrfTest {
+    FrfMethod method = FrfMethod::MultiSweep;
     double fminHz = 10.0;
     double fmaxHz = 3900.0;
-    int points = 60;
-    double amplitudePct = 5.0;   ///< % of rated torque; refused above DriveLimits::frfAmplitudeMaxPct
+    int points = 60; ///< frequencies of the sine streams and PRBS (multisine: not used)
+    /// % of rated torque (multisine: its PEAK); refused above DriveLimits::frfAmplitudeMaxPct.
+    double amplitudePct = 5.0;
     /// The excitation's peak in the units of the drive's injection point instead of amplitudePct (0: not given).
     /// Only drives whose capabilities say frfPeakInOutputUnits take it (hal:: the PID output's units); the others
     /// refuse a request that gives it.
     double amplitudePeak = 0.0;
-    FrfQuantity frfQuantity = FrfQuantity::Default; ///< refused unless in DriveCapabilities::frfQuantities
-    double settleS = 0.0;        ///< settle per frequency; 0: from the loop's dynamics
-    double minMeasureS = 0.0;    ///< measured time per frequency at least; 0: from the loop's dynamics
-    // Frf with FrfMethod::Multisine (docs/multisine.md): amplitudePct is the PEAK of the multisine,
-    // settleS the settle time before the record (0: from the loop's dynamics); points is not used.
+    FrfQuantity quantity = FrfQuantity::Default; ///< refused unless in DriveCapabilities::frfQuantities
+    double settleS = 0.0;     ///< settle per frequency (multisine: before the record) [s]; 0: from the loop's dynamics
+    double minMeasureS = 0.0; ///< measured time per frequency at least [s]; 0: from the loop's dynamics
+    // FrfMethod::Multisine (docs/multisine.md).
     double multisineSpacingHz = 0.0;                ///< line spacing of the band fminHz..fmaxHz; 0: fminHz/2
-    std::vector<dsp::MultisineBand> multisineBands; ///< bands with their own spacing; empty: the one band above
+    std::vector<dsp::MultisineBand> multisineBands{}; ///< bands with their own spacing; empty: the one band above
     int multisinePeriods = 0;                       ///< averaged periods (three phases each); 0: from the loop's dynamics
     dsp::MultisinePhases multisinePhases = dsp::MultisinePhases::Clipping;
-    std::vector<std::pair<double, double>> multisineShape;  ///< (f [Hz], relative amplitude); empty: flat
-    // Circle (CircleDriveTest.h; docs/ballbar.md "Circle tests through the drive"): `axis` is the first
-    // plane axis ("x" role), `secondAxis` the second. The drive first moves both axes to the start point
-    // (velocity [m/s] and acceleration [m/s²] of that move; 0: kCirclePositioning*), dwells durationS,
-    // then runs lead-in arc, 360° data arc and lead-out arc. The trace carries both axes (CircleRun.h).
-    std::string secondAxis;
+    std::vector<std::pair<double, double>> multisineShape{}; ///< (f [Hz], relative amplitude); empty: flat
+};
+
+/// TestType::Circle (CircleDriveTest.h; docs/ballbar.md "Circle tests through the drive"): the request's axis is the
+/// first plane axis ("x" role), secondAxis the second. The drive first moves both axes to the start point, dwells
+/// dwellS, then runs lead-in arc, 360° data arc and lead-out arc. The trace carries both axes (CircleRun.h).
+struct CircleTest {
+    std::string secondAxis{};
     double radiusM = 0.0;
     double feedMPerS = 0.0;
     model::CircleDirection direction = model::CircleDirection::Ccw;
-    double centerXM = 0.0;  ///< circle centre: position of the first axis [m]
-    double centerYM = 0.0;  ///< circle centre: position of the second axis [m]
-    double dataStartDeg = 45.0;  ///< angle at which the 360° data arc begins
-    double leadArcDeg = 90.0;    ///< lead-in and lead-out arcs
+    double centerXM = 0.0;          ///< circle centre: position of the first axis [m]
+    double centerYM = 0.0;          ///< circle centre: position of the second axis [m]
+    double dataStartDeg = 45.0;     ///< angle at which the 360° data arc begins [deg]
+    double leadArcDeg = 90.0;       ///< lead-in and lead-out arcs [deg]
+    double positioningMPerS = 0.0;  ///< speed of the move to the start point [m/s]; 0: kCirclePositioningSpeedMPerS
+    double positioningMPerS2 = 0.0; ///< its acceleration [m/s²]; 0: kCirclePositioningAccelMPerS2
+    double dwellS = 0.1;            ///< dwell at the start point before the lead-in arc [s]
 };
+
+/// One test kind's fields; the alternatives are in TestType's order (TestRequest::type()).
+using TestKind = std::variant<StepTest, JogTest, HoldTest, FrfTest, CircleTest, CurrentStepTest>;
+
+/// A test on one axis: the kind with its own fields, and what every kind shares.
+struct TestRequest {
+    std::string axis{};
+    TestKind test{};
+    int traceDivider = 0; ///< 0: the drive's trace.divider parameter
+
+    TestType type() const { return static_cast<TestType>(test.index()); }
+    template <class T> bool is() const { return std::holds_alternative<T>(test); }
+    // The kind's fields; std::bad_variant_access when the request is of another kind (check type() or is<T>()).
+    StepTest& step() { return std::get<StepTest>(test); }
+    const StepTest& step() const { return std::get<StepTest>(test); }
+    JogTest& jog() { return std::get<JogTest>(test); }
+    const JogTest& jog() const { return std::get<JogTest>(test); }
+    HoldTest& hold() { return std::get<HoldTest>(test); }
+    const HoldTest& hold() const { return std::get<HoldTest>(test); }
+    CurrentStepTest& currentStep() { return std::get<CurrentStepTest>(test); }
+    const CurrentStepTest& currentStep() const { return std::get<CurrentStepTest>(test); }
+    FrfTest& frf() { return std::get<FrfTest>(test); }
+    const FrfTest& frf() const { return std::get<FrfTest>(test); }
+    CircleTest& circle() { return std::get<CircleTest>(test); }
+    const CircleTest& circle() const { return std::get<CircleTest>(test); }
+};
+
+/// A request kind with every field at its default.
+TestKind testKindOf(TestType type);
+
+/// The request's record length (step, hold, current step) or dwell (jog, circle) [s], the time
+/// DriveLimits::testDurationMaxS bounds; 0 for an FRF, whose length follows from its plan.
+double recordOrDwellS(const TestRequest& request);
 
 /// The result of an FRF test: the closed velocity loop T = −T_c/d (spec §3.2 eq. 3.1) with validity.
 struct FrfMeasurement {
@@ -137,14 +192,15 @@ struct DriveCapabilities {
     bool evaluatesFrf = false;         ///< readFrequencyResponse() answers; false: the host evaluates the trace
     bool writesParameters = true;      ///< writeParameters() can change values (false: a read-only backend)
     bool hasLink = true;               ///< a connection that can be lost (false: a file or an in-process drive)
-    /// FRF amplitudes in the injection point's own units (TestRequest::amplitudePeak; hal:: the PID output's
+    /// FRF amplitudes in the injection point's own units (FrfTest::amplitudePeak; hal:: the PID output's
     /// units, amplitudePct then is % of the pid's maxoutput); false: % of rated torque only.
     bool frfPeakInOutputUnits = false;
     /// Jog distance, speed, acceleration and jerk in the command's own units (hal:: the configuration's, e.g. mm and
     /// mm/s); false: m or rad.
     bool jogInCommandUnits = false;
-    /// TestType::Step is a position step of the command by TestRequest::amplitude in the command's own units (hal::
-    /// the configuration's, e.g. mm), held for durationS and stepped back; false: a motor velocity step [rad/s].
+    /// TestType::Step is a position step of the command by StepTest::position in the command's own units (hal:: the
+    /// configuration's, e.g. mm), held for recordS and stepped back; false: a motor velocity step
+    /// StepTest::velocityRadS.
     bool stepIsPositionStep = false;
     std::vector<FrfQuantity> frfQuantities; ///< quantities besides Default an FRF test can report (hal:: plant, open loop)
     /// frfPeakInOutputUnits: the signal whose units the peak is in (hal:: "pid.x.output"); empty otherwise.

@@ -143,6 +143,50 @@ const char* testTypeName(TestType t)
     return "?";
 }
 
+static_assert(
+    std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(TestType::CurrentStep), TestKind>,
+                   CurrentStepTest> &&
+        std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(TestType::Circle), TestKind>, CircleTest>,
+    "TestKind's alternatives follow TestType's order");
+
+TestKind testKindOf(TestType type)
+{
+    switch (type) {
+    case TestType::Step:
+        return StepTest{};
+    case TestType::Jog:
+        return JogTest{};
+    case TestType::Hold:
+        return HoldTest{};
+    case TestType::Frf:
+        return FrfTest{};
+    case TestType::Circle:
+        return CircleTest{};
+    case TestType::CurrentStep:
+        return CurrentStepTest{};
+    }
+    return StepTest{};
+}
+
+double recordOrDwellS(const TestRequest& r)
+{
+    switch (r.type()) {
+    case TestType::Step:
+        return r.step().recordS;
+    case TestType::Jog:
+        return r.jog().dwellS;
+    case TestType::Hold:
+        return r.hold().recordS;
+    case TestType::CurrentStep:
+        return r.currentStep().recordS;
+    case TestType::Circle:
+        return r.circle().dwellS;
+    case TestType::Frf:
+        break;
+    }
+    return 0.0;
+}
+
 bool DriveCapabilities::offers(TestType t) const
 {
     return std::find(testTypes.begin(), testTypes.end(), t) != testTypes.end();

@@ -61,7 +61,8 @@ double FrfRequestPlan::durationS() const
     return multisine ? multisine->durationS() : streams ? streams->durationS() : 0.0;
 }
 
-Result<FrfRequestPlan> planFrfRequest(const TestRequest& r, const model::ParameterValues& v, const AxisClock& clock)
+Result<FrfRequestPlan> planFrfRequest(const TestRequest& request, const model::ParameterValues& v,
+                                      const AxisClock& clock)
 {
     auto get = [&v](const char* k) {
         const auto it = v.find(k);
@@ -72,8 +73,9 @@ Result<FrfRequestPlan> planFrfRequest(const TestRequest& r, const model::Paramet
         return makeError(ErrorCode::BadInput,
                          "FRF plan: the rated torque (motor.rated_current × motor.torque_constant) "
                          "must be positive");
-    if (auto st = checkRatedTorqueFrfRequest(r); !st)
+    if (auto st = checkRatedTorqueFrfRequest(request); !st)
         return st.error();
+    const FrfTest& r = request.frf();
     if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0))
         return makeError(ErrorCode::OutOfRange, "FRF amplitude must be a positive % of the rated torque");
     if (!(r.settleS >= 0.0) || !(r.minMeasureS >= 0.0))
@@ -92,7 +94,7 @@ Result<FrfRequestPlan> planFrfRequest(const TestRequest& r, const model::Paramet
     const double amplitudeNm = model::torqueNmFromRatedPct(r.amplitudePct, rated);
     const double fsHz = 1.0 / clock.tracePeriodS();
     FrfRequestPlan out;
-    if (r.frfMethod == FrfMethod::Multisine) {
+    if (r.method == FrfMethod::Multisine) {
         MultisinePlanOptions po;
         po.fsHz = fsHz;
         po.ticksPerSample = clock.ticksPerVelocity * clock.traceDivider;
@@ -112,7 +114,7 @@ Result<FrfRequestPlan> planFrfRequest(const TestRequest& r, const model::Paramet
         return out;
     }
     FrfPlanOptions po;
-    po.method = r.frfMethod;
+    po.method = r.method;
     po.fsHz = fsHz;
     po.fminHz = r.fminHz;
     po.fmaxHz = r.fmaxHz;

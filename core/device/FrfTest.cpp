@@ -125,9 +125,10 @@ Status correctHold(FrfMeasurement& out, const FrfPlan& plan, const HoldPeriods& 
 
 }  // namespace
 
-Status checkRatedTorqueFrfRequest(const TestRequest& r)
+Status checkRatedTorqueFrfRequest(const TestRequest& request)
 {
-    if (r.frfQuantity != FrfQuantity::Default)
+    const FrfTest& r = request.frf();
+    if (r.quantity != FrfQuantity::Default)
         return makeError(ErrorCode::BadInput, "FRF quantity: this drive measures its own quantity only (the closed "
                                               "velocity loop); plant and open-loop quantities are hal:'s (--quantity)");
     if (r.amplitudePeak != 0.0)

@@ -391,7 +391,7 @@ Result<int> ModbusDrive::writeTestBlock(const TestRequest& request)
     auto a = axisInfo(request.axis);
     if (!a)
         return a.error();
-    if (request.type == TestType::Frf) {
+    if (request.type() == TestType::Frf) {
         if (auto st = checkRatedTorqueFrfRequest(request); !st)
             return st.error();
     }

@@ -69,8 +69,7 @@ Result<MoveToResult> findPosition(Drive& drive, const std::string& axis, const R
     withTrace.readTrace = true;
     TestRequest hold;
     hold.axis = axis;
-    hold.type = TestType::Hold;
-    hold.durationS = 0.01;
+    hold.test = HoldTest{0.01};
     auto holdPlan = drive.planTest(hold);
     auto h = runTest(drive, hold, withTrace);
     if (!h)
@@ -108,13 +107,13 @@ Result<MoveToResult> moveAxisTo(Drive& drive, const std::string& axis, double ta
         return r;
     TestRequest jog;
     jog.axis = axis;
-    jog.type = TestType::Jog;
-    jog.distance = distance;
-    jog.velocity = o.velocity;
-    if (!(jog.velocity > 0.0))
-        jog.velocity = r.linear ? kMoveToSpeedLinear : kMoveToSpeedRotary;
-    jog.acceleration = o.acceleration > 0.0 ? o.acceleration : (r.linear ? 2.0 : 20.0);
-    jog.durationS = o.dwellS;
+    JogTest& move = jog.test.emplace<JogTest>();
+    move.distance = distance;
+    move.velocity = o.velocity;
+    if (!(move.velocity > 0.0))
+        move.velocity = r.linear ? kMoveToSpeedLinear : kMoveToSpeedRotary;
+    move.acceleration = o.acceleration > 0.0 ? o.acceleration : (r.linear ? 2.0 : 20.0);
+    move.dwellS = o.dwellS;
     auto jogPlan = drive.planTest(jog);
     auto j = runTest(drive, jog, withTrace);
     if (!j)

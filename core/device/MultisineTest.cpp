@@ -21,7 +21,7 @@ std::string num(double v)
 
 } // namespace
 
-std::vector<dsp::MultisineBand> multisineBandsOf(const TestRequest& r)
+std::vector<dsp::MultisineBand> multisineBandsOf(const FrfTest& r)
 {
     if (!r.multisineBands.empty())
         return r.multisineBands;

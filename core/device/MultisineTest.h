@@ -52,7 +52,7 @@ struct MultisinePlan {
 };
 
 /// The request's bands, or the one band fminHz..fmaxHz with multisineSpacingHz (0: fminHz/2).
-std::vector<dsp::MultisineBand> multisineBandsOf(const TestRequest& request);
+std::vector<dsp::MultisineBand> multisineBandsOf(const FrfTest& request);
 
 /// Settle = max(timing.settleS, min(settlePeriods / lowest line, maxSettleS)) (the rule of the sine
 /// streams, for lightly damped modes), rounded up to whole trace samples. Errors: those of

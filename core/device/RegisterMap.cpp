@@ -186,8 +186,9 @@ Status checkLayout(const RegisterMap& m, const std::string& source)
     if (ch.address != off.address + off.count)
         return makeError(ErrorCode::BadInput, source + ": 'trace.select_channel' must follow 'trace.select_offset'");
     if (m.field("test.type").carries != "test.type")
-        return makeError(ErrorCode::BadInput, source + ": 'test.type' must carry test.type (register map version 2: every "
-                                                  "test field names the quantity it carries, docs/modbus.md)");
+        return makeError(ErrorCode::BadInput,
+                         source + ": 'test.type' must carry test.type (register map version 2 and "
+                                  "later: every test field names the quantity it carries, docs/modbus.md)");
     const auto& code = m.field("command.code");
     if (m.field("command.token").address != code.address + 1)
         return makeError(ErrorCode::BadInput, source + ": 'command.token' must follow 'command.code'");

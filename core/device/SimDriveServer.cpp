@@ -42,11 +42,21 @@ Result<std::unique_ptr<SimDriveServer>> SimDriveServer::create(const SimDriveSer
     if (!map)
         return map.error();
     s->m_map = std::move(map).value();
-    // Before anything is written the fields hold what an unset request holds (a 0.1 s record, 45° data start, ...).
-    auto unset = testValuesOf(TestRequest{}, s->m_map, [](const std::string&) -> Result<int> { return 0; });
-    if (!unset)
-        return unset.error();
-    s->m_config.assign(s->m_axes.size(), *unset);
+    // Before anything is written the fields hold what an unset request holds (a 0.1 s record, 45° data start, ...):
+    // the quantities of every kind at their defaults, test.type that of the default request (a step). A kind the
+    // map cannot express (no test_type code, no circle block) leaves its fields unset.
+    // The step, the default request, first: its values must exist (the map is refused otherwise).
+    TestValues config;
+    for (int t = 0; t < static_cast<int>(std::variant_size_v<TestKind>); ++t) {
+        TestRequest kind;
+        kind.test = testKindOf(static_cast<TestType>(t));
+        auto values = testValuesOf(kind, s->m_map, [](const std::string&) -> Result<int> { return 0; });
+        if (!values && t == 0)
+            return values.error();
+        if (values)
+            config.insert(values->begin(), values->end()); // keeps what is there: test.type stays the step's
+    }
+    s->m_config.assign(s->m_axes.size(), config);
     // Register → slot table for the engine.
     s->m_owner.assign(kRegisterSpace, -1);
     for (const auto& [n, f] : s->m_map.fields) {

@@ -21,7 +21,8 @@ std::string num(double v) { return model::formatNumber(v, 4); }
 int SimDriveServer::startCircle(int ui, TestRequest& req)
 {
     const Axis& first = m_axes[static_cast<std::size_t>(ui)];
-    const int secondIndex = axisIndex(req.secondAxis); // decoded from circle.second_axis: one of the drive's axes
+    // Decoded from circle.second_axis: one of the drive's axes.
+    const int secondIndex = axisIndex(req.circle().secondAxis);
     if (secondIndex < 0 || secondIndex == ui)
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "circle: the second plane axis must be another axis of this "
                                                            "drive, not axis " + first.name + " (index " +

@@ -51,22 +51,23 @@ int SimDriveServer::buildRequest(int ui, TestRequest& req)
         return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, decoded.error().detail);
     req = std::move(decoded).value();
     const std::string u = ax.kind == "linear" ? " m" : " rad";
-    switch (req.type) {
+    switch (req.type()) {
     case TestType::Step:
-        if (std::abs(req.stepVelocityRadS) > lim.speedLimitRadS)
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "step amplitude " + num(req.stepVelocityRadS) +
+        if (std::abs(req.step().velocityRadS) > lim.speedLimitRadS)
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "step amplitude " + num(req.step().velocityRadS) +
                                                                    " rad/s exceeds the speed limit " +
                                                                    num(lim.speedLimitRadS) + " rad/s");
         break;
     case TestType::Jog:
     case TestType::Hold: {
-        const bool jog = req.type == TestType::Jog;
-        const double target = ax.sim->positionCommand() + (jog ? req.distance : 0.0);
+        // A hold stays where the axis stands; only a jog moves (and has a velocity).
+        const bool jog = req.is<JogTest>();
+        const double distance = jog ? req.jog().distance : 0.0, velocity = jog ? req.jog().velocity : 0.0;
+        const double target = ax.sim->positionCommand() + distance;
         if (ax.kind == "linear" && std::abs(target) > lim.travelLimit)
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
                           "jog target " + num(target) + u + " outside the travel window ±" + num(lim.travelLimit) + u);
-        const double motorSpeed =
-            ax.kind == "linear" ? req.velocity / ax.sim->parameter("plant.screw_lead") : req.velocity;
+        const double motorSpeed = ax.kind == "linear" ? velocity / ax.sim->parameter("plant.screw_lead") : velocity;
         if (jog && std::abs(motorSpeed) > lim.speedLimitRadS)
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "jog velocity means " + num(motorSpeed) +
                                                                    " rad/s at the motor, above the speed limit " +
@@ -78,18 +79,19 @@ int SimDriveServer::buildRequest(int ui, TestRequest& req)
         // embedded drive adds its limits (fraction of max current, record length, speed reached).
         const double ratedTorque =
             model::ratedTorqueNm(ax.sim->parameter("motor.rated_current"), ax.sim->parameter("motor.torque_constant"));
-        const double torque = std::abs(req.currentA) * ax.sim->parameter("motor.torque_constant");
+        const double currentA = req.currentStep().currentA;
+        const double torque = std::abs(currentA) * ax.sim->parameter("motor.torque_constant");
         const double torqueLimit = model::torqueNmFromRatedPct(lim.amplitudeLimitPct, ratedTorque);
         if (!(torque <= torqueLimit))
             return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE,
-                          "current step " + num(req.currentA) + " A means " + num(torque) +
+                          "current step " + num(currentA) + " A means " + num(torque) +
                               " Nm, above the drive's limit " + num(lim.amplitudeLimitPct) +
                               " % of the rated torque (" + num(torqueLimit) + " Nm)");
         break;
     }
     case TestType::Frf:
-        if (!(req.amplitudePct <= lim.amplitudeLimitPct))
-            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "excitation amplitude " + num(req.amplitudePct) +
+        if (!(req.frf().amplitudePct <= lim.amplitudeLimitPct))
+            return refuse(MODBUS_EXCEPTION_ILLEGAL_DATA_VALUE, "excitation amplitude " + num(req.frf().amplitudePct) +
                                                                    " % of the rated torque above the drive's limit " +
                                                                    num(lim.amplitudeLimitPct) + " %");
         break;
@@ -139,13 +141,13 @@ int SimDriveServer::startTest(int ui)
     m_message.clear();
     m_progress = 0.0;
     m_testUnit = ui;
-    m_testSecondUnit = req.type == TestType::Circle ? axisIndex(req.secondAxis) : -1;
+    m_testSecondUnit = req.type() == TestType::Circle ? axisIndex(req.circle().secondAxis) : -1;
     m_testStartMachineS = ax.sim->time();
     m_testStartWall = m_lastHeartbeat = Clock::now();
     m_trace.reset();
     m_frfBlob.clear();
     m_frfMeta.clear();
-    log(std::string("test ") + testTypeName(req.type) + " started on axis " + ax.name);
+    log(std::string("test ") + testTypeName(req.type()) + " started on axis " + ax.name);
     return 0;
 }
 

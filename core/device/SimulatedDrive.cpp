@@ -139,51 +139,58 @@ Status SimulatedDrive::checkLink()
 
 Result<double> SimulatedDrive::checkMotion(const sim::AxisSimulator& sim, const TestRequest& request) const
 {
-    if (request.type != TestType::Frf && (!(request.durationS > 0.0) || request.durationS > kMaxTestDurationS))
-        return makeError(ErrorCode::OutOfRange, "test duration " + model::formatNumber(request.durationS, 6) +
+    // Record length or dwell: the length of every test but an FRF, whose length follows from its plan.
+    const double durationS = recordOrDwellS(request);
+    if (request.type() != TestType::Frf && (!(durationS > 0.0) || durationS > kMaxTestDurationS))
+        return makeError(ErrorCode::OutOfRange, "test duration " + model::formatNumber(durationS, 6) +
                                                     " s refused: it must lie in (0, " +
                                                     model::formatNumber(kMaxTestDurationS, 6) + "] s");
-    switch (request.type) {
-    case TestType::Step:
-        if (request.stepPosition != 0.0)
-            return makeError(ErrorCode::BadInput, "this drive steps the motor velocity (stepVelocityRadS, rad/s): a "
-                                                  "position step request is refused");
-        if (!std::isfinite(request.stepVelocityRadS) || std::abs(request.stepVelocityRadS) > kMaxMotorSpeedRadS)
-            return makeError(ErrorCode::OutOfRange, "step amplitude " + model::formatNumber(request.stepVelocityRadS, 6) +
+    switch (request.type()) {
+    case TestType::Step: {
+        const StepTest& step = request.step();
+        if (step.position != 0.0)
+            return makeError(ErrorCode::BadInput,
+                             "this drive steps the motor velocity (StepTest::velocityRadS, rad/s): a "
+                             "position step request is refused");
+        if (!std::isfinite(step.velocityRadS) || std::abs(step.velocityRadS) > kMaxMotorSpeedRadS)
+            return makeError(ErrorCode::OutOfRange, "step amplitude " + model::formatNumber(step.velocityRadS, 6) +
                                                         " rad/s refused: it must be finite and at most " +
                                                         model::formatNumber(kMaxMotorSpeedRadS, 4) +
                                                         " rad/s (6000 min^-1)");
-        return request.durationS;
+        return step.recordS;
+    }
     case TestType::Jog: {
-        if (!(request.velocity > 0.0) || !(request.acceleration > 0.0) || !std::isfinite(request.distance))
+        const JogTest& jog = request.jog();
+        if (!(jog.velocity > 0.0) || !(jog.acceleration > 0.0) || !std::isfinite(jog.distance))
             return makeError(ErrorCode::OutOfRange,
                              "jog needs a positive velocity and acceleration and a finite distance");
-        if (!(request.jerk >= 0.0) || !std::isfinite(request.jerk))
+        if (!(jog.jerk >= 0.0) || !std::isfinite(jog.jerk))
             return makeError(ErrorCode::OutOfRange, "jog jerk must be finite and >= 0 (0: trapezoid)");
         // The velocity is in axis units: m/s on a linear axis (motor speed = v / R), rad/s on a rotary one.
         const bool linear = sim.kind() == sim::AxisKind::Linear;
-        const double motorSpeed = linear ? request.velocity / sim.parameter("plant.screw_lead") : request.velocity;
+        const double motorSpeed = linear ? jog.velocity / sim.parameter("plant.screw_lead") : jog.velocity;
         if (!(motorSpeed <= kMaxMotorSpeedRadS))
             return makeError(ErrorCode::OutOfRange,
-                             "jog velocity " + model::formatNumber(request.velocity, 4) + (linear ? " m/s" : " rad/s") +
+                             "jog velocity " + model::formatNumber(jog.velocity, 4) + (linear ? " m/s" : " rad/s") +
                                  " means " + model::formatNumber(motorSpeed, 4) +
                                  " rad/s at the motor, above the limit of " +
                                  model::formatNumber(kMaxMotorSpeedRadS, 4) + " rad/s (6000 min^-1)");
         return jogProfile(sim, request).duration();
     }
     default:
-        return request.durationS;
+        return durationS;
     }
 }
 
 sim::MotionProfile SimulatedDrive::jogProfile(const sim::AxisSimulator& sim, const TestRequest& request)
 {
+    const JogTest& jog = request.jog();
     sim::MotionProfile p(sim.positionCommand());
-    p.dwell(request.durationS);
-    p.move(request.distance, request.velocity, request.acceleration, request.jerk);
-    if (request.returnToStart)
-        p.move(-request.distance, request.velocity, request.acceleration, request.jerk);
-    p.dwell(request.durationS);
+    p.dwell(jog.dwellS);
+    p.move(jog.distance, jog.velocity, jog.acceleration, jog.jerk);
+    if (jog.returnToStart)
+        p.move(-jog.distance, jog.velocity, jog.acceleration, jog.jerk);
+    p.dwell(jog.dwellS);
     return p;
 }
 
@@ -193,7 +200,7 @@ Status SimulatedDrive::startTest(const TestRequest& request)
         return st;
     if (m_status.state == TestState::Running)
         return makeError(ErrorCode::Busy, "a test is already running");
-    if (request.type == TestType::Circle)
+    if (request.type() == TestType::Circle)
         return startCircle(request);
     auto s = axisSim(request.axis);
     if (!s)
@@ -213,10 +220,10 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     m_multisinePlan.reset();
     m_frf.reset();
     m_recordEnd = -1.0;
-    switch (request.type) {
+    switch (request.type()) {
     case TestType::Step: {
         sim.setControlMode(sim::ControlMode::Velocity);
-        const double t0 = sim.time() + 0.01 * request.durationS, amp = request.stepVelocityRadS;
+        const double t0 = sim.time() + 0.01 * request.step().recordS, amp = request.step().velocityRadS;
         sim.setVelocityCommand([t0, amp](double t) { return t >= t0 ? amp : 0.0; });
         break;
     }
@@ -227,7 +234,7 @@ Status SimulatedDrive::startTest(const TestRequest& request)
     }
     case TestType::Hold: {
         sim::MotionProfile p(start);
-        p.dwell(request.durationS);
+        p.dwell(request.hold().recordS);
         sim.setControlMode(sim::ControlMode::Position);
         sim.setPositionProfile(p);
         break;
@@ -253,7 +260,7 @@ Status SimulatedDrive::startTest(const TestRequest& request)
         break;
     }
     }
-    if (request.type != TestType::CurrentStep)
+    if (request.type() != TestType::CurrentStep)
         sim.startTrace();
     m_request = request;
     m_active = &sim;
@@ -329,12 +336,14 @@ Result<FrfMeasurement> SimulatedDrive::readFrequencyResponse()
     return *m_frf;
 }
 
-Result<SimulatedDrive::FrfPlans> SimulatedDrive::planFrf(const sim::AxisSimulator& sim, const TestRequest& r) const
+Result<SimulatedDrive::FrfPlans> SimulatedDrive::planFrf(const sim::AxisSimulator& sim,
+                                                         const TestRequest& request) const
 {
     const auto& v = sim.parameters();
     const double rated = model::ratedTorqueNm(v.at("motor.rated_current"), v.at("motor.torque_constant"));
-    if (auto st = checkRatedTorqueFrfRequest(r); !st)
+    if (auto st = checkRatedTorqueFrfRequest(request); !st)
         return st.error();
+    const FrfTest& r = request.frf();
     if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0) || r.amplitudePct > kMaxFrfAmplitudePct) {
         return makeError(ErrorCode::OutOfRange, "FRF amplitude " + model::formatNumber(r.amplitudePct, 6) +
                                                     " % of rated torque refused: it must lie in (0, " +
@@ -347,8 +356,9 @@ Result<SimulatedDrive::FrfPlans> SimulatedDrive::planFrf(const sim::AxisSimulato
     AxisClock clock;
     clock.currentPeriodS = sim.currentPeriod();
     clock.ticksPerVelocity = static_cast<int>(std::llround(sim.velocityPeriod() / sim.currentPeriod()));
-    clock.traceDivider = static_cast<int>(r.traceDivider > 0 ? r.traceDivider : std::llround(v.at("trace.divider")));
-    auto plan = planFrfRequest(r, v, clock);
+    clock.traceDivider =
+        static_cast<int>(request.traceDivider > 0 ? request.traceDivider : std::llround(v.at("trace.divider")));
+    auto plan = planFrfRequest(request, v, clock);
     if (!plan)
         return plan.error();
     FrfPlans out;
@@ -468,7 +478,7 @@ Result<TestPlan> SimulatedDrive::planTest(const TestRequest& request)
 {
     if (auto st = checkLink(); !st)
         return st.error();
-    if (request.type == TestType::Circle)
+    if (request.type() == TestType::Circle)
         return planCircle(request);
     auto s = axisSim(request.axis);
     if (!s)
@@ -480,14 +490,14 @@ Result<TestPlan> SimulatedDrive::planTest(const TestRequest& request)
     const double tracePeriod =
         sim.velocityPeriod() * (request.traceDivider > 0 ? request.traceDivider : sim.parameter("trace.divider"));
     TestPlan p;
-    if (request.type == TestType::Frf) {
+    if (request.type() == TestType::Frf) {
         auto plans = planFrf(sim, request);
         if (!plans)
             return plans.error();
         p.motionTimeS = plans->durationS;
         p.traceRateHz = 1.0 / plans->tracePeriodS;
         p.recordSamples = static_cast<std::size_t>(std::llround(plans->durationS / plans->tracePeriodS));
-    } else if (request.type == TestType::CurrentStep) {
+    } else if (request.type() == TestType::CurrentStep) {
         auto c = planCurrentStep(sim, request);
         if (!c)
             return c.error();
@@ -503,8 +513,9 @@ Result<TestPlan> SimulatedDrive::planTest(const TestRequest& request)
 }
 
 Result<SimulatedDrive::CurrentStepTiming> SimulatedDrive::planCurrentStep(const sim::AxisSimulator& sim,
-                                                                          const TestRequest& r) const
+                                                                          const TestRequest& request) const
 {
+    const CurrentStepTest& r = request.currentStep();
     const auto& v = sim.parameters();
     const double iMax = v.at("motor.max_current"), kt = v.at("motor.torque_constant"), j = v.at("plant.inertia_motor");
     const double limitA = kMaxCurrentStepFraction * iMax;
@@ -514,16 +525,16 @@ Result<SimulatedDrive::CurrentStepTiming> SimulatedDrive::planCurrentStep(const 
                          "current step " + g(r.currentA) + " A refused: it must be finite, non-zero and at most " +
                              g(100.0 * kMaxCurrentStepFraction) + " % of motor.max_current (" + g(limitA) + " A)");
     }
-    if (!std::isfinite(r.durationS) || !(r.durationS > 0.0) || r.durationS > kMaxCurrentStepS) {
-        return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
+    if (!std::isfinite(r.recordS) || !(r.recordS > 0.0) || r.recordS > kMaxCurrentStepS) {
+        return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.recordS) +
                                                     " s refused: it must lie in (0, " + g(kMaxCurrentStepS) + "] s");
     }
     CurrentStepTiming c;
     c.h = sim.currentPeriod();
-    c.ticks = std::llround(r.durationS / c.h);
-    c.preTicks = std::max<long long>(1, std::llround(0.1 * r.durationS / c.h));
+    c.ticks = std::llround(r.recordS / c.h);
+    c.preTicks = std::max<long long>(1, std::llround(0.1 * r.recordS / c.h));
     if (c.ticks < c.preTicks + 2) {
-        return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.durationS) +
+        return makeError(ErrorCode::OutOfRange, "current-step recording " + g(r.recordS) +
                                                     " s refused: shorter than a few current periods (" + g(c.h) +
                                                     " s)");
     }
@@ -551,7 +562,7 @@ Result<double> SimulatedDrive::startCurrentStep(sim::AxisSimulator& sim, const T
     // The record starts on a whole current tick; the step comes preTicks later and holds to the end.
     const double t0 = sim.time();
     const double tStep = t0 + static_cast<double>(c->preTicks) * h;
-    const double amp = r.currentA, half = 0.5 * h;
+    const double amp = r.currentStep().currentA, half = 0.5 * h;
     sim.setControlMode(sim::ControlMode::Current);
     sim.setCurrentCommand([tStep, amp, half](double t) { return t >= tStep - half ? amp : 0.0; });
     sim.startTrace(sim::TraceRate::Current);
@@ -567,7 +578,8 @@ void SimulatedDrive::endCurrentStepRecord()
     m_trace = m_active->takeTrace();
     m_trace->metadata["test"] = "current_step";
     m_trace->metadata["step_start_s"] = m_stepStart;
-    model::setMetadataNumber(m_trace->metadata, "step_amplitude_A", m_request ? m_request->currentA : 0.0);
+    model::setMetadataNumber(m_trace->metadata, "step_amplitude_A",
+                             m_request ? m_request->currentStep().currentA : 0.0);
     m_trace->metadata["voltage_clamped_ticks"] = std::to_string(m_active->voltageClampCount() - m_clampsAtStart);
     m_active->setCurrentCommand({});
     m_active->holdPosition();

@@ -21,10 +21,11 @@ std::string num(double v)
 
 } // namespace
 
-sim::CircleTestOptions circleOptionsOf(const TestRequest& r)
+sim::CircleTestOptions circleOptionsOf(const TestRequest& request)
 {
+    const CircleTest& r = request.circle();
     sim::CircleTestOptions o;
-    o.axisX = r.axis;
+    o.axisX = request.axis;
     o.axisY = r.secondAxis;
     o.radiusM = r.radiusM;
     o.feedMPerS = r.feedMPerS;
@@ -33,15 +34,15 @@ sim::CircleTestOptions circleOptionsOf(const TestRequest& r)
     o.centerYM = r.centerYM;
     o.dataStartDeg = r.dataStartDeg;
     o.leadArcDeg = r.leadArcDeg;
-    o.dwellS = r.durationS;
+    o.dwellS = r.dwellS;
     return o;
 }
 
 TestRequest circleRequestOf(const sim::CircleTestOptions& o)
 {
-    TestRequest r;
-    r.type = TestType::Circle;
-    r.axis = o.axisX;
+    TestRequest request;
+    request.axis = o.axisX;
+    auto& r = request.test.emplace<CircleTest>();
     r.secondAxis = o.axisY;
     r.radiusM = o.radiusM;
     r.feedMPerS = o.feedMPerS;
@@ -50,33 +51,37 @@ TestRequest circleRequestOf(const sim::CircleTestOptions& o)
     r.centerYM = o.centerYM;
     r.dataStartDeg = o.dataStartDeg;
     r.leadArcDeg = o.leadArcDeg;
-    r.durationS = o.dwellS;
-    return r;
+    r.dwellS = o.dwellS;
+    return request;
 }
 
-double circlePositioningSpeed(const TestRequest& r)
+double circlePositioningSpeed(const TestRequest& request)
 {
-    return r.velocity > 0.0 ? r.velocity : kCirclePositioningSpeedMPerS;
+    const CircleTest& r = request.circle();
+    return r.positioningMPerS > 0.0 ? r.positioningMPerS : kCirclePositioningSpeedMPerS;
 }
-double circlePositioningAccel(const TestRequest& r)
+double circlePositioningAccel(const TestRequest& request)
 {
-    return r.acceleration > 0.0 ? r.acceleration : kCirclePositioningAccelMPerS2;
+    const CircleTest& r = request.circle();
+    return r.positioningMPerS2 > 0.0 ? r.positioningMPerS2 : kCirclePositioningAccelMPerS2;
 }
 
-Status checkCircleRequest(const TestRequest& r, const sim::AxisSimulator& x, const sim::AxisSimulator& y,
+Status checkCircleRequest(const TestRequest& request, const sim::AxisSimulator& x, const sim::AxisSimulator& y,
                           const CircleLimits& lim)
 {
     auto out = [](const std::string& m) { return Status(makeError(ErrorCode::OutOfRange, "circle test: " + m)); };
     if (auto st = sim::checkCirclePlane(x, y); !st)
         return st;
-    auto path = sim::CirclePath::plan(circleOptionsOf(r));
+    const CircleTest& r = request.circle();
+    auto path = sim::CirclePath::plan(circleOptionsOf(request));
     if (!path)
         return path.error();
-    if (!(r.durationS > 0.0) || !std::isfinite(r.durationS))
-        return out("the dwell before the circle must be positive (is " + num(r.durationS) + " s)");
-    if (!std::isfinite(r.velocity) || r.velocity < 0.0 || !std::isfinite(r.acceleration) || r.acceleration < 0.0)
+    if (!(r.dwellS > 0.0) || !std::isfinite(r.dwellS))
+        return out("the dwell before the circle must be positive (is " + num(r.dwellS) + " s)");
+    if (!std::isfinite(r.positioningMPerS) || r.positioningMPerS < 0.0 || !std::isfinite(r.positioningMPerS2) ||
+        r.positioningMPerS2 < 0.0)
         return out("positioning velocity and acceleration must be finite and not negative (0: defaults)");
-    const double radius = r.radiusM, vPos = circlePositioningSpeed(r), aPos = circlePositioningAccel(r);
+    const double radius = r.radiusM, vPos = circlePositioningSpeed(request), aPos = circlePositioningAccel(request);
     double positioningS = 0.0;
     for (const auto& [sim, centre, second] : {std::tuple{&x, r.centerXM, false}, std::tuple{&y, r.centerYM, true}}) {
         const std::string& n = sim->name();
@@ -162,9 +167,10 @@ Result<SimulatedDrive::CheckedCircle> SimulatedDrive::checkCircle(const TestRequ
     auto x = axisSim(request.axis);
     if (!x)
         return x.error();
-    if (request.secondAxis.empty())
+    const std::string& secondAxis = request.circle().secondAxis;
+    if (secondAxis.empty())
         return makeError(ErrorCode::BadInput, "circle test: the second plane axis is not named");
-    auto y = axisSim(request.secondAxis);
+    auto y = axisSim(secondAxis);
     if (!y)
         return y.error();
     if (auto st = checkCircleRequest(request, **x, **y); !st)

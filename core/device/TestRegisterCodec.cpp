@@ -10,42 +10,86 @@
 namespace axistune::device {
 namespace {
 
-using Real = double TestRequest::*;
-using Whole = int TestRequest::*;
+/// Where a quantity lives in a request: the member of its kind, or nullptr when the request is of another kind.
+template <class T> using MemberOf = T* (*)(TestRequest&);
 
-/// The real quantities: one request member each.
-const std::vector<std::pair<std::string, Real>>& realMembers()
+template <class K, class T, T K::*M> T* member(TestRequest& r)
 {
-    static const std::vector<std::pair<std::string, Real>> k{
-        {"test.duration_s", &TestRequest::durationS},
-        {"step.velocity_rad_s", &TestRequest::stepVelocityRadS},
-        {"step.position", &TestRequest::stepPosition},
-        {"current_step.current_a", &TestRequest::currentA},
-        {"jog.distance", &TestRequest::distance},
-        {"jog.velocity", &TestRequest::velocity},
-        {"jog.acceleration", &TestRequest::acceleration},
-        {"jog.jerk", &TestRequest::jerk},
-        {"frf.fmin_hz", &TestRequest::fminHz},
-        {"frf.fmax_hz", &TestRequest::fmaxHz},
-        {"frf.amplitude_pct", &TestRequest::amplitudePct},
-        {"frf.amplitude_peak", &TestRequest::amplitudePeak},
-        {"frf.settle_s", &TestRequest::settleS},
-        {"frf.min_measure_s", &TestRequest::minMeasureS},
-        {"circle.radius_m", &TestRequest::radiusM},
-        {"circle.feed_m_per_s", &TestRequest::feedMPerS},
-        {"circle.center_x_m", &TestRequest::centerXM},
-        {"circle.center_y_m", &TestRequest::centerYM},
-        {"circle.data_start_deg", &TestRequest::dataStartDeg},
-        {"circle.lead_arc_deg", &TestRequest::leadArcDeg}};
+    auto* k = std::get_if<K>(&r.test);
+    return k ? &(k->*M) : nullptr;
+}
+
+double* recordLength(TestRequest& r)
+{
+    if (auto* s = std::get_if<StepTest>(&r.test))
+        return &s->recordS;
+    if (auto* h = std::get_if<HoldTest>(&r.test))
+        return &h->recordS;
+    if (auto* c = std::get_if<CurrentStepTest>(&r.test))
+        return &c->recordS;
+    return nullptr;
+}
+
+double* dwell(TestRequest& r)
+{
+    if (auto* j = std::get_if<JogTest>(&r.test))
+        return &j->dwellS;
+    if (auto* c = std::get_if<CircleTest>(&r.test))
+        return &c->dwellS;
+    return nullptr;
+}
+
+/// The real quantities: one member of one or more kinds each.
+const std::vector<std::pair<std::string, MemberOf<double>>>& realMembers()
+{
+    static const std::vector<std::pair<std::string, MemberOf<double>>> k{
+        {"test.record_s", &recordLength},
+        {"test.dwell_s", &dwell},
+        {"step.velocity_rad_s", &member<StepTest, double, &StepTest::velocityRadS>},
+        {"step.position", &member<StepTest, double, &StepTest::position>},
+        {"current_step.current_a", &member<CurrentStepTest, double, &CurrentStepTest::currentA>},
+        {"jog.distance", &member<JogTest, double, &JogTest::distance>},
+        {"jog.velocity", &member<JogTest, double, &JogTest::velocity>},
+        {"jog.acceleration", &member<JogTest, double, &JogTest::acceleration>},
+        {"jog.jerk", &member<JogTest, double, &JogTest::jerk>},
+        {"frf.fmin_hz", &member<FrfTest, double, &FrfTest::fminHz>},
+        {"frf.fmax_hz", &member<FrfTest, double, &FrfTest::fmaxHz>},
+        {"frf.amplitude_pct", &member<FrfTest, double, &FrfTest::amplitudePct>},
+        {"frf.amplitude_peak", &member<FrfTest, double, &FrfTest::amplitudePeak>},
+        {"frf.settle_s", &member<FrfTest, double, &FrfTest::settleS>},
+        {"frf.min_measure_s", &member<FrfTest, double, &FrfTest::minMeasureS>},
+        {"circle.radius_m", &member<CircleTest, double, &CircleTest::radiusM>},
+        {"circle.feed_m_per_s", &member<CircleTest, double, &CircleTest::feedMPerS>},
+        {"circle.center_x_m", &member<CircleTest, double, &CircleTest::centerXM>},
+        {"circle.center_y_m", &member<CircleTest, double, &CircleTest::centerYM>},
+        {"circle.data_start_deg", &member<CircleTest, double, &CircleTest::dataStartDeg>},
+        {"circle.lead_arc_deg", &member<CircleTest, double, &CircleTest::leadArcDeg>},
+        {"circle.positioning_m_per_s", &member<CircleTest, double, &CircleTest::positioningMPerS>},
+        {"circle.positioning_m_per_s2", &member<CircleTest, double, &CircleTest::positioningMPerS2>}};
     return k;
 }
 
-const std::vector<std::pair<std::string, Whole>>& wholeMembers()
+int* traceDivider(TestRequest& r)
 {
-    static const std::vector<std::pair<std::string, Whole>> k{{"test.trace_divider", &TestRequest::traceDivider},
-                                                              {"frf.points", &TestRequest::points},
-                                                              {"multisine.periods", &TestRequest::multisinePeriods}};
+    return &r.traceDivider;
+}
+
+const std::vector<std::pair<std::string, MemberOf<int>>>& wholeMembers()
+{
+    static const std::vector<std::pair<std::string, MemberOf<int>>> k{
+        {"test.trace_divider", &traceDivider},
+        {"frf.points", &member<FrfTest, int, &FrfTest::points>},
+        {"multisine.periods", &member<FrfTest, int, &FrfTest::multisinePeriods>}};
     return k;
+}
+
+/// A request of the same kind on the same axis with every field at its default: what "not given" means.
+TestRequest unsetLike(const TestRequest& r)
+{
+    TestRequest u;
+    u.axis = r.axis;
+    u.test = testKindOf(r.type());
+    return u;
 }
 
 constexpr int kBandSlots = 4; ///< multisine.band1 .. band4 (a map may carry fewer)
@@ -94,6 +138,43 @@ Result<E> enumOf(const RegisterMap& map, const std::string& group, double code, 
 
 const char* directionName(model::CircleDirection d) { return d == model::CircleDirection::Cw ? "cw" : "ccw"; }
 
+Status frfEnumsOf(const TestValues& values, const RegisterMap& map, FrfTest& r)
+{
+    auto has = [&](const std::string& q) { return values.find(q) != values.end(); };
+    auto at = [&](const std::string& q) { return values.at(q); };
+    if (has("frf.method")) {
+        static const FrfMethod methods[] = {FrfMethod::MultiSweep, FrfMethod::Conventional, FrfMethod::Prbs,
+                                            FrfMethod::Multisine};
+        auto m = enumOf(map, "frf_method", at("frf.method"), methods, frfMethodName);
+        if (!m)
+            return m.error();
+        r.method = *m;
+    }
+    if (has("frf.quantity")) {
+        static const FrfQuantity qs[] = {FrfQuantity::Default, FrfQuantity::Plant, FrfQuantity::OpenLoop};
+        auto q = enumOf(map, "frf_quantity", at("frf.quantity"), qs, frfQuantityName);
+        if (!q)
+            return q.error();
+        r.quantity = *q;
+    }
+    if (has("multisine.phases")) {
+        static const dsp::MultisinePhases ps[] = {dsp::MultisinePhases::Clipping, dsp::MultisinePhases::Schroeder};
+        auto p = enumOf(map, "multisine_phases", at("multisine.phases"), ps, dsp::multisinePhasesName);
+        if (!p)
+            return p.error();
+        r.multisinePhases = *p;
+    }
+    if (r.method == FrfMethod::Multisine && has("multisine.band_count")) {
+        const int count = static_cast<int>(at("multisine.band_count"));
+        if (count > bandSlots(map))
+            return makeError(ErrorCode::OutOfRange, "multisine.band_count " + std::to_string(count) + " above the " +
+                                                        std::to_string(bandSlots(map)) + " bands of the map");
+        for (int b = 0; b < count; ++b)
+            r.multisineBands.push_back({at(bandQuantity(b, 0)), at(bandQuantity(b, 1)), at(bandQuantity(b, 2))});
+    }
+    return Status::success();
+}
+
 } // namespace
 
 const std::vector<TestQuantity>& testQuantities()
@@ -104,7 +185,8 @@ const std::vector<TestQuantity>& testQuantities()
             {"test.type", "test_type", true, "enum test_type"},
             {"test.flags", "", true, "bit set of enum test_flag"},
             {"test.trace_divider", "", true, "trace every N velocity periods (0: parameter trace.divider)"},
-            {"test.duration_s", "", false, "step/hold/current_step: recording length; jog: dwell before and after [s]"},
+            {"test.record_s", "", false, "step/hold/current_step: recording length [s]"},
+            {"test.dwell_s", "", false, "jog: dwell before and after the move; circle: dwell at the start point [s]"},
             {"trace.channel_mask", "", true, "bit i: keep trace channel i (0: all)"},
             {"step.velocity_rad_s", "", false, "step: motor velocity step [rad/s]"},
             {"step.position", "", false, "step: position step of the command [its units]"},
@@ -121,7 +203,8 @@ const std::vector<TestQuantity>& testQuantities()
             {"frf.amplitude_pct", "", false, "frf: excitation amplitude (multisine: its peak) [% of rated torque]"},
             {"frf.amplitude_peak", "", false, "frf: excitation peak in the injection point's units"},
             {"frf.settle_s", "", false, "frf: settle time per frequency [s] (0: from the loop dynamics)"},
-            {"frf.min_measure_s", "", false, "frf: minimum measured time per frequency [s] (0: from the loop dynamics)"},
+            {"frf.min_measure_s", "", false,
+             "frf: minimum measured time per frequency [s] (0: from the loop dynamics)"},
             {"multisine.periods", "", true, "frf multisine: averaged periods (0: from the loop dynamics)"},
             {"multisine.phases", "multisine_phases", true, "frf multisine: enum multisine_phases"},
             {"multisine.band_count", "", true, "frf multisine: bands in use"}};
@@ -139,7 +222,11 @@ const std::vector<TestQuantity>& testQuantities()
                  {"circle.center_x_m", "", false, "circle: centre, position of the first axis [m]"},
                  {"circle.center_y_m", "", false, "circle: centre, position of the second axis [m]"},
                  {"circle.data_start_deg", "", false, "circle: angle at which the 360 deg data arc begins [deg]"},
-                 {"circle.lead_arc_deg", "", false, "circle: lead-in and lead-out arc [deg]"}})
+                 {"circle.lead_arc_deg", "", false, "circle: lead-in and lead-out arc [deg]"},
+                 {"circle.positioning_m_per_s", "", false,
+                  "circle: speed of the move to the start point [m/s] (0: default)"},
+                 {"circle.positioning_m_per_s2", "", false,
+                  "circle: acceleration of the move to the start point [m/s^2] (0: default)"}})
             q.push_back(c);
         return q;
     }();
@@ -156,7 +243,8 @@ const TestQuantity* findTestQuantity(const std::string& name)
 Result<TestValues> testValuesOf(const TestRequest& r, const RegisterMap& map,
                                 const std::function<Result<int>(const std::string&)>& axisIndex)
 {
-    const TestRequest unset;
+    TestRequest unset = unsetLike(r);
+    TestRequest req = r; // the member tables hand out pointers into a request they may write
     TestValues v;
     std::vector<std::string> missing;
     auto put = [&](const std::string& q, double value, bool given) {
@@ -172,47 +260,56 @@ Result<TestValues> testValuesOf(const TestRequest& r, const RegisterMap& map,
             bad = makeError(ErrorCode::BadInput, "drive family " + map.family + " has no " + group + " '" + name + "'");
         put(q, code, given);
     };
-    putEnum("test.type", "test_type", testTypeName(r.type), true);
-    const int back = map.code("test_flag", "return_to_start");
-    if (r.returnToStart && back <= 0 && bad)
+    putEnum("test.type", "test_type", testTypeName(r.type()), true);
+    const bool back = r.is<JogTest>() && r.jog().returnToStart;
+    const int backBit = map.code("test_flag", "return_to_start");
+    if (back && backBit <= 0 && bad)
         bad = makeError(ErrorCode::BadInput, "drive family " + map.family + " has no test_flag 'return_to_start'");
-    put("test.flags", r.returnToStart ? std::max(back, 0) : 0, r.returnToStart);
+    put("test.flags", back ? std::max(backBit, 0) : 0, back);
     put("trace.channel_mask", 0, false);
-    for (const auto& [q, m] : realMembers())
-        put(q, r.*m, !(r.*m == unset.*m));
-    for (const auto& [q, m] : wholeMembers())
-        put(q, r.*m, r.*m != unset.*m);
-    putEnum("frf.method", "frf_method", frfMethodName(r.frfMethod), r.frfMethod != unset.frfMethod);
-    putEnum("frf.quantity", "frf_quantity", frfQuantityName(r.frfQuantity), r.frfQuantity != unset.frfQuantity);
-    putEnum("multisine.phases", "multisine_phases", dsp::multisinePhasesName(r.multisinePhases),
-            r.multisinePhases != unset.multisinePhases);
-    if (!r.multisineShape.empty())
-        missing.push_back("multisine.shape");
+    for (const auto& [q, m] : realMembers()) {
+        if (const double* value = m(req))
+            put(q, *value, !(*value == *m(unset)));
+    }
+    for (const auto& [q, m] : wholeMembers()) {
+        if (const int* value = m(req))
+            put(q, *value, *value != *m(unset));
+    }
     std::vector<dsp::MultisineBand> bands;
-    if (r.type == TestType::Frf && r.frfMethod == FrfMethod::Multisine)
-        bands = multisineBandsOf(r);
+    if (const auto* f = std::get_if<FrfTest>(&r.test)) {
+        const FrfTest plain;
+        putEnum("frf.method", "frf_method", frfMethodName(f->method), f->method != plain.method);
+        putEnum("frf.quantity", "frf_quantity", frfQuantityName(f->quantity), f->quantity != plain.quantity);
+        putEnum("multisine.phases", "multisine_phases", dsp::multisinePhasesName(f->multisinePhases),
+                f->multisinePhases != plain.multisinePhases);
+        if (!f->multisineShape.empty())
+            missing.push_back("multisine.shape");
+        if (f->method == FrfMethod::Multisine)
+            bands = multisineBandsOf(*f);
+    }
     const int slots = bandSlots(map);
     if (static_cast<int>(bands.size()) > slots && bad)
         bad = makeError(ErrorCode::OutOfRange, "drive family " + map.family + ": at most " + std::to_string(slots) +
                                                    " multisine bands over Modbus (got " +
                                                    std::to_string(bands.size()) + ")");
-    put("multisine.band_count", static_cast<double>(bands.size()), !bands.empty());
-    for (int b = 0; b < slots; ++b) {
-        const auto i = static_cast<std::size_t>(b);
-        const bool used = i < bands.size();
-        put(bandQuantity(b, 0), used ? bands[i].fminHz : 0.0, false);
-        put(bandQuantity(b, 1), used ? bands[i].fmaxHz : 0.0, false);
-        put(bandQuantity(b, 2), used ? bands[i].spacingHz : 0.0, false);
+    if (r.is<FrfTest>()) {
+        put("multisine.band_count", static_cast<double>(bands.size()), !bands.empty());
+        for (int b = 0; b < slots; ++b) {
+            const auto i = static_cast<std::size_t>(b);
+            const bool used = i < bands.size();
+            put(bandQuantity(b, 0), used ? bands[i].fminHz : 0.0, false);
+            put(bandQuantity(b, 1), used ? bands[i].fmaxHz : 0.0, false);
+            put(bandQuantity(b, 2), used ? bands[i].spacingHz : 0.0, false);
+        }
     }
-    double second = 0.0;
-    if (r.type == TestType::Circle) {
-        auto i = axisIndex(r.secondAxis);
+    if (const auto* c = std::get_if<CircleTest>(&r.test)) {
+        auto i = axisIndex(c->secondAxis);
         if (!i)
             return makeError(i.error().code, "circle test: second plane axis: " + i.error().detail);
-        second = *i;
+        put("circle.second_axis", *i, true);
+        putEnum("circle.direction", "circle_direction", directionName(c->direction),
+                c->direction != CircleTest{}.direction);
     }
-    put("circle.second_axis", second, r.type == TestType::Circle);
-    putEnum("circle.direction", "circle_direction", directionName(r.direction), r.direction != unset.direction);
     if (!bad)
         return bad.error();
     if (!missing.empty()) {
@@ -243,59 +340,33 @@ Result<TestRequest> testRequestOf(const TestValues& values, const RegisterMap& m
     auto type = enumOf(map, "test_type", at("test.type"), types, testTypeName);
     if (!type)
         return type.error();
-    r.type = *type;
-    if (has("test.flags"))
-        r.returnToStart = (static_cast<long long>(at("test.flags")) & std::max(0, map.code("test_flag", "return_to_start"))) != 0;
+    r.test = testKindOf(*type);
+    if (has("test.flags") && r.is<JogTest>())
+        r.jog().returnToStart =
+            (static_cast<long long>(at("test.flags")) & std::max(0, map.code("test_flag", "return_to_start"))) != 0;
     for (const auto& [q, m] : realMembers()) {
-        if (has(q))
-            r.*m = at(q);
+        if (double* value = m(r); value && has(q))
+            *value = at(q);
     }
     for (const auto& [q, m] : wholeMembers()) {
-        if (has(q))
-            r.*m = static_cast<int>(at(q));
+        if (int* value = m(r); value && has(q))
+            *value = static_cast<int>(at(q));
     }
-    if (has("frf.method")) {
-        static const FrfMethod methods[] = {FrfMethod::MultiSweep, FrfMethod::Conventional, FrfMethod::Prbs,
-                                           FrfMethod::Multisine};
-        auto m = enumOf(map, "frf_method", at("frf.method"), methods, frfMethodName);
-        if (!m)
-            return m.error();
-        r.frfMethod = *m;
-    }
-    if (has("frf.quantity")) {
-        static const FrfQuantity qs[] = {FrfQuantity::Default, FrfQuantity::Plant, FrfQuantity::OpenLoop};
-        auto q = enumOf(map, "frf_quantity", at("frf.quantity"), qs, frfQuantityName);
-        if (!q)
-            return q.error();
-        r.frfQuantity = *q;
-    }
-    if (has("multisine.phases")) {
-        static const dsp::MultisinePhases ps[] = {dsp::MultisinePhases::Clipping, dsp::MultisinePhases::Schroeder};
-        auto p = enumOf(map, "multisine_phases", at("multisine.phases"), ps, dsp::multisinePhasesName);
-        if (!p)
-            return p.error();
-        r.multisinePhases = *p;
-    }
-    if (r.type == TestType::Frf && r.frfMethod == FrfMethod::Multisine && has("multisine.band_count")) {
-        const int count = static_cast<int>(at("multisine.band_count"));
-        if (count > bandSlots(map))
-            return makeError(ErrorCode::OutOfRange, "multisine.band_count " + std::to_string(count) + " above the " +
-                                                        std::to_string(bandSlots(map)) + " bands of the map");
-        for (int b = 0; b < count; ++b)
-            r.multisineBands.push_back({at(bandQuantity(b, 0)), at(bandQuantity(b, 1)), at(bandQuantity(b, 2))});
-    }
-    if (has("circle.direction")) {
-        static const model::CircleDirection ds[] = {model::CircleDirection::Ccw, model::CircleDirection::Cw};
-        auto d = enumOf(map, "circle_direction", at("circle.direction"), ds, directionName);
-        if (!d)
-            return d.error();
-        r.direction = *d;
-    }
-    if (r.type == TestType::Circle) {
+    if (auto* f = std::get_if<FrfTest>(&r.test))
+        if (auto st = frfEnumsOf(values, map, *f); !st)
+            return st.error();
+    if (auto* c = std::get_if<CircleTest>(&r.test)) {
+        if (has("circle.direction")) {
+            static const model::CircleDirection ds[] = {model::CircleDirection::Ccw, model::CircleDirection::Cw};
+            auto d = enumOf(map, "circle_direction", at("circle.direction"), ds, directionName);
+            if (!d)
+                return d.error();
+            c->direction = *d;
+        }
         const double i = has("circle.second_axis") ? at("circle.second_axis") : -1.0;
         if (!(i >= 0.0 && i < static_cast<double>(axisNames.size())))
             return makeError(ErrorCode::BadInput, "circle.second_axis: no axis with index " + model::formatNumber(i, 6));
-        r.secondAxis = axisNames[static_cast<std::size_t>(i)];
+        c->secondAxis = axisNames[static_cast<std::size_t>(i)];
     }
     return r;
 }

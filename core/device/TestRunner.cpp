@@ -57,7 +57,7 @@ Result<TestRun> runTest(Drive& drive, const TestRequest& request, const RunOptio
 {
     if (aborted(options))
         return makeError(ErrorCode::Aborted, "aborted by the user before the test started; nothing was changed");
-    const bool frf = request.type == TestType::Frf;
+    const bool frf = request.type() == TestType::Frf;
     std::optional<model::ParameterValues> planValues;
     if (frf) {
         // Read before the start: the values the drive plans from. A drive that cannot tell them still runs

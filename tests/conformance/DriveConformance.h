@@ -53,9 +53,9 @@ std::string recordedCapture()
             return std::string();
         TestRequest r;
         r.axis = "X";
-        r.type = TestType::Step;
-        r.stepVelocityRadS = 10.0;
-        r.durationS = 0.2;
+        auto& step = r.test.emplace<StepTest>();
+        step.velocityRadS = 10.0;
+        step.recordS = 0.2;
         if (!(*d)->startTest(r))
             return std::string();
         for (auto s = (*d)->pollTest(); s && s->state == TestState::Running; s = (*d)->pollTest()) {
@@ -174,43 +174,53 @@ protected:
     {
         TestRequest r;
         r.axis = m_axis;
-        r.type = t;
+        r.test = testKindOf(t);
         switch (t) {
-        case TestType::Step:
+        case TestType::Step: {
+            auto& s = r.step();
             // A position step in the command's units (hal:: mm on the test machine, like the jog's distance), else a
             // motor velocity step.
             if (m_caps.stepIsPositionStep)
-                r.stepPosition = 0.002;
+                s.position = 0.002;
             else
-                r.stepVelocityRadS = std::min(10.0, 0.1 * m_limits.motorSpeedMaxRadS);
-            r.durationS = 0.2;
+                s.velocityRadS = std::min(10.0, 0.1 * m_limits.motorSpeedMaxRadS);
+            s.recordS = 0.2;
             break;
-        case TestType::Jog:
-            r.distance = 0.002;
-            r.velocity = 0.01;
-            r.acceleration = 0.5;
-            r.durationS = 0.05;
-            r.returnToStart = true;
+        }
+        case TestType::Jog: {
+            auto& j = r.jog();
+            j.distance = 0.002;
+            j.velocity = 0.01;
+            j.acceleration = 0.5;
+            j.dwellS = 0.05;
+            j.returnToStart = true;
             break;
+        }
         case TestType::Hold:
-            r.durationS = 0.2;
+            r.hold().recordS = 0.2;
             break;
-        case TestType::CurrentStep:
-            r.currentA = 0.5 * m_limits.currentStepMaxA;
-            r.durationS = std::min(0.02, m_limits.currentStepMaxS);
+        case TestType::CurrentStep: {
+            auto& c = r.currentStep();
+            c.currentA = 0.5 * m_limits.currentStepMaxA;
+            c.recordS = std::min(0.02, m_limits.currentStepMaxS);
             break;
-        case TestType::Frf:
-            r.frfMethod = method;
-            r.fminHz = 50.0;
-            r.fmaxHz = 400.0;
-            r.points = 6;
-            r.amplitudePct = std::min(5.0, 0.5 * m_limits.frfAmplitudeMaxPct);
+        }
+        case TestType::Frf: {
+            auto& f = r.frf();
+            f.method = method;
+            f.fminHz = 50.0;
+            f.fmaxHz = 400.0;
+            f.points = 6;
+            f.amplitudePct = std::min(5.0, 0.5 * m_limits.frfAmplitudeMaxPct);
             break;
-        case TestType::Circle:
-            r.radiusM = 0.002;
-            r.feedMPerS = 0.02;
-            r.durationS = 0.05;
+        }
+        case TestType::Circle: {
+            auto& c = r.circle();
+            c.radiusM = 0.002;
+            c.feedMPerS = 0.02;
+            c.dwellS = 0.05;
             break;
+        }
         }
         if (t == TestType::Step && GetParam() == "replay")
             return r; // the recorded test: whatever was asked
@@ -220,7 +230,7 @@ protected:
                 for (const auto& second : m_identity.axes) {
                     if (second == m_axis)
                         continue;
-                    r.secondAxis = second;
+                    r.circle().secondAxis = second;
                     if (m_drive->planTest(r))
                         return r;
                 }
@@ -228,8 +238,12 @@ protected:
             }
             if (m_drive->planTest(r))
                 return r;
-            for (double* a : {&r.stepVelocityRadS, &r.stepPosition, &r.currentA})
-                *a *= 0.5;
+            if (auto* s = std::get_if<StepTest>(&r.test)) {
+                s->velocityRadS *= 0.5;
+                s->position *= 0.5;
+            } else if (auto* c = std::get_if<CurrentStepTest>(&r.test)) {
+                c->currentA *= 0.5;
+            }
         }
         return std::nullopt;
     }
@@ -303,7 +317,7 @@ TEST_P(DriveConformance, CapabilitiesAndLimitsAreStated)
             continue;
         TestRequest r;
         r.axis = m_axis;
-        r.type = t;
+        r.test = testKindOf(t);
         auto st = m_drive->startTest(r);
         ASSERT_FALSE(st.ok()) << testTypeName(t);
         EXPECT_NE(st.error().detail.find(testTypeName(t)), std::string::npos) << st.error().detail;
@@ -476,7 +490,7 @@ TEST_P(DriveConformance, EveryAdvertisedTestRunsToCompletionAsPlanned)
     }
 }
 
-// A step's quantity is the drive's own (TestRequest::stepVelocityRadS or ::stepPosition, as
+// A step's quantity is the drive's own (StepTest::velocityRadS or ::position, as
 // DriveCapabilities::stepIsPositionStep says): a step given in the other one is refused before anything moves, so
 // that millimetres are never taken for rad/s. A replay plays what it recorded whatever is asked.
 TEST_P(DriveConformance, AStepInTheOtherQuantityIsRefused)
@@ -485,7 +499,7 @@ TEST_P(DriveConformance, AStepInTheOtherQuantityIsRefused)
                  "a step test of its own"))
         return;
     auto r = requestFor(TestType::Step).value();
-    std::swap(r.stepVelocityRadS, r.stepPosition);
+    std::swap(r.step().velocityRadS, r.step().position);
     auto plan = m_drive->planTest(r);
     ASSERT_FALSE(plan.ok());
     EXPECT_EQ(plan.error().code, ErrorCode::BadInput) << errorText(plan.error());
@@ -505,11 +519,11 @@ TEST_P(DriveConformance, AbortMidTestRestoresTheParameters)
     const FrfMethod method = m_caps.frfMethods.empty() ? FrfMethod::MultiSweep : m_caps.frfMethods.front();
     TestRequest r = requestFor(t, method).value();
     if (t == TestType::Hold) {
-        r.durationS = 20.0; // long enough to be running when the abort comes
+        r.hold().recordS = 20.0; // long enough to be running when the abort comes
         r.traceDivider = 2; // a parameter the test changes (trace.divider) and the abort must restore
     }
     if (t == TestType::Frf && method == FrfMethod::Multisine)
-        r.multisinePeriods = 40; // seconds, not a fraction of one
+        r.frf().multisinePeriods = 40; // seconds, not a fraction of one
     ASSERT_TRUE(m_drive->startTest(r).ok());
     auto s = m_drive->pollTest();
     ASSERT_TRUE(s.ok()) << errorText(s.error());
@@ -534,7 +548,7 @@ TEST_P(DriveConformance, LostConnectionIsReportedWithinTheTimeout)
         auto d = connect({"sim:vmc?fault=drop-after:5", kSeed});
         ASSERT_TRUE(d.ok()) << errorText(d.error());
         auto r = requestFor(TestType::Hold).value();
-        r.durationS = 20.0;
+        r.hold().recordS = 20.0;
         ASSERT_TRUE((*d)->startTest(r).ok()); // call 1
         for (int call = 2; call <= 4; ++call)
             ASSERT_TRUE((*d)->pollTest().ok()) << call;
@@ -563,7 +577,7 @@ TEST_P(DriveConformance, LostConnectionIsReportedWithinTheTimeout)
         // by pollTest as a Device error within the stall limit (3 s, HalAxis.cpp runExcitation) plus the halcmd
         // calls that find HAL gone; 2 s are allowed for them on a loaded machine.
         auto r = requestFor(TestType::Frf, FrfMethod::Multisine).value();
-        r.multisinePeriods = 100;
+        r.frf().multisinePeriods = 100;
         ASSERT_TRUE(m_drive->startTest(r).ok());
         // Mid-test: once the excitation streams (progress above 0).
         for (auto p = m_drive->pollTest(); p.ok() && p->progress == 0.0; p = m_drive->pollTest())
@@ -590,7 +604,7 @@ TEST_P(DriveConformance, LostConnectionIsReportedWithinTheTimeout)
     auto d = connect({server.uri("timeout_ms=" + std::to_string(timeoutMs)), kSeed});
     ASSERT_TRUE(d.ok()) << errorText(d.error());
     auto r = requestFor(TestType::Hold).value();
-    r.durationS = 20.0;
+    r.hold().recordS = 20.0;
     ASSERT_TRUE((*d)->startTest(r).ok());
     ASSERT_TRUE((*d)->pollTest().ok());
     server.stop(SIGKILL);
@@ -679,7 +693,7 @@ TEST_P(DriveConformance, ScopeTriggersAtThePreTriggerRowOnAStep)
     r.axis = m_axis;
     r.channels = {"velocity_cmd_rad_s"};
     r.triggerChannel = "velocity_cmd_rad_s";
-    r.triggerLevel = 0.5 * step.stepVelocityRadS;
+    r.triggerLevel = 0.5 * step.step().velocityRadS;
     r.edge = ScopeEdge::Rising;
     r.preTriggerPct = 30.0;
     r.lengthSamples = 200;
@@ -695,7 +709,7 @@ TEST_P(DriveConformance, ScopeTriggersAtThePreTriggerRowOnAStep)
     EXPECT_EQ(cap->missingSamples(), 0u);
     EXPECT_LT(cap->columns[0][59], r.triggerLevel);
     EXPECT_GE(cap->columns[0][60], r.triggerLevel);
-    EXPECT_EQ(cap->columns[0][60], step.stepVelocityRadS); // the step itself, not a ramp through the level
+    EXPECT_EQ(cap->columns[0][60], step.step().velocityRadS); // the step itself, not a ramp through the level
 }
 
 TEST_P(DriveConformance, ScopeRollModeDeliversEverySampleOnce)

@@ -36,12 +36,12 @@ TEST(DriveConformanceCross, SameFrfFromSimAndModbus)
         SCOPED_TRACE(frfMethodName(method));
         TestRequest r;
         r.axis = "X";
-        r.type = TestType::Frf;
-        r.frfMethod = method;
-        r.fminHz = 50.0;
-        r.fmaxHz = 400.0;
-        r.points = 6;
-        r.amplitudePct = 5.0;
+        auto& frf = r.test.emplace<FrfTest>();
+        frf.method = method;
+        frf.fminHz = 50.0;
+        frf.fmaxHz = 400.0;
+        frf.points = 6;
+        frf.amplitudePct = 5.0;
         std::vector<FrfMeasurement> m;
         for (Drive* d : {remote->get(), local->get()}) {
             ASSERT_TRUE(d->startTest(r).ok());

@@ -13,14 +13,14 @@ inline device::TestRequest longFrf(const std::string& axis)
 {
     device::TestRequest t;
     t.axis = axis;
-    t.type = device::TestType::Frf;
-    t.frfMethod = device::FrfMethod::MultiSweep;
-    t.fminHz = 2.0;
-    t.fmaxHz = 1000.0;
-    t.points = 300;
-    t.amplitudePct = 3.0;
-    t.settleS = 0.5;
-    t.minMeasureS = 1.0;
+    auto& f = t.test.emplace<device::FrfTest>();
+    f.method = device::FrfMethod::MultiSweep;
+    f.fminHz = 2.0;
+    f.fmaxHz = 1000.0;
+    f.points = 300;
+    f.amplitudePct = 3.0;
+    f.settleS = 0.5;
+    f.minMeasureS = 1.0;
     return t;
 }
 

@@ -91,9 +91,9 @@ private slots:
         QVERIFY(rc.wait(c.connectTo("sim:vmc")).ok);
         axistune::device::TestRequest t;
         t.axis = "X";
-        t.type = axistune::device::TestType::Step;
-        t.stepVelocityRadS = 10.0;  // rad/s
-        t.durationS = 0.1;
+        auto& step = t.test.emplace<axistune::device::StepTest>();
+        step.velocityRadS = 10.0; // rad/s
+        step.recordS = 0.1;
         const DriveReply r = rc.wait(c.runTest(t));
         QVERIFY2(r.ok, qPrintable(r.error));
         QCOMPARE(r.testState, axistune::device::TestState::Completed);

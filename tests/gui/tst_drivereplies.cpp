@@ -61,9 +61,9 @@ axistune::device::TestRequest stepTest()
 {
     axistune::device::TestRequest t;
     t.axis = "X";
-    t.type = axistune::device::TestType::Step;
-    t.stepVelocityRadS = 5.0; // rad/s
-    t.durationS = 0.05;
+    auto& step = t.test.emplace<axistune::device::StepTest>();
+    step.velocityRadS = 5.0; // rad/s
+    step.recordS = 0.05;
     return t;
 }
 

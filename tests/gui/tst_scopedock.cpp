@@ -231,13 +231,13 @@ private slots:
         s->runNormal();
         QVERIFY(s->running());
         axistune::device::TestRequest t;
-        t.type = axistune::device::TestType::Circle;
         t.axis = "X";
-        t.secondAxis = "Y";
-        t.radiusM = 0.01;
-        t.feedMPerS = 0.05;
-        t.centerYM = 0.1;
-        t.durationS = 0.1;
+        auto& circle = t.test.emplace<axistune::device::CircleTest>();
+        circle.secondAxis = "Y";
+        circle.radiusM = 0.01;
+        circle.feedMPerS = 0.05;
+        circle.centerYM = 0.1;
+        circle.dwellS = 0.1;
         bool done = false, ok = false;
         QObject::connect(w.context().drive().runTest(t), &axistune::gui::DriveRequest::finished,
                          [&](const axistune::gui::DriveReply& reply) {

@@ -53,13 +53,13 @@ TestRequest frfRequest(FrfMethod method)
 {
     TestRequest r;
     r.axis = "pid.x";
-    r.type = TestType::Frf;
-    r.frfMethod = method;
-    r.fminHz = 2.0;
-    r.fmaxHz = 450.0;
-    r.points = 40;
-    r.amplitudePeak = 0.2; // N·m, a tenth of maxoutput
-    r.frfQuantity = FrfQuantity::Plant;
+    auto& f = r.test.emplace<FrfTest>();
+    f.method = method;
+    f.fminHz = 2.0;
+    f.fmaxHz = 450.0;
+    f.points = 40;
+    f.amplitudePeak = 0.2; // N·m, a tenth of maxoutput
+    f.quantity = FrfQuantity::Plant;
     return r;
 }
 
@@ -94,7 +94,7 @@ TEST_F(HalTestbed, MultiSweepPlantFrfEqualsTheExactDiscreteResponse)
     for (const auto quantity : {FrfQuantity::Plant, FrfQuantity::OpenLoop}) {
         SCOPED_TRACE(quantity == FrfQuantity::Plant ? "plant" : "open loop");
         TestRequest r = frfRequest(FrfMethod::MultiSweep);
-        r.frfQuantity = quantity;
+        r.frf().quantity = quantity;
         auto plan = drive->planTest(r);
         ASSERT_TRUE(plan) << plan.error().detail;
         ASSERT_TRUE(drive->startTest(r)) << "start";
@@ -203,9 +203,9 @@ TEST_F(HalTestbed, PositionStepEqualsTheSimulatedPidAndPlant)
     ASSERT_TRUE(drive);
     TestRequest r;
     r.axis = "pid.x";
-    r.type = TestType::Step;
-    r.stepPosition = 0.01; // mm: P·e 0.02 N·m, D·e/T 0.47 N·m, below maxoutput 2 N·m
-    r.durationS = 0.5;
+    auto& stepTest = r.test.emplace<StepTest>();
+    stepTest.position = 0.01; // mm: P·e 0.02 N·m, D·e/T 0.47 N·m, below maxoutput 2 N·m
+    stepTest.recordS = 0.5;
     auto plan = drive->planTest(r);
     ASSERT_TRUE(plan) << plan.error().detail;
     EXPECT_EQ(plan->recordSamples, 50u + 2u * 500u);
@@ -253,14 +253,14 @@ TEST_F(HalTestbed, PositionStepEqualsTheSimulatedPidAndPlant)
         worstY = std::max(worstY, std::abs(y->data[k] - s.C * x));
     }
     EXPECT_LT(peakU, maxOut); // the linear range: the limit never acted
-    EXPECT_LE(worstY, 1e-9 * r.stepPosition);
-    EXPECT_LE(worstE, 1e-9 * r.stepPosition);
-    EXPECT_LE(worstU, 1e-9 * r.stepPosition * D / T);
+    EXPECT_LE(worstY, 1e-9 * stepTest.position);
+    EXPECT_LE(worstE, 1e-9 * stepTest.position);
+    EXPECT_LE(worstU, 1e-9 * stepTest.position * D / T);
     RecordProperty("worst_feedback_difference", model::formatShortest(worstY));
     // The step response itself: the feedback has moved most of the way by the end of the hold and is back near zero
     // at the end.
-    EXPECT_GT(y->data[549], 0.5 * r.stepPosition);
-    EXPECT_LT(std::abs(y->data[n - 1]), 0.5 * r.stepPosition);
+    EXPECT_GT(y->data[549], 0.5 * stepTest.position);
+    EXPECT_LT(std::abs(y->data[n - 1]), 0.5 * stepTest.position);
 }
 
 // Refusals before anything is inserted, each with its reason, in planTest and startTest alike; the HAL's nets and
@@ -278,33 +278,33 @@ TEST_F(HalTestbed, RefusedMethodsAndStepsChangeNothing)
     };
     std::vector<Case> cases;
     TestRequest top = frfRequest(FrfMethod::MultiSweep);
-    top.fmaxHz = 500.0; // half the servo rate
+    top.frf().fmaxHz = 500.0; // half the servo rate
     cases.push_back({top, "below half the servo rate"});
     TestRequest prbsTop = frfRequest(FrfMethod::Prbs);
-    prbsTop.fmaxHz = 500.0;
+    prbsTop.frf().fmaxHz = 500.0;
     cases.push_back({prbsTop, "below half the servo rate"});
     TestRequest loud = frfRequest(FrfMethod::Prbs);
-    loud.amplitudePeak = 1.01; // maxoutput 2
+    loud.frf().amplitudePeak = 1.01; // maxoutput 2
     cases.push_back({loud, "at most half of pid.x.maxoutput"});
     TestRequest longSweep = frfRequest(FrfMethod::MultiSweep);
-    longSweep.settleS = 10.0;
-    longSweep.points = 100;
+    longSweep.frf().settleS = 10.0;
+    longSweep.frf().points = 100;
     cases.push_back({longSweep, "at most 600 s"});
     TestRequest conventional = frfRequest(FrfMethod::Conventional);
     cases.push_back({conventional, "multisine, multi-sweep or PRBS"});
     TestRequest step;
     step.axis = "pid.x";
-    step.type = TestType::Step;
-    step.stepPosition = 2.6; // FERROR 5 mm
-    step.durationS = 0.2;
+    auto& stepTest = step.test.emplace<StepTest>();
+    stepTest.position = 2.6; // FERROR 5 mm
+    stepTest.recordS = 0.2;
     cases.push_back({step, "at most half of the following-error limit"});
     TestRequest velocityStep = step; // a caller that means a motor velocity step in rad/s (the simulator's step)
-    velocityStep.stepPosition = 0.0;
-    velocityStep.stepVelocityRadS = 1.0;
+    velocityStep.step().position = 0.0;
+    velocityStep.step().velocityRadS = 1.0;
     cases.push_back({velocityStep, "a velocity step request is refused"});
     TestRequest noDuration = step;
-    noDuration.stepPosition = 0.01;
-    noDuration.durationS = 0.0;
+    noDuration.step().position = 0.01;
+    noDuration.step().recordS = 0.0;
     cases.push_back({noDuration, "duration must be positive"});
     for (const auto& c : cases) {
         auto p = drive->planTest(c.request);
@@ -316,7 +316,7 @@ TEST_F(HalTestbed, RefusedMethodsAndStepsChangeNothing)
     }
     // Without a following-error limit a step is a safety refusal.
     halText({"setp", "pid.x.maxerror", "0"});
-    step.stepPosition = 0.01;
+    stepTest.position = 0.01;
     auto unbounded = drive->planTest(step);
     ASSERT_FALSE(unbounded);
     EXPECT_EQ(unbounded.error().code, ErrorCode::Safety);

@@ -224,12 +224,12 @@ TEST_F(HalTestbed, ScopeRunsWhileATestRuns)
 
     device::TestRequest t;
     t.axis = "pid.x";
-    t.type = device::TestType::Frf;
-    t.frfMethod = device::FrfMethod::Multisine;
-    t.fminHz = 5.0;
-    t.fmaxHz = 200.0;
-    t.amplitudePeak = 0.2;
-    t.multisinePeriods = 2;
+    auto& f = t.test.emplace<device::FrfTest>();
+    f.method = device::FrfMethod::Multisine;
+    f.fminHz = 5.0;
+    f.fmaxHz = 200.0;
+    f.amplitudePeak = 0.2;
+    f.multisinePeriods = 2;
     {
         auto st = (*d)->startTest(t);
         ASSERT_TRUE(st) << st.error().detail;

@@ -98,51 +98,52 @@ std::vector<model::ParameterMeta> pidParameterMetadata()
 
 Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
 {
-    if (r.type != TestType::Frf)
+    if (r.type() != TestType::Frf)
         return makeError(ErrorCode::BadInput,
-                         std::string("hal: runs FRF, jog and step tests only (not ") + testTypeName(r.type) + ")");
-    if (r.frfMethod != FrfMethod::Multisine && r.frfMethod != FrfMethod::MultiSweep && r.frfMethod != FrfMethod::Prbs)
+                         std::string("hal: runs FRF, jog and step tests only (not ") + testTypeName(r.type()) + ")");
+    const auto& f = r.frf();
+    if (f.method != FrfMethod::Multisine && f.method != FrfMethod::MultiSweep && f.method != FrfMethod::Prbs)
         return makeError(ErrorCode::BadInput,
                          std::string("hal: measures FRFs by multisine, multi-sweep or PRBS (not ") +
-                             frfMethodName(r.frfMethod) + ")");
+                             frfMethodName(f.method) + ")");
     if (!(axis.periodNs > 0))
         return makeError(ErrorCode::BadInput, axis.thread + " has no period");
     HalFrfPlan plan;
     plan.axis = axis;
-    plan.method = r.frfMethod;
-    plan.quantity = r.frfQuantity == FrfQuantity::OpenLoop ? FrfQuantity::OpenLoop : FrfQuantity::Plant;
+    plan.method = f.method;
+    plan.quantity = f.quantity == FrfQuantity::OpenLoop ? FrfQuantity::OpenLoop : FrfQuantity::Plant;
     plan.fsHz = 1e9 / static_cast<double>(axis.periodNs);
     if (!(axis.maxOutput > 0.0))
         return makeError(ErrorCode::Safety, axis.pid + ".maxoutput is 0 (no output limit): AxisTune bounds its "
                                                        "excitation by half of it; set maxoutput first");
     double peak = 0.0;
-    if (r.amplitudePeak != 0.0) {
-        if (!std::isfinite(r.amplitudePeak) || !(r.amplitudePeak > 0.0))
+    if (f.amplitudePeak != 0.0) {
+        if (!std::isfinite(f.amplitudePeak) || !(f.amplitudePeak > 0.0))
             return makeError(ErrorCode::OutOfRange, "FRF peak must be a positive number in the PID output's units");
-        peak = r.amplitudePeak;
+        peak = f.amplitudePeak;
     } else {
-        if (!std::isfinite(r.amplitudePct) || !(r.amplitudePct > 0.0))
+        if (!std::isfinite(f.amplitudePct) || !(f.amplitudePct > 0.0))
             return makeError(ErrorCode::OutOfRange, "FRF amplitude must be a positive % of " + axis.pid + ".maxoutput");
-        peak = r.amplitudePct / 100.0 * axis.maxOutput;
+        peak = f.amplitudePct / 100.0 * axis.maxOutput;
     }
     if (peak > HalDrive::kMaxAmplitudePct / 100.0 * axis.maxOutput)
         return makeError(ErrorCode::OutOfRange, "FRF peak " + num(peak) + " refused: at most half of " + axis.pid +
                                                     ".maxoutput (" + num(0.5 * axis.maxOutput) + ")");
-    if (r.frfMethod != FrfMethod::Multisine)
+    if (f.method != FrfMethod::Multisine)
         return planHalStreams(r, std::move(plan), peak);
     dsp::MultisineDesignOptions mo;
     mo.fsHz = plan.fsHz;
     mo.ticksPerSample = 1;
     mo.peak = peak;
-    mo.phases = r.multisinePhases;
-    mo.shape = r.multisineShape;
-    if (!r.multisineBands.empty()) {
-        mo.bands = r.multisineBands;
+    mo.phases = f.multisinePhases;
+    mo.shape = f.multisineShape;
+    if (!f.multisineBands.empty()) {
+        mo.bands = f.multisineBands;
     } else {
-        if (!(r.fminHz > 0.0) || !std::isfinite(r.fminHz) || !(r.fmaxHz > r.fminHz) || !std::isfinite(r.fmaxHz))
+        if (!(f.fminHz > 0.0) || !std::isfinite(f.fminHz) || !(f.fmaxHz > f.fminHz) || !std::isfinite(f.fmaxHz))
             return makeError(ErrorCode::OutOfRange, "FRF band: fmin must be positive and below fmax");
-        const double spacing = r.multisineSpacingHz > 0.0 ? r.multisineSpacingHz : r.fminHz / 2.0;
-        mo.bands = {{r.fminHz, r.fmaxHz, spacing}};
+        const double spacing = f.multisineSpacingHz > 0.0 ? f.multisineSpacingHz : f.fminHz / 2.0;
+        mo.bands = {{f.fminHz, f.fmaxHz, spacing}};
     }
     // The excitation is generated at the servo rate and the plant input is seen only there: a line above half the
     // rate would fold onto another.
@@ -156,12 +157,12 @@ Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
         return design.error();
     plan.design = std::move(*design);
     const double periodS = static_cast<double>(plan.design.periodSamples()) / plan.fsHz;
-    if (r.multisinePeriods < 0 || r.multisinePeriods > 1000)
+    if (f.multisinePeriods < 0 || f.multisinePeriods > 1000)
         return makeError(ErrorCode::OutOfRange, "multisine periods must lie in 1..1000");
-    plan.periods = r.multisinePeriods > 0 ? static_cast<std::size_t>(r.multisinePeriods) : 3;
-    if (!(r.settleS >= 0.0) || !std::isfinite(r.settleS))
+    plan.periods = f.multisinePeriods > 0 ? static_cast<std::size_t>(f.multisinePeriods) : 3;
+    if (!(f.settleS >= 0.0) || !std::isfinite(f.settleS))
         return makeError(ErrorCode::OutOfRange, "FRF settle time must not be negative");
-    plan.settlePeriods = r.settleS > 0.0 ? static_cast<std::size_t>(std::ceil(r.settleS / periodS)) : 1;
+    plan.settlePeriods = f.settleS > 0.0 ? static_cast<std::size_t>(std::ceil(f.settleS / periodS)) : 1;
     const double motion = static_cast<double>(plan.totalSamples()) / plan.fsHz;
     if (motion > HalDrive::kMaxTestS)
         return makeError(ErrorCode::OutOfRange, "FRF test of " + num(motion) + " s refused: at most " +
@@ -457,7 +458,7 @@ Result<HalMovePlan> HalDrive::movePlan(const TestRequest& request) const
     auto a = discoverAxis(m_options, request.axis);
     if (!a)
         return a.error();
-    if (request.type == TestType::Step)
+    if (request.type() == TestType::Step)
         return planHalStep(request, *a, followingErrorTrip(*a));
     return planHalMove(request, *a);
 }
@@ -473,7 +474,7 @@ double HalDrive::followingErrorTrip(const HalAxis& axis) const
 
 Result<TestPlan> HalDrive::planTest(const TestRequest& request)
 {
-    if (request.type == TestType::Jog || request.type == TestType::Step) {
+    if (request.type() == TestType::Jog || request.type() == TestType::Step) {
         auto move = movePlan(request);
         if (!move)
             return move.error();
@@ -500,7 +501,7 @@ Status HalDrive::startTest(const TestRequest& request)
 
 Status HalDrive::startExternalJog(const TestRequest& request, double recordS, ExternalMove move)
 {
-    if (request.type != TestType::Jog || !move)
+    if (request.type() != TestType::Jog || !move)
         return makeError(ErrorCode::Internal, "startExternalJog: a jog and a mover");
     if (!(recordS > 0.0) || !(recordS <= kMaxTestS))
         return makeError(ErrorCode::OutOfRange, "a recorded move of " + num(recordS) + " s: at most " +
@@ -520,7 +521,7 @@ Status HalDrive::start(const TestRequest& request, ExternalMove external, double
     // The scope may run on: the test records through sampler.0, the scope through sampler.1 (HalSampler.h).
     std::optional<HalFrfPlan> frf;
     std::optional<HalMovePlan> move;
-    if (request.type == TestType::Jog || request.type == TestType::Step) {
+    if (request.type() == TestType::Jog || request.type() == TestType::Step) {
         auto m = movePlan(request);
         if (!m)
             return m.error();

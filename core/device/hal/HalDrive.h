@@ -78,9 +78,9 @@ inline constexpr double kHalStreamSettleS = 0.2;  ///< default settle per freque
 inline constexpr double kHalStreamMeasureS = 0.2; ///< default measured time per frequency (three windows) [s]
 
 /// A move of a `hal:` axis, added to the command the pid follows as an offset (HalAxis.h, InjectionPoint::PidCommand),
-/// in the pid command's units. TestType::Jog with returnToStart: out by `distance` and back (dwell, move, move back,
-/// dwell), MotionProfile's trapezoid or S-curve. TestType::Step: a position step of `distance` (TestRequest::amplitude)
-/// held for the request's duration, then a step back to zero held as long (docs/linuxcnc.md "Step").
+/// in the pid command's units. TestType::Jog with JogTest::returnToStart: out by `distance` and back (dwell, move, move
+/// back, dwell), MotionProfile's trapezoid or S-curve. TestType::Step: a position step of `distance`
+/// (StepTest::position) held for StepTest::recordS, then a step back to zero held as long (docs/linuxcnc.md "Step").
 struct HalMovePlan {
     HalAxis axis;
     TestType type = TestType::Jog;
@@ -98,10 +98,11 @@ struct HalMovePlan {
 /// HalDrive::kMaxTestS, the pid's command linked) and plans it.
 Result<HalMovePlan> planHalMove(const TestRequest& request, const HalAxis& axis);
 
-/// Checks a step request against the axis and plans it: the step (TestRequest::amplitude, command units) at most half
+/// Checks a step request against the axis and plans it: the step (StepTest::position, command units) at most half
 /// of `followingErrorTrip` (the smaller of the pid's maxerror and the joint's FERROR: right after the step the
-/// following error equals it; no limit: refused), a positive duration, at most HalDrive::kMaxTestS, the pid's command
-/// linked. The step comes after a tenth of the duration (at least one period) at rest.
+/// following error equals it; no limit: refused), a positive record length (StepTest::recordS), at most
+/// HalDrive::kMaxTestS, the pid's command linked. The step comes after a tenth of the record length (at least one
+/// period) at rest.
 Result<HalMovePlan> planHalStep(const TestRequest& request, const HalAxis& axis, double followingErrorTrip);
 inline constexpr double kHalStepReturnS = 0.1; ///< a tripped or aborted step ramps back to zero in this time [s]
 

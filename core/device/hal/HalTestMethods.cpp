@@ -48,34 +48,37 @@ std::vector<double> HalFrfPlan::excitation() const
 
 Result<HalFrfPlan> planHalStreams(const TestRequest& r, HalFrfPlan plan, double peak)
 {
-    if (r.frfMethod != FrfMethod::MultiSweep && r.frfMethod != FrfMethod::Prbs)
+    if (!r.is<FrfTest>())
         return makeError(ErrorCode::Internal, "planHalStreams: multi-sweep or PRBS only");
-    if (!r.multisineBands.empty() || r.multisineSpacingHz != 0.0 || r.multisinePeriods != 0 ||
-        !r.multisineShape.empty())
-        return makeError(ErrorCode::BadInput, std::string("FRF by ") + frfMethodName(r.frfMethod) +
+    const auto& f = r.frf();
+    if (f.method != FrfMethod::MultiSweep && f.method != FrfMethod::Prbs)
+        return makeError(ErrorCode::Internal, "planHalStreams: multi-sweep or PRBS only");
+    if (!f.multisineBands.empty() || f.multisineSpacingHz != 0.0 || f.multisinePeriods != 0 ||
+        !f.multisineShape.empty())
+        return makeError(ErrorCode::BadInput, std::string("FRF by ") + frfMethodName(f.method) +
                                                   ": bands, spacing, periods and shape are multisine options");
-    if (!(r.fminHz > 0.0) || !std::isfinite(r.fminHz) || !(r.fmaxHz >= r.fminHz) || !std::isfinite(r.fmaxHz))
+    if (!(f.fminHz > 0.0) || !std::isfinite(f.fminHz) || !(f.fmaxHz >= f.fminHz) || !std::isfinite(f.fmaxHz))
         return makeError(ErrorCode::OutOfRange, "FRF band: fmin must be positive and not above fmax");
     // The excitation is generated at the servo rate and the plant input is seen only there: a line at or above half
     // the rate would fold onto another (core's planner allows up to the rate for the simulator's faster injection).
-    if (!(r.fmaxHz < 0.5 * plan.fsHz))
-        return makeError(ErrorCode::OutOfRange, "FRF band up to " + num(r.fmaxHz) +
+    if (!(f.fmaxHz < 0.5 * plan.fsHz))
+        return makeError(ErrorCode::OutOfRange, "FRF band up to " + num(f.fmaxHz) +
                                                     " Hz refused: lines must lie below half the servo rate (" +
                                                     num(0.5 * plan.fsHz) + " Hz on " + plan.axis.thread + ")");
-    if (!(r.settleS >= 0.0) || !std::isfinite(r.settleS) || !(r.minMeasureS >= 0.0) || !std::isfinite(r.minMeasureS))
+    if (!(f.settleS >= 0.0) || !std::isfinite(f.settleS) || !(f.minMeasureS >= 0.0) || !std::isfinite(f.minMeasureS))
         return makeError(ErrorCode::OutOfRange, "FRF settle and measure times must not be negative");
     // hal: does not know the loop's dynamics: the request's times, else fixed defaults (plus, per frequency, eight
     // periods capped at 0.5 s, as the simulator's period rule).
     LoopTiming timing;
-    timing.settleS = r.settleS > 0.0 ? r.settleS : kHalStreamSettleS;
-    timing.settlePeriods = r.settleS > 0.0 ? 0.0 : 8.0;
-    timing.minMeasureS = r.minMeasureS > 0.0 ? r.minMeasureS : kHalStreamMeasureS;
+    timing.settleS = f.settleS > 0.0 ? f.settleS : kHalStreamSettleS;
+    timing.settlePeriods = f.settleS > 0.0 ? 0.0 : 8.0;
+    timing.minMeasureS = f.minMeasureS > 0.0 ? f.minMeasureS : kHalStreamMeasureS;
     FrfPlanOptions o;
-    o.method = r.frfMethod;
+    o.method = f.method;
     o.fsHz = plan.fsHz;
-    o.fminHz = r.fminHz;
-    o.fmaxHz = r.fmaxHz;
-    o.points = r.points;
+    o.fminHz = f.fminHz;
+    o.fmaxHz = f.fmaxHz;
+    o.points = f.points;
     o.amplitudeNm = peak; // the PID output's units here
     o.timing = timing;
     auto streams = planFrfTest(o);
@@ -122,36 +125,37 @@ Result<FrfMeasurement> evaluateHalStreams(const HalFrfPlan& plan, const HalRecor
 
 Result<HalMovePlan> planHalMove(const TestRequest& r, const HalAxis& axis)
 {
-    if (r.type != TestType::Jog)
+    if (r.type() != TestType::Jog)
         return makeError(ErrorCode::BadInput,
-                         std::string("hal: runs FRF, jog and step tests only (not ") + testTypeName(r.type) + ")");
-    if (!r.returnToStart)
+                         std::string("hal: runs FRF, jog and step tests only (not ") + testTypeName(r.type()) + ")");
+    const auto& j = r.jog();
+    if (!j.returnToStart)
         return makeError(ErrorCode::BadInput, "hal: moves out and back only (--back): AxisTune's offset to the "
                                               "command must end at zero before it hands the command back");
-    if (!std::isfinite(r.distance) || r.distance == 0.0)
+    if (!std::isfinite(j.distance) || j.distance == 0.0)
         return makeError(ErrorCode::OutOfRange, "jog distance must be a non-zero number in the command's units");
-    if (!std::isfinite(r.velocity) || !(r.velocity > 0.0))
+    if (!std::isfinite(j.velocity) || !(j.velocity > 0.0))
         return makeError(ErrorCode::OutOfRange, "jog velocity must be positive (command units/s)");
-    if (!std::isfinite(r.acceleration) || !(r.acceleration > 0.0))
+    if (!std::isfinite(j.acceleration) || !(j.acceleration > 0.0))
         return makeError(ErrorCode::OutOfRange, "jog acceleration must be positive (command units/s²)");
-    if (!std::isfinite(r.jerk) || r.jerk < 0.0)
+    if (!std::isfinite(j.jerk) || j.jerk < 0.0)
         return makeError(ErrorCode::OutOfRange, "jog jerk must not be negative (0: a trapezoid)");
-    if (!std::isfinite(r.durationS) || r.durationS < 0.0)
+    if (!std::isfinite(j.dwellS) || j.dwellS < 0.0)
         return makeError(ErrorCode::OutOfRange, "jog dwell must not be negative");
     if (auto st = checkCommandLinked(axis, "move"); !st)
         return st.error();
     sim::MotionProfile profile;
-    profile.dwell(r.durationS);
-    profile.move(r.distance, r.velocity, r.acceleration, r.jerk);
-    profile.move(-r.distance, r.velocity, r.acceleration, r.jerk);
-    profile.dwell(r.durationS);
+    profile.dwell(j.dwellS);
+    profile.move(j.distance, j.velocity, j.acceleration, j.jerk);
+    profile.move(-j.distance, j.velocity, j.acceleration, j.jerk);
+    profile.dwell(j.dwellS);
     HalMovePlan plan;
     plan.axis = axis;
     plan.type = TestType::Jog;
     plan.fsHz = 1e9 / static_cast<double>(axis.periodNs);
-    plan.distance = r.distance;
-    plan.velocity = r.velocity;
-    plan.returnRate = r.velocity;
+    plan.distance = j.distance;
+    plan.velocity = j.velocity;
+    plan.returnRate = j.velocity;
     if (profile.duration() > HalDrive::kMaxTestS)
         return makeError(ErrorCode::OutOfRange, "jog of " + num(profile.duration()) + " s refused: at most " +
                                                     num(HalDrive::kMaxTestS) + " s");
@@ -160,7 +164,7 @@ Result<HalMovePlan> planHalMove(const TestRequest& r, const HalAxis& axis)
     for (std::size_t i = 0; i < n; ++i) {
         const double x = profile.at(static_cast<double>(i) / plan.fsHz).position;
         // The profile's own rounding must not end the move a few ulps away from zero, nor exceed the distance.
-        plan.offset[i] = std::abs(x) < 1e-12 * std::abs(r.distance) ? 0.0 : x;
+        plan.offset[i] = std::abs(x) < 1e-12 * std::abs(j.distance) ? 0.0 : x;
     }
     plan.offset.back() = 0.0;
     return plan;
@@ -168,15 +172,16 @@ Result<HalMovePlan> planHalMove(const TestRequest& r, const HalAxis& axis)
 
 Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, double followingErrorTrip)
 {
-    if (r.type != TestType::Step)
+    if (r.type() != TestType::Step)
         return makeError(ErrorCode::Internal, "planHalStep: a step request only");
-    if (r.stepVelocityRadS != 0.0)
+    const auto& s = r.step();
+    if (s.velocityRadS != 0.0)
         return makeError(ErrorCode::BadInput, "hal: steps the pid's position command (in its units), not the motor "
                                               "velocity: a velocity step request is refused");
-    if (!std::isfinite(r.stepPosition) || r.stepPosition == 0.0)
+    if (!std::isfinite(s.position) || s.position == 0.0)
         return makeError(ErrorCode::OutOfRange,
                          "step must be a non-zero number: on hal: a position step of the command, in its units");
-    if (!std::isfinite(r.durationS) || !(r.durationS > 0.0))
+    if (!std::isfinite(s.recordS) || !(s.recordS > 0.0))
         return makeError(ErrorCode::OutOfRange, "step duration must be positive (how long the step is held) [s]");
     if (auto st = checkCommandLinked(axis, "step"); !st)
         return st.error();
@@ -185,9 +190,9 @@ Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, doubl
         return makeError(ErrorCode::Safety, "step refused: " + axis.pid +
                                                 ".maxerror is 0 and the joint has no FERROR: the following error of a "
                                                 "step equals the step, and nothing would bound it");
-    if (std::abs(r.stepPosition) > 0.5 * followingErrorTrip)
+    if (std::abs(s.position) > 0.5 * followingErrorTrip)
         return makeError(ErrorCode::OutOfRange,
-                         "step of " + num(r.stepPosition) +
+                         "step of " + num(s.position) +
                              " refused: at most half of the "
                              "following-error limit (" +
                              num(followingErrorTrip) + ", the smaller of " + axis.pid +
@@ -196,28 +201,28 @@ Result<HalMovePlan> planHalStep(const TestRequest& r, const HalAxis& axis, doubl
     plan.axis = axis;
     plan.type = TestType::Step;
     plan.fsHz = 1e9 / static_cast<double>(axis.periodNs);
-    plan.distance = r.stepPosition;
-    plan.returnRate = std::abs(r.stepPosition) / kHalStepReturnS;
-    const double total = 2.1 * r.durationS;
+    plan.distance = s.position;
+    plan.returnRate = std::abs(s.position) / kHalStepReturnS;
+    const double total = 2.1 * s.recordS;
     if (total > HalDrive::kMaxTestS)
         return makeError(ErrorCode::OutOfRange, "step of " + num(total) +
                                                     " s (a tenth of the duration at rest, the "
                                                     "step held, the step back held) refused: at "
                                                     "most " +
                                                     num(HalDrive::kMaxTestS) + " s");
-    const auto hold = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(r.durationS * plan.fsHz)));
-    const auto rest = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(0.1 * r.durationS * plan.fsHz)));
+    const auto hold = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(s.recordS * plan.fsHz)));
+    const auto rest = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(0.1 * s.recordS * plan.fsHz)));
     plan.stepAt = rest;
     plan.backAt = rest + hold;
     plan.offset.assign(rest + 2 * hold, 0.0);
     std::fill(plan.offset.begin() + static_cast<std::ptrdiff_t>(plan.stepAt),
-              plan.offset.begin() + static_cast<std::ptrdiff_t>(plan.backAt), r.stepPosition);
+              plan.offset.begin() + static_cast<std::ptrdiff_t>(plan.backAt), s.position);
     return plan;
 }
 
 Result<TestPlan> HalDrive::planExternalJog(const TestRequest& request, double recordS) const
 {
-    if (request.type != TestType::Jog)
+    if (request.type() != TestType::Jog)
         return makeError(ErrorCode::Internal, "planExternalJog: a jog");
     if (!(recordS > 0.0) || !(recordS <= kMaxTestS))
         return makeError(ErrorCode::OutOfRange, "a recorded move of " + num(recordS) + " s: at most " +

@@ -176,18 +176,19 @@ Status LinuxCncDrive::startTest(const TestRequest& request)
     if (*viaMotion) {
         const MotionJog jog = **viaMotion;
         LinuxCncMotion* motion = m_motion.get();
-        return m_hal->startExternalJog(jog.request, jog.recordS, [motion, jog](const std::atomic<bool>& stop) -> Status {
-            const TestRequest& q = jog.request;
-            const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(q.durationS);
-            while (std::chrono::steady_clock::now() < until) {
-                if (stop.load())
-                    return makeError(ErrorCode::Aborted, "aborted");
-                std::this_thread::sleep_for(std::chrono::milliseconds(5));
-            }
-            if (auto st = motion->jogIncrement(jog.joint, q.distance, q.velocity, stop, jog.moveTimeout); !st)
-                return st;
-            return motion->jogIncrement(jog.joint, -q.distance, q.velocity, stop, jog.moveTimeout);
-        });
+        return m_hal->startExternalJog(
+            jog.request, jog.recordS, [motion, jog](const std::atomic<bool>& stop) -> Status {
+                const JogTest& q = jog.request.jog();
+                const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(q.dwellS);
+                while (std::chrono::steady_clock::now() < until) {
+                    if (stop.load())
+                        return makeError(ErrorCode::Aborted, "aborted");
+                    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+                }
+                if (auto st = motion->jogIncrement(jog.joint, q.distance, q.velocity, stop, jog.moveTimeout); !st)
+                    return st;
+                return motion->jogIncrement(jog.joint, -q.distance, q.velocity, stop, jog.moveTimeout);
+            });
     }
     return m_hal->startTest(*r);
 }
@@ -207,7 +208,7 @@ Result<double> LinuxCncDrive::jointNumber(int joint, const char* key) const
 
 Result<std::optional<LinuxCncDrive::MotionJog>> LinuxCncDrive::motionJog(const TestRequest& r)
 {
-    if (r.type != TestType::Jog)
+    if (r.type() != TestType::Jog)
         return std::optional<MotionJog>{};
     const PidInstance* pid = m_config.findPid(r.axis);
     if (!pid || pid->joint < 0)
@@ -229,21 +230,22 @@ Result<std::optional<LinuxCncDrive::MotionJog>> LinuxCncDrive::motionJog(const T
     if (!acceleration)
         return acceleration.error();
     const std::string section = "[JOINT_" + std::to_string(joint) + "]";
-    if (r.velocity > *maxVelocity)
-        return makeError(ErrorCode::OutOfRange, "jog velocity " + model::formatShortest(r.velocity) +
+    const JogTest& j = r.jog();
+    if (j.velocity > *maxVelocity)
+        return makeError(ErrorCode::OutOfRange, "jog velocity " + model::formatShortest(j.velocity) +
                                                     " refused: LinuxCNC's motion limits joint " +
-                                                    std::to_string(joint) + " to " + section + "MAX_VELOCITY = " +
-                                                    model::formatShortest(*maxVelocity));
-    if (r.acceleration < *acceleration)
+                                                    std::to_string(joint) + " to " + section +
+                                                    "MAX_VELOCITY = " + model::formatShortest(*maxVelocity));
+    if (j.acceleration < *acceleration)
         return makeError(ErrorCode::OutOfRange,
-                         "jog acceleration " + model::formatShortest(r.acceleration) +
+                         "jog acceleration " + model::formatShortest(j.acceleration) +
                              " refused: LinuxCNC's motion jogs joint " + std::to_string(joint) + " with " + section +
                              "MAX_ACCELERATION = " + model::formatShortest(*acceleration) +
                              " and cannot jog more gently (ask for that acceleration or more; hal: moves with an "
                              "offset at any acceleration)");
-    if (r.jerk > 0.0)
+    if (j.jerk > 0.0)
         return makeError(ErrorCode::BadInput, "a jerk limit cannot be asked of LinuxCNC's jog (it jogs a trapezoid)");
-    if (!(r.durationS >= 0.0) || !std::isfinite(r.durationS))
+    if (!(j.dwellS >= 0.0) || !std::isfinite(j.dwellS))
         return makeError(ErrorCode::OutOfRange, "jog dwell must not be negative");
     // The request is checked first (the same answer whatever state the machine is in), then the machine.
     auto on = m_motion->machineOn();
@@ -252,14 +254,15 @@ Result<std::optional<LinuxCncDrive::MotionJog>> LinuxCncDrive::motionJog(const T
     if (!*on)
         return makeError(ErrorCode::Safety, "LinuxCNC's machine is not on (E-stop or off): no jog");
     sim::MotionProfile profile;
-    profile.dwell(r.durationS);
-    profile.move(r.distance, r.velocity, *acceleration);
-    profile.move(-r.distance, r.velocity, *acceleration);
-    profile.dwell(r.durationS);
+    profile.dwell(j.dwellS);
+    profile.move(j.distance, j.velocity, *acceleration);
+    profile.move(-j.distance, j.velocity, *acceleration);
+    profile.dwell(j.dwellS);
     MotionJog jog;
     jog.joint = joint;
     jog.request = r;
-    jog.request.acceleration = *acceleration; // what motion uses; planHalMove checks the rest as for an offset move
+    // What motion uses; planHalMove checks the rest as for an offset move.
+    jog.request.jog().acceleration = *acceleration;
     // The record: the move and its dwells, plus a second for the task's replies and the joint settling in position.
     jog.recordS = profile.duration() + kMotionJogMarginS;
     jog.moveTimeout =

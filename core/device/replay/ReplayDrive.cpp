@@ -109,9 +109,9 @@ Status ReplayDrive::checkRequest(const TestRequest& request) const
 {
     if (auto st = checkAxis(request.axis); !st)
         return st;
-    if (request.type != m_test)
+    if (request.type() != m_test)
         return makeError(ErrorCode::BadInput, std::string("replay ") + m_path + " recorded a " + testTypeName(m_test) +
-                                                  " test; it cannot run a " + testTypeName(request.type) + " test");
+                                                  " test; it cannot run a " + testTypeName(request.type()) + " test");
     return Status::success();
 }
 

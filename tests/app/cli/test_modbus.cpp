@@ -38,9 +38,9 @@ device::TestRequest step(double amplitude, double duration, int divider)
 {
     device::TestRequest r;
     r.axis = "X";
-    r.type = device::TestType::Step;
-    r.stepVelocityRadS = amplitude;
-    r.durationS = duration;
+    auto& s = r.test.emplace<device::StepTest>();
+    s.velocityRadS = amplitude;
+    s.recordS = duration;
     r.traceDivider = divider;
     return r;
 }
@@ -157,12 +157,12 @@ device::TestRequest multiSweep(int divider)
 {
     device::TestRequest r;
     r.axis = "C";
-    r.type = device::TestType::Frf;
-    r.frfMethod = device::FrfMethod::MultiSweep;
-    r.fminHz = 20.0;
-    r.fmaxHz = 900.0;
-    r.points = 12;
-    r.amplitudePct = 5.0;
+    auto& f = r.test.emplace<device::FrfTest>();
+    f.method = device::FrfMethod::MultiSweep;
+    f.fminHz = 20.0;
+    f.fmaxHz = 900.0;
+    f.points = 12;
+    f.amplitudePct = 5.0;
     r.traceDivider = divider;
     return r;
 }

@@ -593,7 +593,7 @@ TEST(ModbusAbuse, RefusedTestBlockNeverStarts)
     ASSERT_GT(srv.port(), 0);
     const auto map = registerMap();
     const int type = fieldAddress("test.type"), amp = fieldAddress("test.step_velocity"),
-              dur = fieldAddress("test.duration"), code = fieldAddress("command.code"),
+              dur = fieldAddress("test.record"), code = fieldAddress("command.code"),
               state = fieldAddress("status.state"), echo = fieldAddress("status.command_token_echo");
     const int stepCode = map["enums"]["test_type"]["step"].get<int>();
     const int startCode = map["enums"]["command"]["start_test"].get<int>();
@@ -664,7 +664,7 @@ TEST(ModbusAbuse, ACurrentStepIsReadFromItsOwnRegister)
     ASSERT_GT(srv.port(), 0);
     const auto map = registerMap();
     const int type = fieldAddress("test.type"), velocity = fieldAddress("test.step_velocity"),
-              current = fieldAddress("test.current_step"), dur = fieldAddress("test.duration"),
+              current = fieldAddress("test.current_step"), dur = fieldAddress("test.record"),
               code = fieldAddress("command.code"), state = fieldAddress("status.state"),
               echo = fieldAddress("status.command_token_echo"), rate = fieldAddress("status.trace_rate_hz");
     EXPECT_NE(current, velocity);

@@ -58,7 +58,7 @@ public:
 private:
     Status refuse(const TestRequest& r) const
     {
-        if (m_refuseShape && !r.multisineShape.empty())
+        if (m_refuseShape && r.is<FrfTest>() && !r.frf().multisineShape.empty())
             return makeError(ErrorCode::BadInput, "a shaped multisine cannot be sent (test)");
         return Status::success();
     }
@@ -77,11 +77,11 @@ TestRequest firstPass()
 {
     TestRequest r;
     r.axis = "C";
-    r.type = TestType::Frf;
-    r.frfMethod = FrfMethod::Multisine;
-    r.fminHz = 20.0;
-    r.fmaxHz = 3900.0;
-    r.amplitudePct = 5.0;
+    auto& f = r.test.emplace<FrfTest>();
+    f.method = FrfMethod::Multisine;
+    f.fminHz = 20.0;
+    f.fmaxHz = 3900.0;
+    f.amplitudePct = 5.0;
     return r;
 }
 
@@ -135,7 +135,7 @@ TEST(AdaptiveFrf, RealisticDdTableFindsTheModeWithinTheBudgetAndExplainsWhatIsLe
     // issue's comparison, on a fresh drive with the same seed.
     auto plainDrive = realisticDdTable();
     auto plainReq = firstPass();
-    plainReq.multisinePeriods = 16;
+    plainReq.frf().multisinePeriods = 16;
     auto plain = runTest(*plainDrive, plainReq);
     ASSERT_TRUE(plain.ok() && plain->frf);
     ASSERT_GE(plain->frf->motionTimeS, res->motionTimeS);
@@ -226,7 +226,7 @@ TEST(AdaptiveFrf, Refusals)
     auto drive = realisticDdTable();
     ASSERT_TRUE(drive);
     auto r = firstPass();
-    r.frfMethod = FrfMethod::MultiSweep;
+    r.frf().method = FrfMethod::MultiSweep;
     auto res = runAdaptiveFrf(*drive, r, {});
     ASSERT_FALSE(res.ok());
     EXPECT_EQ(res.error().code, ErrorCode::BadInput);
@@ -239,7 +239,7 @@ TEST(AdaptiveFrf, Refusals)
     EXPECT_FALSE(runAdaptiveFrf(*drive, firstPass(), o).ok());
     // Beyond the drive's own amplitude limit: the drive's refusal, before anything moves.
     r = firstPass();
-    r.amplitudePct = 80.0;
+    r.frf().amplitudePct = 80.0;
     res = runAdaptiveFrf(*drive, r, {});
     ASSERT_FALSE(res.ok());
 }

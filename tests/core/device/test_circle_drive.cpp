@@ -23,14 +23,14 @@ namespace {
 TestRequest circle(const std::string& first, const std::string& second, double cx, double cy)
 {
     TestRequest r;
-    r.type = TestType::Circle;
+    auto& c = r.test.emplace<CircleTest>();
     r.axis = first;
-    r.secondAxis = second;
-    r.radiusM = 0.05;
-    r.feedMPerS = 1000.0 / 60000.0;
-    r.centerXM = cx;
-    r.centerYM = cy;
-    r.durationS = 0.1;
+    c.secondAxis = second;
+    c.radiusM = 0.05;
+    c.feedMPerS = 1000.0 / 60000.0;
+    c.centerXM = cx;
+    c.centerYM = cy;
+    c.dwellS = 0.1;
     return r;
 }
 
@@ -83,7 +83,7 @@ TEST(CircleDrive, RequestOfACircleCarriesEveryDriveField)
     o.leadArcDeg = 60.0;
     o.dwellS = 0.2;
     const TestRequest r = circleRequestOf(o);
-    EXPECT_EQ(r.type, TestType::Circle);
+    EXPECT_EQ(r.type(), TestType::Circle);
     const sim::CircleTestOptions back = circleOptionsOf(r);
     EXPECT_EQ(back.axisX, "Y");
     EXPECT_EQ(back.axisY, "Z");
@@ -191,16 +191,16 @@ TEST(CircleDrive, UnsafeOrMalformedCirclesAreRefusedBeforeAnyMotion)
     auto far = circle("X", "Y", 0.0, 0.47);
     cases.push_back({"outside the travel window", far, ErrorCode::OutOfRange, "axis Y"});
     auto fast = circle("X", "Y", 0, 0);
-    fast.feedMPerS = 10.0;  // 10 m/s with a 12 mm lead: 5236 rad/s at the motor
+    fast.circle().feedMPerS = 10.0; // 10 m/s with a 12 mm lead: 5236 rad/s at the motor
     cases.push_back({"feed above the speed limit", fast, ErrorCode::OutOfRange, "speed limit"});
     auto slow = circle("X", "Y", 0, 0);
-    slow.feedMPerS = 1e-4;  // 6 mm/min: a 50 mm circle takes over 50 min
+    slow.circle().feedMPerS = 1e-4; // 6 mm/min: a 50 mm circle takes over 50 min
     cases.push_back({"too long", slow, ErrorCode::OutOfRange, "raise the feed"});
     auto noRadius = circle("X", "Y", 0, 0);
-    noRadius.radiusM = 0.0;
+    noRadius.circle().radiusM = 0.0;
     cases.push_back({"no radius", noRadius, ErrorCode::BadInput, "radius"});
     auto nanCentre = circle("X", "Y", 0, 0);
-    nanCentre.centerXM = std::nan("");
+    nanCentre.circle().centerXM = std::nan("");
     cases.push_back({"NaN centre", nanCentre, ErrorCode::BadInput, "centre"});
     for (const auto& c : cases) {
         auto st = drive->startTest(c.r);
@@ -250,8 +250,7 @@ TEST(CircleDrive, AbortStopsBothAxesAndRestoresTheirParameters)
     for (const char* axis : {"X", "Y"}) {
         TestRequest hold;
         hold.axis = axis;
-        hold.type = TestType::Hold;
-        hold.durationS = 0.3;
+        hold.test = HoldTest{0.3};
         const double p0 = drive->simulator(axis)->tablePosition();
         runToEnd(*drive, hold);
         EXPECT_NEAR(drive->simulator(axis)->tablePosition(), p0, 2e-4) << axis;
@@ -272,8 +271,8 @@ TEST(CircleDrive, CircleOverModbusIsTheEmbeddedCircle)
     auto local = connectAny({"sim:vmc", 7});
     ASSERT_TRUE(local.ok());
     TestRequest req = circle("X", "Y", 0.05, -0.1);
-    req.direction = model::CircleDirection::Cw;
-    req.feedMPerS = 3000.0 / 60000.0;
+    req.circle().direction = model::CircleDirection::Cw;
+    req.circle().feedMPerS = 3000.0 / 60000.0;
     const model::Capture tr = runToEnd(**remote, req);
     const model::Capture tl = runToEnd(**local, req);
     ASSERT_EQ(tr.channels.size(), tl.channels.size());
@@ -301,7 +300,7 @@ TEST(CircleDrive, CircleOverModbusIsTheEmbeddedCircle)
 
     // Abort over Modbus stops the circle (a slow one: 100 mm/min, over 3 min of machine time).
     auto slow = circle("X", "Y", 0.0, 0.0);
-    slow.feedMPerS = 100.0 / 60000.0;
+    slow.circle().feedMPerS = 100.0 / 60000.0;
     ASSERT_TRUE((*remote)->startTest(slow).ok());
     auto s = (*remote)->pollTest();
     ASSERT_TRUE(s.ok());

@@ -19,9 +19,9 @@ TestRequest currentStep(double amplitudeA, double durationS, const std::string& 
 {
     TestRequest r;
     r.axis = axis;
-    r.type = TestType::CurrentStep;
-    r.currentA = amplitudeA;
-    r.durationS = durationS;
+    auto& c = r.test.emplace<CurrentStepTest>();
+    c.currentA = amplitudeA;
+    c.recordS = durationS;
     return r;
 }
 
@@ -91,9 +91,9 @@ TEST(SimulatedDriveCurrentStep, TracesAtTheCurrentRateAndHoldsAfterwards)
                     ->startTest([] {
                         TestRequest r;
                         r.axis = "X";
-                        r.type = TestType::Step;
-                        r.stepVelocityRadS = 1.0;
-                        r.durationS = 0.01;
+                        auto& step = r.test.emplace<StepTest>();
+                        step.velocityRadS = 1.0;
+                        step.recordS = 0.01;
                         return r;
                     }())
                     .ok());

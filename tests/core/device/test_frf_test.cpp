@@ -150,10 +150,10 @@ TEST(SimulatedDriveFrf, TwoInertiaMatchesTheAnalyticClosedLoop)
     auto drive = makeDrive("two-inertia");
     TestRequest r;
     r.axis = "A";
-    r.type = TestType::Frf;
-    r.fminHz = 5.0;
-    r.fmaxHz = 300.0;
-    r.points = 15;
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.fminHz = 5.0;
+    frf.fmaxHz = 300.0;
+    frf.points = 15;
     const auto m = runFrf(*drive, r);
     ASSERT_EQ(m.frf.size(), 15u);
     EXPECT_EQ(m.frf.metadata.at("method"), "multisweep");
@@ -188,11 +188,11 @@ TEST(SimulatedDriveFrf, DdTableLinearMatchesTheClosedLoopUpToTheHighestValidFreq
     drive->simulator("C")->setNonlinearities({false, false, false, false, false});
     TestRequest r;
     r.axis = "C";
-    r.type = TestType::Frf;
-    r.fminHz = 10.0;
-    r.fmaxHz = 3900.0;
-    r.points = 60;
-    r.amplitudePct = 3.0;
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.fminHz = 10.0;
+    frf.fmaxHz = 3900.0;
+    frf.points = 60;
+    frf.amplitudePct = 3.0;
     const auto m = runFrf(*drive, r);
     ASSERT_GE(m.frf.size(), 55u);
     double highest = 0.0, worstRel = 0.0, worstDeg = 0.0;
@@ -230,11 +230,11 @@ TEST(SimulatedDriveFrf, PrbsIsTheClosedLoopWithoutAHoldFactor)
     drive->simulator("A")->setNonlinearities({false, false, false, false, false});
     TestRequest r;
     r.axis = "A";
-    r.type = TestType::Frf;
-    r.frfMethod = FrfMethod::Prbs;
-    r.fminHz = 40.0;
-    r.fmaxHz = 1000.0;
-    r.points = 12;
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.method = FrfMethod::Prbs;
+    frf.fminHz = 40.0;
+    frf.fmaxHz = 1000.0;
+    frf.points = 12;
     const auto m = runFrf(*drive, r);
     ASSERT_GE(m.frf.size(), 6u);
     EXPECT_EQ(m.frf.metadata.at("injection_hold_corrected"), "true");
@@ -265,11 +265,11 @@ TEST(SimulatedDriveFrf, DdTableMultiSweepShowsThe3300HzModeAndConventionalIsInva
     auto drive = makeDrive("dd-table");
     TestRequest r;
     r.axis = "C";
-    r.type = TestType::Frf;
-    r.fminHz = 2600.0;
-    r.fmaxHz = 3900.0;
-    r.points = 30;
-    r.amplitudePct = 3.0;  // at 5 % the current loop reaches its voltage limit near 2.6–2.9 kHz
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.fminHz = 2600.0;
+    frf.fmaxHz = 3900.0;
+    frf.points = 30;
+    frf.amplitudePct = 3.0; // at 5 % the current loop reaches its voltage limit near 2.6–2.9 kHz
     const auto m = runFrf(*drive, r);
     std::size_t peak = 0;
     for (std::size_t i = 0; i < m.frf.size(); ++i) {
@@ -282,9 +282,9 @@ TEST(SimulatedDriveFrf, DdTableMultiSweepShowsThe3300HzModeAndConventionalIsInva
     ASSERT_GT(peak, 0u);
     ASSERT_LT(peak + 1, m.frf.size());
 
-    r.frfMethod = FrfMethod::Conventional;
-    r.fminHz = 100.0;
-    r.points = 16;
+    frf.method = FrfMethod::Conventional;
+    frf.fminHz = 100.0;
+    frf.points = 16;
     const auto c = runFrf(*drive, r);
     ASSERT_GE(c.frf.size(), 14u);
     std::size_t above = 0;
@@ -306,16 +306,16 @@ TEST(SimulatedDriveFrf, AmplitudeAboveTheLimitIsRefusedAndAbortRestores)
     auto drive = makeDrive("two-inertia");
     TestRequest r;
     r.axis = "A";
-    r.type = TestType::Frf;
-    r.amplitudePct = drive->limits(r.axis).value().frfAmplitudeMaxPct + 1.0; // the drive's own limit
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.amplitudePct = drive->limits(r.axis).value().frfAmplitudeMaxPct + 1.0; // the drive's own limit
     auto st = drive->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
     EXPECT_NE(st.error().detail.find("refused"), std::string::npos);
     EXPECT_EQ(drive->pollTest()->state, TestState::Idle);
 
-    r.amplitudePct = 5.0;
-    r.fmaxHz = 1000.0;
+    frf.amplitudePct = 5.0;
+    frf.fmaxHz = 1000.0;
     r.traceDivider = 2;
     ASSERT_TRUE(drive->startTest(r).ok());
     EXPECT_DOUBLE_EQ(drive->simulator("A")->parameter("trace.divider"), 2.0);

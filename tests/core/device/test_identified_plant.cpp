@@ -52,12 +52,12 @@ model::Capture jog(Drive& drive, double velocity)
 {
     TestRequest req;
     req.axis = "X";
-    req.type = TestType::Jog;
-    req.distance = 0.1;
-    req.velocity = velocity;
-    req.acceleration = 0.8;
-    req.returnToStart = true;
-    req.durationS = 0.2;
+    auto& j = req.test.emplace<JogTest>();
+    j.distance = 0.1;
+    j.velocity = velocity;
+    j.acceleration = 0.8;
+    j.returnToStart = true;
+    j.dwellS = 0.2;
     auto run = runTest(drive, req);
     EXPECT_TRUE(run.ok()) << (run.ok() ? "" : run.error().detail);
     return run.ok() ? *run->trace : model::Capture{};

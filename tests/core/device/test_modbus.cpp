@@ -53,9 +53,9 @@ TestRequest step(const std::string& axis, double amplitude, double duration)
 {
     TestRequest r;
     r.axis = axis;
-    r.type = TestType::Step;
-    r.stepVelocityRadS = amplitude;
-    r.durationS = duration;
+    auto& s = r.test.emplace<StepTest>();
+    s.velocityRadS = amplitude;
+    s.recordS = duration;
     return r;
 }
 
@@ -220,10 +220,10 @@ TEST(ModbusDrive, SafetyLimitsRefuseOrStopTests)
     EXPECT_NE(st.error().detail.find("speed limit"), std::string::npos) << st.error().detail;
     TestRequest jog;
     jog.axis = "X";
-    jog.type = TestType::Jog;
-    jog.distance = 0.8; // beyond the ±0.5 m window
-    jog.velocity = 0.01;
-    jog.acceleration = 1.0;
+    auto& jogTest = jog.test.emplace<JogTest>();
+    jogTest.distance = 0.8; // beyond the ±0.5 m window
+    jogTest.velocity = 0.01;
+    jogTest.acceleration = 1.0;
     st = d->startTest(jog);
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().detail.find("travel window"), std::string::npos) << st.error().detail;
@@ -248,11 +248,11 @@ TEST(ModbusDrive, FollowingErrorTripsAJog)
     ASSERT_TRUE(d);
     TestRequest jog;
     jog.axis = "X";
-    jog.type = TestType::Jog;
-    jog.distance = 0.05;
-    jog.velocity = 0.05;
-    jog.acceleration = 1.0;
-    jog.durationS = 0.05;
+    auto& jogTest = jog.test.emplace<JogTest>();
+    jogTest.distance = 0.05;
+    jogTest.velocity = 0.05;
+    jogTest.acceleration = 1.0;
+    jogTest.dwellS = 0.05;
     ASSERT_TRUE(d->startTest(jog).ok());
     auto s = finish(*d);
     ASSERT_TRUE(s.ok());
@@ -360,12 +360,12 @@ TEST(ModbusDrive, FrfOverModbusIsTheEmbeddedFrf)
     ASSERT_TRUE(remote && local);
     TestRequest r;
     r.axis = local->identify()->axes.front();
-    r.type = TestType::Frf;
-    r.frfMethod = FrfMethod::MultiSweep;
-    r.fminHz = 100.0;
-    r.fmaxHz = 3000.0;
-    r.points = 6;
-    r.amplitudePct = 5.0;
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.method = FrfMethod::MultiSweep;
+    frf.fminHz = 100.0;
+    frf.fmaxHz = 3000.0;
+    frf.points = 6;
+    frf.amplitudePct = 5.0;
     const std::vector<FrfMeasurement> m{devtest::runFrf(*remote, r), devtest::runFrf(*local, r)};
     const auto& a = m[0].frf;
     const auto& b = m[1].frf;
@@ -396,8 +396,8 @@ TEST(ModbusDrive, FrfAmplitudeAboveTheDriveLimitIsRefused)
     ASSERT_TRUE(d);
     TestRequest r;
     r.axis = d->identify()->axes.front();
-    r.type = TestType::Frf;
-    r.amplitudePct = 5.0;
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.amplitudePct = 5.0;
     auto st = d->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
@@ -416,9 +416,9 @@ TEST(ModbusDrive, CurrentStepOverModbusIsTheEmbeddedTrace)
     ASSERT_TRUE(remote && local);
     TestRequest r;
     r.axis = "Y";
-    r.type = TestType::CurrentStep;
-    r.currentA = 4.0;
-    r.durationS = 0.005;
+    auto& current = r.test.emplace<CurrentStepTest>();
+    current.currentA = 4.0;
+    current.recordS = 0.005;
     const auto traces = devtest::tracesOfEach({remote.get(), local.get()}, r);
     const auto& tr = traces[0];
     const auto& tl = traces[1];
@@ -452,21 +452,21 @@ TEST(ModbusDrive, CurrentStepRefusedByTheDriveAndByTheServer)
     ASSERT_TRUE(d);
     TestRequest r;
     r.axis = "X";
-    r.type = TestType::CurrentStep;
-    r.currentA = 4.0;
-    r.durationS = 0.002;
+    auto& current = r.test.emplace<CurrentStepTest>();
+    current.currentA = 4.0;
+    current.recordS = 0.002;
     auto st = d->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
     EXPECT_NE(st.error().detail.find("current step 4 A means 2.036 Nm, above the drive's limit 20 %"), std::string::npos)
         << st.error().detail;
     // Inside the server's limit but beyond the record length of the drive: the drive's own message.
-    r.currentA = 3.0;
-    r.durationS = 0.06;
+    current.currentA = 3.0;
+    current.recordS = 0.06;
     st = d->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().detail.find("(0, 0.05] s"), std::string::npos) << st.error().detail;
-    r.durationS = 0.001; // short: the velocity loop brakes the motor afterwards below the 20 % too
+    current.recordS = 0.001; // short: the velocity loop brakes the motor afterwards below the 20 % too
     ASSERT_TRUE(d->startTest(r).ok());
     auto s = finish(*d);
     ASSERT_TRUE(s.ok());
@@ -490,9 +490,9 @@ TEST(ModbusDrive, ANewClientRunsItsOwnTestNotTheLastClientsRetry)
     ASSERT_TRUE(second);
     TestRequest r;
     r.axis = "X";
-    r.type = TestType::CurrentStep;
-    r.currentA = 3.0;
-    r.durationS = 0.002;
+    auto& current = r.test.emplace<CurrentStepTest>();
+    current.currentA = 3.0;
+    current.recordS = 0.002;
     ASSERT_TRUE(second->startTest(r).ok());
     auto s = finish(*second);
     ASSERT_TRUE(s.ok() && s->state == TestState::Completed);
@@ -501,7 +501,7 @@ TEST(ModbusDrive, ANewClientRunsItsOwnTestNotTheLastClientsRetry)
     EXPECT_EQ(t->metadata.at("fs_Hz"), "16000"); // the current step's trace, not the velocity step's (4000)
     EXPECT_EQ(t->size(), 32u);
     // And a refusal reaches the second client too.
-    r.currentA = 45.0;
+    current.currentA = 45.0;
     auto st = second->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().detail.find("40 A"), std::string::npos) << st.error().detail;
@@ -524,12 +524,12 @@ TEST(ModbusDrive, SuppressionFilterAndJerkLimitedJogAreTheEmbeddedOnes)
     const model::ParameterValues filter{{"suppression.mode", 1}, {"suppression.f0", 22.0}, {"suppression.zeta", 0.09375}};
     TestRequest jog;
     jog.axis = "A";
-    jog.type = TestType::Jog;
-    jog.distance = 16.0;
-    jog.velocity = 62.5;
-    jog.acceleration = 1250.0;
-    jog.jerk = 125000.0;
-    jog.durationS = 0.05;
+    auto& jogTest = jog.test.emplace<JogTest>();
+    jogTest.distance = 16.0;
+    jogTest.velocity = 62.5;
+    jogTest.acceleration = 1250.0;
+    jogTest.jerk = 125000.0;
+    jogTest.dwellS = 0.05;
     for (Drive* d : {remote.get(), local.get()}) {
         auto bad = d->writeParameters("A", {{"suppression.mode", 2}, {"suppression.tau", 0.015625}});
         ASSERT_FALSE(bad.ok());
@@ -595,16 +595,16 @@ TEST(ModbusDescribe, LimitsAreTheServersOwn)
     // embedded drive's plan of the same request (the server asks its embedded drive).
     TestRequest r;
     r.axis = "X";
-    r.type = TestType::Frf;
-    r.fminHz = 50.0;
-    r.fmaxHz = 400.0;
-    r.points = 6;
-    r.amplitudePct = 30.0;
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.fminHz = 50.0;
+    frf.fmaxHz = 400.0;
+    frf.points = 6;
+    frf.amplitudePct = 30.0;
     auto refused = d->planTest(r);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.error().code, ErrorCode::OutOfRange);
     EXPECT_NE(refused.error().detail.find("above the drive's limit 20 %"), std::string::npos) << refused.error().detail;
-    r.amplitudePct = 5.0;
+    frf.amplitudePct = 5.0;
     auto plan = d->planTest(r);
     ASSERT_TRUE(plan.ok()) << plan.error().detail;
     auto same = (*local)->planTest(r);
@@ -637,7 +637,7 @@ TEST(ModbusDescribe, AMapWithoutTheDescriptionIsReportedByField)
     EXPECT_NE(lim.error().detail.find("has no field limits.travel_window"), std::string::npos);
     TestRequest r;
     r.axis = "X";
-    r.type = TestType::Hold;
+    r.test = HoldTest{};
     auto plan = (*d)->planTest(r);
     ASSERT_FALSE(plan.ok());
     EXPECT_NE(plan.error().detail.find("has no command plan_test"), std::string::npos);

@@ -52,12 +52,12 @@ TestRequest multisineRequest()
 {
     TestRequest r;
     r.axis = "C";
-    r.type = TestType::Frf;
-    r.frfMethod = FrfMethod::Multisine;
-    r.fminHz = 20.0;
-    r.fmaxHz = 3900.0;
-    r.multisineSpacingHz = 10.0;
-    r.amplitudePct = 5.0;
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.method = FrfMethod::Multisine;
+    frf.fminHz = 20.0;
+    frf.fmaxHz = 3900.0;
+    frf.multisineSpacingHz = 10.0;
+    frf.amplitudePct = 5.0;
     return r;
 }
 
@@ -131,8 +131,8 @@ TEST(SimulatedDriveMultisine, DdTableAgreesWithMultiSweepAndTheAnalyticLoop)
 
     // The multi-sweep sine stream of the same drive at 30 log-spaced frequencies from 20 Hz to 3.9 kHz.
     TestRequest sw = multisineRequest();
-    sw.frfMethod = FrfMethod::MultiSweep;
-    sw.points = 30;
+    sw.frf().method = FrfMethod::MultiSweep;
+    sw.frf().points = 30;
     const auto ss = runFrf(*drive, sw);
     ASSERT_EQ(ss.frf.size(), 30u);
     std::cout << "multi-sweep: 30 points, motion " << ss.motionTimeS << " s\n";
@@ -155,18 +155,19 @@ TEST(SimulatedDriveMultisine, PeakAboveTheLimitIsRefusedAndAbortRestores)
 {
     auto drive = makeDrive("dd-table");
     TestRequest r = multisineRequest();
-    r.amplitudePct = drive->limits(r.axis).value().frfAmplitudeMaxPct + 1.0; // the drive's own limit
+    auto& frf = r.frf();
+    frf.amplitudePct = drive->limits(r.axis).value().frfAmplitudeMaxPct + 1.0; // the drive's own limit
     auto st = drive->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
-    r.amplitudePct = 5.0;
-    r.fmaxHz = 4000.0; // not below the trace rate
+    frf.amplitudePct = 5.0;
+    frf.fmaxHz = 4000.0; // not below the trace rate
     st = drive->startTest(r);
     ASSERT_FALSE(st.ok());
     EXPECT_NE(st.error().detail.find("below the trace rate"), std::string::npos);
-    r.fmaxHz = 3900.0;
+    frf.fmaxHz = 3900.0;
     r.traceDivider = 2;
-    r.fmaxHz = 1900.0;
+    frf.fmaxHz = 1900.0;
     ASSERT_TRUE(drive->startTest(r).ok());
     EXPECT_DOUBLE_EQ(drive->simulator("C")->parameter("trace.divider"), 2.0);
     (void)drive->pollTest();
@@ -182,9 +183,10 @@ TEST(SimulatedDriveMultisine, TracedInjectionPeakIsTheRequestedPeak)
 {
     auto drive = makeDrive("dd-table");
     TestRequest r = multisineRequest();
-    r.fminHz = 100.0;
-    r.multisineSpacingHz = 50.0;
-    r.multisinePeriods = 2;
+    auto& frf = r.frf();
+    frf.fminHz = 100.0;
+    frf.multisineSpacingHz = 50.0;
+    frf.multisinePeriods = 2;
     const auto m = runFrf(*drive, r);
     auto trace = drive->readTrace();
     ASSERT_TRUE(trace.ok());
@@ -219,10 +221,11 @@ TEST(ModbusMultisine, FrfOverModbusIsTheEmbeddedFrf)
     auto local = connectAny({"sim:dd-table", 7});
     ASSERT_TRUE(remote.ok() && local.ok());
     TestRequest r = multisineRequest();
-    r.multisineBands = {{40.0, 400.0, 20.0}, {400.0, 3900.0, 100.0}};
-    r.multisinePeriods = 3;
-    r.multisinePhases = dsp::MultisinePhases::Schroeder;
-    r.amplitudePct = 4.0;
+    auto& frf = r.frf();
+    frf.multisineBands = {{40.0, 400.0, 20.0}, {400.0, 3900.0, 100.0}};
+    frf.multisinePeriods = 3;
+    frf.multisinePhases = dsp::MultisinePhases::Schroeder;
+    frf.amplitudePct = 4.0;
     const std::vector<FrfMeasurement> m{runFrf(**remote, r), runFrf(**local, r)};
     const auto& a = m[0].frf;
     const auto& b = m[1].frf;
@@ -238,7 +241,7 @@ TEST(ModbusMultisine, FrfOverModbusIsTheEmbeddedFrf)
     EXPECT_EQ(a.metadata.at("periods"), "3");
     EXPECT_EQ(m[0].motionTimeS, m[1].motionTimeS);
     // A shape is not carried by the test block: refused by the client before anything moves.
-    r.multisineShape = {{100.0, 1.0}, {1000.0, 0.5}};
+    frf.multisineShape = {{100.0, 1.0}, {1000.0, 0.5}};
     auto refused = (*remote)->startTest(r);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.error().code, ErrorCode::BadInput);

@@ -57,7 +57,7 @@ TEST(ReplayDrive, PlaysTheRecordedTestWithItsPlan)
     EXPECT_EQ((*d)->readParameters("X", {}).value().at("capture.seed"), 7.0);
     TestRequest r;
     r.axis = "X";
-    r.type = TestType::Step;
+    r.test = StepTest{};
     auto plan = (*d)->planTest(r);
     ASSERT_TRUE(plan.ok());
     EXPECT_EQ(plan->motionTimeS, 0.25); // the recorded motion time
@@ -90,14 +90,14 @@ TEST(ReplayDrive, RefusesWhatItCannotReplay)
     ASSERT_TRUE(d.ok()) << d.error().detail;
     TestRequest r;
     r.axis = "X";
-    r.type = TestType::Step;
+    r.test = StepTest{};
     // Without motion_time_s the motion is the record: 5 samples at 100 Hz.
     EXPECT_EQ((*d)->planTest(r)->motionTimeS, 0.05);
-    r.type = TestType::Frf;
+    r.test = FrfTest{};
     auto frf = (*d)->startTest(r);
     ASSERT_FALSE(frf.ok());
     EXPECT_NE(frf.error().detail.find("recorded a step test; it cannot run a frf test"), std::string::npos);
-    r.type = TestType::Step;
+    r.test = StepTest{};
     r.axis = "Y";
     auto y = (*d)->planTest(r);
     ASSERT_FALSE(y.ok());

@@ -71,9 +71,9 @@ StepCapture captureStep(SimulatedDrive& drive, const ScopeRequest& r)
     const double start = sim->time();
     TestRequest step;
     step.axis = "X";
-    step.type = TestType::Step;
-    step.stepVelocityRadS = kStepRadS;
-    step.durationS = kStepDurationS;
+    auto& stepTest = step.test.emplace<StepTest>();
+    stepTest.velocityRadS = kStepRadS;
+    stepTest.recordS = kStepDurationS;
     EXPECT_TRUE(runTest(drive, step, {}).ok());
     // The simulated drive steps at 1 % of the record (SimulatedDrive::startTest).
     const double t0 = start + 0.01 * kStepDurationS;
@@ -170,9 +170,9 @@ TEST(Scope, FallingEdgeFiresWhereTheStepEndsNotWhereItBegins)
     const double start = drive->simulator("X")->time();
     TestRequest step;
     step.axis = "X";
-    step.type = TestType::Step;
-    step.stepVelocityRadS = kStepRadS;
-    step.durationS = kStepDurationS;
+    auto& stepTest = step.test.emplace<StepTest>();
+    stepTest.velocityRadS = kStepRadS;
+    stepTest.recordS = kStepDurationS;
     ASSERT_TRUE(runTest(*drive, step, {}).ok());
     for (int i = 0; i < 4; ++i)
         (void)drive->pollScope();
@@ -193,9 +193,9 @@ TEST(Scope, NormalModeReArmsAndKeepsTheLastCapture)
     ASSERT_TRUE(drive->armScope(r).ok());
     TestRequest step;
     step.axis = "X";
-    step.type = TestType::Step;
-    step.stepVelocityRadS = kStepRadS;
-    step.durationS = kStepDurationS;
+    auto& stepTest = step.test.emplace<StepTest>();
+    stepTest.velocityRadS = kStepRadS;
+    stepTest.recordS = kStepDurationS;
     for (int k = 1; k <= 2; ++k) {
         for (int i = 0; i < 3; ++i)
             (void)drive->pollScope();
@@ -406,14 +406,14 @@ namespace {
 TestRequest circleXY()
 {
     TestRequest r;
-    r.type = TestType::Circle;
+    auto& circle = r.test.emplace<CircleTest>();
     r.axis = "X";
-    r.secondAxis = "Y";
-    r.radiusM = 0.05;
-    r.feedMPerS = 1000.0 / 60000.0;
-    r.centerXM = 0.0;
-    r.centerYM = 0.1;
-    r.durationS = 0.1;
+    circle.secondAxis = "Y";
+    circle.radiusM = 0.05;
+    circle.feedMPerS = 1000.0 / 60000.0;
+    circle.centerXM = 0.0;
+    circle.centerYM = 0.1;
+    circle.dwellS = 0.1;
     return r;
 }
 

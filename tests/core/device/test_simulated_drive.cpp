@@ -59,9 +59,9 @@ TEST(SimulatedDrive, StepTestTracesAndRestoresAndRefusesWritesWhileRunning)
     Drive& drive = **d;
     TestRequest req;
     req.axis = "A";
-    req.type = TestType::Step;
-    req.stepVelocityRadS = 1.0;
-    req.durationS = 0.3;
+    auto& step = req.test.emplace<StepTest>();
+    step.velocityRadS = 1.0;
+    step.recordS = 0.3;
     bool checkedBusy = false;
     RunOptions o;
     o.progress = [&](double, const std::string&) {
@@ -89,16 +89,16 @@ TEST(SimulatedDrive, JogAboveTheMotorSpeedLimitIsRefused)
     ASSERT_TRUE(d.ok());
     TestRequest req;
     req.axis = "X";
-    req.type = TestType::Jog;
-    req.distance = 0.01;
-    req.acceleration = 1.0;
-    req.durationS = 0.05;
-    req.velocity = 62.83;  // 10 rev/s read as metres per second
+    auto& jog = req.test.emplace<JogTest>();
+    jog.distance = 0.01;
+    jog.acceleration = 1.0;
+    jog.dwellS = 0.05;
+    jog.velocity = 62.83; // 10 rev/s read as metres per second
     auto st = (*d)->startTest(req);
     ASSERT_FALSE(st.ok());
     EXPECT_EQ(st.error().code, ErrorCode::OutOfRange);
     EXPECT_NE(st.error().detail.find("above the limit of 628.3 rad/s"), std::string::npos) << st.error().detail;
-    req.velocity = 0.6;  // 50 rev/s × 12 mm = 3000 min⁻¹: accepted
+    jog.velocity = 0.6; // 50 rev/s × 12 mm = 3000 min⁻¹: accepted
     EXPECT_TRUE((*d)->startTest(req).ok());
     EXPECT_TRUE((*d)->abortTest().ok());
 }
@@ -110,10 +110,10 @@ TEST(SimulatedDrive, AbortStopsAndRestoresParameters)
     Drive& drive = **d;
     TestRequest req;
     req.axis = "Y";
-    req.type = TestType::Jog;
-    req.distance = 0.01;
-    req.velocity = 0.01;
-    req.acceleration = 0.5;
+    auto& jog = req.test.emplace<JogTest>();
+    jog.distance = 0.01;
+    jog.velocity = 0.01;
+    jog.acceleration = 0.5;
     req.traceDivider = 4;
     ASSERT_TRUE(drive.startTest(req).ok());
     ASSERT_TRUE(drive.pollTest().ok());

@@ -61,13 +61,13 @@ TestRequest frfRequest(FrfMethod method)
 {
     TestRequest r;
     r.axis = "A";
-    r.type = TestType::Frf;
-    r.frfMethod = method;
-    r.fminHz = 20.0;
-    r.fmaxHz = 600.0;
-    r.points = 12;
-    r.multisineSpacingHz = 10.0;
-    r.amplitudePct = 5.0;
+    auto& frf = r.test.emplace<FrfTest>();
+    frf.method = method;
+    frf.fminHz = 20.0;
+    frf.fmaxHz = 600.0;
+    frf.points = 12;
+    frf.multisineSpacingHz = 10.0;
+    frf.amplitudePct = 5.0;
     return r;
 }
 
@@ -134,7 +134,7 @@ TEST(TestRunnerHostFrf, RequestTraceDividerIsPartOfTheHostPlan)
     auto b = devtest::makeDrive("two-inertia", 5);
     TestRequest r = frfRequest(FrfMethod::MultiSweep);
     r.traceDivider = 2;
-    r.fmaxHz = 400.0;
+    r.frf().fmaxHz = 400.0;
     auto byDrive = runTest(*a, r);
     SamplesOnlyDrive samples(*b);
     auto byHost = runTest(samples, r);
@@ -169,9 +169,9 @@ TEST(TestRunner, ProgressNeverFallsAndEndsAtOne)
     auto d = devtest::makeDrive("vmc");
     TestRequest r;
     r.axis = "X";
-    r.type = TestType::Step;
-    r.stepVelocityRadS = 10.0;
-    r.durationS = 0.2;
+    auto& step = r.test.emplace<StepTest>();
+    step.velocityRadS = 10.0;
+    step.recordS = 0.2;
     std::vector<double> seen;
     RunOptions o;
     o.progress = [&seen](double f, const std::string&) { seen.push_back(f); };

@@ -92,9 +92,9 @@ Files writeEverything(const char* name, const fs::path& dir)
     if (drive.ok()) {
         device::TestRequest step;
         step.axis = "X";
-        step.type = device::TestType::CurrentStep;
-        step.currentA = 2.5;
-        step.durationS = 0.004;
+        auto& current = step.test.emplace<device::CurrentStepTest>();
+        current.currentA = 2.5;
+        current.recordS = 0.004;
         EXPECT_EQ(runToEnd(**drive, step).state, device::TestState::Completed);
         auto trace = (*drive)->readTrace();
         EXPECT_TRUE(trace.ok());
@@ -106,11 +106,11 @@ Files writeEverything(const char* name, const fs::path& dir)
         }
         device::TestRequest frf;
         frf.axis = "X";
-        frf.type = device::TestType::Frf;
-        frf.fminHz = 20.0;
-        frf.fmaxHz = 400.0;
-        frf.points = 6;
-        frf.amplitudePct = 2.5;
+        auto& frfTest = frf.test.emplace<device::FrfTest>();
+        frfTest.fminHz = 20.0;
+        frfTest.fmaxHz = 400.0;
+        frfTest.points = 6;
+        frfTest.amplitudePct = 2.5;
         EXPECT_EQ(runToEnd(**drive, frf).state, device::TestState::Completed);
         auto m = (*drive)->readFrequencyResponse();
         EXPECT_TRUE(m.ok());

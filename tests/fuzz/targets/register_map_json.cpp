@@ -15,14 +15,14 @@ AXISTUNE_FUZZ_TARGET(register_map_json)
     fuzz::expect(device::parseRegisterMap(input, fuzz::kSource), [](const device::RegisterMap& map) {
         device::TestRequest frf;
         frf.axis = "X";
-        frf.type = device::TestType::Frf;
-        frf.frfMethod = device::FrfMethod::Multisine;
-        frf.multisineBands = {{10.0, 100.0, 5.0}, {100.0, 1000.0, 10.0}};
+        auto& frfTest = frf.test.emplace<device::FrfTest>();
+        frfTest.method = device::FrfMethod::Multisine;
+        frfTest.multisineBands = {{10.0, 100.0, 5.0}, {100.0, 1000.0, 10.0}};
         device::TestRequest circle;
         circle.axis = "X";
-        circle.type = device::TestType::Circle;
-        circle.secondAxis = "Y";
-        circle.radiusM = 0.01;
+        auto& circleTest = circle.test.emplace<device::CircleTest>();
+        circleTest.secondAxis = "Y";
+        circleTest.radiusM = 0.01;
         const std::vector<std::string> axes{"X", "Y"};
         for (const auto& r : {frf, circle}) {
             auto values = device::testValuesOf(r, map, [](const std::string& a) -> Result<int> { return a == "Y"; });
@@ -37,7 +37,7 @@ AXISTUNE_FUZZ_TARGET(register_map_json)
                               "a test register write outside the register space or over 123 registers");
             auto back = device::testRequestOf(*values, map, "X", axes);
             if (back)
-                fuzz::require(back->type == r.type, "the test type did not come back");
+                fuzz::require(back->type() == r.type(), "the test type did not come back");
         }
     });
 }

@@ -182,9 +182,10 @@ TEST_F(GuiOnHal, FrfWizardMeasuresThePlantInThePidOutputsUnits)
     ASSERT_TRUE(waitUntil([&] { return cfg->isComplete(); }, 30000));
     maybeScreenshot(&w, "frf-hal-02-method");
     const device::TestRequest req = w.request();
-    EXPECT_DOUBLE_EQ(req.amplitudePeak, peak);
-    EXPECT_EQ(req.frfQuantity, device::FrfQuantity::Plant);
-    EXPECT_DOUBLE_EQ(req.multisineSpacingHz, 1.0);
+    ASSERT_TRUE(req.is<device::FrfTest>());
+    EXPECT_DOUBLE_EQ(req.frf().amplitudePeak, peak);
+    EXPECT_EQ(req.frf().quantity, device::FrfQuantity::Plant);
+    EXPECT_DOUBLE_EQ(req.frf().multisineSpacingHz, 1.0);
     w.next();
     ASSERT_EQ(w.currentId(), int(FrfWizard::RunId));
     ASSERT_TRUE(waitUntil([&] { return !w.runPage()->isRunning(); }, 120000));
