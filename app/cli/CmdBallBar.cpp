@@ -3,6 +3,7 @@
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/io/BallBarCsv.h"
+#include "core/model/CircleDirectionName.h"
 #include "core/model/Constants.h"
 #include "core/model/ResultJson.h"
 #include "core/tuning/BallBarDiagnostics.h"
@@ -37,7 +38,7 @@ nlohmann::json runJson(const tuning::RunDiagnostics& r)
 {
     nlohmann::json j;
     j["file"] = r.source;
-    j["direction"] = r.sigma > 0 ? "ccw" : "cw";
+    j["direction"] = model::circleDirectionName(r.sigma > 0 ? model::CircleDirection::Ccw : model::CircleDirection::Cw);
     j["radius_mm"] = r.radiusM * 1e3;
     j["feed_mm_min"] = r.feedMPerS * 60e3;
     j["full_circle"] = r.fullCircle;

@@ -10,6 +10,7 @@
 #include "core/device/TestRunner.h"
 #include "core/io/BallBarCsv.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/CircleDirectionName.h"
 #include "core/model/Number.h"
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
@@ -27,7 +28,7 @@ sim::CircleTestOptions circleOptions(const CircleCliOptions& o)
     c.axisY = o.plane.substr(1, 1);
     c.radiusM = o.radiusMm * 1e-3;
     c.feedMPerS = o.feedMmMin / 60000.0;
-    c.direction = o.direction == "cw" ? io::CircleDirection::Cw : io::CircleDirection::Ccw;
+    c.direction = model::circleDirectionFromName(o.direction).value_or(model::CircleDirection::Ccw); // CLI11 checked it
     c.centerXM = o.centerXMm * 1e-3;
     c.centerYM = o.centerYMm * 1e-3;
     c.squarenessPerM = o.squarenessUmPerM * 1e-6;

@@ -8,6 +8,7 @@
 #include "app/gui/BallBarText.h"
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/model/CircleDirectionName.h"
 #include "core/model/ResultJson.h"
 #include "core/store/SessionRecord.h"
 
@@ -32,7 +33,7 @@ model::Capture traceCapture(const io::BallBarTrace& t)
     c.metadata["source"] = t.source;
     c.metadata["radius_m"] = exact(t.radiusM);
     c.metadata["feed_m_per_s"] = exact(t.feedMPerS);
-    c.metadata["direction"] = t.direction == io::CircleDirection::Ccw ? "ccw" : "cw";
+    c.metadata["direction"] = model::circleDirectionName(t.direction);
     c.metadata["plane"] = t.plane;
     c.metadata["center_x_m"] = exact(t.centerXM);
     c.metadata["center_y_m"] = exact(t.centerYM);

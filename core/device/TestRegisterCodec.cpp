@@ -2,6 +2,7 @@
 #include "core/device/TestRegisterCodec.h"
 
 #include "core/device/MultisineTest.h"
+#include "core/model/CircleDirectionName.h"
 #include "core/model/Units.h"
 
 #include <algorithm>
@@ -135,8 +136,6 @@ Result<E> enumOf(const RegisterMap& map, const std::string& group, double code, 
     return makeError(ErrorCode::BadInput, "drive family " + map.family + ": unknown " + group + " code " +
                                               model::formatNumber(code, 6) + (name.empty() ? "" : " ('" + name + "')"));
 }
-
-const char* directionName(model::CircleDirection d) { return d == model::CircleDirection::Cw ? "cw" : "ccw"; }
 
 Status frfEnumsOf(const TestValues& values, const RegisterMap& map, FrfTest& r)
 {
@@ -307,7 +306,7 @@ Result<TestValues> testValuesOf(const TestRequest& r, const RegisterMap& map,
         if (!i)
             return makeError(i.error().code, "circle test: second plane axis: " + i.error().detail);
         put("circle.second_axis", *i, true);
-        putEnum("circle.direction", "circle_direction", directionName(c->direction),
+        putEnum("circle.direction", "circle_direction", model::circleDirectionName(c->direction),
                 c->direction != CircleTest{}.direction);
     }
     if (!bad)
@@ -358,7 +357,7 @@ Result<TestRequest> testRequestOf(const TestValues& values, const RegisterMap& m
     if (auto* c = std::get_if<CircleTest>(&r.test)) {
         if (has("circle.direction")) {
             static const model::CircleDirection ds[] = {model::CircleDirection::Ccw, model::CircleDirection::Cw};
-            auto d = enumOf(map, "circle_direction", at("circle.direction"), ds, directionName);
+            auto d = enumOf(map, "circle_direction", at("circle.direction"), ds, model::circleDirectionName);
             if (!d)
                 return d.error();
             c->direction = *d;

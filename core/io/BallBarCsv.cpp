@@ -3,6 +3,7 @@
 #include "core/io/BallBarCsv.h"
 
 #include "core/io/TextFile.h"
+#include "core/model/CircleDirectionName.h"
 #include "core/model/Constants.h"
 #include "core/model/InputLimits.h"
 #include "core/model/Number.h"
@@ -112,11 +113,8 @@ Status applyMetadata(const std::map<std::string, MetaLine>& meta, const std::str
     if (dir == meta.end())
         return bad(src +
                    ": metadata 'direction' missing (the travel direction, '# direction=ccw' or '# direction=cw')");
-    const std::string d = lower(trim(dir->second.value));
-    if (d == "ccw")
-        t.direction = CircleDirection::Ccw;
-    else if (d == "cw")
-        t.direction = CircleDirection::Cw;
+    if (const auto d = model::circleDirectionFromName(lower(trim(dir->second.value))))
+        t.direction = *d;
     else
         return bad(src + " line " + std::to_string(dir->second.line) +
                    ", metadata 'direction': must be 'ccw' or 'cw' (is '" + dir->second.value + "')");
@@ -260,7 +258,7 @@ Status writeBallBarCsv(std::ostream& out, const BallBarTrace& t)
     const auto g = [](double v) { return model::formatNumber(v, 17); };
     out << "# radius_mm=" << g(t.radiusM * 1e3) << '\n';
     out << "# feed_mm_min=" << g(t.feedMPerS * 60.0e3) << '\n';
-    out << "# direction=" << (t.direction == CircleDirection::Ccw ? "ccw" : "cw") << '\n';
+    out << "# direction=" << model::circleDirectionName(t.direction) << '\n';
     out << "# plane=" << t.plane << '\n';
     out << "# center_x_mm=" << g(t.centerXM * 1e3) << '\n';
     out << "# center_y_mm=" << g(t.centerYM * 1e3) << '\n';

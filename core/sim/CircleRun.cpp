@@ -5,6 +5,7 @@
 // Conventions: docs/ballbar.md "Simulated circle tests" and "Circle tests through the drive".
 #include "core/sim/CircleRun.h"
 
+#include "core/model/CircleDirectionName.h"
 #include "core/model/Constants.h"
 #include "core/model/Number.h"
 #include "core/sim/AxisSimulator.h"
@@ -172,7 +173,7 @@ model::Capture CircleRun::trace() const
                     {"axis_y", o.axisY},
                     {"radius_m", fmt(o.radiusM)},
                     {"feed_m_per_s", fmt(o.feedMPerS)},
-                    {"direction", o.direction == model::CircleDirection::Ccw ? "ccw" : "cw"},
+                    {"direction", model::circleDirectionName(o.direction)},
                     {"center_x_m", fmt(o.centerXM)},
                     {"center_y_m", fmt(o.centerYM)},
                     {"data_start_deg", fmt(o.dataStartDeg)},
@@ -216,9 +217,10 @@ Result<CircleTestOptions> circleOptionsFromTrace(const model::Capture& trace)
     }
     o.axisX = *ax;
     o.axisY = *ay;
-    if (*dir != "ccw" && *dir != "cw")
+    const auto direction = model::circleDirectionFromName(*dir);
+    if (!direction)
         return bad("metadata 'direction' must be ccw or cw (is '" + *dir + "')");
-    o.direction = *dir == "ccw" ? model::CircleDirection::Ccw : model::CircleDirection::Cw;
+    o.direction = *direction;
     const std::pair<const char*, double*> nums[] = {{"radius_m", &o.radiusM},       {"feed_m_per_s", &o.feedMPerS},
                                                     {"center_x_m", &o.centerXM},    {"center_y_m", &o.centerYM},
                                                     {"data_start_deg", &o.dataStartDeg}, {"lead_arc_deg", &o.leadArcDeg},
