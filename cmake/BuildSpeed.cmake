@@ -13,6 +13,15 @@ if(AXISTUNE_LLD)
   add_link_options(-fuse-ld=lld)
 endif()
 
+# AXISTUNE_SPLIT_DWARF: the debug information stays in one .dwo file beside each object file instead of being
+# copied into every executable that links the object. Each GUI test executable links the whole GUI: with its debug
+# information inside, each took 296 MB (7 MB without), the build tree 15 GB, and a CI run ran out of disk. gdb
+# finds the .dwo files by their path in the build tree (docs/build-time.md "Disk").
+option(AXISTUNE_SPLIT_DWARF "keep debug information in .dwo files, out of the executables" ON)
+if(AXISTUNE_SPLIT_DWARF AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  add_compile_options($<$<CONFIG:Debug,RelWithDebInfo>:-gsplit-dwarf>)
+endif()
+
 # AXISTUNE_PCH: precompiled headers. Each group of targets with the same compiler flags shares one precompiled
 # header, built once by a small "donor" target (axistune_pch_donor) and reused by the others (REUSE_FROM).
 # Parsing the standard library, Eigen and nlohmann/json (and Qt, GoogleTest) took a third of a typical file's
