@@ -23,7 +23,7 @@ constexpr double kPi = 3.14159265358979323846;
 std::shared_ptr<const model::Capture> capture(int channels, std::size_t samples)
 {
     auto c = std::make_shared<model::Capture>();
-    c->metadata["fs_Hz"] = "16000";
+    c->metadata.set("fs_Hz", 16000.0);
     const char* names[] = {"motor_vel_rad_s", "torque_cmd_Nm", "i_q_A", "load_pos_m"};
     for (int k = 0; k < channels; ++k) {
         model::Channel ch{names[k % 4], std::vector<double>(samples)};

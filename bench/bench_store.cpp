@@ -29,7 +29,7 @@ store::SessionRecord bigSession(std::size_t channels, std::size_t samples)
     r.info.axis = "X";
     r.info.kind = "frf";
     model::Capture c;
-    c.metadata["fs_Hz"] = "4000";
+    c.metadata.set("fs_Hz", 4000.0);
     for (std::size_t k = 0; k < channels; ++k) {
         model::Channel ch{"ch" + std::to_string(k), std::vector<double>(samples)};
         for (std::size_t i = 0; i < samples; ++i)

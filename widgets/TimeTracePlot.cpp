@@ -241,11 +241,9 @@ void TimeTracePlot::setCapture(std::shared_ptr<const model::Capture> capture, co
                 time = &c;
         }
         double fs = 1.0;
-        if (auto it = m_capture->metadata.find("fs_Hz"); it != m_capture->metadata.end()) {
-            bool ok = false;
-            const double v = QString::fromStdString(it->second).toDouble(&ok);
-            if (ok && v > 0 && std::isfinite(v))
-                fs = v;
+        if (const auto* stated = m_capture->metadata.find("fs_Hz")) {
+            if (const auto v = stated->number(); v && *v > 0 && std::isfinite(*v))
+                fs = *v;
         }
         int colour = 0;
         for (const auto& c : m_capture->channels) {
@@ -257,10 +255,8 @@ void TimeTracePlot::setCapture(std::shared_ptr<const model::Capture> capture, co
             t.name = name;
             // The unit the capture states (metadata unit.CHANNEL, as the drive's scope gives it), else the
             // one of the name's suffix.
-            const auto stated = m_capture->metadata.find("unit." + c.name);
-            t.unit = stated != m_capture->metadata.end() && !stated->second.empty()
-                         ? unitLabelOf(QString::fromStdString(stated->second))
-                         : channelUnitLabel(name);
+            const auto stated = m_capture->metadata.text("unit." + c.name);
+            t.unit = stated && !stated->empty() ? unitLabelOf(QString::fromStdString(*stated)) : channelUnitLabel(name);
             t.fromCapture = true;
             t.color = detail::paletteColor(colour++);
             t.data.resize(static_cast<int>(n));

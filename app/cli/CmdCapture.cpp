@@ -176,7 +176,7 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
                    const device::AdaptiveFrfResult* adaptive = nullptr)
 {
     auto m = std::make_unique<device::FrfMeasurement>(std::move(measurement));
-    m->frf.metadata["connection"] = o.connect;
+    m->frf.metadata.set("connection", o.connect);
     if (auto st = io::writeFrfCsvFile(o.out, m->frf); !st)
         return reportError(cmd, st.error());
     if (!o.sweepOut.empty()) {
@@ -193,9 +193,8 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
     // Numbers of the drive's metadata, those it gave (hal: states its amplitude in the PID output's units).
     for (const char* key : {"amplitude_Nm", "amplitude_peak", "fs_Hz", "crest_factor", "rms_Nm", "amplitude_rms",
                             "spacing_Hz", "periods", "settle_s"}) {
-        const auto it = m->frf.metadata.find(key);
-        if (it != m->frf.metadata.end() && model::parseNumber(it->second))
-            std::cout << ", \"" << key << "\": " << it->second;
+        if (const auto* v = m->frf.metadata.find(key); v && v->number() && std::isfinite(*v->number()))
+            std::cout << ", \"" << key << "\": " << v->text();
     }
     if (adaptive) {
         nlohmann::json a;
@@ -226,8 +225,8 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
         a["invalid_by_reason"] = counts;
         std::cout << ", \"adaptive\": " << a.dump();
     }
-    if (const auto q = m->frf.metadata.find("quantity"); q != m->frf.metadata.end())
-        std::cout << ", \"quantity\": \"" << q->second << "\"";
+    if (const auto* q = m->frf.metadata.find("quantity"))
+        std::cout << ", \"quantity\": \"" << q->text() << "\"";
     std::cout << "}\n";
     return 0;
 }
@@ -366,12 +365,12 @@ int runCapture(const CaptureOptions& o)
         return writeFrfResult(cmd, std::move(*done->frf), o);
     }
     auto cap = std::move(*done->trace);
-    cap.metadata["test"] = o.test;
-    cap.metadata["connection"] = o.connect;
+    cap.metadata.set("test", o.test);
+    cap.metadata.set("connection", o.connect);
     if (auto st = io::writeCaptureCsvFile(o.out, cap); !st)
         return reportError(cmd, st.error());
     std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << cap.size()
-              << ", \"fs_Hz\": " << cap.metadata["fs_Hz"]
+              << ", \"fs_Hz\": " << cap.metadata.textOr("fs_Hz", "")
               << ", \"planned_motion_s\": " << model::formatNumber(plan->motionTimeS, 10)
               << ", \"planned_samples\": " << plan->recordSamples << "}\n";
     return 0;

@@ -24,20 +24,19 @@ struct ChatterDetectArgs {
 /// The stage of the capture's simulated machine (metadata machine= and axis=) when no stage.json is given.
 Result<machining::StageDescription> stageFromCapture(const model::Capture& cap, const std::string& src)
 {
-    auto m = cap.metadata.find("machine");
-    auto ax = cap.metadata.find("axis");
-    if (m == cap.metadata.end() || ax == cap.metadata.end())
+    const auto m = cap.metadata.text("machine");
+    const auto ax = cap.metadata.text("axis");
+    if (!m || !ax)
         return makeError(
             ErrorCode::BadInput,
             src + ": no --stage given and the capture names no machine/axis (metadata lines 'machine=' and 'axis=')");
-    auto def = sim::loadPreset(m->second);
+    auto def = sim::loadPreset(*m);
     if (!def)
         return makeError(ErrorCode::BadInput,
-                         src + ", metadata 'machine=" + m->second + "': " + def.error().detail + " (give --stage)");
-    const auto* a = def->axis(ax->second);
+                         src + ", metadata 'machine=" + *m + "': " + def.error().detail + " (give --stage)");
+    const auto* a = def->axis(*ax);
     if (!a)
-        return makeError(ErrorCode::BadInput,
-                         src + ", metadata 'axis=" + ax->second + "': not an axis of " + m->second);
+        return makeError(ErrorCode::BadInput, src + ", metadata 'axis=" + *ax + "': not an axis of " + *m);
     return machining::stageFromAxisParameters(a->values);
 }
 
@@ -50,9 +49,7 @@ int runChatterDetect(const ChatterDetectArgs& a)
     auto stage = a.stage.empty() ? stageFromCapture(*cap, a.in) : machining::readStageJsonFile(a.stage);
     if (!stage)
         return reportError(cmd, stage.error());
-    const std::string stageSrc =
-        a.stage.empty() ? "machine " + (cap->metadata.count("machine") ? cap->metadata.at("machine") : std::string("?"))
-                        : a.stage;
+    const std::string stageSrc = a.stage.empty() ? "machine " + cap->metadata.textOr("machine", "?") : a.stage;
     if (!stage->hasCoupling)
         return reportError(
             cmd, makeError(ErrorCode::BadInput,

@@ -111,7 +111,7 @@ int runCircleOnDrive(const CircleCliOptions& o, const sim::CircleTestOptions& c)
     auto& res = measured->result;
     auto& trace = measured->trace;
     model::BallBarTrace bb = res.ballbar;
-    bb.metadata["connection"] = o.connect;
+    bb.metadata.set("connection", o.connect);
     if (auto st = io::writeBallBarCsvFile(o.out, bb); !st)
         return reportError(cmd, st.error());
     if (!o.servoOutX.empty())
@@ -176,7 +176,7 @@ int runCircle(const CircleCliOptions& o)
         return reportError(cmd, ran.error());
     sim::CircleTestResult result = *ran;
     auto* res = &result;
-    res->ballbar.metadata["connection"] = o.connect;
+    res->ballbar.metadata.set("connection", o.connect);
     if (auto st = io::writeBallBarCsvFile(o.out, res->ballbar); !st)
         return reportError(cmd, st.error());
     if (!o.servoOutX.empty())

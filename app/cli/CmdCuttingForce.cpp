@@ -5,7 +5,6 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageJson.h"
-#include "core/model/Number.h"
 #include "core/model/Units.h"
 
 #include <cmath>
@@ -20,8 +19,6 @@ struct CuttingForceArgs {
     std::string in, stage, out;
 };
 
-std::string num(double v) { return model::formatNumber(v, 17); }
-
 Result<double> samplePeriod(const model::Capture& cap, const std::string& src)
 {
     const auto* t = cap.channel("t_s");
@@ -31,7 +28,7 @@ Result<double> samplePeriod(const model::Capture& cap, const std::string& src)
             return dt;
         return makeError(ErrorCode::BadInput, src + ", column 't_s': time does not increase");
     }
-    if (const auto ts = model::metadataSamplePeriodS(cap.metadata); !ts)
+    if (const auto ts = cap.metadata.samplePeriodS(); !ts)
         return makeError(ErrorCode::BadInput, src + ": " + ts.error().detail);
     else if (ts->has_value())
         return **ts;
@@ -96,12 +93,12 @@ int runCuttingForce(const CuttingForceArgs& a)
     machining::SwitchingRls adaptive = rls.value();
 
     model::Capture outCap;
-    outCap.metadata["source"] = a.in;
-    outCap.metadata["fs_Hz"] = num(1.0 / *ts);
-    outCap.metadata["motor_torque_from"] = current ? "current_A x torque_constant" : torque->name;
-    outCap.metadata["load_velocity_from"] = xt ? "table_pos_m (backward difference / R)" : "load_vel_rad_s";
-    outCap.metadata["cutting_force_sign"] =
-        "force of the process on the table along +axis (= -F_cut/R of seed 003 eq. (1))";
+    outCap.metadata.set("source", a.in);
+    outCap.metadata.set("fs_Hz", 1.0 / *ts);
+    outCap.metadata.set("motor_torque_from", current ? "current_A x torque_constant" : torque->name);
+    outCap.metadata.set("load_velocity_from", xt ? "table_pos_m (backward difference / R)" : "load_vel_rad_s");
+    outCap.metadata.set("cutting_force_sign",
+                        "force of the process on the table along +axis (= -F_cut/R of seed 003 eq. (1))");
     std::vector<double> tcol(n), tsHat(n), fcut(n), force(n), mode(n), jl(n), bl(n), fcl(n);
     const auto* tIn = cap->channel("t_s");
     double sumForce = 0.0;

@@ -14,6 +14,7 @@
 #include "core/io/FrfCsv.h"
 #include "core/io/SampleTime.h"
 #include "core/io/SweepCsv.h"
+#include "core/model/MetadataJson.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 #include "core/model/Units.h"
@@ -75,22 +76,23 @@ Result<double> samplingFrequency(const model::Capture& cap, const FrfOptions& o,
     std::optional<double> fromTime;
     if (t != nullptr) {
         std::size_t first = 0;
-        if (auto it = cap.metadata.find("first_data_line"); it != cap.metadata.end()) {
-            double v = 0.0;
-            first = io::detail::parseDouble(it->second, v) ? static_cast<std::size_t>(v) : 0;
+        if (const auto* v = cap.metadata.find("first_data_line")) {
+            const auto line = v->number();
+            first = line ? static_cast<std::size_t>(*line) : 0;
         }
         auto timing = io::sampleTiming(t->data, src + ", column '" + timeName + "'", first);
         if (!timing)
             return timing.error();
         fromTime = timing->fsHz;
     }
-    if (auto it = cap.metadata.find("fs_Hz"); it != cap.metadata.end()) {
-        double fs = 0.0;
-        if (!io::detail::parseDouble(it->second, fs) || !(fs > 0.0) || !std::isfinite(fs))
-            return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz is not a positive number ('" + it->second + "')");
+    if (const auto* v = cap.metadata.find("fs_Hz")) {
+        const double fs = v->number().value_or(0.0);
+        if (!(fs > 0.0) || !std::isfinite(fs))
+            return makeError(ErrorCode::BadInput,
+                             src + ": metadata fs_Hz is not a positive number ('" + v->text() + "')");
         if (fromTime && std::abs(*fromTime - fs) > io::kTimeJitterTolerance * fs) {
-            return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz=" + it->second + " disagrees with column '" + timeName
-                                                      + "' (" + model::formatNumber(*fromTime, 10) + " Hz)");
+            return makeError(ErrorCode::BadInput, src + ": metadata fs_Hz=" + v->text() + " disagrees with column '" +
+                                                      timeName + "' (" + model::formatNumber(*fromTime, 10) + " Hz)");
         }
         return fs;
     }
@@ -136,10 +138,10 @@ Result<dsp::FrequencyResponse> frfFromCapture(const FrfOptions& o)
     if (!frf)
         return makeError(frf.error().code, o.inPath + ": " + frf.error().detail);
     auto& md = frf.value().metadata;
-    md["input"] = o.inputCol;
-    md["output"] = o.outputCol;
-    md["fs_Hz"] = io::detail::formatDouble(*fs);
-    md["window"] = o.window;
+    md.set("input", o.inputCol);
+    md.set("output", o.outputCol);
+    md.set("fs_Hz", *fs);
+    md.set("window", o.window);
     return frf;
 }
 
@@ -195,10 +197,10 @@ Result<dsp::ImpactResult> frfFromImpact(const FrfOptions& o)
     if (!res)
         return res.error();
     auto& md = res.value().frf.metadata;
-    md["input"] = o.forceCol;
-    md["output"] = o.responseCol;
-    md["response_type"] = o.responseType;
-    md["quantity"] = o.quantity;
+    md.set("input", o.forceCol);
+    md.set("output", o.responseCol);
+    md.set("response_type", o.responseType);
+    md.set("quantity", o.quantity);
     return res;
 }
 
@@ -224,7 +226,7 @@ nlohmann::json impactSummary(const dsp::ImpactResult& r)
             {"exp_window_decay_1_s", r.expDecayPerS},
             {"force_band_Hz", r.forceBandHz},
             {"residual_response", r.residualResponse},
-            {"peak", {{"f_Hz", peakHz}, {"magnitude", peak}, {"units", r.frf.metadata.at("units")}}},
+            {"peak", {{"f_Hz", peakHz}, {"magnitude", peak}, {"units", *r.frf.metadata.text("units")}}},
             {"notes", r.notes}};
 }
 
@@ -310,9 +312,9 @@ int runFrf(const FrfOptions& o)
             return reportError(cmd, makeError(frf.error().code, o.sweepPath + ": " + frf.error().detail));
         // A drive's sweep (capture --sweep-out) names its injection hold: the same correction as the drive's FRF.
         const auto& md = rec->metadata;
-        if (md.count("injection_hold_period_s") && md.count("injection_hold_ticks")) {
-            const auto h = model::metadataNumber(md, "injection_hold_period_s");
-            const auto n = model::metadataInteger(md, "injection_hold_ticks");
+        if (md.contains("injection_hold_period_s") && md.contains("injection_hold_ticks")) {
+            const auto h = md.number("injection_hold_period_s");
+            const auto n = md.integer("injection_hold_ticks");
             Status st = !h                       ? Status(h.error())
                         : !n                     ? Status(n.error())
                         : *n < 1 || *n > 1000000 ? Status(makeError(ErrorCode::BadInput, "tick count out of range"))

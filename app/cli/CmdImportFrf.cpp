@@ -6,6 +6,7 @@
 #include "core/io/FrfCsv.h"
 #include "core/io/TableImport.h"
 #include "core/io/Uff58.h"
+#include "core/model/MetadataJson.h"
 
 #include <iostream>
 #include <memory>
@@ -70,10 +71,10 @@ int runImportFrf(const ImportFrfOptions& o)
     auto frf = readForeignFrf(o);
     if (!frf)
         return reportError(cmd, frf.error());
-    if (!frf->metadata.count("units"))
+    if (!frf->metadata.contains("units"))
         std::cerr << "axistune-cli import-frf: note: " << o.in
                   << " states no units; h is taken as it is (give --units)\n";
-    frf.value().metadata["imported_from"] = o.in;
+    frf.value().metadata.set("imported_from", o.in);
     if (auto st = io::writeFrfCsvFile(o.out, *frf); !st)
         return reportError(cmd, st.error());
     std::cout << nlohmann::json{{"out", o.out}, {"points", frf->size()}, {"metadata", frf->metadata}}.dump() << '\n';

@@ -105,7 +105,7 @@ int runNotch(NotchCliOptions o)
         added.push_back(n.spec);
     if (!o.outFrf.empty()) {
         auto out = pred->measuredAfter;
-        out.metadata["predicted_with_notches"] = std::to_string(added.size());
+        out.metadata.set("predicted_with_notches", static_cast<double>(added.size()));
         if (auto st = io::writeFrfCsvFile(o.outFrf, out); !st)
             return reportError(cmd, st.error());
     }

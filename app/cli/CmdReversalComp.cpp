@@ -89,7 +89,7 @@ Status writeBallBar(const std::string& path, io::BallBarTrace bb, const std::str
 {
     if (path.empty())
         return Status::success();
-    bb.metadata["reversal_comp"] = what;
+    bb.metadata.set("reversal_comp", what);
     return io::writeBallBarCsvFile(path, bb);
 }
 

@@ -210,10 +210,10 @@ int runScope(const ScopeOptions& o)
         return reportError(cmd, captured.error());
     const device::ScopeCapture& capture = *captured;
     auto table = device::scopeCaptureToTable(capture, o.axis,
-                                             {{"connection", o.connect}, {"divider", std::to_string(o.divider)}});
+                                             {{"connection", o.connect}, {"divider", static_cast<double>(o.divider)}});
     if (triggered) {
-        table.metadata["trigger"] = o.trigger;
-        table.metadata["pre_trigger_pct"] = num(o.prePct);
+        table.metadata.set("trigger", o.trigger);
+        table.metadata.set("pre_trigger_pct", o.prePct);
     }
     if (auto st = io::writeCaptureCsvFile(o.out, table); !st)
         return reportError(cmd, st.error());

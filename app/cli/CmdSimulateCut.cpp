@@ -209,8 +209,7 @@ nlohmann::json summaryJson(const SimulateCutArgs& a, const avoidance::AvoidanceC
         j["spindle_rpm_min"] = lo;
         j["spindle_rpm_max"] = hi;
     }
-    j["spindle_command_limited"] =
-        cap.metadata.count("spindle_command_limited") ? cap.metadata.at("spindle_command_limited") : "0";
+    j["spindle_command_limited"] = cap.metadata.textOr("spindle_command_limited", "0");
     if (av.method == avoidance::Method::None)
         return j;
     j["sensor"] = av.sensor == machining::AvoidanceSensor::Dob ? "dob" : "accelerometer";
@@ -319,15 +318,15 @@ int runSimulateCut(const SimulateCutArgs& a)
         return reportError(cmd, makeError(simulated.error().code, "--tool/--cut/--rpm/--depth-m/avoidance options: " +
                                                                       simulated.error().detail));
     model::Capture cap = std::move(simulated->capture);
-    cap.metadata["machine"] = def->name;
-    cap.metadata["connection"] = "sim:" + def->name;
-    cap.metadata["spindle_rpm"] = num(a.rpm);
-    cap.metadata["axial_depth_m"] = num(a.depthM);
-    cap.metadata["feed_per_tooth_m"] = num(a.feedPerToothM);
-    cap.metadata["tooth_frequency_Hz"] = num(a.rpm * ms.teeth / 60.0);
-    cap.metadata["engage_s"] = num(a.engageS);
-    cap.metadata["spindle_time_constant_s"] = num(ms.spindleTimeConstantS);
-    cap.metadata["spindle_limits_rpm"] = num(ms.spindleMinRpm) + ":" + num(ms.spindleMaxRpm);
+    cap.metadata.set("machine", def->name);
+    cap.metadata.set("connection", "sim:" + def->name);
+    cap.metadata.set("spindle_rpm", a.rpm);
+    cap.metadata.set("axial_depth_m", a.depthM);
+    cap.metadata.set("feed_per_tooth_m", a.feedPerToothM);
+    cap.metadata.set("tooth_frequency_Hz", a.rpm * ms.teeth / 60.0);
+    cap.metadata.set("engage_s", a.engageS);
+    cap.metadata.set("spindle_time_constant_s", ms.spindleTimeConstantS);
+    cap.metadata.set("spindle_limits_rpm", num(ms.spindleMinRpm) + ":" + num(ms.spindleMaxRpm));
     if (auto st = io::writeCaptureCsvFile(a.out, cap); !st)
         return reportError(cmd, st.error());
     if (av.method == avoidance::Method::None && a.summaryOut.empty())

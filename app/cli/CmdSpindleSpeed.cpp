@@ -32,7 +32,7 @@ struct SpindleArgs {
 // Sample period from "# fs_Hz=" metadata, else from a t_s column.
 Result<double> samplePeriod(const model::Capture& c, const std::string& src)
 {
-    if (const auto ts = model::metadataSamplePeriodS(c.metadata); !ts)
+    if (const auto ts = c.metadata.samplePeriodS(); !ts)
         return makeError(ErrorCode::BadInput, src + ": " + ts.error().detail);
     else if (ts->has_value())
         return **ts;

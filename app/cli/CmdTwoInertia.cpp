@@ -52,9 +52,12 @@ Result<dsp::FrequencyResponse> plantFromComplementary(const dsp::FrequencyRespon
     if (o.loopPi.size() != 2 || !(o.loopPi[0] >= 0.0) || !(o.loopPi[1] >= 0.0) || !(o.loopPi[0] + o.loopPi[1] > 0.0) ||
         !(o.loopPeriodS > 0.0))
         return makeError(ErrorCode::BadInput, "--loop-pi needs KP,KI >= 0 (not both 0) and --loop-period-s > 0");
-    if (auto it = t.metadata.find("measurement"); it != t.metadata.end() && it->second != "complementary")
-        return makeError(ErrorCode::BadInput, path + ": --loop-pi needs a complementary FRF (T = PC/(1+PC)), the file says "
-                                                  "measurement=" + it->second);
+    if (const auto* m = t.metadata.find("measurement"); m && m->text() != "complementary")
+        return makeError(ErrorCode::BadInput,
+                         path +
+                             ": --loop-pi needs a complementary FRF (T = PC/(1+PC)), the file says "
+                             "measurement=" +
+                             m->text());
     if (!(o.injectionPeriodS >= 0.0))
         return makeError(ErrorCode::BadInput, "--injection-period-s must not be negative");
     dsp::FrequencyResponse corrected = t;
@@ -75,7 +78,7 @@ Result<dsp::FrequencyResponse> plantFromComplementary(const dsp::FrequencyRespon
         const std::complex<double> c = o.loopPi[0] + o.loopPi[1] * o.loopPeriodS / (1.0 - zInv);
         p.h[i] = p.valid[i] ? p.h[i] / c : std::complex<double>(0.0, 0.0);
     }
-    p.metadata["loop"] = "plant-from-complementary";
+    p.metadata.set("loop", "plant-from-complementary");
     return p;
 }
 

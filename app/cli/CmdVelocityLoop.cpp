@@ -170,14 +170,14 @@ int runVelocityLoop(const VelocityLoopOptions& o)
             auto kind = tuning::parseLoopMeasurement(o.measurement);
             if (!kind)
                 return bad("--measurement: " + kind.error().detail);
-            frf.metadata["measurement"] = std::string(tuning::loopMeasurementName(*kind));
-        } else if (!frf.metadata.count("measurement")) {
+            frf.metadata.set("measurement", std::string(tuning::loopMeasurementName(*kind)));
+        } else if (!frf.metadata.contains("measurement")) {
             return bad(o.frfPath + ": no 'measurement' key says what the FRF is; give --measurement plant|open|"
                                    "complementary|neg-complementary|sensitivity");
         } else if (auto kind = tuning::loopMeasurementOf(frf, tuning::LoopMeasurementKind::Plant); !kind) {
             return bad(o.frfPath + ": " + kind.error().detail);
         }
-        frfJson = {{"file", o.frfPath}, {"measurement", frf.metadata["measurement"]}};
+        frfJson = {{"file", o.frfPath}, {"measurement", *frf.metadata.text("measurement")}};
         req.measured = std::move(frf);
     }
     auto design = tuning::designVelocityLoop(req);

@@ -244,7 +244,7 @@ void addOutput(store::SessionRecord& rec, const OutputFile& f)
         rec.results.push_back({f.option, {{"file", where}, {"bytes", bytes->size()}, {"sha256", sha256Hex(*bytes)}}, {}});
         return;
     }
-    rec.captures.back().capture.metadata["file"] = model::displayPath(f.path);
+    rec.captures.back().capture.metadata.set("file", model::displayPath(f.path));
 }
 
 void addStdout(store::SessionRecord& rec, const std::string& text)

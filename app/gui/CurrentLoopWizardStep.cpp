@@ -375,11 +375,11 @@ QString CurrentLoopVerifyPage::compareMeasured()
                             pct(m_d.difference.maxAbs), pct(m_d.difference.rms))
                        .arg(m_d.difference.samples);
     if (m_d.measuredCapture) {
-        const auto it = m_d.measuredCapture->metadata.find("voltage_clamped_ticks");
-        if (it != m_d.measuredCapture->metadata.end() && it->second != "0")
+        const auto* clamped = m_d.measuredCapture->metadata.find("voltage_clamped_ticks");
+        if (clamped && *clamped != "0")
             text += "\n" + tr("The voltage clamp acted in %1 current periods: the measured step is not the linear loop "
                               "the prediction describes; use a smaller step.")
-                               .arg(QString::fromStdString(it->second));
+                               .arg(QString::fromStdString(clamped->text()));
     }
     return text + "\n" + m_d.measuredVerdict;
 }

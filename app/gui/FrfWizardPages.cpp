@@ -8,7 +8,6 @@
 #include "app/gui/FrfWizard.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Constants.h"
-#include "core/model/Number.h"
 #include "core/tuning/PositionPid.h"
 #include "widgets/BodePlot.h"
 
@@ -507,12 +506,11 @@ void FrfResultPage::setMeasurement(const dsp::FrequencyResponse& frf, device::Fr
     m_method = method;
     m_frfMaxHz = frfMaxHz;
     m_outputSignal = outputSignal;
-    const auto q = frf.metadata.find("quantity");
-    m_quantity = q == frf.metadata.end() ? QString() : QString::fromStdString(q->second);
+    m_quantity = QString::fromStdString(frf.metadata.textOr("quantity", ""));
     m_done = false;
     m_analysis = {};
     // The rate only draws the validity bands and the note under the plot: 0 (unknown) when unreadable.
-    const auto fs = model::metadataNumber(frf.metadata, "fs_Hz");
+    const auto fs = frf.metadata.number("fs_Hz");
     m_fsHz = fs ? *fs : 0.0;
 }
 
@@ -557,14 +555,14 @@ void FrfResultPage::initializePage()
     const dsp::FrequencyResponse frf = m_frf;
     m_watcher->setFuture(QtConcurrent::run([frf] {
         FrfAnalysis a;
-        const auto m = frf.metadata.find("measurement");
-        const bool complementary = m != frf.metadata.end() && m->second == "complementary";
+        const auto* m = frf.metadata.find("measurement");
+        const bool complementary = m && *m == "complementary";
         const auto form = complementary ? dsp::openLoopFromClosedLoop(frf, dsp::LoopMeasurement::Complementary) : frf;
         a.analysedForm = complementary
                              ? QCoreApplication::translate("FrfResultPage", "the open loop L = T/(1−T) of the measured T")
                              : QCoreApplication::translate("FrfResultPage", "the measured response");
-        const auto q = frf.metadata.find("quantity");
-        if (q != frf.metadata.end() && q->second == "plant") {
+        const auto* q = frf.metadata.find("quantity");
+        if (q && *q == "plant") {
             // A plant falls as its rigid body (f⁻² under torque, f⁻¹ under a velocity command), with an anti-resonance
             // before each resonance: its resonance is the peak of |P|·ω^order above the median of the band, as
             // pid-tune reads it (tuning::plantResonance), not an outlier of a local baseline.

@@ -22,25 +22,22 @@ namespace gui {
 
 namespace {
 
-/// Full precision, independent of the locale.
-std::string exact(double v) { return QString::number(v, 'g', 17).toStdString(); }
-
 model::Capture traceCapture(const io::BallBarTrace& t)
 {
     model::Capture c;
     c.metadata = t.metadata;
-    c.metadata["content"] = "ballbar";
-    c.metadata["source"] = t.source;
-    c.metadata["radius_m"] = exact(t.radiusM);
-    c.metadata["feed_m_per_s"] = exact(t.feedMPerS);
-    c.metadata["direction"] = model::circleDirectionName(t.direction);
-    c.metadata["plane"] = t.plane;
-    c.metadata["center_x_m"] = exact(t.centerXM);
-    c.metadata["center_y_m"] = exact(t.centerYM);
+    c.metadata.set("content", "ballbar");
+    c.metadata.set("source", t.source);
+    c.metadata.set("radius_m", t.radiusM);
+    c.metadata.set("feed_m_per_s", t.feedMPerS);
+    c.metadata.set("direction", model::circleDirectionName(t.direction));
+    c.metadata.set("plane", t.plane);
+    c.metadata.set("center_x_m", t.centerXM);
+    c.metadata.set("center_y_m", t.centerYM);
     if (t.dTxNm)
-        c.metadata["dT_x_Nm"] = exact(*t.dTxNm);
+        c.metadata.set("dT_x_Nm", *t.dTxNm);
     if (t.dTyNm)
-        c.metadata["dT_y_Nm"] = exact(*t.dTyNm);
+        c.metadata.set("dT_y_Nm", *t.dTyNm);
     c.channels.push_back({"angle_rad", t.angleRad});
     c.channels.push_back({"deviation_m", t.deviationM});
     return c;

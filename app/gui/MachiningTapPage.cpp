@@ -38,9 +38,9 @@ Result<std::pair<model::Capture, double>> loadRecord(const QString& path)
     auto cap = io::readTimeSeriesFile(p, {});
     if (!cap)
         return cap.error();
-    if (auto it = cap->metadata.find("fs_Hz"); it != cap->metadata.end()) {
+    if (const auto* v = cap->metadata.find("fs_Hz")) {
         double fs = 0.0;
-        if (io::detail::parseDouble(it->second, fs) && fs > 0.0 && std::isfinite(fs))
+        if (io::detail::parseDouble(v->text(), fs) && fs > 0.0 && std::isfinite(fs))
             return std::pair{std::move(cap).value(), fs};
         return makeError(ErrorCode::BadInput, p + ": metadata fs_Hz is not a positive number");
     }

@@ -7,7 +7,6 @@
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageFromParameters.h"
 #include "core/machining/StageJson.h"
-#include "core/model/Number.h"
 #include "core/model/Units.h"
 #include "core/sim/CutSimulation.h"
 #include "core/sim/MachineDefinition.h"
@@ -44,8 +43,6 @@ QString f(double v, int decimals)
 // ------------------------------------------------------------------------------------------ analysis page
 
 namespace {
-
-std::string num(double v) { return model::formatNumber(v, 17); }
 
 /// The stage of a simulated machine's axis (like `axistune-cli chatter-detect` without --stage).
 Result<machining::StageDescription> stageOfPreset(const std::string& machine, const std::string& axis)
@@ -96,11 +93,11 @@ Result<model::Capture> simulateVmcCut(const machining::ToolModes& tool, const Ma
     if (!simulated)
         return simulated.error();
     model::Capture cap = std::move(simulated).value();
-    cap.metadata["machine"] = "vmc";
-    cap.metadata["axis"] = "X";
-    cap.metadata["spindle_rpm"] = num(in.rpm);
-    cap.metadata["axial_depth_m"] = num(in.depthM);
-    cap.metadata["engage_s"] = num(opt.engageS);
+    cap.metadata.set("machine", "vmc");
+    cap.metadata.set("axis", "X");
+    cap.metadata.set("spindle_rpm", in.rpm);
+    cap.metadata.set("axial_depth_m", in.depthM);
+    cap.metadata.set("engage_s", opt.engageS);
     return cap;
 }
 
@@ -114,16 +111,16 @@ CutAnalysis analyseCut(model::Capture cap, const QString& source, const QString&
         stage = machining::readStageJsonFile(stagePath.toStdString());
         out.stageSource = stagePath;
     } else {
-        const auto m = cap.metadata.find("machine"), a = cap.metadata.find("axis");
-        if (m == cap.metadata.end() || a == cap.metadata.end()) {
+        const auto m = cap.metadata.text("machine"), a = cap.metadata.text("axis");
+        if (!m || !a) {
             out.error = QObject::tr("%1: no stage.json given and the capture names no simulated machine/axis "
                                     "(metadata 'machine=' and 'axis=')")
                             .arg(source);
             return out;
         }
-        stage = stageOfPreset(m->second, a->second);
-        out.stageSource = QObject::tr("axis parameters of %1 %2")
-                              .arg(QString::fromStdString(m->second), QString::fromStdString(a->second));
+        stage = stageOfPreset(*m, *a);
+        out.stageSource =
+            QObject::tr("axis parameters of %1 %2").arg(QString::fromStdString(*m), QString::fromStdString(*a));
     }
     if (!stage) {
         out.error = QString::fromStdString(stage.error().detail);
@@ -179,7 +176,7 @@ CutAnalysis analyseCut(model::Capture cap, const QString& source, const QString&
         machining::ChatterDetectOptions opt = stage->chatter;
         // The air cut before the tool enters the material sets the force-energy floor (CD-2 gate).
         if (opt.baselineS <= 0.0) {
-            const auto engage = model::optionalMetadataNumber(cap.metadata, "engage_s");
+            const auto engage = cap.metadata.optionalNumber("engage_s");
             if (!engage) {
                 out.error = source + ": " + QString::fromStdString(engage.error().detail);
                 return out;

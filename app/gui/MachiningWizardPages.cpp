@@ -5,7 +5,6 @@
 #include "app/gui/MachiningWizard.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/ChatterFrequencyEstimator.h"
-#include "core/model/Number.h"
 #include "widgets/CurvePlot.h"
 
 #include <QFileDialog>
@@ -315,7 +314,7 @@ bool MachiningAdvicePage::estimateFromCapture(const QString& path)
     double ts = 0.0;
     if (t && t->data.size() >= 2)
         ts = (t->data.back() - t->data.front()) / static_cast<double>(t->data.size() - 1);
-    else if (const auto fromFs = model::metadataSamplePeriodS(cap->metadata); !fromFs) {
+    else if (const auto fromFs = cap->metadata.samplePeriodS(); !fromFs) {
         m_estimate->setText(path + QStringLiteral(": ") + QString::fromStdString(fromFs.error().detail));
         return false;
     } else {

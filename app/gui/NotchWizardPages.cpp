@@ -2,12 +2,11 @@
 // Pages of the notch wizard: source, propose (resonances, editable notches with their rules,
 // prediction and margins), verify (measurement against prediction) and save. docs/wizards/notch.md.
 #include "app/gui/AppContext.h"
-#include "app/gui/NotchWizard.h"
 #include "app/gui/NcPidPage.h"
-#include "core/model/Number.h"
+#include "app/gui/NotchWizard.h"
 #include "core/store/FrfCapture.h"
-#include "widgets/BodePlot.h"
 #include "core/store/SessionRecord.h"
+#include "widgets/BodePlot.h"
 
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -123,7 +122,7 @@ void fillMargins(QTableWidget* t, const std::vector<std::optional<dsp::LoopMargi
 void addValidityBand(widgets::BodePlot* plot, const dsp::FrequencyResponse& frf)
 {
     // Only a band on the plot: a missing or unreadable rate draws none.
-    const auto parsed = model::metadataNumber(frf.metadata, "fs_Hz");
+    const auto parsed = frf.metadata.number("fs_Hz");
     if (!parsed || frf.empty())
         return;
     const double fs = *parsed;

@@ -151,8 +151,8 @@ QString sourceText(store::ParameterSource s)
 /// angle_rad and deviation_m.
 bool isBallBarCapture(const model::Capture& c)
 {
-    const auto it = c.metadata.find("content");
-    if (it != c.metadata.end() && it->second == "ballbar")
+    const auto* content = c.metadata.find("content");
+    if (content && *content == "ballbar")
         return c.channel("angle_rad") && c.channel("deviation_m");
     return c.channel("angle_rad") && c.channel("deviation_m") && c.channels.size() == 2;
 }
@@ -338,11 +338,9 @@ struct Builder {
             const auto* d = c.capture.channel("deviation_m");
             if (a->data.size() != d->data.size() || a->data.empty())
                 continue;
-            if (auto it = c.capture.metadata.find("radius_m"); it != c.capture.metadata.end() && names.isEmpty()) {
-                bool ok = false;
-                const double r = QString::fromStdString(it->second).toDouble(&ok);
-                if (ok && r > 0)
-                    polar.setNominalRadius(r);
+            if (const auto* radius = c.capture.metadata.find("radius_m"); radius && names.isEmpty()) {
+                if (const auto r = radius->number(); r && *r > 0)
+                    polar.setNominalRadius(*r);
             }
             polar.addTrace(QString::fromStdString(c.name), a->data, d->data);
             names << QString::fromStdString(c.name);

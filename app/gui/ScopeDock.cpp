@@ -51,7 +51,7 @@ constexpr std::size_t kMaxRowsPerPoll = 262144;
 std::shared_ptr<model::Capture> scopePlotTable(const device::ScopeCapture& c)
 {
     auto t = std::make_shared<model::Capture>();
-    model::setMetadataNumber(t->metadata, "fs_Hz", c.rateHz);
+    t->metadata.set("fs_Hz", c.rateHz);
     model::Channel time{"time_s", {}};
     time.data.reserve(c.rows());
     for (const auto n : c.samples) {
@@ -63,7 +63,7 @@ std::shared_ptr<model::Capture> scopePlotTable(const device::ScopeCapture& c)
     for (std::size_t k = 0; k < c.channels.size() && k < c.columns.size(); ++k) {
         if (c.channels[k].name == "t_s" || c.channels[k].name == "time_s")
             continue;
-        t->metadata["unit." + c.channels[k].name] = c.channels[k].unit;
+        t->metadata.set("unit." + c.channels[k].name, c.channels[k].unit);
         t->channels.push_back({c.channels[k].name, c.columns[k]});
     }
     return t;

@@ -162,7 +162,7 @@ private:
     void redraw();
     QString channelUnit(const QString& channel) const;
     bool linearAxis() const;
-    std::map<std::string, std::string> captureMetadata() const;
+    model::Metadata captureMetadata() const;
 
     AppContext& m_ctx;
     std::shared_ptr<const device::ScopeCapabilities> m_caps;

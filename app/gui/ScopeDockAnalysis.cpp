@@ -55,7 +55,7 @@ void ScopeDock::redraw()
             op == Math::Difference ? device::scopeDifference(*m_capture, a, b) : device::scopeDerivative(*m_capture, a);
         if (m) {
             m_mathName = qs(m->info.name);
-            table->metadata["unit." + m->info.name] = m->info.unit;
+            table->metadata.set("unit." + m->info.name, m->info.unit);
             table->channels.push_back({m->info.name, std::move(m->values)});
         } else {
             setMessage(qs(m.error().detail), true);
@@ -72,9 +72,9 @@ void ScopeDock::redraw()
                 v = gain * v + offset;
             const std::string shown = name + " ×" + model::formatShortest(gain) +
                                       (offset != 0.0 ? " +" + model::formatShortest(offset) : std::string());
-            if (auto u = table->metadata.find("unit." + name); u != table->metadata.end()) {
-                table->metadata["unit." + shown] = u->second;
-                table->metadata.erase(u);
+            if (const auto* u = table->metadata.find("unit." + name)) {
+                table->metadata.set("unit." + shown, *u);
+                table->metadata.erase("unit." + name);
             }
             ch.name = shown;
             m_scaledName = qs(shown);
@@ -190,9 +190,9 @@ void ScopeDock::keepReference()
     const auto& time = table->channels.front().data;
     for (std::size_t k = 1; k < table->channels.size(); ++k) {
         const auto& ch = table->channels[k];
-        const auto u = table->metadata.find("unit." + ch.name);
-        m_plot->addSeries(tr("ref %1: %2").arg(m_references).arg(qs(ch.name)), time, ch.data,
-                          u == table->metadata.end() ? QString() : qs(u->second), QColor(150, 150, 150), Qt::DashLine);
+        const auto u = table->metadata.text("unit." + ch.name);
+        m_plot->addSeries(tr("ref %1: %2").arg(m_references).arg(qs(ch.name)), time, ch.data, u ? qs(*u) : QString(),
+                          QColor(150, 150, 150), Qt::DashLine);
     }
 }
 

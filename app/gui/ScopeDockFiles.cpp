@@ -8,6 +8,7 @@
 #include "core/device/ScopeMath.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/ScopeCsv.h"
+#include "core/model/MetadataJson.h"
 #include "core/model/Number.h"
 #include "core/store/SessionRecord.h"
 #include "widgets/CurvePlot.h"
@@ -45,15 +46,15 @@ namespace {
 constexpr const char* kStoreCapture = "scope";
 } // namespace
 
-std::map<std::string, std::string> ScopeDock::captureMetadata() const
+model::Metadata ScopeDock::captureMetadata() const
 {
-    std::map<std::string, std::string> m{{"connection", m_captureSource.toStdString()}};
+    model::Metadata m{{"connection", m_captureSource.toStdString()}};
     if (m_armed && m_capture && m_capture->triggered) {
-        m["divider"] = std::to_string(m_armed->divider);
-        m["trigger"] = m_armed->triggerChannel + ":" + model::formatNumber(m_armed->triggerLevel, 17) + ":" +
-                       device::scopeEdgeName(m_armed->edge);
-        m["pre_trigger_pct"] = model::formatNumber(m_armed->preTriggerPct, 17);
-        m["capture_number"] = std::to_string(m_capture->number);
+        m.set("divider", static_cast<double>(m_armed->divider));
+        m.set("trigger", m_armed->triggerChannel + ":" + model::formatNumber(m_armed->triggerLevel, 17) + ":" +
+                             device::scopeEdgeName(m_armed->edge));
+        m.set("pre_trigger_pct", m_armed->preTriggerPct);
+        m.set("capture_number", static_cast<double>(m_capture->number));
     }
     return m;
 }
@@ -224,8 +225,8 @@ bool ScopeDock::openCsv(const QString& path, QString* error)
     if (m_running)
         stop();
     m_armed.reset();
-    const auto a = t->capture.metadata.find("axis");
-    m_captureAxis = a == t->capture.metadata.end() ? QString() : qs(a->second);
+    const auto a = t->capture.metadata.text("axis");
+    m_captureAxis = a ? qs(*a) : QString();
     m_captureSource = path;
     m_stateKey = "offline";
     show(std::make_shared<const device::ScopeCapture>(std::move(cap).value()));

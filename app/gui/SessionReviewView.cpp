@@ -4,7 +4,6 @@
 #include "app/gui/WidgetUtil.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
-#include "core/model/Number.h"
 #include "core/store/FrfCapture.h"
 #include "core/store/SessionRecord.h"
 #include "widgets/BodePlot.h"
@@ -23,6 +22,7 @@
 #include <QTableWidget>
 #include <QTreeWidget>
 #include <QVBoxLayout>
+
 #include <nlohmann/json.hpp>
 
 namespace axistune {
@@ -89,12 +89,11 @@ int addFrfWithBands(widgets::BodePlot& plot, const dsp::FrequencyResponse& frf, 
         }
     }
     // Above the observation Nyquist fs/2 only the multi-sweep methods measure (up to fs).
-    const auto fs = frf.metadata.find("fs_Hz");
-    const auto method = frf.metadata.find("method");
-    if (fs != frf.metadata.end() && method != frf.metadata.end() && !frf.empty() &&
-        (method->second == "multisweep" || method->second == "multisine" || method->second == "sine-stream-mixed")) {
+    const auto* method = frf.metadata.find("method");
+    if (frf.metadata.contains("fs_Hz") && method && !frf.empty() &&
+        (*method == "multisweep" || *method == "multisine" || *method == "sine-stream-mixed")) {
         // Only a band on the plot: an unreadable rate draws none.
-        const auto parsed = model::metadataNumber(frf.metadata, "fs_Hz");
+        const auto parsed = frf.metadata.number("fs_Hz");
         const double fsHz = parsed ? *parsed : 0.0;
         if (fsHz > 0.0 && frf.freqHz.back() > fsHz / 2.0)
             plot.addBand(fsHz / 2.0, std::min(fsHz, frf.freqHz.back()), widgets::BodePlot::BandKind::MultiSweepOnly);

@@ -210,7 +210,7 @@ void TwoInertiaWizard::saveSession(bool aborted, const QString& reason)
     if (d.fit && d.plant) {
         const auto& p = d.fit->params;
         dsp::FrequencyResponse model;
-        model.metadata["content_of"] = "two-inertia model";
+        model.metadata.set("content_of", "two-inertia model");
         for (double f : d.plant->freqHz)
             model.push(f, tuning::motorVelocityResponse(p, f), std::nan(""), true);
         rec.captures.push_back({"model", store::frfAsCapture(model)});

@@ -39,9 +39,6 @@ namespace {
 using model::kDegPerRad;
 using model::kTwoPi;
 
-/// Full precision, independent of the locale.
-std::string exact(double v) { return QString::number(v, 'g', 17).toStdString(); }
-
 bool isFrfSessionKind(const std::string& k)
 {
     return k == "frf" || k == "two-inertia" || k == "notch" || k == "velocity-loop";
@@ -213,12 +210,12 @@ void TwoInertiaFitPage::initializePage()
     // from the drive when it has this axis (its values may have changed since), else as entered.
     const auto& md = m_d.measured->metadata;
     auto num = [&](const char* key, double& out) {
-        auto it = md.find(key);
-        if (it == md.end())
+        const auto* v = md.find(key);
+        const auto x = v ? v->number() : std::nullopt;
+        if (!x)
             return false;
-        bool ok = false;
-        out = QString::fromStdString(it->second).toDouble(&ok);
-        return ok;
+        out = *x;
+        return true;
     };
     double kp = 0, ki = 0, tv = 0, h = 0;
     if (num("loop_kp_Nms_per_rad", kp) && num("loop_ki_Nm_per_rad", ki) && num("velocity_period_s", tv) &&
@@ -242,10 +239,10 @@ void TwoInertiaFitPage::initializePage()
                 m_d.currentPeriodS = get("current.period", m_d.currentPeriodS);
                 if (!m_d.fromSession && m_d.measured) {
                     auto& meta = m_d.measured->metadata;
-                    meta["loop_kp_Nms_per_rad"] = exact(m_d.loopPi.kpNmsPerRad);
-                    meta["loop_ki_Nm_per_rad"] = exact(m_d.loopPi.kiNmPerRad);
-                    meta["velocity_period_s"] = exact(m_d.velocityPeriodS);
-                    meta["current_period_s"] = exact(m_d.currentPeriodS);
+                    meta.set("loop_kp_Nms_per_rad", m_d.loopPi.kpNmsPerRad);
+                    meta.set("loop_ki_Nm_per_rad", m_d.loopPi.kiNmPerRad);
+                    meta.set("velocity_period_s", m_d.velocityPeriodS);
+                    meta.set("current_period_s", m_d.currentPeriodS);
                 }
             }
             analyse();

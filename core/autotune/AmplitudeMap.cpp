@@ -161,13 +161,12 @@ Result<AmplitudeMap> measureAmplitudeMap(device::Drive& drive, const AmplitudeMa
         ar.amplitudePct = f.amplitudePct;
         ar.motionTimeS = m.motionTimeS;
         const auto& md = m.frf.metadata;
-        const auto pk = md.find("peak_Nm");
         ar.peakNm = kNaN;
-        if (pk != md.end())
-            if (auto x = model::parseNumber(pk->second))
+        if (const auto* pk = md.find("peak_Nm"))
+            if (auto x = pk->number())
                 ar.peakNm = *x;
-        const auto cl = md.find("voltage_clamped_samples");
-        ar.voltageLimited = cl != md.end() && cl->second != "0";
+        const auto* cl = md.find("voltage_clamped_samples");
+        ar.voltageLimited = cl && cl->text() != "0";
         map.motionTimeS += m.motionTimeS;
         if (a == 0)
             for (std::size_t k = 0; k < m.frf.size(); ++k) {
@@ -349,9 +348,8 @@ Result<BacklashEstimate> measureBacklash(device::Drive& drive, const std::string
         return r.error();
     if (!r->trace)
         return makeError(ErrorCode::Device, "the reversal gave no trace");
-    const auto it = r->trace->metadata.find(device::kMotionTimeMetadataKey);
-    if (it != r->trace->metadata.end())
-        if (auto x = model::parseNumber(it->second))
+    if (const auto* v = r->trace->metadata.find(device::kMotionTimeMetadataKey))
+        if (auto x = v->number())
             motionS = *x;
     return backlashFromReversal(*r->trace);
 }
@@ -394,9 +392,8 @@ Result<InUseMap> amplitudeMapInUse(device::Drive& drive, const AmplitudeMapOptio
     for (double x : tq->data)
         out.peakTorqueNm = std::max(out.peakTorqueNm, std::abs(x));
     double moveS = plan ? plan->motionTimeS : 0.0;
-    const auto it = r->trace->metadata.find(device::kMotionTimeMetadataKey);
-    if (it != r->trace->metadata.end())
-        if (auto x = model::parseNumber(it->second))
+    if (const auto* v = r->trace->metadata.find(device::kMotionTimeMetadataKey))
+        if (auto x = v->number())
             moveS = *x;
     out.useTorquePct = 100.0 * out.peakTorqueNm / ratedTorqueNm;
     AmplitudeMapOptions o = options;

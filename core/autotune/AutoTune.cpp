@@ -100,9 +100,8 @@ Result<device::TestRun> Sequence::test(const device::TestRequest& r, const std::
     }
     double t = plan ? plan->motionTimeS : 0.0;
     if (run->trace) {
-        const auto it = run->trace->metadata.find(device::kMotionTimeMetadataKey);
-        if (it != run->trace->metadata.end())
-            if (auto x = model::parseNumber(it->second))
+        if (const auto* v = run->trace->metadata.find(device::kMotionTimeMetadataKey))
+            if (auto x = v->number())
                 t = *x;
     }
     motionS = t;

@@ -40,7 +40,7 @@ std::optional<AutoTuneResult> Sequence::plant()
         if (m_plant.valid[i] && std::abs(lb) > 0.0 && std::isfinite(std::abs(la)))
             m_plant.h[i] *= la / lb;
     }
-    m_plant.metadata["measurement"] = "plant";
+    m_plant.metadata.set("measurement", "plant");
     m_phSlide.clear();
     validLines(m_plant, m_pf, m_ph);
     for (std::size_t i = 0, k = 0; i < m_plant.size(); ++i)

@@ -100,8 +100,8 @@ Result<Step> Positions::move()
         return makeError(run.error().code, "the point-to-point move: " + run.error().detail);
     double t = plan ? plan->motionTimeS : 0.0;
     if (run->trace)
-        if (auto it = run->trace->metadata.find(device::kMotionTimeMetadataKey); it != run->trace->metadata.end())
-            if (auto x = model::parseNumber(it->second))
+        if (const auto* v = run->trace->metadata.find(device::kMotionTimeMetadataKey))
+            if (auto x = v->number())
                 t = *x;
     s.motionTimeS = t;
     m_motion += t;

@@ -351,8 +351,8 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         rec.motionTimeS = m.motionTimeS;
         rec.shaped = !rf.multisineShape.empty();
         rec.limitedBy = limitedBy;
-        const auto clampedIt = m.frf.metadata.find("voltage_clamped_samples");
-        rec.voltageReached = clampedIt != m.frf.metadata.end() && clampedIt->second != "0";
+        const auto* clamped = m.frf.metadata.find("voltage_clamped_samples");
+        rec.voltageReached = clamped != nullptr && clamped->text() != "0";
         // The voltage per torque of the excited lines, from the trace (when it has the voltage).
         const auto* volt = run->trace ? run->trace->channel("voltage_V") : nullptr;
         const auto* inj = run->trace ? run->trace->channel("injection_Nm") : nullptr;
@@ -483,18 +483,18 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
     }
     m.motionTimeS = out.motionTimeS;
     auto& md = m.frf.metadata;
-    md["adaptive"] = "true";
-    md["adaptive_passes"] = std::to_string(out.passes.size());
-    md["adaptive_time_budget_s"] = fmt(o.timeBudgetS, 6);
-    md["motion_time_s"] = fmt(out.motionTimeS, 6);
-    md["valid_lines"] = std::to_string(out.validLines);
+    md.set("adaptive", "true");
+    md.set("adaptive_passes", static_cast<double>(out.passes.size()));
+    md.set("adaptive_time_budget_s", o.timeBudgetS);
+    md.set("motion_time_s", out.motionTimeS);
+    md.set("valid_lines", static_cast<double>(out.validLines));
     std::size_t byReason[4] = {0, 0, 0, 0};
     for (const auto& b : out.invalid)
         ++byReason[static_cast<int>(b.reason)];
-    md["invalid_noise"] = std::to_string(byReason[0]);
-    md["invalid_torque_limit"] = std::to_string(byReason[1]);
-    md["invalid_voltage_limit"] = std::to_string(byReason[2]);
-    md["invalid_nonlinear"] = std::to_string(byReason[3]);
+    md.set("invalid_noise", static_cast<double>(byReason[0]));
+    md.set("invalid_torque_limit", static_cast<double>(byReason[1]));
+    md.set("invalid_voltage_limit", static_cast<double>(byReason[2]));
+    md.set("invalid_nonlinear", static_cast<double>(byReason[3]));
     md.erase("noise_invalid_lines");
     return out;
 }

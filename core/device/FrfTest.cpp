@@ -79,7 +79,7 @@ Result<HoldPeriods> holdPeriods(const FrfPlan& plan, const model::Capture& trace
          {std::pair{"current_period_s", &p.currentS}, std::pair{"velocity_period_s", &p.velocityS}}) {
         if (*value > 0.0)
             continue;
-        const auto v = model::optionalMetadataNumber(trace.metadata, key);
+        const auto v = trace.metadata.optionalNumber(key);
         if (!v)
             return makeError(ErrorCode::BadInput, "FRF trace: " + v.error().detail);
         *value = v->value_or(0.0);
@@ -106,8 +106,9 @@ Status correctHold(FrfMeasurement& out, const FrfPlan& plan, const HoldPeriods& 
     if (plan.method != FrfMethod::Prbs) {
         if (auto st = dsp::correctInjectionHold(out.frf, p.currentS, p.ticksPerVelocity); !st)
             return st;
-        out.sweep.metadata["injection_hold_period_s"] = md.at("injection_hold_period_s");
-        out.sweep.metadata["injection_hold_ticks"] = md.at("injection_hold_ticks");
+        for (const char* key : {"injection_hold_period_s", "injection_hold_ticks"})
+            if (const auto* v = md.find(key))
+                out.sweep.metadata.set(key, *v);
         return Status::success();
     }
     for (std::size_t i = 0; i < out.frf.size() && p.velocityPerSample > 1; ++i) {
@@ -117,9 +118,9 @@ Status correctHold(FrfMeasurement& out, const FrfPlan& plan, const HoldPeriods& 
         else
             out.frf.valid[i] = false;
     }
-    md["injection_hold_corrected"] = "true";
-    md["injection_hold"] = "prbs-held-per-trace-sample";
-    md["injection_hold_velocity_periods"] = std::to_string(p.velocityPerSample);
+    md.set("injection_hold_corrected", "true");
+    md.set("injection_hold", "prbs-held-per-trace-sample");
+    md.set("injection_hold_velocity_periods", static_cast<double>(p.velocityPerSample));
     return Status::success();
 }
 
@@ -305,16 +306,16 @@ Result<FrfMeasurement> evaluateFrfSignals(const FrfPlan& plan, std::span<const d
             out.frf.push(f, full->h[i], full->coherence[i], full->valid[i] && f < 0.5 * plan.fsHz);
             next = f * step;
         }
-        out.frf.metadata["method"] = "prbs";
-        out.frf.metadata["fs_Hz"] = num(plan.fsHz);
-        out.frf.metadata["nperseg"] = std::to_string(plan.nperseg);
+        out.frf.metadata.set("method", "prbs");
+        out.frf.metadata.set("fs_Hz", plan.fsHz);
+        out.frf.metadata.set("nperseg", static_cast<double>(plan.nperseg));
         return out;
     }
     dsp::SweepRecording& rec = out.sweep;
     rec.fsHz = plan.fsHz;
     rec.amplitude = plan.amplitudeNm;
-    rec.metadata["excitation"] = excitationName;
-    rec.metadata["response"] = responseName;
+    rec.metadata.set("excitation", excitationName);
+    rec.metadata.set("response", responseName);
     for (const auto& s : plan.segments) {
         dsp::SweepBlock b;
         b.freqHz = s.freqHz;
@@ -374,24 +375,24 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
                 }
             }
         }
-        out.frf.metadata["voltage_clamped_points"] = std::to_string(clamped);
+        out.frf.metadata.set("voltage_clamped_points", static_cast<double>(clamped));
     }
     if (auto st = correctHold(out, plan, *periods); !st)
         return st.error();
     auto& md = out.frf.metadata;
-    md["input"] = "injection_Nm";
-    md["output"] = "-torque_cmd_Nm";
-    md["measurement"] = "complementary";  // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
-    md["amplitude_Nm"] = num(plan.amplitudeNm);
-    md["settle_s"] = num(plan.timing.settleS);
-    md["settle_periods"] = num(plan.timing.settlePeriods);
-    md["min_measure_s"] = num(plan.timing.minMeasureS);
-    md["loop_time_constant_s"] = num(plan.timing.timeConstantS);
-    md["motion_time_s"] = num(out.motionTimeS);
+    md.set("input", "injection_Nm");
+    md.set("output", "-torque_cmd_Nm");
+    md.set("measurement", "complementary"); // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
+    md.set("amplitude_Nm", plan.amplitudeNm);
+    md.set("settle_s", plan.timing.settleS);
+    md.set("settle_periods", plan.timing.settlePeriods);
+    md.set("min_measure_s", plan.timing.minMeasureS);
+    md.set("loop_time_constant_s", plan.timing.timeConstantS);
+    md.set("motion_time_s", out.motionTimeS);
     for (const auto& [k, v] : md) {
         // The sweep keeps the raw −T_c and d: the correction is redone by whoever re-analyses it.
         if (k != "method" && k != "fs_Hz" && k != "injection_hold_corrected")
-            out.sweep.metadata[k] = v;
+            out.sweep.metadata.set(k, v);
     }
     return out;
 }

@@ -64,19 +64,19 @@ Result<model::Capture> ModbusDrive::readTrace()
         cap.channels.push_back({line, {}});
     for (std::string line; std::getline(ms, line);) {
         if (auto eq = line.find('='); eq != std::string::npos)
-            cap.metadata[line.substr(0, eq)] = line.substr(eq + 1);
+            cap.metadata.setFromText(line.substr(0, eq), line.substr(eq + 1));
     }
     // The trace's rate: the velocity-loop divider or, for a current step, the current-loop rate.
-    if (!cap.metadata.count("fs_Hz") && rateHz > 0.0) {
-        model::setMetadataNumber(cap.metadata, "fs_Hz", rateHz);
-    } else if (cap.metadata.count("fs_Hz")) {
-        const auto fsHz = model::metadataNumber(cap.metadata, "fs_Hz");
+    if (!cap.metadata.contains("fs_Hz") && rateHz > 0.0) {
+        cap.metadata.set("fs_Hz", rateHz);
+    } else if (cap.metadata.contains("fs_Hz")) {
+        const auto fsHz = cap.metadata.number("fs_Hz");
         if (!fsHz)
             return makeError(ErrorCode::Device, m_uri.text + ": trace " + fsHz.error().detail);
         if (!(std::abs(*fsHz - rateHz) <= 1e-9 * std::abs(rateHz)))
-            return makeError(ErrorCode::Device, m_uri.text + ": trace metadata says fs_Hz=" + cap.metadata["fs_Hz"] +
-                                                    " but status.trace_rate_hz is " + model::formatNumber(rateHz, 17) +
-                                                    " Hz");
+            return makeError(ErrorCode::Device,
+                             m_uri.text + ": trace metadata says fs_Hz=" + *cap.metadata.text("fs_Hz") +
+                                 " but status.trace_rate_hz is " + model::formatNumber(rateHz, 17) + " Hz");
     }
     if (static_cast<int>(cap.channels.size()) != channels)
         return makeError(ErrorCode::Device, m_uri.text + ": trace lists " + std::to_string(cap.channels.size()) +
@@ -195,9 +195,9 @@ Result<FrfMeasurement> ModbusDrive::readFrequencyResponse()
             continue;
         const std::string k = line.substr(0, eq), v = line.substr(eq + 1);
         if (k.rfind("frf.", 0) == 0)
-            m.frf.metadata[k.substr(4)] = v;
+            m.frf.metadata.setFromText(k.substr(4), v);
         else if (k.rfind("sweep.", 0) == 0)
-            m.sweep.metadata[k.substr(6)] = v;
+            m.sweep.metadata.setFromText(k.substr(6), v);
     }
     return m;
 }

@@ -15,9 +15,8 @@ double machineTime(const TestRun& run, const Result<TestPlan>& plan)
 {
     double t = plan ? plan->motionTimeS : 0.0;
     if (run.trace) {
-        const auto it = run.trace->metadata.find(kMotionTimeMetadataKey);
-        if (it != run.trace->metadata.end())
-            if (auto x = model::parseNumber(it->second))
+        if (const auto* v = run.trace->metadata.find(kMotionTimeMetadataKey))
+            if (auto x = v->number())
                 t = *x;
     }
     return t;

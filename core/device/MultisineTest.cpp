@@ -6,20 +6,11 @@
 #include "core/device/MultisineTest.h"
 
 #include "core/dsp/InjectionHold.h"
-#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace axistune::device {
-namespace {
-
-std::string num(double v)
-{
-    return model::formatNumber(v, 10);
-}
-
-} // namespace
 
 std::vector<dsp::MultisineBand> multisineBandsOf(const FrfTest& r)
 {
@@ -114,17 +105,17 @@ Result<FrfMeasurement> evaluateMultisineTrace(const MultisinePlan& plan, const m
             std::fill(out.frf.valid.begin(), out.frf.valid.end(), false);
     }
     auto& md = out.frf.metadata;
-    md["voltage_clamped_samples"] = std::to_string(clamped);
-    md["input"] = "injection_Nm";
-    md["output"] = "-torque_cmd_Nm";
-    md["measurement"] = "complementary"; // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
-    md["amplitude_Nm"] = num(plan.design.peak);
-    md["peak_Nm"] = num(plan.design.peak);
-    md["rms_Nm"] = num(plan.design.rms);
-    md["settle_s"] = num(static_cast<double>(plan.settleSamples) / plan.design.fsHz);
-    md["period_s"] = num(static_cast<double>(plan.design.periodSamples()) / plan.design.fsHz);
-    md["loop_time_constant_s"] = num(plan.timing.timeConstantS);
-    md["motion_time_s"] = num(out.motionTimeS);
+    md.set("voltage_clamped_samples", static_cast<double>(clamped));
+    md.set("input", "injection_Nm");
+    md.set("output", "-torque_cmd_Nm");
+    md.set("measurement", "complementary"); // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
+    md.set("amplitude_Nm", plan.design.peak);
+    md.set("peak_Nm", plan.design.peak);
+    md.set("rms_Nm", plan.design.rms);
+    md.set("settle_s", static_cast<double>(plan.settleSamples) / plan.design.fsHz);
+    md.set("period_s", static_cast<double>(plan.design.periodSamples()) / plan.design.fsHz);
+    md.set("loop_time_constant_s", plan.timing.timeConstantS);
+    md.set("motion_time_s", out.motionTimeS);
     return out;
 }
 

@@ -282,26 +282,28 @@ Result<ScopeCapture> ScopeRecorder::capture() const
     return m_capture;
 }
 
-model::Capture scopeCaptureToTable(const ScopeCapture& c, const std::string& axis,
-                                   const std::map<std::string, std::string>& extra)
+model::Capture scopeCaptureToTable(const ScopeCapture& c, const std::string& axis, const model::Metadata& extra)
 {
     model::Capture t;
     t.metadata = extra;
-    model::setMetadataNumber(t.metadata, "fs_Hz", c.rateHz);
-    t.metadata["axis"] = axis;
-    t.metadata["scope_mode"] = c.triggered ? "triggered" : "roll";
+    t.metadata.set("fs_Hz", c.rateHz);
+    t.metadata.set("axis", axis);
+    t.metadata.set("scope_mode", c.triggered ? "triggered" : "roll");
     if (c.triggered) {
-        t.metadata["trigger_sample"] = std::to_string(c.triggerSample);
-        t.metadata["trigger_row"] = std::to_string(c.triggerRow());
+        // A number while a double holds it exactly; larger sample numbers stay their exact digits.
+        t.metadata.set("trigger_sample", c.triggerSample <= (std::uint64_t{1} << 53)
+                                             ? model::MetadataValue(static_cast<double>(c.triggerSample))
+                                             : model::MetadataValue(std::to_string(c.triggerSample)));
+        t.metadata.set("trigger_row", static_cast<double>(c.triggerRow()));
     }
-    t.metadata["missing_samples"] = std::to_string(c.missingSamples());
+    t.metadata.set("missing_samples", static_cast<double>(c.missingSamples()));
     model::Channel sample{"sample", {}};
     sample.data.reserve(c.samples.size());
     for (const auto n : c.samples)
         sample.data.push_back(static_cast<double>(n));
     t.channels.push_back(std::move(sample));
     for (std::size_t k = 0; k < c.channels.size() && k < c.columns.size(); ++k) {
-        t.metadata["unit." + c.channels[k].name] = c.channels[k].unit;
+        t.metadata.set("unit." + c.channels[k].name, c.channels[k].unit);
         t.channels.push_back({c.channels[k].name, c.columns[k]});
     }
     return t;

@@ -168,7 +168,7 @@ private:
 /// sample numbers), then the channels; metadata fs_Hz, axis, the mode, the trigger, missing_samples and
 /// unit.CHANNEL for every channel. `extra` is added to the metadata (connection, divider …).
 model::Capture scopeCaptureToTable(const ScopeCapture& capture, const std::string& axis,
-                                   const std::map<std::string, std::string>& extra = {});
+                                   const model::Metadata& extra = {});
 
 /// Appends roll-mode rows (channels in the capture's order) to a roll capture.
 void appendScopeRows(ScopeCapture& capture, const ScopeRows& rows);

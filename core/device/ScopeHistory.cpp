@@ -2,7 +2,7 @@
 // Bounded roll history and the table → ScopeCapture conversion (docs/scope.md "The GUI scope").
 #include "core/device/ScopeHistory.h"
 
-#include "core/model/Number.h"
+#include "core/model/Metadata.h"
 
 #include <algorithm>
 #include <charconv>
@@ -82,15 +82,25 @@ ScopeCapture ScopeHistory::snapshot(std::size_t rows) const
 namespace {
 Result<std::uint64_t> wholeNumber(const model::Metadata& m, const std::string& key)
 {
-    const auto it = m.find(key);
-    if (it == m.end())
+    const auto* value = m.find(key);
+    if (value == nullptr)
         return makeError(ErrorCode::BadInput, "scope table: metadata " + key + " is missing");
-    std::uint64_t v = 0;
-    const auto* end = it->second.data() + it->second.size();
-    const auto [p, ec] = std::from_chars(it->second.data(), end, v);
-    if (ec != std::errc() || p != end)
+    const std::string text = value->text();
+    const auto notWhole = [&] {
         return makeError(ErrorCode::BadInput,
-                         "scope table: metadata " + key + " = '" + it->second + "' is not a whole number >= 0");
+                         "scope table: metadata " + key + " = '" + text + "' is not a whole number >= 0");
+    };
+    if (value->isNumber()) { // a number, also one a file wrote in exponent form ("2e+06")
+        const double d = value->number().value_or(-1.0);
+        if (!(d >= 0.0 && d == std::floor(d) && d < 18446744073709551616.0))
+            return notWhole();
+        return static_cast<std::uint64_t>(d);
+    }
+    std::uint64_t v = 0;
+    const auto* end = text.data() + text.size();
+    const auto [p, ec] = std::from_chars(text.data(), end, v);
+    if (ec != std::errc() || p != end)
+        return notWhole();
     return v;
 }
 } // namespace
@@ -98,14 +108,14 @@ Result<std::uint64_t> wholeNumber(const model::Metadata& m, const std::string& k
 Result<ScopeCapture> scopeCaptureFromTable(const model::Capture& table)
 {
     ScopeCapture c;
-    auto fs = model::metadataNumber(table.metadata, "fs_Hz");
+    auto fs = table.metadata.number("fs_Hz");
     if (!fs)
         return fs.error();
     if (!(std::isfinite(*fs) && *fs > 0.0))
         return makeError(ErrorCode::BadInput, "scope table: fs_Hz must be finite and > 0");
     c.rateHz = *fs;
-    const auto mode = table.metadata.find("scope_mode");
-    c.triggered = mode != table.metadata.end() && mode->second == "triggered";
+    const auto* mode = table.metadata.find("scope_mode");
+    c.triggered = mode != nullptr && mode->text() == "triggered";
     if (c.triggered) {
         auto t = wholeNumber(table.metadata, "trigger_sample");
         if (!t)
@@ -132,8 +142,7 @@ Result<ScopeCapture> scopeCaptureFromTable(const model::Capture& table)
             return makeError(ErrorCode::BadInput, "scope table: column " + ch.name + " has " +
                                                       std::to_string(ch.data.size()) + " rows, 'sample' has " +
                                                       std::to_string(s.size()));
-        const auto u = table.metadata.find("unit." + ch.name);
-        c.channels.push_back({ch.name, u == table.metadata.end() ? std::string() : u->second, {}});
+        c.channels.push_back({ch.name, table.metadata.textOr("unit." + ch.name, ""), {}});
         c.columns.push_back(ch.data);
     }
     return c;

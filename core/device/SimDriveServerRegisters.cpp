@@ -189,7 +189,7 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
         return u16(m_trace ? static_cast<int>(m_trace->channels.size()) : 0);
     if (n == "status.trace_rate_hz") {
         // 0 when there is no trace (or its rate is unreadable): the client then refuses the trace.
-        const auto fs = m_trace ? model::metadataNumber(m_trace->metadata, "fs_Hz") : Result<double>(0.0);
+        const auto fs = m_trace ? m_trace->metadata.number("fs_Hz") : Result<double>(0.0);
         return encodeF64(fs ? *fs : 0.0, o, buf);
     }
     if (n == "status.message")

@@ -235,7 +235,7 @@ void SimDriveServer::takeTrace()
     for (const auto& c : cap.channels)
         m_traceNames += c.name + "\n";
     for (const auto& [k, v] : cap.metadata)
-        m_traceMeta += k + "=" + v + "\n";
+        m_traceMeta += k + "=" + v.text() + "\n";
     m_trace = std::move(cap);
 }
 
@@ -265,9 +265,9 @@ void SimDriveServer::takeFrequencyResponse()
     b[0] = static_cast<double>(b.size());
     m_frfMeta.clear();
     for (const auto& [k, v] : r->frf.metadata)
-        m_frfMeta += "frf." + k + "=" + v + "\n";
+        m_frfMeta += "frf." + k + "=" + v.text() + "\n";
     for (const auto& [k, v] : r->sweep.metadata)
-        m_frfMeta += "sweep." + k + "=" + v + "\n";
+        m_frfMeta += "sweep." + k + "=" + v.text() + "\n";
 }
 
 void SimDriveServer::step()

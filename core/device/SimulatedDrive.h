@@ -124,7 +124,7 @@ private:
     std::optional<FrfMeasurement> m_frf;
     std::shared_ptr<CircleState> m_circle; ///< the running circle test
     double m_recordEnd = -1.0; ///< current step: machine time the record ends and the hold begins (< 0: none)
-    std::string m_stepStart;   ///< current step: machine time of the step, as capture metadata
+    double m_stepStart = 0.0;  ///< current step: machine time of the step [s], capture metadata step_start_s
     FaultInjection m_faults;
     int m_requests = 0;
     // The scope.

@@ -256,8 +256,8 @@ Result<TestStatus> SimulatedDrive::pollCircle()
     if (!c.run || !c.run->done())
         return m_status;
     m_trace = c.run->trace();
-    m_trace->metadata["machine"] = m_machine.name;
-    model::setMetadataNumber(m_trace->metadata, kMotionTimeMetadataKey, c.x->time() - c.startS);
+    m_trace->metadata.set("machine", m_machine.name);
+    m_trace->metadata.set(kMotionTimeMetadataKey, c.x->time() - c.startS);
     // The axes hold the end point of the path; the parameters from before the test return.
     c.x->setPositionProfile(sim::MotionProfile(c.path.endPosition(false)));
     c.y->setPositionProfile(sim::MotionProfile(c.path.endPosition(true)));

@@ -44,10 +44,10 @@ Result<FrfMeasurement> evaluateOnHost(const TestRequest& request, const model::P
     auto m = evaluateFrfRequestTrace(*plan, trace);
     if (!m)
         return makeError(m.error().code, "FRF evaluation on the host: " + m.error().detail);
-    m.value().frf.metadata["evaluated_by"] = "host";
-    m.value().frf.metadata["axis"] = request.axis;
-    if (const auto it = trace.metadata.find("machine"); it != trace.metadata.end())
-        m.value().frf.metadata["machine"] = it->second;
+    m.value().frf.metadata.set("evaluated_by", "host");
+    m.value().frf.metadata.set("axis", request.axis);
+    if (const auto* machine = trace.metadata.find("machine"))
+        m.value().frf.metadata.set("machine", *machine);
     return m;
 }
 

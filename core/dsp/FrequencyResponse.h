@@ -4,9 +4,10 @@
 // it, and a validity flag per point (e.g. above the alias-free range of a sine-stream method).
 // Phase convention: phase = arg(h) in degrees, in (-180, 180]; unwrapped phase removes 360° jumps.
 
+#include "core/model/Metadata.h"
+
 #include <complex>
 #include <cstddef>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ struct FrequencyResponse {
     std::vector<std::complex<double>> h;        ///< response (output/input, dimension of the channels)
     std::vector<double> coherence;              ///< 0..1, NaN where not defined (sine streams)
     std::vector<bool> valid;                    ///< false where the method cannot measure this point
-    std::map<std::string, std::string> metadata;  ///< "# key=value" lines of the FRF CSV
+    model::Metadata metadata;                   ///< "# key=value" lines of the FRF CSV (numbers as numbers)
 
     std::size_t size() const { return freqHz.size(); }
     bool empty() const { return freqHz.empty(); }

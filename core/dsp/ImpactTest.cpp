@@ -246,19 +246,19 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
                             " % of its peak: leakage; use an exponential window (--exp-tau) or a longer record");
     }
     auto& md = res.frf.metadata;
-    md["method"] = "impact-h1";
-    md["units"] = impactUnits(o.output);
-    md["hits"] = std::to_string(res.used);
-    md["hits_dropped"] = std::to_string(hits.size() - res.used);
-    md["fs_Hz"] = num(o.fsHz, 17);
-    md["block_s"] = num(res.blockS, 10);
-    md["pre_trigger_s"] = num(res.preTriggerS, 10);
-    md["force_window_s"] = num(res.forceWindowS, 10);
-    md["exp_window_tau_s"] = num(o.expTauS, 10);
-    md["exp_window_decay_1_s"] = num(sigma, 17);
-    md["force_band_Hz"] = num(res.forceBandHz, 6);
-    md["force_range_dB"] = num(o.forceRangeDb, 6);
-    md["fmin_Hz"] = num(fmin, 6);
+    md.set("method", "impact-h1");
+    md.set("units", impactUnits(o.output));
+    md.set("hits", static_cast<double>(res.used));
+    md.set("hits_dropped", static_cast<double>(hits.size() - res.used));
+    md.set("fs_Hz", o.fsHz);
+    md.set("block_s", res.blockS);
+    md.set("pre_trigger_s", res.preTriggerS);
+    md.set("force_window_s", res.forceWindowS);
+    md.set("exp_window_tau_s", o.expTauS);
+    md.set("exp_window_decay_1_s", sigma);
+    md.set("force_band_Hz", res.forceBandHz);
+    md.set("force_range_dB", o.forceRangeDb);
+    md.set("fmin_Hz", fmin);
     return res;
 }
 

@@ -4,8 +4,6 @@
 // derivation in docs/frequency-response-sim.md, "Injection hold").
 #include "core/dsp/InjectionHold.h"
 
-#include "core/model/Number.h"
-
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -31,8 +29,8 @@ std::complex<double> injectionHoldFactor(double fHz, double currentPeriodS, int 
 
 bool isInjectionHoldCorrected(const FrequencyResponse& frf)
 {
-    auto it = frf.metadata.find("injection_hold_corrected");
-    return it != frf.metadata.end() && it->second == "true";
+    const auto* v = frf.metadata.find("injection_hold_corrected");
+    return v && v->text() == "true";
 }
 
 Status correctInjectionHold(FrequencyResponse& frf, double currentPeriodS, int ticksPerVelocity)
@@ -51,9 +49,9 @@ Status correctInjectionHold(FrequencyResponse& frf, double currentPeriodS, int t
             frf.valid[i] = false;
         }
     }
-    frf.metadata["injection_hold_corrected"] = "true";
-    frf.metadata["injection_hold_period_s"] = model::formatNumber(currentPeriodS, 10);
-    frf.metadata["injection_hold_ticks"] = std::to_string(ticksPerVelocity);
+    frf.metadata.set("injection_hold_corrected", "true");
+    frf.metadata.set("injection_hold_period_s", currentPeriodS);
+    frf.metadata.set("injection_hold_ticks", static_cast<double>(ticksPerVelocity));
     return Status::success();
 }
 

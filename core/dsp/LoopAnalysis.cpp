@@ -12,7 +12,7 @@ FrequencyResponse openLoopFromClosedLoop(const FrequencyResponse& m, LoopMeasure
 {
     FrequencyResponse l;
     l.metadata = m.metadata;
-    l.metadata["loop"] = "open-loop";
+    l.metadata.set("loop", "open-loop");
     for (std::size_t i = 0; i < m.size(); ++i) {
         const std::complex<double> v = m.h[i];
         std::complex<double> den;

@@ -369,20 +369,20 @@ Result<MultisineAnalysis> analyzeMultisine(const MultisineDesign& d, std::span<c
         out.stats.excitationPhasor.push_back(std::abs(sx[i]) / pd);
     }
     auto& md = out.frf.metadata;
-    md["method"] = o.threePhase ? "multisine" : "multisine-single-phase";
-    md["fs_Hz"] = num(d.fsHz);
-    md["lines"] = std::to_string(lines);
-    md["spacing_Hz"] = num(d.spacingHz);
-    md["window_samples"] = std::to_string(m);
-    md["periods"] = std::to_string(periods);
-    md["crest_factor"] = num(d.crestFactor);
-    md["phases"] = multisinePhasesName(d.phases);
-    md["max_relative_noise"] = num(o.maxRelativeNoise);
-    md["noise_invalid_lines"] = std::to_string(out.stats.invalidNoise);
+    md.set("method", o.threePhase ? "multisine" : "multisine-single-phase");
+    md.set("fs_Hz", d.fsHz);
+    md.set("lines", static_cast<double>(lines));
+    md.set("spacing_Hz", d.spacingHz);
+    md.set("window_samples", static_cast<double>(m));
+    md.set("periods", static_cast<double>(periods));
+    md.set("crest_factor", d.crestFactor);
+    md.set("phases", multisinePhasesName(d.phases));
+    md.set("max_relative_noise", o.maxRelativeNoise);
+    md.set("noise_invalid_lines", static_cast<double>(out.stats.invalidNoise));
     if (!o.threePhase) {
         // A window of 1/Δf holds m + 1/3 periods of every line: the other lines and the
         // sum-frequency terms do not cancel, so no line of a single-phase analysis is a measurement.
-        md["invalid_reason"] = "single-phase analysis of a three-phase multisine";
+        md.set("invalid_reason", "single-phase analysis of a three-phase multisine");
     }
     return out;
 }

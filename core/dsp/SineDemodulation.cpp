@@ -6,7 +6,6 @@
 #include "core/dsp/SineDemodulation.h"
 
 #include "core/model/Constants.h"
-#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
@@ -132,8 +131,10 @@ Result<FrequencyResponse> sineStreamFrf(const SweepRecording& rec)
         (dy->multiSweep ? anyMulti : anyConventional) = true;
         frf.push(f, dy->phasor() / dx->phasor(), std::nan(""), dy->valid);
     }
-    frf.metadata["method"] = anyMulti && anyConventional ? "sine-stream-mixed" : anyMulti ? "multisweep" : "conventional";
-    model::setMetadataNumber(frf.metadata, "fs_Hz", rec.fsHz);
+    frf.metadata.set("method", anyMulti && anyConventional ? "sine-stream-mixed"
+                               : anyMulti                  ? "multisweep"
+                                                           : "conventional");
+    frf.metadata.set("fs_Hz", rec.fsHz);
     return frf;
 }
 

@@ -61,7 +61,7 @@ struct SweepBlock {
 struct SweepRecording {
     double fsHz = 0.0;
     double amplitude = 0.0;                          ///< nominal excitation amplitude (metadata)
-    std::map<std::string, std::string> metadata;     ///< all "# key=value" lines, fs_Hz and amplitude included
+    model::Metadata metadata;                        ///< all "# key=value" lines, fs_Hz and amplitude included
     std::vector<SweepBlock> blocks;
 };
 

@@ -134,8 +134,8 @@ FrequencyResponse frfFromSpectra(const CrossSpectra& s, FrfEstimator estimator)
             h = {0.0, 0.0};  // undefined; flagged invalid (kept finite so that files stay readable)
         frf.push(s.freqHz[k], h, coh, ok);
     }
-    frf.metadata["method"] = estimator == FrfEstimator::H1 ? "welch-h1" : "welch-h2";
-    frf.metadata["segments"] = std::to_string(s.segments);
+    frf.metadata.set("method", estimator == FrfEstimator::H1 ? "welch-h1" : "welch-h2");
+    frf.metadata.set("segments", static_cast<double>(s.segments));
     return frf;
 }
 
@@ -153,8 +153,8 @@ Result<FrequencyResponse> welchFrf(std::span<const double> x, std::span<const do
                                                         ": the samples are too large (near the double range)");
     }
     auto frf = frfFromSpectra(s.value(), estimator);
-    frf.metadata["nperseg"] = std::to_string(options.nperseg);
-    frf.metadata["noverlap"] = std::to_string(options.noverlap.value_or(options.nperseg / 2));
+    frf.metadata.set("nperseg", static_cast<double>(options.nperseg));
+    frf.metadata.set("noverlap", static_cast<double>(options.noverlap.value_or(options.nperseg / 2)));
     return frf;
 }
 

@@ -188,7 +188,7 @@ Result<BallBarTrace> readBallBarCsv(std::istream& in, const std::string& sourceN
                 return bad(where + ", metadata '" + key + "': given twice (first on line " +
                            std::to_string(meta[key].line) + ")");
             meta[key] = MetaLine{trim(line.substr(eq + 1)), lineNo};
-            t.metadata[key] = meta[key].value;
+            t.metadata.setFromText(key, meta[key].value);
             continue;
         }
         std::vector<std::string> fields;
@@ -270,7 +270,7 @@ Status writeBallBarCsv(std::ostream& out, const BallBarTrace& t)
                                                 "center_x_mm", "center_y_mm", "dT_x_Nm",   "dT_y_Nm"};
     for (const auto& [k, v] : t.metadata) {
         if (!kWritten.count(k))
-            out << "# " << k << '=' << v << '\n';
+            out << "# " << k << '=' << v.text() << '\n';
     }
     out << "angle_deg,deviation_um\n";
     for (std::size_t i = 0; i < t.size(); ++i)

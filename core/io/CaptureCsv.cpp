@@ -59,7 +59,7 @@ Result<model::Capture> readCaptureCsv(std::istream& in, const std::string& sourc
             const std::string_view body = trimView(t.substr(1));
             const auto eq = body.find('=');
             if (eq != std::string_view::npos)
-                cap.metadata[std::string(trimView(body.substr(0, eq)))] = std::string(trimView(body.substr(eq + 1)));
+                cap.metadata.setFromText(trimView(body.substr(0, eq)), std::string(trimView(body.substr(eq + 1))));
             continue;  // a plain comment otherwise
         }
         if (!haveHeader) {
@@ -126,7 +126,7 @@ Status writeCaptureCsv(std::ostream& out, const model::Capture& capture)
             return makeError(ErrorCode::Internal, "capture channel '" + c.name + "' has a different length");
     }
     for (const auto& [k, v] : capture.metadata)
-        out << "# " << k << '=' << v << '\n';
+        out << "# " << k << '=' << v.text() << '\n';
     for (std::size_t i = 0; i < capture.channels.size(); ++i)
         out << (i ? "," : "") << capture.channels[i].name;
     out << '\n';

@@ -139,7 +139,7 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
         if (line[0] == '#') {
             std::string k, v;
             if (detail::parseMetadataLine(line, k, v))
-                frf.metadata[k] = v;
+                frf.metadata.setFromText(k, std::move(v));
             continue;
         }
         const auto cells = detail::splitCsvLine(line);
@@ -212,8 +212,8 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
         return makeError(ErrorCode::BadInput, sourceName + ": no header line (expected " + kFrfCsvHeader + ")");
     if (frf.empty())
         return makeError(ErrorCode::BadInput, sourceName + ": no data rows");
-    if (auto it = frf.metadata.find("units"); it != frf.metadata.end()) {
-        const std::string unit = it->second;
+    if (const auto* u = frf.metadata.find("units")) {
+        const std::string unit = u->text();
         if (auto st = convertFrfUnits(frf, unit, sourceName); !st)
             return st.error();
     }
@@ -230,9 +230,9 @@ Status convertFrfUnits(dsp::FrequencyResponse& frf, const std::string& unit, con
     }
     for (auto& h : frf.h)
         h *= u->toSi;
-    frf.metadata["units"] = std::string(u->si);
+    frf.metadata.set("units", std::string(u->si));
     if (u->si != unit)
-        frf.metadata["units_in_file"] = unit;
+        frf.metadata.set("units_in_file", unit);
     return {};
 }
 
@@ -257,7 +257,7 @@ Status writeFrfCsv(std::ostream& out, const dsp::FrequencyResponse& frf)
                              "FRF point " + std::to_string(i + 1) + " is not finite; nothing written");
     }
     for (const auto& [k, v] : frf.metadata)
-        out << "# " << k << '=' << v << '\n';
+        out << "# " << k << '=' << v.text() << '\n';
     out << kFrfCsvHeader << '\n';
     using detail::formatDouble;
     for (std::size_t i = 0; i < n; ++i) {

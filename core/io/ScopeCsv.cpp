@@ -44,12 +44,12 @@ Result<ScopeTable> readScopeCsv(std::istream& in, const std::string& sourceName)
     if (!cap)
         return cap.error();
     ScopeTable t;
-    auto fs = model::metadataNumber(cap->metadata, "fs_Hz");
+    auto fs = cap->metadata.number("fs_Hz");
     if (!fs)
         return makeError(ErrorCode::BadInput,
                          sourceName + ": metadata " + fs.error().detail + " (a scope CSV starts with '# fs_Hz=RATE')");
     if (!(std::isfinite(*fs) && *fs > 0.0))
-        return makeError(ErrorCode::BadInput, sourceName + ": metadata fs_Hz=" + cap->metadata.at("fs_Hz") +
+        return makeError(ErrorCode::BadInput, sourceName + ": metadata fs_Hz=" + *cap->metadata.text("fs_Hz") +
                                                   " must be a positive sample rate");
     t.fsHz = *fs;
     const model::Channel* sample = cap->channel("sample");

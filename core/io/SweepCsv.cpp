@@ -43,7 +43,7 @@ Result<dsp::SweepRecording> readSweepCsv(std::istream& in, const std::string& sr
         if (line[0] == '#') {
             std::string k, v;
             if (detail::parseMetadataLine(line, k, v))
-                rec.metadata[k] = v;
+                rec.metadata.setFromText(k, std::move(v));
             continue;
         }
         const auto cells = detail::splitCsvLine(line);
@@ -106,14 +106,14 @@ Result<dsp::SweepRecording> readSweepCsv(std::istream& in, const std::string& sr
         return makeError(ErrorCode::BadInput, src + ": no header line (expected " + kSweepCsvHeader + ")");
     if (rec.blocks.empty())
         return makeError(ErrorCode::BadInput, src + ": no data rows");
-    const auto fs = model::metadataNumber(rec.metadata, "fs_Hz");
+    const auto fs = rec.metadata.number("fs_Hz");
     if (!fs)
         return makeError(ErrorCode::BadInput, src + ": " + fs.error().detail);
     if (!(*fs > 0.0) || model::isDenormal(*fs))
         return makeError(ErrorCode::BadInput,
-                         src + ": metadata 'fs_Hz' is not a positive number ('" + rec.metadata.at("fs_Hz") + "')");
+                         src + ": metadata 'fs_Hz' is not a positive number ('" + *rec.metadata.text("fs_Hz") + "')");
     rec.fsHz = *fs;
-    const auto amplitude = model::optionalMetadataNumber(rec.metadata, "amplitude");
+    const auto amplitude = rec.metadata.optionalNumber("amplitude");
     if (!amplitude)
         return makeError(ErrorCode::BadInput, src + ": " + amplitude.error().detail);
     rec.amplitude = amplitude->value_or(rec.amplitude);
@@ -136,7 +136,7 @@ Status writeSweepCsv(std::ostream& out, const dsp::SweepRecording& rec)
     out << "# amplitude=" << formatDouble(rec.amplitude) << '\n';
     for (const auto& [k, v] : rec.metadata) {
         if (k != "fs_Hz" && k != "amplitude")
-            out << "# " << k << '=' << v << '\n';
+            out << "# " << k << '=' << v.text() << '\n';
     }
     out << kSweepCsvHeader << '\n';
     for (const auto& b : rec.blocks) {

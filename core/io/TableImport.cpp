@@ -166,8 +166,8 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
                 return makeError(ErrorCode::BadInput, sourceName + ", column '" + names[i] + "': unknown unit '" +
                                                           it->second + "' (docs/formats.md lists the units)");
             scale[i] = u->toSi;
-            cap.metadata["unit." + names[i]] = std::string(u->si);
-            cap.metadata["unit_in_file." + names[i]] = it->second;
+            cap.metadata.set("unit." + names[i], std::string(u->si));
+            cap.metadata.set("unit_in_file." + names[i], it->second);
         }
         haveColumns = true;
         return {};
@@ -184,7 +184,7 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
             // "# key=value" with a one-word key is metadata; other comment lines are prose
             if (detail::parseMetadataLine(line.substr(line.find('#')), k, v) &&
                 k.find_first_of(" \t") == std::string::npos)
-                cap.metadata[k] = v;
+                cap.metadata.setFromText(k, std::move(v));
             continue;
         }
         if (sep == 0)
@@ -230,9 +230,9 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
         return makeError(ErrorCode::BadInput, sourceName + ": no data (the file is empty or has only comments)");
     if (cap.size() == 0)
         return makeError(ErrorCode::BadInput, sourceName + ": the header has no data rows");
-    cap.metadata["separator"] = separatorName(sep);
-    cap.metadata["decimal"] = decimalComma.value_or(false) ? "comma" : "point";
-    cap.metadata["first_data_line"] = std::to_string(firstDataLine);
+    cap.metadata.set("separator", separatorName(sep));
+    cap.metadata.set("decimal", decimalComma.value_or(false) ? "comma" : "point");
+    cap.metadata.set("first_data_line", static_cast<double>(firstDataLine));
     return cap;
 }
 
@@ -303,10 +303,10 @@ Result<model::Capture> readHalscope(std::istream& in, const std::string& sourceN
         return makeError(ErrorCode::BadInput, sourceName + ": empty file");
     if (cap.size() == 0)
         return makeError(ErrorCode::BadInput, sourceName + ": no samples after the 'Sampling period' line");
-    cap.metadata["fs_Hz"] = detail::formatDouble(1e9 / periodNs);
-    cap.metadata["sample_period_ns"] = detail::formatDouble(periodNs);
-    cap.metadata["format"] = "halscope";
-    cap.metadata["first_data_line"] = std::to_string(firstDataLine);
+    cap.metadata.set("fs_Hz", 1e9 / periodNs);
+    cap.metadata.set("sample_period_ns", periodNs);
+    cap.metadata.set("format", "halscope");
+    cap.metadata.set("first_data_line", static_cast<double>(firstDataLine));
     return cap;
 }
 
@@ -408,8 +408,13 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
     frf.metadata = table.metadata;
     for (const char* k : {"separator", "decimal", "first_data_line"})
         frf.metadata.erase(k);
-    const std::size_t first =
-        table.metadata.count("first_data_line") ? std::stoul(table.metadata.at("first_data_line")) : 0;
+    std::size_t first = 0;
+    if (table.metadata.contains("first_data_line")) {
+        const auto line = table.metadata.integer("first_data_line");
+        if (!line)
+            return makeError(ErrorCode::BadInput, sourceName + ": " + line.error().detail);
+        first = static_cast<std::size_t>(*line);
+    }
     for (std::size_t i = 0; i < table.size(); ++i) {
         const double fi = f->data[i];
         const std::string at =
@@ -428,11 +433,11 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
         }
         frf.push(fi, h, std::nan(""), true);
     }
-    frf.metadata["column"] = name.empty() ? "re/im" : name;
+    frf.metadata.set("column", name.empty() ? "re/im" : name);
     std::string units = options.units;
     if (units.empty()) {
-        if (auto it = table.metadata.find("units"); it != table.metadata.end())
-            units = it->second;
+        if (const auto* u = table.metadata.find("units"))
+            units = u->text();
     }
     if (!units.empty()) {
         if (auto st = convertFrfUnits(frf, units, sourceName); !st)

@@ -382,13 +382,13 @@ Result<dsp::FrequencyResponse> frfFromUff(const Uff58Record& rec, const std::str
     };
     const std::string n = siToken(num), d = siToken(den);
     if (!n.empty() && !d.empty())
-        frf.metadata["units"] = n + "/" + d;
+        frf.metadata.set("units", n + "/" + d);
     if (assumed)
-        frf.metadata["units_assumed"] = "SI";
-    frf.metadata["source_format"] = "uff58";
-    frf.metadata["uff_id1"] = rec.idLines.empty() ? "" : rec.idLines[0];
-    frf.metadata["uff_response"] = std::to_string(rec.responseNode) + ":" + std::to_string(rec.responseDirection);
-    frf.metadata["uff_reference"] = std::to_string(rec.referenceNode) + ":" + std::to_string(rec.referenceDirection);
+        frf.metadata.set("units_assumed", "SI");
+    frf.metadata.set("source_format", "uff58");
+    frf.metadata.setFromText("uff_id1", rec.idLines.empty() ? "" : rec.idLines[0]);
+    frf.metadata.set("uff_response", std::to_string(rec.responseNode) + ":" + std::to_string(rec.responseDirection));
+    frf.metadata.set("uff_reference", std::to_string(rec.referenceNode) + ":" + std::to_string(rec.referenceDirection));
     return frf;
 }
 
@@ -431,8 +431,8 @@ Result<model::Capture> captureFromUff(const std::vector<Uff58Record>& records, c
     }
     if (!first)
         return makeError(ErrorCode::BadInput, sourceName + ": no time-response record (dataset 58 function type 1)");
-    cap.metadata["fs_Hz"] = detail::formatDouble(1.0 / first->xStep);
-    cap.metadata["source_format"] = "uff58";
+    cap.metadata.set("fs_Hz", 1.0 / first->xStep);
+    cap.metadata.set("source_format", "uff58");
     return cap;
 }
 

@@ -28,12 +28,12 @@ Result<ModalParameters> removeExponentialWindow(const ModalParameters& w, double
 
 Result<double> exponentialWindowDecay(const dsp::FrequencyResponse& frf)
 {
-    const auto v = model::optionalMetadataNumber(frf.metadata, "exp_window_decay_1_s");
+    const auto v = frf.metadata.optionalNumber("exp_window_decay_1_s");
     if (!v)
         return v.error();
     if (!(v->value_or(0.0) >= 0.0))
         return makeError(ErrorCode::BadInput, "metadata 'exp_window_decay_1_s' must be >= 0 ('" +
-                                                  frf.metadata.at("exp_window_decay_1_s") + "')");
+                                                  *frf.metadata.text("exp_window_decay_1_s") + "')");
     return v->value_or(0.0);
 }
 

@@ -3,7 +3,8 @@
 // A ball-bar trace in SI: radial deviation against angle with the test's metadata. Read and written
 // by core/io/BallBarCsv.h, produced by the simulated circle test (core/sim/CircleTest.h).
 
-#include <map>
+#include "core/model/Metadata.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,7 +25,7 @@ struct BallBarTrace {
     std::optional<double> dTyNm;                 ///< reversal torque change of the second axis (p-p)
     std::vector<double> angleRad;                ///< as in the file (unwrapped, monotonic)
     std::vector<double> deviationM;              ///< measured minus nominal radius
-    std::map<std::string, std::string> metadata; ///< every metadata line, verbatim
+    Metadata metadata;                           ///< every metadata line (a file's text kept byte for byte)
 
     std::size_t size() const { return angleRad.size(); }
     /// +1 for counter-clockwise travel, -1 for clockwise.

@@ -4,7 +4,8 @@
 // Channel names carry their unit (DESIGN.md "File formats"): "t_s", "torque_cmd_Nm", "motor_vel_rad_s".
 // Captures are immutable once made; share them as std::shared_ptr<const Capture>.
 
-#include <map>
+#include "core/model/Metadata.h"
+
 #include <string>
 #include <vector>
 
@@ -16,7 +17,7 @@ struct Channel {
 };
 
 struct Capture {
-    std::map<std::string, std::string> metadata;  ///< "# key=value" lines, e.g. fs_Hz=4000
+    Metadata metadata; ///< "# key=value" lines, e.g. fs_Hz=4000 (numbers as numbers)
     std::vector<Channel> channels;
 
     std::size_t size() const { return channels.empty() ? 0 : channels.front().data.size(); }

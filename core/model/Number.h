@@ -5,9 +5,6 @@
 // setlocale), where printf's %g writes "0,5" and strtod stops at the '.'; files, metadata, register
 // texts and messages that are parsed again use these functions, never printf/strtod/atof/stod.
 
-#include "core/model/Result.h"
-
-#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -29,20 +26,5 @@ std::string formatScientific(double v, int decimals);
 std::optional<double> parseNumber(std::string_view text, bool allowNonFinite = false);
 /// A whole integer (optional sign, decimal digits only); nullopt when not an integer or out of range.
 std::optional<long long> parseInteger(std::string_view text);
-
-/// Metadata of captures and FRFs: "key=value" text pairs. A number stored in them is read here only:
-/// a missing key is NotFound ("metadata 'fs_Hz' is missing"), a value that is not a finite number
-/// BadInput ("metadata 'fs_Hz' is not a number ('4,0')"); there are no silent defaults.
-using Metadata = std::map<std::string, std::string>;
-Result<double> metadataNumber(const Metadata& metadata, const std::string& key);
-/// As metadataNumber, but a missing key gives nullopt (a present but invalid value is still an error).
-Result<std::optional<double>> optionalMetadataNumber(const Metadata& metadata, const std::string& key);
-/// A whole number stored in metadata (e.g. "nperseg", "injection_hold_ticks").
-Result<long long> metadataInteger(const Metadata& metadata, const std::string& key);
-/// The sample period [s] 1/fs_Hz of a capture's metadata: nullopt without fs_Hz, an error naming the key
-/// when fs_Hz is not a positive number.
-Result<std::optional<double>> metadataSamplePeriodS(const Metadata& metadata);
-/// Stores a number so that it reads back exactly (17 significant digits, '.' as the decimal point).
-void setMetadataNumber(Metadata& metadata, const std::string& key, double v);
 
 } // namespace axistune::model

@@ -20,11 +20,6 @@ using model::kPi;
 using model::kRadPerDeg;
 constexpr double kTailS = 0.2;  ///< recorded after the end of the path (the axes settle)
 
-std::string fmt(double v)
-{
-    return model::formatNumber(v, 17);
-}
-
 std::string fmtShort(double v)
 {
     return model::formatNumber(v, 10);
@@ -171,15 +166,15 @@ model::Capture CircleRun::trace() const
     cap.metadata = {{"test", "circle"},
                     {"axis_x", o.axisX},
                     {"axis_y", o.axisY},
-                    {"radius_m", fmt(o.radiusM)},
-                    {"feed_m_per_s", fmt(o.feedMPerS)},
+                    {"radius_m", o.radiusM},
+                    {"feed_m_per_s", o.feedMPerS},
                     {"direction", model::circleDirectionName(o.direction)},
-                    {"center_x_m", fmt(o.centerXM)},
-                    {"center_y_m", fmt(o.centerYM)},
-                    {"data_start_deg", fmt(o.dataStartDeg)},
-                    {"lead_arc_deg", fmt(o.leadArcDeg)},
-                    {"dwell_s", fmt(o.dwellS)},
-                    {"fs_Hz", fmt(1.0 / m_tp)}};
+                    {"center_x_m", o.centerXM},
+                    {"center_y_m", o.centerYM},
+                    {"data_start_deg", o.dataStartDeg},
+                    {"lead_arc_deg", o.leadArcDeg},
+                    {"dwell_s", o.dwellS},
+                    {"fs_Hz", 1.0 / m_tp}};
     cap.channels = {{"t_s", m_t},
                     {"arc_rad", m_s},
                     {circleChannel(o.axisX, "position_cmd_m"), m_cx},
@@ -198,13 +193,13 @@ Result<CircleTestOptions> circleOptionsFromTrace(const model::Capture& trace)
     auto bad = [](const std::string& m) { return makeError(ErrorCode::BadInput, "circle trace: " + m); };
     const auto& md = trace.metadata;
     auto text = [&](const char* key) -> Result<std::string> {
-        auto it = md.find(key);
-        if (it == md.end() || it->second.empty())
+        auto v = md.text(key);
+        if (!v || v->empty())
             return bad(std::string("metadata '") + key + "' is missing");
-        return it->second;
+        return *v;
     };
     auto number = [&](const char* key) -> Result<double> {
-        auto v = model::metadataNumber(md, key);
+        auto v = md.number(key);
         return v ? v : bad(v.error().detail);
     };
     if (auto t = text("test"); !t || *t != "circle")

@@ -7,6 +7,7 @@
 #include "core/sim/CircleTest.h"
 
 #include "core/model/Constants.h"
+#include "core/model/Metadata.h"
 #include "core/model/Number.h"
 #include "core/sim/AxisSimulator.h"
 #include "core/sim/CircleRun.h"
@@ -140,8 +141,10 @@ Result<CircleTestResult> evaluateCircleTrace(const model::Capture& trace, const 
         bb.dTxNm = res.dTxNm;
     if (std::isfinite(res.dTyNm))
         bb.dTyNm = res.dTyNm;
-    if (auto it = trace.metadata.find("machine"); it != trace.metadata.end())
-        bb.source = bb.metadata["source"] = it->second;
+    if (const auto* v = trace.metadata.find("machine")) {
+        bb.source = v->text();
+        bb.metadata.set("source", *v);
+    }
     return res;
 }
 
@@ -192,11 +195,13 @@ Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const C
     CircleTestResult res = std::move(evaluated).value();
     model::BallBarTrace& bb = res.ballbar;
     bb.source = "sim:" + machine.name;
-    bb.metadata["source"] = bb.source;
-    bb.metadata["squareness_um_per_m"] = fmt(o.squarenessPerM * 1e6);
-    bb.metadata["scale_x_ppm"] = fmt(o.scaleX * 1e6);
-    bb.metadata["scale_y_ppm"] = fmt(o.scaleY * 1e6);
-    bb.metadata["seed"] = std::to_string(o.seed);
+    bb.metadata.set("source", bb.source);
+    bb.metadata.set("squareness_um_per_m", o.squarenessPerM * 1e6);
+    bb.metadata.set("scale_x_ppm", o.scaleX * 1e6);
+    bb.metadata.set("scale_y_ppm", o.scaleY * 1e6);
+    // A number while a double holds it exactly; larger seeds stay their exact digits.
+    bb.metadata.set("seed", o.seed <= (std::uint64_t{1} << 53) ? model::MetadataValue(static_cast<double>(o.seed))
+                                                               : model::MetadataValue(std::to_string(o.seed)));
     res.traceX = ax.takeTrace();
     res.traceY = ay.takeTrace();
     return res;

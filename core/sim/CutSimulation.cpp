@@ -130,11 +130,11 @@ Result<model::Capture> simulateCut(const AxisDefinition& axisDef, const CutSimul
         extra.push_back(sampled(o.probeChannels[i], rec->probes[i]));
     for (auto& c : extra)
         cap.channels.push_back(std::move(c));
-    cap.metadata["spindle_command_limited"] = std::to_string(process->commandLimitCount());
-    cap.metadata["test"] = "simulate-cut";
-    cap.metadata["teeth"] = std::to_string(ms.teeth);
-    cap.metadata["lost_motion"] = o.lostMotion ? "on" : "off";
-    cap.metadata["cutting_force_sign"] = "force of the process on the table along +axis";
+    cap.metadata.set("spindle_command_limited", static_cast<double>(process->commandLimitCount()));
+    cap.metadata.set("test", "simulate-cut");
+    cap.metadata.set("teeth", static_cast<double>(ms.teeth));
+    cap.metadata.set("lost_motion", o.lostMotion ? "on" : "off");
+    cap.metadata.set("cutting_force_sign", "force of the process on the table along +axis");
     return cap;
 }
 

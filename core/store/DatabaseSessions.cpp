@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Sessions in the store: one transaction per recorded session, captures and result arrays as
 // little-endian float64 BLOBs (docs/storage.md "Sessions").
+#include "core/io/Profile.h"
+#include "core/model/MetadataJson.h"
 #include "core/store/Database.h"
-
 #include "core/store/DatabaseDetail.h"
 #include "core/store/SessionRecord.h"
-#include "core/io/Profile.h"
 
 #include <SQLiteCpp/SQLiteCpp.h>
 #include <nlohmann/json.hpp>
@@ -233,7 +233,11 @@ Result<SessionRecord> Database::loadSession(std::int64_t id) const
         while (qc.executeStep()) {
             NamedCapture c;
             c.name = qc.getColumn(1).getString();
-            c.capture.metadata = nlohmann::json::parse(qc.getColumn(2).getString()).get<std::map<std::string, std::string>>();
+            auto meta = model::metadataFromJson(nlohmann::json::parse(qc.getColumn(2).getString()));
+            if (!meta)
+                return makeError(ErrorCode::BadInput,
+                                 m_path + ": " + what + ", capture '" + c.name + "': " + meta.error().detail);
+            c.capture.metadata = std::move(meta).value();
             const auto samples = static_cast<std::size_t>(qc.getColumn(3).getInt64());
             qch.bind(1, qc.getColumn(0).getInt64());
             while (qch.executeStep()) {

@@ -10,7 +10,7 @@ model::Capture frfAsCapture(const dsp::FrequencyResponse& frf)
 {
     model::Capture c;
     c.metadata = frf.metadata;
-    c.metadata["content"] = "frf";
+    c.metadata.set("content", "frf");
     std::vector<model::Channel> ch = {{"f_Hz", frf.freqHz}, {"re", {}}, {"im", {}}, {"mag_dB", {}},
                                       {"phase_deg", {}}, {"coherence", frf.coherence}, {"valid", {}}};
     for (std::size_t i = 0; i < frf.size(); ++i) {
@@ -27,8 +27,8 @@ model::Capture frfAsCapture(const dsp::FrequencyResponse& frf)
 
 bool isFrfCapture(const model::Capture& capture)
 {
-    const auto it = capture.metadata.find("content");
-    return it != capture.metadata.end() && it->second == "frf";
+    const auto* content = capture.metadata.find("content");
+    return content && *content == "frf";
 }
 
 Result<dsp::FrequencyResponse> frfFromCapture(const model::Capture& capture)

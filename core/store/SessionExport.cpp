@@ -4,6 +4,7 @@
 
 #include "core/io/CaptureCsv.h"
 #include "core/io/Profile.h"
+#include "core/model/MetadataJson.h"
 #include "core/model/ResultJson.h"
 #include "core/store/SessionRecord.h"
 

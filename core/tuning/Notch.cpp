@@ -142,7 +142,7 @@ Result<NotchPrediction> predictWithNotches(const dsp::FrequencyResponse& measure
     NotchPrediction p;
     p.openLoopBefore = openLoopOf(measured, form);
     p.openLoopAfter = p.openLoopBefore;
-    p.openLoopAfter.metadata["notches"] = std::to_string(notches.size());
+    p.openLoopAfter.metadata.set("notches", static_cast<double>(notches.size()));
     for (std::size_t i = 0; i < p.openLoopAfter.size(); ++i)
         p.openLoopAfter.h[i] *= cascade.response(p.openLoopAfter.freqHz[i], h);
     p.measuredAfter = measuredFormOf(p.openLoopAfter, form);

@@ -30,9 +30,9 @@ Result<dsp::FrequencyResponse> plantFromVelocityLoop(const dsp::FrequencyRespons
         return makeError(ErrorCode::BadInput, "velocity PI: K_P and K_I must be >= 0 and not both 0");
     if (!(velocityPeriodS > 0.0) || !(currentPeriodS > 0.0))
         return makeError(ErrorCode::BadInput, "velocity and current periods must be > 0");
-    if (auto it = t.metadata.find("measurement"); it != t.metadata.end() && it->second != "complementary")
+    if (const auto* v = t.metadata.find("measurement"); v && v->text() != "complementary")
         return makeError(ErrorCode::BadInput,
-                         "the FRF is not a closed velocity loop T = PC/(1+PC) (measurement=" + it->second + ")");
+                         "the FRF is not a closed velocity loop T = PC/(1+PC) (measurement=" + v->text() + ")");
     const double ratio = velocityPeriodS / currentPeriodS;
     const long n = std::lround(ratio);
     if (n < 1 || std::abs(ratio - static_cast<double>(n)) > 1e-6 * ratio)
@@ -44,7 +44,7 @@ Result<dsp::FrequencyResponse> plantFromVelocityLoop(const dsp::FrequencyRespons
     }
     auto p = dsp::openLoopFromClosedLoop(corrected, dsp::LoopMeasurement::Complementary);
     divideByVelocityPi(p, pi, velocityPeriodS);
-    p.metadata["loop"] = "plant-from-complementary";
+    p.metadata.set("loop", "plant-from-complementary");
     return p;
 }
 

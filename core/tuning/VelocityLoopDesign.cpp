@@ -58,10 +58,10 @@ Result<LoopMeasurementKind> parseLoopMeasurement(std::string_view name)
 
 Result<LoopMeasurementKind> loopMeasurementOf(const dsp::FrequencyResponse& frf, LoopMeasurementKind absent)
 {
-    const auto it = frf.metadata.find("measurement");
-    if (it == frf.metadata.end())
+    const auto name = frf.metadata.text("measurement");
+    if (!name)
         return absent;
-    return parseLoopMeasurement(it->second);
+    return parseLoopMeasurement(*name);
 }
 
 Result<LoopForm> loopFormOf(LoopMeasurementKind kind)
@@ -105,8 +105,8 @@ Result<dsp::FrequencyResponse> plantFromMeasurement(const dsp::FrequencyResponse
         return form.error();
     auto p = openLoopOf(measured, *form);
     divideByVelocityPi(p, running, velocityPeriodS);
-    p.metadata["measurement"] = "plant";
-    p.metadata["loop"] = "plant-from-" + std::string(loopMeasurementName(kind));
+    p.metadata.set("measurement", "plant");
+    p.metadata.set("loop", "plant-from-" + std::string(loopMeasurementName(kind)));
     return p;
 }
 

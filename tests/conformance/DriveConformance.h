@@ -15,7 +15,6 @@
 #include "core/device/Drive.h"
 #include "core/device/DriveRegistry.h"
 #include "core/io/CaptureCsv.h"
-#include "core/model/Number.h"
 
 #include <chrono>
 #include <cmath>
@@ -64,8 +63,8 @@ std::string recordedCapture()
         if (!t)
             return std::string();
         model::Capture cap = std::move(t).value();
-        cap.metadata["test"] = "step";
-        cap.metadata["connection"] = "sim:vmc";
+        cap.metadata.set("test", "step");
+        cap.metadata.set("connection", "sim:vmc");
         return io::writeCaptureCsvFile(file, cap) ? file : std::string();
     }();
     return path;
@@ -467,7 +466,7 @@ TEST_P(DriveConformance, EveryAdvertisedTestRunsToCompletionAsPlanned)
         auto trace = m_drive->readTrace();
         ASSERT_TRUE(trace.ok()) << errorText(trace.error());
         // The plan's trace rate is the trace's.
-        const double fs = model::metadataNumber(trace->metadata, "fs_Hz").value();
+        const double fs = trace->metadata.number("fs_Hz").value();
         EXPECT_NEAR(fs, plan->traceRateHz, 1e-9 * fs);
         // The record length: the drive records on its trace grid, so the count can differ from the plan's
         // length / period by the one sample at either end of the record.
@@ -484,7 +483,7 @@ TEST_P(DriveConformance, EveryAdvertisedTestRunsToCompletionAsPlanned)
             EXPECT_FALSE(frf->frf.freqHz.empty());
             reported = frf->motionTimeS;
         } else {
-            reported = model::metadataNumber(trace->metadata, kMotionTimeMetadataKey).value();
+            reported = trace->metadata.number(kMotionTimeMetadataKey).value();
         }
         EXPECT_NEAR(reported, plan->motionTimeS, tick + 1e-12) << "plan " << plan->motionTimeS << " s";
     }

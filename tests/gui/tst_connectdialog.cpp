@@ -126,7 +126,7 @@ private slots:
         QTemporaryDir dir;
         const QString file = dir.filePath("hold.csv");
         model::Capture cap;
-        cap.metadata = {{"test", "hold"}, {"axis", "X"}, {"fs_Hz", "1000"}, {"machine", "vmc"}};
+        cap.metadata = {{"test", "hold"}, {"axis", "X"}, {"fs_Hz", 1000.0}, {"machine", "vmc"}};
         cap.channels = {{"t_s", {0.0, 0.001, 0.002}}, {"motor_vel_rad_s", {0.0, 0.0, 0.0}}};
         QVERIFY(io::writeCaptureCsvFile(file.toStdString(), cap).ok());
         gui::AppContext ctx;

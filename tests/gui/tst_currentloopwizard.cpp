@@ -261,7 +261,9 @@ private slots:
             if (c.name == "current_step")
                 step = &c.capture;
         QVERIFY(step);
-        QCOMPARE(QString::fromStdString(step->metadata.at("fs_Hz")), QString("16000"));
+        const auto stepFs = step->metadata.number("fs_Hz");
+        QVERIFY2(stepFs, stepFs ? "" : stepFs.error().detail.c_str());
+        QVERIFY2(*stepFs == 16000.0, qPrintable(QString::number(*stepFs, 'g', 17))); // exactly, as the text "16000"
         QVERIFY(std::any_of(rec->captures.begin(), rec->captures.end(),
                             [](const auto& c) { return c.name == "current_step_before"; }));
         QVERIFY((*verify)["measured_before"].is_object());

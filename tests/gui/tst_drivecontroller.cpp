@@ -12,7 +12,6 @@
 
 #include <optional>
 
-#include "tests/NumberText.h"
 #include "tests/app/cli/SimDriveProcess.h"
 #include "tests/gui/DriveTestRequests.h"
 #include "tests/gui/GuiTestUtil.h"
@@ -101,7 +100,9 @@ private slots:
         for (const char* ch : {"t_s", "velocity_cmd_rad_s", "motor_vel_rad_s", "torque_cmd_Nm", "current_A"})
             QVERIFY2(r.capture->channel(ch), ch);
         // Length: duration × trace rate (metadata), ±1 sample.
-        const double fs = axistune::testutil::stod(r.capture->metadata.at("fs_Hz"));
+        const auto fsHz = r.capture->metadata.number("fs_Hz");
+        QVERIFY2(fsHz, fsHz ? "" : fsHz.error().detail.c_str());
+        const double fs = *fsHz;
         QVERIFY(std::abs(static_cast<double>(r.capture->size()) - 0.1 * fs) <= 1.0);
         const auto& cmd = r.capture->channel("velocity_cmd_rad_s")->data;
         QCOMPARE(cmd.front(), 0.0);

@@ -69,7 +69,7 @@ double sampleSignal(std::size_t i, double fs)
 std::shared_ptr<model::Capture> millionSampleCapture(double fs)
 {
     auto c = std::make_shared<model::Capture>();
-    c->metadata["fs_Hz"] = QByteArray::number(fs, 'g', 17).toStdString();
+    c->metadata.set("fs_Hz", fs);
     model::Channel vel{"motor_vel_rad_s", {}};
     model::Channel torque{"torque_cmd_Nm", {}};
     const std::size_t n = 1000000;

@@ -50,14 +50,14 @@ dsp::FrequencyResponse analyticFrf(double fnHz, double zeta)
         const double w = 2.0 * std::numbers::pi * f, wn = 2.0 * std::numbers::pi * fnHz;
         frf.push(f, wn * wn / std::complex<double>(wn * wn - w * w, 2.0 * zeta * wn * w), std::nan(""), true);
     }
-    frf.metadata["method"] = "analytic";
+    frf.metadata.set("method", "analytic");
     return frf;
 }
 
 model::Capture circleTrace()
 {
     model::Capture c;
-    c.metadata["fs_Hz"] = "1000";
+    c.metadata.set("fs_Hz", 1000.0);
     model::Channel t{"t_s", {}}, x{"x_m", {}}, y{"y_m", {}};
     for (int i = 0; i < 1000; ++i) {
         t.data.push_back(i / 1000.0);
@@ -150,7 +150,7 @@ private slots:
         lost.captures.push_back({"circle", circleTrace()});
         for (const char* name : {"trace-1", "verification"}) {
             model::Capture bb; // the lost-motion wizard's ball-bar layout
-            bb.metadata = {{"content", "ballbar"}, {"radius_m", "0.05"}};
+            bb.metadata = {{"content", "ballbar"}, {"radius_m", 0.05}};
             model::Channel a{"angle_rad", {}}, d{"deviation_m", {}};
             for (int i = 0; i < 720; ++i) {
                 a.data.push_back(2 * std::numbers::pi * i / 720.0);

@@ -46,14 +46,14 @@ axistune::dsp::FrequencyResponse analyticFrf(double fnHz, double zeta)
         const double f = 10.0 * std::pow(10.0, 2.5 * i / 199.0);  // 10 Hz .. 3.16 kHz
         frf.push(f, resonance(f, fnHz, zeta), std::nan(""), f < 2000.0);  // above 2 kHz: not valid
     }
-    frf.metadata["method"] = "analytic";
+    frf.metadata.set("method", "analytic");
     return frf;
 }
 
 axistune::model::Capture stepTrace()
 {
     axistune::model::Capture c;
-    c.metadata["fs_Hz"] = "4000";
+    c.metadata.set("fs_Hz", 4000.0);
     axistune::model::Channel t{"t_s", {}}, v{"motor_vel_rad_s", {}};
     for (int i = 0; i < 400; ++i) {
         t.data.push_back(i / 4000.0);

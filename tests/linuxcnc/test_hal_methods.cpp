@@ -103,9 +103,9 @@ TEST_F(HalTestbed, MultiSweepPlantFrfEqualsTheExactDiscreteResponse)
         auto m = drive->readFrequencyResponse();
         ASSERT_TRUE(m) << m.error().detail;
         EXPECT_NEAR(m->motionTimeS, plan->motionTimeS, 1e-9);
-        EXPECT_EQ(m->frf.metadata.at("method"), "multisweep");
-        EXPECT_EQ(m->frf.metadata.at("quantity"), quantity == FrfQuantity::Plant ? "plant" : "open-loop");
-        EXPECT_EQ(model::parseNumber(m->frf.metadata.at("fs_Hz")).value_or(0.0), 1000.0);
+        EXPECT_EQ(m->frf.metadata.text("method"), "multisweep");
+        EXPECT_EQ(m->frf.metadata.text("quantity"), quantity == FrfQuantity::Plant ? "plant" : "open-loop");
+        EXPECT_EQ(m->frf.metadata.number("fs_Hz").value(), 1000.0);
         ASSERT_GE(m->frf.size(), 35u); // 40 log-spaced targets, a few may share a grid frequency
         Worst w;
         for (std::size_t i = 0; i < m->frf.size(); ++i) {
@@ -130,7 +130,7 @@ TEST_F(HalTestbed, MultiSweepPlantFrfEqualsTheExactDiscreteResponse)
         // The trace carries the method and the servo rate.
         auto trace = drive->readTrace();
         ASSERT_TRUE(trace) << trace.error().detail;
-        EXPECT_EQ(trace->metadata.at("method"), "multisweep");
+        EXPECT_EQ(trace->metadata.text("method"), "multisweep");
         EXPECT_EQ(trace->size(), plan->recordSamples);
     }
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
@@ -158,8 +158,8 @@ TEST_F(HalTestbed, PrbsPlantFrfAgreesWithTheExactResponseWithinItsStatisticalErr
     ASSERT_EQ(end.state, TestState::Completed) << end.detail;
     auto m = drive->readFrequencyResponse();
     ASSERT_TRUE(m) << m.error().detail;
-    EXPECT_EQ(m->frf.metadata.at("method"), "prbs");
-    const double nperseg = model::parseNumber(m->frf.metadata.at("nperseg")).value_or(0.0);
+    EXPECT_EQ(m->frf.metadata.text("method"), "prbs");
+    const double nperseg = m->frf.metadata.number("nperseg").value();
     EXPECT_EQ(nperseg, 512.0); // the power of two at or above fs/fmin = 500
     const double nd = 8.0;
     const Plant plant = readPlant();
@@ -215,8 +215,8 @@ TEST_F(HalTestbed, PositionStepEqualsTheSimulatedPidAndPlant)
     auto trace = drive->readTrace();
     ASSERT_TRUE(trace) << trace.error().detail;
     EXPECT_EQ(netsOf(halText({"-s", "show", "sig"})), sigBefore);
-    EXPECT_EQ(trace->metadata.at("test"), "step");
-    EXPECT_EQ(model::parseNumber(trace->metadata.at("step")).value_or(0.0), 0.01);
+    EXPECT_EQ(trace->metadata.text("test"), "step");
+    EXPECT_EQ(trace->metadata.number("step").value(), 0.01);
     const auto* off = trace->channel("position_offset");
     const auto* u = trace->channel("drive_input");
     const auto* y = trace->channel("feedback");
@@ -347,10 +347,10 @@ TEST_F(HalTestbed, CliCapturesMultiSweepPrbsAndStep)
                   0);
         auto frf = io::readFrfCsvFile(out);
         ASSERT_TRUE(frf) << frf.error().detail;
-        EXPECT_EQ(frf->metadata.at("method"), method);
-        EXPECT_EQ(frf->metadata.at("quantity"), "plant");
-        EXPECT_EQ(frf->metadata.at("connection"), "hal:");
-        EXPECT_EQ(model::parseNumber(frf->metadata.at("fs_Hz")).value_or(0.0), 1000.0);
+        EXPECT_EQ(frf->metadata.text("method"), method);
+        EXPECT_EQ(frf->metadata.text("quantity"), "plant");
+        EXPECT_EQ(frf->metadata.text("connection"), "hal:");
+        EXPECT_EQ(frf->metadata.number("fs_Hz").value(), 1000.0);
         ASSERT_GE(frf->size(), 8u);
         if (method == "multisweep") {
             // The CSV's 17 digits keep the measurement's 0.1 dB / 0.5° (MultiSweepPlantFrfEquals... above).
@@ -368,7 +368,7 @@ TEST_F(HalTestbed, CliCapturesMultiSweepPrbsAndStep)
               0);
     auto cap = io::readCaptureCsvFile(stepOut);
     ASSERT_TRUE(cap) << cap.error().detail;
-    EXPECT_EQ(cap->metadata.at("test"), "step");
+    EXPECT_EQ(cap->metadata.text("test"), "step");
     ASSERT_TRUE(cap->channel("position_offset"));
     EXPECT_EQ(cap->size(), 30u + 600u);
     // A step above half of FERROR (5 mm) is refused with exit 2 before anything moves.

@@ -534,10 +534,10 @@ TEST_F(HalTestbed, CliCaptureThroughHalWritesThePlantFrf)
 
     auto frf = io::readFrfCsvFile(out);
     ASSERT_TRUE(frf) << frf.error().detail;
-    EXPECT_EQ(frf->metadata.at("quantity"), "plant");
-    EXPECT_EQ(frf->metadata.at("connection"), "hal:");
-    EXPECT_EQ(model::parseNumber(frf->metadata.at("fs_Hz")).value_or(0.0), 1000.0);
-    EXPECT_LE(model::parseNumber(frf->metadata.at("amplitude_peak")).value_or(1.0), 0.2);
+    EXPECT_EQ(frf->metadata.text("quantity"), "plant");
+    EXPECT_EQ(frf->metadata.text("connection"), "hal:");
+    EXPECT_EQ(frf->metadata.number("fs_Hz").value(), 1000.0);
+    EXPECT_LE(frf->metadata.number("amplitude_peak").value(), 0.2);
     // Lines from 2 Hz to 450 Hz at fmin/2 spacing, every one valid (no noise on the test machine).
     ASSERT_GT(frf->size(), 400u);
     const Plant plant = readPlant();

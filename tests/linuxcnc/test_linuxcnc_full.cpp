@@ -162,8 +162,8 @@ TEST_F(FullLinuxCnc, ServoSimOpenLoopMeasuredThroughLinuxCncEqualsItsHalFileAndG
 
     auto frf = io::readFrfCsvFile(csv);
     ASSERT_TRUE(frf.ok()) << frf.error().detail;
-    EXPECT_EQ(frf->metadata.at("quantity"), "open-loop");
-    EXPECT_EQ(frf->metadata.at("fs_Hz"), "1000");
+    EXPECT_EQ(frf->metadata.text("quantity"), "open-loop");
+    EXPECT_EQ(frf->metadata.number("fs_Hz").value(), 1000.0);
     // Every valid line against the model: a valid line has sigma_H/|H| <= 0.03 (max_relative_noise), so 3.5 sigma is
     // 0.105 of |H|: 0.9 dB and 6.0 deg; the base thread's pulses (50 us) shift the encoder by up to one base period,
     // 2.2 deg at 123 Hz. Hence 1 dB and 8 deg, over the crossover's region up to 150 Hz (1.7x the crossover); above
@@ -262,7 +262,7 @@ TEST_F(FullLinuxCnc, JogThroughLinuxCncsMotionIsRecordedOutAndBack)
 
     auto trace = io::readCaptureCsvFile(csv);
     ASSERT_TRUE(trace) << trace.error().detail;
-    EXPECT_NE(trace->metadata.at("moved_by").find("LinuxCNC's motion"), std::string::npos);
+    EXPECT_NE(trace->metadata.text("moved_by").value().find("LinuxCNC's motion"), std::string::npos);
     const auto* fb = trace->channel("feedback");
     const auto* fe = trace->channel("following_error");
     const auto* offset = trace->channel("position_offset");

@@ -188,19 +188,19 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     FrfMeasurement out = std::move(measured).value();
     out.motionTimeS = static_cast<double>(n) / plan.fsHz;
     auto& md = out.frf.metadata;
-    md["method"] = frfMethodName(plan.method);
-    md["fs_Hz"] = num(plan.fsHz);
-    md["quantity"] = openLoop ? "open-loop" : "plant";
-    md["input"] = "drive_input"; // <pid>.output + injection: what the drive receives
-    md["output"] = openLoop ? "-pid_output" : "feedback";
-    md["hal_units"] =
-        openLoop ? "none (PID output per PID output)" : "feedback per PID-output unit (the configuration's units)";
-    md["pid"] = plan.axis.pid;
-    md["thread"] = plan.axis.thread;
-    md["servo_period_ns"] = std::to_string(plan.axis.periodNs);
-    md["amplitude_peak"] = num(plan.peak());
-    md["first_sample"] = std::to_string(record.firstSample);
-    md["motion_time_s"] = num(out.motionTimeS);
+    md.set("method", frfMethodName(plan.method));
+    md.set("fs_Hz", plan.fsHz);
+    md.set("quantity", openLoop ? "open-loop" : "plant");
+    md.set("input", "drive_input"); // <pid>.output + injection: what the drive receives
+    md.set("output", openLoop ? "-pid_output" : "feedback");
+    md.set("hal_units",
+           openLoop ? "none (PID output per PID output)" : "feedback per PID-output unit (the configuration's units)");
+    md.set("pid", plan.axis.pid);
+    md.set("thread", plan.axis.thread);
+    md.set("servo_period_ns", static_cast<double>(plan.axis.periodNs));
+    md.set("amplitude_peak", plan.peak());
+    md.set("first_sample", static_cast<double>(record.firstSample));
+    md.set("motion_time_s", out.motionTimeS);
     return out;
 }
 
@@ -227,9 +227,9 @@ Result<FrfMeasurement> evaluateHalMultisine(const HalFrfPlan& plan, const HalRec
     out.frf = std::move(a->frf);
     out.relativeNoise = std::move(a->stats.relativeNoise);
     auto& md = out.frf.metadata;
-    md["amplitude_rms"] = num(plan.design.rms);
-    md["settle_s"] = num(static_cast<double>(skip) / plan.fsHz);
-    md["period_s"] = num(static_cast<double>(plan.design.periodSamples()) / plan.fsHz);
+    md.set("amplitude_rms", plan.design.rms);
+    md.set("settle_s", static_cast<double>(skip) / plan.fsHz);
+    md.set("period_s", static_cast<double>(plan.design.periodSamples()) / plan.fsHz);
     return out;
 }
 } // namespace
@@ -716,26 +716,26 @@ Result<model::Capture> HalDrive::readTrace()
     }
     auto& md = c.metadata;
     if (m_plan) {
-        md["test"] = "frf";
-        md["method"] = frfMethodName(m_plan->method);
-        md["amplitude_peak"] = num(m_plan->peak());
+        md.set("test", "frf");
+        md.set("method", frfMethodName(m_plan->method));
+        md.set("amplitude_peak", m_plan->peak());
     } else if (m_move->type == TestType::Step) {
-        md["test"] = "step";
-        md["step"] = num(m_move->distance); // a position step of the command, in its units
-        md["step_sample"] = std::to_string(m_move->stepAt);
-        md["step_back_sample"] = std::to_string(m_move->backAt);
+        md.set("test", "step");
+        md.set("step", m_move->distance); // a position step of the command, in its units
+        md.set("step_sample", static_cast<double>(m_move->stepAt));
+        md.set("step_back_sample", static_cast<double>(m_move->backAt));
     } else {
-        md["test"] = "jog";
-        md["distance"] = num(m_move->distance);
-        md["velocity"] = num(m_move->velocity);
-        md["moved_by"] = m_move->external ? "LinuxCNC's motion (a joint jog through NML)"
-                                          : "AxisTune's offset to the pid's command";
+        md.set("test", "jog");
+        md.set("distance", m_move->distance);
+        md.set("velocity", m_move->velocity);
+        md.set("moved_by", m_move->external ? "LinuxCNC's motion (a joint jog through NML)"
+                                            : "AxisTune's offset to the pid's command");
     }
-    md["axis"] = axis.pid;
-    md["fs_Hz"] = num(fsHz);
-    md["hal_units"] = "the configuration's (PID output and position units)";
-    md["thread"] = axis.thread;
-    md[kMotionTimeMetadataKey] = num(static_cast<double>(n) / fsHz);
+    md.set("axis", axis.pid);
+    md.set("fs_Hz", fsHz);
+    md.set("hal_units", "the configuration's (PID output and position units)");
+    md.set("thread", axis.thread);
+    md.set(kMotionTimeMetadataKey, static_cast<double>(n) / fsHz);
     return c;
 }
 

@@ -113,12 +113,12 @@ Result<FrfMeasurement> evaluateHalStreams(const HalFrfPlan& plan, const HalRecor
         return evaluated.error();
     FrfMeasurement out = std::move(evaluated).value();
     auto& md = out.frf.metadata;
-    md["settle_s"] = num(plan.streams->timing.settleS);
-    md["min_measure_s"] = num(plan.streams->timing.minMeasureS);
+    md.set("settle_s", plan.streams->timing.settleS);
+    md.set("min_measure_s", plan.streams->timing.minMeasureS);
     if (plan.method == FrfMethod::MultiSweep) {
-        md["settle_periods"] = num(plan.streams->timing.settlePeriods);
-        out.sweep.metadata["fs_Hz"] = num(plan.fsHz);
-        out.sweep.metadata["quantity"] = openLoop ? "open-loop" : "plant";
+        md.set("settle_periods", plan.streams->timing.settlePeriods);
+        out.sweep.metadata.set("fs_Hz", plan.fsHz);
+        out.sweep.metadata.set("quantity", openLoop ? "open-loop" : "plant");
     }
     return out;
 }

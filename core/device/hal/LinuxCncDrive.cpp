@@ -284,9 +284,10 @@ Result<model::Capture> LinuxCncDrive::readTrace()
     if (!read)
         return read;
     auto c = std::move(read).value();
-    c.metadata["pid"] = c.metadata["axis"];
-    c.metadata["axis"] = m_lastAxis;
-    c.metadata["ini"] = m_config.ini.path;
+    const auto* pid = c.metadata.find("axis");
+    c.metadata.set("pid", pid ? *pid : model::MetadataValue(""));
+    c.metadata.set("axis", m_lastAxis);
+    c.metadata.set("ini", m_config.ini.path);
     return c;
 }
 
@@ -301,10 +302,10 @@ Result<FrfMeasurement> LinuxCncDrive::readFrequencyResponse()
     if (!read)
         return read;
     auto m = std::move(read).value();
-    m.frf.metadata["axis"] = m_lastAxis;
-    m.frf.metadata["ini"] = m_config.ini.path;
+    m.frf.metadata.set("axis", m_lastAxis);
+    m.frf.metadata.set("ini", m_config.ini.path);
     if (const IniEntry* u = m_config.ini.find("TRAJ", "LINEAR_UNITS"))
-        m.frf.metadata["linear_units"] = u->value;
+        m.frf.metadata.set("linear_units", u->value);
     return m;
 }
 

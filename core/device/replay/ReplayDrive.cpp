@@ -4,7 +4,6 @@
 
 #include "core/device/DriveRegistry.h"
 #include "core/io/CaptureCsv.h"
-#include "core/model/Number.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,12 +57,12 @@ Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
     d->m_capture = std::move(cap).value();
     const auto& md = d->m_capture.metadata;
     auto need = [&](const char* key) -> Result<std::string> {
-        const auto it = md.find(key);
-        if (it == md.end() || it->second.empty())
+        auto text = md.text(key);
+        if (!text || text->empty())
             return makeError(ErrorCode::BadInput, path + ": metadata '" + key +
                                                       "' is missing: a replayed capture needs "
                                                       "test, axis and fs_Hz");
-        return it->second;
+        return std::move(*text);
     };
     auto test = need("test");
     if (!test)
@@ -74,7 +73,7 @@ Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
     auto axis = need("axis");
     if (!axis)
         return axis.error();
-    auto fs = model::metadataNumber(md, "fs_Hz");
+    auto fs = md.number("fs_Hz");
     if (!fs || !(*fs > 0.0) || !std::isfinite(*fs))
         return makeError(ErrorCode::BadInput, path + ": metadata 'fs_Hz' must be a positive number");
     if (d->m_capture.size() < 2)
@@ -82,7 +81,7 @@ Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
     d->m_test = *type;
     d->m_axis = *axis;
     d->m_fsHz = *fs;
-    auto motion = model::optionalMetadataNumber(md, kMotionTimeMetadataKey);
+    auto motion = md.optionalNumber(kMotionTimeMetadataKey);
     if (!motion)
         return makeError(ErrorCode::BadInput, path + ": " + motion.error().detail);
     d->m_motionS = motion->has_value() ? **motion : d->recordS();
@@ -117,9 +116,8 @@ Status ReplayDrive::checkRequest(const TestRequest& request) const
 
 Result<DriveIdentity> ReplayDrive::identify()
 {
-    const auto it = m_capture.metadata.find("machine");
     return DriveIdentity{
-        "AxisTune", "replay", AXISTUNE_VERSION, it == m_capture.metadata.end() ? m_path : it->second, {m_axis}};
+        "AxisTune", "replay", AXISTUNE_VERSION, m_capture.metadata.textOr("machine", m_path), {m_axis}};
 }
 
 Result<std::vector<model::ParameterMeta>> ReplayDrive::parameterMetadata(const std::string& axis)
@@ -128,7 +126,7 @@ Result<std::vector<model::ParameterMeta>> ReplayDrive::parameterMetadata(const s
         return st.error();
     std::vector<model::ParameterMeta> out;
     for (const auto& [k, v] : m_capture.metadata) {
-        auto x = model::parseNumber(v);
+        auto x = v.number();
         if (!x || !std::isfinite(*x))
             continue; // text metadata (machine, connection) is in identify()
         model::ParameterMeta m;
@@ -204,7 +202,7 @@ Result<model::Capture> ReplayDrive::readTrace()
     if (!m_haveTrace)
         return makeError(ErrorCode::NotFound, "no trace: no replayed test has completed");
     model::Capture c = m_capture;
-    c.metadata["connection"] = kScheme + m_path;
+    c.metadata.set("connection", kScheme + m_path);
     return c;
 }
 

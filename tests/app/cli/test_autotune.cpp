@@ -43,7 +43,7 @@ Measured measure(const std::string& path)
     EXPECT_TRUE(frf.ok()) << path;
     if (!frf.ok())
         return m;
-    EXPECT_EQ(frf->metadata.at("measurement"), "complementary");
+    EXPECT_EQ(frf->metadata.text("measurement"), "complementary");
     const auto open = axistune::dsp::openLoopFromClosedLoop(*frf, axistune::dsp::LoopMeasurement::Complementary);
     axistune::dsp::FrequencyResponse l;
     std::vector<double> f;

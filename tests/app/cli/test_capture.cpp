@@ -16,8 +16,8 @@ TEST(CliCapture, StepOnVmcWritesACaptureCsv)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto cap = axistune::io::readCaptureCsvFile(out);
     ASSERT_TRUE(cap.ok()) << cap.error().detail;
-    EXPECT_EQ(cap->metadata.at("fs_Hz"), "4000");
-    EXPECT_EQ(cap->metadata.at("axis"), "X");
+    EXPECT_EQ(cap->metadata.number("fs_Hz").value(), 4000.0);
+    EXPECT_EQ(cap->metadata.text("axis"), "X");
     ASSERT_NE(cap->channel("t_s"), nullptr);
     ASSERT_NE(cap->channel("motor_vel_rad_s"), nullptr);
     ASSERT_NE(cap->channel("torque_cmd_Nm"), nullptr);

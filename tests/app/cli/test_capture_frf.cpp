@@ -27,8 +27,8 @@ TEST(CliCaptureFrf, MultiSweepOnTwoInertiaWritesFrfAndSweep)
     auto frf = axistune::io::readFrfCsvFile(out);
     ASSERT_TRUE(frf.ok()) << frf.error().detail;
     ASSERT_EQ(frf->size(), 8u);
-    EXPECT_EQ(frf->metadata.at("method"), "multisweep");
-    EXPECT_EQ(frf->metadata.at("measurement"), "complementary");
+    EXPECT_EQ(frf->metadata.text("method"), "multisweep");
+    EXPECT_EQ(frf->metadata.text("measurement"), "complementary");
     for (std::size_t i = 0; i < frf->size(); ++i)
         EXPECT_TRUE(frf->valid[i]);
     // Low frequency: the integral action gives T ≈ 1 (0 dB within 1 dB at 5 Hz).

@@ -30,7 +30,7 @@ TEST(CliImpact, RealRecordGivesReceptanceWithUnits)
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto frf = io::readFrfCsvFile(out);
     ASSERT_TRUE(frf) << frf.error().detail;
-    EXPECT_EQ(frf->metadata.at("units"), "m/N");
+    EXPECT_EQ(frf->metadata.text("units"), "m/N");
     // the author's published H11 at 1056 Hz is 6.776e-7 m/N (tooltip_frf_H11_H15.csv)
     double best = 0.0, bestHz = 0.0;
     for (std::size_t i = 0; i < frf->size(); ++i) {

@@ -106,8 +106,8 @@ TEST(ModbusCapture, CurrentStepOverModbusEqualsTheEmbeddedDrive)
     auto a = io::readCaptureCsvFile(remote);
     auto b = io::readCaptureCsvFile(local);
     ASSERT_TRUE(a.ok() && b.ok());
-    EXPECT_EQ(b->metadata.at("fs_Hz"), "16000");
-    EXPECT_EQ(a->metadata.at("fs_Hz"), "16000");
+    EXPECT_EQ(b->metadata.number("fs_Hz").value(), 16000.0);
+    EXPECT_EQ(a->metadata.number("fs_Hz").value(), 16000.0);
     ASSERT_EQ(b->size(), 48u); // 3 ms at 62.5 µs
     ASSERT_EQ(a->channels.size(), b->channels.size());
     for (std::size_t c = 0; c < b->channels.size(); ++c) {

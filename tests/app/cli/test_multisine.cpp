@@ -44,8 +44,8 @@ TEST(CliMultisine, DdTableLinearShowsThe3300HzModeWithACrestFactorBelowTwo)
     EXPECT_LE(jsonNumber(r.out, "motion_time_s"), 5.0);
     auto frf = io::readFrfCsvFile(out);
     ASSERT_TRUE(frf.ok()) << frf.error().detail;
-    EXPECT_EQ(frf->metadata.at("method"), "multisine");
-    EXPECT_EQ(frf->metadata.at("injection_hold_corrected"), "true");
+    EXPECT_EQ(frf->metadata.text("method"), "multisine");
+    EXPECT_EQ(frf->metadata.text("injection_hold_corrected"), "true");
     std::size_t peak = 0;
     for (std::size_t i = 0; i < frf->size(); ++i) {
         if (frf->freqHz[i] > 2600.0 && (frf->freqHz[peak] <= 2600.0 || std::abs(frf->h[i]) > std::abs(frf->h[peak])))
@@ -81,9 +81,9 @@ TEST(CliMultisine, ModbusEqualsTheEmbeddedDriveWithTheSameSeed)
         EXPECT_LE(std::abs(a->h[i] - b->h[i]), 1e-9 * std::abs(b->h[i])) << b->freqHz[i] << " Hz";
         EXPECT_EQ(a->valid[i], b->valid[i]);
     }
-    EXPECT_EQ(a->metadata.at("method"), "multisine");
-    EXPECT_EQ(a->metadata.at("phases"), "schroeder");
-    EXPECT_EQ(a->metadata.at("periods"), "3");
+    EXPECT_EQ(a->metadata.text("method"), "multisine");
+    EXPECT_EQ(a->metadata.text("phases"), "schroeder");
+    EXPECT_EQ(a->metadata.number("periods").value(), 3.0);
     // A shaped spectrum does not fit the test block: refused before anything moves.
     {
         std::ofstream shape(dir / "shape.csv");

@@ -42,7 +42,7 @@ TEST(NotchE2e, DdTableResonancesNotchedAndPredictionMatchesRemeasurementWithin1D
     auto measured = axistune::io::readFrfCsvFile(raw);
     ASSERT_TRUE(measured.ok());
     // The drive's file is the closed loop T = L/(1+L) that `notch` assumes: no correction here.
-    EXPECT_EQ(measured->metadata.at("injection_hold_corrected"), "true");
+    EXPECT_EQ(measured->metadata.text("injection_hold_corrected"), "true");
     const auto& before = *measured;
 
     const auto predictedPath = (dir / "predicted.csv").string();

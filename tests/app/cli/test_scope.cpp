@@ -5,7 +5,6 @@
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"
 #include "core/io/ScopeCsv.h"
-#include "core/model/Number.h"
 
 #include <chrono>
 #include <cmath>
@@ -220,9 +219,9 @@ TEST(CliScope, TriggeredCaptureOnTheSimulatorAndOverModbusReloads)
         ASSERT_TRUE(v);
         EXPECT_EQ(v->data[100], 10.0) << connect;
         EXPECT_EQ(v->data[99], 0.0) << connect;
-        EXPECT_EQ(t->capture.metadata.at("trigger_row"), "100");
-        EXPECT_EQ(t->capture.metadata.at("trigger_sample"), std::to_string(t->samples[100]));
-        EXPECT_EQ(t->capture.metadata.at("unit.following_error_m"), "m");
+        EXPECT_EQ(t->capture.metadata.number("trigger_row").value(), 100.0);
+        EXPECT_EQ(t->capture.metadata.number("trigger_sample").value(), static_cast<double>(t->samples[100]));
+        EXPECT_EQ(t->capture.metadata.text("unit.following_error_m"), "m");
         EXPECT_NE(res.out.find("\"trigger_row\": 100"), std::string::npos) << res.out;
     }
     std::filesystem::remove_all(dir);
@@ -243,7 +242,7 @@ TEST(CliScope, ContinuousOverModbusEveryRowOnce)
     ASSERT_TRUE(t.ok()) << t.error().detail;
     ASSERT_EQ(t->samples.size(), 6000u); // 1.5 s × 4000 Hz
     EXPECT_EQ(t->missingSamples, 0u);
-    EXPECT_EQ(t->capture.metadata.at("scope_mode"), "roll");
+    EXPECT_EQ(t->capture.metadata.text("scope_mode"), "roll");
     const auto* ts = t->capture.channel("t_s");
     ASSERT_TRUE(ts);
     for (std::size_t i = 0; i < t->samples.size(); ++i)
@@ -396,8 +395,9 @@ TEST(ModbusScope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
     const auto& sx = all.columns[1];
     const auto& sy = all.columns[2];
     // The trace takes one row per position period (its fs_Hz), the scope one per velocity period (4 kHz).
-    const auto same = axistune::testing::sameInstant(sx, sy, *tx, *ty,
-                                                     model::parseNumber((*trace).metadata.at("fs_Hz")).value_or(0.0));
+    const auto fs = trace->metadata.number("fs_Hz");
+    ASSERT_TRUE(fs.ok()) << fs.error().detail;
+    const auto same = axistune::testing::sameInstant(sx, sy, *tx, *ty, *fs);
     ASSERT_TRUE(same.found) << same.report;
     EXPECT_EQ(same.worstY, 0.0) << "Y at the instant of X [m]";
 }

@@ -129,7 +129,7 @@ TEST(CliSessions, CaptureAndCurrentLoopAreRecordedWithInputsCapturesAndResults)
         EXPECT_EQ(copy->channels[k].name, original->channels[k].name);
         EXPECT_EQ(copy->channels[k].data, original->channels[k].data) << original->channels[k].name;  // bit-exact
     }
-    EXPECT_EQ(copy->metadata.at("fs_Hz"), original->metadata.at("fs_Hz"));
+    EXPECT_EQ(copy->metadata.number("fs_Hz").value(), original->metadata.number("fs_Hz").value());
 }
 
 TEST(CliSessions, FrfAnalysisStoresTheFrfAsACapture)

@@ -88,7 +88,7 @@ TEST(CliStore, SessionListShowExport)
         r.info.status = store::SessionStatus::Aborted;
         r.inputs = {{"amplitude_Nm", 2.0}};
         model::Capture c;
-        c.metadata["fs_Hz"] = "4000";
+        c.metadata.set("fs_Hz", 4000.0);
         c.channels = {{"t_s", {0.0, 0.00025, 0.0005}}, {"torque_cmd_Nm", {0.5, -0.25, 1e-9}}};
         r.captures.push_back({"sweep 1", c});
         r.results.push_back({"frf", {{"resonance_Hz", 812.5}}, {{"f_Hz", {10.0, 20.0}}, {"mag_dB", {-3.0, -6.0}}}});
@@ -120,7 +120,7 @@ TEST(CliStore, SessionListShowExport)
     EXPECT_EQ(capFile, "capture_1_sweep_1.csv");
     auto cap = io::readCaptureCsvFile((folder / capFile).string());
     ASSERT_TRUE(cap.ok()) << cap.error().detail;
-    EXPECT_EQ(cap->metadata.at("fs_Hz"), "4000");
+    EXPECT_EQ(cap->metadata.number("fs_Hz").value(), 4000.0);
     EXPECT_EQ(cap->channel("torque_cmd_Nm")->data, (std::vector<double>{0.5, -0.25, 1e-9}));
     EXPECT_EQ(manifest["results"][0]["files"][0], "result_1_frf.csv");
     auto res = io::readCaptureCsvFile((folder / "result_1_frf.csv").string());

@@ -45,7 +45,7 @@ TEST(TuningE2e, TwoInertiaPresetMeasuredFrfGivesTable51Frequencies)
     EXPECT_EQ(capJson["valid_points"].get<int>(), 60);
     auto file = axistune::io::readFrfCsvFile(frf);
     ASSERT_TRUE(file.ok());
-    EXPECT_EQ(file->metadata.at("injection_hold_corrected"), "true");
+    EXPECT_EQ(file->metadata.text("injection_hold_corrected"), "true");
 
     const auto r = runCli("two-inertia --frf " + frf + " --fmin 5 --fmax 300 --loop-pi " + kLoopPi + " --loop-period-s 250e-6");
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -21,7 +21,6 @@
 #include <iostream>
 #include <numbers>
 
-#include "tests/NumberText.h"
 #include "tests/core/device/DriveTestUtil.h"
 #include "tests/core/sim/LiftedModel.h"
 
@@ -167,8 +166,8 @@ TEST(AdaptiveFrf, ValidLinesAgreeWithTheLiftedModel)
     const auto& f = m.frf;
     ASSERT_TRUE(dsp::isInjectionHoldCorrected(f));
     ASSERT_EQ(m.relativeNoise.size(), f.size());
-    const int n = std::stoi(f.metadata.at("injection_hold_ticks"));
-    const double h = axistune::testutil::stod(f.metadata.at("injection_hold_period_s"));
+    const int n = static_cast<int>(f.metadata.integer("injection_hold_ticks").value());
+    const double h = f.metadata.number("injection_hold_period_s").value();
     std::size_t compared = 0;
     double worst = 0.0;
     for (std::size_t i = 0; i < f.size(); ++i) {
@@ -204,7 +203,7 @@ TEST(AdaptiveFrf, WorksThroughTheSeamHostEvaluatedAndWithoutAShapedSpectrum)
     for (std::size_t i = 0; i < ra->measurement.frf.size(); ++i)
         EXPECT_NEAR(std::abs(ra->measurement.frf.h[i] - rb->measurement.frf.h[i]), 0.0,
                     1e-9 * std::abs(ra->measurement.frf.h[i]));
-    EXPECT_EQ(rb->measurement.frf.metadata.at("evaluated_by"), "host");
+    EXPECT_EQ(rb->measurement.frf.metadata.text("evaluated_by"), "host");
 
     // A drive that takes no spectrum: the passes after the first are flat bands, and they still add lines.
     auto c = realisticDdTable();

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <gtest/gtest.h>
 
-#include "tests/NumberText.h"
 #include "tests/core/device/DriveTestUtil.h"
 
 using namespace axistune;
@@ -70,13 +69,13 @@ TEST(SimulatedDriveCurrentStep, TracesAtTheCurrentRateAndHoldsAfterwards)
     const auto& cap = *trace;
     // 4 ms at 62.5 µs: 64 samples, fs = 16 kHz; the step 10 % in, at sample 6 (0.4 ms / 62.5 µs = 6.4 → 6).
     ASSERT_EQ(cap.size(), 64u);
-    EXPECT_DOUBLE_EQ(axistune::testutil::stod(cap.metadata.at("fs_Hz")), 16000.0);
-    EXPECT_EQ(cap.metadata.at("test"), "current_step");
-    EXPECT_EQ(cap.metadata.at("step_amplitude_A"), "5");
-    EXPECT_EQ(cap.metadata.at("voltage_clamped_ticks"), "0");
+    EXPECT_DOUBLE_EQ(cap.metadata.number("fs_Hz").value(), 16000.0);
+    EXPECT_EQ(cap.metadata.text("test"), "current_step");
+    EXPECT_EQ(cap.metadata.number("step_amplitude_A").value(), 5.0);
+    EXPECT_EQ(cap.metadata.number("voltage_clamped_ticks").value(), 0.0);
     const auto& t = cap.channel("t_s")->data;
     const auto& cmd = cap.channel("current_cmd_A")->data;
-    EXPECT_DOUBLE_EQ(axistune::testutil::stod(cap.metadata.at("step_start_s")), t[6]);
+    EXPECT_DOUBLE_EQ(cap.metadata.number("step_start_s").value(), t[6]);
     EXPECT_EQ(cmd[5], 0.0);
     EXPECT_EQ(cmd[6], 5.0);
     EXPECT_EQ(cmd.back(), 5.0);
@@ -101,7 +100,7 @@ TEST(SimulatedDriveCurrentStep, TracesAtTheCurrentRateAndHoldsAfterwards)
     auto vel = drive->readTrace();
     ASSERT_TRUE(vel.ok());
     EXPECT_EQ(vel->channels.size(), 14u);
-    EXPECT_DOUBLE_EQ(axistune::testutil::stod(vel->metadata.at("fs_Hz")), 4000.0);
+    EXPECT_DOUBLE_EQ(vel->metadata.number("fs_Hz").value(), 4000.0);
 }
 
 TEST(SimulatedDriveCurrentStep, RefusesBeyondItsLimitsAndNamesThem)

@@ -156,9 +156,9 @@ TEST(SimulatedDriveFrf, TwoInertiaMatchesTheAnalyticClosedLoop)
     frf.points = 15;
     const auto m = runFrf(*drive, r);
     ASSERT_EQ(m.frf.size(), 15u);
-    EXPECT_EQ(m.frf.metadata.at("method"), "multisweep");
-    EXPECT_EQ(m.frf.metadata.at("injection_hold_corrected"), "true");
-    EXPECT_EQ(m.frf.metadata.at("injection_hold_ticks"), "4");
+    EXPECT_EQ(m.frf.metadata.text("method"), "multisweep");
+    EXPECT_EQ(m.frf.metadata.text("injection_hold_corrected"), "true");
+    EXPECT_EQ(m.frf.metadata.number("injection_hold_ticks").value(), 4.0);
     for (std::size_t i = 0; i < m.frf.size(); ++i) {
         const double f = m.frf.freqHz[i];
         EXPECT_TRUE(m.frf.valid[i]) << f;
@@ -167,8 +167,8 @@ TEST(SimulatedDriveFrf, TwoInertiaMatchesTheAnalyticClosedLoop)
         EXPECT_NEAR(dev.deg, 0.0, 1.0) << f << " Hz";
     }
     // The sweep recording keeps the raw −T_c/d and names the hold for a re-analysis.
-    EXPECT_EQ(m.sweep.metadata.count("injection_hold_corrected"), 0u);
-    EXPECT_EQ(m.sweep.metadata.at("injection_hold_ticks"), "4");
+    EXPECT_FALSE(m.sweep.metadata.contains("injection_hold_corrected"));
+    EXPECT_EQ(m.sweep.metadata.number("injection_hold_ticks").value(), 4.0);
     // The parameters return after the test.
     EXPECT_DOUBLE_EQ(drive->simulator("A")->parameter("trace.divider"), 1.0);
 }
@@ -237,8 +237,8 @@ TEST(SimulatedDriveFrf, PrbsIsTheClosedLoopWithoutAHoldFactor)
     frf.points = 12;
     const auto m = runFrf(*drive, r);
     ASSERT_GE(m.frf.size(), 6u);
-    EXPECT_EQ(m.frf.metadata.at("injection_hold_corrected"), "true");
-    EXPECT_EQ(m.frf.metadata.at("injection_hold_velocity_periods"), "1");
+    EXPECT_EQ(m.frf.metadata.text("injection_hold_corrected"), "true");
+    EXPECT_EQ(m.frf.metadata.number("injection_hold_velocity_periods").value(), 1.0);
     for (std::size_t i = 0; i < m.frf.size(); ++i) {
         const double f = m.frf.freqHz[i];
         const auto dev = deviation(m.frf.h[i], heldClosedLoop(model, f));
@@ -297,8 +297,8 @@ TEST(SimulatedDriveFrf, DdTableMultiSweepShowsThe3300HzModeAndConventionalIsInva
         }
     }
     EXPECT_GE(above, 3u);
-    EXPECT_EQ(c.frf.metadata.at("method"), "conventional");
-    EXPECT_EQ(c.frf.metadata.at("injection_hold_corrected"), "true");
+    EXPECT_EQ(c.frf.metadata.text("method"), "conventional");
+    EXPECT_EQ(c.frf.metadata.text("injection_hold_corrected"), "true");
 }
 
 TEST(SimulatedDriveFrf, AmplitudeAboveTheLimitIsRefusedAndAbortRestores)

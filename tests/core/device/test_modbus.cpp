@@ -424,7 +424,7 @@ TEST(ModbusDrive, CurrentStepOverModbusIsTheEmbeddedTrace)
     const auto& tl = traces[1];
     ASSERT_TRUE(tr && tl);
     EXPECT_EQ(tl->size(), 80u); // 5 ms at 62.5 µs
-    EXPECT_EQ(tl->metadata.at("fs_Hz"), "16000");
+    EXPECT_EQ(tl->metadata.number("fs_Hz").value(), 16000.0);
     EXPECT_EQ(tr->metadata, tl->metadata);
     ASSERT_EQ(tr->channels.size(), tl->channels.size());
     for (std::size_t c = 0; c < tl->channels.size(); ++c) {
@@ -498,7 +498,7 @@ TEST(ModbusDrive, ANewClientRunsItsOwnTestNotTheLastClientsRetry)
     ASSERT_TRUE(s.ok() && s->state == TestState::Completed);
     auto t = second->readTrace();
     ASSERT_TRUE(t.ok()) << t.error().detail;
-    EXPECT_EQ(t->metadata.at("fs_Hz"), "16000"); // the current step's trace, not the velocity step's (4000)
+    EXPECT_EQ(t->metadata.number("fs_Hz").value(), 16000.0); // the current step's trace, not the velocity step's (4000)
     EXPECT_EQ(t->size(), 32u);
     // And a refusal reaches the second client too.
     current.currentA = 45.0;

@@ -19,7 +19,6 @@
 #include <numbers>
 #include <thread>
 
-#include "tests/NumberText.h"
 #include "tests/core/device/DriveTestUtil.h"
 #include "tests/core/sim/LiftedModel.h"
 
@@ -42,8 +41,8 @@ std::complex<double> reference(const simtest::LiftedInjectionLoop& model, const 
 {
     std::complex<double> ref = model.closedLoop(f);
     if (dsp::isInjectionHoldCorrected(frf)) {
-        const int n = std::stoi(frf.metadata.at("injection_hold_ticks"));
-        ref /= dsp::injectionHoldFactor(f, axistune::testutil::stod(frf.metadata.at("injection_hold_period_s")), n);
+        const int n = static_cast<int>(frf.metadata.integer("injection_hold_ticks").value());
+        ref /= dsp::injectionHoldFactor(f, frf.metadata.number("injection_hold_period_s").value(), n);
     }
     return ref;
 }
@@ -105,11 +104,11 @@ TEST(SimulatedDriveMultisine, DdTableAgreesWithMultiSweepAndTheAnalyticLoop)
     auto drive = makeDrive("dd-table");
     drive->simulator("C")->setNonlinearities({false, false, false, false, false});
     const auto ms = runFrf(*drive, multisineRequest());
-    EXPECT_EQ(ms.frf.metadata.at("method"), "multisine");
+    EXPECT_EQ(ms.frf.metadata.text("method"), "multisine");
     EXPECT_LE(ms.motionTimeS, 5.0);
     std::cout << "multisine: " << ms.frf.size() << " lines, motion " << ms.motionTimeS << " s, crest factor "
-              << ms.frf.metadata.at("crest_factor") << ", settle " << ms.frf.metadata.at("settle_s") << " s, periods "
-              << ms.frf.metadata.at("periods") << "\n";
+              << ms.frf.metadata.textOr("crest_factor", "") << ", settle " << ms.frf.metadata.textOr("settle_s", "")
+              << " s, periods " << ms.frf.metadata.textOr("periods", "") << "\n";
     ASSERT_GE(ms.frf.size(), 380u);
     double worstDb = 0.0, worstDeg = 0.0;
     std::size_t peak = ms.frf.size() - 1;
@@ -200,8 +199,8 @@ TEST(SimulatedDriveMultisine, TracedInjectionPeakIsTheRequestedPeak)
     for (double x : d->data)
         peak = std::max(peak, std::abs(x));
     EXPECT_LE(peak, limit * (1.0 + 1e-12));
-    EXPECT_NEAR(axistune::testutil::stod(m.frf.metadata.at("peak_Nm")), limit, 1e-9 * limit);
-    EXPECT_LT(axistune::testutil::stod(m.frf.metadata.at("crest_factor")), 2.0);
+    EXPECT_NEAR(m.frf.metadata.number("peak_Nm").value(), limit, 1e-9 * limit);
+    EXPECT_LT(m.frf.metadata.number("crest_factor").value(), 2.0);
     EXPECT_EQ(m.relativeNoise.size(), m.frf.size());
 }
 
@@ -236,9 +235,9 @@ TEST(ModbusMultisine, FrfOverModbusIsTheEmbeddedFrf)
         EXPECT_LE(std::abs(a.h[i] - b.h[i]), 1e-9 * std::abs(b.h[i])) << b.freqHz[i];
         EXPECT_EQ(a.valid[i], b.valid[i]);
     }
-    EXPECT_EQ(a.metadata.at("method"), "multisine");
-    EXPECT_EQ(a.metadata.at("phases"), "schroeder");
-    EXPECT_EQ(a.metadata.at("periods"), "3");
+    EXPECT_EQ(a.metadata.text("method"), "multisine");
+    EXPECT_EQ(a.metadata.text("phases"), "schroeder");
+    EXPECT_EQ(a.metadata.number("periods").value(), 3.0);
     EXPECT_EQ(m[0].motionTimeS, m[1].motionTimeS);
     // A shape is not carried by the test block: refused by the client before anything moves.
     frf.multisineShape = {{100.0, 1.0}, {1000.0, 0.5}};

@@ -81,7 +81,7 @@ TEST(ReplayDrive, PlaysTheRecordedTestWithItsPlan)
     ASSERT_TRUE(trace.ok());
     EXPECT_EQ(trace->size(), 5u);
     EXPECT_EQ(trace->channel("motor_vel_rad_s")->data[3], 2.5);
-    EXPECT_EQ(trace->metadata.at("connection").rfind("replay:", 0), 0u);
+    EXPECT_EQ(trace->metadata.text("connection").value().rfind("replay:", 0), 0u);
 }
 
 TEST(ReplayDrive, RefusesWhatItCannotReplay)

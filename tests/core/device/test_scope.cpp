@@ -7,13 +7,12 @@
 #include "core/device/TestRunner.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/ScopeCsv.h"
-#include "core/model/Number.h"
-#include "tests/ScopedTempDir.h"
 
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
 
+#include "tests/ScopedTempDir.h"
 #include "tests/core/device/DriveTestUtil.h"
 #include "tests/core/device/ScopeTestUtil.h"
 
@@ -388,11 +387,11 @@ TEST(ScopeCsv, ACaptureReloadsIdenticalFromItsCsv)
         EXPECT_EQ(t->capture.channels[0].name, "sample");
         for (std::size_t k = 0; k < c->channels.size(); ++k) {
             EXPECT_EQ(t->capture.channels[k + 1].name, c->channels[k].name);
-            EXPECT_EQ(t->capture.metadata.at("unit." + c->channels[k].name), c->channels[k].unit);
+            EXPECT_EQ(t->capture.metadata.text("unit." + c->channels[k].name), c->channels[k].unit);
             ASSERT_EQ(t->capture.channels[k + 1].data, c->columns[k]) << c->channels[k].name;
         }
         if (c->triggered) {
-            EXPECT_EQ(t->capture.metadata.at("trigger_row"), "100");
+            EXPECT_EQ(t->capture.metadata.number("trigger_row").value(), 100.0);
         }
     }
 }
@@ -521,8 +520,7 @@ TEST(Scope, TwoAxesInOneScopeDrawTheCircleAtOneInstant)
     const auto& sx = scope.columns[1];
     const auto& sy = scope.columns[2];
     // The trace takes one row per position period (its fs_Hz), the scope one per velocity period (4 kHz).
-    const auto same =
-        axistune::testing::sameInstant(sx, sy, *tx, *ty, model::parseNumber(trace.metadata.at("fs_Hz")).value_or(0.0));
+    const auto same = axistune::testing::sameInstant(sx, sy, *tx, *ty, trace.metadata.number("fs_Hz").value());
     ASSERT_TRUE(same.found) << same.report;
     EXPECT_EQ(same.worstY, 0.0) << "Y at the instant of X [m]";
 

@@ -120,12 +120,12 @@ TEST(ScopeHistory, ABadTableIsRefusedNamingTheField)
     auto r = scopeCaptureFromTable(t);
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error().detail.find("fs_Hz"), std::string::npos) << r.error().detail;
-    t.metadata["fs_Hz"] = "1000";
-    t.metadata["scope_mode"] = "triggered";
+    t.metadata.set("fs_Hz", 1000.0);
+    t.metadata.set("scope_mode", "triggered");
     r = scopeCaptureFromTable(t);
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error().detail.find("trigger_sample"), std::string::npos) << r.error().detail;
-    t.metadata["trigger_sample"] = "1";
+    t.metadata.set("trigger_sample", 1.0);
     t.channels[0].data = {0, 0.5};
     r = scopeCaptureFromTable(t);
     ASSERT_FALSE(r.ok());

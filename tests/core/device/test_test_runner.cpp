@@ -87,7 +87,7 @@ void expectHostEqualsDrive(FrfMethod method)
     ASSERT_TRUE(byDrive->frf && byHost->frf);
     EXPECT_FALSE(byDrive->frfEvaluatedOnHost);
     EXPECT_TRUE(byHost->frfEvaluatedOnHost);
-    EXPECT_EQ(byHost->frf->frf.metadata.at("evaluated_by"), "host");
+    EXPECT_EQ(byHost->frf->frf.metadata.text("evaluated_by"), "host");
     const auto& d = byDrive->frf->frf;
     const auto& h = byHost->frf->frf;
     ASSERT_GE(d.size(), 6u);

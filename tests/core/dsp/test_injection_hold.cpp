@@ -73,7 +73,7 @@ TEST(InjectionHold, CorrectsOnceAndRecordsIt)
     EXPECT_TRUE(frf.valid[0]);
     EXPECT_FALSE(frf.valid[1]);
     EXPECT_TRUE(isInjectionHoldCorrected(frf));
-    EXPECT_EQ(frf.metadata.at("injection_hold_ticks"), "4");
+    EXPECT_EQ(frf.metadata.number("injection_hold_ticks").value(), 4.0);
     EXPECT_FALSE(correctInjectionHold(frf, 62.5e-6, 4).ok()); // never twice
     FrequencyResponse other;
     EXPECT_FALSE(correctInjectionHold(other, 0.0, 4).ok());

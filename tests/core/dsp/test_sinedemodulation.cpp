@@ -228,5 +228,5 @@ TEST(SineDemodulation, RecordingFrfIsResponseOverExcitation)
         EXPECT_TRUE(frf->valid[i]);
         EXPECT_TRUE(std::isnan(frf->coherence[i]));
     }
-    EXPECT_EQ(frf->metadata.at("method"), "multisweep");
+    EXPECT_EQ(frf->metadata.text("method"), "multisweep");
 }

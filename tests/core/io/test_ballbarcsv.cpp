@@ -47,7 +47,7 @@ TEST(BallBarCsv, ReadsMetadataInSiAndSamples)
     ASSERT_TRUE(r->dTxNm.has_value());
     EXPECT_DOUBLE_EQ(*r->dTxNm, 0.61);
     EXPECT_DOUBLE_EQ(*r->dTyNm, 0.6);
-    EXPECT_EQ(r->metadata.at("operator"), "someone");
+    EXPECT_EQ(r->metadata.text("operator"), "someone");
     ASSERT_EQ(r->size(), 36u);
     EXPECT_NEAR(r->angleRad[3], 30.0 * kDeg, 1e-15);
     EXPECT_NEAR(r->deviationM[3], 1.5e-6, 1e-18);
@@ -113,7 +113,7 @@ TEST(BallBarCsv, WriterRoundTripsExactly)
     t.centerXM = 0.25;
     t.centerYM = -0.125;
     t.dTyNm = 0.61;
-    t.metadata["machine"] = "vmc";
+    t.metadata.set("machine", "vmc");
     for (int i = 0; i < 3600; ++i) {
         t.angleRad.push_back((360.0 - 0.1 * i) * kDeg);
         t.deviationM.push_back(1e-6 * std::sin(0.01 * i) + 1e-9 * i);
@@ -129,7 +129,7 @@ TEST(BallBarCsv, WriterRoundTripsExactly)
     EXPECT_DOUBLE_EQ(r->centerYM, -0.125);
     EXPECT_FALSE(r->dTxNm.has_value());
     EXPECT_DOUBLE_EQ(*r->dTyNm, 0.61);
-    EXPECT_EQ(r->metadata.at("machine"), "vmc");
+    EXPECT_EQ(r->metadata.text("machine"), "vmc");
     ASSERT_EQ(r->size(), t.size());
     for (std::size_t i = 0; i < t.size(); ++i) {
         EXPECT_NEAR(r->angleRad[i], t.angleRad[i], 1e-14);

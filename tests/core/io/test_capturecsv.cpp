@@ -10,8 +10,8 @@ using namespace axistune;
 TEST(CaptureCsv, RoundTripKeepsMetadataColumnsAndFullPrecision)
 {
     model::Capture c;
-    c.metadata["fs_Hz"] = "4000";
-    c.metadata["axis"] = "X";
+    c.metadata.set("fs_Hz", 4000.0);
+    c.metadata.set("axis", "X");
     c.channels.push_back({"t_s", {0.0, 0.00025, 0.0005}});
     c.channels.push_back({"torque_cmd_Nm", {0.1, -1.0 / 3.0, 1e-300}});
     std::stringstream ss;

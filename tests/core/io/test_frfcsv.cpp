@@ -14,8 +14,8 @@ namespace {
 dsp::FrequencyResponse sample()
 {
     dsp::FrequencyResponse f;
-    f.metadata["method"] = "multisweep";
-    f.metadata["fs_Hz"] = "4000";
+    f.metadata.set("method", "multisweep");
+    f.metadata.set("fs_Hz", 4000.0);
     f.push(10.0, {1.0, -0.1}, std::nan(""), true);
     f.push(100.5, {0.123456789012345678, 1e-300}, 0.987654321, true);
     f.push(3900.0, {-2.5, 3.25}, std::nan(""), false);

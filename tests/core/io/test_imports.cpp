@@ -36,8 +36,8 @@ TEST(FrfUnits, MicrometrePerNewtonIsConvertedAndUnknownUnitRefused)
     ASSERT_TRUE(frf) << frf.error().detail;
     EXPECT_DOUBLE_EQ(frf->h[0].real(), 2.5e-6);
     EXPECT_DOUBLE_EQ(frf->h[0].imag(), -1.25e-6);
-    EXPECT_EQ(frf->metadata.at("units"), "m/N");
-    EXPECT_EQ(frf->metadata.at("units_in_file"), "um/N");
+    EXPECT_EQ(frf->metadata.text("units"), "m/N");
+    EXPECT_EQ(frf->metadata.text("units_in_file"), "um/N");
     std::istringstream bad("# units=inch/lbf\nf_Hz,re,im\n100,2.5,-1.25\n");
     auto r = io::readFrfCsv(bad, "tool_in.csv");
     ASSERT_FALSE(r);
@@ -47,7 +47,7 @@ TEST(FrfUnits, MicrometrePerNewtonIsConvertedAndUnknownUnitRefused)
     auto a = io::readFrfCsv(accel, "a.csv");
     ASSERT_TRUE(a);
     EXPECT_DOUBLE_EQ(a->h[0].real(), 9.80665); // standard gravity, by definition
-    EXPECT_EQ(a->metadata.at("units"), "m/s2/N");
+    EXPECT_EQ(a->metadata.text("units"), "m/s2/N");
 }
 
 TEST(TableImport, SemicolonWithDecimalComma)
@@ -60,8 +60,8 @@ TEST(TableImport, SemicolonWithDecimalComma)
     EXPECT_EQ(t->channels[1].data[0], 1.5);
     EXPECT_EQ(t->channels[2].data[0], -2.25);
     EXPECT_EQ(t->channels[0].data[1], 0.001);
-    EXPECT_EQ(t->metadata.at("separator"), "semicolon");
-    EXPECT_EQ(t->metadata.at("decimal"), "comma");
+    EXPECT_EQ(t->metadata.text("separator"), "semicolon");
+    EXPECT_EQ(t->metadata.text("decimal"), "comma");
     std::istringstream bad("a;b\n1,5;2.5\n");
     auto r = io::readTable(bad, "mixed.csv", {});
     ASSERT_FALSE(r);
@@ -73,7 +73,7 @@ TEST(TableImport, TabHeaderlessNamesAndUnits)
     std::istringstream tab("t\tforce\taccel\n0\t1\t2\n0.5\t3\t4\n");
     auto t = io::readTable(tab, "tab.txt", {});
     ASSERT_TRUE(t) << t.error().detail;
-    EXPECT_EQ(t->metadata.at("separator"), "tab");
+    EXPECT_EQ(t->metadata.text("separator"), "tab");
     EXPECT_EQ(t->channels[2].data[1], 4.0);
 
     std::istringstream noHeader("0.0,10,1\n0.001,20,2\n");
@@ -85,7 +85,7 @@ TEST(TableImport, TabHeaderlessNamesAndUnits)
     EXPECT_DOUBLE_EQ(h->channel("force")->data[1], 20e3);
     EXPECT_DOUBLE_EQ(h->channel("accel")->data[1], 2 * 9.80665);
     EXPECT_DOUBLE_EQ(h->channel("t")->data[1], 1e-6);
-    EXPECT_EQ(h->metadata.at("unit.accel"), "m/s2");
+    EXPECT_EQ(h->metadata.text("unit.accel"), "m/s2");
 
     std::istringstream plain("1 2\n3 4\n");
     auto p = io::readTable(plain, "p.txt", {});
@@ -113,7 +113,7 @@ TEST(TableImport, FrfColumnsPickedByName)
     auto h12 = io::frfFromTable(*t, "h.csv", c);
     ASSERT_TRUE(h12) << h12.error().detail;
     EXPECT_DOUBLE_EQ(h12->h[1].imag(), 6e-3);
-    EXPECT_EQ(h12->metadata.at("units"), "m/N");
+    EXPECT_EQ(h12->metadata.text("units"), "m/N");
 }
 
 TEST(SampleTime, JitteredColumnsAcceptedGapsRefused)
@@ -154,7 +154,7 @@ TEST(Halscope, SavedLogRead)
     ASSERT_EQ(c->channels.size(), 2u);
     EXPECT_EQ(c->channels[1].name, "ferror");
     EXPECT_EQ(c->channels[1].data[1], 2.5e-6);
-    EXPECT_EQ(c->metadata.at("fs_Hz"), "1000");
+    EXPECT_EQ(c->metadata.number("fs_Hz").value(), 1000.0);
     std::istringstream bad("Sampling period is 1000000 ns \nx-vel +0.1 ferror\n");
     auto b = io::readHalscope(bad, "bad.log");
     ASSERT_FALSE(b);
@@ -194,17 +194,17 @@ TEST(Uff58, IndependentFileReadBackExactly)
     // record 1: accelerance in mm/s^2 per N (units labels) → m/s2/N
     auto f1 = io::frfFromUff((*recs)[0], "frf.unv");
     ASSERT_TRUE(f1) << f1.error().detail;
-    EXPECT_EQ(f1->metadata.at("units"), "m/s2/N");
+    EXPECT_EQ(f1->metadata.text("units"), "m/s2/N");
     EXPECT_DOUBLE_EQ(f1->h[0].real(), (*recs)[0].y[0].real() * 1e-3);
     // record 2: no labels, SI by data type (noted)
     auto f2 = io::frfFromUff((*recs)[1], "frf.unv");
     ASSERT_TRUE(f2);
-    EXPECT_EQ(f2->metadata.at("units"), "m/N");
-    EXPECT_EQ(f2->metadata.at("units_assumed"), "SI");
+    EXPECT_EQ(f2->metadata.text("units"), "m/N");
+    EXPECT_EQ(f2->metadata.text("units_assumed"), "SI");
     // record 3: time response
     auto cap = io::captureFromUff(*recs, "frf.unv");
     ASSERT_TRUE(cap) << cap.error().detail;
-    EXPECT_NEAR(num(cap->metadata.at("fs_Hz")), 1.0 / 4.88281e-4, 1e-9); // the increment as written (E13.5)
+    EXPECT_NEAR(cap->metadata.number("fs_Hz").value(), 1.0 / 4.88281e-4, 1e-9); // the increment as written (E13.5)
     EXPECT_FALSE(io::frfFromUff((*recs)[2], "frf.unv"));
 }
 

@@ -21,7 +21,7 @@ TEST(SweepCsv, RoundTripAndDemodulation)
     dsp::SweepRecording rec;
     rec.fsHz = 4000.0;
     rec.amplitude = 1.0;
-    rec.metadata["axis"] = "X";
+    rec.metadata.set("axis", "X");
     for (double psi : {0.0, 120.0, -120.0}) {
         dsp::SweepBlock b;
         b.freqHz = 2900.0;
@@ -41,7 +41,7 @@ TEST(SweepCsv, RoundTripAndDemodulation)
     auto back = parse(out.str());
     ASSERT_TRUE(back.ok()) << back.error().detail;
     EXPECT_EQ(back->fsHz, 4000.0);
-    EXPECT_EQ(back->metadata.at("axis"), "X");
+    EXPECT_EQ(back->metadata.text("axis"), "X");
     ASSERT_EQ(back->blocks.size(), 3u);
     for (std::size_t i = 0; i < 3; ++i) {
         EXPECT_EQ(back->blocks[i].sample, rec.blocks[i].sample);

@@ -35,9 +35,9 @@ TEST(ExponentialWindow, MoreWindowDampingThanTheModeIsRefused)
     ASSERT_FALSE(r);
     EXPECT_NE(r.error().detail.find("longer time constant"), std::string::npos);
     dsp::FrequencyResponse frf;
-    frf.metadata["exp_window_decay_1_s"] = "abc";
+    frf.metadata.set("exp_window_decay_1_s", "abc");
     EXPECT_FALSE(machining::exponentialWindowDecay(frf));
-    frf.metadata["exp_window_decay_1_s"] = "12.5";
+    frf.metadata.set("exp_window_decay_1_s", "12.5");
     ASSERT_TRUE(machining::exponentialWindowDecay(frf));
     EXPECT_EQ(*machining::exponentialWindowDecay(frf), 12.5);
 }

@@ -99,33 +99,5 @@ TEST(Number, ShortestAndSeventeenDigitsRoundTrip)
     }
 }
 
-TEST(Number, MetadataNumbersNameTheKey)
-{
-    Metadata md{{"fs_Hz", "4000"}, {"bad", "4,0"}, {"ticks", "8"}};
-    EXPECT_EQ(metadataNumber(md, "fs_Hz").value(), 4000.0);
-    const auto missing = metadataNumber(md, "current_period_s");
-    ASSERT_FALSE(missing);
-    EXPECT_EQ(missing.error().code, ErrorCode::NotFound);
-    EXPECT_EQ(missing.error().detail, "metadata 'current_period_s' is missing");
-    const auto bad = metadataNumber(md, "bad");
-    ASSERT_FALSE(bad);
-    EXPECT_EQ(bad.error().code, ErrorCode::BadInput);
-    EXPECT_EQ(bad.error().detail, "metadata 'bad' is not a number ('4,0')");
-    EXPECT_FALSE(optionalMetadataNumber(md, "none").value().has_value());
-    EXPECT_FALSE(optionalMetadataNumber(md, "bad"));
-    EXPECT_EQ(metadataInteger(md, "ticks").value(), 8);
-    EXPECT_EQ(metadataInteger(Metadata{{"n", "8.5"}}, "n").error().detail,
-              "metadata 'n' is not a whole number ('8.5')");
-    EXPECT_EQ(metadataSamplePeriodS(md).value(), 1.0 / 4000.0);
-    EXPECT_FALSE(metadataSamplePeriodS(Metadata{}).value().has_value());
-    EXPECT_EQ(metadataSamplePeriodS(Metadata{{"fs_Hz", "-1"}}).error().detail,
-              "metadata 'fs_Hz' is not a positive number ('-1')");
-    EXPECT_EQ(metadataSamplePeriodS(Metadata{{"fs_Hz", "4,0"}}).error().detail,
-              "metadata 'fs_Hz' is not a number ('4,0')");
-    setMetadataNumber(md, "x", 0.1);
-    EXPECT_EQ(md.at("x"), "0.10000000000000001");
-    EXPECT_EQ(metadataNumber(md, "x").value(), 0.1);
-}
-
 } // namespace
 } // namespace axistune::model

@@ -12,8 +12,6 @@
 #include <deque>
 #include <gtest/gtest.h>
 
-#include "tests/NumberText.h"
-
 using namespace axistune;
 using namespace axistune::sim;
 
@@ -83,7 +81,7 @@ TEST_P(CurrentStep, MatchesTheDiscreteClosedLoopOfTheSpec)
         names.push_back(ch.name);
     ASSERT_EQ(names, AxisSimulator::currentTraceChannelNames());
     ASSERT_EQ(cap.size(), n);
-    EXPECT_DOUBLE_EQ(axistune::testutil::stod(cap.metadata.at("fs_Hz")), 1.0 / 62.5e-6);
+    EXPECT_DOUBLE_EQ(cap.metadata.number("fs_Hz").value(), 1.0 / 62.5e-6);
     const auto& t = cap.channel("t_s")->data;
     const auto& cmd = cap.channel("current_cmd_A")->data;
     const auto& i = cap.channel("current_A")->data;
@@ -137,7 +135,7 @@ TEST(CurrentStepMode, VelocityTraceIsUntouchedAndHoldPositionStopsTheMotor)
     sim->run(0.3);
     const auto cap = sim->takeTrace();
     EXPECT_EQ(cap.channels.size(), 14u);
-    EXPECT_DOUBLE_EQ(axistune::testutil::stod(cap.metadata.at("fs_Hz")), 1.0 / sim->tracePeriod());
+    EXPECT_DOUBLE_EQ(cap.metadata.number("fs_Hz").value(), 1.0 / sim->tracePeriod());
     EXPECT_LT(std::abs(sim->motorVelocity()), 0.01);
     // The position loop brought the motor back to where it was held (lead 12 mm per revolution).
     EXPECT_NEAR(sim->motorPosition(), held, 1e-6);

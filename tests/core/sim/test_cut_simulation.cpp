@@ -64,7 +64,7 @@ TEST(CutSimulation, MeanTableForceIsMinusTheStaticChipForceAndZeroBeforeEngageme
     mean /= n;
     EXPECT_EQ(before, 0.0);
     EXPECT_NEAR(mean, -toolForce, 0.02 * std::abs(toolForce));
-    EXPECT_EQ(cap->metadata.at("lost_motion"), "off");
+    EXPECT_EQ(cap->metadata.text("lost_motion"), "off");
 }
 
 TEST(CutSimulation, RefusesRotaryAxesAndBadTimes)

@@ -3,7 +3,7 @@
 // Helpers for the store tests: temporary folders and deterministic captures.
 
 #include "core/model/Capture.h"
-#include "core/model/Number.h"
+#include "core/model/Metadata.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -41,8 +41,8 @@ inline std::filesystem::path tempDir(const std::string& tag)
 inline model::Capture makeCapture(std::size_t channels, std::size_t samples, double seed = 0.0)
 {
     model::Capture c;
-    c.metadata["fs_Hz"] = "4000";
-    c.metadata["seed"] = model::formatShortest(seed);
+    c.metadata.set("fs_Hz", 4000.0);
+    c.metadata.set("seed", seed);
     for (std::size_t k = 0; k < channels; ++k) {
         model::Channel ch;
         ch.name = "ch" + std::to_string(k) + "_Nm";

@@ -120,6 +120,39 @@ TEST(StoreDatabase, SessionRoundTripKeepsEveryBitAndField)
     EXPECT_EQ((*list)[0].resultCount, 1);
 }
 
+TEST(StoreDatabase, CaptureMetadataIsStoredAsJsonNumbersAndTextsAndCheckedOnLoad)
+{
+    const auto path = dbPath("metadata");
+    auto db = Database::open(path);
+    ASSERT_TRUE(db.ok()) << db.error().detail;
+    Database& d = db.value();
+    SessionRecord r;
+    r.info.machine = "vmc";
+    r.info.kind = "frf";
+    auto cap = testutil::makeCapture(1, 10, 0.1);
+    cap.metadata.set("test", "step");
+    r.captures.push_back({"sweep", cap});
+    auto id = d.recordSession(r);
+    ASSERT_TRUE(id.ok()) << id.error().detail;
+    const auto stored = nlohmann::json::parse(d.connection().execAndGet("SELECT metadata FROM captures").getString());
+    EXPECT_EQ(stored, (nlohmann::json{{"fs_Hz", 4000.0}, {"seed", 0.1}, {"test", "step"}}));
+
+    // Metadata stored as text by older versions reads as the same numbers.
+    d.connection().exec(R"(UPDATE captures SET metadata = '{"fs_Hz":"4000","seed":"0.1","test":"step"}')");
+    auto back = d.loadSession(*id);
+    ASSERT_TRUE(back.ok()) << back.error().detail;
+    EXPECT_EQ(back->captures[0].capture.metadata, cap.metadata);
+
+    d.connection().exec(R"(UPDATE captures SET metadata = '{"fs_Hz":[4000]}')");
+    auto bad = d.loadSession(*id);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().code, ErrorCode::BadInput);
+    EXPECT_NE(
+        bad.error().detail.find(path + ": session " + std::to_string(*id) + ", capture 'sweep': metadata 'fs_Hz'"),
+        std::string::npos)
+        << bad.error().detail;
+}
+
 TEST(StoreDatabase, CurrentParametersIgnoreProposalsAndTakeNewestValue)
 {
     auto db = Database::open(dbPath("params"));

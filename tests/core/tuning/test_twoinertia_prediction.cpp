@@ -22,9 +22,9 @@ TwoInertiaParams table51() { return TwoInertiaParams{0.00527, 0.0105, 200.0, 0.2
 dsp::FrequencyResponse closedLoop(const TwoInertiaParams& p, const VelocityPi& pi, double tv, double h, bool corrected)
 {
     dsp::FrequencyResponse t;
-    t.metadata["measurement"] = "complementary";
+    t.metadata.set("measurement", "complementary");
     if (corrected)
-        t.metadata["injection_hold_corrected"] = "true";
+        t.metadata.set("injection_hold_corrected", "true");
     const int n = static_cast<int>(std::lround(tv / h));
     for (int i = 0; i < 40; ++i) {
         const double f = 5.0 * std::pow(60.0, i / 39.0);
@@ -62,7 +62,7 @@ TEST(TwoInertiaPrediction, PlantFromVelocityLoopRefusesBadInput)
     auto t = closedLoop(table51(), {11.24, 1198.0}, 250e-6, 62.5e-6, false);
     EXPECT_FALSE(plantFromVelocityLoop(t, {0.0, 0.0}, 250e-6, 62.5e-6).ok());
     EXPECT_FALSE(plantFromVelocityLoop(t, {11.24, 1198.0}, 250e-6, 100e-6).ok());
-    t.metadata["measurement"] = "sensitivity";
+    t.metadata.set("measurement", "sensitivity");
     EXPECT_FALSE(plantFromVelocityLoop(t, {11.24, 1198.0}, 250e-6, 62.5e-6).ok());
 }
 

@@ -128,7 +128,7 @@ TEST(VelocityLoopDesign, RefusesWhatItCannotDesign)
     r.velocityPeriodS = 250e-6;
     r.method = VelocityLoopRequest::Method::Frf;
     dsp::FrequencyResponse lagging;
-    lagging.metadata["measurement"] = "plant";
+    lagging.metadata.set("measurement", "plant");
     for (int i = 1; i <= 100; ++i)
         lagging.push(5.0 * i, std::polar(1.0, -170.0 * std::numbers::pi / 180.0), 1.0, true);
     r.measured = lagging;
@@ -136,7 +136,7 @@ TEST(VelocityLoopDesign, RefusesWhatItCannotDesign)
     d = designVelocityLoop(r);
     ASSERT_FALSE(d.ok());
     EXPECT_EQ(d.error().code, ErrorCode::OutOfRange);
-    r.measured->metadata["measurement"] = "bode";
+    r.measured->metadata.set("measurement", "bode");
     d = designVelocityLoop(r);
     ASSERT_FALSE(d.ok());
     EXPECT_NE(d.error().detail.find("'bode'"), std::string::npos);
@@ -154,7 +154,7 @@ TEST(VelocityLoopDesign, OneParserOfLoopMeasurements)
     dsp::FrequencyResponse f;
     EXPECT_EQ(*loopMeasurementOf(f, LoopMeasurementKind::Complementary), LoopMeasurementKind::Complementary);
     EXPECT_EQ(*loopMeasurementOf(f, LoopMeasurementKind::Plant), LoopMeasurementKind::Plant);
-    f.metadata["measurement"] = "open";
+    f.metadata.set("measurement", "open");
     EXPECT_EQ(*loopMeasurementOf(f, LoopMeasurementKind::Plant), LoopMeasurementKind::Open);
     EXPECT_TRUE(loopFormOf(LoopMeasurementKind::Open)->open);
     EXPECT_EQ(loopFormOf(LoopMeasurementKind::Sensitivity)->closed, dsp::LoopMeasurement::Sensitivity);
@@ -167,7 +167,7 @@ TEST(VelocityLoopDesign, PlantFromAnOpenLoopDividesByTheDiscretePi)
     const VelocityPi pi{0.8, 75.0};
     const double tv = 250e-6;
     dsp::FrequencyResponse open;
-    open.metadata["measurement"] = "open";
+    open.metadata.set("measurement", "open");
     std::vector<std::complex<double>> plant;
     for (int i = 1; i <= 50; ++i) {
         const double f = 10.0 * i;
@@ -180,7 +180,7 @@ TEST(VelocityLoopDesign, PlantFromAnOpenLoopDividesByTheDiscretePi)
     ASSERT_TRUE(p.ok()) << p.error().detail;
     for (std::size_t i = 0; i < plant.size(); ++i)
         EXPECT_NEAR(std::abs(p->h[i] - plant[i]), 0.0, 1e-12 * std::abs(plant[i]));
-    EXPECT_EQ(p->metadata.at("measurement"), "plant");
+    EXPECT_EQ(p->metadata.text("measurement"), "plant");
 }
 
 TEST(VelocityLoopDesign, NotchSlotsGoToTheFreeSlots)

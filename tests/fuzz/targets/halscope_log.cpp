@@ -3,7 +3,6 @@
 // halscope "Save Log" reader (io::readHalscope): refused with the source named, or channels of one
 // length with finite values and a positive, finite sample rate.
 #include "core/io/TableImport.h"
-#include "core/model/Number.h"
 
 #include <sstream>
 
@@ -20,7 +19,7 @@ AXISTUNE_FUZZ_TARGET(halscope_log)
             for (double v : ch.data)
                 fuzz::requireFinite(v, "value of " + ch.name);
         }
-        const auto fs = model::metadataNumber(c.metadata, "fs_Hz");
+        const auto fs = c.metadata.number("fs_Hz");
         fuzz::require(fs.ok() && *fs > 0.0, "an accepted log without a positive fs_Hz");
     });
 }
