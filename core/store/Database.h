@@ -40,7 +40,7 @@ enum class OpenMode {
 
 class Database {
 public:
-    static constexpr int kSchemaVersion = 2;
+    static constexpr int kSchemaVersion = 3;
     static constexpr std::int32_t kApplicationId = 0x41585455;  // "AXTU"
 
     /// Opens (and creates or migrates) a store. Refuses, with a message naming the file: a file that

@@ -107,6 +107,12 @@ CREATE INDEX parameter_sets_axis ON parameter_sets(axis_id);
 CREATE INDEX models_axis ON models(axis_id);
 CREATE INDEX journal_axis ON journal(axis_id);
 )sql"},
+        // No table changes: the version tells an older AxisTune, which reads capture metadata only as strings, to
+        // refuse the file ("written by a newer AxisTune") rather than fail on the first session it loads.
+        {3, "capture metadata values may be JSON numbers (model::Metadata); strings of earlier versions still read",
+         R"sql(
+-- captures.metadata: {"fs_Hz": 4000, "test": "step"}; version 2 wrote {"fs_Hz": "4000", "test": "step"}
+)sql"},
     };
     return list;
 }

@@ -80,7 +80,7 @@ TEST(StoreMigration, Version1FileMigratesAndKeepsItsData)
     auto db = Database::open(path);
     ASSERT_TRUE(db.ok()) << db.error().detail;
     Database& d = db.value();
-    EXPECT_EQ(d.schemaVersion(), 2);
+    EXPECT_EQ(d.schemaVersion(), 3);
     auto s = d.loadSession(1);
     ASSERT_TRUE(s.ok()) << s.error().detail;
     EXPECT_EQ(s->info.kind, "frf");
@@ -89,6 +89,9 @@ TEST(StoreMigration, Version1FileMigratesAndKeepsItsData)
     EXPECT_EQ(s->inputs["amplitude_Nm"], 2);
     ASSERT_EQ(s->captures.size(), 1u);
     EXPECT_EQ(s->captures[0].capture.channels[0].data, std::vector<double>(values, values + 4));
+    // Version 1 and 2 stored every metadata value as a string: a number's text reads as the number.
+    EXPECT_TRUE(s->captures[0].capture.metadata.find("fs_Hz")->isNumber());
+    EXPECT_EQ(s->captures[0].capture.metadata.number("fs_Hz").value(), 4000.0);
     ASSERT_EQ(s->journal.size(), 1u);
     EXPECT_EQ(*s->journal[0].oldValue, 1.5);
     auto p = d.currentParameters("vmc", "X");

@@ -59,7 +59,7 @@ TEST(StoreOpen, NewerSchemaIsRefused)
         SQLite::Database raw(path, SQLite::OPEN_READWRITE);
         raw.exec("PRAGMA user_version = 99");
     }
-    expectRefused(path, "newer AxisTune (store schema version 99, this version reads up to 2)");
+    expectRefused(path, "newer AxisTune (store schema version 99, this version reads up to 3)");
 }
 
 TEST(StoreOpen, TruncatedFileIsRefused)
