@@ -2,16 +2,20 @@
 #include "core/model/MetadataJson.h"
 
 #include <cmath>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 
 namespace axistune::model {
 
 void to_json(nlohmann::json& j, const MetadataValue& value)
 {
-    if (const auto v = value.number(); value.isNumber() && std::isfinite(*v))
-        j = *v;
-    else
+    const auto v = value.number();
+    if (!value.isNumber() || !std::isfinite(*v))
         j = value.text();
+    else if (*v == std::trunc(*v) && std::fabs(*v) < 9007199254740992.0) // whole, below 2^53: 4000, not 4000.0
+        j = static_cast<std::int64_t>(*v);
+    else
+        j = *v;
 }
 
 void to_json(nlohmann::json& j, const Metadata& metadata)

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Metadata as JSON (sessions in the store, the session export, the CLI's summaries): an object whose
-// numbers are JSON numbers and whose texts are strings. JSON has no inf or nan: those are written as their
+// numbers are JSON numbers (a whole number below 2^53 without a fraction: 4000, not 4000.0) and whose texts
+// are strings. JSON has no inf or nan: those are written as their
 // text ("inf", "nan") and read back as numbers.
 
 #include "core/model/Metadata.h"

@@ -117,6 +117,7 @@ TEST(Metadata, JsonKeepsNumbersAsNumbers)
                 {"peak", std::numeric_limits<double>::infinity()}};
     const nlohmann::json j(md);
     EXPECT_TRUE(j.at("fs_Hz").is_number());
+    EXPECT_EQ(j.dump(), R"({"fs_Hz":4000,"id":"0012","peak":"inf","test":"step","x":0.1})");
     EXPECT_EQ(j.at("fs_Hz").get<double>(), 4000.0);
     EXPECT_EQ(j.at("x").get<double>(), 0.1);
     EXPECT_EQ(j.at("test"), "step");
