@@ -71,7 +71,8 @@ void LogPanel::refreshJournal()
         m_journal->setItem(row, 0, new QTableWidgetItem(QString::fromStdString(e.time)));
         m_journal->setItem(row, 1, new QTableWidgetItem(QString::fromStdString(e.axis)));
         m_journal->setItem(row, 2, new QTableWidgetItem(QString::fromStdString(e.key)));
-        m_journal->setItem(row, 3, new QTableWidgetItem(e.oldValue ? QString::number(*e.oldValue, 'g', 8) : tr("unknown")));
+        m_journal->setItem(
+            row, 3, new QTableWidgetItem(e.oldValue ? QString::number(*e.oldValue, 'g', 8) : tr("not recorded")));
         m_journal->setItem(row, 4, new QTableWidgetItem(QString::number(e.newValue, 'g', 8)));
         m_journal->setItem(row, 5, new QTableWidgetItem(e.sessionId ? QString::number(*e.sessionId) : QString()));
     }

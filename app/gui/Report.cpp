@@ -411,7 +411,7 @@ struct Builder {
                                    "<td align=\"right\">%5</td></tr>")
                         .arg(esc(e.time), esc(e.axis), esc(e.key),
                              e.oldValue ? parameterValue(e.key, *e.oldValue)
-                                        : QCoreApplication::translate("SessionReport", "unknown"),
+                                        : QCoreApplication::translate("SessionReport", "not recorded"),
                              parameterValue(e.key, e.newValue));
         html += QStringLiteral("</table>");
     }

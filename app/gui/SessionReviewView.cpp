@@ -193,7 +193,8 @@ void SessionView::buildTables()
     auto* journal = table({tr("Time"), tr("Axis"), tr("Parameter"), tr("Old (SI)"), tr("New (SI)")}, m_tabs);
     journal->setObjectName("sessionJournal");
     for (const auto& e : m_record.journal)
-        addRow(journal, {qs(e.time), qs(e.axis), qs(e.key), e.oldValue ? QString::number(*e.oldValue, 'g', 8) : tr("unknown"),
+        addRow(journal, {qs(e.time), qs(e.axis), qs(e.key),
+                         e.oldValue ? QString::number(*e.oldValue, 'g', 8) : tr("not recorded"),
                          QString::number(e.newValue, 'g', 8)});
     m_tabs->addTab(journal, tr("Journal"));
 }

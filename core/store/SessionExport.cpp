@@ -108,11 +108,12 @@ nlohmann::json sessionSummaryJson(const SessionRecord& r)
     j["journal"] = nlohmann::json::array();
     for (const auto& e : r.journal) {
         nlohmann::json je{{"axis", e.axis}, {"key", e.key}, {"new", e.newValue}, {"time", e.time}};
-        // No null in result JSON (docs/formats.md "Undefined values"): a first write has no old value.
+        // No null in result JSON (docs/formats.md "Undefined values"). The store cannot tell a value that was not read
+        // before the write from a first write (StoreTypes.h): the reason says both.
         if (e.oldValue)
             je["old"] = *e.oldValue;
         else
-            model::putUndefined(je, "old", "no value before this write");
+            model::putUndefined(je, "old", "not recorded (not read before this write, or none before it)");
         j["journal"].push_back(je);
     }
     return j;

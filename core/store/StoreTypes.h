@@ -40,7 +40,7 @@ struct JournalEntry {
     std::string machine;  ///< filled when read back
     std::string axis;
     std::string key;
-    std::optional<double> oldValue;  ///< none when the old value was unknown
+    std::optional<double> oldValue; ///< none when not recorded: not read before the write, or none before it
     double newValue = 0.0;
     std::string time;  ///< empty: now
     std::optional<std::int64_t> sessionId;
