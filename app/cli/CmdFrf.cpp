@@ -76,10 +76,9 @@ Result<double> samplingFrequency(const model::Capture& cap, const FrfOptions& o,
     std::optional<double> fromTime;
     if (t != nullptr) {
         std::size_t first = 0;
-        if (const auto* v = cap.metadata.find("first_data_line")) {
-            const auto line = v->number();
-            first = line ? static_cast<std::size_t>(*line) : 0;
-        }
+        // The file line of the first row, for messages only: a value that is not a whole number >= 0 names none.
+        if (const auto line = cap.metadata.integer("first_data_line"); line && *line >= 0)
+            first = static_cast<std::size_t>(*line);
         auto timing = io::sampleTiming(t->data, src + ", column '" + timeName + "'", first);
         if (!timing)
             return timing.error();

@@ -15,11 +15,15 @@ MetadataValue MetadataValue::fromText(std::string text)
     return MetadataValue(std::move(text));
 }
 
+// Finite numbers only: inf and nan (numbers to isNumber(), as a file can hold them) give nullopt, so that no caller
+// turns them into an index, a rate or a length.
 std::optional<double> MetadataValue::number() const
 {
-    if (const auto* v = std::get_if<double>(&m_value))
-        return *v;
-    return parseNumber(std::get<std::string>(m_value), true);
+    const auto* v = std::get_if<double>(&m_value);
+    const auto x = v ? std::optional<double>(*v) : parseNumber(std::get<std::string>(m_value));
+    if (x && std::isfinite(*x))
+        return x;
+    return std::nullopt;
 }
 
 std::string MetadataValue::text() const
@@ -81,7 +85,7 @@ Result<std::optional<double>> Metadata::optionalNumber(std::string_view key) con
     if (!value)
         return std::optional<double>{};
     const auto v = value->number();
-    if (!v || !std::isfinite(*v))
+    if (!v)
         return makeError(ErrorCode::BadInput,
                          "metadata '" + std::string(key) + "' is not a number ('" + value->text() + "')");
     return std::optional<double>{*v};

@@ -9,8 +9,8 @@ namespace axistune::model {
 
 void to_json(nlohmann::json& j, const MetadataValue& value)
 {
-    const auto v = value.number();
-    if (!value.isNumber() || !std::isfinite(*v))
+    const auto v = value.number(); // finite only
+    if (!value.isNumber() || !v)
         j = value.text();
     else if (*v == std::trunc(*v) && std::fabs(*v) < 9007199254740992.0) // whole, below 2^53: 4000, not 4000.0
         j = static_cast<std::int64_t>(*v);

@@ -58,6 +58,9 @@ TEST(Metadata, AFilesTextComesBackByteForByte)
     EXPECT_EQ(MetadataValue::fromText("4.0").number(), 4.0);
     EXPECT_EQ(MetadataValue::fromText("+5").number(), 5.0);
     EXPECT_FALSE(MetadataValue::fromText("4,0").number().has_value());
+    // inf and nan are numbers (they come back as such) but not finite ones: number() has none.
+    EXPECT_FALSE(MetadataValue::fromText("inf").number().has_value());
+    EXPECT_FALSE(MetadataValue(std::numeric_limits<double>::quiet_NaN()).number().has_value());
 
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> mant(-1.0, 1.0);
