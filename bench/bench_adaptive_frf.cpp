@@ -91,9 +91,10 @@ void BM_AdaptiveMultisine(benchmark::State& state)
             for (const auto& p : res->passes)
                 std::fprintf(stderr,
                              "pass: lines %zu bands %zu peak %.2f %% periods %d motion %.3f s shaped %d "
-                             "voltage %d valid after %zu limited by '%s'\n",
+                             "voltage %d (peak %.1f V, predicted %.1f V) valid after %zu limited by '%s'\n",
                              p.lines, p.bands, p.peakPct, p.periods, p.motionTimeS, p.shaped ? 1 : 0,
-                             p.voltageReached ? 1 : 0, p.validAfter, p.limitedBy.c_str());
+                             p.voltageReached ? 1 : 0, p.voltagePeakV, p.voltagePredictedV, p.validAfter,
+                             p.limitedBy.c_str());
             for (const auto& l : res->invalid)
                 std::fprintf(stderr, "invalid %.1f Hz %s noise %.4f\n", l.freqHz, invalidReasonName(l.reason),
                              l.relativeNoise);

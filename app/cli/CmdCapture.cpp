@@ -193,7 +193,7 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
     // Numbers of the drive's metadata, those it gave (hal: states its amplitude in the PID output's units).
     for (const char* key : {"amplitude_Nm", "amplitude_peak", "fs_Hz", "crest_factor", "rms_Nm", "amplitude_rms",
                             "spacing_Hz", "periods", "settle_s"}) {
-        if (const auto* v = m->frf.metadata.find(key); v && v->number() && std::isfinite(*v->number()))
+        if (const auto* v = m->frf.metadata.find(key); v && v->number())
             std::cout << ", \"" << key << "\": " << v->text();
     }
     if (adaptive) {
@@ -201,16 +201,21 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
         a["time_budget_s"] = o.timeBudgetS;
         a["valid_lines"] = adaptive->validLines;
         a["passes"] = nlohmann::json::array();
-        for (const auto& p : adaptive->passes)
-            a["passes"].push_back({{"lines", p.lines},
-                                   {"bands", p.bands},
-                                   {"peak_pct", p.peakPct},
-                                   {"periods", p.periods},
-                                   {"motion_time_s", p.motionTimeS},
-                                   {"shaped", p.shaped},
-                                   {"voltage_limit_reached", p.voltageReached},
-                                   {"valid_after", p.validAfter},
-                                   {"limited_by", p.limitedBy}});
+        for (const auto& p : adaptive->passes) {
+            nlohmann::json pass{{"lines", p.lines},
+                                {"bands", p.bands},
+                                {"peak_pct", p.peakPct},
+                                {"periods", p.periods},
+                                {"motion_time_s", p.motionTimeS},
+                                {"shaped", p.shaped},
+                                {"voltage_limit_reached", p.voltageReached},
+                                {"valid_after", p.validAfter},
+                                {"limited_by", p.limitedBy}};
+            model::putNumber(pass, "voltage_peak_V", p.voltagePeakV, "the drive traces no voltage");
+            model::putNumber(pass, "voltage_predicted_V", p.voltagePredictedV,
+                             "the first pass, or no voltage per torque known: phases designed for the torque");
+            a["passes"].push_back(pass);
+        }
         nlohmann::json counts = nlohmann::json::object();
         for (const char* r : {"noise", "torque limit", "voltage limit", "nonlinearity"})
             counts[r] = 0;

@@ -49,6 +49,7 @@ struct PassPlan {
     double peakNm = 0.0;
     std::size_t lines = 0;
     std::string limitedBy;
+    double predictedV = kNaN; ///< peak voltage predicted from the lines' Z_i (NaN: no voltage trace yet)
 };
 
 /// Index of the line at `f` (lines of the first pass, increasing), or npos.
@@ -171,7 +172,11 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         lines.emplace_back().f = f;
     // Voltage per injected torque |Z_i| of every line and the calibration of the predicted peak voltage.
     std::vector<double> zAbs(lines.size(), kNaN);
+    std::vector<std::complex<double>> zLine(lines.size(), kNaN); ///< Z_i itself (|Z_i| = zAbs)
     double voltageScale = 0.0; ///< V_peak / sqrt(Σ |Z_i A_i|²) of the last pass below the limit
+    /// Measured over predicted peak voltage of the last pass below the limit (≥ 1: the prediction from the lines'
+    /// Z_i leaves out the noise and what the trace samples miss).
+    double voltageCal = 1.0;
     bool shapedOk = true;
     bool voltageEverReached = false;
     double blindScale = 1.0; ///< without a voltage trace: the excitation lowered after each pass that reached the limit
@@ -198,8 +203,11 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         const double maxPeak = maxPct / 100.0 * ratedNm;
         const double torqueBudget = 0.9 * 2.0 * std::pow(maxPeak / crest, 2) * blindScale;
         const bool voltageKnown = maxVoltage > 0.0 && voltageScale > 0.0;
-        const double voltageBudget = voltageKnown ? std::pow(o.voltageHeadroom * maxVoltage / voltageScale, 2)
-                                                  : std::numeric_limits<double>::infinity();
+        double vScale = voltageScale; // the voltage peak per √Σ|Z_i a_i|² this pass's spectrum is expected to have
+        auto voltageBudget = [&] {
+            return voltageKnown ? std::pow(o.voltageHeadroom * maxVoltage / vScale, 2)
+                                : std::numeric_limits<double>::infinity();
+        };
         double zFallback = 0.0;
         for (double z : zAbs)
             if (std::isfinite(z))
@@ -224,99 +232,135 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         const int pMax = static_cast<int>(std::floor((share * remaining - settleS) / periodS + 1e-9));
         if (pMax < kMinMultisinePeriods)
             return std::optional<PassPlan>{};
-        // The cheapest lines first, at pMax periods.
-        std::vector<std::size_t> order = todo;
-        auto costT = [&](std::size_t i) { return need[i] / pMax; };
-        auto costV = [&](std::size_t i) { return std::pow(zOf(i), 2) * need[i] / pMax; };
-        auto normCost = [&](std::size_t i) {
-            return std::max(costT(i) / torqueBudget, voltageKnown ? costV(i) / voltageBudget : 0.0);
-        };
-        std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return normCost(x) < normCost(y); });
-        std::vector<std::size_t> chosen;
-        double sumT = 0.0, sumV = 0.0;
-        for (std::size_t i : order) {
-            const bool fitsT = sumT + costT(i) <= 0.95 * torqueBudget;
-            const bool fitsV = !voltageKnown || sumV + costV(i) <= 0.95 * voltageBudget;
-            if (fitsT && fitsV) {
-                chosen.push_back(i);
-                sumT += costT(i);
-                sumV += costV(i);
-                lines[i].heldBy = 0;
-            } else {
-                lines[i].heldBy = fitsV ? 1 : 2;
-            }
-        }
-        if (chosen.empty())
-            return std::optional<PassPlan>{};
-        std::string heldBy;
-        for (std::size_t i : todo)
-            if (lines[i].heldBy == 2 || (lines[i].heldBy == 1 && heldBy.empty()))
-                heldBy = lines[i].heldBy == 2 ? "voltage limit" : "torque limit";
-        std::sort(chosen.begin(), chosen.end());
-        // The fewest periods that still fit the budgets.
-        const double load = std::max(sumT / (0.95 * torqueBudget), voltageKnown ? sumV / (0.95 * voltageBudget) : 0.0);
-        int periods = std::clamp(static_cast<int>(std::ceil(load * pMax - 1e-9)), kMinMultisinePeriods, pMax);
-        const auto runs = groupBands(chosen);
-        for (int attempt = 0; attempt < 2; ++attempt) {
-            TestRequest next = first;
-            FrfTest& nf = next.frf();
-            nf.multisineBands.clear();
-            for (const auto& [a, b] : runs)
-                nf.multisineBands.push_back({lines[a].f - 0.5 * spacing, lines[b].f + 0.5 * spacing, spacing});
-            nf.fminHz = nf.multisineBands.front().fminHz;
-            nf.fmaxHz = nf.multisineBands.back().fmaxHz;
-            nf.multisineSpacingHz = spacing;
-            nf.multisinePeriods = periods;
-            std::vector<double> ampReq(lines.size(), 0.0);
-            double maxReq = 0.0;
-            for (std::size_t i : chosen) {
-                ampReq[i] = std::sqrt(need[i] / periods);
-                maxReq = std::max(maxReq, ampReq[i]);
-            }
-            nf.multisineShape.clear();
-            if (shapedOk)
-                for (const auto& [a, b] : runs)
-                    for (std::size_t i = a; i <= b; ++i)
-                        nf.multisineShape.push_back({lines[i].f, std::max(ampReq[i], kFillWeight * maxReq)});
-            nf.amplitudePct = maxPct;
-            auto p = hostPlan(next);
-            if (!p)
-                return p.error();
-            const auto& d = (*p)->design;
-            // Design amplitudes scale with the peak: the peak that gives every chosen line what it needs.
-            double peak = 0.0, sumZ = 0.0;
-            for (std::size_t k = 0; k < d.freqHz.size(); ++k) {
-                const auto i = lineIndex(lines, d.freqHz[k], spacing);
-                if (i == std::string::npos)
-                    continue;
-                const double unit = d.amplitude[k] / d.peak;
-                if (ampReq[i] > 0.0 && unit > 0.0)
-                    peak = std::max(peak, ampReq[i] / unit);
-                sumZ += std::pow(zOf(i) * unit, 2);
-            }
-            std::string by = heldBy;
-            if (peak > maxPeak * blindScale) {
-                peak = maxPeak * blindScale;
-                by = "torque limit";
-            }
-            if (voltageKnown && sumZ > 0.0) {
-                const double vPeak = o.voltageHeadroom * maxVoltage / (voltageScale * std::sqrt(sumZ));
-                if (peak > vPeak) {
-                    peak = vPeak;
-                    by = "voltage limit";
+        // Phases designed for the voltage (its crest factor, not the torque's, limits the excitation) lower the
+        // voltage peak of a spectrum: the lines are chosen again for the spectrum's own voltage peak (at most twice).
+        for (int refine = 0; refine < 3; ++refine) {
+            // The cheapest lines first, at pMax periods.
+            std::vector<std::size_t> order = todo;
+            auto costT = [&](std::size_t i) { return need[i] / pMax; };
+            auto costV = [&](std::size_t i) { return std::pow(zOf(i), 2) * need[i] / pMax; };
+            auto normCost = [&](std::size_t i) {
+                return std::max(costT(i) / torqueBudget, voltageKnown ? costV(i) / voltageBudget() : 0.0);
+            };
+            std::sort(order.begin(), order.end(),
+                      [&](std::size_t x, std::size_t y) { return normCost(x) < normCost(y); });
+            std::vector<std::size_t> chosen;
+            double sumT = 0.0, sumV = 0.0;
+            for (std::size_t i : order) {
+                const bool fitsT = sumT + costT(i) <= 0.95 * torqueBudget;
+                const bool fitsV = !voltageKnown || sumV + costV(i) <= 0.95 * voltageBudget();
+                if (fitsT && fitsV) {
+                    chosen.push_back(i);
+                    sumT += costT(i);
+                    sumV += costV(i);
+                    lines[i].heldBy = 0;
+                } else {
+                    lines[i].heldBy = fitsV ? 1 : 2;
                 }
             }
-            nf.amplitudePct = 100.0 * peak / ratedNm;
-            auto drivePlan = drive.planTest(next);
-            if (!drivePlan && shapedOk) {
-                shapedOk = false; // a drive that takes no spectrum (Modbus): flat bands from here on
-                continue;
-            }
-            if (!drivePlan)
-                return drivePlan.error();
-            if (drivePlan->motionTimeS > remaining + 1e-9)
+            if (chosen.empty())
                 return std::optional<PassPlan>{};
-            return std::optional<PassPlan>{PassPlan{next, peak, chosen.size(), by}};
+            std::string heldBy;
+            for (std::size_t i : todo)
+                if (lines[i].heldBy == 2 || (lines[i].heldBy == 1 && heldBy.empty()))
+                    heldBy = lines[i].heldBy == 2 ? "voltage limit" : "torque limit";
+            std::sort(chosen.begin(), chosen.end());
+            // The fewest periods that still fit the budgets.
+            const double load =
+                std::max(sumT / (0.95 * torqueBudget), voltageKnown ? sumV / (0.95 * voltageBudget()) : 0.0);
+            int periods = std::clamp(static_cast<int>(std::ceil(load * pMax - 1e-9)), kMinMultisinePeriods, pMax);
+            const auto runs = groupBands(chosen);
+            bool rechoose = false;
+            for (int attempt = 0; attempt < 2; ++attempt) {
+                TestRequest next = first;
+                FrfTest& nf = next.frf();
+                nf.multisineBands.clear();
+                for (const auto& [a, b] : runs)
+                    nf.multisineBands.push_back({lines[a].f - 0.5 * spacing, lines[b].f + 0.5 * spacing, spacing});
+                nf.fminHz = nf.multisineBands.front().fminHz;
+                nf.fmaxHz = nf.multisineBands.back().fmaxHz;
+                nf.multisineSpacingHz = spacing;
+                nf.multisinePeriods = periods;
+                std::vector<double> ampReq(lines.size(), 0.0);
+                double maxReq = 0.0;
+                for (std::size_t i : chosen) {
+                    ampReq[i] = std::sqrt(need[i] / periods);
+                    maxReq = std::max(maxReq, ampReq[i]);
+                }
+                nf.multisineShape.clear();
+                nf.multisineCrestThrough.clear();
+                bool crestForVoltage = o.phasesForVoltage && shapedOk && voltageKnown;
+                if (shapedOk)
+                    for (const auto& [a, b] : runs)
+                        for (std::size_t i = a; i <= b; ++i) {
+                            nf.multisineShape.push_back({lines[i].f, std::max(ampReq[i], kFillWeight * maxReq)});
+                            crestForVoltage = crestForVoltage && std::isfinite(std::abs(zLine[i])) && zAbs[i] > 0.0;
+                        }
+                if (crestForVoltage)
+                    for (const auto& [a, b] : runs)
+                        for (std::size_t i = a; i <= b; ++i)
+                            nf.multisineCrestThrough.push_back({lines[i].f, zLine[i]});
+                nf.amplitudePct = maxPct;
+                auto p = hostPlan(next);
+                if (!p)
+                    return p.error();
+                const auto& d = (*p)->design;
+                // Design amplitudes scale with the peak: the peak that gives every chosen line what it needs.
+                double peak = 0.0, sumZ = 0.0;
+                std::vector<std::complex<double>> zDesign(d.freqHz.size(), 0.0);
+                for (std::size_t k = 0; k < d.freqHz.size(); ++k) {
+                    const auto i = lineIndex(lines, d.freqHz[k], spacing);
+                    if (i == std::string::npos)
+                        continue;
+                    const double unit = d.amplitude[k] / d.peak;
+                    if (ampReq[i] > 0.0 && unit > 0.0)
+                        peak = std::max(peak, ampReq[i] / unit);
+                    sumZ += std::pow(zOf(i) * unit, 2);
+                    zDesign[k] = zLine[i];
+                }
+                // The voltage peak per unit torque peak of this very spectrum, from the lines' Z_i.
+                double vPerPeak = kNaN;
+                if (crestForVoltage && sumZ > 0.0) {
+                    vPerPeak = voltageCal * dsp::multisinePeakThrough(d, zDesign) / d.peak;
+                    const double scale = vPerPeak / std::sqrt(sumZ);
+                    if (refine < 2 && std::isfinite(scale) && scale < 0.9 * vScale) {
+                        vScale = scale; // more lines fit: choose again
+                        rechoose = true;
+                        break;
+                    }
+                }
+                std::string by = heldBy;
+                if (peak > maxPeak * blindScale) {
+                    peak = maxPeak * blindScale;
+                    by = "torque limit";
+                }
+                if (voltageKnown && sumZ > 0.0) {
+                    const double vPeak = std::isfinite(vPerPeak) && vPerPeak > 0.0
+                                             ? o.voltageHeadroom * maxVoltage / vPerPeak
+                                             : o.voltageHeadroom * maxVoltage / (voltageScale * std::sqrt(sumZ));
+                    if (peak > vPeak) {
+                        peak = vPeak;
+                        by = "voltage limit";
+                    } else if (std::isfinite(vPerPeak)) {
+                        // The voltage peak of this spectrum is known: excite up to it (more than the chosen lines
+                        // need costs no motion time and helps a line whose noise was misjudged).
+                        peak = std::min(vPeak, maxPeak * blindScale);
+                    }
+                }
+                nf.amplitudePct = 100.0 * peak / ratedNm;
+                auto drivePlan = drive.planTest(next);
+                if (!drivePlan && shapedOk) {
+                    shapedOk = false; // a drive that takes no spectrum (Modbus): flat bands from here on
+                    continue;
+                }
+                if (!drivePlan)
+                    return drivePlan.error();
+                if (drivePlan->motionTimeS > remaining + 1e-9)
+                    return std::optional<PassPlan>{};
+                return std::optional<PassPlan>{PassPlan{next, peak, chosen.size(), by, vPerPeak * peak}};
+            }
+            if (!rechoose)
+                return std::optional<PassPlan>{};
         }
         return std::optional<PassPlan>{};
     };
@@ -324,6 +368,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
     TestRequest request = first;
     std::shared_ptr<const MultisinePlan> plan = *plan1;
     std::string limitedBy;
+    double predictedV = kNaN;
     for (int pass = 0; pass < o.maxPasses; ++pass) {
         auto planned = drive.planTest(request);
         if (!planned)
@@ -351,6 +396,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         rec.motionTimeS = m.motionTimeS;
         rec.shaped = !rf.multisineShape.empty();
         rec.limitedBy = limitedBy;
+        rec.voltagePredictedV = predictedV;
         const auto* clamped = m.frf.metadata.find("voltage_clamped_samples");
         rec.voltageReached = clamped != nullptr && clamped->text() != "0";
         // The voltage per torque of the excited lines, from the trace (when it has the voltage).
@@ -371,15 +417,20 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
             double peakV = 0.0;
             for (std::size_t s = a; s < plan->totalSamples; ++s)
                 peakV = std::max(peakV, std::abs(volt->data[s]));
-            if (z) {
+            rec.voltagePeakV = peakV;
+            if (z && z->frf.size() == plan->design.freqHz.size()) {
                 double sum = 0.0;
                 for (std::size_t k = 0; k < z->frf.size(); ++k) {
                     const auto i = lineIndex(lines, z->frf.freqHz[k], spacing);
                     if (i == std::string::npos)
                         continue;
                     zAbs[i] = std::abs(z->frf.h[k]);
+                    zLine[i] = z->frf.h[k];
                     sum += std::pow(zAbs[i] * amp[i], 2);
                 }
+                const double predicted = dsp::multisinePeakThrough(plan->design, z->frf.h);
+                if (!rec.voltageReached && predicted > 0.0 && std::isfinite(predicted))
+                    voltageCal = std::max(1.0, peakV / predicted);
                 if (sum > 0.0 && !rec.voltageReached)
                     voltageScale = peakV / std::sqrt(sum);
                 else if (sum > 0.0 && rec.voltageReached)
@@ -449,6 +500,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
             break;
         request = (*next)->request;
         limitedBy = (*next)->limitedBy;
+        predictedV = (*next)->predictedV;
         auto p = hostPlan(request);
         if (!p)
             return p.error();

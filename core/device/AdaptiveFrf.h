@@ -17,6 +17,7 @@
 #include "core/device/TestRunner.h"
 #include "core/model/Result.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,10 @@ struct AdaptiveFrfOptions {
     int maxPasses = 8;                ///< at most this many passes
     double noiseTargetFraction = 0.8; ///< a re-excited line aims at this fraction of the validity limit
     double voltageHeadroom = 0.85;    ///< predicted peak voltage at most this fraction of drive.max_voltage
+    /// Passes after the first: phases that keep the crest factor of the current loop's voltage low (designed through
+    /// the lines' measured voltage per torque, dsp::MultisineDesignOptions::crestThrough) when the drive traces its
+    /// voltage and takes a spectrum; false: phases for the torque's crest factor, as the first pass.
+    bool phasesForVoltage = true;
 };
 
 /// Why a line is left invalid.
@@ -48,6 +53,11 @@ struct AdaptiveFrfPass {
     bool voltageReached = false; ///< discarded: the current loop reached its voltage limit
     std::size_t validAfter = 0;  ///< lines valid after combining this pass
     std::string limitedBy;       ///< "", "torque limit", "voltage limit", "time budget"
+    /// Peak voltage of the current loop over the record, from the trace [V] (NaN: the drive traces no voltage).
+    double voltagePeakV = std::numeric_limits<double>::quiet_NaN();
+    /// The peak voltage this pass was designed for, from the lines' voltage per torque measured before [V] (NaN: the
+    /// first pass, or no voltage known; the pass then has the torque-designed phases).
+    double voltagePredictedV = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct InvalidLine {

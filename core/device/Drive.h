@@ -12,6 +12,7 @@
 #include "core/model/Parameter.h"
 #include "core/model/Result.h"
 
+#include <complex>
 #include <memory>
 #include <span>
 #include <string>
@@ -112,6 +113,9 @@ struct FrfTest {
     int multisinePeriods = 0;                       ///< averaged periods (three phases each); 0: from the loop's dynamics
     dsp::MultisinePhases multisinePhases = dsp::MultisinePhases::Clipping;
     std::vector<std::pair<double, double>> multisineShape{}; ///< (f [Hz], relative amplitude); empty: flat
+    /// Phases that keep the crest factor low as seen through this response (f [Hz], gain), e.g. the current loop's
+    /// voltage per injected torque (dsp::MultisineDesignOptions::crestThrough); empty: the excitation's own.
+    std::vector<std::pair<double, std::complex<double>>> multisineCrestThrough{};
 };
 
 /// TestType::Circle (CircleDriveTest.h; docs/ballbar.md "Circle tests through the drive"): the request's axis is the

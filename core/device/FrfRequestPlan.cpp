@@ -102,6 +102,7 @@ Result<FrfRequestPlan> planFrfRequest(const TestRequest& request, const model::P
         po.ticksPerVelocity = clock.ticksPerVelocity;
         po.bands = multisineBandsOf(r);
         po.shape = r.multisineShape;
+        po.crestThrough = r.multisineCrestThrough;
         po.phases = r.multisinePhases;
         po.peakNm = amplitudeNm; // the limit in % of rated torque holds at the multisine's peak
         po.timing = timing;

@@ -36,6 +36,7 @@ Result<MultisinePlan> planMultisineTest(const MultisinePlanOptions& o)
     d.ticksPerSample = o.ticksPerSample;
     d.bands = o.bands;
     d.shape = o.shape;
+    d.crestThrough = o.crestThrough;
     d.phases = o.phases;
     d.peak = o.peakNm;
     auto design = dsp::designMultisine(d);

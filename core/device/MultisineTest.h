@@ -30,6 +30,7 @@ struct MultisinePlanOptions {
     int ticksPerVelocity = 1;    ///< N current ticks per velocity tick
     std::vector<dsp::MultisineBand> bands;
     std::vector<std::pair<double, double>> shape;
+    std::vector<std::pair<double, std::complex<double>>> crestThrough; ///< dsp::MultisineDesignOptions::crestThrough
     dsp::MultisinePhases phases = dsp::MultisinePhases::Clipping;
     double peakNm = 0.0; ///< peak of the injected torque
     LoopTiming timing;

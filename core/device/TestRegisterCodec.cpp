@@ -283,6 +283,8 @@ Result<TestValues> testValuesOf(const TestRequest& r, const RegisterMap& map,
                 f->multisinePhases != plain.multisinePhases);
         if (!f->multisineShape.empty())
             missing.push_back("multisine.shape");
+        if (!f->multisineCrestThrough.empty())
+            missing.push_back("multisine.crest_response");
         if (f->method == FrfMethod::Multisine)
             bands = multisineBandsOf(*f);
     }
@@ -315,12 +317,14 @@ Result<TestValues> testValuesOf(const TestRequest& r, const RegisterMap& map,
         std::string list;
         for (const auto& q : missing)
             list += (list.empty() ? "" : ", ") + q;
-        const bool shape = std::find(missing.begin(), missing.end(), "multisine.shape") != missing.end();
-        return makeError(ErrorCode::BadInput, "drive family " + map.family + " has no register for " + list +
-                                                  ": this drive cannot take the request as given" +
-                                                  (shape ? " (a shaped multisine cannot be sent over Modbus: the "
-                                                           "test block carries no spectrum)"
-                                                         : ""));
+        const bool shape = std::find(missing.begin(), missing.end(), "multisine.shape") != missing.end() ||
+                           std::find(missing.begin(), missing.end(), "multisine.crest_response") != missing.end();
+        return makeError(ErrorCode::BadInput,
+                         "drive family " + map.family + " has no register for " + list +
+                             ": this drive cannot take the request as given" +
+                             (shape ? " (a shaped multisine, or one with phases for a response, cannot "
+                                      "be sent over Modbus: the test block carries no spectrum)"
+                                    : ""));
     }
     return v;
 }

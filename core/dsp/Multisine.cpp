@@ -91,16 +91,17 @@ double peakOf(std::span<const double> x)
     return p;
 }
 
-double shapeWeight(const std::vector<std::pair<double, double>>& shape, double f)
+/// The points' value at f: linear in log f between them, held beyond the ends (1 when there are none).
+template <typename T> T interpolateLogF(const std::vector<std::pair<double, T>>& points, double f)
 {
-    if (shape.empty())
-        return 1.0;
-    if (f <= shape.front().first)
-        return shape.front().second;
-    if (f >= shape.back().first)
-        return shape.back().second;
-    auto it = std::upper_bound(shape.begin(), shape.end(), f,
-                               [](double v, const std::pair<double, double>& p) { return v < p.first; });
+    if (points.empty())
+        return T(1.0);
+    if (f <= points.front().first)
+        return points.front().second;
+    if (f >= points.back().first)
+        return points.back().second;
+    auto it = std::upper_bound(points.begin(), points.end(), f,
+                               [](double v, const std::pair<double, T>& p) { return v < p.first; });
     const auto& [f1, w1] = *it;
     const auto& [f0, w0] = *(it - 1);
     const double u = std::log(f / f0) / std::log(f1 / f0);
@@ -138,6 +139,14 @@ Status checkOptions(const MultisineDesignOptions& o)
             return makeError(ErrorCode::OutOfRange,
                              "multisine shape: point " + std::to_string(i + 1) +
                                  " needs a positive frequency above the previous one and a positive weight");
+    }
+    for (std::size_t i = 0; i < o.crestThrough.size(); ++i) {
+        const auto& [f, g] = o.crestThrough[i];
+        if (!(f > 0.0) || !std::isfinite(f) || !(std::abs(g) > 0.0) || !std::isfinite(std::abs(g)) ||
+            (i > 0 && !(f > o.crestThrough[i - 1].first)))
+            return makeError(ErrorCode::OutOfRange,
+                             "multisine crest response: point " + std::to_string(i + 1) +
+                                 " needs a positive frequency above the previous one and a finite, nonzero gain");
     }
     if (o.clippingIterations < 0 || o.clippingIterations > 100000)
         return makeError(ErrorCode::OutOfRange, "multisine: clipping iterations must lie in [0, 100000]");
@@ -219,24 +228,32 @@ Result<MultisineDesign> designMultisine(const MultisineDesignOptions& o)
     const std::size_t lines = d.bins.size();
     std::vector<std::size_t> k(lines);
     std::vector<double> weight(lines);
+    // The phases keep the crest factor of Σ |G_i|·A_i sin(…) low (G = 1 without crestThrough).
+    std::vector<std::complex<double>> gain(lines, 1.0);
+    std::vector<double> crestWeight(lines);
     double power = 0.0;
     for (std::size_t i = 0; i < lines; ++i) {
         k[i] = 3 * d.bins[i] + 1;
         d.freqHz.push_back((static_cast<double>(d.bins[i]) + 1.0 / 3.0) * d.spacingHz);
-        weight[i] = shapeWeight(o.shape, d.freqHz.back());
-        power += weight[i] * weight[i];
+        weight[i] = interpolateLogF(o.shape, d.freqHz.back());
+        if (!o.crestThrough.empty())
+            gain[i] = interpolateLogF(o.crestThrough, d.freqHz.back());
+        crestWeight[i] = weight[i] * std::abs(gain[i]);
+        power += crestWeight[i] * crestWeight[i];
     }
+    if (!(power > 0.0) || !std::isfinite(power))
+        return makeError(ErrorCode::OutOfRange, "multisine: the crest response is zero or not finite at the lines");
     // Schroeder: φ_i = −2π Σ_{l<i} (i − l) p_l with p_l the power share (−π i(i−1)/L for a flat spectrum).
     std::vector<double> phase(lines, 0.0);
     double cum = 0.0, cumWeighted = 0.0; // Σ_{l<i} p_l and Σ_{l<i} l·p_l
     for (std::size_t i = 0; i < lines; ++i) {
         phase[i] = std::remainder(-kTwoPi * (static_cast<double>(i) * cum - cumWeighted), kTwoPi);
-        const double p = weight[i] * weight[i] / power;
+        const double p = crestWeight[i] * crestWeight[i] / power;
         cum += p;
         cumWeighted += static_cast<double>(i) * p;
     }
     const std::size_t length = 3 * m * static_cast<std::size_t>(o.ticksPerSample);
-    std::vector<double> x = synthesize(length, k, weight, phase);
+    std::vector<double> x = synthesize(length, k, crestWeight, phase);
     double bestCf = crestFactor(x);
     if (o.phases == MultisinePhases::Clipping && lines > 1) {
         std::vector<double> trial = phase;
@@ -252,7 +269,7 @@ Result<MultisineDesign> designMultisine(const MultisineDesignOptions& o)
             for (double& v : y)
                 v = std::clamp(v, -level, level);
             trial = linePhases(y, k);
-            y = synthesize(length, k, weight, trial);
+            y = synthesize(length, k, crestWeight, trial);
             const double cf = crestFactor(y);
             if (cf < bestCf) {
                 bestCf = cf;
@@ -260,6 +277,12 @@ Result<MultisineDesign> designMultisine(const MultisineDesignOptions& o)
                 x = y;
             }
         }
+    }
+    if (!o.crestThrough.empty()) {
+        // The excitation's phases: those of the response less the response's own phase.
+        for (std::size_t i = 0; i < lines; ++i)
+            phase[i] = std::remainder(phase[i] - std::arg(gain[i]), kTwoPi);
+        x = synthesize(length, k, weight, phase);
     }
     // Scale so that the peak over the generation grid is the requested peak (never above it).
     const double scale = o.peak / peakOf(x) * (1.0 - 1e-12);
@@ -273,6 +296,21 @@ Result<MultisineDesign> designMultisine(const MultisineDesignOptions& o)
     d.crestFactor = crestFactor(d.table);
     d.rms = d.peak / d.crestFactor;
     return d;
+}
+
+double multisinePeakThrough(const MultisineDesign& d, std::span<const std::complex<double>> gains)
+{
+    const std::size_t lines = d.bins.size();
+    if (gains.size() != lines || d.amplitude.size() != lines || d.phaseRad.size() != lines || d.table.empty())
+        return std::numeric_limits<double>::quiet_NaN();
+    std::vector<std::size_t> k(lines);
+    std::vector<double> amp(lines), phase(lines);
+    for (std::size_t i = 0; i < lines; ++i) {
+        k[i] = 3 * d.bins[i] + 1;
+        amp[i] = std::abs(gains[i]) * d.amplitude[i];
+        phase[i] = d.phaseRad[i] + std::arg(gains[i]);
+    }
+    return peakOf(synthesize(d.table.size(), k, amp, phase));
 }
 
 std::vector<std::complex<double>> demodulateThreePhase(const MultisineDesign& d, std::span<const double> w0,

@@ -48,6 +48,12 @@ struct MultisineDesignOptions {
     /// log f (held beyond the ends); empty: flat.
     std::vector<std::pair<double, double>> shape;
     MultisinePhases phases = MultisinePhases::Clipping;
+    /// Keep the crest factor low as seen through this response instead of the excitation's own: (f [Hz], gain)
+    /// points, the gain interpolated linearly in log f between them (held beyond the ends), e.g. the current loop's
+    /// voltage per injected torque when the voltage, not the torque, limits the excitation. The phases are designed
+    /// for the spectrum |G_i|·A_i and turned back by arg G_i; amplitudes and the excitation's peak are as without it.
+    /// Empty: the excitation's own crest factor.
+    std::vector<std::pair<double, std::complex<double>>> crestThrough;
     int clippingIterations = 300; ///< at most; fewer (≥ 10) when one period exceeds 50000 generation ticks
     double peak = 1.0; ///< peak of the generated samples (e.g. N·m): never exceeded
 };
@@ -79,6 +85,11 @@ struct MultisineDesign {
 /// fmax ≥ fs, spacing ≤ 0 or a window longer than 2²⁰ samples, a band without a line, more than
 /// 20000 lines, shape weights not positive, peak not positive, ticksPerSample < 1.
 Result<MultisineDesign> designMultisine(const MultisineDesignOptions& options);
+
+/// Peak over the generation grid of the design's excitation seen through the gains G_i of its lines
+/// (max_t |Σ |G_i| A_i sin(2π f_i t + φ_i + arg G_i)|), e.g. the voltage a multisine of torque asks of the current
+/// loop. gains.size() must equal the design's lines (else NaN).
+double multisinePeakThrough(const MultisineDesign& design, std::span<const std::complex<double>> gains);
 
 /// Crest factor max|x|/rms of samples.
 double crestFactor(std::span<const double> x);

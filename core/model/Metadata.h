@@ -38,7 +38,8 @@ public:
     static MetadataValue fromText(std::string text);
 
     bool isNumber() const { return std::holds_alternative<double>(m_value); }
-    /// The number; a text value counts when the whole of it is one ("4.0", "+5"; parseNumber), else nullopt.
+    /// The number when finite; a text value counts when the whole of it is one ("4.0", "+5"; parseNumber). A value
+    /// that is no number, or not a finite one (inf, nan), gives nullopt.
     std::optional<double> number() const;
     /// The text a file holds: a whole number below 1e17 in full ("4000", "100000"), any other number in its
     /// shortest round-trip form ("0.5", "1e-06", "1e+17", "inf", "nan").

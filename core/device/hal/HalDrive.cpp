@@ -137,6 +137,7 @@ Result<HalFrfPlan> planHalFrf(const TestRequest& r, const HalAxis& axis)
     mo.peak = peak;
     mo.phases = f.multisinePhases;
     mo.shape = f.multisineShape;
+    mo.crestThrough = f.multisineCrestThrough;
     if (!f.multisineBands.empty()) {
         mo.bands = f.multisineBands;
     } else {

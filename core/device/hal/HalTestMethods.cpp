@@ -54,7 +54,7 @@ Result<HalFrfPlan> planHalStreams(const TestRequest& r, HalFrfPlan plan, double 
     if (f.method != FrfMethod::MultiSweep && f.method != FrfMethod::Prbs)
         return makeError(ErrorCode::Internal, "planHalStreams: multi-sweep or PRBS only");
     if (!f.multisineBands.empty() || f.multisineSpacingHz != 0.0 || f.multisinePeriods != 0 ||
-        !f.multisineShape.empty())
+        !f.multisineShape.empty() || !f.multisineCrestThrough.empty())
         return makeError(ErrorCode::BadInput, std::string("FRF by ") + frfMethodName(f.method) +
                                                   ": bands, spacing, periods and shape are multisine options");
     if (!(f.fminHz > 0.0) || !std::isfinite(f.fminHz) || !(f.fmaxHz >= f.fminHz) || !std::isfinite(f.fmaxHz))

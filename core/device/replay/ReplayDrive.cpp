@@ -74,7 +74,7 @@ Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
     if (!axis)
         return axis.error();
     auto fs = md.number("fs_Hz");
-    if (!fs || !(*fs > 0.0) || !std::isfinite(*fs))
+    if (!fs || !(*fs > 0.0)) // number(): finite only
         return makeError(ErrorCode::BadInput, path + ": metadata 'fs_Hz' must be a positive number");
     if (d->m_capture.size() < 2)
         return makeError(ErrorCode::BadInput, path + ": the capture has fewer than 2 samples");
@@ -127,7 +127,7 @@ Result<std::vector<model::ParameterMeta>> ReplayDrive::parameterMetadata(const s
     std::vector<model::ParameterMeta> out;
     for (const auto& [k, v] : m_capture.metadata) {
         auto x = v.number();
-        if (!x || !std::isfinite(*x))
+        if (!x)
             continue; // text metadata (machine, connection) is in identify()
         model::ParameterMeta m;
         m.key = kParameterPrefix + k;

@@ -329,3 +329,100 @@ TEST(Multisine, BadDesignsAreRefused)
     std::vector<double> shortRec(d->periodSamples() - 1);
     EXPECT_FALSE(analyzeMultisine(*d, shortRec, shortRec, 1).ok());
 }
+
+namespace {
+
+/// A current loop's voltage per torque, roughly: R + jωL (1 Ω, 5 mH): |G| rises 120-fold over the band, phase → 90°.
+std::complex<double> voltagePerTorque(double fHz)
+{
+    return {1.0, 2.0 * kPi * fHz * 5e-3};
+}
+
+/// max over the generation grid of Σ |G_i| A_i sin(2π f_i t + φ_i + arg G_i), summed line by line (independent of
+/// the inverse FFT the design uses).
+double directPeakThrough(const MultisineDesign& d, const std::vector<std::complex<double>>& g)
+{
+    double peak = 0.0;
+    const double rate = d.fsHz * d.ticksPerSample;
+    for (std::size_t n = 0; n < d.periodTicks(); ++n) {
+        double x = 0.0;
+        for (std::size_t i = 0; i < d.freqHz.size(); ++i)
+            x += std::abs(g[i]) * d.amplitude[i] *
+                 std::sin(2.0 * kPi * d.freqHz[i] * static_cast<double>(n) / rate + d.phaseRad[i] + std::arg(g[i]));
+        peak = std::max(peak, std::abs(x));
+    }
+    return peak;
+}
+
+double rmsThrough(const MultisineDesign& d, const std::vector<std::complex<double>>& g)
+{
+    double s = 0.0;
+    for (std::size_t i = 0; i < d.freqHz.size(); ++i)
+        s += std::pow(std::abs(g[i]) * d.amplitude[i], 2) / 2.0;
+    return std::sqrt(s);
+}
+
+} // namespace
+
+// Issue 18 item 2: when the current loop's voltage, not the torque, limits the excitation, the phases are designed
+// for the voltage's crest factor. The amplitudes and the torque peak stay as requested; the voltage's crest factor
+// (peak over rms of Σ|G_i|A_i, computed here line by line) drops below 2 (the flat design's bound of the first test)
+// where the torque-designed phases leave it far above.
+TEST(Multisine, PhasesDesignedThroughAResponseLowerThatResponsesCrestFactor)
+{
+    MultisineDesignOptions o;
+    o.fsHz = 4000.0;
+    o.ticksPerSample = 4;
+    o.bands = {{20.0, 3900.0, 20.0}};
+    o.peak = 2.0;
+    auto plain = designMultisine(o);
+    ASSERT_TRUE(plain.ok());
+    std::vector<std::complex<double>> g;
+    for (double f : plain->freqHz) {
+        g.push_back(voltagePerTorque(f));
+        o.crestThrough.emplace_back(f, voltagePerTorque(f));
+    }
+    auto through = designMultisine(o);
+    ASSERT_TRUE(through.ok()) << through.error().detail;
+    ASSERT_EQ(through->freqHz, plain->freqHz);
+    // The excitation: same relative amplitudes, the requested peak, the table is the sum of the designed sines.
+    for (std::size_t i = 0; i < plain->freqHz.size(); ++i)
+        EXPECT_NEAR(through->amplitude[i] / through->amplitude.front(), 1.0, 1e-12);
+    EXPECT_NEAR(through->peak, 2.0, 1e-9);
+    EXPECT_LE(through->peak, 2.0);
+    const double rate = o.fsHz * o.ticksPerSample;
+    for (std::size_t n = 0; n < through->periodTicks(); n += 37)
+        EXPECT_NEAR(through->table[n], through->valueAt(static_cast<double>(n) / rate), 1e-9) << n;
+    // The response: multisinePeakThrough against the line-by-line sum, and the crest factors.
+    const double peakThrough = multisinePeakThrough(*through, g);
+    const double peakPlain = multisinePeakThrough(*plain, g);
+    EXPECT_NEAR(peakThrough, directPeakThrough(*through, g), 1e-9 * peakThrough);
+    EXPECT_NEAR(peakPlain, directPeakThrough(*plain, g), 1e-9 * peakPlain);
+    const double cfThrough = peakThrough / rmsThrough(*through, g);
+    const double cfPlain = peakPlain / rmsThrough(*plain, g);
+    EXPECT_LT(cfThrough, 2.0);
+    EXPECT_GT(cfPlain, 1.3 * cfThrough) << "torque-designed phases: voltage crest " << cfPlain;
+    // A real positive gain scales the excitation's own peak; a gain per line of the wrong count gives NaN.
+    const std::vector<std::complex<double>> twice(plain->freqHz.size(), 2.5);
+    EXPECT_NEAR(multisinePeakThrough(*plain, twice), 2.5 * plain->peak, 1e-9);
+    EXPECT_TRUE(std::isnan(multisinePeakThrough(*plain, std::vector<std::complex<double>>(3, 1.0))));
+}
+
+TEST(Multisine, BadCrestResponsesAreRefused)
+{
+    MultisineDesignOptions o;
+    o.fsHz = 4000.0;
+    o.bands = {{10.0, 100.0, 10.0}};
+    o.crestThrough = {{50.0, {1.0, 1.0}}, {20.0, 1.0}}; // not increasing
+    auto r = designMultisine(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().detail.find("crest response: point 2"), std::string::npos) << r.error().detail;
+    o.crestThrough = {{50.0, 0.0}}; // zero gain
+    EXPECT_FALSE(designMultisine(o).ok());
+    o.crestThrough = {{50.0, {std::nan(""), 1.0}}};
+    EXPECT_FALSE(designMultisine(o).ok());
+    o.crestThrough = {{-5.0, 1.0}};
+    EXPECT_FALSE(designMultisine(o).ok());
+    o.crestThrough = {{50.0, {0.0, 3.0}}};
+    EXPECT_TRUE(designMultisine(o).ok());
+}
