@@ -213,7 +213,8 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
                                 {"limited_by", p.limitedBy}};
             model::putNumber(pass, "voltage_peak_V", p.voltagePeakV, "the drive traces no voltage");
             model::putNumber(pass, "voltage_predicted_V", p.voltagePredictedV,
-                             "the first pass, or no voltage per torque known: phases designed for the torque");
+                             "phases designed for the torque: the first pass, a drive that takes no spectrum (Modbus) "
+                             "or traces no voltage");
             a["passes"].push_back(pass);
         }
         nlohmann::json counts = nlohmann::json::object();

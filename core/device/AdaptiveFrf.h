@@ -56,7 +56,7 @@ struct AdaptiveFrfPass {
     /// Peak voltage of the current loop over the record, from the trace [V] (NaN: the drive traces no voltage).
     double voltagePeakV = std::numeric_limits<double>::quiet_NaN();
     /// The peak voltage this pass was designed for, from the lines' voltage per torque measured before [V] (NaN: the
-    /// first pass, or no voltage known; the pass then has the torque-designed phases).
+    /// pass has phases designed for the torque: the first pass, a drive that takes no spectrum or traces no voltage).
     double voltagePredictedV = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -27,6 +27,20 @@ TEST(CliCaptureAdaptive, MoreValidLinesThanThePlainMultisineWithinTheBudget)
     const auto j = nlohmann::json::parse(r.out);
     const auto& a = j["adaptive"];
     EXPECT_GE(a["passes"].size(), 2u);
+    // Each pass states its peak voltage from the trace; the later ones (phases designed for the voltage) also the
+    // peak they were planned for, which they meet within 5 % (test_adaptive_frf.cpp); the first names why it has none.
+    for (std::size_t k = 0; k < a["passes"].size(); ++k) {
+        const auto& p = a["passes"][k];
+        ASSERT_TRUE(p.contains("voltage_peak_V")) << p.dump();
+        if (k == 0) {
+            EXPECT_FALSE(p.contains("voltage_predicted_V"));
+            EXPECT_TRUE(p["undefined"].contains("voltage_predicted_V")) << p.dump();
+        } else {
+            ASSERT_TRUE(p.contains("voltage_predicted_V")) << p.dump();
+            const double predicted = p["voltage_predicted_V"].get<double>();
+            EXPECT_NEAR(p["voltage_peak_V"].get<double>(), predicted, 0.05 * predicted) << k;
+        }
+    }
     // The budget: 5 s and one current-loop tick (62.5 µs) at most.
     EXPECT_LE(j["motion_time_s"].get<double>(), 5.0 + 62.5e-6);
     const int points = j["points"].get<int>(), valid = j["valid_points"].get<int>();
