@@ -170,9 +170,9 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
     std::vector<Line> lines;
     for (double f : (*plan1)->design.freqHz)
         lines.emplace_back().f = f;
-    // Voltage per injected torque |Z_i| of every line and the calibration of the predicted peak voltage.
-    std::vector<double> zAbs(lines.size(), kNaN);
-    std::vector<std::complex<double>> zLine(lines.size(), kNaN); ///< Z_i itself (|Z_i| = zAbs)
+    // Voltage per injected torque Z_i of every line (NaN until measured) and the calibration of the predicted peak
+    // voltage.
+    std::vector<std::complex<double>> zLine(lines.size(), kNaN);
     double voltageScale = 0.0; ///< V_peak / sqrt(Σ |Z_i A_i|²) of the last pass below the limit
     /// Measured over predicted peak voltage of the last pass below the limit (≥ 1: the prediction from the lines'
     /// Z_i leaves out the noise and what the trace samples miss).
@@ -209,10 +209,10 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
                                 : std::numeric_limits<double>::infinity();
         };
         double zFallback = 0.0;
-        for (double z : zAbs)
-            if (std::isfinite(z))
-                zFallback = std::max(zFallback, z);
-        auto zOf = [&](std::size_t i) { return std::isfinite(zAbs[i]) ? zAbs[i] : zFallback; };
+        for (const auto& z : zLine)
+            if (std::isfinite(std::abs(z)))
+                zFallback = std::max(zFallback, std::abs(z));
+        auto zOf = [&](std::size_t i) { return std::isfinite(std::abs(zLine[i])) ? std::abs(zLine[i]) : zFallback; };
         // Time of a pass over all of them: settle + P periods.
         TestRequest probe = first;
         FrfTest& pf = probe.frf();
@@ -289,17 +289,18 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
                 }
                 nf.multisineShape.clear();
                 nf.multisineCrestThrough.clear();
+                // Phases for the voltage when every line of the spectrum has its measured Z_i.
                 bool crestForVoltage = o.phasesForVoltage && shapedOk && voltageKnown;
+                for (const auto& [a, b] : runs)
+                    for (std::size_t i = a; i <= b; ++i)
+                        crestForVoltage = crestForVoltage && std::abs(zLine[i]) > 0.0; // false for NaN
                 if (shapedOk)
                     for (const auto& [a, b] : runs)
                         for (std::size_t i = a; i <= b; ++i) {
                             nf.multisineShape.push_back({lines[i].f, std::max(ampReq[i], kFillWeight * maxReq)});
-                            crestForVoltage = crestForVoltage && std::isfinite(std::abs(zLine[i])) && zAbs[i] > 0.0;
+                            if (crestForVoltage)
+                                nf.multisineCrestThrough.push_back({lines[i].f, zLine[i]});
                         }
-                if (crestForVoltage)
-                    for (const auto& [a, b] : runs)
-                        for (std::size_t i = a; i <= b; ++i)
-                            nf.multisineCrestThrough.push_back({lines[i].f, zLine[i]});
                 nf.amplitudePct = maxPct;
                 auto p = hostPlan(next);
                 if (!p)
@@ -424,9 +425,8 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
                     const auto i = lineIndex(lines, z->frf.freqHz[k], spacing);
                     if (i == std::string::npos)
                         continue;
-                    zAbs[i] = std::abs(z->frf.h[k]);
                     zLine[i] = z->frf.h[k];
-                    sum += std::pow(zAbs[i] * amp[i], 2);
+                    sum += std::pow(std::abs(zLine[i]) * amp[i], 2);
                 }
                 const double predicted = dsp::multisinePeakThrough(plan->design, z->frf.h);
                 if (!rec.voltageReached && predicted > 0.0 && std::isfinite(predicted))

@@ -9,9 +9,10 @@
 //
 // Works through the seam on every backend (device::runTest, FrfRequestPlan): each pass is an ordinary multisine
 // request (at most 4 bands, the Modbus register map's limit); a drive that refuses a shaped spectrum gets flat
-// bands. Voltage: the first pass's voltage_V trace gives the voltage per injected torque of every line, which
-// predicts the peak voltage of the next spectrum; a pass that still reaches the limit is discarded and the
-// excitation lowered.
+// bands. Voltage: each pass's voltage_V trace gives the voltage per injected torque Z_i of its lines; the next pass's
+// phases are designed for the voltage's crest factor through them (dsp::MultisineDesignOptions::crestThrough) and its
+// peak voltage is predicted from that design; a pass that still reaches the limit is discarded and the excitation
+// lowered.
 
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"

@@ -55,8 +55,9 @@ Result<HalFrfPlan> planHalStreams(const TestRequest& r, HalFrfPlan plan, double 
         return makeError(ErrorCode::Internal, "planHalStreams: multi-sweep or PRBS only");
     if (!f.multisineBands.empty() || f.multisineSpacingHz != 0.0 || f.multisinePeriods != 0 ||
         !f.multisineShape.empty() || !f.multisineCrestThrough.empty())
-        return makeError(ErrorCode::BadInput, std::string("FRF by ") + frfMethodName(f.method) +
-                                                  ": bands, spacing, periods and shape are multisine options");
+        return makeError(ErrorCode::BadInput,
+                         std::string("FRF by ") + frfMethodName(f.method) +
+                             ": bands, spacing, periods, shape and crest response are multisine options");
     if (!(f.fminHz > 0.0) || !std::isfinite(f.fminHz) || !(f.fmaxHz >= f.fminHz) || !std::isfinite(f.fmaxHz))
         return makeError(ErrorCode::OutOfRange, "FRF band: fmin must be positive and not above fmax");
     // The excitation is generated at the servo rate and the plant input is seen only there: a line at or above half

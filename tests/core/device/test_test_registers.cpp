@@ -554,6 +554,13 @@ TEST(TestRegisters, AQuantityTheMapDoesNotCarryIsRefusedByName)
     ASSERT_FALSE(v);
     EXPECT_NE(v.error().detail.find("multisine.shape"), std::string::npos) << v.error().detail;
     frfTest.multisineShape.clear();
+    // Phases designed through a response (the adaptive FRF's voltage) cannot be sent either.
+    frfTest.multisineCrestThrough = {{100.0, {1.0, 2.0}}};
+    v = testValuesOf(frf, map, indexOf);
+    ASSERT_FALSE(v);
+    EXPECT_NE(v.error().detail.find("multisine.crest_response"), std::string::npos) << v.error().detail;
+    EXPECT_NE(v.error().detail.find("carries no spectrum"), std::string::npos) << v.error().detail;
+    frfTest.multisineCrestThrough.clear();
     frfTest.multisineBands.assign(5, {10.0, 100.0, 5.0});
     v = testValuesOf(frf, map, indexOf);
     ASSERT_FALSE(v);
