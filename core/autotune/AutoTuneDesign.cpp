@@ -147,6 +147,7 @@ std::optional<AutoTuneResult> Sequence::velocityPi(double capHz)
         return refuse("velocity loop: " + d.error().detail, d.error().code);
     m_design = std::move(d).value();
     const auto bw = closedLoopBandwidthHz(m_design.fHz, m_design.closedLoop);
+    m_velocityBwHz = bw;
     s.chosen = {{"velocity.kp", m_design.proposed.kpNmsPerRad},
                 {"velocity.ki", m_design.proposed.kiNmPerRad},
                 {"crossover_Hz", m_fc},
@@ -188,8 +189,12 @@ std::optional<AutoTuneResult> Sequence::position()
         const auto l = tuning::piResponse(m_design.proposed, m_pf[k]) * m_ph[k];
         tv[k] = l / (1.0 + l);
     }
-    // K_p: the ANALYST rule of the velocity wizard, ω_c,vel/5 (the model's stability limit −6 dB when lower).
-    m_kpPos = std::min(kTwoPi * m_fc / 5.0,
+    // K_p: the ANALYST rule of the velocity wizard, ω_c,vel/5 (the model's stability limit −6 dB when lower). ω_c is
+    // the velocity loop's designed crossover or its predicted −3 dB bandwidth, whichever is lower: a PI designed for
+    // a crossover above what the measured plant lets the closed loop follow (a design crossover of 400 Hz whose loop
+    // falls 3 dB at 80 Hz) must not give a position loop faster than the velocity loop it commands.
+    const double fVel = m_velocityBwHz && *m_velocityBwHz > 0.0 ? std::min(m_fc, *m_velocityBwHz) : m_fc;
+    m_kpPos = std::min(kTwoPi * fVel / 5.0,
                        finitePositive(m_design.position.limitPerS)
                            ? m_design.position.limitPerS * std::pow(10.0, -tuning::kPositionGainMarginDb / 20.0)
                            : std::numeric_limits<double>::infinity());
@@ -197,6 +202,7 @@ std::optional<AutoTuneResult> Sequence::position()
     s.measured = {
         {"running_position_kp_per_s", value("position.kp")},
         {"velocity_crossover_Hz", m_fc},
+        {"velocity_frequency_Hz", fVel},
         {"model_limit_per_s", std::isfinite(m_design.position.limitPerS) ? m_design.position.limitPerS : 0.0}};
     model::ParameterValues v{{"position.kp", m_kpPos}};
     if (m_writable.count("position.velocity_ff"))
@@ -207,10 +213,12 @@ std::optional<AutoTuneResult> Sequence::position()
         s.chosen[k] = x;
     model::putOptional(s.chosen, "predicted_position_bandwidth_Hz", bw, 1.0,
                        "the predicted position loop does not fall 3 dB in the measured band");
-    s.rule = "K_p = min(2pi*f_c/5, the model's stability limit -" + num(tuning::kPositionGainMarginDb, 2) +
-             " dB) (the velocity wizard's rule, " + m_design.modelNote +
-             "); velocity feedforward 1 and torque feedforward 1 with the drive's velocity.inertia (J = " +
-             num(value("velocity.inertia"), 4) + " kg m^2, kept) so the command is followed without lag";
+    s.rule =
+        "K_p = min(2pi*f_v/5, the model's stability limit -" + num(tuning::kPositionGainMarginDb, 2) +
+        " dB), f_v = min(the velocity crossover f_c, the predicted velocity loop's -3 dB bandwidth) = " + num(fVel, 4) +
+        " Hz (the velocity wizard's rule, " + m_design.modelNote +
+        "); velocity feedforward 1 and torque feedforward 1 with the drive's velocity.inertia (J = " +
+        num(value("velocity.inertia"), 4) + " kg m^2, kept) so the command is followed without lag";
     if (auto st = write(v); !st)
         return refuse("position loop: " + st.error().detail, st.error().code);
     done(s);

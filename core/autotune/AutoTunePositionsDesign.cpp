@@ -171,6 +171,7 @@ Result<Step> Positions::velocityPi(double capHz)
                              (r.highestOkHz > 0.0 ? " (highest: " + num(r.highestOkHz, 4) + " Hz)" : std::string()));
     m_pi = r.pi;
     m_fc = r.crossoverHz;
+    m_worstVelocityBwHz = r.worstBandwidthHz;
     nlohmann::json pred = nlohmann::json::array();
     for (std::size_t i = 0; i < m_sites.size(); ++i) {
         m_sites[i].fin.predictedPhaseMarginDeg = r.margins[i].phaseMarginDeg;
@@ -203,9 +204,12 @@ Result<Step> Positions::position()
 {
     Step s;
     s.name = "position";
-    // K_p = ω_c/5 (the velocity wizard's rule), lowered until the open position loop K_p·T_v/(jω) keeps
-    // kPositionGainMarginDb of gain margin at every position (T_v the predicted closed velocity loop there).
-    double kp = kTwoPi * m_fc / 5.0, limit = kInf;
+    // K_p = ω_v/5 (the velocity wizard's rule; ω_v the crossover or the narrowest predicted velocity bandwidth,
+    // whichever is lower: the position loop never faster than the velocity loop it commands), lowered until the open
+    // position loop K_p·T_v/(jω) keeps kPositionGainMarginDb of gain margin at every position (T_v the predicted closed
+    // velocity loop there).
+    const double fVel = m_worstVelocityBwHz > 0.0 ? std::min(m_fc, m_worstVelocityBwHz) : m_fc;
+    double kp = kTwoPi * fVel / 5.0, limit = kInf;
     std::vector<std::complex<double>> l, t;
     for (const auto& site : m_sites) {
         piLoops(m_pi, site, l, t);
@@ -222,10 +226,13 @@ Result<Step> Positions::position()
         v["position.torque_ff"] = 1.0;
     for (const auto& [k, x] : v)
         s.chosen[k] = x;
-    s.measured = {{"running_position_kp_per_s", value("position.kp")}, {"velocity_crossover_Hz", m_fc}};
+    s.measured = {{"running_position_kp_per_s", value("position.kp")},
+                  {"velocity_crossover_Hz", m_fc},
+                  {"velocity_frequency_Hz", fVel}};
     model::putOptional(s.measured, "worst_stability_limit_per_s", finiteOr(limit), 1.0,
                        "the predicted position loops have no -180 deg crossing in the band");
-    s.rule = "K_p = min(2pi*f_c/5, the largest K_p that keeps " + num(tuning::kPositionGainMarginDb, 2) +
+    s.rule = "K_p = min(2pi*f_v/5, f_v = min(the velocity crossover, the narrowest predicted velocity bandwidth) = " +
+             num(fVel, 4) + " Hz; the largest K_p that keeps " + num(tuning::kPositionGainMarginDb, 2) +
              " dB of gain margin in K_p*T_v/(j omega) at every position, T_v predicted there); velocity and torque "
              "feedforward 1 (torque with the drive's velocity.inertia, kept)";
     if (auto st = write(v); !st)

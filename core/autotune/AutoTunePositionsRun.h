@@ -109,6 +109,7 @@ private:
     tuning::LoopForm m_form;
     tuning::VelocityPi m_pi;
     double m_fc = 0.0, m_kpPos = 0.0;
+    double m_worstVelocityBwHz = 0.0; ///< the narrowest predicted closed velocity loop over the positions [Hz]
     Final m_fin;
 };
 

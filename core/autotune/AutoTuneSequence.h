@@ -104,6 +104,7 @@ private:
     tuning::VelocityLoopDesign m_design;
     Margins m_predicted;
     double m_fc = 0.0, m_kpPos = 0.0;
+    std::optional<double> m_velocityBwHz; ///< −3 dB of the predicted closed velocity loop (nullopt: none in the band)
     double m_capHz = std::numeric_limits<double>::infinity();
     bool m_again = false;
     Final m_fin;

@@ -126,6 +126,40 @@ TEST(AutoTune, DryRunMeasuresEverythingAndChangesNothing)
     EXPECT_TRUE(j["final"]["parameters"].contains("velocity.kp"));
 }
 
+TEST(AutoTune, ThePositionLoopIsNeverFasterThanTheVelocityLoopItCommands)
+{
+    // vmc X with a 6 s budget: the widest-bandwidth PI of the grid is designed for a crossover near 400 Hz, but its
+    // predicted closed loop falls 3 dB at about 80 Hz. The velocity wizard's rule K_p = omega/5 (ANALYST, ch. 5)
+    // must take the lower of the two: K_p = 2 pi f_c/5 with f_c = 400 Hz gave 502 1/s and a position loop
+    // (87 Hz) faster than the velocity loop (80 Hz) it commands.
+    auto d = open("sim:vmc");
+    ASSERT_TRUE(d);
+    autotune::Options o;
+    o.axis = "X";
+    o.timeBudgetS = 6.0;
+    auto r = autotune::runAutoTune(*d, o);
+    ASSERT_TRUE(r.ok()) << r.error().detail;
+    ASSERT_EQ(r->outcome, autotune::Outcome::Applied) << r->reason;
+    const autotune::Step* pi = nullptr;
+    const autotune::Step* position = nullptr;
+    for (const auto& s : r->steps) { // the last of each (verify may send the design back)
+        if (s.name == "velocity-pi")
+            pi = &s;
+        if (s.name == "position")
+            position = &s;
+    }
+    ASSERT_TRUE(pi && position);
+    const double fc = pi->chosen["crossover_Hz"].get<double>();
+    const double bwPredicted = pi->chosen["predicted"]["velocity_bandwidth_Hz"].get<double>();
+    const double kp = position->chosen["position.kp"].get<double>();
+    // This run is the case the rule is about (otherwise the test shows nothing).
+    EXPECT_GT(fc, 2.0 * bwPredicted);
+    EXPECT_LE(kp, 2.0 * std::numbers::pi * bwPredicted / 5.0 * (1.0 + 1e-12));
+    // Re-measured: the position loop (K_p T_v/s closed) well inside the velocity loop's bandwidth.
+    ASSERT_TRUE(r->final.has_value());
+    EXPECT_LT(r->final->positionBandwidthHz, 0.6 * r->final->velocityBandwidthHz);
+}
+
 TEST(AutoTune, BadOptionsAreErrorsBeforeAnythingMoves)
 {
     auto d = open("sim:vmc");
