@@ -6,6 +6,7 @@
 #include "widgets/TimeTracePlot.h"
 
 #include "core/io/AtomicFile.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Units.h"
 #include "widgets/PlotCommon.h"
 #include "widgets/PlotExport.h"
@@ -241,7 +242,7 @@ void TimeTracePlot::setCapture(std::shared_ptr<const model::Capture> capture, co
                 time = &c;
         }
         double fs = 1.0;
-        if (const auto* stated = m_capture->metadata.find("fs_Hz")) {
+        if (const auto* stated = m_capture->metadata.find(model::meta::kFsHz)) {
             if (const auto v = stated->number(); v && *v > 0 && std::isfinite(*v))
                 fs = *v;
         }

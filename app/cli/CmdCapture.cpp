@@ -12,6 +12,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
 #include "core/io/SweepCsv.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 
@@ -176,7 +177,7 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
                    const device::AdaptiveFrfResult* adaptive = nullptr)
 {
     auto m = std::make_unique<device::FrfMeasurement>(std::move(measurement));
-    m->frf.metadata.set("connection", o.connect);
+    m->frf.metadata.set(model::meta::kConnection, o.connect);
     if (auto st = io::writeFrfCsvFile(o.out, m->frf); !st)
         return reportError(cmd, st.error());
     if (!o.sweepOut.empty()) {
@@ -231,7 +232,7 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
         a["invalid_by_reason"] = counts;
         std::cout << ", \"adaptive\": " << a.dump();
     }
-    if (const auto* q = m->frf.metadata.find("quantity"))
+    if (const auto* q = m->frf.metadata.find(model::meta::kQuantity))
         std::cout << ", \"quantity\": \"" << q->text() << "\"";
     std::cout << "}\n";
     return 0;
@@ -371,12 +372,12 @@ int runCapture(const CaptureOptions& o)
         return writeFrfResult(cmd, std::move(*done->frf), o);
     }
     auto cap = std::move(*done->trace);
-    cap.metadata.set("test", o.test);
-    cap.metadata.set("connection", o.connect);
+    cap.metadata.set(model::meta::kTest, o.test);
+    cap.metadata.set(model::meta::kConnection, o.connect);
     if (auto st = io::writeCaptureCsvFile(o.out, cap); !st)
         return reportError(cmd, st.error());
     std::cout << "{\"out\": \"" << o.out << "\", \"samples\": " << cap.size()
-              << ", \"fs_Hz\": " << cap.metadata.textOr("fs_Hz", "")
+              << ", \"fs_Hz\": " << cap.metadata.textOr(model::meta::kFsHz, "")
               << ", \"planned_motion_s\": " << model::formatNumber(plan->motionTimeS, 10)
               << ", \"planned_samples\": " << plan->recordSamples << "}\n";
     return 0;

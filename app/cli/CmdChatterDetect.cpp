@@ -6,6 +6,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageFromParameters.h"
 #include "core/machining/StageJson.h"
+#include "core/model/MetadataKeys.h"
 #include "core/sim/MachineDefinition.h"
 
 #include <cmath>
@@ -24,8 +25,8 @@ struct ChatterDetectArgs {
 /// The stage of the capture's simulated machine (metadata machine= and axis=) when no stage.json is given.
 Result<machining::StageDescription> stageFromCapture(const model::Capture& cap, const std::string& src)
 {
-    const auto m = cap.metadata.text("machine");
-    const auto ax = cap.metadata.text("axis");
+    const auto m = cap.metadata.text(model::meta::kMachine);
+    const auto ax = cap.metadata.text(model::meta::kAxis);
     if (!m || !ax)
         return makeError(
             ErrorCode::BadInput,
@@ -49,7 +50,8 @@ int runChatterDetect(const ChatterDetectArgs& a)
     auto stage = a.stage.empty() ? stageFromCapture(*cap, a.in) : machining::readStageJsonFile(a.stage);
     if (!stage)
         return reportError(cmd, stage.error());
-    const std::string stageSrc = a.stage.empty() ? "machine " + cap->metadata.textOr("machine", "?") : a.stage;
+    const std::string stageSrc =
+        a.stage.empty() ? "machine " + cap->metadata.textOr(model::meta::kMachine, "?") : a.stage;
     if (!stage->hasCoupling)
         return reportError(
             cmd, makeError(ErrorCode::BadInput,

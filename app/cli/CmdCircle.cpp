@@ -11,6 +11,7 @@
 #include "core/io/BallBarCsv.h"
 #include "core/io/CaptureCsv.h"
 #include "core/model/CircleDirectionName.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
@@ -111,7 +112,7 @@ int runCircleOnDrive(const CircleCliOptions& o, const sim::CircleTestOptions& c)
     auto& res = measured->result;
     auto& trace = measured->trace;
     model::BallBarTrace bb = res.ballbar;
-    bb.metadata.set("connection", o.connect);
+    bb.metadata.set(model::meta::kConnection, o.connect);
     if (auto st = io::writeBallBarCsvFile(o.out, bb); !st)
         return reportError(cmd, st.error());
     if (!o.servoOutX.empty())
@@ -176,7 +177,7 @@ int runCircle(const CircleCliOptions& o)
         return reportError(cmd, ran.error());
     sim::CircleTestResult result = *ran;
     auto* res = &result;
-    res->ballbar.metadata.set("connection", o.connect);
+    res->ballbar.metadata.set(model::meta::kConnection, o.connect);
     if (auto st = io::writeBallBarCsvFile(o.out, res->ballbar); !st)
         return reportError(cmd, st.error());
     if (!o.servoOutX.empty())

@@ -5,6 +5,7 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageJson.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Units.h"
 
 #include <cmath>
@@ -93,11 +94,11 @@ int runCuttingForce(const CuttingForceArgs& a)
     machining::SwitchingRls adaptive = rls.value();
 
     model::Capture outCap;
-    outCap.metadata.set("source", a.in);
-    outCap.metadata.set("fs_Hz", 1.0 / *ts);
+    outCap.metadata.set(model::meta::kSource, a.in);
+    outCap.metadata.set(model::meta::kFsHz, 1.0 / *ts);
     outCap.metadata.set("motor_torque_from", current ? "current_A x torque_constant" : torque->name);
     outCap.metadata.set("load_velocity_from", xt ? "table_pos_m (backward difference / R)" : "load_vel_rad_s");
-    outCap.metadata.set("cutting_force_sign",
+    outCap.metadata.set(model::meta::kCuttingForceSign,
                         "force of the process on the table along +axis (= -F_cut/R of seed 003 eq. (1))");
     std::vector<double> tcol(n), tsHat(n), fcut(n), force(n), mode(n), jl(n), bl(n), fcl(n);
     const auto* tIn = cap->channel("t_s");

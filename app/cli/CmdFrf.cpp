@@ -15,6 +15,7 @@
 #include "core/io/SampleTime.h"
 #include "core/io/SweepCsv.h"
 #include "core/model/MetadataJson.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 #include "core/model/Units.h"
@@ -77,14 +78,14 @@ Result<double> samplingFrequency(const model::Capture& cap, const FrfOptions& o,
     if (t != nullptr) {
         std::size_t first = 0;
         // The file line of the first row, for messages only: a value that is not a whole number >= 0 names none.
-        if (const auto line = cap.metadata.integer("first_data_line"); line && *line >= 0)
+        if (const auto line = cap.metadata.integer(model::meta::kFirstDataLine); line && *line >= 0)
             first = static_cast<std::size_t>(*line);
         auto timing = io::sampleTiming(t->data, src + ", column '" + timeName + "'", first);
         if (!timing)
             return timing.error();
         fromTime = timing->fsHz;
     }
-    if (const auto* v = cap.metadata.find("fs_Hz")) {
+    if (const auto* v = cap.metadata.find(model::meta::kFsHz)) {
         const double fs = v->number().value_or(0.0);
         if (!(fs > 0.0) || !std::isfinite(fs))
             return makeError(ErrorCode::BadInput,
@@ -137,9 +138,9 @@ Result<dsp::FrequencyResponse> frfFromCapture(const FrfOptions& o)
     if (!frf)
         return makeError(frf.error().code, o.inPath + ": " + frf.error().detail);
     auto& md = frf.value().metadata;
-    md.set("input", o.inputCol);
-    md.set("output", o.outputCol);
-    md.set("fs_Hz", *fs);
+    md.set(model::meta::kInput, o.inputCol);
+    md.set(model::meta::kOutput, o.outputCol);
+    md.set(model::meta::kFsHz, *fs);
     md.set("window", o.window);
     return frf;
 }
@@ -196,10 +197,10 @@ Result<dsp::ImpactResult> frfFromImpact(const FrfOptions& o)
     if (!res)
         return res.error();
     auto& md = res.value().frf.metadata;
-    md.set("input", o.forceCol);
-    md.set("output", o.responseCol);
+    md.set(model::meta::kInput, o.forceCol);
+    md.set(model::meta::kOutput, o.responseCol);
     md.set("response_type", o.responseType);
-    md.set("quantity", o.quantity);
+    md.set(model::meta::kQuantity, o.quantity);
     return res;
 }
 
@@ -225,7 +226,7 @@ nlohmann::json impactSummary(const dsp::ImpactResult& r)
             {"exp_window_decay_1_s", r.expDecayPerS},
             {"force_band_Hz", r.forceBandHz},
             {"residual_response", r.residualResponse},
-            {"peak", {{"f_Hz", peakHz}, {"magnitude", peak}, {"units", *r.frf.metadata.text("units")}}},
+            {"peak", {{"f_Hz", peakHz}, {"magnitude", peak}, {"units", *r.frf.metadata.text(model::meta::kUnits)}}},
             {"notes", r.notes}};
 }
 
@@ -311,9 +312,9 @@ int runFrf(const FrfOptions& o)
             return reportError(cmd, makeError(frf.error().code, o.sweepPath + ": " + frf.error().detail));
         // A drive's sweep (capture --sweep-out) names its injection hold: the same correction as the drive's FRF.
         const auto& md = rec->metadata;
-        if (md.contains("injection_hold_period_s") && md.contains("injection_hold_ticks")) {
-            const auto h = md.number("injection_hold_period_s");
-            const auto n = md.integer("injection_hold_ticks");
+        if (md.contains(model::meta::kInjectionHoldPeriodS) && md.contains(model::meta::kInjectionHoldTicks)) {
+            const auto h = md.number(model::meta::kInjectionHoldPeriodS);
+            const auto n = md.integer(model::meta::kInjectionHoldTicks);
             Status st = !h                       ? Status(h.error())
                         : !n                     ? Status(n.error())
                         : *n < 1 || *n > 1000000 ? Status(makeError(ErrorCode::BadInput, "tick count out of range"))

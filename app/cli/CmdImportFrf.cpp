@@ -7,6 +7,7 @@
 #include "core/io/TableImport.h"
 #include "core/io/Uff58.h"
 #include "core/model/MetadataJson.h"
+#include "core/model/MetadataKeys.h"
 
 #include <iostream>
 #include <memory>
@@ -71,7 +72,7 @@ int runImportFrf(const ImportFrfOptions& o)
     auto frf = readForeignFrf(o);
     if (!frf)
         return reportError(cmd, frf.error());
-    if (!frf->metadata.contains("units"))
+    if (!frf->metadata.contains(model::meta::kUnits))
         std::cerr << "axistune-cli import-frf: note: " << o.in
                   << " states no units; h is taken as it is (give --units)\n";
     frf.value().metadata.set("imported_from", o.in);

@@ -5,13 +5,14 @@
 #include "core/device/Drive.h"
 #include "core/device/TestRunner.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <chrono>
 #include <cmath>
 #include <memory>
-#include <thread>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 namespace axistune::cli {
 namespace {
@@ -209,8 +210,9 @@ int runScope(const ScopeOptions& o)
     if (!captured)
         return reportError(cmd, captured.error());
     const device::ScopeCapture& capture = *captured;
-    auto table = device::scopeCaptureToTable(capture, o.axis,
-                                             {{"connection", o.connect}, {"divider", static_cast<double>(o.divider)}});
+    model::Metadata extra{{"divider", static_cast<double>(o.divider)}};
+    extra.set(model::meta::kConnection, o.connect);
+    auto table = device::scopeCaptureToTable(capture, o.axis, extra);
     if (triggered) {
         table.metadata.set("trigger", o.trigger);
         table.metadata.set("pre_trigger_pct", o.prePct);

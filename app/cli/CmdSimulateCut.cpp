@@ -8,6 +8,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/machining/MachiningJson.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Units.h"
 #include "core/sim/CutSimulation.h"
 #include "core/sim/MachineDefinition.h"
@@ -209,7 +210,7 @@ nlohmann::json summaryJson(const SimulateCutArgs& a, const avoidance::AvoidanceC
         j["spindle_rpm_min"] = lo;
         j["spindle_rpm_max"] = hi;
     }
-    j["spindle_command_limited"] = cap.metadata.textOr("spindle_command_limited", "0");
+    j["spindle_command_limited"] = cap.metadata.textOr(model::meta::kSpindleCommandLimited, "0");
     if (av.method == avoidance::Method::None)
         return j;
     j["sensor"] = av.sensor == machining::AvoidanceSensor::Dob ? "dob" : "accelerometer";
@@ -318,13 +319,13 @@ int runSimulateCut(const SimulateCutArgs& a)
         return reportError(cmd, makeError(simulated.error().code, "--tool/--cut/--rpm/--depth-m/avoidance options: " +
                                                                       simulated.error().detail));
     model::Capture cap = std::move(simulated->capture);
-    cap.metadata.set("machine", def->name);
-    cap.metadata.set("connection", "sim:" + def->name);
-    cap.metadata.set("spindle_rpm", a.rpm);
-    cap.metadata.set("axial_depth_m", a.depthM);
+    cap.metadata.set(model::meta::kMachine, def->name);
+    cap.metadata.set(model::meta::kConnection, "sim:" + def->name);
+    cap.metadata.set(model::meta::kSpindleRpm, a.rpm);
+    cap.metadata.set(model::meta::kAxialDepthM, a.depthM);
     cap.metadata.set("feed_per_tooth_m", a.feedPerToothM);
     cap.metadata.set("tooth_frequency_Hz", a.rpm * ms.teeth / 60.0);
-    cap.metadata.set("engage_s", a.engageS);
+    cap.metadata.set(model::meta::kEngageS, a.engageS);
     cap.metadata.set("spindle_time_constant_s", ms.spindleTimeConstantS);
     cap.metadata.set("spindle_limits_rpm", num(ms.spindleMinRpm) + ":" + num(ms.spindleMaxRpm));
     if (auto st = io::writeCaptureCsvFile(a.out, cap); !st)

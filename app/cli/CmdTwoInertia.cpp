@@ -7,6 +7,7 @@
 #include "core/dsp/LoopAnalysis.h"
 #include "core/io/FrfCsv.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/ResultJson.h"
 #include "core/tuning/TwoInertia.h"
 #include "core/tuning/TwoInertiaFilter.h"
@@ -52,7 +53,7 @@ Result<dsp::FrequencyResponse> plantFromComplementary(const dsp::FrequencyRespon
     if (o.loopPi.size() != 2 || !(o.loopPi[0] >= 0.0) || !(o.loopPi[1] >= 0.0) || !(o.loopPi[0] + o.loopPi[1] > 0.0) ||
         !(o.loopPeriodS > 0.0))
         return makeError(ErrorCode::BadInput, "--loop-pi needs KP,KI >= 0 (not both 0) and --loop-period-s > 0");
-    if (const auto* m = t.metadata.find("measurement"); m && m->text() != "complementary")
+    if (const auto* m = t.metadata.find(model::meta::kMeasurement); m && m->text() != "complementary")
         return makeError(ErrorCode::BadInput,
                          path +
                              ": --loop-pi needs a complementary FRF (T = PC/(1+PC)), the file says "
@@ -78,7 +79,7 @@ Result<dsp::FrequencyResponse> plantFromComplementary(const dsp::FrequencyRespon
         const std::complex<double> c = o.loopPi[0] + o.loopPi[1] * o.loopPeriodS / (1.0 - zInv);
         p.h[i] = p.valid[i] ? p.h[i] / c : std::complex<double>(0.0, 0.0);
     }
-    p.metadata.set("loop", "plant-from-complementary");
+    p.metadata.set(model::meta::kLoop, "plant-from-complementary");
     return p;
 }
 

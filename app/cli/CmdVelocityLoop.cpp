@@ -7,6 +7,7 @@
 #include "core/device/ModbusDrive.h"
 #include "core/io/FrfCsv.h"
 #include "core/model/InputLimits.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/ResultJson.h"
 #include "core/tuning/VelocityLoopDesign.h"
 #include "core/tuning/VelocityLoopDesignJson.h"
@@ -170,14 +171,14 @@ int runVelocityLoop(const VelocityLoopOptions& o)
             auto kind = tuning::parseLoopMeasurement(o.measurement);
             if (!kind)
                 return bad("--measurement: " + kind.error().detail);
-            frf.metadata.set("measurement", std::string(tuning::loopMeasurementName(*kind)));
-        } else if (!frf.metadata.contains("measurement")) {
+            frf.metadata.set(model::meta::kMeasurement, std::string(tuning::loopMeasurementName(*kind)));
+        } else if (!frf.metadata.contains(model::meta::kMeasurement)) {
             return bad(o.frfPath + ": no 'measurement' key says what the FRF is; give --measurement plant|open|"
                                    "complementary|neg-complementary|sensitivity");
         } else if (auto kind = tuning::loopMeasurementOf(frf, tuning::LoopMeasurementKind::Plant); !kind) {
             return bad(o.frfPath + ": " + kind.error().detail);
         }
-        frfJson = {{"file", o.frfPath}, {"measurement", *frf.metadata.text("measurement")}};
+        frfJson = {{"file", o.frfPath}, {"measurement", *frf.metadata.text(model::meta::kMeasurement)}};
         req.measured = std::move(frf);
     }
     auto design = tuning::designVelocityLoop(req);

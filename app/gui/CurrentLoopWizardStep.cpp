@@ -7,6 +7,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/CurrentLoopWizard.h"
 #include "app/gui/WizardPages.h"
+#include "core/model/MetadataKeys.h"
 #include "widgets/CurvePlot.h"
 
 #include <QCheckBox>
@@ -375,7 +376,7 @@ QString CurrentLoopVerifyPage::compareMeasured()
                             pct(m_d.difference.maxAbs), pct(m_d.difference.rms))
                        .arg(m_d.difference.samples);
     if (m_d.measuredCapture) {
-        const auto* clamped = m_d.measuredCapture->metadata.find("voltage_clamped_ticks");
+        const auto* clamped = m_d.measuredCapture->metadata.find(model::meta::kVoltageClampedTicks);
         if (clamped && *clamped != "0")
             text += "\n" + tr("The voltage clamp acted in %1 current periods: the measured step is not the linear loop "
                               "the prediction describes; use a smaller step.")

@@ -8,6 +8,7 @@
 #include "app/gui/FrfWizard.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/tuning/PositionPid.h"
 #include "widgets/BodePlot.h"
 
@@ -506,11 +507,11 @@ void FrfResultPage::setMeasurement(const dsp::FrequencyResponse& frf, device::Fr
     m_method = method;
     m_frfMaxHz = frfMaxHz;
     m_outputSignal = outputSignal;
-    m_quantity = QString::fromStdString(frf.metadata.textOr("quantity", ""));
+    m_quantity = QString::fromStdString(frf.metadata.textOr(model::meta::kQuantity, ""));
     m_done = false;
     m_analysis = {};
     // The rate only draws the validity bands and the note under the plot: 0 (unknown) when unreadable.
-    const auto fs = frf.metadata.number("fs_Hz");
+    const auto fs = frf.metadata.number(model::meta::kFsHz);
     m_fsHz = fs ? *fs : 0.0;
 }
 
@@ -555,13 +556,13 @@ void FrfResultPage::initializePage()
     const dsp::FrequencyResponse frf = m_frf;
     m_watcher->setFuture(QtConcurrent::run([frf] {
         FrfAnalysis a;
-        const auto* m = frf.metadata.find("measurement");
+        const auto* m = frf.metadata.find(model::meta::kMeasurement);
         const bool complementary = m && *m == "complementary";
         const auto form = complementary ? dsp::openLoopFromClosedLoop(frf, dsp::LoopMeasurement::Complementary) : frf;
         a.analysedForm = complementary
                              ? QCoreApplication::translate("FrfResultPage", "the open loop L = T/(1−T) of the measured T")
                              : QCoreApplication::translate("FrfResultPage", "the measured response");
-        const auto* q = frf.metadata.find("quantity");
+        const auto* q = frf.metadata.find(model::meta::kQuantity);
         if (q && *q == "plant") {
             // A plant falls as its rigid body (f⁻² under torque, f⁻¹ under a velocity command), with an anti-resonance
             // before each resonance: its resonance is the peak of |P|·ω^order above the median of the band, as

@@ -9,6 +9,7 @@
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/model/CircleDirectionName.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/ResultJson.h"
 #include "core/store/SessionRecord.h"
 
@@ -26,12 +27,12 @@ model::Capture traceCapture(const io::BallBarTrace& t)
 {
     model::Capture c;
     c.metadata = t.metadata;
-    c.metadata.set("content", "ballbar");
-    c.metadata.set("source", t.source);
-    c.metadata.set("radius_m", t.radiusM);
+    c.metadata.set(model::meta::kContent, "ballbar");
+    c.metadata.set(model::meta::kSource, t.source);
+    c.metadata.set(model::meta::kRadiusM, t.radiusM);
     c.metadata.set("feed_m_per_s", t.feedMPerS);
-    c.metadata.set("direction", model::circleDirectionName(t.direction));
-    c.metadata.set("plane", t.plane);
+    c.metadata.set(model::meta::kDirection, model::circleDirectionName(t.direction));
+    c.metadata.set(model::meta::kPlane, t.plane);
     c.metadata.set("center_x_m", t.centerXM);
     c.metadata.set("center_y_m", t.centerYM);
     if (t.dTxNm)

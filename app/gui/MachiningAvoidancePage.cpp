@@ -4,6 +4,7 @@
 
 #include "app/gui/MachiningWizard.h"
 #include "core/dsp/Welch.h"
+#include "core/model/MetadataKeys.h"
 #include "core/sim/MachineDefinition.h"
 #include "widgets/CurvePlot.h"
 #include "widgets/TimeTracePlot.h"
@@ -350,13 +351,14 @@ void MachiningAvoidancePage::finished()
     m_trace->addSeries(tr("spindle speed"), t, channelOf(c, "spindle_speed_rpm"), tr("min⁻¹"), QColor(0, 90, 180));
     m_trace->addSeries(tr("spindle speed command"), t, channelOf(c, "spindle_speed_cmd_rpm"), tr("min⁻¹"),
                        QColor(150, 150, 150), Qt::DashLine);
-    if (c.channel("chatter_frequency_Hz") && r.capture.metadata.text("avoid") != "esc")
+    if (c.channel("chatter_frequency_Hz") && r.capture.metadata.text(model::meta::kAvoid) != "esc")
         m_trace->addSeries(tr("estimated chatter frequency"), t, channelOf(c, "chatter_frequency_Hz"), tr("Hz"),
                            QColor(200, 0, 0));
     if (c.channel("avoid_power")) {
-        const bool esc = r.capture.metadata.text("avoid") == "esc";
+        const bool esc = r.capture.metadata.text(model::meta::kAvoid) == "esc";
         m_trace->addSeries(esc ? tr("cost (signal squared)") : tr("self-excited power"), t, channelOf(c, "avoid_power"),
-                           QString::fromStdString(c.metadata.textOr("avoid_power_unit", "")), QColor(0, 140, 60));
+                           QString::fromStdString(c.metadata.textOr(model::meta::kAvoidPowerUnit, "")),
+                           QColor(0, 140, 60));
     }
     m_trace->rescale();
     m_trace->replotNow();
@@ -381,10 +383,10 @@ void MachiningAvoidancePage::finished()
         text += QLatin1Char(' ') +
                 tr("Triggered at %1 s; %n adaptation step(s).", nullptr, static_cast<int>(r.steps.size()))
                     .arg(fmt(r.triggerTimeS, 3));
-    else if (c.metadata.text("avoid") == "adaptive" || c.metadata.text("avoid") == "multimode")
+    else if (c.metadata.text(model::meta::kAvoid) == "adaptive" || c.metadata.text(model::meta::kAvoid) == "multimode")
         text += QLatin1Char(' ') + tr("Never triggered: the filtered signal squared stayed below σ_th (set a lower "
                                       "trigger σ_th for this cut).");
-    if (c.metadata.text("avoid") == "esc")
+    if (c.metadata.text(model::meta::kAvoid) == "esc")
         text += QLatin1Char(' ') + tr("ESC: dither %1 Hz, h_c %2 Hz, k_c %3 1/s; %4 samples held at a bound.")
                                        .arg(fmt(r.escDesign.omegaPRadS / (2.0 * M_PI), 2),
                                             fmt(r.escDesign.hcRadS / (2.0 * M_PI), 3), fmt(r.escDesign.kcPerS, 1))

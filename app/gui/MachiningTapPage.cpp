@@ -7,6 +7,7 @@
 #include "core/io/SampleTime.h"
 #include "core/io/TableImport.h"
 #include "core/machining/ExponentialWindow.h"
+#include "core/model/MetadataKeys.h"
 #include "widgets/BodePlot.h"
 
 #include <QComboBox>
@@ -38,7 +39,7 @@ Result<std::pair<model::Capture, double>> loadRecord(const QString& path)
     auto cap = io::readTimeSeriesFile(p, {});
     if (!cap)
         return cap.error();
-    if (const auto* v = cap->metadata.find("fs_Hz")) {
+    if (const auto* v = cap->metadata.find(model::meta::kFsHz)) {
         double fs = 0.0;
         if (io::detail::parseDouble(v->text(), fs) && fs > 0.0 && std::isfinite(fs))
             return std::pair{std::move(cap).value(), fs};

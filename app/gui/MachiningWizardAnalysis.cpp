@@ -7,6 +7,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/machining/StageFromParameters.h"
 #include "core/machining/StageJson.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Units.h"
 #include "core/sim/CutSimulation.h"
 #include "core/sim/MachineDefinition.h"
@@ -93,11 +94,11 @@ Result<model::Capture> simulateVmcCut(const machining::ToolModes& tool, const Ma
     if (!simulated)
         return simulated.error();
     model::Capture cap = std::move(simulated).value();
-    cap.metadata.set("machine", "vmc");
-    cap.metadata.set("axis", "X");
-    cap.metadata.set("spindle_rpm", in.rpm);
-    cap.metadata.set("axial_depth_m", in.depthM);
-    cap.metadata.set("engage_s", opt.engageS);
+    cap.metadata.set(model::meta::kMachine, "vmc");
+    cap.metadata.set(model::meta::kAxis, "X");
+    cap.metadata.set(model::meta::kSpindleRpm, in.rpm);
+    cap.metadata.set(model::meta::kAxialDepthM, in.depthM);
+    cap.metadata.set(model::meta::kEngageS, opt.engageS);
     return cap;
 }
 
@@ -111,7 +112,7 @@ CutAnalysis analyseCut(model::Capture cap, const QString& source, const QString&
         stage = machining::readStageJsonFile(stagePath.toStdString());
         out.stageSource = stagePath;
     } else {
-        const auto m = cap.metadata.text("machine"), a = cap.metadata.text("axis");
+        const auto m = cap.metadata.text(model::meta::kMachine), a = cap.metadata.text(model::meta::kAxis);
         if (!m || !a) {
             out.error = QObject::tr("%1: no stage.json given and the capture names no simulated machine/axis "
                                     "(metadata 'machine=' and 'axis=')")
@@ -176,7 +177,7 @@ CutAnalysis analyseCut(model::Capture cap, const QString& source, const QString&
         machining::ChatterDetectOptions opt = stage->chatter;
         // The air cut before the tool enters the material sets the force-energy floor (CD-2 gate).
         if (opt.baselineS <= 0.0) {
-            const auto engage = cap.metadata.optionalNumber("engage_s");
+            const auto engage = cap.metadata.optionalNumber(model::meta::kEngageS);
             if (!engage) {
                 out.error = source + ": " + QString::fromStdString(engage.error().detail);
                 return out;

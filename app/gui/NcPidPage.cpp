@@ -3,6 +3,7 @@
 
 #include "app/gui/AppContext.h"
 #include "app/gui/WidgetUtil.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/store/Database.h"
 #include "core/store/FrfCapture.h"
@@ -45,7 +46,7 @@ dsp::FrequencyResponse loopFrf(const autotune::PidLoopMeasurement& m, const std:
     for (std::size_t k = 0; k < m.freqHz.size(); ++k)
         if (!notch || std::abs(tuning::biquadNotchResponse(*notch, 1.0 / m.servoRateHz, m.freqHz[k])) >= 1e-3)
             r.push(m.freqHz[k], l[k], NAN, true);
-    r.metadata.set("quantity", "open_loop");
+    r.metadata.set(model::meta::kQuantity, "open_loop");
     return r;
 }
 

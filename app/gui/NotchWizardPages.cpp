@@ -4,6 +4,7 @@
 #include "app/gui/AppContext.h"
 #include "app/gui/NcPidPage.h"
 #include "app/gui/NotchWizard.h"
+#include "core/model/MetadataKeys.h"
 #include "core/store/FrfCapture.h"
 #include "core/store/SessionRecord.h"
 #include "widgets/BodePlot.h"
@@ -122,7 +123,7 @@ void fillMargins(QTableWidget* t, const std::vector<std::optional<dsp::LoopMargi
 void addValidityBand(widgets::BodePlot* plot, const dsp::FrequencyResponse& frf)
 {
     // Only a band on the plot: a missing or unreadable rate draws none.
-    const auto parsed = frf.metadata.number("fs_Hz");
+    const auto parsed = frf.metadata.number(model::meta::kFsHz);
     if (!parsed || frf.empty())
         return;
     const double fs = *parsed;

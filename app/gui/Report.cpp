@@ -6,6 +6,7 @@
 #include "app/gui/BallBarText.h"
 #include "core/io/AtomicFile.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Parameter.h"
 #include "core/sim/AxisParameters.h"
 #include "core/store/FrfCapture.h"
@@ -25,8 +26,8 @@
 
 #include <cmath>
 #include <memory>
-#include <set>
 #include <nlohmann/json.hpp>
+#include <set>
 
 namespace axistune {
 namespace gui {
@@ -151,7 +152,7 @@ QString sourceText(store::ParameterSource s)
 /// angle_rad and deviation_m.
 bool isBallBarCapture(const model::Capture& c)
 {
-    const auto* content = c.metadata.find("content");
+    const auto* content = c.metadata.find(model::meta::kContent);
     if (content && *content == "ballbar")
         return c.channel("angle_rad") && c.channel("deviation_m");
     return c.channel("angle_rad") && c.channel("deviation_m") && c.channels.size() == 2;
@@ -338,7 +339,7 @@ struct Builder {
             const auto* d = c.capture.channel("deviation_m");
             if (a->data.size() != d->data.size() || a->data.empty())
                 continue;
-            if (const auto* radius = c.capture.metadata.find("radius_m"); radius && names.isEmpty()) {
+            if (const auto* radius = c.capture.metadata.find(model::meta::kRadiusM); radius && names.isEmpty()) {
                 if (const auto r = radius->number(); r && *r > 0)
                     polar.setNominalRadius(*r);
             }

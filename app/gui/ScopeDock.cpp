@@ -8,6 +8,7 @@
 #include "core/device/ScopeMath.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/ScopeCsv.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "widgets/CurvePlot.h"
 #include "widgets/TimeTracePlot.h"
@@ -51,7 +52,7 @@ constexpr std::size_t kMaxRowsPerPoll = 262144;
 std::shared_ptr<model::Capture> scopePlotTable(const device::ScopeCapture& c)
 {
     auto t = std::make_shared<model::Capture>();
-    t->metadata.set("fs_Hz", c.rateHz);
+    t->metadata.set(model::meta::kFsHz, c.rateHz);
     model::Channel time{"time_s", {}};
     time.data.reserve(c.rows());
     for (const auto n : c.samples) {

@@ -9,6 +9,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/io/ScopeCsv.h"
 #include "core/model/MetadataJson.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/store/SessionRecord.h"
 #include "widgets/CurvePlot.h"
@@ -48,7 +49,8 @@ constexpr const char* kStoreCapture = "scope";
 
 model::Metadata ScopeDock::captureMetadata() const
 {
-    model::Metadata m{{"connection", m_captureSource.toStdString()}};
+    model::Metadata m;
+    m.set(model::meta::kConnection, m_captureSource.toStdString());
     if (m_armed && m_capture && m_capture->triggered) {
         m.set("divider", static_cast<double>(m_armed->divider));
         m.set("trigger", m_armed->triggerChannel + ":" + model::formatNumber(m_armed->triggerLevel, 17) + ":" +
@@ -225,7 +227,7 @@ bool ScopeDock::openCsv(const QString& path, QString* error)
     if (m_running)
         stop();
     m_armed.reset();
-    const auto a = t->capture.metadata.text("axis");
+    const auto a = t->capture.metadata.text(model::meta::kAxis);
     m_captureAxis = a ? qs(*a) : QString();
     m_captureSource = path;
     m_stateKey = "offline";

@@ -4,6 +4,7 @@
 #include "app/gui/WidgetUtil.h"
 #include "core/io/CaptureCsv.h"
 #include "core/io/FrfCsv.h"
+#include "core/model/MetadataKeys.h"
 #include "core/store/FrfCapture.h"
 #include "core/store/SessionRecord.h"
 #include "widgets/BodePlot.h"
@@ -89,11 +90,11 @@ int addFrfWithBands(widgets::BodePlot& plot, const dsp::FrequencyResponse& frf, 
         }
     }
     // Above the observation Nyquist fs/2 only the multi-sweep methods measure (up to fs).
-    const auto* method = frf.metadata.find("method");
-    if (frf.metadata.contains("fs_Hz") && method && !frf.empty() &&
+    const auto* method = frf.metadata.find(model::meta::kMethod);
+    if (frf.metadata.contains(model::meta::kFsHz) && method && !frf.empty() &&
         (*method == "multisweep" || *method == "multisine" || *method == "sine-stream-mixed")) {
         // Only a band on the plot: an unreadable rate draws none.
-        const auto parsed = frf.metadata.number("fs_Hz");
+        const auto parsed = frf.metadata.number(model::meta::kFsHz);
         const double fsHz = parsed ? *parsed : 0.0;
         if (fsHz > 0.0 && frf.freqHz.back() > fsHz / 2.0)
             plot.addBand(fsHz / 2.0, std::min(fsHz, frf.freqHz.back()), widgets::BodePlot::BandKind::MultiSweepOnly);

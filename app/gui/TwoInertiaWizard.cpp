@@ -8,6 +8,7 @@
 #include "app/gui/WizardPages.h"
 #include "app/gui/WizardRegistry.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/store/FrfCapture.h"
 #include "core/store/SessionRecord.h"
 
@@ -210,7 +211,7 @@ void TwoInertiaWizard::saveSession(bool aborted, const QString& reason)
     if (d.fit && d.plant) {
         const auto& p = d.fit->params;
         dsp::FrequencyResponse model;
-        model.metadata.set("content_of", "two-inertia model");
+        model.metadata.set(model::meta::kContentOf, "two-inertia model");
         for (double f : d.plant->freqHz)
             model.push(f, tuning::motorVelocityResponse(p, f), std::nan(""), true);
         rec.captures.push_back({"model", store::frfAsCapture(model)});

@@ -7,6 +7,7 @@
 #include "app/gui/WidgetUtil.h"
 #include "app/gui/WizardPages.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/store/FrfCapture.h"
 #include "core/tuning/VelocityLoopDesign.h"
 #include "widgets/BodePlot.h"
@@ -241,8 +242,8 @@ void TwoInertiaFitPage::initializePage()
                     auto& meta = m_d.measured->metadata;
                     meta.set("loop_kp_Nms_per_rad", m_d.loopPi.kpNmsPerRad);
                     meta.set("loop_ki_Nm_per_rad", m_d.loopPi.kiNmPerRad);
-                    meta.set("velocity_period_s", m_d.velocityPeriodS);
-                    meta.set("current_period_s", m_d.currentPeriodS);
+                    meta.set(model::meta::kVelocityPeriodS, m_d.velocityPeriodS);
+                    meta.set(model::meta::kCurrentPeriodS, m_d.currentPeriodS);
                 }
             }
             analyse();

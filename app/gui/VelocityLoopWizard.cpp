@@ -11,6 +11,7 @@
 #include "app/gui/WizardRegistry.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/dsp/LoopMarginsJson.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/ResultJson.h"
 #include "core/store/FrfCapture.h"
 #include "core/store/SessionRecord.h"
@@ -183,8 +184,8 @@ void VelocityLoopWizard::saveSession(bool aborted, const QString& reason)
         rec.captures.push_back({"step_after", *d.stepAfter});
     if (!d.fHz.empty() && d.error.isEmpty()) {
         dsp::FrequencyResponse l, t;
-        l.metadata.set("content_of", "predicted open loop");
-        t.metadata.set("content_of", "predicted closed loop");
+        l.metadata.set(model::meta::kContentOf, "predicted open loop");
+        t.metadata.set(model::meta::kContentOf, "predicted closed loop");
         for (std::size_t i = 0; i < d.fHz.size(); ++i) {
             l.push(d.fHz[i], d.openLoop[i], std::nan(""), true);
             t.push(d.fHz[i], d.closedLoop[i], std::nan(""), true);

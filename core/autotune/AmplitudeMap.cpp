@@ -2,6 +2,7 @@
 // Amplitude dependence map and reversal backlash (AmplitudeMap.h; docs/tuning.md "Amplitude map and backlash").
 #include "core/autotune/AmplitudeMap.h"
 
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 
@@ -10,8 +11,8 @@
 #include <cmath>
 #include <complex>
 #include <limits>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 namespace axistune::autotune {
 
@@ -162,10 +163,10 @@ Result<AmplitudeMap> measureAmplitudeMap(device::Drive& drive, const AmplitudeMa
         ar.motionTimeS = m.motionTimeS;
         const auto& md = m.frf.metadata;
         ar.peakNm = kNaN;
-        if (const auto* pk = md.find("peak_Nm"))
+        if (const auto* pk = md.find(model::meta::kPeakNm))
             if (auto x = pk->number())
                 ar.peakNm = *x;
-        const auto* cl = md.find("voltage_clamped_samples");
+        const auto* cl = md.find(model::meta::kVoltageClampedSamples);
         ar.voltageLimited = cl && cl->text() != "0";
         map.motionTimeS += m.motionTimeS;
         if (a == 0)
@@ -348,7 +349,7 @@ Result<BacklashEstimate> measureBacklash(device::Drive& drive, const std::string
         return r.error();
     if (!r->trace)
         return makeError(ErrorCode::Device, "the reversal gave no trace");
-    if (const auto* v = r->trace->metadata.find(device::kMotionTimeMetadataKey))
+    if (const auto* v = r->trace->metadata.find(model::meta::kMotionTimeS))
         if (auto x = v->number())
             motionS = *x;
     return backlashFromReversal(*r->trace);
@@ -392,7 +393,7 @@ Result<InUseMap> amplitudeMapInUse(device::Drive& drive, const AmplitudeMapOptio
     for (double x : tq->data)
         out.peakTorqueNm = std::max(out.peakTorqueNm, std::abs(x));
     double moveS = plan ? plan->motionTimeS : 0.0;
-    if (const auto* v = r->trace->metadata.find(device::kMotionTimeMetadataKey))
+    if (const auto* v = r->trace->metadata.find(model::meta::kMotionTimeS))
         if (auto x = v->number())
             moveS = *x;
     out.useTorquePct = 100.0 * out.peakTorqueNm / ratedTorqueNm;

@@ -5,6 +5,7 @@
 
 #include "core/autotune/AutoTuneSequence.h"
 #include "core/dsp/LoopAnalysis.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 
@@ -100,7 +101,7 @@ Result<device::TestRun> Sequence::test(const device::TestRequest& r, const std::
     }
     double t = plan ? plan->motionTimeS : 0.0;
     if (run->trace) {
-        if (const auto* v = run->trace->metadata.find(device::kMotionTimeMetadataKey))
+        if (const auto* v = run->trace->metadata.find(model::meta::kMotionTimeS))
             if (auto x = v->number())
                 t = *x;
     }

@@ -2,6 +2,7 @@
 // The one-position sequence's design steps: the plant (and the plant in motion), 5 velocity PI, 6 position gain and
 // feedforward (AutoTuneSequence.h).
 #include "core/autotune/AutoTuneSequence.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/ResultJson.h"
 #include "core/tuning/VelocityLoop.h"
 
@@ -40,7 +41,7 @@ std::optional<AutoTuneResult> Sequence::plant()
         if (m_plant.valid[i] && std::abs(lb) > 0.0 && std::isfinite(std::abs(la)))
             m_plant.h[i] *= la / lb;
     }
-    m_plant.metadata.set("measurement", "plant");
+    m_plant.metadata.set(model::meta::kMeasurement, "plant");
     m_phSlide.clear();
     validLines(m_plant, m_pf, m_ph);
     for (std::size_t i = 0, k = 0; i < m_plant.size(); ++i)

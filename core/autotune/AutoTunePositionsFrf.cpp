@@ -3,6 +3,7 @@
 // every position, the point-to-point move at the last, the verification at every position.
 #include "core/autotune/AutoTunePositionsRun.h"
 #include "core/device/MoveTo.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 
@@ -100,7 +101,7 @@ Result<Step> Positions::move()
         return makeError(run.error().code, "the point-to-point move: " + run.error().detail);
     double t = plan ? plan->motionTimeS : 0.0;
     if (run->trace)
-        if (const auto* v = run->trace->metadata.find(device::kMotionTimeMetadataKey))
+        if (const auto* v = run->trace->metadata.find(model::meta::kMotionTimeS))
             if (auto x = v->number())
                 t = *x;
     s.motionTimeS = t;

@@ -2,6 +2,8 @@
 // Simulated cut with chatter avoidance in the loop (AvoidanceCut.h).
 #include "core/avoidance/AvoidanceCut.h"
 
+#include "core/model/MetadataKeys.h"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -169,21 +171,21 @@ Result<AvoidanceCutResult> runAvoidanceCut(const sim::AxisDefinition& axis, cons
         return cap.error();
     result.capture = std::move(cap).value();
     auto& md = result.capture.metadata;
-    md.set("avoid", methodName(o.method));
+    md.set(model::meta::kAvoid, methodName(o.method));
     if (o.method != Method::None) {
         md.set("avoid_sensor", dob ? "dob" : "accelerometer");
         md.set("avoid_sample_period_s", ts);
         md.set("avoid_signal_unit", dob ? "N" : "m/s^2");
-        md.set("avoid_power_unit", dob ? "N^2" : "(m/s^2)^2");
+        md.set(model::meta::kAvoidPowerUnit, dob ? "N^2" : "(m/s^2)^2");
     }
     if (adaptive) {
         result.steps = adaptive->steps();
         result.triggerTimeS = adaptive->triggerTimeS();
-        md.set("avoid_cost_unit", "1 (J_chat)");
+        md.set(model::meta::kAvoidCostUnit, "1 (J_chat)");
     }
     if (esc) {
         result.escBoundHits = esc->boundHits();
-        md.set("avoid_cost_unit", md.textOr("avoid_power_unit", ""));
+        md.set(model::meta::kAvoidCostUnit, md.textOr(model::meta::kAvoidPowerUnit, ""));
     }
     return result;
 }

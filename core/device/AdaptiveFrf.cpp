@@ -4,6 +4,7 @@
 
 #include "core/device/FrfRequestPlan.h"
 #include "core/dsp/Multisine.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -398,7 +399,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         rec.shaped = !rf.multisineShape.empty();
         rec.limitedBy = limitedBy;
         rec.voltagePredictedV = predictedV;
-        const auto* clamped = m.frf.metadata.find("voltage_clamped_samples");
+        const auto* clamped = m.frf.metadata.find(model::meta::kVoltageClampedSamples);
         rec.voltageReached = clamped != nullptr && clamped->text() != "0";
         // The voltage per torque of the excited lines, from the trace (when it has the voltage).
         const auto* volt = run->trace ? run->trace->channel("voltage_V") : nullptr;
@@ -538,7 +539,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
     md.set("adaptive", "true");
     md.set("adaptive_passes", static_cast<double>(out.passes.size()));
     md.set("adaptive_time_budget_s", o.timeBudgetS);
-    md.set("motion_time_s", out.motionTimeS);
+    md.set(model::meta::kMotionTimeS, out.motionTimeS);
     md.set("valid_lines", static_cast<double>(out.validLines));
     std::size_t byReason[4] = {0, 0, 0, 0};
     for (const auto& b : out.invalid)
@@ -547,7 +548,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
     md.set("invalid_torque_limit", static_cast<double>(byReason[1]));
     md.set("invalid_voltage_limit", static_cast<double>(byReason[2]));
     md.set("invalid_nonlinear", static_cast<double>(byReason[3]));
-    md.erase("noise_invalid_lines");
+    md.erase(model::meta::kNoiseInvalidLines);
     return out;
 }
 

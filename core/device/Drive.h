@@ -244,9 +244,6 @@ struct TestPlan {
     double traceRateHz = 0.0;      ///< sample rate of that trace [Hz]
 };
 
-/// Trace metadata key of the machine time a completed test took [s]; planTest's motionTimeS predicts it.
-inline constexpr const char* kMotionTimeMetadataKey = "motion_time_s";
-
 const char* testTypeName(TestType t);
 
 /// For a drive that takes FRF amplitudes in % of rated torque and measures its own quantity only (sim:, modbus://):

@@ -11,6 +11,7 @@
 #include "core/dsp/InjectionHold.h"
 #include "core/dsp/Welch.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -75,8 +76,8 @@ Result<HoldPeriods> holdPeriods(const FrfPlan& plan, const model::Capture& trace
 {
     // A period the plan does not know comes from the trace; a missing one is refused below.
     HoldPeriods p{plan.currentPeriodS, plan.velocityPeriodS};
-    for (auto [key, value] :
-         {std::pair{"current_period_s", &p.currentS}, std::pair{"velocity_period_s", &p.velocityS}}) {
+    for (auto [key, value] : {std::pair{model::meta::kCurrentPeriodS, &p.currentS},
+                              std::pair{model::meta::kVelocityPeriodS, &p.velocityS}}) {
         if (*value > 0.0)
             continue;
         const auto v = trace.metadata.optionalNumber(key);
@@ -106,7 +107,7 @@ Status correctHold(FrfMeasurement& out, const FrfPlan& plan, const HoldPeriods& 
     if (plan.method != FrfMethod::Prbs) {
         if (auto st = dsp::correctInjectionHold(out.frf, p.currentS, p.ticksPerVelocity); !st)
             return st;
-        for (const char* key : {"injection_hold_period_s", "injection_hold_ticks"})
+        for (const auto key : {model::meta::kInjectionHoldPeriodS.name, model::meta::kInjectionHoldTicks.name})
             if (const auto* v = md.find(key))
                 out.sweep.metadata.set(key, *v);
         return Status::success();
@@ -118,7 +119,7 @@ Status correctHold(FrfMeasurement& out, const FrfPlan& plan, const HoldPeriods& 
         else
             out.frf.valid[i] = false;
     }
-    md.set("injection_hold_corrected", "true");
+    md.set(model::meta::kInjectionHoldCorrected, "true");
     md.set("injection_hold", "prbs-held-per-trace-sample");
     md.set("injection_hold_velocity_periods", static_cast<double>(p.velocityPerSample));
     return Status::success();
@@ -306,9 +307,9 @@ Result<FrfMeasurement> evaluateFrfSignals(const FrfPlan& plan, std::span<const d
             out.frf.push(f, full->h[i], full->coherence[i], full->valid[i] && f < 0.5 * plan.fsHz);
             next = f * step;
         }
-        out.frf.metadata.set("method", "prbs");
-        out.frf.metadata.set("fs_Hz", plan.fsHz);
-        out.frf.metadata.set("nperseg", static_cast<double>(plan.nperseg));
+        out.frf.metadata.set(model::meta::kMethod, "prbs");
+        out.frf.metadata.set(model::meta::kFsHz, plan.fsHz);
+        out.frf.metadata.set(model::meta::kNperseg, plan.nperseg);
         return out;
     }
     dsp::SweepRecording& rec = out.sweep;
@@ -380,18 +381,19 @@ Result<FrfMeasurement> evaluateFrfTrace(const FrfPlan& plan, const model::Captur
     if (auto st = correctHold(out, plan, *periods); !st)
         return st.error();
     auto& md = out.frf.metadata;
-    md.set("input", "injection_Nm");
-    md.set("output", "-torque_cmd_Nm");
-    md.set("measurement", "complementary"); // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
-    md.set("amplitude_Nm", plan.amplitudeNm);
-    md.set("settle_s", plan.timing.settleS);
-    md.set("settle_periods", plan.timing.settlePeriods);
-    md.set("min_measure_s", plan.timing.minMeasureS);
-    md.set("loop_time_constant_s", plan.timing.timeConstantS);
-    md.set("motion_time_s", out.motionTimeS);
+    md.set(model::meta::kInput, "injection_Nm");
+    md.set(model::meta::kOutput, "-torque_cmd_Nm");
+    md.set(model::meta::kMeasurement, "complementary"); // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
+    md.set(model::meta::kAmplitudeNm, plan.amplitudeNm);
+    md.set(model::meta::kSettleS, plan.timing.settleS);
+    md.set(model::meta::kSettlePeriods, plan.timing.settlePeriods);
+    md.set(model::meta::kMinMeasureS, plan.timing.minMeasureS);
+    md.set(model::meta::kLoopTimeConstantS, plan.timing.timeConstantS);
+    md.set(model::meta::kMotionTimeS, out.motionTimeS);
     for (const auto& [k, v] : md) {
         // The sweep keeps the raw −T_c and d: the correction is redone by whoever re-analyses it.
-        if (k != "method" && k != "fs_Hz" && k != "injection_hold_corrected")
+        if (k != model::meta::kMethod.name && k != model::meta::kFsHz.name &&
+            k != model::meta::kInjectionHoldCorrected.name)
             out.sweep.metadata.set(k, v);
     }
     return out;

@@ -2,6 +2,7 @@
 // Paged readout of the Modbus drive: trace channels, texts and the FRF through the trace window
 // (function code 23: select and read in one round trip); format in docs/modbus.md.
 #include "core/device/ModbusDrive.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -67,15 +68,15 @@ Result<model::Capture> ModbusDrive::readTrace()
             cap.metadata.setFromText(line.substr(0, eq), line.substr(eq + 1));
     }
     // The trace's rate: the velocity-loop divider or, for a current step, the current-loop rate.
-    if (!cap.metadata.contains("fs_Hz") && rateHz > 0.0) {
-        cap.metadata.set("fs_Hz", rateHz);
-    } else if (cap.metadata.contains("fs_Hz")) {
-        const auto fsHz = cap.metadata.number("fs_Hz");
+    if (!cap.metadata.contains(model::meta::kFsHz) && rateHz > 0.0) {
+        cap.metadata.set(model::meta::kFsHz, rateHz);
+    } else if (cap.metadata.contains(model::meta::kFsHz)) {
+        const auto fsHz = cap.metadata.number(model::meta::kFsHz);
         if (!fsHz)
             return makeError(ErrorCode::Device, m_uri.text + ": trace " + fsHz.error().detail);
         if (!(std::abs(*fsHz - rateHz) <= 1e-9 * std::abs(rateHz)))
             return makeError(ErrorCode::Device,
-                             m_uri.text + ": trace metadata says fs_Hz=" + *cap.metadata.text("fs_Hz") +
+                             m_uri.text + ": trace metadata says fs_Hz=" + *cap.metadata.text(model::meta::kFsHz) +
                                  " but status.trace_rate_hz is " + model::formatNumber(rateHz, 17) + " Hz");
     }
     if (static_cast<int>(cap.channels.size()) != channels)

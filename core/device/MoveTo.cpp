@@ -2,6 +2,7 @@
 // Moving an axis to an absolute position (MoveTo.h).
 #include "core/device/MoveTo.h"
 
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -15,7 +16,7 @@ double machineTime(const TestRun& run, const Result<TestPlan>& plan)
 {
     double t = plan ? plan->motionTimeS : 0.0;
     if (run.trace) {
-        if (const auto* v = run.trace->metadata.find(kMotionTimeMetadataKey))
+        if (const auto* v = run.trace->metadata.find(model::meta::kMotionTimeS))
             if (auto x = v->number())
                 t = *x;
     }

@@ -6,6 +6,7 @@
 #include "core/device/MultisineTest.h"
 
 #include "core/dsp/InjectionHold.h"
+#include "core/model/MetadataKeys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -106,17 +107,17 @@ Result<FrfMeasurement> evaluateMultisineTrace(const MultisinePlan& plan, const m
             std::fill(out.frf.valid.begin(), out.frf.valid.end(), false);
     }
     auto& md = out.frf.metadata;
-    md.set("voltage_clamped_samples", static_cast<double>(clamped));
-    md.set("input", "injection_Nm");
-    md.set("output", "-torque_cmd_Nm");
-    md.set("measurement", "complementary"); // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
-    md.set("amplitude_Nm", plan.design.peak);
-    md.set("peak_Nm", plan.design.peak);
+    md.set(model::meta::kVoltageClampedSamples, clamped);
+    md.set(model::meta::kInput, "injection_Nm");
+    md.set(model::meta::kOutput, "-torque_cmd_Nm");
+    md.set(model::meta::kMeasurement, "complementary"); // T = PC/(1+PC), dsp::LoopMeasurement::Complementary
+    md.set(model::meta::kAmplitudeNm, plan.design.peak);
+    md.set(model::meta::kPeakNm, plan.design.peak);
     md.set("rms_Nm", plan.design.rms);
-    md.set("settle_s", static_cast<double>(plan.settleSamples) / plan.design.fsHz);
-    md.set("period_s", static_cast<double>(plan.design.periodSamples()) / plan.design.fsHz);
-    md.set("loop_time_constant_s", plan.timing.timeConstantS);
-    md.set("motion_time_s", out.motionTimeS);
+    md.set(model::meta::kSettleS, static_cast<double>(plan.settleSamples) / plan.design.fsHz);
+    md.set(model::meta::kPeriodS, static_cast<double>(plan.design.periodSamples()) / plan.design.fsHz);
+    md.set(model::meta::kLoopTimeConstantS, plan.timing.timeConstantS);
+    md.set(model::meta::kMotionTimeS, out.motionTimeS);
     return out;
 }
 

@@ -2,6 +2,7 @@
 // The drive's scope: request checks and the trigger / ring-buffer recorder (docs/scope.md).
 #include "core/device/Scope.h"
 
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -286,9 +287,9 @@ model::Capture scopeCaptureToTable(const ScopeCapture& c, const std::string& axi
 {
     model::Capture t;
     t.metadata = extra;
-    t.metadata.set("fs_Hz", c.rateHz);
-    t.metadata.set("axis", axis);
-    t.metadata.set("scope_mode", c.triggered ? "triggered" : "roll");
+    t.metadata.set(model::meta::kFsHz, c.rateHz);
+    t.metadata.set(model::meta::kAxis, axis);
+    t.metadata.set(model::meta::kScopeMode, c.triggered ? "triggered" : "roll");
     if (c.triggered) {
         // A number while a double holds it exactly; larger sample numbers stay their exact digits.
         t.metadata.set("trigger_sample", c.triggerSample <= (std::uint64_t{1} << 53)

@@ -3,6 +3,7 @@
 #include "core/device/ScopeHistory.h"
 
 #include "core/model/Metadata.h"
+#include "core/model/MetadataKeys.h"
 
 #include <algorithm>
 #include <charconv>
@@ -108,13 +109,13 @@ Result<std::uint64_t> wholeNumber(const model::Metadata& m, const std::string& k
 Result<ScopeCapture> scopeCaptureFromTable(const model::Capture& table)
 {
     ScopeCapture c;
-    auto fs = table.metadata.number("fs_Hz");
+    auto fs = table.metadata.number(model::meta::kFsHz);
     if (!fs)
         return fs.error();
     if (!(std::isfinite(*fs) && *fs > 0.0))
         return makeError(ErrorCode::BadInput, "scope table: fs_Hz must be finite and > 0");
     c.rateHz = *fs;
-    const auto* mode = table.metadata.find("scope_mode");
+    const auto* mode = table.metadata.find(model::meta::kScopeMode);
     c.triggered = mode != nullptr && mode->text() == "triggered";
     if (c.triggered) {
         auto t = wholeNumber(table.metadata, "trigger_sample");

@@ -2,6 +2,7 @@
 // The register engine of axistune-simdrive: field values encoded on read, writes validated as a
 // whole before anything changes, commands deduplicated by their sequence token (docs/modbus.md).
 #include "core/device/SimDriveServer.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -189,7 +190,7 @@ void SimDriveServer::encodeField(const RegisterField& f, int ui, std::uint16_t* 
         return u16(m_trace ? static_cast<int>(m_trace->channels.size()) : 0);
     if (n == "status.trace_rate_hz") {
         // 0 when there is no trace (or its rate is unreadable): the client then refuses the trace.
-        const auto fs = m_trace ? m_trace->metadata.number("fs_Hz") : Result<double>(0.0);
+        const auto fs = m_trace ? m_trace->metadata.number(model::meta::kFsHz) : Result<double>(0.0);
         return encodeF64(fs ? *fs : 0.0, o, buf);
     }
     if (n == "status.message")

@@ -5,6 +5,7 @@
 
 #include "core/device/FrfRequestPlan.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
 
@@ -288,8 +289,8 @@ Result<TestStatus> SimulatedDrive::pollTest()
     if (m_active->time() >= m_endTime - 0.5 * m_active->currentPeriod()) {
         if (!m_trace)  // a current step took its trace at the end of its record
             m_trace = m_active->takeTrace();
-        m_trace->metadata.set("machine", m_machine.name);
-        m_trace->metadata.set(kMotionTimeMetadataKey, m_active->time() - m_startTime);
+        m_trace->metadata.set(model::meta::kMachine, m_machine.name);
+        m_trace->metadata.set(model::meta::kMotionTimeS, m_active->time() - m_startTime);
         m_active->setVelocityCommand({});
         m_active->setTorqueInjection({});
         (void)m_active->setParameters(m_backup);
@@ -306,12 +307,12 @@ Result<TestStatus> SimulatedDrive::pollTest()
                 // The traced voltage shows clamps at trace samples only; the simulator counts them at
                 // every current tick. A multisine spreads a clamp over every line: none is linear then.
                 const std::uint64_t clamps = m_request ? simulator(m_request->axis)->voltageClampCount() - m_clampsAtStart : 0;
-                m.frf.metadata.set("voltage_clamped_ticks", static_cast<double>(clamps));
+                m.frf.metadata.set(model::meta::kVoltageClampedTicks, clamps);
                 if (clamps > 0)
                     std::fill(m.frf.valid.begin(), m.frf.valid.end(), false);
             }
-            m.frf.metadata.set("machine", m_machine.name);
-            m.frf.metadata.set("axis", m_request->axis);
+            m.frf.metadata.set(model::meta::kMachine, m_machine.name);
+            m.frf.metadata.set(model::meta::kAxis, m_request->axis);
             m_frf = std::move(m);
         }
     }
@@ -576,11 +577,10 @@ void SimulatedDrive::endCurrentStepRecord()
 {
     m_recordEnd = -1.0;
     m_trace = m_active->takeTrace();
-    m_trace->metadata.set("test", "current_step");
+    m_trace->metadata.set(model::meta::kTest, "current_step");
     m_trace->metadata.set("step_start_s", m_stepStart);
     m_trace->metadata.set("step_amplitude_A", m_request ? m_request->currentStep().currentA : 0.0);
-    m_trace->metadata.set("voltage_clamped_ticks",
-                          static_cast<double>(m_active->voltageClampCount() - m_clampsAtStart));
+    m_trace->metadata.set(model::meta::kVoltageClampedTicks, m_active->voltageClampCount() - m_clampsAtStart);
     m_active->setCurrentCommand({});
     m_active->holdPosition();
 }

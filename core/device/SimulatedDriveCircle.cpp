@@ -4,6 +4,7 @@
 // left them): positioning to the start point, then sim::CircleRun, in slices from pollTest().
 #include "core/device/CircleDriveTest.h"
 #include "core/device/SimulatedDrive.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Units.h"
 #include "core/sim/CircleRun.h"
 
@@ -256,8 +257,8 @@ Result<TestStatus> SimulatedDrive::pollCircle()
     if (!c.run || !c.run->done())
         return m_status;
     m_trace = c.run->trace();
-    m_trace->metadata.set("machine", m_machine.name);
-    m_trace->metadata.set(kMotionTimeMetadataKey, c.x->time() - c.startS);
+    m_trace->metadata.set(model::meta::kMachine, m_machine.name);
+    m_trace->metadata.set(model::meta::kMotionTimeS, c.x->time() - c.startS);
     // The axes hold the end point of the path; the parameters from before the test return.
     c.x->setPositionProfile(sim::MotionProfile(c.path.endPosition(false)));
     c.y->setPositionProfile(sim::MotionProfile(c.path.endPosition(true)));

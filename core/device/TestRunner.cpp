@@ -2,6 +2,7 @@
 #include "core/device/TestRunner.h"
 
 #include "core/device/FrfRequestPlan.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -45,9 +46,9 @@ Result<FrfMeasurement> evaluateOnHost(const TestRequest& request, const model::P
     if (!m)
         return makeError(m.error().code, "FRF evaluation on the host: " + m.error().detail);
     m.value().frf.metadata.set("evaluated_by", "host");
-    m.value().frf.metadata.set("axis", request.axis);
-    if (const auto* machine = trace.metadata.find("machine"))
-        m.value().frf.metadata.set("machine", *machine);
+    m.value().frf.metadata.set(model::meta::kAxis, request.axis);
+    if (const auto* machine = trace.metadata.find(model::meta::kMachine))
+        m.value().frf.metadata.set(model::meta::kMachine, machine->text());
     return m;
 }
 

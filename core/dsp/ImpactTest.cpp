@@ -4,6 +4,7 @@
 #include "core/dsp/ImpactTest.h"
 
 #include "core/dsp/Fft.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Units.h"
 
 #include <algorithm>
@@ -246,16 +247,16 @@ Result<ImpactResult> impactFrf(const std::vector<ImpactRecord>& records, const I
                             " % of its peak: leakage; use an exponential window (--exp-tau) or a longer record");
     }
     auto& md = res.frf.metadata;
-    md.set("method", "impact-h1");
-    md.set("units", impactUnits(o.output));
+    md.set(model::meta::kMethod, "impact-h1");
+    md.set(model::meta::kUnits, impactUnits(o.output));
     md.set("hits", static_cast<double>(res.used));
     md.set("hits_dropped", static_cast<double>(hits.size() - res.used));
-    md.set("fs_Hz", o.fsHz);
+    md.set(model::meta::kFsHz, o.fsHz);
     md.set("block_s", res.blockS);
     md.set("pre_trigger_s", res.preTriggerS);
     md.set("force_window_s", res.forceWindowS);
     md.set("exp_window_tau_s", o.expTauS);
-    md.set("exp_window_decay_1_s", sigma);
+    md.set(model::meta::kExpWindowDecay, sigma);
     md.set("force_band_Hz", res.forceBandHz);
     md.set("force_range_dB", o.forceRangeDb);
     md.set("fmin_Hz", fmin);

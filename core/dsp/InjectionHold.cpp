@@ -4,6 +4,8 @@
 // derivation in docs/frequency-response-sim.md, "Injection hold").
 #include "core/dsp/InjectionHold.h"
 
+#include "core/model/MetadataKeys.h"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -29,7 +31,7 @@ std::complex<double> injectionHoldFactor(double fHz, double currentPeriodS, int 
 
 bool isInjectionHoldCorrected(const FrequencyResponse& frf)
 {
-    const auto* v = frf.metadata.find("injection_hold_corrected");
+    const auto* v = frf.metadata.find(model::meta::kInjectionHoldCorrected);
     return v && v->text() == "true";
 }
 
@@ -49,9 +51,9 @@ Status correctInjectionHold(FrequencyResponse& frf, double currentPeriodS, int t
             frf.valid[i] = false;
         }
     }
-    frf.metadata.set("injection_hold_corrected", "true");
-    frf.metadata.set("injection_hold_period_s", currentPeriodS);
-    frf.metadata.set("injection_hold_ticks", static_cast<double>(ticksPerVelocity));
+    frf.metadata.set(model::meta::kInjectionHoldCorrected, "true");
+    frf.metadata.set(model::meta::kInjectionHoldPeriodS, currentPeriodS);
+    frf.metadata.set(model::meta::kInjectionHoldTicks, ticksPerVelocity);
     return Status::success();
 }
 

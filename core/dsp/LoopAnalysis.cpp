@@ -4,6 +4,8 @@
 // the closed-loop velocity FRF of spec/current-loop-and-multisweep-frf.md §3.2 (3.1).
 #include "core/dsp/LoopAnalysis.h"
 
+#include "core/model/MetadataKeys.h"
+
 #include <cmath>
 
 namespace axistune::dsp {
@@ -12,7 +14,7 @@ FrequencyResponse openLoopFromClosedLoop(const FrequencyResponse& m, LoopMeasure
 {
     FrequencyResponse l;
     l.metadata = m.metadata;
-    l.metadata.set("loop", "open-loop");
+    l.metadata.set(model::meta::kLoop, "open-loop");
     for (std::size_t i = 0; i < m.size(); ++i) {
         const std::complex<double> v = m.h[i];
         std::complex<double> den;

@@ -10,6 +10,7 @@
 
 #include "core/dsp/Fft.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -407,8 +408,8 @@ Result<MultisineAnalysis> analyzeMultisine(const MultisineDesign& d, std::span<c
         out.stats.excitationPhasor.push_back(std::abs(sx[i]) / pd);
     }
     auto& md = out.frf.metadata;
-    md.set("method", o.threePhase ? "multisine" : "multisine-single-phase");
-    md.set("fs_Hz", d.fsHz);
+    md.set(model::meta::kMethod, o.threePhase ? "multisine" : "multisine-single-phase");
+    md.set(model::meta::kFsHz, d.fsHz);
     md.set("lines", static_cast<double>(lines));
     md.set("spacing_Hz", d.spacingHz);
     md.set("window_samples", static_cast<double>(m));
@@ -416,7 +417,7 @@ Result<MultisineAnalysis> analyzeMultisine(const MultisineDesign& d, std::span<c
     md.set("crest_factor", d.crestFactor);
     md.set("phases", multisinePhasesName(d.phases));
     md.set("max_relative_noise", o.maxRelativeNoise);
-    md.set("noise_invalid_lines", static_cast<double>(out.stats.invalidNoise));
+    md.set(model::meta::kNoiseInvalidLines, out.stats.invalidNoise);
     if (!o.threePhase) {
         // A window of 1/Δf holds m + 1/3 periods of every line: the other lines and the
         // sum-frequency terms do not cancel, so no line of a single-phase analysis is a measurement.

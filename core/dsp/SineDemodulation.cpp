@@ -6,6 +6,7 @@
 #include "core/dsp/SineDemodulation.h"
 
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -131,10 +132,10 @@ Result<FrequencyResponse> sineStreamFrf(const SweepRecording& rec)
         (dy->multiSweep ? anyMulti : anyConventional) = true;
         frf.push(f, dy->phasor() / dx->phasor(), std::nan(""), dy->valid);
     }
-    frf.metadata.set("method", anyMulti && anyConventional ? "sine-stream-mixed"
-                               : anyMulti                  ? "multisweep"
-                                                           : "conventional");
-    frf.metadata.set("fs_Hz", rec.fsHz);
+    frf.metadata.set(model::meta::kMethod, anyMulti && anyConventional ? "sine-stream-mixed"
+                                           : anyMulti                  ? "multisweep"
+                                                                       : "conventional");
+    frf.metadata.set(model::meta::kFsHz, rec.fsHz);
     return frf;
 }
 

@@ -5,6 +5,7 @@
 #include "core/dsp/Welch.h"
 
 #include "core/dsp/Fft.h"
+#include "core/model/MetadataKeys.h"
 
 #include <cmath>
 #include <numbers>
@@ -134,7 +135,7 @@ FrequencyResponse frfFromSpectra(const CrossSpectra& s, FrfEstimator estimator)
             h = {0.0, 0.0};  // undefined; flagged invalid (kept finite so that files stay readable)
         frf.push(s.freqHz[k], h, coh, ok);
     }
-    frf.metadata.set("method", estimator == FrfEstimator::H1 ? "welch-h1" : "welch-h2");
+    frf.metadata.set(model::meta::kMethod, estimator == FrfEstimator::H1 ? "welch-h1" : "welch-h2");
     frf.metadata.set("segments", static_cast<double>(s.segments));
     return frf;
 }
@@ -153,7 +154,7 @@ Result<FrequencyResponse> welchFrf(std::span<const double> x, std::span<const do
                                                         ": the samples are too large (near the double range)");
     }
     auto frf = frfFromSpectra(s.value(), estimator);
-    frf.metadata.set("nperseg", static_cast<double>(options.nperseg));
+    frf.metadata.set(model::meta::kNperseg, options.nperseg);
     frf.metadata.set("noverlap", static_cast<double>(options.noverlap.value_or(options.nperseg / 2)));
     return frf;
 }

@@ -3,8 +3,9 @@
 #include "core/io/FrfCsv.h"
 
 #include "core/io/TextFile.h"
-#include "core/model/InputLimits.h"
 #include "core/model/Constants.h"
+#include "core/model/InputLimits.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
 
@@ -212,7 +213,7 @@ Result<dsp::FrequencyResponse> readFrfCsv(std::istream& in, const std::string& s
         return makeError(ErrorCode::BadInput, sourceName + ": no header line (expected " + kFrfCsvHeader + ")");
     if (frf.empty())
         return makeError(ErrorCode::BadInput, sourceName + ": no data rows");
-    if (const auto* u = frf.metadata.find("units")) {
+    if (const auto* u = frf.metadata.find(model::meta::kUnits)) {
         const std::string unit = u->text();
         if (auto st = convertFrfUnits(frf, unit, sourceName); !st)
             return st.error();
@@ -230,7 +231,7 @@ Status convertFrfUnits(dsp::FrequencyResponse& frf, const std::string& unit, con
     }
     for (auto& h : frf.h)
         h *= u->toSi;
-    frf.metadata.set("units", std::string(u->si));
+    frf.metadata.set(model::meta::kUnits, std::string(u->si));
     if (u->si != unit)
         frf.metadata.set("units_in_file", unit);
     return {};

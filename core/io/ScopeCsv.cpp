@@ -5,6 +5,7 @@
 #include "core/io/CaptureCsv.h"
 #include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <cmath>
@@ -44,12 +45,13 @@ Result<ScopeTable> readScopeCsv(std::istream& in, const std::string& sourceName)
     if (!cap)
         return cap.error();
     ScopeTable t;
-    auto fs = cap->metadata.number("fs_Hz");
+    auto fs = cap->metadata.number(model::meta::kFsHz);
     if (!fs)
         return makeError(ErrorCode::BadInput,
                          sourceName + ": metadata " + fs.error().detail + " (a scope CSV starts with '# fs_Hz=RATE')");
     if (!(std::isfinite(*fs) && *fs > 0.0))
-        return makeError(ErrorCode::BadInput, sourceName + ": metadata fs_Hz=" + *cap->metadata.text("fs_Hz") +
+        return makeError(ErrorCode::BadInput, sourceName +
+                                                  ": metadata fs_Hz=" + *cap->metadata.text(model::meta::kFsHz) +
                                                   " must be a positive sample rate");
     t.fsHz = *fs;
     const model::Channel* sample = cap->channel("sample");

@@ -5,6 +5,7 @@
 #include "core/io/FrfCsv.h"
 #include "core/io/TextFile.h"
 #include "core/model/InputLimits.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <charconv>
@@ -106,12 +107,12 @@ Result<dsp::SweepRecording> readSweepCsv(std::istream& in, const std::string& sr
         return makeError(ErrorCode::BadInput, src + ": no header line (expected " + kSweepCsvHeader + ")");
     if (rec.blocks.empty())
         return makeError(ErrorCode::BadInput, src + ": no data rows");
-    const auto fs = rec.metadata.number("fs_Hz");
+    const auto fs = rec.metadata.number(model::meta::kFsHz);
     if (!fs)
         return makeError(ErrorCode::BadInput, src + ": " + fs.error().detail);
     if (!(*fs > 0.0) || model::isDenormal(*fs))
-        return makeError(ErrorCode::BadInput,
-                         src + ": metadata 'fs_Hz' is not a positive number ('" + *rec.metadata.text("fs_Hz") + "')");
+        return makeError(ErrorCode::BadInput, src + ": metadata 'fs_Hz' is not a positive number ('" +
+                                                  *rec.metadata.text(model::meta::kFsHz) + "')");
     rec.fsHz = *fs;
     const auto amplitude = rec.metadata.optionalNumber("amplitude");
     if (!amplitude)
@@ -135,7 +136,7 @@ Status writeSweepCsv(std::ostream& out, const dsp::SweepRecording& rec)
     out << "# fs_Hz=" << formatDouble(rec.fsHz) << '\n';
     out << "# amplitude=" << formatDouble(rec.amplitude) << '\n';
     for (const auto& [k, v] : rec.metadata) {
-        if (k != "fs_Hz" && k != "amplitude")
+        if (k != model::meta::kFsHz.name && k != "amplitude")
             out << "# " << k << '=' << v.text() << '\n';
     }
     out << kSweepCsvHeader << '\n';

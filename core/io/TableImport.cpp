@@ -6,6 +6,7 @@
 #include "core/io/TextFile.h"
 #include "core/io/Uff58.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Units.h"
 
 #include <charconv>
@@ -232,7 +233,7 @@ Result<model::Capture> readTable(std::istream& in, const std::string& sourceName
         return makeError(ErrorCode::BadInput, sourceName + ": the header has no data rows");
     cap.metadata.set("separator", separatorName(sep));
     cap.metadata.set("decimal", decimalComma.value_or(false) ? "comma" : "point");
-    cap.metadata.set("first_data_line", static_cast<double>(firstDataLine));
+    cap.metadata.set(model::meta::kFirstDataLine, firstDataLine);
     return cap;
 }
 
@@ -303,10 +304,10 @@ Result<model::Capture> readHalscope(std::istream& in, const std::string& sourceN
         return makeError(ErrorCode::BadInput, sourceName + ": empty file");
     if (cap.size() == 0)
         return makeError(ErrorCode::BadInput, sourceName + ": no samples after the 'Sampling period' line");
-    cap.metadata.set("fs_Hz", 1e9 / periodNs);
+    cap.metadata.set(model::meta::kFsHz, 1e9 / periodNs);
     cap.metadata.set("sample_period_ns", periodNs);
     cap.metadata.set("format", "halscope");
-    cap.metadata.set("first_data_line", static_cast<double>(firstDataLine));
+    cap.metadata.set(model::meta::kFirstDataLine, firstDataLine);
     return cap;
 }
 
@@ -409,8 +410,8 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
     for (const char* k : {"separator", "decimal", "first_data_line"})
         frf.metadata.erase(k);
     std::size_t first = 0;
-    if (table.metadata.contains("first_data_line")) {
-        const auto line = table.metadata.integer("first_data_line");
+    if (table.metadata.contains(model::meta::kFirstDataLine)) {
+        const auto line = table.metadata.integer(model::meta::kFirstDataLine);
         if (!line)
             return makeError(ErrorCode::BadInput, sourceName + ": " + line.error().detail);
         first = static_cast<std::size_t>(*line);
@@ -436,7 +437,7 @@ Result<dsp::FrequencyResponse> frfFromTable(const model::Capture& table, const s
     frf.metadata.set("column", name.empty() ? "re/im" : name);
     std::string units = options.units;
     if (units.empty()) {
-        if (const auto* u = table.metadata.find("units"))
+        if (const auto* u = table.metadata.find(model::meta::kUnits))
             units = u->text();
     }
     if (!units.empty()) {

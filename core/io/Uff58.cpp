@@ -4,6 +4,7 @@
 
 #include "core/io/FrfCsv.h"
 #include "core/io/TextFile.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
 
@@ -382,10 +383,10 @@ Result<dsp::FrequencyResponse> frfFromUff(const Uff58Record& rec, const std::str
     };
     const std::string n = siToken(num), d = siToken(den);
     if (!n.empty() && !d.empty())
-        frf.metadata.set("units", n + "/" + d);
+        frf.metadata.set(model::meta::kUnits, n + "/" + d);
     if (assumed)
         frf.metadata.set("units_assumed", "SI");
-    frf.metadata.set("source_format", "uff58");
+    frf.metadata.set(model::meta::kSourceFormat, "uff58");
     frf.metadata.setFromText("uff_id1", rec.idLines.empty() ? "" : rec.idLines[0]);
     frf.metadata.set("uff_response", std::to_string(rec.responseNode) + ":" + std::to_string(rec.responseDirection));
     frf.metadata.set("uff_reference", std::to_string(rec.referenceNode) + ":" + std::to_string(rec.referenceDirection));
@@ -431,8 +432,8 @@ Result<model::Capture> captureFromUff(const std::vector<Uff58Record>& records, c
     }
     if (!first)
         return makeError(ErrorCode::BadInput, sourceName + ": no time-response record (dataset 58 function type 1)");
-    cap.metadata.set("fs_Hz", 1.0 / first->xStep);
-    cap.metadata.set("source_format", "uff58");
+    cap.metadata.set(model::meta::kFsHz, 1.0 / first->xStep);
+    cap.metadata.set(model::meta::kSourceFormat, "uff58");
     return cap;
 }
 

@@ -2,6 +2,7 @@
 // Exponential-window damping removed from fitted modes (core/machining/ExponentialWindow.h).
 #include "core/machining/ExponentialWindow.h"
 
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/Units.h"
 
@@ -28,12 +29,12 @@ Result<ModalParameters> removeExponentialWindow(const ModalParameters& w, double
 
 Result<double> exponentialWindowDecay(const dsp::FrequencyResponse& frf)
 {
-    const auto v = frf.metadata.optionalNumber("exp_window_decay_1_s");
+    const auto v = frf.metadata.optionalNumber(model::meta::kExpWindowDecay);
     if (!v)
         return v.error();
     if (!(v->value_or(0.0) >= 0.0))
         return makeError(ErrorCode::BadInput, "metadata 'exp_window_decay_1_s' must be >= 0 ('" +
-                                                  *frf.metadata.text("exp_window_decay_1_s") + "')");
+                                                  *frf.metadata.text(model::meta::kExpWindowDecay) + "')");
     return v->value_or(0.0);
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/Metadata.h"
 
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <cmath>
@@ -116,12 +117,12 @@ Result<long long> Metadata::integer(std::string_view key) const
 
 Result<std::optional<double>> Metadata::samplePeriodS() const
 {
-    auto fs = optionalNumber("fs_Hz");
+    auto fs = optionalNumber(meta::kFsHz);
     if (!fs || !fs->has_value())
         return fs;
     if (!(**fs > 0.0))
         return makeError(ErrorCode::BadInput,
-                         "metadata 'fs_Hz' is not a positive number ('" + textOr("fs_Hz", "") + "')");
+                         "metadata 'fs_Hz' is not a positive number ('" + textOr(meta::kFsHz, "") + "')");
     return std::optional<double>{1.0 / **fs};
 }
 

@@ -55,6 +55,17 @@ private:
     std::variant<std::string, double> m_value;
 };
 
+/// A metadata key with the kind of value it holds. The keys that more than one place writes or reads are constants
+/// in core/model/MetadataKeys.h (model::meta), so a writer and a reader cannot disagree on the name or on whether the
+/// value is a number: Metadata's overloads for a typed key take and give only its kind (a number key cannot be set
+/// to a text, a text key cannot be read as a number). Keys that are data (a file's own, "unit.CHANNEL") stay names.
+template <class T> struct MetadataKey {
+    std::string_view name;
+};
+using NumberKey = MetadataKey<double>;     ///< a finite number
+using IntegerKey = MetadataKey<long long>; ///< a whole number
+using TextKey = MetadataKey<std::string>;  ///< a text
+
 /// The metadata of one capture or FRF, ordered by key.
 class Metadata {
 public:
@@ -70,6 +81,33 @@ public:
     void setFromText(std::string_view key, std::string text);
     bool erase(std::string_view key);
     void clear() { m_entries.clear(); }
+
+    /// Typed keys (model::meta): the value is a number, a whole number or a text, as the key says.
+    void set(NumberKey key, double value) { set(key.name, MetadataValue(value)); }
+    /// Up to 2^53 in magnitude the number itself, beyond that its digits (a double would round it); either is
+    /// written as the digits.
+    template <std::integral I>
+    requires(!std::same_as<I, bool>) void set(IntegerKey key, I value)
+    {
+        constexpr long double kExact = 9007199254740992.0L; // 2^53
+        if (static_cast<long double>(value) <= kExact && static_cast<long double>(value) >= -kExact)
+            set(key.name, MetadataValue(static_cast<double>(value)));
+        else
+            set(key.name, MetadataValue(std::to_string(value))); // integers: no locale in std::to_string
+    }
+    void set(TextKey key, std::string value) { set(key.name, MetadataValue(std::move(value))); }
+    template <class T> bool erase(MetadataKey<T> key) { return erase(key.name); }
+    template <class T> bool contains(MetadataKey<T> key) const { return contains(key.name); }
+    template <class T> const MetadataValue* find(MetadataKey<T> key) const { return find(key.name); }
+    /// The text a file holds, of any kind of key (a number in its written form, for messages and echoes).
+    template <class T> std::optional<std::string> text(MetadataKey<T> key) const { return text(key.name); }
+    template <class T> std::string textOr(MetadataKey<T> key, std::string_view fallback) const
+    {
+        return textOr(key.name, fallback);
+    }
+    Result<double> number(NumberKey key) const { return number(key.name); }
+    Result<std::optional<double>> optionalNumber(NumberKey key) const { return optionalNumber(key.name); }
+    Result<long long> integer(IntegerKey key) const { return integer(key.name); }
 
     bool contains(std::string_view key) const { return m_entries.find(key) != m_entries.end(); }
     /// The value of `key`, nullptr when missing.

@@ -6,6 +6,7 @@
 
 #include "core/model/Constants.h"
 #include "core/model/Metadata.h"
+#include "core/model/MetadataKeys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -538,13 +539,12 @@ model::Capture AxisSimulator::takeTrace()
     model::Capture cap;
     const bool currentRate = m_traceRate == TraceRate::Current;
     const auto names = currentRate ? currentTraceChannelNames() : traceChannelNames();
-    cap.metadata.set("fs_Hz", 1.0 / (currentRate ? m_hCurrent : tracePeriod()));
-    cap.metadata.set("axis", m_def.name);
-    cap.metadata.set("current_period_s", m_hCurrent);
-    cap.metadata.set("velocity_period_s", velocityPeriod());
-    // A number while a double holds it exactly; larger seeds stay their exact digits.
-    cap.metadata.set("seed", m_seed <= (std::uint64_t{1} << 53) ? model::MetadataValue(static_cast<double>(m_seed))
-                                                                : model::MetadataValue(std::to_string(m_seed)));
+    cap.metadata.set(model::meta::kFsHz, 1.0 / (currentRate ? m_hCurrent : tracePeriod()));
+    cap.metadata.set(model::meta::kAxis, m_def.name);
+    cap.metadata.set(model::meta::kCurrentPeriodS, m_hCurrent);
+    cap.metadata.set(model::meta::kVelocityPeriodS, velocityPeriod());
+    // A number while a double holds it exactly; larger seeds stay their exact digits (Metadata::set of an IntegerKey).
+    cap.metadata.set(model::meta::kSeed, m_seed);
     for (std::size_t c = 0; c < names.size() && c < m_trace.size(); ++c)
         cap.channels.push_back({names[c], std::move(m_trace[c])});
     m_trace.clear();

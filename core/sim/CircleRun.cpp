@@ -7,6 +7,7 @@
 
 #include "core/model/CircleDirectionName.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/sim/AxisSimulator.h"
 
@@ -163,18 +164,18 @@ model::Capture CircleRun::trace() const
 {
     const CircleTestOptions& o = m_path.options();
     model::Capture cap;
-    cap.metadata = {{"test", "circle"},
-                    {"axis_x", o.axisX},
+    cap.metadata = {{"axis_x", o.axisX},
                     {"axis_y", o.axisY},
-                    {"radius_m", o.radiusM},
                     {"feed_m_per_s", o.feedMPerS},
-                    {"direction", model::circleDirectionName(o.direction)},
                     {"center_x_m", o.centerXM},
                     {"center_y_m", o.centerYM},
                     {"data_start_deg", o.dataStartDeg},
                     {"lead_arc_deg", o.leadArcDeg},
-                    {"dwell_s", o.dwellS},
-                    {"fs_Hz", 1.0 / m_tp}};
+                    {"dwell_s", o.dwellS}};
+    cap.metadata.set(model::meta::kTest, "circle");
+    cap.metadata.set(model::meta::kRadiusM, o.radiusM);
+    cap.metadata.set(model::meta::kDirection, model::circleDirectionName(o.direction));
+    cap.metadata.set(model::meta::kFsHz, 1.0 / m_tp);
     cap.channels = {{"t_s", m_t},
                     {"arc_rad", m_s},
                     {circleChannel(o.axisX, "position_cmd_m"), m_cx},
@@ -192,20 +193,20 @@ Result<CircleTestOptions> circleOptionsFromTrace(const model::Capture& trace)
 {
     auto bad = [](const std::string& m) { return makeError(ErrorCode::BadInput, "circle trace: " + m); };
     const auto& md = trace.metadata;
-    auto text = [&](const char* key) -> Result<std::string> {
+    auto text = [&](std::string_view key) -> Result<std::string> {
         auto v = md.text(key);
         if (!v || v->empty())
-            return bad(std::string("metadata '") + key + "' is missing");
+            return bad("metadata '" + std::string(key) + "' is missing");
         return *v;
     };
     auto number = [&](const char* key) -> Result<double> {
         auto v = md.number(key);
         return v ? v : bad(v.error().detail);
     };
-    if (auto t = text("test"); !t || *t != "circle")
+    if (auto t = text(model::meta::kTest.name); !t || *t != "circle")
         return bad("not the trace of a circle test (metadata test=circle missing)");
     CircleTestOptions o;
-    auto ax = text("axis_x"), ay = text("axis_y"), dir = text("direction");
+    auto ax = text("axis_x"), ay = text("axis_y"), dir = text(model::meta::kDirection.name);
     for (const auto* r : {&ax, &ay, &dir}) {
         if (!*r)
             return r->error();
@@ -216,9 +217,12 @@ Result<CircleTestOptions> circleOptionsFromTrace(const model::Capture& trace)
     if (!direction)
         return bad("metadata 'direction' must be ccw or cw (is '" + *dir + "')");
     o.direction = *direction;
-    const std::pair<const char*, double*> nums[] = {{"radius_m", &o.radiusM},       {"feed_m_per_s", &o.feedMPerS},
-                                                    {"center_x_m", &o.centerXM},    {"center_y_m", &o.centerYM},
-                                                    {"data_start_deg", &o.dataStartDeg}, {"lead_arc_deg", &o.leadArcDeg},
+    const std::pair<const char*, double*> nums[] = {{model::meta::kRadiusM.name.data(), &o.radiusM},
+                                                    {"feed_m_per_s", &o.feedMPerS},
+                                                    {"center_x_m", &o.centerXM},
+                                                    {"center_y_m", &o.centerYM},
+                                                    {"data_start_deg", &o.dataStartDeg},
+                                                    {"lead_arc_deg", &o.leadArcDeg},
                                                     {"dwell_s", &o.dwellS}};
     for (const auto& [key, target] : nums) {
         auto v = number(key);

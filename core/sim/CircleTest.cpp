@@ -8,6 +8,7 @@
 
 #include "core/model/Constants.h"
 #include "core/model/Metadata.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/sim/AxisSimulator.h"
 #include "core/sim/CircleRun.h"
@@ -141,9 +142,9 @@ Result<CircleTestResult> evaluateCircleTrace(const model::Capture& trace, const 
         bb.dTxNm = res.dTxNm;
     if (std::isfinite(res.dTyNm))
         bb.dTyNm = res.dTyNm;
-    if (const auto* v = trace.metadata.find("machine")) {
+    if (const auto* v = trace.metadata.find(model::meta::kMachine)) {
         bb.source = v->text();
-        bb.metadata.set("source", *v);
+        bb.metadata.set(model::meta::kSource, v->text());
     }
     return res;
 }
@@ -195,13 +196,12 @@ Result<CircleTestResult> runCircleTest(const MachineDefinition& machine, const C
     CircleTestResult res = std::move(evaluated).value();
     model::BallBarTrace& bb = res.ballbar;
     bb.source = "sim:" + machine.name;
-    bb.metadata.set("source", bb.source);
+    bb.metadata.set(model::meta::kSource, bb.source);
     bb.metadata.set("squareness_um_per_m", o.squarenessPerM * 1e6);
     bb.metadata.set("scale_x_ppm", o.scaleX * 1e6);
     bb.metadata.set("scale_y_ppm", o.scaleY * 1e6);
-    // A number while a double holds it exactly; larger seeds stay their exact digits.
-    bb.metadata.set("seed", o.seed <= (std::uint64_t{1} << 53) ? model::MetadataValue(static_cast<double>(o.seed))
-                                                               : model::MetadataValue(std::to_string(o.seed)));
+    // A number while a double holds it exactly; larger seeds stay their exact digits (Metadata::set of an IntegerKey).
+    bb.metadata.set(model::meta::kSeed, o.seed);
     res.traceX = ax.takeTrace();
     res.traceY = ay.takeTrace();
     return res;

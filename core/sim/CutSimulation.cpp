@@ -3,6 +3,7 @@
 // signals in the trace (CutSimulation.h; spec/chatter-stability-and-spindle-speed.md for the process).
 #include "core/sim/CutSimulation.h"
 
+#include "core/model/MetadataKeys.h"
 #include "core/sim/AxisSimulator.h"
 
 #include <algorithm>
@@ -130,11 +131,11 @@ Result<model::Capture> simulateCut(const AxisDefinition& axisDef, const CutSimul
         extra.push_back(sampled(o.probeChannels[i], rec->probes[i]));
     for (auto& c : extra)
         cap.channels.push_back(std::move(c));
-    cap.metadata.set("spindle_command_limited", static_cast<double>(process->commandLimitCount()));
-    cap.metadata.set("test", "simulate-cut");
+    cap.metadata.set(model::meta::kSpindleCommandLimited, process->commandLimitCount());
+    cap.metadata.set(model::meta::kTest, "simulate-cut");
     cap.metadata.set("teeth", static_cast<double>(ms.teeth));
     cap.metadata.set("lost_motion", o.lostMotion ? "on" : "off");
-    cap.metadata.set("cutting_force_sign", "force of the process on the table along +axis");
+    cap.metadata.set(model::meta::kCuttingForceSign, "force of the process on the table along +axis");
     return cap;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/store/FrfCapture.h"
 
+#include "core/model/MetadataKeys.h"
+
 #include <cmath>
 #include <utility>
 
@@ -10,7 +12,7 @@ model::Capture frfAsCapture(const dsp::FrequencyResponse& frf)
 {
     model::Capture c;
     c.metadata = frf.metadata;
-    c.metadata.set("content", "frf");
+    c.metadata.set(model::meta::kContent, "frf");
     std::vector<model::Channel> ch = {{"f_Hz", frf.freqHz}, {"re", {}}, {"im", {}}, {"mag_dB", {}},
                                       {"phase_deg", {}}, {"coherence", frf.coherence}, {"valid", {}}};
     for (std::size_t i = 0; i < frf.size(); ++i) {
@@ -27,7 +29,7 @@ model::Capture frfAsCapture(const dsp::FrequencyResponse& frf)
 
 bool isFrfCapture(const model::Capture& capture)
 {
-    const auto* content = capture.metadata.find("content");
+    const auto* content = capture.metadata.find(model::meta::kContent);
     return content && *content == "frf";
 }
 
@@ -47,7 +49,7 @@ Result<dsp::FrequencyResponse> frfFromCapture(const model::Capture& capture)
         return makeError(ErrorCode::BadInput, "stored frequency response: channels of different lengths");
     dsp::FrequencyResponse frf;
     frf.metadata = capture.metadata;
-    frf.metadata.erase("content");
+    frf.metadata.erase(model::meta::kContent);
     for (std::size_t i = 0; i < n; ++i)
         frf.push(f->data[i], {re->data[i], im->data[i]}, coh ? coh->data[i] : std::nan(""),
                  valid ? valid->data[i] != 0.0 : true);

@@ -4,6 +4,8 @@
 // §4.4 (Wizard D: centre = peak, width from the −3 dB width, predicted FRF = measured loop × filter).
 // Depth/width rule: Notch.h and docs/notch.md.
 #include "core/tuning/Notch.h"
+
+#include "core/model/MetadataKeys.h"
 #include "core/model/Units.h"
 
 #include <algorithm>
@@ -109,7 +111,7 @@ dsp::FrequencyResponse measuredFormOf(const dsp::FrequencyResponse& l, const Loo
         return l;
     dsp::FrequencyResponse m;
     m.metadata = l.metadata;
-    m.metadata.erase("loop");
+    m.metadata.erase(model::meta::kLoop);
     for (std::size_t i = 0; i < l.size(); ++i) {
         const std::complex<double> v = l.h[i];
         const std::complex<double> den = 1.0 + v;

@@ -8,6 +8,7 @@
 #include "core/dsp/InjectionHold.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 
 #include <algorithm>
 #include <array>
@@ -30,7 +31,7 @@ Result<dsp::FrequencyResponse> plantFromVelocityLoop(const dsp::FrequencyRespons
         return makeError(ErrorCode::BadInput, "velocity PI: K_P and K_I must be >= 0 and not both 0");
     if (!(velocityPeriodS > 0.0) || !(currentPeriodS > 0.0))
         return makeError(ErrorCode::BadInput, "velocity and current periods must be > 0");
-    if (const auto* v = t.metadata.find("measurement"); v && v->text() != "complementary")
+    if (const auto* v = t.metadata.find(model::meta::kMeasurement); v && v->text() != "complementary")
         return makeError(ErrorCode::BadInput,
                          "the FRF is not a closed velocity loop T = PC/(1+PC) (measurement=" + v->text() + ")");
     const double ratio = velocityPeriodS / currentPeriodS;
@@ -44,7 +45,7 @@ Result<dsp::FrequencyResponse> plantFromVelocityLoop(const dsp::FrequencyRespons
     }
     auto p = dsp::openLoopFromClosedLoop(corrected, dsp::LoopMeasurement::Complementary);
     divideByVelocityPi(p, pi, velocityPeriodS);
-    p.metadata.set("loop", "plant-from-complementary");
+    p.metadata.set(model::meta::kLoop, "plant-from-complementary");
     return p;
 }
 

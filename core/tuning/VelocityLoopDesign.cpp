@@ -5,6 +5,7 @@
 #include "core/dsp/InjectionHold.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/tuning/TwoInertiaPrediction.h"
 
@@ -58,7 +59,7 @@ Result<LoopMeasurementKind> parseLoopMeasurement(std::string_view name)
 
 Result<LoopMeasurementKind> loopMeasurementOf(const dsp::FrequencyResponse& frf, LoopMeasurementKind absent)
 {
-    const auto name = frf.metadata.text("measurement");
+    const auto name = frf.metadata.text(model::meta::kMeasurement);
     if (!name)
         return absent;
     return parseLoopMeasurement(*name);
@@ -105,8 +106,8 @@ Result<dsp::FrequencyResponse> plantFromMeasurement(const dsp::FrequencyResponse
         return form.error();
     auto p = openLoopOf(measured, *form);
     divideByVelocityPi(p, running, velocityPeriodS);
-    p.metadata.set("measurement", "plant");
-    p.metadata.set("loop", "plant-from-" + std::string(loopMeasurementName(kind)));
+    p.metadata.set(model::meta::kMeasurement, "plant");
+    p.metadata.set(model::meta::kLoop, "plant-from-" + std::string(loopMeasurementName(kind)));
     return p;
 }
 

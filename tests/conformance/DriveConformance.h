@@ -15,6 +15,7 @@
 #include "core/device/Drive.h"
 #include "core/device/DriveRegistry.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/MetadataKeys.h"
 
 #include <chrono>
 #include <cmath>
@@ -483,7 +484,7 @@ TEST_P(DriveConformance, EveryAdvertisedTestRunsToCompletionAsPlanned)
             EXPECT_FALSE(frf->frf.freqHz.empty());
             reported = frf->motionTimeS;
         } else {
-            reported = trace->metadata.number(kMotionTimeMetadataKey).value();
+            reported = trace->metadata.number(model::meta::kMotionTimeS).value();
         }
         EXPECT_NEAR(reported, plan->motionTimeS, tick + 1e-12) << "plan " << plan->motionTimeS << " s";
     }

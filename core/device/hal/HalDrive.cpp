@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/device/hal/HalDrive.h"
 
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/sim/MotionProfile.h"
 
@@ -189,19 +190,19 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     FrfMeasurement out = std::move(measured).value();
     out.motionTimeS = static_cast<double>(n) / plan.fsHz;
     auto& md = out.frf.metadata;
-    md.set("method", frfMethodName(plan.method));
-    md.set("fs_Hz", plan.fsHz);
-    md.set("quantity", openLoop ? "open-loop" : "plant");
-    md.set("input", "drive_input"); // <pid>.output + injection: what the drive receives
-    md.set("output", openLoop ? "-pid_output" : "feedback");
-    md.set("hal_units",
+    md.set(model::meta::kMethod, frfMethodName(plan.method));
+    md.set(model::meta::kFsHz, plan.fsHz);
+    md.set(model::meta::kQuantity, openLoop ? "open-loop" : "plant");
+    md.set(model::meta::kInput, "drive_input"); // <pid>.output + injection: what the drive receives
+    md.set(model::meta::kOutput, openLoop ? "-pid_output" : "feedback");
+    md.set(model::meta::kHalUnits,
            openLoop ? "none (PID output per PID output)" : "feedback per PID-output unit (the configuration's units)");
-    md.set("pid", plan.axis.pid);
-    md.set("thread", plan.axis.thread);
+    md.set(model::meta::kPid, plan.axis.pid);
+    md.set(model::meta::kThread, plan.axis.thread);
     md.set("servo_period_ns", static_cast<double>(plan.axis.periodNs));
-    md.set("amplitude_peak", plan.peak());
+    md.set(model::meta::kAmplitudePeak, plan.peak());
     md.set("first_sample", static_cast<double>(record.firstSample));
-    md.set("motion_time_s", out.motionTimeS);
+    md.set(model::meta::kMotionTimeS, out.motionTimeS);
     return out;
 }
 
@@ -229,8 +230,8 @@ Result<FrfMeasurement> evaluateHalMultisine(const HalFrfPlan& plan, const HalRec
     out.relativeNoise = std::move(a->stats.relativeNoise);
     auto& md = out.frf.metadata;
     md.set("amplitude_rms", plan.design.rms);
-    md.set("settle_s", static_cast<double>(skip) / plan.fsHz);
-    md.set("period_s", static_cast<double>(plan.design.periodSamples()) / plan.fsHz);
+    md.set(model::meta::kSettleS, static_cast<double>(skip) / plan.fsHz);
+    md.set(model::meta::kPeriodS, static_cast<double>(plan.design.periodSamples()) / plan.fsHz);
     return out;
 }
 } // namespace
@@ -717,26 +718,26 @@ Result<model::Capture> HalDrive::readTrace()
     }
     auto& md = c.metadata;
     if (m_plan) {
-        md.set("test", "frf");
-        md.set("method", frfMethodName(m_plan->method));
-        md.set("amplitude_peak", m_plan->peak());
+        md.set(model::meta::kTest, "frf");
+        md.set(model::meta::kMethod, frfMethodName(m_plan->method));
+        md.set(model::meta::kAmplitudePeak, m_plan->peak());
     } else if (m_move->type == TestType::Step) {
-        md.set("test", "step");
+        md.set(model::meta::kTest, "step");
         md.set("step", m_move->distance); // a position step of the command, in its units
         md.set("step_sample", static_cast<double>(m_move->stepAt));
         md.set("step_back_sample", static_cast<double>(m_move->backAt));
     } else {
-        md.set("test", "jog");
+        md.set(model::meta::kTest, "jog");
         md.set("distance", m_move->distance);
         md.set("velocity", m_move->velocity);
         md.set("moved_by", m_move->external ? "LinuxCNC's motion (a joint jog through NML)"
                                             : "AxisTune's offset to the pid's command");
     }
-    md.set("axis", axis.pid);
-    md.set("fs_Hz", fsHz);
-    md.set("hal_units", "the configuration's (PID output and position units)");
-    md.set("thread", axis.thread);
-    md.set(kMotionTimeMetadataKey, static_cast<double>(n) / fsHz);
+    md.set(model::meta::kAxis, axis.pid);
+    md.set(model::meta::kFsHz, fsHz);
+    md.set(model::meta::kHalUnits, "the configuration's (PID output and position units)");
+    md.set(model::meta::kThread, axis.thread);
+    md.set(model::meta::kMotionTimeS, static_cast<double>(n) / fsHz);
     return c;
 }
 

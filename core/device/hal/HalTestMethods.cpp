@@ -4,6 +4,7 @@
 // and the host evaluation use); the jog out and back and the position step, both an offset added to the pid's
 // command; the plan of a jog someone else makes (planExternalJog).
 #include "core/device/hal/HalDrive.h"
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/sim/MotionProfile.h"
 
@@ -114,12 +115,12 @@ Result<FrfMeasurement> evaluateHalStreams(const HalFrfPlan& plan, const HalRecor
         return evaluated.error();
     FrfMeasurement out = std::move(evaluated).value();
     auto& md = out.frf.metadata;
-    md.set("settle_s", plan.streams->timing.settleS);
-    md.set("min_measure_s", plan.streams->timing.minMeasureS);
+    md.set(model::meta::kSettleS, plan.streams->timing.settleS);
+    md.set(model::meta::kMinMeasureS, plan.streams->timing.minMeasureS);
     if (plan.method == FrfMethod::MultiSweep) {
-        md.set("settle_periods", plan.streams->timing.settlePeriods);
-        out.sweep.metadata.set("fs_Hz", plan.fsHz);
-        out.sweep.metadata.set("quantity", openLoop ? "open-loop" : "plant");
+        md.set(model::meta::kSettlePeriods, plan.streams->timing.settlePeriods);
+        out.sweep.metadata.set(model::meta::kFsHz, plan.fsHz);
+        out.sweep.metadata.set(model::meta::kQuantity, openLoop ? "open-loop" : "plant");
     }
     return out;
 }

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/device/hal/LinuxCncDrive.h"
 
+#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
-
 #include "core/sim/MotionProfile.h"
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <thread>
@@ -284,10 +284,10 @@ Result<model::Capture> LinuxCncDrive::readTrace()
     if (!read)
         return read;
     auto c = std::move(read).value();
-    const auto* pid = c.metadata.find("axis");
-    c.metadata.set("pid", pid ? *pid : model::MetadataValue(""));
-    c.metadata.set("axis", m_lastAxis);
-    c.metadata.set("ini", m_config.ini.path);
+    const auto* pid = c.metadata.find(model::meta::kAxis);
+    c.metadata.set(model::meta::kPid, pid ? pid->text() : std::string());
+    c.metadata.set(model::meta::kAxis, m_lastAxis);
+    c.metadata.set(model::meta::kIni, m_config.ini.path);
     return c;
 }
 
@@ -302,8 +302,8 @@ Result<FrfMeasurement> LinuxCncDrive::readFrequencyResponse()
     if (!read)
         return read;
     auto m = std::move(read).value();
-    m.frf.metadata.set("axis", m_lastAxis);
-    m.frf.metadata.set("ini", m_config.ini.path);
+    m.frf.metadata.set(model::meta::kAxis, m_lastAxis);
+    m.frf.metadata.set(model::meta::kIni, m_config.ini.path);
     if (const IniEntry* u = m_config.ini.find("TRAJ", "LINEAR_UNITS"))
         m.frf.metadata.set("linear_units", u->value);
     return m;

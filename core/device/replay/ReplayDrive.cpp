@@ -4,6 +4,7 @@
 
 #include "core/device/DriveRegistry.h"
 #include "core/io/CaptureCsv.h"
+#include "core/model/MetadataKeys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,24 +57,24 @@ Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
     d->m_path = path;
     d->m_capture = std::move(cap).value();
     const auto& md = d->m_capture.metadata;
-    auto need = [&](const char* key) -> Result<std::string> {
+    auto need = [&](model::TextKey key) -> Result<std::string> {
         auto text = md.text(key);
         if (!text || text->empty())
-            return makeError(ErrorCode::BadInput, path + ": metadata '" + key +
+            return makeError(ErrorCode::BadInput, path + ": metadata '" + std::string(key.name) +
                                                       "' is missing: a replayed capture needs "
                                                       "test, axis and fs_Hz");
         return std::move(*text);
     };
-    auto test = need("test");
+    auto test = need(model::meta::kTest);
     if (!test)
         return test.error();
     auto type = recordedTest(*test);
     if (!type)
         return makeError(ErrorCode::BadInput, path + ": " + type.error().detail);
-    auto axis = need("axis");
+    auto axis = need(model::meta::kAxis);
     if (!axis)
         return axis.error();
-    auto fs = md.number("fs_Hz");
+    auto fs = md.number(model::meta::kFsHz);
     if (!fs || !(*fs > 0.0)) // number(): finite only
         return makeError(ErrorCode::BadInput, path + ": metadata 'fs_Hz' must be a positive number");
     if (d->m_capture.size() < 2)
@@ -81,12 +82,12 @@ Result<std::unique_ptr<ReplayDrive>> ReplayDrive::open(const std::string& path)
     d->m_test = *type;
     d->m_axis = *axis;
     d->m_fsHz = *fs;
-    auto motion = md.optionalNumber(kMotionTimeMetadataKey);
+    auto motion = md.optionalNumber(model::meta::kMotionTimeS);
     if (!motion)
         return makeError(ErrorCode::BadInput, path + ": " + motion.error().detail);
     d->m_motionS = motion->has_value() ? **motion : d->recordS();
     if (!(d->m_motionS > 0.0) || !std::isfinite(d->m_motionS))
-        return makeError(ErrorCode::BadInput, path + ": metadata '" + std::string(kMotionTimeMetadataKey) +
+        return makeError(ErrorCode::BadInput, path + ": metadata '" + std::string(model::meta::kMotionTimeS.name) +
                                                   "' must be a positive number of seconds");
     return d;
 }
@@ -117,7 +118,7 @@ Status ReplayDrive::checkRequest(const TestRequest& request) const
 Result<DriveIdentity> ReplayDrive::identify()
 {
     return DriveIdentity{
-        "AxisTune", "replay", AXISTUNE_VERSION, m_capture.metadata.textOr("machine", m_path), {m_axis}};
+        "AxisTune", "replay", AXISTUNE_VERSION, m_capture.metadata.textOr(model::meta::kMachine, m_path), {m_axis}};
 }
 
 Result<std::vector<model::ParameterMeta>> ReplayDrive::parameterMetadata(const std::string& axis)
@@ -202,7 +203,7 @@ Result<model::Capture> ReplayDrive::readTrace()
     if (!m_haveTrace)
         return makeError(ErrorCode::NotFound, "no trace: no replayed test has completed");
     model::Capture c = m_capture;
-    c.metadata.set("connection", kScheme + m_path);
+    c.metadata.set(model::meta::kConnection, kScheme + m_path);
     return c;
 }
 
