@@ -440,6 +440,9 @@ TEST_F(GuiOnHal, VelocityWizardTunesThePositionPidAndUndoes)
     ASSERT_TRUE(saved.ok());
     EXPECT_EQ(saved->info.kind, "pid-tune");
     EXPECT_EQ(saved->captures.size(), 3u);
+    // Measured and predicted loops name their quantity alike (the backends' "open-loop"; the page wrote "open_loop").
+    for (const auto& c : saved->captures)
+        EXPECT_EQ(c.capture.metadata.textOr("quantity", ""), "open-loop") << c.name;
     ASSERT_TRUE(saved->result("pid-tune"));
     EXPECT_TRUE(saved->result("pid-tune")->at("applied").get<bool>());
     // Its journal: each gain from the value before the tune to the one HAL holds now, then the notch inserted.
