@@ -156,7 +156,7 @@
 <context>
     <name>CurrentLoopWizard</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="44" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="45" />
         <source>overshoot %1 %, 10–90 % rise time %2 µs</source>
         <translation>オーバーシュート %1 %、10–90 % 立ち上がり時間 %2 µs</translation>
     </message>
@@ -247,17 +247,17 @@
         <translation>resources/drives/FAMILY.json のファミリー名</translation>
     </message>
     <message>
-        <location filename="../core/device/replay/ReplayDrive.cpp" line="250" />
+        <location filename="../core/device/replay/ReplayDrive.cpp" line="251" />
         <source>Replay of a recorded capture</source>
         <translation>記録したキャプチャの再生</translation>
     </message>
     <message>
-        <location filename="../core/device/replay/ReplayDrive.cpp" line="255" />
+        <location filename="../core/device/replay/ReplayDrive.cpp" line="256" />
         <source>Capture file</source>
         <translation>キャプチャファイル</translation>
     </message>
     <message>
-        <location filename="../core/device/replay/ReplayDrive.cpp" line="256" />
+        <location filename="../core/device/replay/ReplayDrive.cpp" line="257" />
         <source>capture CSV with test, axis and fs_Hz metadata</source>
         <translation>test, axis, fs_Hz のメタデータを持つキャプチャ CSV</translation>
     </message>
@@ -282,12 +282,12 @@
         <translation>LinuxCNC を起動した INI</translation>
     </message>
     <message>
-        <location filename="../core/device/hal/HalDrive.cpp" line="761" />
+        <location filename="../core/device/hal/HalDrive.cpp" line="763" />
         <source>LinuxCNC HAL session</source>
         <translation>LinuxCNC の HAL セッション</translation>
     </message>
     <message>
-        <location filename="../core/device/hal/HalDrive.cpp" line="763" />
+        <location filename="../core/device/hal/HalDrive.cpp" line="765" />
         <source>Attaches to the running HAL session of LinuxCNC (or a bare HAL loop): an axis is a pid instance, units are the HAL's; halcmd from AXISTUNE_HALCMD (docs/linuxcnc.md).</source>
         <translation>動作中の LinuxCNC の HAL セッション (または HAL だけのループ) に接続します。軸は pid インスタンス、単位は HAL のものです。halcmd は AXISTUNE_HALCMD で指定できます (docs/linuxcnc.md)。</translation>
     </message>
@@ -302,7 +302,7 @@
         <translation>resources/drives/ のレジスタマップで Modbus TCP により通信するサーボアンプ (docs/modbus.md)。軸 i はマップのユニット ID 基準値 + i で応答します。</translation>
     </message>
     <message>
-        <location filename="../core/device/replay/ReplayDrive.cpp" line="252" />
+        <location filename="../core/device/replay/ReplayDrive.cpp" line="253" />
         <source>Plays back a capture CSV of `axistune-cli capture` as a drive: only the recorded test on the recorded axis, parameters read-only (docs/drive-seam.md).</source>
         <translation>`axistune-cli capture` のキャプチャ CSV をサーボアンプとして再生します: 記録した軸の記録した試験のみ、パラメータは読み取り専用 (docs/drive-seam.md)。</translation>
     </message>
@@ -310,27 +310,27 @@
 <context>
     <name>FrfResultPage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="47" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="48" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="562" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="563" />
         <source>the open loop L = T/(1−T) of the measured T</source>
         <translation>測定した T の開ループ L = T/(1−T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="563" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="564" />
         <source>the measured response</source>
         <translation>測定した応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="582" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="583" />
         <source>|plant|·ω² (flat for the rigid body of a torque drive; its peak at least 6 dB above its median)</source>
         <translation>|プラント|·ω² (トルク指令のサーボアンプでは剛体部分が平坦。ピークが中央値より 6 dB 以上高いもの)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="585" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="586" />
         <source>|plant|·ω (flat for a velocity drive; its peak at least 6 dB above its median)</source>
         <translation>|プラント|·ω (速度指令のサーボアンプでは平坦。ピークが中央値より 6 dB 以上高いもの)</translation>
     </message>
@@ -406,7 +406,7 @@
 <context>
     <name>NotchProposePage</name>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="77" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="78" />
         <source>Slot %1 at %2 Hz: resonance %3 dB above its baseline, −3 dB width %4 Hz, open-loop gain %5 dB. Depth %6 = the smaller of %7 (peak back to its baseline) and %8 (open-loop gain down to %9 dB). Digital −3 dB width %10 Hz = resonance width / depth (the notch zeros on the mode's poles), kept between %4 Hz and %11 Hz; drive width parameter %12 Hz (pre-warped at %13 Hz).</source>
         <translation>スロット %1、%2 Hz: 共振はベースラインより %3 dB 高く、−3 dB 帯域幅 %4 Hz、開ループゲイン %5 dB。深さ %6 = %7 (ピークをベースラインまで下げる) と %8 (開ループゲインを %9 dB まで下げる) の小さい方。ディジタルの −3 dB 帯域幅 %10 Hz = 共振の帯域幅 / 深さ (ノッチの零点をモードの極に置く)、%4 Hz から %11 Hz の範囲に制限; サーボアンプの帯域幅パラメータ %12 Hz (%13 Hz でプリワープ)。</translation>
     </message>
@@ -414,38 +414,38 @@
 <context>
     <name>NotchWizard</name>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="98" />
-        <location filename="../app/gui/NotchWizardPages.cpp" line="105" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="99" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="106" />
         <source>%1 dB at %2 Hz</source>
         <translation>%1 dB (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="99" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="100" />
         <source>no phase crossover in the band</source>
         <translation>帯域内に位相交差なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="102" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="103" />
         <source>%1° at %2 Hz</source>
         <translation>%1° (%2 Hz)</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="103" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="104" />
         <source>no gain crossover in the band</source>
         <translation>帯域内にゲイン交差なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="111" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="112" />
         <source>Gain margin</source>
         <translation>ゲイン余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="112" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="113" />
         <source>Phase margin</source>
         <translation>位相余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="113" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="114" />
         <source>Peak sensitivity</source>
         <translation>感度関数のピーク</translation>
     </message>
@@ -764,17 +764,17 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="116" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="117" />
         <source>%1: no stage.json given and the capture names no simulated machine/axis (metadata 'machine=' and 'axis=')</source>
         <translation>%1: stage.json の指定がなく、計測データにもシミュレーション機と軸の記載がありません (メタデータ 'machine=' と 'axis=')</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="123" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="124" />
         <source>axis parameters of %1 %2</source>
         <translation>%1 %2 の軸パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="139" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="140" />
         <source>%1: needs the columns t_s, current_A (or torque_Nm), motor_vel_rad_s, motor_pos_m, table_pos_m</source>
         <translation>%1: 列 t_s、current_A (または torque_Nm)、motor_vel_rad_s、motor_pos_m、table_pos_m が必要です</translation>
     </message>
@@ -784,7 +784,7 @@
         <translation>限界切込み深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="49" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="50" />
         <source>[%1 values] %2 … %3</source>
         <translation>[%1 個の値] %2 … %3</translation>
     </message>
@@ -794,7 +794,7 @@
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="296" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="297" />
         <source>the vmc preset has no X axis</source>
         <translation>vmc プリセットに X 軸がありません</translation>
     </message>
@@ -826,291 +826,291 @@
 <context>
     <name>SessionReport</name>
     <message>
-        <location filename="../app/gui/Report.cpp" line="57" />
+        <location filename="../app/gui/Report.cpp" line="58" />
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="58" />
+        <location filename="../app/gui/Report.cpp" line="59" />
         <source>no</source>
         <translation>いいえ</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="126" />
+        <location filename="../app/gui/Report.cpp" line="127" />
         <source>completed</source>
         <translation>完了</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="128" />
+        <location filename="../app/gui/Report.cpp" line="129" />
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="130" />
+        <location filename="../app/gui/Report.cpp" line="131" />
         <source>FAILED</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="139" />
+        <location filename="../app/gui/Report.cpp" line="140" />
         <source>Read from the drive</source>
         <translation>サーボアンプから読み出し</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="141" />
+        <location filename="../app/gui/Report.cpp" line="142" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="143" />
+        <location filename="../app/gui/Report.cpp" line="144" />
         <source>Applied</source>
         <translation>適用値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="145" />
+        <location filename="../app/gui/Report.cpp" line="146" />
         <source>Imported</source>
         <translation>読み込み</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="217" />
+        <location filename="../app/gui/Report.cpp" line="218" />
         <source>Plot "%1" could not be rendered.</source>
         <translation>プロット "%1" を描画できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="234" />
+        <location filename="../app/gui/Report.cpp" line="235" />
         <source>Session %1: %2</source>
         <translation>セッション %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="238" />
+        <location filename="../app/gui/Report.cpp" line="239" />
         <source>This session was %1. Reason: %2</source>
         <translation>このセッションは %1 でした。理由: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="240" />
-        <location filename="../app/gui/Report.cpp" line="414" />
+        <location filename="../app/gui/Report.cpp" line="241" />
+        <location filename="../app/gui/Report.cpp" line="415" />
         <source>not recorded</source>
         <translation>記録なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="243" />
+        <location filename="../app/gui/Report.cpp" line="244" />
         <source>(none)</source>
         <translation>(なし)</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="244" />
+        <location filename="../app/gui/Report.cpp" line="245" />
         <source>Machine</source>
         <translation>機械</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="245" />
-        <location filename="../app/gui/Report.cpp" line="405" />
+        <location filename="../app/gui/Report.cpp" line="246" />
+        <location filename="../app/gui/Report.cpp" line="406" />
         <source>Axis</source>
         <translation>軸</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="246" />
+        <location filename="../app/gui/Report.cpp" line="247" />
         <source>Kind</source>
         <translation>種類</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="247" />
+        <location filename="../app/gui/Report.cpp" line="248" />
         <source>Status</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="250" />
+        <location filename="../app/gui/Report.cpp" line="251" />
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="251" />
+        <location filename="../app/gui/Report.cpp" line="252" />
         <source>Finished</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="252" />
+        <location filename="../app/gui/Report.cpp" line="253" />
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="254" />
+        <location filename="../app/gui/Report.cpp" line="255" />
         <source>Notes</source>
         <translation>メモ</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="256" />
+        <location filename="../app/gui/Report.cpp" line="257" />
         <source>AxisTune version</source>
         <translation>AxisTune バージョン</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="270" />
+        <location filename="../app/gui/Report.cpp" line="271" />
         <source>F_L (full-closed)</source>
         <translation>F_L (フルクローズド)</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="271" />
+        <location filename="../app/gui/Report.cpp" line="272" />
         <source>F_m (semi-closed)</source>
         <translation>F_m (セミクローズド)</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="272" />
+        <location filename="../app/gui/Report.cpp" line="273" />
         <source>: f₀ %1 Hz, ζ %2</source>
         <translation>: f₀ %1 Hz、ζ %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="276" />
+        <location filename="../app/gui/Report.cpp" line="277" />
         <source>, τ %1 ms</source>
         <translation>、τ %1 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="277" />
+        <location filename="../app/gui/Report.cpp" line="278" />
         <source>Suppression filter</source>
         <translation>振動抑制フィルタ</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="280" />
+        <location filename="../app/gui/Report.cpp" line="281" />
         <source>Maximum load error (verification)</source>
         <translation>負荷側誤差の最大値 (検証)</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="281" />
+        <location filename="../app/gui/Report.cpp" line="282" />
         <source>measured %1° with the filter; predicted %2° without, %3° with it</source>
         <translation>測定値 フィルタあり %1°、予測値 フィルタなし %2°、フィルタあり %3°</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="291" />
+        <location filename="../app/gui/Report.cpp" line="292" />
         <source>Plots</source>
         <translation>プロット</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="301" />
+        <location filename="../app/gui/Report.cpp" line="302" />
         <source>FRF "%1" is unreadable: %2</source>
         <translation>周波数応答 "%1" を読み取れません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="311" />
+        <location filename="../app/gui/Report.cpp" line="312" />
         <source>Frequency response: %1</source>
         <translation>周波数応答: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="321" />
+        <location filename="../app/gui/Report.cpp" line="322" />
         <source>Capture: %1</source>
         <translation>計測データ: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="326" />
+        <location filename="../app/gui/Report.cpp" line="327" />
         <source>No plots recorded.</source>
         <translation>記録されたプロットはありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="351" />
+        <location filename="../app/gui/Report.cpp" line="352" />
         <source>Ball-bar traces: %1</source>
         <translation>ボールバーの軌跡: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="369" />
+        <location filename="../app/gui/Report.cpp" line="370" />
         <source>Result: %1</source>
         <translation>結果: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="376" />
+        <location filename="../app/gui/Report.cpp" line="377" />
         <source>Parameter sets</source>
         <translation>パラメータセット</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="380" />
+        <location filename="../app/gui/Report.cpp" line="381" />
         <source>axis %1, %2</source>
         <translation>軸 %1、%2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="385" />
-        <location filename="../app/gui/Report.cpp" line="406" />
+        <location filename="../app/gui/Report.cpp" line="386" />
+        <location filename="../app/gui/Report.cpp" line="407" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="386" />
+        <location filename="../app/gui/Report.cpp" line="387" />
         <source>Description</source>
         <translation>説明</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="387" />
+        <location filename="../app/gui/Report.cpp" line="388" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="401" />
+        <location filename="../app/gui/Report.cpp" line="402" />
         <source>Journal of writes</source>
         <translation>書き込み履歴</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="404" />
+        <location filename="../app/gui/Report.cpp" line="405" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="407" />
+        <location filename="../app/gui/Report.cpp" line="408" />
         <source>Old value</source>
         <translation>旧値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="408" />
+        <location filename="../app/gui/Report.cpp" line="409" />
         <source>New value</source>
         <translation>新値</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="429" />
+        <location filename="../app/gui/Report.cpp" line="430" />
         <source>Results</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="435" />
+        <location filename="../app/gui/Report.cpp" line="436" />
         <source>Identified models</source>
         <translation>同定したモデル</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="438" />
+        <location filename="../app/gui/Report.cpp" line="439" />
         <source>axis %1</source>
         <translation>軸 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="441" />
+        <location filename="../app/gui/Report.cpp" line="442" />
         <source>Verification</source>
         <translation>検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="446" />
+        <location filename="../app/gui/Report.cpp" line="447" />
         <source>No verification was recorded.</source>
         <translation>検証は記録されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="460" />
+        <location filename="../app/gui/Report.cpp" line="461" />
         <source>Arrays (values): %1</source>
         <translation>配列 (値の数): %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="471" />
-        <location filename="../app/gui/Report.cpp" line="532" />
+        <location filename="../app/gui/Report.cpp" line="472" />
+        <location filename="../app/gui/Report.cpp" line="533" />
         <source>AxisTune session %1</source>
         <translation>AxisTune セッション %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="473" />
+        <location filename="../app/gui/Report.cpp" line="474" />
         <source>Inputs</source>
         <translation>入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="479" />
+        <location filename="../app/gui/Report.cpp" line="480" />
         <source>Report made by AxisTune from session %1 of the store.</source>
         <translation>データベースのセッション %1 から AxisTune が作成したレポートです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="517" />
+        <location filename="../app/gui/Report.cpp" line="518" />
         <source>Cannot write %1: %2</source>
         <translation>%1 を書き込めません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/Report.cpp" line="542" />
+        <location filename="../app/gui/Report.cpp" line="543" />
         <source>Cannot write %1</source>
         <translation>%1 を書き込めません</translation>
     </message>
@@ -1169,7 +1169,7 @@
         <translation>周波数応答…</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="46" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="47" />
         <source>Lost motion…</source>
         <translation>ロストモーション…</translation>
     </message>
@@ -1184,12 +1184,12 @@
         <translation>ノッチフィルタ…</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="28" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="29" />
         <source>Two-inertia vibration suppression…</source>
         <translation>2慣性系の振動抑制…</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="31" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="32" />
         <source>Velocity and position loop…</source>
         <translation>速度ループと位置ループ…</translation>
     </message>
@@ -2856,82 +2856,82 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::CurrentLoopStepPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="72" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="73" />
         <source>Current loop: step responses</source>
         <translation>電流ループ: ステップ応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="73" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="74" />
         <source>The delay-free design model against the prediction with the drive's current-loop period (zero-order hold) and dead time; a current step is measured on the drive before and after applying.</source>
         <translation>むだ時間なしの設計モデルと、サーボアンプの電流ループ周期 (0 次ホールド) とむだ時間を含めた予測の比較。適用の前と後にサーボアンプで電流ステップを測定します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="79" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="80" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="79" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="80" />
         <source>Current / command</source>
         <translation>電流 / 指令</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="85" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="86" />
         <source>Current step on the drive, before and after applying</source>
         <translation>適用前後のサーボアンプでの電流ステップ</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="88" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="89" />
         <source>Measure a current step (velocity loop open, then the axis holds its position)</source>
         <translation>電流ステップを測定する (速度ループ開放、その後は軸が位置を保持)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="97" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="98" />
         <source>Step of the q-axis current command:</source>
         <translation>q 軸電流指令のステップ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="103" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="104" />
         <source>Recording (the step comes 10 % in):</source>
         <translation>記録時間 (ステップは 10 % の時点):</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="135" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="136" />
         <source>Delay-free design</source>
         <translation>むだ時間なしの設計</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="136" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="137" />
         <source>Prediction: period %1 µs + dead time %2 µs</source>
         <translation>予測: 周期 %1 µs + むだ時間 %2 µs</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="142" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="143" />
         <source>Delay-free: %1. With the delay: %2.</source>
         <translation>むだ時間なし: %1。むだ時間あり: %2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="155" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="156" />
         <source>Default %1 A: at most %2 % of I_max, and the voltage before the current can respond, (α k_p + (d + 1)·k_i T)·i* = %3 V with d dead-time periods, stays within %4 % of V_max (%5 V), so no voltage clamp acts and the inductance falls by only δ·i*/I_max = %6 %.</source>
         <translation>既定値 %1 A: I_max の %2 % 以下で、電流が応答する前の電圧 (α k_p + (d + 1)·k_i T)·i* = %3 V (d はむだ時間の周期数) が V_max (%5 V) の %4 % 以内に収まるため、電圧クランプは働かず、インダクタンスの低下は δ·i*/I_max = %6 % にとどまります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="208" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="209" />
         <source>A q-axis current step of %1 A recorded for %2 ms, twice: now with the gains the drive holds, and after applying the proposed ones. The velocity and position loops are open while it lasts: the motor accelerates freely, then the axis holds its position again.</source>
         <translation>q 軸電流を %1 A ステップさせて %2 ms 記録します。これを 2 回、現在のサーボアンプのゲインで今、提案したゲインを適用した後にもう一度行います。その間は速度ループと位置ループを開放するため、モータは自由に加速し、その後軸は再び位置を保持します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="166" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="167" />
         <source>Reading the drive's limits…</source>
         <translation>サーボアンプの上限を読み取り中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="181" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="182" />
         <source>&lt;span style='color:#b00000'&gt;The drive does not state its current-step limits: %1&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;サーボアンプが電流ステップの上限を示していません: %1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="193" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="194" />
         <source>The drive refuses a step above %1 A, a recording beyond %2 ms and a step that would take the motor beyond %3 rad/s.</source>
         <translation>サーボアンプは %1 A を超えるステップ、%2 ms を超える記録、モータが %3 rad/s を超えるステップを拒否します。</translation>
     </message>
@@ -2939,137 +2939,137 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::CurrentLoopVerifyPage</name>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="231" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="232" />
         <source>Current loop: verification</source>
         <translation>電流ループ: 検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="232" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="233" />
         <source>The gains read back from the drive, the step predicted with them (period and dead time of the drive) and the design, against the current step measured on the drive.</source>
         <translation>サーボアンプから読み出したゲイン、そのゲインで予測したステップ応答 (サーボアンプの周期とむだ時間) と設計を、サーボアンプで測定した電流ステップと比較します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="237" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="238" />
         <source>Current / command</source>
         <translation>電流 / 指令</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="237" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="238" />
         <source>Time since the step</source>
         <translation>ステップからの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="264" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="265" />
         <source>Reading back failed: %1</source>
         <translation>読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="251" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="252" />
         <source>Not connected: nothing to verify.</source>
         <translation>未接続: 検証するものはありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="313" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="314" />
         <source>Prediction with the read-back gains (period + dead time)</source>
         <translation>読み出したゲインでの予測 (周期 + むだ時間)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="318" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="319" />
         <source>Read back: k_p %1 V/A, k_i %2 V/(A·s), α %3 — %4.</source>
         <translation>読み出し値: k_p %1 V/A、k_i %2 V/(A·s)、α %3 — %4。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="324" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="325" />
         <source>Not applied: the drive kept its own gains, and the measurement is of those.</source>
         <translation>未適用: サーボアンプは元のゲインのままで、測定はそのゲインでのものです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="326" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="327" />
         <source>Measured before applying (gains before)</source>
         <translation>適用前の実測 (適用前のゲイン)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="329" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="330" />
         <source>Measured on the drive (%1 A step)</source>
         <translation>サーボアンプでの実測 (%1 A ステップ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="333" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="334" />
         <source>Predicted step with them: %1.</source>
         <translation>そのゲインで予測したステップ応答: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="334" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="335" />
         <source>No measured current step: %1</source>
         <translation>電流ステップの実測なし: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="335" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="336" />
         <source>No current step was measured (not chosen on the step page).</source>
         <translation>電流ステップは測定していません (ステップ応答のページで選択されていません)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="355" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="356" />
         <source>The measured step agrees with the delay-inclusive prediction within %1 % of the step.</source>
         <translation>実測したステップ応答は、むだ時間を含む予測とステップの %1 % 以内で一致しています。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="357" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="358" />
         <source>The measured step differs from the delay-inclusive prediction by more than %1 % of the step: check R_a, L_q and the dead time, or use a smaller step.</source>
         <translation>実測したステップ応答は、むだ時間を含む予測とステップの %1 % を超えて異なります: R_a、L_q とむだ時間を確認するか、ステップを小さくしてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="360" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="361" />
         <source>Current step of %1 A measured on the drive (%2 samples at %3 µs):</source>
         <translation>サーボアンプで測定した %1 A の電流ステップ (%3 µs 間隔で %2 点):</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="364" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="365" />
         <source>• measured: 10–90 % rise time %1 µs, overshoot %2 %</source>
         <translation>• 実測: 10–90 % 立ち上がり時間 %1 µs、オーバーシュート %2 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="366" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="367" />
         <source>• design (delay-free): rise time %1 µs, overshoot %2 %</source>
         <translation>• 設計 (むだ時間なし): 立ち上がり時間 %1 µs、オーバーシュート %2 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="367" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="368" />
         <source>• prediction (period + dead time, read-back gains): rise time %1 µs, overshoot %2 %</source>
         <translation>• 予測 (周期 + むだ時間、読み出したゲイン): 立ち上がり時間 %1 µs、オーバーシュート %2 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="370" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="371" />
         <source>• measured before applying (gains before): rise time %1 µs, overshoot %2 %</source>
         <translation>• 適用前の実測 (適用前のゲイン): 立ち上がり時間 %1 µs、オーバーシュート %2 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="372" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="373" />
         <source>Measured − predicted: rise time %1 µs, overshoot %2 percentage points; largest difference %3 % of the step, rms %4 % over %5 samples.</source>
         <translation>実測 − 予測: 立ち上がり時間 %1 µs、オーバーシュート %2 ポイント。最大差はステップの %3 %、%5 点での rms は %4 %。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="380" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="381" />
         <source>The voltage clamp acted in %1 current periods: the measured step is not the linear loop the prediction describes; use a smaller step.</source>
         <translation>電圧クランプが電流制御周期 %1 回で働きました: 実測は予測が表す線形なループではありません。ステップを小さくしてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="255" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="256" />
         <source>Reading back…</source>
         <translation>読み出し中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="311" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="312" />
         <source>Design (delay-free, proposed gains)</source>
         <translation>設計 (むだ時間なし、提案ゲイン)</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="322" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="323" />
         <source>as proposed</source>
         <translation>提案どおり</translation>
     </message>
     <message>
-        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="322" />
+        <location filename="../app/gui/CurrentLoopWizardStep.cpp" line="323" />
         <source>NOT as proposed</source>
         <translation>提案と異なる</translation>
     </message>
@@ -3123,114 +3123,114 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfConfigPage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="281" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="282" />
         <source>Method and band</source>
         <translation>方式と帯域</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="282" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="283" />
         <source>How the axis is excited and which frequencies are measured.</source>
         <translation>軸の加振方法と測定する周波数。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="364" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="365" />
         <source>Multi-sweep sine stream (valid up to the trace rate)</source>
         <translation>複数回掃引の正弦波ストリーム (トレース周波数まで有効)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="365" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="366" />
         <source>Conventional sine stream (valid up to half the trace rate)</source>
         <translation>従来の正弦波ストリーム (トレース周波数の半分まで有効)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="366" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="367" />
         <source>PRBS with Welch averaging and coherence (up to half the trace rate)</source>
         <translation>PRBS、Welch 平均とコヒーレンス (トレース周波数の半分まで)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="367" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="368" />
         <source>Multisine, all lines at once (valid up to the trace rate)</source>
         <translation>マルチサイン、全周波数を同時に (トレース周波数まで有効)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="287" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="288" />
         <source>Method:</source>
         <translation>方式:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="298" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="305" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="299" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="306" />
         <source> Hz</source>
         <translation> Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="299" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="300" />
         <source>Lowest frequency:</source>
         <translation>最低周波数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="306" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="307" />
         <source>Highest frequency:</source>
         <translation>最高周波数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="311" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="312" />
         <source>Frequencies (log-spaced):</source>
         <translation>周波数点数 (対数間隔):</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="450" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="451" />
         <source>Estimated motion time: %1 s (settling included).</source>
         <translation>推定動作時間: %1 s (整定時間を含む)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="430" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="451" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="431" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="452" />
         <source>&lt;span style='color:#b00000'&gt;The drive would refuse this test: %1&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;サーボアンプはこのテストを拒否します: %1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="406" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="407" />
         <source>Trace rate fs = %1 Hz. The multi-sweep and multisine methods measure up to fs; the conventional sine stream and PRBS only up to fs/2 = %2 Hz (points above are marked not valid).</source>
         <translation>トレース周波数 fs = %1 Hz。複数回掃引とマルチサインは fs まで測定できます。従来の正弦波ストリームと PRBS は fs/2 = %2 Hz までです (それより上の点は無効と表示)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="414" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="415" />
         <source>The trace rate of the drive is unknown.</source>
         <translation>サーボアンプのトレース周波数が不明です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="433" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="434" />
         <source>Estimating the motion time…</source>
         <translation>動作時間を推定中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="430" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="431" />
         <source>not connected</source>
         <translation>未接続</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="290" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="291" />
         <source>Measured quantity:</source>
         <translation>測定する量:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="379" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="380" />
         <source>Plant: feedback / drive input</source>
         <translation>プラント: フィードバック / サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="381" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="382" />
         <source>Open loop with the running gains: −controller output / drive input</source>
         <translation>現在のゲインでの開ループ: −制御器出力 / サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="396" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="397" />
         <source>Trace rate fs = %1 Hz. This drive measures lines below %2 Hz only; the band must end below that.</source>
         <translation>トレース周波数 fs = %1 Hz。このサーボアンプは %2 Hz 未満の周波数線しか測定できません。帯域はそれより下で終わる必要があります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="404" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="405" />
         <source>&lt;span style='color:#b00000'&gt;The drive offers no FRF method on this axis.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;このサーボアンプはこの軸で周波数応答の測定方法を提供していません。&lt;/span&gt;</translation>
     </message>
@@ -3238,132 +3238,132 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfResultPage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="465" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="466" />
         <source>Frequency response</source>
         <translation>周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="466" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="539" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="467" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="540" />
         <source>The measured closed velocity loop, where it is valid, and the resonances found.</source>
         <translation>測定した速度閉ループ (有効な範囲) と、見つかった共振。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="482" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="483" />
         <source>Frequency [Hz]</source>
         <translation>周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="482" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="483" />
         <source>Peak [dB]</source>
         <translation>ピーク [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="482" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="483" />
         <source>Width (−3 dB) [Hz]</source>
         <translation>帯域幅 (−3 dB) [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="483" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="543" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="484" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="544" />
         <source>Open-loop gain [dB]</source>
         <translation>開ループゲイン [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="524" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="525" />
         <source>No frequency response was measured.</source>
         <translation>周波数応答は測定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="547" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="548" />
         <source>Measured</source>
         <translation>測定値</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="550" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="551" />
         <source>Analysing…</source>
         <translation>解析中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="647" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="648" />
         <source>%1 of %2 points valid.</source>
         <translation>%2 点中 %1 点が有効。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="658" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="659" />
         <source>Trace rate fs = %1 Hz.</source>
         <translation>トレース周波数 fs = %1 Hz。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="660" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="661" />
         <source>No resonance list: %1</source>
         <translation>共振リストなし: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="662" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="663" />
         <source>No resonance found in %1.</source>
         <translation>%1 に共振は見つかりませんでした。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/FrfWizardPages.cpp" line="664" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="665" />
         <source>%n resonance(s) found in %1:</source>
         <translation>
             <numerusform>%1 に %n 個の共振が見つかりました:</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="675" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="676" />
         <source>Only one −3 dB crossing inside the band: twice the half width.</source>
         <translation>帯域内の −3 dB 交差が 1 つだけ: 半値幅の 2 倍。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="528" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="648" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="529" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="649" />
         <source>the drive input</source>
         <translation>サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="530" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="531" />
         <source>The measured plant: feedback per unit of drive input (%1 plus the injection), where it is valid, and the resonances found.</source>
         <translation>測定したプラント: サーボアンプ入力 (%1 + 注入信号) 1 単位あたりのフィードバック、その有効範囲、見つかった共振。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="533" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="534" />
         <source>Plant [dB]</source>
         <translation>プラント [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="535" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="536" />
         <source>The measured open position loop with the running gains: −controller output / drive input (dimensionless), where it is valid, and the resonances found.</source>
         <translation>現在のゲインで測定した位置ループの開ループ: −制御器出力 / サーボアンプ入力 (無次元)、その有効範囲、見つかった共振。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="537" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="538" />
         <source>Open loop |L| [dB]</source>
         <translation>開ループ |L| [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="544" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="545" />
         <source>Level of the analysed response [dB]</source>
         <translation>解析した応答のレベル [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="545" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="546" />
         <source>Measured plant</source>
         <translation>測定したプラント</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="546" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="547" />
         <source>Measured open loop</source>
         <translation>測定した開ループ</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="650" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="651" />
         <source>Plant in the feedback's position units per unit of %1 (the configuration's units, e.g. mm per N·m).</source>
         <translation>プラントは %1 の 1 単位あたりのフィードバック位置単位で表します (構成の単位、例: mm/N·m)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="655" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="656" />
         <source>Open position loop, dimensionless (controller output per unit of %1).</source>
         <translation>位置ループの開ループ、無次元 (%1 の 1 単位あたりの制御器出力)。</translation>
     </message>
@@ -3371,78 +3371,78 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfSafetyPage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="91" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="185" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="92" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="186" />
         <source>The axis holds velocity 0 in velocity mode while a small torque disturbance is added to the velocity-controller output. The axis vibrates with small amplitude at each test frequency; it does not travel. Abort stops the excitation at once and restores the parameters.</source>
         <translation>軸は速度制御モードで速度 0 を保持し、速度制御器の出力に小さなトルク外乱を加えます。軸は各試験周波数で小さな振幅で振動しますが、移動はしません。中止すると加振は直ちに止まり、パラメータは元に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="104" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="105" />
         <source> % of rated torque</source>
         <translation> % (定格トルク比)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="105" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="106" />
         <source>Excitation amplitude:</source>
         <translation>加振振幅:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="248" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="249" />
         <source>&lt;span style='color:#b00000'&gt;Refused: the drive allows at most %1 % of rated torque.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;拒否: サーボアンプが許すのは定格トルクの %1 % までです。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="255" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="256" />
         <source>%1 % of rated torque (at most %2 %).</source>
         <translation>定格トルクの %1 % (最大 %2 %)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="258" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="259" />
         <source>%1 % of the rated torque %2 N·m = %3 N·m peak of the injected torque (at most %4 %).</source>
         <translation>定格トルク %2 N·m の %1 % = 注入トルクのピーク %3 N·m (最大 %4 %)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="238" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="239" />
         <source>&lt;span style='color:#b00000'&gt;The drive does not state its amplitude limit: %1&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;サーボアンプが振幅の上限を示していません: %1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="244" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="245" />
         <source>%1 % of rated torque (reading the drive's limit…).</source>
         <translation>定格トルクの %1 % (サーボアンプの上限を読み取り中…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="112" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="113" />
         <source>Excitation peak:</source>
         <translation>加振ピーク値:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="191" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="192" />
         <source> (units of %1)</source>
         <translation> (%1 の単位)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="201" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="202" />
         <source>The NC keeps closing its position loop while a small multisine is added to %1, the drive's input, at every servo period. The axis vibrates with small amplitude about where it stands; it does not travel. A following error above the limit or Abort stops the excitation at once, and what AxisTune inserted into the machine is removed.</source>
         <translation>NC が位置ループを閉じたまま、サーボアンプ入力である %1 に小さなマルチサインをサーボ周期ごとに加えます。軸は現在位置の周りで小さな振幅で振動し、移動はしません。位置偏差が制限を超えるか中止すると加振はすぐに止まり、AxisTune が機械に挿入したものは取り除かれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="215" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="216" />
         <source>&lt;span style='color:#b00000'&gt;The drive states no limit for the peak in the units of %1: no test.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;サーボアンプが %1 の単位でのピーク値の上限を示していません: 測定できません。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="219" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="220" />
         <source>&lt;span style='color:#b00000'&gt;Refused: the peak must be above 0.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;拒否: ピーク値は 0 より大きくなければなりません。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="221" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="222" />
         <source>&lt;span style='color:#b00000'&gt;Refused: the drive allows a peak of at most %1 in the units of %2.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;拒否: サーボアンプが許すピーク値は %2 の単位で最大 %1 です。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="226" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="227" />
         <source>Peak %1 of the injected signal, in the units of %2 (the drive allows at most %3, %4 % of its output limit).</source>
         <translation>注入信号のピーク値 %1 (%2 の単位。サーボアンプが許す最大値は %3、出力制限の %4 %)。</translation>
     </message>
@@ -3450,37 +3450,37 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfSavePage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="688" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="689" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="689" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="690" />
         <source>Finish stores the measurement as a session of this machine.</source>
         <translation>完了すると、測定をこの機械のセッションとして保存します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="694" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="695" />
         <source>e.g. before notch tuning, table empty</source>
         <translation>例: ノッチ調整前、テーブル上は空</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="695" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="696" />
         <source>Note:</source>
         <translation>メモ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="701" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="702" />
         <source>Show the saved session as a document (its Bode plot stays open after Finish)</source>
         <translation>保存したセッションをドキュメントとして表示する（完了後もボード線図が開いたままになります）</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="706" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="707" />
         <source>Save and open in the notch wizard</source>
         <translation>保存してノッチフィルタのウィザードで開く</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="708" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="709" />
         <source>Stores the session, then proposes notch filters for the resonances of this measurement.</source>
         <translation>セッションを保存し、この測定の共振に対するノッチフィルタを提案します。</translation>
     </message>
@@ -3960,7 +3960,7 @@ Read the axis's parameters to see what the drive holds.</source>
         <translation>%1 の変更履歴の読み出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/LogPanel.cpp" line="74" />
+        <location filename="../app/gui/LogPanel.cpp" line="75" />
         <source>not recorded</source>
         <translation>記録なし</translation>
     </message>
@@ -4166,42 +4166,42 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::LostMotionSavePage</name>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="57" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="58" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="58" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="59" />
         <source>The session holds the traces, the diagnostics, A and B with their points, the proposal, what was applied with its journal, and the verification.</source>
         <translation>セッションには、軌跡、診断、A と B およびその点、提案、適用した内容とその履歴、検証が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="77" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="78" />
         <source>Axis %1: A = %2 µm/(N·m), B = %3 µm/(N·m·m), x₀ = %4 mm.</source>
         <translation>軸 %1: A = %2 µm/(N·m)、B = %3 µm/(N·m·m)、x₀ = %4 mm。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="83" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="84" />
         <source>Not connected: applying the compensation and verifying it with a new circle need a connection to the machine.</source>
         <translation>未接続: 補正の適用と新しい円弧での検証には機械との接続が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="86" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="87" />
         <source>Not applied: the proposal is kept in the session.</source>
         <translation>未適用: 提案はセッションに保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="88" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="89" />
         <source>Applied; reversal step %1 µm before, %2 µm after.</source>
         <translation>適用しました。反転時の段差 前 %1 µm、後 %2 µm。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="91" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="92" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="92" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="93" />
         <source>The session was not saved (no store open).</source>
         <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
     </message>
@@ -4415,17 +4415,17 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::LostMotionWizard</name>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="98" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="99" />
         <source>Lost motion</source>
         <translation>ロストモーション</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="103" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="104" />
         <source>Circle tests: both axes of the plane move together on circles (radius and centres as set on the first page) at the programmed feed, one circle per table position, and once more for the verification.</source>
         <translation>円弧補間テスト: 平面の 2 軸が一緒に、指定した送り速度で円弧を描きます (半径と中心は最初のページの設定)。テーブル位置ごとに 1 回、検証でもう 1 回。</translation>
     </message>
     <message>
-        <location filename="../app/gui/LostMotionWizard.cpp" line="123" />
+        <location filename="../app/gui/LostMotionWizard.cpp" line="124" />
         <source>the lost-motion compensation</source>
         <translation>ロストモーション補正</translation>
     </message>
@@ -4551,148 +4551,148 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::MachiningAnalysisPage</name>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="204" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="205" />
         <source>Analysis of a cut</source>
         <translation>切削の解析</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="205" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="206" />
         <source>Load a captured cut or simulate this cut on the vmc X axis: the cutting force estimated by the observer and the chatter intervals found by the correlation detector.</source>
         <translation>計測した切削を読み込むか、vmc の X 軸でこの切削をシミュレーションします: 切削力オブザーバで推定した切削力と、相関検出で見つかったびびり振動の区間。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="207" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="208" />
         <source>Load capture CSV…</source>
         <translation>計測データ CSV を読み込む…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="209" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="210" />
         <source>Simulate this cut (vmc X)</source>
         <translation>この切削をシミュレーション (vmc X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="216" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="217" />
         <source>empty: the axis parameters of the simulated machine named in the capture</source>
         <translation>空欄: 計測データに記載のシミュレーション機の軸パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="217" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="218" />
         <source>stage.json…</source>
         <translation>stage.json…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="225" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="226" />
         <source>Start [s]</source>
         <translation>開始 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="225" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="226" />
         <source>End [s]</source>
         <translation>終了 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="225" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="226" />
         <source>Frequency [Hz]</source>
         <translation>周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="225" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="226" />
         <source>Score</source>
         <translation>スコア</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="236" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="237" />
         <source>duration [s]</source>
         <translation>時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="240" />
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="265" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="241" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
         <source>Stage</source>
         <translation>ステージ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="258" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="259" />
         <source>Captured cut</source>
         <translation>計測した切削</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="258" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="259" />
         <source>Capture CSV (*.csv);;All files (*)</source>
         <translation>計測データ CSV (*.csv);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="265" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="266" />
         <source>Stage JSON (*.json);;All files (*)</source>
         <translation>ステージ JSON (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="288" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="289" />
         <source>Working…</source>
         <translation>処理中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="315" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="316" />
         <source>The tool or cut data are not valid.</source>
         <translation>工具または切削のデータが正しくありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="316" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="317" />
         <source>duration: a number of seconds in (0.3, 10]</source>
         <translation>時間: (0.3, 10] の秒数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="320" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="321" />
         <source>simulated cut on vmc X, %1 min⁻¹, %2 mm</source>
         <translation>vmc X でのシミュレーション切削、%1 min⁻¹、%2 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="342" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="343" />
         <source>Not analysed: %1</source>
         <translation>未解析: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="348" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="349" />
         <source>cutting force (in the capture)</source>
         <translation>切削力 (計測データ内)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="349" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="350" />
         <source>cutting force (observer)</source>
         <translation>切削力 (切削力オブザーバ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="353" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="354" />
         <source>tool vibration x</source>
         <translation>工具振動 x</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="371" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="372" />
         <source>chatter detected</source>
         <translation>びびり振動検出</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="371" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="372" />
         <source>flag</source>
         <translation>フラグ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="375" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="376" />
         <source>%1 (stage: %2). </source>
         <translation>%1 (ステージ: %2)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="377" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="378" />
         <source>No chatter detection: the stage has no coupling stiffness.</source>
         <translation>びびり振動検出なし: ステージに結合剛性がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="379" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="380" />
         <source>No chatter detected (vibration mode %1 Hz, %2 % of the valid windows flagged).</source>
         <translation>びびり振動は検出されませんでした (振動モード %1 Hz、有効な窓の %2 % でフラグ)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="382" />
+        <location filename="../app/gui/MachiningWizardAnalysis.cpp" line="383" />
         <source>CHATTER: %n interval(s) detected (vibration mode %1 Hz).</source>
         <translation>
             <numerusform>びびり振動: %n 区間を検出 (振動モード %1 Hz)。</numerusform>
@@ -4702,270 +4702,270 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::MachiningAvoidancePage</name>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="73" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="74" />
         <source>Chatter avoidance in the loop</source>
         <translation>ループ内のびびり振動回避</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="74" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="75" />
         <source>Runs this cut on the simulated vmc X axis while an avoidance method changes the spindle speed: the adaptive stable-pocket rule, the multi-resonance search or extremum seeking.</source>
         <translation>回避手法が主軸回転数を変えながら、シミュレーションした vmc の X 軸でこの切削を行います: 適応的な安定ポケット則、複数共振の探索、または極値探索制御。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="78" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="79" />
         <source>none (constant speed)</source>
         <translation>なし (一定回転数)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="79" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="80" />
         <source>adaptive (stable pocket)</source>
         <translation>適応 (安定ポケット)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="80" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="81" />
         <source>multimode (J_chat search)</source>
         <translation>複数モード (J_chat 探索)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="81" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="82" />
         <source>ESC (extremum seeking)</source>
         <translation>ESC (極値探索制御)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="85" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="86" />
         <source>accelerometer on the spindle</source>
         <translation>主軸の加速度センサ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="86" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="87" />
         <source>feed-stage disturbance observer</source>
         <translation>送りステージの外乱オブザーバ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="98" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="99" />
         <source>Assumed curvature f'' of the cost near its minimum. The cost scales with the feed squared: the seed's 1e5 is for its 0.5 mm/s table feed; this page cuts with f_z 0.1 mm</source>
         <translation>最小点付近の評価関数の仮定曲率 f''。評価関数は送りの二乗に比例します。シードの 1e5 はテーブル送り 0.5 mm/s に対する値で、このページは f_z 0.1 mm で切削します</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="104" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="105" />
         <source>table</source>
         <translation>表の値</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="105" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="106" />
         <source>Trigger threshold on the squared filtered signal ((m/s²)² or N²); empty: the table value (Table 3/4/5). Table 4's 1e4 N² was set for a 3.5 mm cut</source>
         <translation>フィルタ後の信号の二乗に対する起動しきい値（(m/s²)² または N²）。空欄: 表の値（表 3/4/5）。表 4 の 1e4 N² は切込み 3.5 mm の切削に対して設定された値です</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="151" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="152" />
         <source>trigger σ_th</source>
         <translation>起動しきい値 σ_th</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="262" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="263" />
         <source>trigger σ_th: a number &gt; 0, or empty for the table value</source>
         <translation>起動しきい値 σ_th: 0 より大きい数値、または表の値を使う場合は空欄</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="385" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="387" />
         <source>Never triggered: the filtered signal squared stayed below σ_th (set a lower trigger σ_th for this cut).</source>
         <translation>起動しませんでした: フィルタ後の信号の二乗が σ_th 未満のままでした（この切削にはより低い起動しきい値 σ_th を設定してください）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="109" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="110" />
         <source>Run cut</source>
         <translation>切削を実行</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="111" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="112" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="121" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="122" />
         <source>Frequency</source>
         <translation>周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="121" />
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="354" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="122" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="355" />
         <source>Hz</source>
         <translation>Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="121" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="122" />
         <source>PSD of the acceleration</source>
         <translation>加速度の PSD</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="121" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="122" />
         <source>(m/s²)²/Hz</source>
         <translation>(m/s²)²/Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="124" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="125" />
         <source>Spindle speed</source>
         <translation>主軸回転数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="124" />
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="350" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="125" />
         <location filename="../app/gui/MachiningAvoidancePage.cpp" line="351" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="352" />
         <source>min⁻¹</source>
         <translation>min⁻¹</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="124" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="125" />
         <source>Limit depth</source>
         <translation>限界切込み深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="124" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="125" />
         <source>mm</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="129" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="130" />
         <source>Moves the operating point on the lobes through the cut</source>
         <translation>切削中の動作点を安定限界線図上で動かします</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="135" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="136" />
         <source>Method</source>
         <translation>手法</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="137" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="138" />
         <source>Sensor</source>
         <translation>センサ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="139" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="140" />
         <source>duration [s]</source>
         <translation>時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="141" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="142" />
         <source>ESC from [s]</source>
         <translation>ESC 開始 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="143" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="144" />
         <source>ESC bounds [min⁻¹]</source>
         <translation>ESC 範囲 [min⁻¹]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="149" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="150" />
         <source>ESC f''</source>
         <translation>ESC f''</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="226" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="227" />
         <source>The tool or cut data are not valid.</source>
         <translation>工具または切削のデータが正しくありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="231" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="232" />
         <source>duration: a number of seconds in [0.3, 20]</source>
         <translation>時間: 0.3～20 の秒数を入力してください</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="271" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="272" />
         <source>ESC: the start time (before the end of the cut), both speed bounds and f'' must be numbers</source>
         <translation>ESC: 開始時刻 (切削終了前)、回転数の上下限、f'' はいずれも数値で入力してください</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="287" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="288" />
         <source>Running…</source>
         <translation>実行中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="341" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="342" />
         <source>Aborted: %1</source>
         <translation>中止: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="341" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="342" />
         <source>Error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="348" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="349" />
         <source>tool acceleration y</source>
         <translation>工具加速度 y</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="350" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="351" />
         <source>spindle speed</source>
         <translation>主軸回転数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="351" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="352" />
         <source>spindle speed command</source>
         <translation>主軸回転数指令</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="354" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="355" />
         <source>estimated chatter frequency</source>
         <translation>推定びびり周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="358" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="359" />
         <source>cost (signal squared)</source>
         <translation>評価関数 (信号の二乗)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="358" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="359" />
         <source>self-excited power</source>
         <translation>自励振動パワー</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="365" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="367" />
         <source>start of the cut</source>
         <translation>切削開始時</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="367" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="369" />
         <source>last 0.3 s</source>
         <translation>最後の 0.3 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="374" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="376" />
         <source>Final spindle speed %1 min⁻¹.</source>
         <translation>最終の主軸回転数 %1 min⁻¹。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="376" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="378" />
         <source>Acceleration RMS over the last 0.3 s: %1 m/s² (constant speed %2 m/s², %3 % lower).</source>
         <translation>最後の 0.3 s の加速度 RMS: %1 m/s² (一定回転数では %2 m/s²、%3 % 低減)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="388" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="390" />
         <source>ESC: dither %1 Hz, h_c %2 Hz, k_c %3 1/s; %4 samples held at a bound.</source>
         <translation>ESC: 摂動 %1 Hz、h_c %2 Hz、k_c %3 1/s。上下限で保持したサンプル数 %4。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="406" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="408" />
         <source>limit depth</source>
         <translation>限界切込み深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="414" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="416" />
         <source>operating point path</source>
         <translation>動作点の軌跡</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="417" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="419" />
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="420" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="422" />
         <source>now</source>
         <translation>現在</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="382" />
+        <location filename="../app/gui/MachiningAvoidancePage.cpp" line="384" />
         <source>Triggered at %1 s; %n adaptation step(s).</source>
         <translation>
             <numerusform>%1 s で起動しました。適応ステップ %n 回。</numerusform>
@@ -5245,187 +5245,187 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::MachiningTapPage</name>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="63" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="64" />
         <source>Tap test</source>
         <translation>打撃試験</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="64" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="65" />
         <source>Impact-hammer records at the tool tip: the receptance (m/N) from hammer force and response, averaged over the hits, used as the tool's FRF.</source>
         <translation>工具先端のインパクトハンマー記録: ハンマーの力と応答からレセプタンス (m/N) を求め、打撃ごとに平均して工具の周波数応答として使います。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="69" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="70" />
         <source>Add record…</source>
         <translation>記録を追加…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="71" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="72" />
         <source>Remove</source>
         <translation>削除</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="78" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="79" />
         <source>acceleration [m/s²]</source>
         <translation>加速度 [m/s²]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="79" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="80" />
         <source>velocity [m/s]</source>
         <translation>速度 [m/s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="80" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="81" />
         <source>displacement [m]</source>
         <translation>変位 [m]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="83" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="84" />
         <source>10 % of the largest force</source>
         <translation>最大力の 10 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="86" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="87" />
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="89" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="90" />
         <source>refuse the records</source>
         <translation>記録を受け付けない</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="90" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="91" />
         <source>drop that hit</source>
         <translation>その打撃を除く</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="95" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="96" />
         <source>Force column [N]</source>
         <translation>力の列 [N]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="96" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="97" />
         <source>Response column</source>
         <translation>応答の列</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="97" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="98" />
         <source>Response measures</source>
         <translation>応答の種類</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="98" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="99" />
         <source>Trigger level [N]</source>
         <translation>トリガレベル [N]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="99" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="100" />
         <source>Exponential window τ [ms]</source>
         <translation>指数窓 τ [ms]</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="100" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="101" />
         <source>Double hit</source>
         <translation>二度打ち</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="101" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="102" />
         <source>Modes to fit per direction</source>
         <translation>方向ごとに同定するモード数</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="102" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="103" />
         <source>Compute</source>
         <translation>計算</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="104" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="105" />
         <source>Save FRF…</source>
         <translation>周波数応答を保存…</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="105" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="106" />
         <source>Use as x FRF</source>
         <translation>x の周波数応答に使う</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="107" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="108" />
         <source>Use as y FRF</source>
         <translation>y の周波数応答に使う</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="109" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="110" />
         <source>Use for x and y</source>
         <translation>x と y に使う</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="147" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="148" />
         <source>Impact records</source>
         <translation>打撃記録</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="147" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="148" />
         <source>Records (*.csv *.txt *.log *.unv *.uff);;All files (*)</source>
         <translation>記録 (*.csv *.txt *.log *.unv *.uff);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="154" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="155" />
         <source>Save receptance</source>
         <translation>レセプタンスを保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="154" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="155" />
         <source>FRF CSV (*.csv)</source>
         <translation>周波数応答 CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="211" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="212" />
         <source>Add at least one impact record.</source>
         <translation>打撃記録を一つ以上追加してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="226" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="227" />
         <source>%1: no column '%2'</source>
         <translation>%1: 列 '%2' がありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="230" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="231" />
         <source>%1: sampled at %2 Hz, the first record at %3 Hz</source>
         <translation>%1: サンプリング %2 Hz、最初の記録は %3 Hz です</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="247" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="248" />
         <source>'%1' is not a positive number</source>
         <translation>'%1' は正の数ではありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="259" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="260" />
         <source>receptance</source>
         <translation>レセプタンス</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="271" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="272" />
         <source>%1 hit(s) averaged, %2 dropped; block %3 s; valid to %4 Hz (force spectrum within 40 dB).</source>
         <translation>%1 回の打撃を平均、%2 回を除外; ブロック長 %3 s; %4 Hz まで有効 (力のスペクトルが 40 dB 以内)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="276" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="277" />
         <source>Largest receptance %1 µm/N at %2 Hz.</source>
         <translation>最大レセプタンス %1 µm/N (%2 Hz)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="280" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="281" />
         <source>One hit: no coherence. Average several hits to see how repeatable the measurement is.</source>
         <translation>打撃 1 回: コヒーレンスはありません。測定の再現性を見るには複数回打撃して平均してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="290" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="291" />
         <source>Compute the receptance first.</source>
         <translation>先にレセプタンスを計算してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/MachiningTapPage.cpp" line="313" />
+        <location filename="../app/gui/MachiningTapPage.cpp" line="314" />
         <source>Now the other direction's tap test (or use this one for both).</source>
         <translation>次にもう一方の方向の打撃試験を行ってください (またはこの結果を両方に使います)。</translation>
     </message>
@@ -6024,331 +6024,331 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::NcPidPage</name>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="58" />
+        <location filename="../app/gui/NcPidPage.cpp" line="59" />
         <source>Notch for a position PID the NC closes</source>
         <translation>NCが閉じる位置PIDのノッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="59" />
+        <location filename="../app/gui/NcPidPage.cpp" line="60" />
         <source>Position PID the NC closes</source>
         <translation>NCが閉じる位置PID</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="69" />
+        <location filename="../app/gui/NcPidPage.cpp" line="70" />
         <source>Axis:</source>
         <translation>軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="70" />
+        <location filename="../app/gui/NcPidPage.cpp" line="71" />
         <source> % of maxoutput</source>
         <translation> % (maxoutput比)</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="71" />
+        <location filename="../app/gui/NcPidPage.cpp" line="72" />
         <source>Excitation peak (multisine at the PID output):</source>
         <translation>加振ピーク (PID出力でのマルチサイン):</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="74" />
+        <location filename="../app/gui/NcPidPage.cpp" line="75" />
         <source>from the measured slope</source>
         <translation>測定した傾きから</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="75" />
-        <location filename="../app/gui/NcPidPage.cpp" line="455" />
+        <location filename="../app/gui/NcPidPage.cpp" line="76" />
+        <location filename="../app/gui/NcPidPage.cpp" line="456" />
         <source>torque or current</source>
         <translation>トルクまたは電流</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="76" />
-        <location filename="../app/gui/NcPidPage.cpp" line="455" />
+        <location filename="../app/gui/NcPidPage.cpp" line="77" />
+        <location filename="../app/gui/NcPidPage.cpp" line="456" />
         <source>velocity</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="77" />
+        <location filename="../app/gui/NcPidPage.cpp" line="78" />
         <source>Drive input (what the PID output commands):</source>
         <translation>サーボアンプ入力 (PID出力が指令するもの):</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="79" />
+        <location filename="../app/gui/NcPidPage.cpp" line="80" />
         <source>Phase margin asked:</source>
         <translation>要求する位相余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="80" />
+        <location filename="../app/gui/NcPidPage.cpp" line="81" />
         <source> dB</source>
         <translation> dB</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="81" />
+        <location filename="../app/gui/NcPidPage.cpp" line="82" />
         <source>Gain margin asked:</source>
         <translation>要求するゲイン余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="82" />
+        <location filename="../app/gui/NcPidPage.cpp" line="83" />
         <source>Propose LinuxCNC's biquad notch when it lets the crossover rise</source>
         <translation>交差周波数を上げられるときは LinuxCNC の biquad ノッチを提案する</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="94" />
+        <location filename="../app/gui/NcPidPage.cpp" line="95" />
         <source>The axis is free to move over the whole test, nobody is inside the machine, and the emergency stop is within reach.</source>
         <translation>テスト全体を通じて軸は自由に動くことができ、機械の中には誰もおらず、非常停止ボタンに手が届きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="100" />
+        <location filename="../app/gui/NcPidPage.cpp" line="101" />
         <source>Measure and propose</source>
         <translation>測定して提案</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="103" />
+        <location filename="../app/gui/NcPidPage.cpp" line="104" />
         <source>Insert the notch and verify</source>
         <translation>ノッチを挿入して検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="103" />
+        <location filename="../app/gui/NcPidPage.cpp" line="104" />
         <source>Apply and verify</source>
         <translation>適用して検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="105" />
+        <location filename="../app/gui/NcPidPage.cpp" line="106" />
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="107" />
+        <location filename="../app/gui/NcPidPage.cpp" line="108" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="109" />
+        <location filename="../app/gui/NcPidPage.cpp" line="110" />
         <source>Undo anyway</source>
         <translation>それでも元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="117" />
+        <location filename="../app/gui/NcPidPage.cpp" line="118" />
         <source>Overwrite what changed in HAL since the apply with what ran before</source>
         <translation>適用後に HAL で変更された値を、以前の値で上書きする</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="132" />
+        <location filename="../app/gui/NcPidPage.cpp" line="133" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="132" />
+        <location filename="../app/gui/NcPidPage.cpp" line="133" />
         <source>Running</source>
         <translation>現在値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="132" />
+        <location filename="../app/gui/NcPidPage.cpp" line="133" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="132" />
+        <location filename="../app/gui/NcPidPage.cpp" line="133" />
         <source>Verified</source>
         <translation>検証値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="132" />
+        <location filename="../app/gui/NcPidPage.cpp" line="133" />
         <source>Rule</source>
         <translation>ルール</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="137" />
+        <location filename="../app/gui/NcPidPage.cpp" line="138" />
         <source>Open loop L [dB]</source>
         <translation>開ループ L [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="190" />
+        <location filename="../app/gui/NcPidPage.cpp" line="191" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): it has no drive filter slots. Its notch is LinuxCNC's biquad component (a notch with 0.5 ≤ Q ≤ 2), inserted after the PID output. This page measures the open loop with the gains that run, proposes a notch at the plant's strongest resonance when it raises the gain margin, inserts it and verifies it by measuring again; the gains are not changed.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプのフィルタスロットはありません。そのノッチは LinuxCNC の biquad コンポーネント (0.5 ≤ Q ≤ 2 のノッチ) で、PID 出力の後に挿入します。このページは現在のゲインで開ループを測定し、ゲイン余裕が上がるときは制御対象の最も強い共振にノッチを提案し、挿入して再測定で検証します。ゲインは変更しません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="196" />
+        <location filename="../app/gui/NcPidPage.cpp" line="197" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): there is no drive velocity loop. This page measures the open loop with the gains that run, proposes P, I, D, FF1 and FF2 (and a biquad notch after the PID output when it lets the crossover rise) for the margins asked, with the rule behind each number, applies them live and verifies them by measuring again. A loop that misses the margins gets back what ran before.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプの速度ループはありません。このページは現在のゲインで開ループを測定し、要求された余裕に対して P、I、D、FF1、FF2 (交差周波数を上げられるときは PID 出力の後の biquad ノッチも) を各値のルールとともに提案し、運転中に適用して再測定で検証します。余裕を満たさないループは元の設定に戻します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="283" />
+        <location filename="../app/gui/NcPidPage.cpp" line="284" />
         <source>Measuring the open loop of %1 with the gains that run…</source>
         <translation>現在のゲインで %1 の開ループを測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="298" />
+        <location filename="../app/gui/NcPidPage.cpp" line="299" />
         <source>Aborted: the excitation stopped and what AxisTune inserted was removed. %1</source>
         <translation>中止しました: 加振を止め、AxisTune が挿入したものを取り除きました。%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="299" />
+        <location filename="../app/gui/NcPidPage.cpp" line="300" />
         <source>Measured, but no proposal: %1</source>
         <translation>測定しましたが提案はありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="299" />
+        <location filename="../app/gui/NcPidPage.cpp" line="300" />
         <source>The measurement failed: %1</source>
         <translation>測定に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="310" />
+        <location filename="../app/gui/NcPidPage.cpp" line="311" />
         <source>Nothing to change: %1</source>
         <translation>変更するものはありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="313" />
+        <location filename="../app/gui/NcPidPage.cpp" line="314" />
         <source>Proposed: a notch at %1 Hz, Q %2. Nothing was written yet.</source>
         <translation>提案: %1 Hz、Q %2 のノッチ。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="315" />
+        <location filename="../app/gui/NcPidPage.cpp" line="316" />
         <source>Proposed below with the predicted margins. Nothing was written yet.</source>
         <translation>提案と予測余裕を下に示します。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="318" />
+        <location filename="../app/gui/NcPidPage.cpp" line="319" />
         <source>proposed, not applied</source>
         <translation>提案のみ、未適用</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="327" />
+        <location filename="../app/gui/NcPidPage.cpp" line="328" />
         <source>Inserting the notch and measuring the open loop again…</source>
         <translation>ノッチを挿入し、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="328" />
+        <location filename="../app/gui/NcPidPage.cpp" line="329" />
         <source>Writing the gains (read back) and measuring the open loop again…</source>
         <translation>ゲインを書き込み (読み戻し確認)、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="339" />
+        <location filename="../app/gui/NcPidPage.cpp" line="340" />
         <source>Not applied: %1. Nothing was left changed.</source>
         <translation>適用しませんでした: %1。変更は残っていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="345" />
+        <location filename="../app/gui/NcPidPage.cpp" line="346" />
         <source>Applied and verified: the measured margins are in the table. Undo puts back what ran before.</source>
         <translation>適用して検証しました: 測定した余裕は表にあります。「元に戻す」で以前の設定に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="347" />
+        <location filename="../app/gui/NcPidPage.cpp" line="348" />
         <source>Not kept: %1</source>
         <translation>保持しませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="350" />
+        <location filename="../app/gui/NcPidPage.cpp" line="351" />
         <source>applied and verified</source>
         <translation>適用・検証済み</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="376" />
+        <location filename="../app/gui/NcPidPage.cpp" line="377" />
         <source>Putting back what ran before…</source>
         <translation>以前の設定に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="376" />
+        <location filename="../app/gui/NcPidPage.cpp" line="377" />
         <source>Putting back what ran before, over the later change…</source>
         <translation>後からの変更を上書きして、以前の状態に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="393" />
+        <location filename="../app/gui/NcPidPage.cpp" line="394" />
         <source>Undo refused: %1</source>
         <translation>元に戻すことを拒否しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="400" />
+        <location filename="../app/gui/NcPidPage.cpp" line="401" />
         <source>undone</source>
         <translation>元に戻した</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="400" />
+        <location filename="../app/gui/NcPidPage.cpp" line="401" />
         <source>undone anyway (over a later change)</source>
         <translation>後からの変更を上書きして元に戻しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="406" />
+        <location filename="../app/gui/NcPidPage.cpp" line="407" />
         <source>the notch from before (%1 Hz, Q %2) is back</source>
         <translation>以前のノッチ (%1 Hz, Q %2) を戻しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="407" />
+        <location filename="../app/gui/NcPidPage.cpp" line="408" />
         <source>the notch was removed</source>
         <translation>ノッチを取り除きました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="409" />
+        <location filename="../app/gui/NcPidPage.cpp" line="410" />
         <source>Undone: %1.</source>
         <translation>元に戻しました: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="411" />
+        <location filename="../app/gui/NcPidPage.cpp" line="412" />
         <source>, and %1</source>
         <translation>。また、%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="410" />
+        <location filename="../app/gui/NcPidPage.cpp" line="411" />
         <source>Undone: the gains that ran before are back (read back)%1.</source>
         <translation>元に戻しました: 以前のゲインに戻りました (読み戻し確認)%1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="390" />
+        <location filename="../app/gui/NcPidPage.cpp" line="391" />
         <source>Undo refused: %1. To put back what ran before all the same, tick the box below and press Undo anyway.</source>
         <translation>元に戻すことを拒否しました: %1。それでも以前の状態に戻すには、下のボックスにチェックを入れて「それでも元に戻す」を押してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="450" />
+        <location filename="../app/gui/NcPidPage.cpp" line="451" />
         <source>Notch f0 [Hz]</source>
         <translation>ノッチ f0 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="450" />
         <location filename="../app/gui/NcPidPage.cpp" line="451" />
+        <location filename="../app/gui/NcPidPage.cpp" line="452" />
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="452" />
+        <location filename="../app/gui/NcPidPage.cpp" line="453" />
         <source>Notch Q</source>
         <translation>ノッチ Q</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="454" />
+        <location filename="../app/gui/NcPidPage.cpp" line="455" />
         <source>Drive input</source>
         <translation>サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="461" />
-        <location filename="../app/gui/NcPidPage.cpp" line="466" />
+        <location filename="../app/gui/NcPidPage.cpp" line="462" />
+        <location filename="../app/gui/NcPidPage.cpp" line="467" />
         <source>Crossover [Hz]</source>
         <translation>交差周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="467" />
+        <location filename="../app/gui/NcPidPage.cpp" line="468" />
         <source>Phase margin [°]</source>
         <translation>位相余裕 [°]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="468" />
+        <location filename="../app/gui/NcPidPage.cpp" line="469" />
         <source>Gain margin [dB]</source>
         <translation>ゲイン余裕 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="469" />
+        <location filename="../app/gui/NcPidPage.cpp" line="470" />
         <source>Motion time [s]</source>
         <translation>動作時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="481" />
+        <location filename="../app/gui/NcPidPage.cpp" line="482" />
         <source>measured, running gains</source>
         <translation>測定、現在のゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="483" />
+        <location filename="../app/gui/NcPidPage.cpp" line="484" />
         <source>predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="486" />
+        <location filename="../app/gui/NcPidPage.cpp" line="487" />
         <source>verified (measured after applying)</source>
         <translation>検証 (適用後に測定)</translation>
     </message>
@@ -6356,166 +6356,166 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::NotchProposePage</name>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="334" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="335" />
         <source>Resonances and proposed notches</source>
         <translation>共振と提案するノッチフィルタ</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="335" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="336" />
         <source>One notch per resonance, within the execution rate's limits; existing filters stay as they are. Edit centre, width or depth: the prediction and the margins follow.</source>
         <translation>共振ごとに 1 つのノッチ (実行周期の制限内)。既存のフィルタはそのまま残します。中心周波数、帯域幅、深さを編集すると、予測と余裕が更新されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="348" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="349" />
         <source>Smallest resonance height:</source>
         <translation>共振の最小の高さ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="354" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="355" />
         <source>Resonance [Hz]</source>
         <translation>共振 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="354" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="355" />
         <source>Height [dB]</source>
         <translation>高さ [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="354" />
-        <location filename="../app/gui/NotchWizardPages.cpp" line="357" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="355" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="358" />
         <source>Width [Hz]</source>
         <translation>帯域幅 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="354" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="355" />
         <source>Open loop [dB]</source>
         <translation>開ループ [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="357" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="358" />
         <source>Slot</source>
         <translation>スロット</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="357" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="358" />
         <source>Centre [Hz]</source>
         <translation>中心周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="357" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="358" />
         <source>Depth</source>
         <translation>深さ</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="363" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="364" />
         <source>Remove notch</source>
         <translation>ノッチを削除</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="365" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="366" />
         <source>Back to the proposal</source>
         <translation>提案に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="376" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="377" />
         <source>Margin</source>
         <translation>余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="376" />
-        <location filename="../app/gui/NotchWizardPages.cpp" line="468" />
-        <location filename="../app/gui/NotchWizardPages.cpp" line="547" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="377" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="469" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="548" />
         <source>Measured</source>
         <translation>測定値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="376" />
-        <location filename="../app/gui/NotchWizardPages.cpp" line="614" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="377" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="615" />
         <source>Predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="430" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="431" />
         <source>No frequency response to analyse.</source>
         <translation>解析する周波数応答がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="478" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="479" />
         <source>Reading the existing filters and the execution rate of axis %1…</source>
         <translation>軸 %1 の既存フィルタと実行周期を読み出し中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="486" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="487" />
         <source>Not connected to axis %1: execution rate %2 Hz assumed, existing filters unknown.</source>
         <translation>軸 %1 に未接続: 実行周波数を %2 Hz と仮定、既存のフィルタは不明。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="499" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="500" />
         <source>Reading the parameters failed: %1</source>
         <translation>パラメータの読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="525" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="526" />
         <source>Analysing…</source>
         <translation>解析中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="578" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="579" />
         <source>Row %1: not a number.</source>
         <translation>%1 行目: 数値ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="583" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="584" />
         <source>Slot %1: edited by the operator (centre %2 Hz, width %3 Hz, depth %4).</source>
         <translation>スロット %1: 作業者が編集 (中心周波数 %2 Hz、帯域幅 %3 Hz、深さ %4)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="590" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="591" />
         <source>Not realisable at %1 Hz: %2</source>
         <translation>%1 Hz では実現できません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="609" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="610" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="612" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="613" />
         <source>N%1 %2 Hz</source>
         <translation>N%1 %2 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="619" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="620" />
         <source>%1 resonances found, %2 notches proposed for axis %3 (execution rate %4 Hz, %5 of %6 slots free).</source>
         <translation>共振 %1 個、軸 %3 にノッチ %2 個を提案 (実行周波数 %4 Hz、空きスロット %5 / %6)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="634" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="635" />
         <source>Slot %1 keeps its filter (centre %2 Hz, width %3 Hz, depth %4): existing filters are never removed.</source>
         <translation>スロット %1 はフィルタを維持 (中心周波数 %2 Hz、帯域幅 %3 Hz、深さ %4): 既存のフィルタは削除しません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="640" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="641" />
         <source>No notch at %1 Hz: %2</source>
         <translation>%1 Hz にはノッチなし: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="642" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="643" />
         <source>Analysis failed: %1</source>
         <translation>解析に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="438" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="439" />
         <source>Asking the drive what axis %1 is…</source>
         <translation>軸 %1 の種類をサーボアンプに問い合わせています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="38" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="39" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): it has no drive filter slots for this proposal. Next measures its open loop with the gains that run and proposes LinuxCNC's biquad notch after the PID output (net %3).</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。この提案のためのサーボアンプのフィルタスロットはありません。「次へ」で現在のゲインのまま開ループを測定し、PID 出力 (ネット %3) の後に LinuxCNC の biquad ノッチを提案します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="464" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="465" />
         <source>Axis %1: this wizard applies no notch here; why, and what to use instead, is below.</source>
         <translation>軸 %1: このウィザードではここにノッチフィルタを適用できません。理由と代わりに使うものは下に示します。</translation>
     </message>
@@ -6523,32 +6523,32 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::NotchSavePage</name>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="731" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="732" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="732" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="733" />
         <source>The session keeps the measured, predicted and verification responses, the resonances, the notches with their rules, the margins, the parameter sets and the journal.</source>
         <translation>セッションには、測定・予測・検証の応答、共振、ノッチとそのルール、余裕、パラメータセット、変更履歴が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="745" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="746" />
         <source>Session %1 saved (kind “notch”).</source>
         <translation>セッション %1 を保存しました (種類 “notch”)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="746" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="747" />
         <source>The session could not be saved (see the log).</source>
         <translation>セッションを保存できませんでした (ログを参照)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="748" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="749" />
         <source>%1 notches applied to axis %2 and read back.</source>
         <translation>軸 %2 にノッチ %1 個を適用し、読み出して確認しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="749" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="750" />
         <source>The notches were not applied; the proposal is kept in the session.</source>
         <translation>ノッチは適用されていません。提案はセッションに保存されます。</translation>
     </message>
@@ -6556,92 +6556,92 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::NotchSourcePage</name>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="170" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="171" />
         <source>Frequency response</source>
         <translation>周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="171" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="172" />
         <source>The notches are placed on a measured velocity-loop frequency response: measure a new one, or take one from a saved session of this machine.</source>
         <translation>ノッチは測定した速度ループの周波数応答をもとに配置します: 新しく測定するか、この機械の保存済みセッションから選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="174" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="175" />
         <source>New measurement (multi-sweep, up to just below the trace rate)</source>
         <translation>新しい測定 (複数回掃引、トレース周波数の直下まで)</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="176" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="177" />
         <source>Frequency response from a saved session</source>
         <translation>保存済みセッションの周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="180" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="181" />
         <source>Measurement</source>
         <translation>測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="192" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="193" />
         <source>0.975 × trace rate</source>
         <translation>0.975 × トレース周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="201" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="202" />
         <source> % of rated torque</source>
         <translation> % (定格トルク比)</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="202" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="203" />
         <source>Lowest frequency:</source>
         <translation>最低周波数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="203" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="204" />
         <source>Highest frequency:</source>
         <translation>最高周波数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="204" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="205" />
         <source>Frequencies (log-spaced):</source>
         <translation>周波数点数 (対数間隔):</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="205" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="206" />
         <source>Amplitude:</source>
         <translation>振幅:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="239" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="240" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2). A new measurement measures its open loop and proposes LinuxCNC's biquad notch after the PID output (net %3) for the gains that run.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。新しい測定では開ループを測定し、現在のゲインに対して PID 出力 (ネット %3) の後に LinuxCNC の biquad ノッチを提案します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="252" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="253" />
         <source>No store is open: only a new measurement is possible.</source>
         <translation>データベースが開かれていません: 新しい測定のみ可能です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="257" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="258" />
         <source>Reading the sessions failed: %1</source>
         <translation>セッションの読み出しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="269" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="270" />
         <source>Session %1 (%2, axis %3, %4): %5</source>
         <translation>セッション %1 (%2、軸 %3、%4): %5</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="279" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="280" />
         <source>No saved session of this machine holds a frequency response.</source>
         <translation>この機械の保存済みセッションに周波数応答はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="303" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="304" />
         <source>Reading session %1 failed: %2</source>
         <translation>セッション %1 の読み出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="311" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="312" />
         <source>Session %1, %2: %3</source>
         <translation>セッション %1、%2: %3</translation>
     </message>
@@ -6649,74 +6649,74 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::NotchVerifyPage</name>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="673" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="674" />
         <source>Verification</source>
         <translation>検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="674" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="675" />
         <source>The new measurement with the notches, overlaid on the prediction and on the first measurement.</source>
         <translation>ノッチを入れた新しい測定を、予測および最初の測定に重ねて表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="685" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="686" />
         <source>Notch [Hz]</source>
         <translation>ノッチ [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="685" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="686" />
         <source>Before [dB]</source>
         <translation>適用前 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="685" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="686" />
         <source>Predicted [dB]</source>
         <translation>予測 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="685" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="686" />
         <source>Measured [dB]</source>
         <translation>測定 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="687" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="688" />
         <source>Margin</source>
         <translation>余裕</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="687" />
-        <location filename="../app/gui/NotchWizardPages.cpp" line="697" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="688" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="698" />
         <source>Before</source>
         <translation>適用前</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="687" />
-        <location filename="../app/gui/NotchWizardPages.cpp" line="698" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="688" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="699" />
         <source>Predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="687" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="688" />
         <source>Measured</source>
         <translation>測定値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="699" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="700" />
         <source>After</source>
         <translation>適用後</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="702" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="703" />
         <source>N%1</source>
         <translation>N%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="706" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="707" />
         <source>No point of the verification could be compared with the prediction.</source>
         <translation>検証の点のうち、予測と比較できるものがありませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NotchWizardPages.cpp" line="707" />
+        <location filename="../app/gui/NotchWizardPages.cpp" line="708" />
         <source>Prediction against measurement: largest deviation %1 dB at %2 Hz, rms %3 dB, over %4 valid points from %5 Hz to %6 Hz (points where both lie below −50 dB are left out).</source>
         <translation>予測と測定の比較: 最大偏差 %1 dB (%2 Hz)、rms %3 dB、%5 Hz から %6 Hz の有効な %4 点 (両方が −50 dB 未満の点は除外)。</translation>
     </message>
@@ -6986,42 +6986,42 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::ScopeDock</name>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="540" />
+        <location filename="../app/gui/ScopeDock.cpp" line="541" />
         <source>Stopped</source>
         <translation>停止中</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="542" />
+        <location filename="../app/gui/ScopeDock.cpp" line="543" />
         <source>Armed: filling the pre-trigger</source>
         <translation>待機中: プリトリガを記録中</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="544" />
+        <location filename="../app/gui/ScopeDock.cpp" line="545" />
         <source>Waiting for the trigger</source>
         <translation>トリガ待ち</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="546" />
+        <location filename="../app/gui/ScopeDock.cpp" line="547" />
         <source>Triggered</source>
         <translation>トリガ成立</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="548" />
+        <location filename="../app/gui/ScopeDock.cpp" line="549" />
         <source>Capture complete</source>
         <translation>記録完了</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="550" />
+        <location filename="../app/gui/ScopeDock.cpp" line="551" />
         <source>Rolling</source>
         <translation>ロール表示中</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="552" />
+        <location filename="../app/gui/ScopeDock.cpp" line="553" />
         <source>Offline review</source>
         <translation>オフライン表示</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="83" />
+        <location filename="../app/gui/ScopeDock.cpp" line="84" />
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
@@ -7187,236 +7187,236 @@ Read the axis's parameters to see what the drive holds.</source>
         <translation>CSV を開く…</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="169" />
+        <location filename="../app/gui/ScopeDock.cpp" line="170" />
         <source>The drive offers no scope on axis %1: %2</source>
         <translation>軸 %1 のドライブにはスコープがありません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="267" />
+        <location filename="../app/gui/ScopeDock.cpp" line="268" />
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="267" />
+        <location filename="../app/gui/ScopeDock.cpp" line="268" />
         <source> deg</source>
         <translation> deg</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="268" />
+        <location filename="../app/gui/ScopeDock.cpp" line="269" />
         <source> mm/s</source>
         <translation> mm/s</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="268" />
+        <location filename="../app/gui/ScopeDock.cpp" line="269" />
         <source> deg/s</source>
         <translation> deg/s</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="269" />
+        <location filename="../app/gui/ScopeDock.cpp" line="270" />
         <source> mm/s²</source>
         <translation> mm/s²</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="269" />
+        <location filename="../app/gui/ScopeDock.cpp" line="270" />
         <source> deg/s²</source>
         <translation> deg/s²</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="275" />
+        <location filename="../app/gui/ScopeDock.cpp" line="276" />
         <source>Sample rate: (no scope)</source>
         <translation>サンプリング周波数: (スコープなし)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="279" />
+        <location filename="../app/gui/ScopeDock.cpp" line="280" />
         <source>Sample rate: %1 Hz (drive's fastest %2 Hz / %3)</source>
         <translation>サンプリング周波数: %1 Hz (ドライブの最速 %2 Hz / %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="321" />
+        <location filename="../app/gui/ScopeDock.cpp" line="322" />
         <source>The drive's scope channels are not known yet (axis %1)</source>
         <translation>ドライブのスコープのチャンネルをまだ取得していません (軸 %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="327" />
+        <location filename="../app/gui/ScopeDock.cpp" line="328" />
         <source>Channels: tick at least one channel</source>
         <translation>チャンネル: 少なくとも 1 つのチャンネルにチェックを入れてください</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="337" />
+        <location filename="../app/gui/ScopeDock.cpp" line="338" />
         <source>Trigger channel: choose one of the ticked channels</source>
         <translation>トリガチャンネル: チェックしたチャンネルから選んでください</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="345" />
+        <location filename="../app/gui/ScopeDock.cpp" line="346" />
         <source>Length: %1 s is shorter than two samples at %2 Hz</source>
         <translation>記録長: %1 s は %2 Hz の 2 サンプルより短いです</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="376" />
+        <location filename="../app/gui/ScopeDock.cpp" line="377" />
         <source>Scope armed on axis %1: %2, %3 channels</source>
         <translation>軸 %1 のスコープを開始: %2、%3 チャンネル</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="377" />
+        <location filename="../app/gui/ScopeDock.cpp" line="378" />
         <source>roll mode</source>
         <translation>ロールモード</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="377" />
+        <location filename="../app/gui/ScopeDock.cpp" line="378" />
         <source>single capture</source>
         <translation>シングル記録</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="377" />
+        <location filename="../app/gui/ScopeDock.cpp" line="378" />
         <source>normal mode</source>
         <translation>ノーマルモード</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="388" />
+        <location filename="../app/gui/ScopeDock.cpp" line="389" />
         <source>The drive refused the scope: %1</source>
         <translation>ドライブがスコープの設定を拒否しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="389" />
+        <location filename="../app/gui/ScopeDock.cpp" line="390" />
         <source>Scope: %1</source>
         <translation>スコープ: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="433" />
         <location filename="../app/gui/ScopeDock.cpp" line="434" />
+        <location filename="../app/gui/ScopeDock.cpp" line="435" />
         <source>Scope stopped: %1</source>
         <translation>スコープが停止しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="448" />
+        <location filename="../app/gui/ScopeDock.cpp" line="449" />
         <source>%1 samples were lost (overwritten in the drive before they were read); the gaps are in the sample numbers</source>
         <translation>%1 サンプルが失われました (読み出す前にドライブ内で上書きされました)。欠落はサンプル番号に現れます</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="465" />
+        <location filename="../app/gui/ScopeDock.cpp" line="466" />
         <source>Scope capture %1 on axis %2: %3 samples, trigger at sample %4</source>
         <translation>スコープ記録 %1 (軸 %2): %3 サンプル、トリガはサンプル %4</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="66" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="68" />
         <source>No capture to export</source>
         <translation>書き出す記録がありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="90" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="92" />
         <source>Export the capture as CSV</source>
         <translation>記録を CSV に書き出し</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="91" />
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="240" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="93" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="242" />
         <source>Scope CSV (*.csv)</source>
         <translation>スコープ CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="96" />
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="109" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="98" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="111" />
         <source>Written: %1</source>
         <translation>書き出しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="103" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="105" />
         <source>Export the plot</source>
         <translation>グラフの書き出し</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="104" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="106" />
         <source>Images (*.png *.svg *.pdf)</source>
         <translation>画像 (*.png *.svg *.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="118" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="120" />
         <source>No capture to save</source>
         <translation>保存する記録がありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="123" />
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="155" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="125" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="157" />
         <source>No store is open (Settings → Preferences)</source>
         <translation>ストアが開かれていません (設定 → 環境設定)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="138" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="140" />
         <source>Capture saved in the store as session %1</source>
         <translation>記録をセッション %1 としてストアに保存しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="141" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="143" />
         <source>The capture was not saved: %1</source>
         <translation>記録は保存されませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="164" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="166" />
         <source>Session %1: %2</source>
         <translation>セッション %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="169" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="171" />
         <source>store session %1</source>
         <translation>ストアのセッション %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="172" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="174" />
         <source>Session %1 (%2, axis %3) from the store</source>
         <translation>ストアのセッション %1 (%2、軸 %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="177" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="179" />
         <source>Session %1 holds no scope capture</source>
         <translation>セッション %1 にはスコープの記録がありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="194" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="196" />
         <source>Session %1: %2, axis %3, %4</source>
         <translation>セッション %1: %2、軸 %3、%4</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="198" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="200" />
         <source>The store holds no scope capture</source>
         <translation>ストアにスコープの記録がありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="203" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="205" />
         <source>Open a saved capture</source>
         <translation>保存した記録を開く</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="203" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="205" />
         <source>Capture:</source>
         <translation>記録:</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="233" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="235" />
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDockFiles.cpp" line="240" />
+        <location filename="../app/gui/ScopeDockFiles.cpp" line="242" />
         <source>Open a scope CSV</source>
         <translation>スコープ CSV を開く</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="591" />
+        <location filename="../app/gui/ScopeDock.cpp" line="592" />
         <source>Jog: not connected</source>
         <translation>ジョグ: 接続されていません</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="606" />
+        <location filename="../app/gui/ScopeDock.cpp" line="607" />
         <source>Jog on axis %1: %2 at %3%4</source>
         <translation>軸 %1 のジョグ: %2、速度 %3%4</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="608" />
+        <location filename="../app/gui/ScopeDock.cpp" line="609" />
         <source>, back and forth</source>
         <translation>、往復</translation>
     </message>
     <message>
-        <location filename="../app/gui/ScopeDock.cpp" line="626" />
+        <location filename="../app/gui/ScopeDock.cpp" line="627" />
         <source>Jog: %1</source>
         <translation>ジョグ: %1</translation>
     </message>
@@ -7515,7 +7515,7 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::SessionOverlay</name>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="302" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="304" />
         <source>session %1: %2</source>
         <translation>セッション %1: %2</translation>
     </message>
@@ -7643,165 +7643,165 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::SessionView</name>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="113" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="114" />
         <source>&lt;b&gt;Session %1&lt;/b&gt; — %2, machine %3, axis %4, %5 … %6, operator %7, status %8%9</source>
         <translation>&lt;b&gt;セッション %1&lt;/b&gt; — %2、機械 %3、軸 %4、%5 … %6、作業者 %7、状態 %8%9</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="116" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="117" />
         <source>(none)</source>
         <translation>(なし)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="120" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="121" />
         <source>&lt;br&gt;Note: %1</source>
         <translation>&lt;br&gt;メモ: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="126" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="127" />
         <source>Export captures as CSV…</source>
         <translation>計測データを CSV で書き出し…</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="127" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="128" />
         <source>Export plots…</source>
         <translation>プロットを書き出し…</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="149" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="150" />
         <source>Frequency response</source>
         <translation>周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="161" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="162" />
         <source>Trace: %1</source>
         <translation>トレース: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="171" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="172" />
         <source>Key</source>
         <translation>キー</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="171" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="172" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="173" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="174" />
         <source>inputs</source>
         <translation>入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="175" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="176" />
         <source>result: %1</source>
         <translation>結果: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="179" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="180" />
         <source>[%1 values]</source>
         <translation>[%1 個の値]</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="183" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="184" />
         <source>Inputs and results</source>
         <translation>入力と結果</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="185" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="193" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="186" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="194" />
         <source>Axis</source>
         <translation>軸</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="185" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="186" />
         <source>Source</source>
         <translation>出所</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="185" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="193" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="186" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="194" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="185" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="193" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="186" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="194" />
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="185" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="186" />
         <source>Value (SI)</source>
         <translation>値 (SI)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="185" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="186" />
         <source>Note</source>
         <translation>メモ</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="191" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="192" />
         <source>Parameter sets</source>
         <translation>パラメータセット</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="193" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="194" />
         <source>Old (SI)</source>
         <translation>旧値 (SI)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="193" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="194" />
         <source>New (SI)</source>
         <translation>新値 (SI)</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="196" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="198" />
         <source>not recorded</source>
         <translation>記録なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="198" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="200" />
         <source>Journal</source>
         <translation>変更履歴</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="262" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="264" />
         <source>Export captures to</source>
         <translation>計測データの書き出し先</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="268" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="285" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="270" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="287" />
         <source>Export failed</source>
         <translation>書き出しに失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="270" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="287" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="272" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="289" />
         <source>Export</source>
         <translation>書き出し</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/SessionReviewView.cpp" line="270" />
-        <location filename="../app/gui/SessionReviewView.cpp" line="287" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="272" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="289" />
         <source>%n file(s) written to %1</source>
         <translation>
             <numerusform>%1 に %n 個のファイルを書き出しました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="275" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="277" />
         <source>Export plots to</source>
         <translation>プロットの書き出し先</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="279" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="281" />
         <source>Image format</source>
         <translation>画像形式</translation>
     </message>
     <message>
-        <location filename="../app/gui/SessionReviewView.cpp" line="279" />
+        <location filename="../app/gui/SessionReviewView.cpp" line="281" />
         <source>Format:</source>
         <translation>形式:</translation>
     </message>
@@ -7921,168 +7921,168 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::TwoInertiaFilterPage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="361" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="362" />
         <source>Suppression filter and predicted load error</source>
         <translation>振動抑制フィルタと負荷側誤差の予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="362" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="363" />
         <source>Semi-closed: F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) on the position command (5.7). Full-closed: F_L = F_m/(τs + 1) on the velocity command (5.9). Start values from the model: f₀ and the zero damping ζ₀ (not ζ_p). The drive's position.feedback decides which filter it runs.</source>
         <translation>セミクローズド: 位置指令に F_m = (s² + 2ζω₀s + ω₀²)/(2ζω₀s + ω₀²) (5.7)。フルクローズド: 速度指令に F_L = F_m/(τs + 1) (5.9)。初期値はモデルから: f₀ と零点の減衰比 ζ₀ (ζ_p ではありません)。どちらのフィルタを使うかはサーボアンプの position.feedback で決まります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="370" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="371" />
         <source>Semi-closed (F_m)</source>
         <translation>セミクローズド (F_m)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="370" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="371" />
         <source>Full-closed (F_L)</source>
         <translation>フルクローズド (F_L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="372" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="373" />
         <source>0: high-frequency gain 1/(2ζω₀τ) = 2.5</source>
         <translation>0: 高周波ゲイン 1/(2ζω₀τ) = 2.5</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="376" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="377" />
         <source>Feedback:</source>
         <translation>フィードバック:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="377" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="378" />
         <source>F_L time constant τ:</source>
         <translation>F_L の時定数 τ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="378" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="379" />
         <source>Profile speed:</source>
         <translation>プロファイルの速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="379" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="380" />
         <source>Acceleration:</source>
         <translation>加速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="380" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="381" />
         <source>Jerk:</source>
         <translation>加加速度:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="382" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="383" />
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="382" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="383" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="389" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="390" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="389" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="390" />
         <source>Load error y_L − y*</source>
         <translation>負荷側誤差 y_L − y*</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="422" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="423" />
         <source>Set by the axis's position.feedback</source>
         <translation>軸の position.feedback で決まります</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="458" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="459" />
         <source>without filter</source>
         <translation>フィルタなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="459" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="460" />
         <source>with F_m</source>
         <translation>F_m あり</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="464" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="465" />
         <source>Filter frequency f₀</source>
         <translation>フィルタ周波数 f₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="464" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="465" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="465" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="466" />
         <source>Filter damping ζ</source>
         <translation>フィルタの減衰 ζ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="467" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="468" />
         <source>Time constant τ</source>
         <translation>時定数 τ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="467" />
         <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="468" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="469" />
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="468" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="469" />
         <source>First-order lag T₁ = 2ζ/ω₀</source>
         <translation>1 次遅れ T₁ = 2ζ/ω₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="469" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="470" />
         <source>Velocity K_P (TI-5, ω_l 24 Hz, k 10)</source>
         <translation>速度 K_P (TI-5、ω_l 24 Hz、k 10)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="471" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="472" />
         <source>Velocity K_I (TI-5)</source>
         <translation>速度 K_I (TI-5)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="472" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="473" />
         <source>Drive filter suppression.mode</source>
         <translation>サーボアンプのフィルタ suppression.mode</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="473" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="474" />
         <source>2 (full-closed F_L)</source>
         <translation>2 (フルクローズド F_L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="473" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="474" />
         <source>1 (semi-closed F_m)</source>
         <translation>1 (セミクローズド F_m)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="474" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="475" />
         <source>Torque feedforward inertia J_m + J_L</source>
         <translation>トルクフィードフォワードのイナーシャ J_m + J_L</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="477" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="478" />
         <source>Predicted maximum load error: %1° without the filter, %2° with F_m (ideal motor tracking, load through (5.6)).</source>
         <translation>負荷側誤差の最大値の予測: フィルタなし %1°、F_m あり %2° (モータは理想追従、負荷は (5.6) で計算)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="482" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="483" />
         <source>F_L acts inside the full-closed loop: the prediction with the filter is the semi-closed one.</source>
         <translation>F_L はフルクローズドのループ内で働くため、フィルタありの予測はセミクローズドのものです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="483" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="484" />
         <source>The proposal writes the filter to the drive (suppression.mode, f0, zeta%1), the velocity PI of the thesis rule K_P = k√2·ω_l·J_m, K_I = k·ω_l²·J_m on the fitted J_m, and the velocity and torque feedforward the method needs. The profile runs once before and once after the change.</source>
         <translation>提案では、フィルタ (suppression.mode、f0、zeta%1) をサーボアンプに書き込み、同定した J_m に論文の規則 K_P = k√2·ω_l·J_m、K_I = k·ω_l²·J_m による速度 PI と、この手法に必要な速度・トルクフィードフォワードを適用します。プロファイルは変更の前と後に 1 回ずつ実行します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="488" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="489" />
         <source>Not connected to the axis: the mode is chosen here, and the settings are only stored.</source>
         <translation>軸に接続されていません: モードはここで選択し、設定は保存のみ行います。</translation>
     </message>
@@ -8090,153 +8090,153 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::TwoInertiaFitPage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="163" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="164" />
         <source>Two-inertia model</source>
         <translation>2慣性系モデル</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="164" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="165" />
         <source>Torque → motor velocity P_m with the fitted model (5.1) over it: anti-resonance f₀ = √(K/J_L)/2π (zero), resonance f_p = √(K(1/J_m + 1/J_L))/2π (pole), and the residual model/measured.</source>
         <translation>トルク → モータ速度 P_m と、それに重ねた同定モデル (5.1): 反共振 f₀ = √(K/J_L)/2π (零点)、共振 f_p = √(K(1/J_m + 1/J_L))/2π (極)、およびモデル/測定の残差。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="173" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="174" />
         <source>Frequency</source>
         <translation>周波数</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="173" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="174" />
         <source>Residual model/measured</source>
         <translation>残差 モデル/測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="173" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="174" />
         <source>dB, °</source>
         <translation>dB, °</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="178" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="179" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="178" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="179" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="203" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="204" />
         <source>No response to fit.</source>
         <translation>同定する応答がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="208" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="209" />
         <source>Fitting…</source>
         <translation>同定中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="300" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="301" />
         <source>measured P_m</source>
         <translation>測定した P_m</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="302" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="303" />
         <source>Fit failed: %1</source>
         <translation>同定に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="319" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="320" />
         <source>two-inertia model</source>
         <translation>2慣性系モデル</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="323" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="324" />
         <source>f₀ %1 Hz, ζ₀ %2</source>
         <translation>f₀ %1 Hz、ζ₀ %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="325" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="326" />
         <source>f_p %1 Hz, ζ_p %2</source>
         <translation>f_p %1 Hz、ζ_p %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="327" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="328" />
         <source>magnitude [dB]</source>
         <translation>ゲイン [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="328" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="329" />
         <source>phase [°]</source>
         <translation>位相 [°]</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="330" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="331" />
         <source>Anti-resonance f₀</source>
         <translation>反共振 f₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="330" />
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="332" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="331" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="333" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="331" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="332" />
         <source>Zero damping ζ₀</source>
         <translation>零点の減衰 ζ₀</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="332" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="333" />
         <source>Resonance f_p</source>
         <translation>共振 f_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="333" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="334" />
         <source>Pole damping ζ_p</source>
         <translation>極の減衰 ζ_p</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="334" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="335" />
         <source>Motor inertia J_m</source>
         <translation>モータ側イナーシャ J_m</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="335" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="336" />
         <source>Load inertia J_L</source>
         <translation>負荷側イナーシャ J_L</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="336" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="337" />
         <source>Stiffness K</source>
         <translation>剛性 K</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="337" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="338" />
         <source>Damping C</source>
         <translation>減衰 C</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="338" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="339" />
         <source>Delay</source>
         <translation>遅れ</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="339" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="340" />
         <source>Fit error (rms relative)</source>
         <translation>同定誤差 (相対 rms)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="340" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="341" />
         <source>Check f_p/f₀ = √(1 + J_L/J_m)</source>
         <translation>確認 f_p/f₀ = √(1 + J_L/J_m)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="341" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="342" />
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="343" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="344" />
         <source>Fit over %1–%2 Hz, %3 points, %4 iterations. The response was converted from the closed velocity loop with K_P %5 N·m·s/rad, K_I %6 N·m/rad when it was one.</source>
         <translation>%1–%2 Hz で同定、%3 点、反復 %4 回。速度閉ループの応答の場合は K_P %5 N·m·s/rad、K_I %6 N·m/rad で変換しました。</translation>
     </message>
@@ -8244,57 +8244,57 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::TwoInertiaSavePage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="53" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="54" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="54" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="55" />
         <source>The session holds the measured response, the plant, the fitted model, the filter settings, the predicted load error, what was applied with its journal, and the verification.</source>
         <translation>セッションには、測定した応答、プラント、同定モデル、フィルタ設定、負荷側誤差の予測、適用した内容とその履歴、検証が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="74" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="75" />
         <source>Axis %1: anti-resonance f₀ %2 Hz, resonance f_p %3 Hz; filter %4: f₀ %5 Hz, ζ %6%7.</source>
         <translation>軸 %1: 反共振 f₀ %2 Hz、共振 f_p %3 Hz; フィルタ %4: f₀ %5 Hz、ζ %6%7。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="78" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="79" />
         <source>F_L (full-closed)</source>
         <translation>F_L (フルクローズド)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="78" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="79" />
         <source>F_m (semi-closed)</source>
         <translation>F_m (セミクローズド)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="82" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="83" />
         <source>, τ %1 ms</source>
         <translation>、τ %1 ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="86" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="87" />
         <source>Maximum load error of the profile: measured %1° with the filter (%2° before the change); predicted %3° without and %4° with the filter.</source>
         <translation>プロファイルでの負荷側誤差の最大値: 測定値はフィルタあり %1° (変更前 %2°)、予測値はフィルタなし %3°、フィルタあり %4° です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="93" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="94" />
         <source>Not connected: applying the filter and verifying with the profile need a connection.</source>
         <translation>未接続です: フィルタの適用とプロファイルでの検証には接続が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="95" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="96" />
         <source>Not applied: the proposal is kept in the session.</source>
         <translation>未適用: 提案はセッションに保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="96" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="97" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="97" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="98" />
         <source>The session was not saved (no store open).</source>
         <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
     </message>
@@ -8302,67 +8302,67 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::TwoInertiaSourcePage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="55" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="56" />
         <source>Two-inertia: low-frequency response</source>
         <translation>2慣性系: 低周波の応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="56" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="57" />
         <source>Measure the response of the velocity loop in the low band (torque injection, multi-sweep) or take a response from a saved session. The fit needs the anti-resonance and the resonance inside the band (thesis: 5–300 Hz).</source>
         <translation>低い帯域で速度ループの応答を測定するか (トルク注入、複数回掃引)、保存済みセッションの応答を使ってください。同定には帯域内に反共振と共振が必要です (論文: 5–300 Hz)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="61" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="62" />
         <source>Measure on the machine</source>
         <translation>機械で測定</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="63" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="64" />
         <source>From a saved session</source>
         <translation>保存済みセッションから</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="76" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="77" />
         <source>Band from:</source>
         <translation>帯域 下限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="77" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="78" />
         <source>to:</source>
         <translation>上限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="78" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="79" />
         <source>Frequencies (log-spaced):</source>
         <translation>周波数点数 (対数間隔):</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="79" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="80" />
         <source>Injection amplitude (of rated torque):</source>
         <translation>注入振幅 (定格トルク比):</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="85" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="86" />
         <source>Velocity loop of the measurement (read from the drive when connected)</source>
         <translation>測定時の速度ループ (接続中はサーボアンプから読み出し)</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="89" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="90" />
         <source>K_P:</source>
         <translation>K_P:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="90" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="91" />
         <source>K_I:</source>
         <translation>K_I:</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="108" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="109" />
         <source>Session %1: %2, %3 axis %4, %5</source>
         <translation>セッション %1: %2、%3 軸 %4、%5</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="119" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="120" />
         <source>Not connected: only saved responses can be used; apply and verify need a connection.</source>
         <translation>未接続: 保存済みの応答のみ使用できます。適用と検証には接続が必要です。</translation>
     </message>
@@ -8370,72 +8370,72 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::TwoInertiaVerifyPage</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="511" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="512" />
         <source>Verify with the profile</source>
         <translation>プロファイルで検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="512" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="513" />
         <source>The same profile as before the change, now with the filter: the measured load error y_L − y* against the prediction with and without the filter (ideal motor tracking), and the load − motor angle against the model's prediction from the measured motor motion (5.6).</source>
         <translation>変更前と同じプロファイルをフィルタありで実行します: 測定した負荷側誤差 y_L − y* をフィルタあり・なしの予測 (モータは理想追従) と比較し、負荷 − モータの角度を測定したモータの動きからモデルで予測した値 (5.6) と比較します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="518" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="519" />
         <source>Time from the start of the move</source>
         <translation>移動開始からの時間</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="518" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="519" />
         <source>Load error y_L − y*</source>
         <translation>負荷側誤差 y_L − y*</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="571" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="572" />
         <source>predicted without the filter</source>
         <translation>予測、フィルタなし</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="573" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="574" />
         <source>predicted with the filter</source>
         <translation>予測、フィルタあり</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="575" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="576" />
         <source>measured before the change</source>
         <translation>測定、変更前</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="577" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="578" />
         <source>measured with the filter</source>
         <translation>測定、フィルタあり</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="601" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="602" />
         <source>The trace lacks t_s, position_cmd_rad, motor_pos_rad, motor_vel_rad_s or table_pos_rad (a rotary axis with a load encoder is needed).</source>
         <translation>トレースに t_s、position_cmd_rad、motor_pos_rad、motor_vel_rad_s または table_pos_rad がありません (負荷側エンコーダのある回転軸が必要です)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="620" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="621" />
         <source>Maximum load error y_L − y* of the profile: measured with the filter %1°; predicted (ideal motor tracking) %2° without and %3° with the filter.</source>
         <translation>プロファイルでの負荷側誤差 y_L − y* の最大値: 測定値はフィルタあり %1°、予測値 (モータは理想追従) はフィルタなし %2°、フィルタあり %3° です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="627" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="628" />
         <source>Measured before the change: %1° (ratio with/before %2).</source>
         <translation>変更前の測定値: %1° (フィルタあり/変更前の比 %2)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="631" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="632" />
         <source>Measured with the filter / predicted without: %1 (the thesis reached 0.086, its criterion for a working filter is at most 0.2).</source>
         <translation>フィルタありの測定値/フィルタなしの予測値: %1 (論文の結果は 0.086、フィルタが有効と判断する基準は 0.2 以下)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="634" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="635" />
         <source>Maximum load − motor angle: measured %1°, predicted from the measured motor motion %2°.</source>
         <translation>負荷 − モータの角度の最大値: 測定値 %1°、測定したモータの動きからの予測値 %2°。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="592" />
+        <location filename="../app/gui/TwoInertiaWizardPages.cpp" line="593" />
         <source>No verification run.</source>
         <translation>検証は実行されていません。</translation>
     </message>
@@ -8443,27 +8443,27 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::TwoInertiaWizard</name>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="103" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="104" />
         <source>Two-inertia vibration suppression</source>
         <translation>2慣性系の振動抑制</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="108" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="109" />
         <source>Frequency response: a torque sine stream at the set amplitude is injected into the closed velocity loop (the axis oscillates about its position). Before and after applying the filter: one move with the profile's speed, acceleration and jerk (it does not return to the start).</source>
         <translation>周波数応答: 設定した振幅の正弦波トルクを閉じた速度ループに加振します (軸は現在位置の周りで振動します)。フィルタの適用前と適用後: プロファイルの速度・加速度・ジャークで 1 回移動します (開始位置には戻りません)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="131" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="132" />
         <source>Profile before the change</source>
         <translation>変更前のプロファイル</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="138" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="139" />
         <source>Refused: the profile is given in motor revolutions and runs on rotary axes only; axis %1 is linear (its jog would be read in metres). Measure the load error with the NC's own test.</source>
         <translation>拒否: プロファイルはモータの回転数で与えられるため回転軸でのみ実行します。軸 %1 は直線軸です（ジョグがメートル単位として解釈されます）。負荷側の誤差は NC 自身のテストで測定してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/TwoInertiaWizard.cpp" line="167" />
+        <location filename="../app/gui/TwoInertiaWizard.cpp" line="168" />
         <source>the suppression filter and gains</source>
         <translation>振動抑制フィルタとゲイン</translation>
     </message>
@@ -8666,37 +8666,37 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::VelocityLoopSavePage</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="39" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="40" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="40" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="41" />
         <source>The session holds the rule and its inputs, the proposed PI and position gain, the predicted loops with their margins, the steps before and after with the prediction, what was applied with its journal.</source>
         <translation>セッションには、規則とその入力、提案した PI と位置ゲイン、予測したループとその余裕、変更前後のステップ応答と予測、適用した内容とその履歴が保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="58" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="59" />
         <source>K_P = %1 N·m·s/rad, K_I = %2 N·m/rad; position gain %3 1/s.</source>
         <translation>K_P = %1 N·m·s/rad、K_I = %2 N·m/rad; 位置ゲイン %3 1/s。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="63" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="64" />
         <source>Not connected: nothing was applied.</source>
         <translation>未接続: 何も適用されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="65" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="66" />
         <source>Not applied: the proposal is kept in the session.</source>
         <translation>未適用: 提案はセッションに保存されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="66" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="67" />
         <source>Saved as session %1.</source>
         <translation>セッション %1 として保存しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="67" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="68" />
         <source>The session was not saved (no store open).</source>
         <translation>セッションは保存されませんでした (データベースが開かれていません)。</translation>
     </message>
@@ -8860,22 +8860,22 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::VelocityLoopWizard</name>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="73" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="74" />
         <source>Velocity and position loop</source>
         <translation>速度ループと位置ループ</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="78" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="79" />
         <source>A velocity step of the set size (motor side) in the velocity loop, before and after applying; with a measured response first a torque sine stream in the closed velocity loop.</source>
         <translation>適用の前後に、速度ループで設定した大きさ (モータ側) の速度ステップ。測定した応答を使う場合は、最初に速度閉ループで正弦波トルクを注入します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="131" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="132" />
         <source>the velocity-loop gains</source>
         <translation>速度ループゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/VelocityLoopWizard.cpp" line="140" />
+        <location filename="../app/gui/VelocityLoopWizard.cpp" line="141" />
         <source>The step after applying failed: %1</source>
         <translation>適用後のステップ応答が失敗しました: %1</translation>
     </message>
@@ -8959,87 +8959,87 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::widgets::TimeTracePlot</name>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="127" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="128" />
         <source>Velocity</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="129" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="130" />
         <source>Acceleration</source>
         <translation>加速度</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="131" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="132" />
         <source>Torque</source>
         <translation>トルク</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="133" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="134" />
         <source>Force</source>
         <translation>力</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="135" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="136" />
         <source>Current</source>
         <translation>電流</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="137" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="138" />
         <source>Voltage</source>
         <translation>電圧</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="139" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="140" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="141" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="142" />
         <source>Angle</source>
         <translation>角度</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="142" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="143" />
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="352" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="353" />
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="352" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="353" />
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="581" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="582" />
         <source>t1 = %1 s   t2 = %2 s   Δt = %3 s</source>
         <translation>t1 = %1 s   t2 = %2 s   Δt = %3 s</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="584" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="585" />
         <source>   1/Δt = %1 Hz</source>
         <translation>   1/Δt = %1 Hz</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="591" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="592" />
         <source>%1: %2%5 | %3%5 | Δ %4%5</source>
         <translation>%1: %2%5 | %3%5 | Δ %4%5</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="672" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="673" />
         <source>%1: the series have different time bases; export them one by one</source>
         <translation>%1: 系列ごとに時間軸が異なります。1 つずつ書き出ししてください</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="678" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="679" />
         <source>%1: nothing to export: the plot is empty</source>
         <translation>%1: 書き出しするものがありません (プロットが空です)</translation>
     </message>
     <message>
-        <location filename="../widgets/TimeTracePlot.cpp" line="705" />
+        <location filename="../widgets/TimeTracePlot.cpp" line="706" />
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: ファイルを書き込めません (%2)</translation>
     </message>
