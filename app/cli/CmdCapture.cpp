@@ -5,6 +5,7 @@
 #include "app/cli/SessionRecorder.h"
 #include "core/device/AdaptiveFrf.h"
 #include "core/device/Drive.h"
+#include "core/device/FrfQuantityName.h"
 #include "core/device/MoveTo.h"
 #include "core/device/MultisineTest.h"
 #include "core/device/SimulatedDrive.h"
@@ -296,11 +297,9 @@ int runCapture(const CaptureOptions& o)
         f.points = o.points;
         f.amplitudePct = o.amplitudePct;
         f.amplitudePeak = o.amplitude; // 0 unless given: the peak in the injection point's own units (hal:)
-        if (o.quantity == "plant")
-            f.quantity = device::FrfQuantity::Plant;
-        else if (o.quantity == "open-loop")
-            f.quantity = device::FrfQuantity::OpenLoop;
-        else if (o.quantity != "default")
+        if (const auto q = device::frfQuantityFromMetadataName(o.quantity))
+            f.quantity = *q;
+        else
             return reportError(cmd, makeError(ErrorCode::BadInput, "--quantity must be default, plant or open-loop (got '" +
                                                                        o.quantity + "')"));
         f.settleS = o.settle;

@@ -4,6 +4,7 @@
 // enforces; --list-backends prints the registered connection schemes with their settings.
 #include "app/cli/CliCommand.h"
 #include "core/device/DriveRegistry.h"
+#include "core/device/FrfQuantityName.h"
 
 #include <cmath>
 #include <memory>
@@ -94,7 +95,7 @@ int runDrive(const DriveOptions& o)
             tests.emplace_back(device::testTypeName(t));
         std::vector<std::string> quantities;
         for (const auto q : caps->frfQuantities)
-            quantities.emplace_back(q == device::FrfQuantity::OpenLoop ? "open-loop" : "plant");
+            quantities.emplace_back(device::frfQuantityMetadataName(q));
         for (const auto m : caps->frfMethods)
             methods.emplace_back(device::frfMethodName(m));
         axesJson[a] = {{"capabilities",

@@ -8,6 +8,7 @@
 #include "app/gui/NotchWizard.h"
 #include "app/gui/SessionReviewView.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/device/FrfQuantityName.h"
 #include "core/device/FrfTest.h"
 #include "core/model/Constants.h"
 #include "core/store/Database.h"
@@ -145,10 +146,8 @@ nlohmann::json FrfWizard::inputsJson() const
         if (std::isfinite(rated))
             j["amplitude_Nm"] = model::torqueNmFromRatedPct(r.amplitudePct, rated);
     }
-    if (r.quantity == device::FrfQuantity::Plant)
-        j["quantity"] = "plant";
-    else if (r.quantity == device::FrfQuantity::OpenLoop)
-        j["quantity"] = "open-loop";
+    if (r.quantity != device::FrfQuantity::Default)
+        j["quantity"] = device::frfQuantityMetadataName(r.quantity);
     j["connection"] = m_ctx.drive().uri().toStdString();
     if (std::isfinite(m_config->estimatedMotionS()))
         j["estimated_motion_s"] = m_config->estimatedMotionS();

@@ -6,6 +6,7 @@
 // (spec/current-loop-and-multisweep-frf.md §4.3 step 7).
 #include "app/gui/AppContext.h"
 #include "app/gui/FrfWizard.h"
+#include "core/device/FrfQuantityName.h"
 #include "core/dsp/LoopAnalysis.h"
 #include "core/model/Constants.h"
 #include "core/model/MetadataKeys.h"
@@ -38,6 +39,12 @@ namespace gui {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Whether a measured FRF's `quantity` metadata (FrfResultPage::quantity) names `q`.
+bool isQuantity(const QString& name, device::FrfQuantity q)
+{
+    return name.toStdString() == device::frfQuantityMetadataName(q);
+}
 
 double valueOr(const model::ParameterValues& v, const char* key, double fallback)
 {
@@ -527,12 +534,12 @@ void FrfResultPage::initializePage()
     }
     // The quantity and its units as the drive's metadata name them (hal:: the plant or the open position loop).
     const QString signal = m_outputSignal.isEmpty() ? tr("the drive input") : m_outputSignal;
-    if (m_quantity == QLatin1String("plant")) {
+    if (isQuantity(m_quantity, device::FrfQuantity::Plant)) {
         setSubTitle(tr("The measured plant: feedback per unit of drive input (%1 plus the injection), where it is "
                        "valid, and the resonances found.")
                         .arg(signal));
         m_plot->setMagnitudeTitle(tr("Plant [dB]"));
-    } else if (m_quantity == QLatin1String("open-loop")) {
+    } else if (isQuantity(m_quantity, device::FrfQuantity::OpenLoop)) {
         setSubTitle(tr("The measured open position loop with the running gains: −controller output / drive input "
                        "(dimensionless), where it is valid, and the resonances found."));
         m_plot->setMagnitudeTitle(tr("Open loop |L| [dB]"));
@@ -543,9 +550,9 @@ void FrfResultPage::initializePage()
     m_table->setHorizontalHeaderItem(3, new QTableWidgetItem(m_quantity.isEmpty()
                                                                  ? tr("Open-loop gain [dB]")
                                                                  : tr("Level of the analysed response [dB]")));
-    m_plot->addResponse(m_frf, m_quantity == QLatin1String("plant")       ? tr("Measured plant")
-                               : m_quantity == QLatin1String("open-loop") ? tr("Measured open loop")
-                                                                          : tr("Measured"));
+    m_plot->addResponse(m_frf, isQuantity(m_quantity, device::FrfQuantity::Plant)      ? tr("Measured plant")
+                               : isQuantity(m_quantity, device::FrfQuantity::OpenLoop) ? tr("Measured open loop")
+                                                                                       : tr("Measured"));
     addBands();
     m_plot->setFrequencyRange(m_frf.freqHz.front() / 1.15, m_frf.freqHz.back() * 1.15);
     m_summary->setText(tr("Analysing…"));
@@ -563,7 +570,7 @@ void FrfResultPage::initializePage()
                              ? QCoreApplication::translate("FrfResultPage", "the open loop L = T/(1−T) of the measured T")
                              : QCoreApplication::translate("FrfResultPage", "the measured response");
         const auto* q = frf.metadata.find(model::meta::kQuantity);
-        if (q && *q == "plant") {
+        if (q && *q == device::frfQuantityMetadataName(device::FrfQuantity::Plant)) {
             // A plant falls as its rigid body (f⁻² under torque, f⁻¹ under a velocity command), with an anti-resonance
             // before each resonance: its resonance is the peak of |P|·ω^order above the median of the band, as
             // pid-tune reads it (tuning::plantResonance), not an outlier of a local baseline.
@@ -647,12 +654,12 @@ void FrfResultPage::showAnalysis()
         valid += v ? 1 : 0;
     QString text = tr("%1 of %2 points valid.").arg(valid).arg(m_frf.size());
     const QString signal = m_outputSignal.isEmpty() ? tr("the drive input") : m_outputSignal;
-    if (m_quantity == QLatin1String("plant"))
+    if (isQuantity(m_quantity, device::FrfQuantity::Plant))
         text = tr("Plant in the feedback's position units per unit of %1 (the configuration's units, e.g. mm per "
                   "N·m).")
                    .arg(signal) +
                QLatin1Char(' ') + text;
-    else if (m_quantity == QLatin1String("open-loop"))
+    else if (isQuantity(m_quantity, device::FrfQuantity::OpenLoop))
         text = tr("Open position loop, dimensionless (controller output per unit of %1).").arg(signal) +
                QLatin1Char(' ') + text;
     if (m_fsHz > 0.0)

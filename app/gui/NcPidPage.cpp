@@ -3,6 +3,7 @@
 
 #include "app/gui/AppContext.h"
 #include "app/gui/WidgetUtil.h"
+#include "core/device/FrfQuantityName.h"
 #include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/store/Database.h"
@@ -46,7 +47,7 @@ dsp::FrequencyResponse loopFrf(const autotune::PidLoopMeasurement& m, const std:
     for (std::size_t k = 0; k < m.freqHz.size(); ++k)
         if (!notch || std::abs(tuning::biquadNotchResponse(*notch, 1.0 / m.servoRateHz, m.freqHz[k])) >= 1e-3)
             r.push(m.freqHz[k], l[k], NAN, true);
-    r.metadata.set(model::meta::kQuantity, "open-loop"); // as the drives write it (HalDrive, CLI --quantity)
+    r.metadata.set(model::meta::kQuantity, std::string(device::frfQuantityMetadataName(device::FrfQuantity::OpenLoop)));
     return r;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/device/hal/HalDrive.h"
 
+#include "core/device/FrfQuantityName.h"
 #include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/sim/MotionProfile.h"
@@ -192,7 +193,8 @@ Result<FrfMeasurement> evaluateHalFrf(const HalFrfPlan& plan, const HalRecord& r
     auto& md = out.frf.metadata;
     md.set(model::meta::kMethod, frfMethodName(plan.method));
     md.set(model::meta::kFsHz, plan.fsHz);
-    md.set(model::meta::kQuantity, openLoop ? "open-loop" : "plant");
+    md.set(model::meta::kQuantity,
+           std::string(frfQuantityMetadataName(openLoop ? FrfQuantity::OpenLoop : FrfQuantity::Plant)));
     md.set(model::meta::kInput, "drive_input"); // <pid>.output + injection: what the drive receives
     md.set(model::meta::kOutput, openLoop ? "-pid_output" : "feedback");
     md.set(model::meta::kHalUnits,

@@ -3,6 +3,7 @@
 // core's planFrfTest at the servo rate and evaluated by core's evaluateFrfSignals (FrfTest.h, the code the simulator
 // and the host evaluation use); the jog out and back and the position step, both an offset added to the pid's
 // command; the plan of a jog someone else makes (planExternalJog).
+#include "core/device/FrfQuantityName.h"
 #include "core/device/hal/HalDrive.h"
 #include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
@@ -120,7 +121,8 @@ Result<FrfMeasurement> evaluateHalStreams(const HalFrfPlan& plan, const HalRecor
     if (plan.method == FrfMethod::MultiSweep) {
         md.set(model::meta::kSettlePeriods, plan.streams->timing.settlePeriods);
         out.sweep.metadata.set(model::meta::kFsHz, plan.fsHz);
-        out.sweep.metadata.set(model::meta::kQuantity, openLoop ? "open-loop" : "plant");
+        out.sweep.metadata.set(model::meta::kQuantity, std::string(frfQuantityMetadataName(
+                                                           openLoop ? FrfQuantity::OpenLoop : FrfQuantity::Plant)));
     }
     return out;
 }
