@@ -164,22 +164,22 @@
 <context>
     <name>DriveController</name>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="35" />
+        <location filename="../app/gui/DriveController.cpp" line="36" />
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="153" />
+        <location filename="../app/gui/DriveController.cpp" line="154" />
         <source>Read-back of %1 on axis %2 gave %3 instead of %4</source>
         <translation>軸 %2 の %1 の読み出し値が %4 ではなく %3 でした</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="187" />
+        <location filename="../app/gui/DriveController.cpp" line="202" />
         <source>Aborted by the user</source>
         <translation>ユーザーにより中止されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="42" />
+        <location filename="../app/gui/DriveController.cpp" line="43" />
         <source>Aborted by the user before the test started</source>
         <translation>テスト開始前にユーザーにより中止されました</translation>
     </message>
@@ -282,12 +282,12 @@
         <translation>LinuxCNC を起動した INI</translation>
     </message>
     <message>
-        <location filename="../core/device/hal/HalDrive.cpp" line="763" />
+        <location filename="../core/device/hal/HalDrive.cpp" line="765" />
         <source>LinuxCNC HAL session</source>
         <translation>LinuxCNC の HAL セッション</translation>
     </message>
     <message>
-        <location filename="../core/device/hal/HalDrive.cpp" line="765" />
+        <location filename="../core/device/hal/HalDrive.cpp" line="767" />
         <source>Attaches to the running HAL session of LinuxCNC (or a bare HAL loop): an axis is a pid instance, units are the HAL's; halcmd from AXISTUNE_HALCMD (docs/linuxcnc.md).</source>
         <translation>動作中の LinuxCNC の HAL セッション (または HAL だけのループ) に接続します。軸は pid インスタンス、単位は HAL のものです。halcmd は AXISTUNE_HALCMD で指定できます (docs/linuxcnc.md)。</translation>
     </message>
@@ -310,27 +310,27 @@
 <context>
     <name>FrfResultPage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="48" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="55" />
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="563" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="638" />
         <source>the open loop L = T/(1−T) of the measured T</source>
         <translation>測定した T の開ループ L = T/(1−T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="564" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="639" />
         <source>the measured response</source>
         <translation>測定した応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="583" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="658" />
         <source>|plant|·ω² (flat for the rigid body of a torque drive; its peak at least 6 dB above its median)</source>
         <translation>|プラント|·ω² (トルク指令のサーボアンプでは剛体部分が平坦。ピークが中央値より 6 dB 以上高いもの)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="586" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="661" />
         <source>|plant|·ω (flat for a velocity drive; its peak at least 6 dB above its median)</source>
         <translation>|プラント|·ω (速度指令のサーボアンプでは平坦。ピークが中央値より 6 dB 以上高いもの)</translation>
     </message>
@@ -1164,7 +1164,7 @@
         <translation>電流ループ…</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="34" />
+        <location filename="../app/gui/FrfWizard.cpp" line="37" />
         <source>Frequency response…</source>
         <translation>周波数応答…</translation>
     </message>
@@ -3100,22 +3100,22 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::DriveController</name>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="252" />
+        <location filename="../app/gui/DriveController.cpp" line="267" />
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="309" />
+        <location filename="../app/gui/DriveController.cpp" line="324" />
         <source>Connected: %1</source>
         <translation>接続中: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="310" />
+        <location filename="../app/gui/DriveController.cpp" line="325" />
         <source>Connection to %1 failed: %2</source>
         <translation>%1 への接続に失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/DriveController.cpp" line="314" />
+        <location filename="../app/gui/DriveController.cpp" line="329" />
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
@@ -3123,114 +3123,144 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfConfigPage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="282" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="289" />
         <source>Method and band</source>
         <translation>方式と帯域</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="283" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="290" />
         <source>How the axis is excited and which frequencies are measured.</source>
         <translation>軸の加振方法と測定する周波数。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="365" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="331" />
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="332" />
+        <source>Motion time of all passes, at most:</source>
+        <translation>全パスの動作時間の上限:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="413" />
         <source>Multi-sweep sine stream (valid up to the trace rate)</source>
         <translation>複数回掃引の正弦波ストリーム (トレース周波数まで有効)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="366" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="414" />
         <source>Conventional sine stream (valid up to half the trace rate)</source>
         <translation>従来の正弦波ストリーム (トレース周波数の半分まで有効)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="367" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="415" />
         <source>PRBS with Welch averaging and coherence (up to half the trace rate)</source>
         <translation>PRBS、Welch 平均とコヒーレンス (トレース周波数の半分まで)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="368" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="416" />
         <source>Multisine, all lines at once (valid up to the trace rate)</source>
         <translation>マルチサイン、全周波数を同時に (トレース周波数まで有効)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="288" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="295" />
         <source>Method:</source>
         <translation>方式:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="299" />
         <location filename="../app/gui/FrfWizardPages.cpp" line="306" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="313" />
         <source> Hz</source>
         <translation> Hz</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="300" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="307" />
         <source>Lowest frequency:</source>
         <translation>最低周波数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="307" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="314" />
         <source>Highest frequency:</source>
         <translation>最高周波数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="312" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="319" />
         <source>Frequencies (log-spaced):</source>
         <translation>周波数点数 (対数間隔):</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="451" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="320" />
+        <source>Adaptive: excite the lines not yet valid again</source>
+        <translation>適応測定: まだ有効でない周波数線を再加振する</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="321" />
+        <source>After the first multisine, the lines not yet valid are excited again (shaped by 1/|H| and their noise, more periods where needed) until every line is valid or the time budget is spent.</source>
+        <translation>最初のマルチサインの後、まだ有効でない周波数線を再加振します (1/|H| とノイズで整形し、必要な所では周期数を増やす)。全線が有効になるか時間予算を使い切るまで続けます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="507" />
+        <source>&lt;span style='color:#b00000'&gt;The first pass takes %1 s of motion, more than the time budget of %2 s.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00000'&gt;最初のパスの動作時間は %1 s で、時間予算 %2 s を超えます。&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="512" />
+        <source>Estimated motion time of the first pass: %1 s (settling included); with the passes after it at most %2 s.</source>
+        <translation>最初のパスの推定動作時間: %1 s (整定を含む)。後続のパスを含めて最大 %2 s。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizardPages.cpp" line="517" />
         <source>Estimated motion time: %1 s (settling included).</source>
         <translation>推定動作時間: %1 s (整定時間を含む)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="431" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="452" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="480" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="502" />
         <source>&lt;span style='color:#b00000'&gt;The drive would refuse this test: %1&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;サーボアンプはこのテストを拒否します: %1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="407" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="456" />
         <source>Trace rate fs = %1 Hz. The multi-sweep and multisine methods measure up to fs; the conventional sine stream and PRBS only up to fs/2 = %2 Hz (points above are marked not valid).</source>
         <translation>トレース周波数 fs = %1 Hz。複数回掃引とマルチサインは fs まで測定できます。従来の正弦波ストリームと PRBS は fs/2 = %2 Hz までです (それより上の点は無効と表示)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="415" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="464" />
         <source>The trace rate of the drive is unknown.</source>
         <translation>サーボアンプのトレース周波数が不明です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="434" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="483" />
         <source>Estimating the motion time…</source>
         <translation>動作時間を推定中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="431" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="480" />
         <source>not connected</source>
         <translation>未接続</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="291" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="298" />
         <source>Measured quantity:</source>
         <translation>測定する量:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="380" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="428" />
         <source>Plant: feedback / drive input</source>
         <translation>プラント: フィードバック / サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="382" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="430" />
         <source>Open loop with the running gains: −controller output / drive input</source>
         <translation>現在のゲインでの開ループ: −制御器出力 / サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="397" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="446" />
         <source>Trace rate fs = %1 Hz. This drive measures lines below %2 Hz only; the band must end below that.</source>
         <translation>トレース周波数 fs = %1 Hz。このサーボアンプは %2 Hz 未満の周波数線しか測定できません。帯域はそれより下で終わる必要があります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="405" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="454" />
         <source>&lt;span style='color:#b00000'&gt;The drive offers no FRF method on this axis.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;このサーボアンプはこの軸で周波数応答の測定方法を提供していません。&lt;/span&gt;</translation>
     </message>
@@ -3238,132 +3268,132 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfResultPage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="466" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="530" />
         <source>Frequency response</source>
         <translation>周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="467" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="540" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="531" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="615" />
         <source>The measured closed velocity loop, where it is valid, and the resonances found.</source>
         <translation>測定した速度閉ループ (有効な範囲) と、見つかった共振。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="483" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="552" />
         <source>Frequency [Hz]</source>
         <translation>周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="483" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="552" />
         <source>Peak [dB]</source>
         <translation>ピーク [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="483" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="552" />
         <source>Width (−3 dB) [Hz]</source>
         <translation>帯域幅 (−3 dB) [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="484" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="544" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="553" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="619" />
         <source>Open-loop gain [dB]</source>
         <translation>開ループゲイン [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="525" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="600" />
         <source>No frequency response was measured.</source>
         <translation>周波数応答は測定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="548" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="623" />
         <source>Measured</source>
         <translation>測定値</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="551" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="626" />
         <source>Analysing…</source>
         <translation>解析中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="648" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="723" />
         <source>%1 of %2 points valid.</source>
         <translation>%2 点中 %1 点が有効。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="659" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="734" />
         <source>Trace rate fs = %1 Hz.</source>
         <translation>トレース周波数 fs = %1 Hz。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="661" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="736" />
         <source>No resonance list: %1</source>
         <translation>共振リストなし: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="663" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="738" />
         <source>No resonance found in %1.</source>
         <translation>%1 に共振は見つかりませんでした。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/FrfWizardPages.cpp" line="665" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="740" />
         <source>%n resonance(s) found in %1:</source>
         <translation>
             <numerusform>%1 に %n 個の共振が見つかりました:</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="676" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="751" />
         <source>Only one −3 dB crossing inside the band: twice the half width.</source>
         <translation>帯域内の −3 dB 交差が 1 つだけ: 半値幅の 2 倍。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="529" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="649" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="604" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="724" />
         <source>the drive input</source>
         <translation>サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="531" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="606" />
         <source>The measured plant: feedback per unit of drive input (%1 plus the injection), where it is valid, and the resonances found.</source>
         <translation>測定したプラント: サーボアンプ入力 (%1 + 注入信号) 1 単位あたりのフィードバック、その有効範囲、見つかった共振。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="534" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="609" />
         <source>Plant [dB]</source>
         <translation>プラント [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="536" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="611" />
         <source>The measured open position loop with the running gains: −controller output / drive input (dimensionless), where it is valid, and the resonances found.</source>
         <translation>現在のゲインで測定した位置ループの開ループ: −制御器出力 / サーボアンプ入力 (無次元)、その有効範囲、見つかった共振。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="538" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="613" />
         <source>Open loop |L| [dB]</source>
         <translation>開ループ |L| [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="545" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="620" />
         <source>Level of the analysed response [dB]</source>
         <translation>解析した応答のレベル [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="546" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="621" />
         <source>Measured plant</source>
         <translation>測定したプラント</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="547" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="622" />
         <source>Measured open loop</source>
         <translation>測定した開ループ</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="651" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="726" />
         <source>Plant in the feedback's position units per unit of %1 (the configuration's units, e.g. mm per N·m).</source>
         <translation>プラントは %1 の 1 単位あたりのフィードバック位置単位で表します (構成の単位、例: mm/N·m)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="656" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="731" />
         <source>Open position loop, dimensionless (controller output per unit of %1).</source>
         <translation>位置ループの開ループ、無次元 (%1 の 1 単位あたりの制御器出力)。</translation>
     </message>
@@ -3371,78 +3401,78 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfSafetyPage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="92" />
-        <location filename="../app/gui/FrfWizardPages.cpp" line="186" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="99" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="193" />
         <source>The axis holds velocity 0 in velocity mode while a small torque disturbance is added to the velocity-controller output. The axis vibrates with small amplitude at each test frequency; it does not travel. Abort stops the excitation at once and restores the parameters.</source>
         <translation>軸は速度制御モードで速度 0 を保持し、速度制御器の出力に小さなトルク外乱を加えます。軸は各試験周波数で小さな振幅で振動しますが、移動はしません。中止すると加振は直ちに止まり、パラメータは元に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="105" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="112" />
         <source> % of rated torque</source>
         <translation> % (定格トルク比)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="106" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="113" />
         <source>Excitation amplitude:</source>
         <translation>加振振幅:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="249" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="256" />
         <source>&lt;span style='color:#b00000'&gt;Refused: the drive allows at most %1 % of rated torque.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;拒否: サーボアンプが許すのは定格トルクの %1 % までです。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="256" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="263" />
         <source>%1 % of rated torque (at most %2 %).</source>
         <translation>定格トルクの %1 % (最大 %2 %)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="259" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="266" />
         <source>%1 % of the rated torque %2 N·m = %3 N·m peak of the injected torque (at most %4 %).</source>
         <translation>定格トルク %2 N·m の %1 % = 注入トルクのピーク %3 N·m (最大 %4 %)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="239" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="246" />
         <source>&lt;span style='color:#b00000'&gt;The drive does not state its amplitude limit: %1&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;サーボアンプが振幅の上限を示していません: %1&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="245" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="252" />
         <source>%1 % of rated torque (reading the drive's limit…).</source>
         <translation>定格トルクの %1 % (サーボアンプの上限を読み取り中…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="113" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="120" />
         <source>Excitation peak:</source>
         <translation>加振ピーク値:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="192" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="199" />
         <source> (units of %1)</source>
         <translation> (%1 の単位)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="202" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="209" />
         <source>The NC keeps closing its position loop while a small multisine is added to %1, the drive's input, at every servo period. The axis vibrates with small amplitude about where it stands; it does not travel. A following error above the limit or Abort stops the excitation at once, and what AxisTune inserted into the machine is removed.</source>
         <translation>NC が位置ループを閉じたまま、サーボアンプ入力である %1 に小さなマルチサインをサーボ周期ごとに加えます。軸は現在位置の周りで小さな振幅で振動し、移動はしません。位置偏差が制限を超えるか中止すると加振はすぐに止まり、AxisTune が機械に挿入したものは取り除かれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="216" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="223" />
         <source>&lt;span style='color:#b00000'&gt;The drive states no limit for the peak in the units of %1: no test.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;サーボアンプが %1 の単位でのピーク値の上限を示していません: 測定できません。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="220" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="227" />
         <source>&lt;span style='color:#b00000'&gt;Refused: the peak must be above 0.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;拒否: ピーク値は 0 より大きくなければなりません。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="222" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="229" />
         <source>&lt;span style='color:#b00000'&gt;Refused: the drive allows a peak of at most %1 in the units of %2.&lt;/span&gt;</source>
         <translation>&lt;span style='color:#b00000'&gt;拒否: サーボアンプが許すピーク値は %2 の単位で最大 %1 です。&lt;/span&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="227" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="234" />
         <source>Peak %1 of the injected signal, in the units of %2 (the drive allows at most %3, %4 % of its output limit).</source>
         <translation>注入信号のピーク値 %1 (%2 の単位。サーボアンプが許す最大値は %3、出力制限の %4 %)。</translation>
     </message>
@@ -3450,37 +3480,37 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfSavePage</name>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="689" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="764" />
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="690" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="765" />
         <source>Finish stores the measurement as a session of this machine.</source>
         <translation>完了すると、測定をこの機械のセッションとして保存します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="695" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="770" />
         <source>e.g. before notch tuning, table empty</source>
         <translation>例: ノッチ調整前、テーブル上は空</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="696" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="771" />
         <source>Note:</source>
         <translation>メモ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="702" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="777" />
         <source>Show the saved session as a document (its Bode plot stays open after Finish)</source>
         <translation>保存したセッションをドキュメントとして表示する（完了後もボード線図が開いたままになります）</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="707" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="782" />
         <source>Save and open in the notch wizard</source>
         <translation>保存してノッチフィルタのウィザードで開く</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizardPages.cpp" line="709" />
+        <location filename="../app/gui/FrfWizardPages.cpp" line="784" />
         <source>Stores the session, then proposes notch filters for the resonances of this measurement.</source>
         <translation>セッションを保存し、この測定の共振に対するノッチフィルタを提案します。</translation>
     </message>
@@ -3488,34 +3518,46 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::FrfWizard</name>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="41" />
+        <location filename="../app/gui/FrfWizard.cpp" line="44" />
         <source>Frequency response</source>
         <translation>周波数応答</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="96" />
+        <location filename="../app/gui/FrfWizard.cpp" line="108" />
         <source>The drive returned no frequency response.</source>
         <translation>サーボアンプから周波数応答が返されませんでした。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/FrfWizard.cpp" line="117" />
+        <location filename="../app/gui/FrfWizard.cpp" line="121" />
+        <source>Adaptive multisine: %n pass(es), %1 s of motion (budget %2 s); %3 of %4 lines valid (%5 %).</source>
+        <translation>
+            <numerusform>適応マルチサイン: %n パス、動作時間 %1 s (予算 %2 s)。%4 本中 %3 本の周波数線が有効 (%5 %)。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/FrfWizard.cpp" line="134" />
+        <source>Left invalid: %1 by noise (the budget was spent), %2 held by the voltage limit, %3 by the torque limit, %4 non-linear (the passes disagree).</source>
+        <translation>無効のまま: ノイズ (予算を使い切った) %1 本、電圧制限 %2 本、トルク制限 %3 本、非線形 (パス間で不一致) %4 本。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/FrfWizard.cpp" line="155" />
         <source>Finish stores: the settings (axis %1, %2, %3–%4 Hz, %5 points, %6 % of rated torque), the measured frequency response (%7 points) and the %n resonance(s) found.</source>
         <translation>
             <numerusform>完了で保存する内容: 設定 (軸 %1、%2、%3–%4 Hz、%5 点、定格トルクの %6 %)、測定した周波数応答 (%7 点)、見つかった %n 個の共振。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="220" />
+        <location filename="../app/gui/FrfWizard.cpp" line="262" />
         <source>Session %1 (%2)</source>
         <translation>セッション %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/FrfWizard.cpp" line="247" />
+        <location filename="../app/gui/FrfWizard.cpp" line="289" />
         <source>The wizard was closed during the run.</source>
         <translation>実行中にウィザードが閉じられました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/FrfWizard.cpp" line="114" />
+        <location filename="../app/gui/FrfWizard.cpp" line="152" />
         <source>Finish stores: the settings (axis %1, %2, %3–%4 Hz, peak %5 in the units of %6), the measured frequency response (%7 points) and the %n resonance(s) found.</source>
         <translation>
             <numerusform>完了で保存する内容: 設定 (軸 %1、%2、%3–%4 Hz、%6 の単位でピーク値 %5)、測定した周波数応答 (%7 点)、見つかった %n 個の共振。</numerusform>
@@ -6024,331 +6066,331 @@ Read the axis's parameters to see what the drive holds.</source>
 <context>
     <name>axistune::gui::NcPidPage</name>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="59" />
+        <location filename="../app/gui/NcPidPage.cpp" line="60" />
         <source>Notch for a position PID the NC closes</source>
         <translation>NCが閉じる位置PIDのノッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="60" />
+        <location filename="../app/gui/NcPidPage.cpp" line="61" />
         <source>Position PID the NC closes</source>
         <translation>NCが閉じる位置PID</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="70" />
+        <location filename="../app/gui/NcPidPage.cpp" line="71" />
         <source>Axis:</source>
         <translation>軸:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="71" />
+        <location filename="../app/gui/NcPidPage.cpp" line="72" />
         <source> % of maxoutput</source>
         <translation> % (maxoutput比)</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="72" />
+        <location filename="../app/gui/NcPidPage.cpp" line="73" />
         <source>Excitation peak (multisine at the PID output):</source>
         <translation>加振ピーク (PID出力でのマルチサイン):</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="75" />
+        <location filename="../app/gui/NcPidPage.cpp" line="76" />
         <source>from the measured slope</source>
         <translation>測定した傾きから</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="76" />
-        <location filename="../app/gui/NcPidPage.cpp" line="456" />
+        <location filename="../app/gui/NcPidPage.cpp" line="77" />
+        <location filename="../app/gui/NcPidPage.cpp" line="457" />
         <source>torque or current</source>
         <translation>トルクまたは電流</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="77" />
-        <location filename="../app/gui/NcPidPage.cpp" line="456" />
+        <location filename="../app/gui/NcPidPage.cpp" line="78" />
+        <location filename="../app/gui/NcPidPage.cpp" line="457" />
         <source>velocity</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="78" />
+        <location filename="../app/gui/NcPidPage.cpp" line="79" />
         <source>Drive input (what the PID output commands):</source>
         <translation>サーボアンプ入力 (PID出力が指令するもの):</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="80" />
+        <location filename="../app/gui/NcPidPage.cpp" line="81" />
         <source>Phase margin asked:</source>
         <translation>要求する位相余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="81" />
+        <location filename="../app/gui/NcPidPage.cpp" line="82" />
         <source> dB</source>
         <translation> dB</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="82" />
+        <location filename="../app/gui/NcPidPage.cpp" line="83" />
         <source>Gain margin asked:</source>
         <translation>要求するゲイン余裕:</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="83" />
+        <location filename="../app/gui/NcPidPage.cpp" line="84" />
         <source>Propose LinuxCNC's biquad notch when it lets the crossover rise</source>
         <translation>交差周波数を上げられるときは LinuxCNC の biquad ノッチを提案する</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="95" />
+        <location filename="../app/gui/NcPidPage.cpp" line="96" />
         <source>The axis is free to move over the whole test, nobody is inside the machine, and the emergency stop is within reach.</source>
         <translation>テスト全体を通じて軸は自由に動くことができ、機械の中には誰もおらず、非常停止ボタンに手が届きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="101" />
+        <location filename="../app/gui/NcPidPage.cpp" line="102" />
         <source>Measure and propose</source>
         <translation>測定して提案</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="104" />
+        <location filename="../app/gui/NcPidPage.cpp" line="105" />
         <source>Insert the notch and verify</source>
         <translation>ノッチを挿入して検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="104" />
+        <location filename="../app/gui/NcPidPage.cpp" line="105" />
         <source>Apply and verify</source>
         <translation>適用して検証</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="106" />
+        <location filename="../app/gui/NcPidPage.cpp" line="107" />
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="108" />
+        <location filename="../app/gui/NcPidPage.cpp" line="109" />
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="110" />
+        <location filename="../app/gui/NcPidPage.cpp" line="111" />
         <source>Undo anyway</source>
         <translation>それでも元に戻す</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="118" />
+        <location filename="../app/gui/NcPidPage.cpp" line="119" />
         <source>Overwrite what changed in HAL since the apply with what ran before</source>
         <translation>適用後に HAL で変更された値を、以前の値で上書きする</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="133" />
+        <location filename="../app/gui/NcPidPage.cpp" line="134" />
         <source>Quantity</source>
         <translation>量</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="133" />
+        <location filename="../app/gui/NcPidPage.cpp" line="134" />
         <source>Running</source>
         <translation>現在値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="133" />
+        <location filename="../app/gui/NcPidPage.cpp" line="134" />
         <source>Proposed</source>
         <translation>提案値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="133" />
+        <location filename="../app/gui/NcPidPage.cpp" line="134" />
         <source>Verified</source>
         <translation>検証値</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="133" />
+        <location filename="../app/gui/NcPidPage.cpp" line="134" />
         <source>Rule</source>
         <translation>ルール</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="138" />
+        <location filename="../app/gui/NcPidPage.cpp" line="139" />
         <source>Open loop L [dB]</source>
         <translation>開ループ L [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="191" />
+        <location filename="../app/gui/NcPidPage.cpp" line="192" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): it has no drive filter slots. Its notch is LinuxCNC's biquad component (a notch with 0.5 ≤ Q ≤ 2), inserted after the PID output. This page measures the open loop with the gains that run, proposes a notch at the plant's strongest resonance when it raises the gain margin, inserts it and verifies it by measuring again; the gains are not changed.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプのフィルタスロットはありません。そのノッチは LinuxCNC の biquad コンポーネント (0.5 ≤ Q ≤ 2 のノッチ) で、PID 出力の後に挿入します。このページは現在のゲインで開ループを測定し、ゲイン余裕が上がるときは制御対象の最も強い共振にノッチを提案し、挿入して再測定で検証します。ゲインは変更しません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="197" />
+        <location filename="../app/gui/NcPidPage.cpp" line="198" />
         <source>Axis %1 is a position loop the NC closes with a PID (%2): there is no drive velocity loop. This page measures the open loop with the gains that run, proposes P, I, D, FF1 and FF2 (and a biquad notch after the PID output when it lets the crossover rise) for the margins asked, with the rule behind each number, applies them live and verifies them by measuring again. A loop that misses the margins gets back what ran before.</source>
         <translation>軸 %1 は NC が PID で閉じる位置ループです (%2)。サーボアンプの速度ループはありません。このページは現在のゲインで開ループを測定し、要求された余裕に対して P、I、D、FF1、FF2 (交差周波数を上げられるときは PID 出力の後の biquad ノッチも) を各値のルールとともに提案し、運転中に適用して再測定で検証します。余裕を満たさないループは元の設定に戻します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="284" />
+        <location filename="../app/gui/NcPidPage.cpp" line="285" />
         <source>Measuring the open loop of %1 with the gains that run…</source>
         <translation>現在のゲインで %1 の開ループを測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="299" />
+        <location filename="../app/gui/NcPidPage.cpp" line="300" />
         <source>Aborted: the excitation stopped and what AxisTune inserted was removed. %1</source>
         <translation>中止しました: 加振を止め、AxisTune が挿入したものを取り除きました。%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="300" />
+        <location filename="../app/gui/NcPidPage.cpp" line="301" />
         <source>Measured, but no proposal: %1</source>
         <translation>測定しましたが提案はありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="300" />
+        <location filename="../app/gui/NcPidPage.cpp" line="301" />
         <source>The measurement failed: %1</source>
         <translation>測定に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="311" />
+        <location filename="../app/gui/NcPidPage.cpp" line="312" />
         <source>Nothing to change: %1</source>
         <translation>変更するものはありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="314" />
+        <location filename="../app/gui/NcPidPage.cpp" line="315" />
         <source>Proposed: a notch at %1 Hz, Q %2. Nothing was written yet.</source>
         <translation>提案: %1 Hz、Q %2 のノッチ。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="316" />
+        <location filename="../app/gui/NcPidPage.cpp" line="317" />
         <source>Proposed below with the predicted margins. Nothing was written yet.</source>
         <translation>提案と予測余裕を下に示します。まだ何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="319" />
+        <location filename="../app/gui/NcPidPage.cpp" line="320" />
         <source>proposed, not applied</source>
         <translation>提案のみ、未適用</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="328" />
+        <location filename="../app/gui/NcPidPage.cpp" line="329" />
         <source>Inserting the notch and measuring the open loop again…</source>
         <translation>ノッチを挿入し、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="329" />
+        <location filename="../app/gui/NcPidPage.cpp" line="330" />
         <source>Writing the gains (read back) and measuring the open loop again…</source>
         <translation>ゲインを書き込み (読み戻し確認)、開ループを再測定しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="340" />
+        <location filename="../app/gui/NcPidPage.cpp" line="341" />
         <source>Not applied: %1. Nothing was left changed.</source>
         <translation>適用しませんでした: %1。変更は残っていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="346" />
+        <location filename="../app/gui/NcPidPage.cpp" line="347" />
         <source>Applied and verified: the measured margins are in the table. Undo puts back what ran before.</source>
         <translation>適用して検証しました: 測定した余裕は表にあります。「元に戻す」で以前の設定に戻ります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="348" />
+        <location filename="../app/gui/NcPidPage.cpp" line="349" />
         <source>Not kept: %1</source>
         <translation>保持しませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="351" />
+        <location filename="../app/gui/NcPidPage.cpp" line="352" />
         <source>applied and verified</source>
         <translation>適用・検証済み</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="377" />
+        <location filename="../app/gui/NcPidPage.cpp" line="378" />
         <source>Putting back what ran before…</source>
         <translation>以前の設定に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="377" />
+        <location filename="../app/gui/NcPidPage.cpp" line="378" />
         <source>Putting back what ran before, over the later change…</source>
         <translation>後からの変更を上書きして、以前の状態に戻しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="394" />
+        <location filename="../app/gui/NcPidPage.cpp" line="395" />
         <source>Undo refused: %1</source>
         <translation>元に戻すことを拒否しました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="401" />
+        <location filename="../app/gui/NcPidPage.cpp" line="402" />
         <source>undone</source>
         <translation>元に戻した</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="401" />
+        <location filename="../app/gui/NcPidPage.cpp" line="402" />
         <source>undone anyway (over a later change)</source>
         <translation>後からの変更を上書きして元に戻しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="407" />
+        <location filename="../app/gui/NcPidPage.cpp" line="408" />
         <source>the notch from before (%1 Hz, Q %2) is back</source>
         <translation>以前のノッチ (%1 Hz, Q %2) を戻しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="408" />
+        <location filename="../app/gui/NcPidPage.cpp" line="409" />
         <source>the notch was removed</source>
         <translation>ノッチを取り除きました</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="410" />
+        <location filename="../app/gui/NcPidPage.cpp" line="411" />
         <source>Undone: %1.</source>
         <translation>元に戻しました: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="412" />
+        <location filename="../app/gui/NcPidPage.cpp" line="413" />
         <source>, and %1</source>
         <translation>。また、%1</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="411" />
+        <location filename="../app/gui/NcPidPage.cpp" line="412" />
         <source>Undone: the gains that ran before are back (read back)%1.</source>
         <translation>元に戻しました: 以前のゲインに戻りました (読み戻し確認)%1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="391" />
+        <location filename="../app/gui/NcPidPage.cpp" line="392" />
         <source>Undo refused: %1. To put back what ran before all the same, tick the box below and press Undo anyway.</source>
         <translation>元に戻すことを拒否しました: %1。それでも以前の状態に戻すには、下のボックスにチェックを入れて「それでも元に戻す」を押してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="451" />
+        <location filename="../app/gui/NcPidPage.cpp" line="452" />
         <source>Notch f0 [Hz]</source>
         <translation>ノッチ f0 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="451" />
         <location filename="../app/gui/NcPidPage.cpp" line="452" />
+        <location filename="../app/gui/NcPidPage.cpp" line="453" />
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="453" />
+        <location filename="../app/gui/NcPidPage.cpp" line="454" />
         <source>Notch Q</source>
         <translation>ノッチ Q</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="455" />
+        <location filename="../app/gui/NcPidPage.cpp" line="456" />
         <source>Drive input</source>
         <translation>サーボアンプ入力</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="462" />
-        <location filename="../app/gui/NcPidPage.cpp" line="467" />
+        <location filename="../app/gui/NcPidPage.cpp" line="463" />
+        <location filename="../app/gui/NcPidPage.cpp" line="468" />
         <source>Crossover [Hz]</source>
         <translation>交差周波数 [Hz]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="468" />
+        <location filename="../app/gui/NcPidPage.cpp" line="469" />
         <source>Phase margin [°]</source>
         <translation>位相余裕 [°]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="469" />
+        <location filename="../app/gui/NcPidPage.cpp" line="470" />
         <source>Gain margin [dB]</source>
         <translation>ゲイン余裕 [dB]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="470" />
+        <location filename="../app/gui/NcPidPage.cpp" line="471" />
         <source>Motion time [s]</source>
         <translation>動作時間 [s]</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="482" />
+        <location filename="../app/gui/NcPidPage.cpp" line="483" />
         <source>measured, running gains</source>
         <translation>測定、現在のゲイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="484" />
+        <location filename="../app/gui/NcPidPage.cpp" line="485" />
         <source>predicted</source>
         <translation>予測</translation>
     </message>
     <message>
-        <location filename="../app/gui/NcPidPage.cpp" line="487" />
+        <location filename="../app/gui/NcPidPage.cpp" line="488" />
         <source>verified (measured after applying)</source>
         <translation>検証 (適用後に測定)</translation>
     </message>
@@ -8916,8 +8958,8 @@ Read the axis's parameters to see what the drive holds.</source>
     </message>
     <message>
         <location filename="../widgets/BodePlot.cpp" line="354" />
-        <source>above the observation Nyquist: valid only by multi-sweep</source>
-        <translation>観測ナイキスト周波数以上: 複数回掃引でのみ有効</translation>
+        <source>above the observation Nyquist: valid only by multi-sweep or multisine</source>
+        <translation>観測ナイキスト周波数以上: 複数回掃引またはマルチサインでのみ有効</translation>
     </message>
     <message>
         <location filename="../widgets/BodePlot.cpp" line="355" />

@@ -351,8 +351,9 @@ void BodePlot::updateBandLegend()
         QColor c = bandColor(kind);
         c.setAlpha(std::min(255, c.alpha() * 2));
         g->setPen(QPen(c, 8.0));
-        g->setName(kind == BandKind::MultiSweepOnly ? tr("above the observation Nyquist: valid only by multi-sweep")
-                                                    : tr("not measurable"));
+        g->setName(kind == BandKind::MultiSweepOnly
+                       ? tr("above the observation Nyquist: valid only by multi-sweep or multisine")
+                       : tr("not measurable"));
         m_bandLegendGraphs.push_back(g);
     }
 }

@@ -4,6 +4,7 @@
 #include "app/cli/CliCommand.h"
 #include "app/cli/SessionRecorder.h"
 #include "core/device/AdaptiveFrf.h"
+#include "core/device/AdaptiveFrfJson.h"
 #include "core/device/Drive.h"
 #include "core/device/FrfQuantityName.h"
 #include "core/device/MoveTo.h"
@@ -15,7 +16,6 @@
 #include "core/io/SweepCsv.h"
 #include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
-#include "core/model/ResultJson.h"
 
 #include <algorithm>
 #include <charconv>
@@ -198,41 +198,8 @@ int writeFrfResult(const std::string& cmd, device::FrfMeasurement measurement, c
         if (const auto* v = m->frf.metadata.find(key); v && v->number())
             std::cout << ", \"" << key << "\": " << v->text();
     }
-    if (adaptive) {
-        nlohmann::json a;
-        a["time_budget_s"] = o.timeBudgetS;
-        a["valid_lines"] = adaptive->validLines;
-        a["passes"] = nlohmann::json::array();
-        for (const auto& p : adaptive->passes) {
-            nlohmann::json pass{{"lines", p.lines},
-                                {"bands", p.bands},
-                                {"peak_pct", p.peakPct},
-                                {"periods", p.periods},
-                                {"motion_time_s", p.motionTimeS},
-                                {"shaped", p.shaped},
-                                {"voltage_limit_reached", p.voltageReached},
-                                {"valid_after", p.validAfter},
-                                {"limited_by", p.limitedBy}};
-            model::putNumber(pass, "voltage_peak_V", p.voltagePeakV, "the drive traces no voltage");
-            model::putNumber(pass, "voltage_predicted_V", p.voltagePredictedV,
-                             "phases designed for the torque: the first pass, a drive that takes no spectrum (Modbus) "
-                             "or traces no voltage");
-            a["passes"].push_back(pass);
-        }
-        nlohmann::json counts = nlohmann::json::object();
-        for (const char* r : {"noise", "torque limit", "voltage limit", "nonlinearity"})
-            counts[r] = 0;
-        a["invalid_lines"] = nlohmann::json::array();
-        for (const auto& l : adaptive->invalid) {
-            counts[device::invalidReasonName(l.reason)] = counts[device::invalidReasonName(l.reason)].get<int>() + 1;
-            nlohmann::json line{{"f_Hz", l.freqHz}, {"reason", device::invalidReasonName(l.reason)}};
-            model::putNumber(line, "relative_noise", l.relativeNoise,
-                             "never measured below the voltage limit (every pass that excited it reached the limit)");
-            a["invalid_lines"].push_back(line);
-        }
-        a["invalid_by_reason"] = counts;
-        std::cout << ", \"adaptive\": " << a.dump();
-    }
+    if (adaptive)
+        std::cout << ", \"adaptive\": " << device::adaptiveFrfJson(*adaptive, o.timeBudgetS).dump();
     if (const auto* q = m->frf.metadata.find(model::meta::kQuantity))
         std::cout << ", \"quantity\": \"" << q->text() << "\"";
     std::cout << "}\n";

@@ -2,6 +2,7 @@
 #include "app/gui/DriveController.h"
 
 #include "app/gui/WidgetUtil.h"
+#include "core/device/AdaptiveFrf.h"
 #include "core/device/TestRunner.h"
 
 #include <QCoreApplication>
@@ -161,7 +162,8 @@ DriveReply DriveWorker::doWrite(int id, const QString& axis, const model::Parame
     return r;
 }
 
-DriveReply DriveWorker::doTest(int id, const device::TestRequest& request, std::shared_ptr<std::atomic<bool>> cancel)
+DriveReply DriveWorker::doTest(int id, const device::TestRequest& request, std::shared_ptr<std::atomic<bool>> cancel,
+                               std::shared_ptr<const device::AdaptiveFrfOptions> adaptive)
 {
     DriveReply r;
     r.id = id;
@@ -180,7 +182,20 @@ DriveReply DriveWorker::doTest(int id, const device::TestRequest& request, std::
             emit progress(id, f, qs(detail));
         }
     };
-    auto run = device::runTest(*m_drive, request, o);
+    Result<device::TestRun> run = makeError(ErrorCode::Internal, "no test run");
+    if (adaptive) {
+        auto a = device::runAdaptiveFrf(*m_drive, request, *adaptive, o);
+        if (a) {
+            device::TestRun t;
+            t.frf = a->measurement;
+            run = std::move(t);
+            r.adaptive = std::make_shared<const device::AdaptiveFrfResult>(std::move(a).value());
+        } else {
+            run = a.error();
+        }
+    } else {
+        run = device::runTest(*m_drive, request, o);
+    }
     if (!run) {
         if (cancel->load() && run.error().code == ErrorCode::Aborted) {
             r.code = ErrorCode::Aborted;
@@ -364,6 +379,19 @@ DriveRequest* DriveController::runTest(const device::TestRequest& request)
     auto token = std::make_shared<std::atomic<bool>>(false);
     DriveRequest* req =
         post(DriveReply::Kind::Test, [request, token](DriveWorker& w, int id) { return w.doTest(id, request, token); });
+    req->m_cancel = token;
+    m_open[req->id()].cancel = token;
+    return req;
+}
+
+DriveRequest* DriveController::runAdaptiveFrf(const device::TestRequest& request,
+                                              const device::AdaptiveFrfOptions& options)
+{
+    auto token = std::make_shared<std::atomic<bool>>(false);
+    auto opts = std::make_shared<const device::AdaptiveFrfOptions>(options);
+    DriveRequest* req = post(DriveReply::Kind::Test, [request, token, opts](DriveWorker& w, int id) {
+        return w.doTest(id, request, token, opts);
+    });
     req->m_cancel = token;
     m_open[req->id()].cancel = token;
     return req;

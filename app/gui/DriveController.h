@@ -38,6 +38,11 @@
 
 class QThread;
 
+namespace axistune::device {
+struct AdaptiveFrfOptions;
+struct AdaptiveFrfResult;
+} // namespace axistune::device
+
 namespace axistune::autotune {
 struct PidTuneRequest;
 struct PidLoopMeasurement;
@@ -83,6 +88,8 @@ struct DriveReply {
     device::TestState testState = device::TestState::Idle;
     std::shared_ptr<const model::Capture> capture;     ///< trace (not for Frf tests)
     std::shared_ptr<const device::FrfMeasurement> frf; ///< Frf tests
+    /// runAdaptiveFrf: the passes, the lines left invalid and why (`frf` holds the combined measurement)
+    std::shared_ptr<const device::AdaptiveFrfResult> adaptive;
     // Describe: what the drive offers on the axis and the limits it enforces (DriveControllerDescribe.cpp)
     std::optional<device::DriveCapabilities> capabilities;
     std::optional<device::DriveLimits> limits;
@@ -168,6 +175,10 @@ public:
     /// Queues a test and runs it to its end (device::runTest); the reply carries the trace and, for FRF
     /// tests, the FRF (evaluated on the host when the drive only streams samples).
     DriveRequest* runTest(const device::TestRequest& request);
+    /// An adaptive multisine (device::runAdaptiveFrf: passes until every line is valid or the time budget is spent),
+    /// as one test request: one progress over all passes, Abort stops the pass that runs (its parameters restored).
+    /// Reply kind Test with `frf` (the combined measurement) and `adaptive`.
+    DriveRequest* runAdaptiveFrf(const device::TestRequest& request, const device::AdaptiveFrfOptions& options);
     /// The drive's capabilities and limits on an axis (reply kind Describe; DriveControllerDescribe.cpp).
     DriveRequest* describeAxis(const QString& axis);
     /// The drive's plan of a request before it runs (reply kind Plan): motion time and record length, or
@@ -264,7 +275,9 @@ public:
     DriveReply doRead(int id, const QString& axis, const QStringList& keys);
     DriveReply doWrite(int id, const QString& axis, const model::ParameterValues& values);
     /// Runs the test unless `cancel` is set; `cancel` aborts it while it runs.
-    DriveReply doTest(int id, const device::TestRequest& request, std::shared_ptr<std::atomic<bool>> cancel);
+    /// `adaptive` set: device::runAdaptiveFrf with those options instead of device::runTest.
+    DriveReply doTest(int id, const device::TestRequest& request, std::shared_ptr<std::atomic<bool>> cancel,
+                      std::shared_ptr<const device::AdaptiveFrfOptions> adaptive = nullptr);
     DriveReply doDescribe(int id, const QString& axis);
     DriveReply doPlan(int id, const device::TestRequest& request);
     DriveReply doAutoTune(int id, autotune::Options options, std::shared_ptr<std::atomic<bool>> cancel);

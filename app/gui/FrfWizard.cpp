@@ -8,6 +8,8 @@
 #include "app/gui/NotchWizard.h"
 #include "app/gui/SessionReviewView.h"
 #include "app/gui/WizardRegistry.h"
+#include "core/device/AdaptiveFrf.h"
+#include "core/device/AdaptiveFrfJson.h"
 #include "core/device/FrfQuantityName.h"
 #include "core/device/FrfTest.h"
 #include "core/model/Constants.h"
@@ -56,9 +58,18 @@ FrfWizard::FrfWizard(AppContext& ctx, QWidget* parent) : QWizard(parent), m_ctx(
     setPage(SaveId, m_save);
     m_run->setRequestFactory([this] {
         m_lastRequest = request();
+        m_lastBudgetS = m_config->adaptiveBudgetS();
+        m_adaptive.reset();
         m_measurement.reset();
         m_runSaved = false;
         return std::vector<device::TestRequest>{m_lastRequest};
+    });
+    m_run->setRunner([this](const device::TestRequest& r) {
+        if (!m_lastBudgetS)
+            return m_ctx.drive().runTest(r);
+        device::AdaptiveFrfOptions o;
+        o.timeBudgetS = *m_lastBudgetS;
+        return m_ctx.drive().runAdaptiveFrf(r, o);
     });
     connect(m_run, &TestRunPage::runFinished, this, &FrfWizard::onRunFinished);
     connect(this, &QWizard::currentIdChanged, this, &FrfWizard::onPageChanged);
@@ -98,8 +109,34 @@ void FrfWizard::onRunFinished(bool ok)
         return;
     }
     m_measurement = replies.back().frf;
+    m_adaptive = replies.back().adaptive;
+    m_result->setAdaptiveSummary(m_adaptive ? adaptiveSummary(*m_adaptive) : QString());
     m_result->setMeasurement(m_measurement->frf, m_lastRequest.frf().method, m_safety->driveInfo().frfMaxHz(),
                              m_safety->driveInfo().outputSignal());
+}
+
+QString FrfWizard::adaptiveSummary(const device::AdaptiveFrfResult& a) const
+{
+    const std::size_t lines = a.measurement.frf.size();
+    QString text =
+        tr("Adaptive multisine: %n pass(es), %1 s of motion (budget %2 s); %3 of %4 lines valid (%5 %).", nullptr,
+           static_cast<int>(a.passes.size()))
+            .arg(a.motionTimeS, 0, 'f', 2)
+            .arg(m_lastBudgetS.value_or(0.0), 0, 'f', 1)
+            .arg(a.validLines)
+            .arg(lines)
+            .arg(lines > 0 ? 100.0 * static_cast<double>(a.validLines) / static_cast<double>(lines) : 0.0, 0, 'f', 1);
+    if (a.invalid.empty())
+        return text;
+    const auto n = device::invalidByReason(a);
+    using R = device::InvalidReason;
+    return text + QLatin1Char(' ') +
+           tr("Left invalid: %1 by noise (the budget was spent), %2 held by the voltage limit, %3 by the torque "
+              "limit, %4 non-linear (the passes disagree).")
+               .arg(n[static_cast<std::size_t>(R::Noise)])
+               .arg(n[static_cast<std::size_t>(R::VoltageLimit)])
+               .arg(n[static_cast<std::size_t>(R::TorqueLimit)])
+               .arg(n[static_cast<std::size_t>(R::Nonlinear)]);
 }
 
 void FrfWizard::onPageChanged(int id)
@@ -151,6 +188,10 @@ nlohmann::json FrfWizard::inputsJson() const
     j["connection"] = m_ctx.drive().uri().toStdString();
     if (std::isfinite(m_config->estimatedMotionS()))
         j["estimated_motion_s"] = m_config->estimatedMotionS();
+    if (m_lastBudgetS) {
+        j["adaptive"] = true;
+        j["time_budget_s"] = *m_lastBudgetS;
+    }
     return j;
 }
 
@@ -185,6 +226,8 @@ void FrfWizard::saveCompleted()
     meas["points"] = m_result->measured().size();
     meas["valid_points"] = valid;
     rec.results.push_back({"measurement", meas, {}});
+    if (m_adaptive)
+        rec.results.push_back({"adaptive", device::adaptiveFrfJson(*m_adaptive, m_lastBudgetS.value_or(0.0)), {}});
     auto id = m_ctx.saveSession(rec);
     m_runSaved = true;
     if (id) {

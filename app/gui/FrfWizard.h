@@ -114,7 +114,13 @@ public:
     /// What the FRF reports, when the drive offers a choice (DriveCapabilities::frfQuantities; hidden otherwise).
     QComboBox* quantity() const { return m_quantity; }
     device::FrfQuantity selectedQuantity() const;
-    /// Motion time of the planned test [s]; NaN while unknown or when the plan is refused.
+    /// Adaptive multisine (device::runAdaptiveFrf; offered with the multisine on a drive that plans it in % of rated
+    /// torque): re-excite the lines not yet valid until every line is valid or the time budget is spent.
+    QCheckBox* adaptive() const { return m_adaptive; }
+    QDoubleSpinBox* timeBudget() const { return m_budget; }
+    /// The motion-time budget of an adaptive run [s]; unset: one ordinary test.
+    std::optional<double> adaptiveBudgetS() const;
+    /// Motion time of the planned test [s] (adaptive: of its first pass); NaN while unknown or when refused.
     double estimatedMotionS() const { return m_motionS; }
     device::FrfMethod selectedMethod() const;
     void initializePage() override;
@@ -125,12 +131,16 @@ private:
     AppContext& m_ctx;
     const FrfSafetyPage& m_safety;
     void offerMethods();
+    void offerAdaptive();
     QComboBox* m_method = nullptr;
     QComboBox* m_quantity = nullptr;
     QLabel* m_quantityLabel = nullptr;
     QDoubleSpinBox* m_fmin = nullptr;
     QDoubleSpinBox* m_fmax = nullptr;
     QSpinBox* m_points = nullptr;
+    QCheckBox* m_adaptive = nullptr;
+    QDoubleSpinBox* m_budget = nullptr;
+    QLabel* m_budgetLabel = nullptr;
     QLabel* m_validity = nullptr;
     QLabel* m_estimate = nullptr;
     int m_planRequest = -1; ///< the drive's planTest request under way (DriveController::planTest)
@@ -156,6 +166,9 @@ public:
     /// measurable frequency (0: none of its own), `outputSignal` what a peak in output units is in (may be empty).
     void setMeasurement(const dsp::FrequencyResponse& frf, device::FrfMethod method, double frfMaxHz = 0.0,
                         const QString& outputSignal = QString());
+    /// What an adaptive run did (its passes, the lines left invalid and why); empty: hidden.
+    void setAdaptiveSummary(const QString& text);
+    QLabel* adaptiveSummary() const { return m_adaptiveText; }
     /// The measured quantity as its metadata say: "plant", "open-loop", or empty (the closed velocity loop).
     QString quantity() const { return m_quantity; }
     widgets::BodePlot* bodePlot() const { return m_plot; }
@@ -181,6 +194,7 @@ private:
     widgets::BodePlot* m_plot = nullptr;
     QTableWidget* m_table = nullptr;
     QLabel* m_summary = nullptr;
+    QLabel* m_adaptiveText = nullptr;
     QFutureWatcher<FrfAnalysis>* m_watcher = nullptr;
 };
 
@@ -239,6 +253,8 @@ private:
     void onPageChanged(int id);
     /// The inputs JSON of the current request.
     nlohmann::json inputsJson() const;
+    /// The result page's text of an adaptive run.
+    QString adaptiveSummary(const device::AdaptiveFrfResult& a) const;
     void saveCompleted();
     void saveAborted(const QString& reason);
 
@@ -250,6 +266,8 @@ private:
     FrfSavePage* m_save = nullptr;
     device::TestRequest m_lastRequest{{}, device::FrfTest{}}; ///< always of kind Frf (request())
     std::shared_ptr<const device::FrfMeasurement> m_measurement;
+    std::optional<double> m_lastBudgetS;                         ///< the run is adaptive with this budget [s]
+    std::shared_ptr<const device::AdaptiveFrfResult> m_adaptive; ///< its passes and the lines left invalid
     bool m_runSaved = false;  ///< the session of the current run is stored
     std::int64_t m_sessionId = 0;
 };

@@ -317,6 +317,20 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
     m_points->setRange(1, 5000);
     m_points->setValue(60);
     form->addRow(tr("Frequencies (log-spaced):"), m_points);
+    m_adaptive = new QCheckBox(tr("Adaptive: excite the lines not yet valid again"), this);
+    m_adaptive->setToolTip(tr("After the first multisine, the lines not yet valid are excited again (shaped by 1/|H| "
+                              "and their noise, more periods where needed) until every line is valid or the time "
+                              "budget is spent."));
+    m_adaptive->setObjectName("frfAdaptive");
+    form->addRow(QString(), m_adaptive);
+    m_budget = new QDoubleSpinBox(this);
+    m_budget->setObjectName("frfTimeBudget");
+    m_budget->setRange(0.5, 120.0);
+    m_budget->setDecimals(1);
+    m_budget->setValue(5.0);
+    m_budget->setSuffix(tr(" s"));
+    m_budgetLabel = new QLabel(tr("Motion time of all passes, at most:"), this);
+    form->addRow(m_budgetLabel, m_budget);
     lay->addLayout(form);
     m_validity = new QLabel(this);
     m_validity->setWordWrap(true);
@@ -342,6 +356,13 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
     connect(m_fmin, &QDoubleSpinBox::valueChanged, this, changed);
     connect(m_fmax, &QDoubleSpinBox::valueChanged, this, changed);
     connect(m_points, &QSpinBox::valueChanged, this, changed);
+    connect(m_adaptive, &QCheckBox::toggled, this, [this, changed] {
+        offerAdaptive();
+        changed();
+    });
+    connect(m_budget, &QDoubleSpinBox::valueChanged, this, changed);
+    connect(m_method, &QComboBox::currentIndexChanged, this, [this] { offerAdaptive(); });
+    offerAdaptive();
     connect(&m_safety, &FrfSafetyPage::driveInfoChanged, this, [this, changed] {
         offerMethods();
         if (wizard() && wizard()->currentPage() == this)
@@ -352,6 +373,26 @@ FrfConfigPage::FrfConfigPage(AppContext& ctx, const FrfSafetyPage& safety, QWidg
 device::FrfMethod FrfConfigPage::selectedMethod() const
 {
     return static_cast<device::FrfMethod>(m_method->currentData().toInt());
+}
+
+std::optional<double> FrfConfigPage::adaptiveBudgetS() const
+{
+    if (m_adaptive->isHidden() || !m_adaptive->isChecked() || selectedMethod() != device::FrfMethod::Multisine)
+        return std::nullopt;
+    return m_budget->value();
+}
+
+void FrfConfigPage::offerAdaptive()
+{
+    // The passes are shaped on the host from the drive's plan in % of rated torque (device::runAdaptiveFrf): not on
+    // a drive that measures in its output's own units (hal:, linuxcnc:).
+    if (!m_adaptive)
+        return; // offerMethods() in the constructor, before the box exists
+    const bool offered = selectedMethod() == device::FrfMethod::Multisine && !m_safety.driveInfo().peakInOutputUnits();
+    m_adaptive->setVisible(offered);
+    const bool budget = offered && m_adaptive->isChecked();
+    m_budget->setVisible(budget);
+    m_budgetLabel->setVisible(budget);
 }
 
 device::FrfQuantity FrfConfigPage::selectedQuantity() const
@@ -392,6 +433,7 @@ void FrfConfigPage::offerMethods()
         m_quantity->setCurrentIndex(i);
     m_quantity->setVisible(m_quantity->count() > 0);
     m_quantityLabel->setVisible(m_quantity->count() > 0);
+    offerAdaptive();
 }
 
 void FrfConfigPage::initializePage()
@@ -455,9 +497,24 @@ void FrfConfigPage::updateEstimate()
         }
         m_planOk = r.ok && r.plan.has_value();
         m_motionS = m_planOk ? r.plan->motionTimeS : kNaN;
-        m_estimate->setText(m_planOk ? tr("Estimated motion time: %1 s (settling included).").arg(m_motionS, 0, 'f', 1)
-                                     : tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>")
-                                           .arg(r.error.toHtmlEscaped()));
+        const auto budget = adaptiveBudgetS();
+        if (!m_planOk)
+            m_estimate->setText(tr("<span style='color:#b00000'>The drive would refuse this test: %1</span>")
+                                    .arg(r.error.toHtmlEscaped()));
+        else if (budget && m_motionS > *budget) {
+            // device::runAdaptiveFrf refuses a first pass longer than the budget.
+            m_planOk = false;
+            m_estimate->setText(tr("<span style='color:#b00000'>The first pass takes %1 s of motion, more than the "
+                                   "time budget of %2 s.</span>")
+                                    .arg(m_motionS, 0, 'f', 2)
+                                    .arg(*budget, 0, 'f', 1));
+        } else if (budget)
+            m_estimate->setText(tr("Estimated motion time of the first pass: %1 s (settling included); with the "
+                                   "passes after it at most %2 s.")
+                                    .arg(m_motionS, 0, 'f', 1)
+                                    .arg(*budget, 0, 'f', 1));
+        else
+            m_estimate->setText(tr("Estimated motion time: %1 s (settling included).").arg(m_motionS, 0, 'f', 1));
         emit completeChanged();
     });
 }
@@ -484,6 +541,11 @@ FrfResultPage::FrfResultPage(QWidget* parent) : QWizardPage(parent)
     m_summary->setObjectName("frfSummary");
     m_summary->setWordWrap(true);
     bl->addWidget(m_summary);
+    m_adaptiveText = new QLabel(bottom);
+    m_adaptiveText->setObjectName("frfAdaptiveSummary");
+    m_adaptiveText->setWordWrap(true);
+    m_adaptiveText->hide();
+    bl->addWidget(m_adaptiveText);
     m_table = new QTableWidget(bottom);
     m_table->setObjectName("resonanceTable");
     m_table->setColumnCount(4);
@@ -520,6 +582,12 @@ void FrfResultPage::setMeasurement(const dsp::FrequencyResponse& frf, device::Fr
     // The rate only draws the validity bands and the note under the plot: 0 (unknown) when unreadable.
     const auto fs = frf.metadata.number(model::meta::kFsHz);
     m_fsHz = fs ? *fs : 0.0;
+}
+
+void FrfResultPage::setAdaptiveSummary(const QString& text)
+{
+    m_adaptiveText->setText(text);
+    m_adaptiveText->setVisible(!text.isEmpty());
 }
 
 void FrfResultPage::initializePage()

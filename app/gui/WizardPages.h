@@ -100,6 +100,8 @@ public:
     void setRequestFactory(std::function<std::vector<device::TestRequest>()> factory);
     /// Why the factory yields no request (shown as the failure instead of "Nothing to run.").
     void setEmptyReason(std::function<QString()> reason) { m_emptyReason = std::move(reason); }
+    /// How a request is run (default: DriveController::runTest); e.g. the FRF wizard's adaptive multisine.
+    void setRunner(std::function<DriveRequest*(const device::TestRequest&)> runner) { m_runner = std::move(runner); }
 
     bool isRunning() const { return m_running; }
     bool succeeded() const { return m_succeeded; }
@@ -131,6 +133,7 @@ private:
     AppContext& m_ctx;
     std::function<std::vector<device::TestRequest>()> m_factory;
     std::function<QString()> m_emptyReason;
+    std::function<DriveRequest*(const device::TestRequest&)> m_runner;
     std::vector<device::TestRequest> m_requests;
     std::vector<DriveReply> m_replies;
     std::size_t m_index = 0;

@@ -106,6 +106,14 @@ const char* invalidReasonName(InvalidReason r)
     return "noise";
 }
 
+std::array<std::size_t, kInvalidReasonCount> invalidByReason(const AdaptiveFrfResult& result)
+{
+    std::array<std::size_t, kInvalidReasonCount> n{};
+    for (const auto& l : result.invalid)
+        ++n[static_cast<std::size_t>(l.reason)];
+    return n;
+}
+
 Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first, const AdaptiveFrfOptions& o,
                                          const RunOptions& runOptions)
 {
@@ -379,6 +387,16 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
             break;
         RunOptions ro = runOptions;
         ro.readTrace = true;
+        if (runOptions.progress) {
+            // One progress over every pass, as a share of the time budget: the motion of the passes before and
+            // this pass's share of its planned motion (never falling; 1 when the measurement ends).
+            const double before = out.motionTimeS, plannedS = planned->motionTimeS, budget = o.timeBudgetS;
+            const std::string what = "adaptive multisine, pass " + std::to_string(pass + 1);
+            ro.progress = [&runOptions, before, plannedS, budget, what](double f, const std::string& detail) {
+                runOptions.progress(std::clamp((before + f * plannedS) / budget, 0.0, 1.0),
+                                    detail.empty() ? what : what + ": " + detail);
+            };
+        }
         auto run = runTest(drive, request, ro);
         if (!run)
             return run.error();
@@ -541,14 +559,16 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
     md.set("adaptive_time_budget_s", o.timeBudgetS);
     md.set(model::meta::kMotionTimeS, out.motionTimeS);
     md.set("valid_lines", static_cast<double>(out.validLines));
-    std::size_t byReason[4] = {0, 0, 0, 0};
-    for (const auto& b : out.invalid)
-        ++byReason[static_cast<int>(b.reason)];
+    const auto byReason = invalidByReason(out);
     md.set("invalid_noise", static_cast<double>(byReason[0]));
     md.set("invalid_torque_limit", static_cast<double>(byReason[1]));
     md.set("invalid_voltage_limit", static_cast<double>(byReason[2]));
     md.set("invalid_nonlinear", static_cast<double>(byReason[3]));
     md.erase(model::meta::kNoiseInvalidLines);
+    if (runOptions.progress)
+        runOptions.progress(1.0, "adaptive multisine: " + std::to_string(out.passes.size()) + " passes, " +
+                                     std::to_string(out.validLines) + " of " + std::to_string(m.frf.size()) +
+                                     " lines valid");
     return out;
 }
 

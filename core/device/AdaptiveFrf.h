@@ -18,6 +18,8 @@
 #include "core/device/TestRunner.h"
 #include "core/model/Result.h"
 
+#include <array>
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <vector>
@@ -43,6 +45,7 @@ enum class InvalidReason {
     Nonlinear,    ///< the passes disagree beyond their noise
 };
 const char* invalidReasonName(InvalidReason r);
+inline constexpr std::size_t kInvalidReasonCount = 4;
 
 struct AdaptiveFrfPass {
     std::size_t lines = 0; ///< lines excited
@@ -74,6 +77,9 @@ struct AdaptiveFrfResult {
     double motionTimeS = 0.0; ///< all passes
     std::size_t validLines = 0;
 };
+
+/// How many lines are left invalid for each reason, indexed by InvalidReason.
+std::array<std::size_t, kInvalidReasonCount> invalidByReason(const AdaptiveFrfResult& result);
 
 /// Runs the adaptive measurement of `first` (TestType::Frf, FrfMethod::Multisine; its amplitude, bands and
 /// periods are the first pass). Errors: another method, a first pass longer than the budget, the drive's

@@ -16,10 +16,14 @@
 #include "core/dsp/InjectionHold.h"
 #include "core/sim/MachineDefinition.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/core/device/DriveTestUtil.h"
 #include "tests/core/sim/LiftedModel.h"
@@ -106,10 +110,28 @@ TEST(AdaptiveFrf, RealisticDdTableFindsTheModeWithinTheBudgetAndExplainsWhatIsLe
     auto drive = realisticDdTable();
     ASSERT_TRUE(drive);
     AdaptiveFrfOptions o; // 5 s of motion
-    auto res = runAdaptiveFrf(*drive, firstPass(), o);
+    std::vector<std::pair<double, std::string>> progress;
+    RunOptions ro;
+    ro.progress = [&progress](double f, const std::string& detail) { progress.emplace_back(f, detail); };
+    auto res = runAdaptiveFrf(*drive, firstPass(), o, ro);
     ASSERT_TRUE(res.ok()) << res.error().detail;
     const auto& f = res->measurement.frf;
     ASSERT_EQ(f.size(), 388u); // the first pass's lines: 20 Hz … 3.9 kHz every 10 Hz
+    // One progress over all passes (the GUI's bar): never falling, a share of the budget, 1 at the end; each pass
+    // named.
+    ASSERT_GE(progress.size(), 3u);
+    for (std::size_t i = 1; i < progress.size(); ++i)
+        ASSERT_GE(progress[i].first, progress[i - 1].first) << i << ": " << progress[i].second;
+    EXPECT_EQ(progress.back().first, 1.0);
+    EXPECT_NE(progress.back().second.find(std::to_string(res->validLines) + " of 388 lines valid"), std::string::npos)
+        << progress.back().second;
+    const auto lastPass = std::find_if(progress.rbegin() + 1, progress.rend(), [&](const auto& p) {
+        return p.second.rfind("adaptive multisine, pass " + std::to_string(res->passes.size()), 0) == 0;
+    });
+    ASSERT_NE(lastPass, progress.rend());
+    // The last pass's own end: the motion of all passes over the budget (the drive's motion and its plan agree
+    // within a current tick, 62.5 µs, per pass).
+    EXPECT_NEAR(lastPass->first, res->motionTimeS / o.timeBudgetS, 1e-3);
     const double fraction = static_cast<double>(validCount(f)) / static_cast<double>(f.size());
     std::cout << "adaptive: " << res->passes.size() << " passes, motion " << res->motionTimeS << " s, valid "
               << validCount(f) << " of " << f.size() << " (" << fraction * 100.0 << " %)\n";
