@@ -42,12 +42,15 @@ void Positions::returnToStart()
 
 Status Positions::moveTo(double x, double& motionS)
 {
+    // From the first move on the axis may be away from its start, also when this move is aborted or fails midway
+    // (the drive stops it where it stands): the return (or the reason's "not moved back") must not depend on the
+    // move having completed.
+    m_moved = true;
     auto r = device::moveAxisTo(m_drive, m_o.axis, x, {}, m_o.run);
     if (!r)
         return makeError(r.error().code,
                          (r.error().code == ErrorCode::Safety ? "drive fault while moving to " : "moving to ") +
                              num(x, 6) + ": " + r.error().detail);
-    m_moved = true;
     m_motion += r->motionTimeS;
     motionS += r->motionTimeS;
     if (m_motion > m_o.timeBudgetS)

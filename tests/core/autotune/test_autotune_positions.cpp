@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The tuner over the travel in process: the notch designs for a resonance that moves (AutoTunePositionsNotches.h)
-// against their stated formulas, and the refusal when no design reaches the required crossover at every position.
+// against their stated formulas, the refusal when no design reaches the required crossover at every position, and an
+// abort in the middle of the first move along the travel.
 #include "core/autotune/AutoTune.h"
 #include "core/autotune/AutoTunePositionsNotches.h"
 #include "core/device/DriveRegistry.h"
 
+#include <atomic>
 #include <cmath>
 #include <gtest/gtest.h>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "tests/core/device/DriveTestUtil.h"
 
 using namespace axistune;
 using autotune::detail::NotchDesign;
@@ -181,6 +185,61 @@ TEST(AutoTunePositions, NoNotchDesignReachingTheCrossoverEverywhereIsRefusedAndE
                 EXPECT_TRUE(dj.contains("result")) << dj.dump();
         }
     EXPECT_TRUE(seen);
+    const auto after = drive.readParameters("X", keys);
+    ASSERT_TRUE(after.ok());
+    EXPECT_EQ(*after, *before);
+}
+
+namespace {
+
+/// Sets the abort token as soon as the drive has started the first jog: the run's next poll stops the jog where the
+/// axis stands, in the middle of the first move along the travel.
+class AbortInTheFirstJog : public devtest::ForwardingDrive {
+public:
+    AbortInTheFirstJog(device::Drive& inner, std::atomic<bool>& abort) : ForwardingDrive(inner), m_abort(abort) {}
+    Status startTest(const device::TestRequest& r) override
+    {
+        auto st = m_inner.startTest(r);
+        if (st && r.is<device::JogTest>())
+            m_abort = true;
+        return st;
+    }
+
+private:
+    std::atomic<bool>& m_abort;
+};
+
+} // namespace
+
+TEST(AutoTunePositions, AnAbortDuringTheFirstMoveSaysTheAxisWasNotMovedBackAndRestoresEveryParameter)
+{
+    // The axis leaves its start with the first move; an Abort there stops it where it stands (Abort means stop, not a
+    // move back), and the reason must say so even though that move never completed (the GUI test's abort at 25 % of a
+    // three-position run found the reason silent when the abort fell into a move).
+    auto d = device::connect({"sim:long-axis", 1});
+    ASSERT_TRUE(d.ok()) << d.error().detail;
+    std::atomic<bool> abort{false};
+    AbortInTheFirstJog drive(**d, abort);
+    std::vector<std::string> keys;
+    auto metas = drive.parameterMetadata("X");
+    ASSERT_TRUE(metas.ok());
+    for (const auto& m : *metas)
+        keys.push_back(m.key);
+    const auto before = drive.readParameters("X", keys);
+    ASSERT_TRUE(before.ok());
+    autotune::Options o;
+    o.axis = "X";
+    o.positions = 3;
+    o.timeBudgetS = 90.0;
+    o.run.abort = &abort;
+    auto r = autotune::runAutoTune(drive, o);
+    ASSERT_TRUE(r.ok()) << r.error().detail;
+    ASSERT_TRUE(abort.load()); // a jog was started
+    EXPECT_EQ(r->outcome, autotune::Outcome::Refused);
+    EXPECT_EQ(r->reasonCode, ErrorCode::Aborted) << r->reason;
+    EXPECT_NE(r->reason.find("moving to "), std::string::npos) << r->reason;
+    EXPECT_NE(r->reason.find("not moved back"), std::string::npos) << r->reason;
+    EXPECT_TRUE(r->restored);
     const auto after = drive.readParameters("X", keys);
     ASSERT_TRUE(after.ok());
     EXPECT_EQ(*after, *before);
