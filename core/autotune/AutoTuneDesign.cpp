@@ -133,6 +133,7 @@ std::optional<AutoTuneResult> Sequence::velocityPi(double capHz)
     }
     m_fc = bestF;
     m_predicted = bestM;
+    m_predictedInMotion = bestSliding;
     tuning::VelocityLoopRequest req;
     req.method = tuning::VelocityLoopRequest::Method::Frf;
     req.measured = m_plant;

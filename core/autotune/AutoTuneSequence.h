@@ -103,6 +103,7 @@ private:
     std::vector<std::complex<double>> m_ph, m_phSlide; ///< the plant on them, as measured and in motion
     tuning::VelocityLoopDesign m_design;
     Margins m_predicted;
+    Margins m_predictedInMotion; ///< the same PI on the plant in motion (standstill damping removed)
     double m_fc = 0.0, m_kpPos = 0.0;
     std::optional<double> m_velocityBwHz; ///< −3 dB of the predicted closed velocity loop (nullopt: none in the band)
     double m_capHz = std::numeric_limits<double>::infinity();

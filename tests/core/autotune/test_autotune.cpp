@@ -158,6 +158,15 @@ TEST(AutoTune, ThePositionLoopIsNeverFasterThanTheVelocityLoopItCommands)
     // Re-measured: the position loop (K_p T_v/s closed) well inside the velocity loop's bandwidth.
     ASSERT_TRUE(r->final.has_value());
     EXPECT_LT(r->final->positionBandwidthHz, 0.6 * r->final->velocityBandwidthHz);
+    // The verify step states beside its standstill re-measurement the margins the design predicted in motion (docs/
+    // tuning.md "Why the re-measured margins can exceed the prediction"): those of the velocity-pi step, the style's.
+    const autotune::Step* verify = nullptr;
+    for (const auto& s : r->steps)
+        if (s.name == "verify")
+            verify = &s;
+    ASSERT_TRUE(verify);
+    EXPECT_EQ(verify->chosen.at("predicted_in_motion"), pi->chosen.at("predicted_in_motion"));
+    EXPECT_GE(verify->chosen.at("predicted_in_motion").at("phase_margin_deg").get<double>(), 50.0);
 }
 
 TEST(AutoTune, BadOptionsAreErrorsBeforeAnythingMoves)
