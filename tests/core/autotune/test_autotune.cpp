@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 #include <numbers>
 
+#include "tests/core/autotune/AllParameters.h"
+
 using namespace axistune;
 
 namespace {
@@ -22,17 +24,7 @@ std::unique_ptr<device::Drive> open(const std::string& uri)
     return d.ok() ? std::move(d).value() : nullptr;
 }
 
-model::ParameterValues allParameters(device::Drive& d, const std::string& axis)
-{
-    std::vector<std::string> keys;
-    auto metas = d.parameterMetadata(axis);
-    EXPECT_TRUE(metas.ok());
-    for (const auto& m : *metas)
-        keys.push_back(m.key);
-    auto v = d.readParameters(axis, keys);
-    EXPECT_TRUE(v.ok());
-    return v.ok() ? *v : model::ParameterValues{};
-}
+using autotunetest::allParameters;
 
 } // namespace
 

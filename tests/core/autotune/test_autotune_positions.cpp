@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "tests/core/autotune/AllParameters.h"
 #include "tests/core/device/DriveTestUtil.h"
 
 using namespace axistune;
@@ -155,13 +156,8 @@ TEST(AutoTunePositions, NoNotchDesignReachingTheCrossoverEverywhereIsRefusedAndE
     ASSERT_TRUE(d.ok()) << d.error().detail;
     auto& drive = **d;
     ASSERT_TRUE(drive.writeParameters("X", {{"velocity.period", 1e-3}}).ok());
-    std::vector<std::string> keys;
-    auto metas = drive.parameterMetadata("X");
-    ASSERT_TRUE(metas.ok());
-    for (const auto& m : *metas)
-        keys.push_back(m.key);
-    const auto before = drive.readParameters("X", keys);
-    ASSERT_TRUE(before.ok());
+    const auto before = autotunetest::allParameters(drive, "X");
+    ASSERT_FALSE(before.empty());
     autotune::Options o;
     o.axis = "X";
     o.positions = 3;
@@ -185,9 +181,7 @@ TEST(AutoTunePositions, NoNotchDesignReachingTheCrossoverEverywhereIsRefusedAndE
                 EXPECT_TRUE(dj.contains("result")) << dj.dump();
         }
     EXPECT_TRUE(seen);
-    const auto after = drive.readParameters("X", keys);
-    ASSERT_TRUE(after.ok());
-    EXPECT_EQ(*after, *before);
+    EXPECT_EQ(autotunetest::allParameters(drive, "X"), before);
 }
 
 namespace {
@@ -220,13 +214,8 @@ TEST(AutoTunePositions, AnAbortDuringTheFirstMoveSaysTheAxisWasNotMovedBackAndRe
     ASSERT_TRUE(d.ok()) << d.error().detail;
     std::atomic<bool> abort{false};
     AbortInTheFirstJog drive(**d, abort);
-    std::vector<std::string> keys;
-    auto metas = drive.parameterMetadata("X");
-    ASSERT_TRUE(metas.ok());
-    for (const auto& m : *metas)
-        keys.push_back(m.key);
-    const auto before = drive.readParameters("X", keys);
-    ASSERT_TRUE(before.ok());
+    const auto before = autotunetest::allParameters(drive, "X");
+    ASSERT_FALSE(before.empty());
     autotune::Options o;
     o.axis = "X";
     o.positions = 3;
@@ -240,7 +229,5 @@ TEST(AutoTunePositions, AnAbortDuringTheFirstMoveSaysTheAxisWasNotMovedBackAndRe
     EXPECT_NE(r->reason.find("moving to "), std::string::npos) << r->reason;
     EXPECT_NE(r->reason.find("not moved back"), std::string::npos) << r->reason;
     EXPECT_TRUE(r->restored);
-    const auto after = drive.readParameters("X", keys);
-    ASSERT_TRUE(after.ok());
-    EXPECT_EQ(*after, *before);
+    EXPECT_EQ(autotunetest::allParameters(drive, "X"), before);
 }
