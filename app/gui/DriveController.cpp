@@ -182,20 +182,17 @@ DriveReply DriveWorker::doTest(int id, const device::TestRequest& request, std::
             emit progress(id, f, qs(detail));
         }
     };
-    Result<device::TestRun> run = makeError(ErrorCode::Internal, "no test run");
-    if (adaptive) {
+    auto run = [&]() -> Result<device::TestRun> {
+        if (!adaptive)
+            return device::runTest(*m_drive, request, o);
         auto a = device::runAdaptiveFrf(*m_drive, request, *adaptive, o);
-        if (a) {
-            device::TestRun t;
-            t.frf = a->measurement;
-            run = std::move(t);
-            r.adaptive = std::make_shared<const device::AdaptiveFrfResult>(std::move(a).value());
-        } else {
-            run = a.error();
-        }
-    } else {
-        run = device::runTest(*m_drive, request, o);
-    }
+        if (!a)
+            return a.error();
+        r.adaptive = std::make_shared<const device::AdaptiveFrfResult>(std::move(a).value());
+        device::TestRun t;
+        t.frf = r.adaptive->measurement; // the combined measurement, as a plain FRF test's reply
+        return t;
+    }();
     if (!run) {
         if (cancel->load() && run.error().code == ErrorCode::Aborted) {
             r.code = ErrorCode::Aborted;
