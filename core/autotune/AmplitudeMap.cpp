@@ -166,8 +166,11 @@ Result<AmplitudeMap> measureAmplitudeMap(device::Drive& drive, const AmplitudeMa
         if (const auto* pk = md.find(model::meta::kPeakNm))
             if (auto x = pk->number())
                 ar.peakNm = *x;
-        const auto* cl = md.find(model::meta::kVoltageClampedSamples);
-        ar.voltageLimited = cl && cl->text() != "0";
+        // Samples at the voltage limit, a whole number; one that is not reads as limited (never a clean run by doubt).
+        if (md.contains(model::meta::kVoltageClampedSamples.name)) {
+            const auto clamped = md.integer(model::meta::kVoltageClampedSamples);
+            ar.voltageLimited = !clamped.ok() || *clamped > 0;
+        }
         map.motionTimeS += m.motionTimeS;
         if (a == 0)
             for (std::size_t k = 0; k < m.frf.size(); ++k) {
@@ -349,9 +352,7 @@ Result<BacklashEstimate> measureBacklash(device::Drive& drive, const std::string
         return r.error();
     if (!r->trace)
         return makeError(ErrorCode::Device, "the reversal gave no trace");
-    if (const auto* v = r->trace->metadata.find(model::meta::kMotionTimeS))
-        if (auto x = v->number())
-            motionS = *x;
+    motionS = device::motionTimeS(*r);
     return backlashFromReversal(*r->trace);
 }
 
@@ -392,10 +393,7 @@ Result<InUseMap> amplitudeMapInUse(device::Drive& drive, const AmplitudeMapOptio
         return makeError(ErrorCode::Device, "the move for the torque in use gave no torque_cmd_Nm trace");
     for (double x : tq->data)
         out.peakTorqueNm = std::max(out.peakTorqueNm, std::abs(x));
-    double moveS = plan ? plan->motionTimeS : 0.0;
-    if (const auto* v = r->trace->metadata.find(model::meta::kMotionTimeS))
-        if (auto x = v->number())
-            moveS = *x;
+    const double moveS = device::motionTimeS(*r, plan);
     out.useTorquePct = 100.0 * out.peakTorqueNm / ratedTorqueNm;
     AmplitudeMapOptions o = options;
     if (o.timeBudgetS > 0.0) {

@@ -5,7 +5,6 @@
 
 #include "core/autotune/AutoTuneSequence.h"
 #include "core/dsp/LoopAnalysis.h"
-#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 
@@ -99,14 +98,8 @@ Result<device::TestRun> Sequence::test(const device::TestRequest& r, const std::
             return makeError(ErrorCode::Safety, "drive fault during " + what + ": " + e.detail);
         return makeError(e.code, what + ": " + e.detail);
     }
-    double t = plan ? plan->motionTimeS : 0.0;
-    if (run->trace) {
-        if (const auto* v = run->trace->metadata.find(model::meta::kMotionTimeS))
-            if (auto x = v->number())
-                t = *x;
-    }
-    motionS = t;
-    m_motion += t;
+    motionS = device::motionTimeS(*run, plan);
+    m_motion += motionS;
     return run;
 }
 

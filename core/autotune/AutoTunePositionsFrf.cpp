@@ -3,7 +3,6 @@
 // every position, the point-to-point move at the last, the verification at every position.
 #include "core/autotune/AutoTunePositionsRun.h"
 #include "core/device/MoveTo.h"
-#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
 
@@ -99,13 +98,8 @@ Result<Step> Positions::move()
     auto run = device::runTest(m_drive, r, ro);
     if (!run)
         return makeError(run.error().code, "the point-to-point move: " + run.error().detail);
-    double t = plan ? plan->motionTimeS : 0.0;
-    if (run->trace)
-        if (const auto* v = run->trace->metadata.find(model::meta::kMotionTimeS))
-            if (auto x = v->number())
-                t = *x;
-    s.motionTimeS = t;
-    m_motion += t;
+    s.motionTimeS = device::motionTimeS(*run, plan);
+    m_motion += s.motionTimeS;
     if (!run->trace)
         return makeError(ErrorCode::Device, "the move gave no trace");
     const auto& c = *run->trace;

@@ -417,8 +417,11 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         rec.shaped = !rf.multisineShape.empty();
         rec.limitedBy = limitedBy;
         rec.voltagePredictedV = predictedV;
-        const auto* clamped = m.frf.metadata.find(model::meta::kVoltageClampedSamples);
-        rec.voltageReached = clamped != nullptr && clamped->text() != "0";
+        // Samples at the voltage limit, a whole number; one that is not reads as reached (never a clean pass by doubt).
+        if (m.frf.metadata.contains(model::meta::kVoltageClampedSamples.name)) {
+            const auto clamped = m.frf.metadata.integer(model::meta::kVoltageClampedSamples);
+            rec.voltageReached = !clamped.ok() || *clamped > 0;
+        }
         // The voltage per torque of the excited lines, from the trace (when it has the voltage).
         const auto* volt = run->trace ? run->trace->channel("voltage_V") : nullptr;
         const auto* inj = run->trace ? run->trace->channel("injection_Nm") : nullptr;

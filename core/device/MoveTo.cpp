@@ -2,7 +2,6 @@
 // Moving an axis to an absolute position (MoveTo.h).
 #include "core/device/MoveTo.h"
 
-#include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 
 #include <algorithm>
@@ -11,17 +10,6 @@
 namespace axistune::device {
 
 namespace {
-
-double machineTime(const TestRun& run, const Result<TestPlan>& plan)
-{
-    double t = plan ? plan->motionTimeS : 0.0;
-    if (run.trace) {
-        if (const auto* v = run.trace->metadata.find(model::meta::kMotionTimeS))
-            if (auto x = v->number())
-                t = *x;
-    }
-    return t;
-}
 
 const model::Channel* positionCommand(const model::Capture& c)
 {
@@ -74,7 +62,7 @@ Result<MoveToResult> findPosition(Drive& drive, const std::string& axis, const R
     auto h = runTest(drive, hold, withTrace);
     if (!h)
         return makeError(h.error().code, "finding the position of axis " + axis + ": " + h.error().detail);
-    r.motionTimeS = machineTime(*h, holdPlan);
+    r.motionTimeS = motionTimeS(*h, holdPlan);
     const model::Channel* pos = h->trace ? positionCommand(*h->trace) : nullptr;
     if (!pos)
         return makeError(ErrorCode::Device,
@@ -119,7 +107,7 @@ Result<MoveToResult> moveAxisTo(Drive& drive, const std::string& axis, double ta
     if (!j)
         return makeError(j.error().code,
                          "moving axis " + axis + " to " + model::formatNumber(target, 6) + ": " + j.error().detail);
-    r.motionTimeS += machineTime(*j, jogPlan);
+    r.motionTimeS += motionTimeS(*j, jogPlan);
     if (j->trace)
         if (const auto* p = positionCommand(*j->trace))
             r.to = p->data.back();

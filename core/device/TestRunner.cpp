@@ -145,4 +145,26 @@ Result<TestRun> runTest(Drive& drive, const TestRequest& request, const RunOptio
     return run;
 }
 
+namespace {
+
+std::optional<double> recordedMotionTimeS(const TestRun& run)
+{
+    if (run.trace)
+        if (const auto* v = run.trace->metadata.find(model::meta::kMotionTimeS))
+            return v->number();
+    return std::nullopt;
+}
+
+} // namespace
+
+double motionTimeS(const TestRun& run)
+{
+    return recordedMotionTimeS(run).value_or(0.0);
+}
+
+double motionTimeS(const TestRun& run, const Result<TestPlan>& plan)
+{
+    return recordedMotionTimeS(run).value_or(plan ? plan->motionTimeS : 0.0);
+}
+
 } // namespace axistune::device

@@ -49,4 +49,10 @@ struct TestRun {
 /// drive reports the test Faulted, Aborted when the drive aborted it on its own, each with the drive's detail.
 Result<TestRun> runTest(Drive& drive, const TestRequest& request, const RunOptions& options = {});
 
+/// The machine time a completed run took: the trace's motion_time_s where the drive recorded one, else the plan's
+/// (Drive::planTest), else 0.
+double motionTimeS(const TestRun& run, const Result<TestPlan>& plan);
+/// As above without a plan: 0 when the trace does not say.
+double motionTimeS(const TestRun& run);
+
 } // namespace axistune::device

@@ -90,6 +90,20 @@ model::ParameterValues readAllParameters(gui::AppContext& ctx)
 
 /// Presses Abort on a running run page: it ends within 1 s as Aborted, and every parameter of axis C reads as
 /// `before`.
+/// The part of a translated text before its first argument, as the running language (AXISTUNE_LANG) shows it: the
+/// checks of message texts hold in Japanese too.
+QString translatedHead(const char* context, const char* source)
+{
+    const QString t = QCoreApplication::translate(context, source);
+    return t.left(t.indexOf(QStringLiteral("%1"))).trimmed();
+}
+
+/// The wizard's refusal style (dark red), whatever the language.
+bool showsRefusal(const QLabel* label)
+{
+    return label->text().contains(QStringLiteral("color:#b00000"));
+}
+
 void abortAndCheckRestored(gui::AppContext& ctx, gui::TestRunPage* run, const model::ParameterValues& before)
 {
     QVERIFY(run->isRunning());
@@ -279,7 +293,7 @@ private slots:
         QCOMPARE(s->amplitude()->value(), maxPct + 1.0); // not clamped ...
         s->confirmation()->setChecked(true);
         QVERIFY(!w.button(QWizard::NextButton)->isEnabled());  // ... but refused
-        QVERIFY(s->findChild<QLabel*>("frfAmplitudeText")->text().contains("Refused"));
+        QVERIFY(showsRefusal(s->findChild<QLabel*>("frfAmplitudeText")));
     }
 
     void amplitudeLimitAndMotionTimeComeFromTheDrive()
@@ -364,7 +378,7 @@ private slots:
             cfg->method()->setCurrentIndex(cfg->method()->findData(int(device::FrfMethod::Prbs)));
             cfg->fmin()->setValue(100.0);
             cfg->fmax()->setValue(2500.0);
-            QVERIFY(waitUntil([&] { return cfg->findChild<QLabel*>("frfEstimate")->text().contains("refuse"); }, 20000));
+            QVERIFY(waitUntil([&] { return showsRefusal(cfg->findChild<QLabel*>("frfEstimate")); }, 20000));
             QVERIFY(!cfg->isComplete());
             QVERIFY(!w.button(QWizard::NextButton)->isEnabled());
             cfg->fmax()->setValue(1900.0);
@@ -467,7 +481,9 @@ private slots:
         QVERIFY(waitUntil([&] { return !run->isRunning(); }, 20000));
         timer.stop();
         QVERIFY(!run->succeeded());
-        QVERIFY2(run->failure().contains("Connection lost"), qPrintable(run->failure()));
+        const QString lost = translatedHead("axistune::gui::TestRunPage", "Connection lost: %1");
+        QVERIFY(!lost.isEmpty());
+        QVERIFY2(run->failure().startsWith(lost), qPrintable(run->failure()));
         QVERIFY(ticks > 10);
         QVERIFY2(worstGapMs < 500, qPrintable(QString::number(worstGapMs)));
         QVERIFY(!ctx.drive().isConnected());
@@ -476,7 +492,7 @@ private slots:
         QVERIFY(s.ok());
         QCOMPARE(s->info.status, store::SessionStatus::Aborted);
         QCOMPARE(s->info.kind, std::string("frf"));
-        QVERIFY(QString::fromStdString(s->info.note).contains("Connection lost"));
+        QVERIFY2(QString::fromStdString(s->info.note).contains(lost), s->info.note.c_str());
     }
 
     // The adaptive multisine (device::runAdaptiveFrf, docs/multisine.md "Adaptive measurement") from the wizard on

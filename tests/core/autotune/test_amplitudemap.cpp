@@ -13,8 +13,10 @@
 #include <complex>
 #include <gtest/gtest.h>
 #include <iostream>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "tests/core/device/DriveTestUtil.h"
 
 using namespace axistune;
 
@@ -147,6 +149,47 @@ TEST(AmplitudeMap, ThePresetsFrictionFlagsTheLowLinesAgainstTheLinearRun)
             closer += std::abs(m.lines[i].h[2] - lin.lines[i].h[2]) < std::abs(m.lines[i].h[0] - lin.lines[i].h[0]);
         }
     EXPECT_EQ(closer, n);
+}
+
+namespace {
+
+/// Hands out the inner drive's FRFs with voltage_clamped_samples replaced, one text per FRF in turn.
+class ClampedSamplesAs : public devtest::ForwardingDrive {
+public:
+    ClampedSamplesAs(device::Drive& inner, std::vector<std::string> texts)
+        : ForwardingDrive(inner), m_texts(std::move(texts))
+    {
+    }
+    Result<device::FrfMeasurement> readFrequencyResponse() override
+    {
+        auto m = m_inner.readFrequencyResponse();
+        if (!m || m_next >= m_texts.size())
+            return m;
+        device::FrfMeasurement out = *m;
+        out.frf.metadata.set("voltage_clamped_samples", model::MetadataValue(m_texts[m_next++]));
+        return out;
+    }
+
+private:
+    std::vector<std::string> m_texts;
+    std::size_t m_next = 0;
+};
+
+} // namespace
+
+TEST(AmplitudeMap, AVoltageLimitIsReadAsAWholeNumberAndOneNotANumberCountsAsReached)
+{
+    // voltage_clamped_samples is a count (docs/multisine.md "Validity flags"); "0" is a clean run, 12 samples at the
+    // limit are not, and a count that cannot be read ("many", as a foreign drive might write) is taken as reached: the
+    // run is left out of the comparison rather than trusted.
+    auto d = vmcX(0.0);
+    ASSERT_TRUE(d);
+    ClampedSamplesAs drive(*d, {"0", "12", "many"});
+    const auto m = map(drive);
+    ASSERT_EQ(m.runs.size(), 3u);
+    EXPECT_FALSE(m.runs[0].voltageLimited);
+    EXPECT_TRUE(m.runs[1].voltageLimited);
+    EXPECT_TRUE(m.runs[2].voltageLimited);
 }
 
 TEST(AmplitudeMap, BadAmplitudeListsAreRefused)

@@ -8,6 +8,7 @@
 #include "core/device/FrfRequestPlan.h"
 #include "core/device/SimulatedDrive.h"
 #include "core/device/TestRunner.h"
+#include "core/model/MetadataKeys.h"
 
 #include <atomic>
 #include <chrono>
@@ -276,4 +277,30 @@ TEST(TestRunner, RefusedRequestIsTheDrivesRefusal)
     auto run = runTest(*d, r);
     ASSERT_FALSE(run.ok());
     EXPECT_EQ(run.error().code, ErrorCode::NotFound);
+}
+
+// The machine time of a run (motionTimeS): the drive's own record in the trace's metadata wins over the plan; a
+// run without a trace, or whose record is not a number, takes the plan's; without a plan, 0.
+TEST(TestRunner, MotionTimeIsTheTracesRecordElseThePlans)
+{
+    TestPlan p;
+    p.motionTimeS = 2.0;
+    const Result<TestPlan> plan(p);
+    const Result<TestPlan> noPlan(makeError(ErrorCode::NotFound, "no plan (test)"));
+    TestRun bare;
+    EXPECT_EQ(motionTimeS(bare, plan), 2.0);
+    EXPECT_EQ(motionTimeS(bare, noPlan), 0.0);
+    EXPECT_EQ(motionTimeS(bare), 0.0);
+    TestRun recorded;
+    recorded.trace.emplace();
+    EXPECT_EQ(motionTimeS(recorded, plan), 2.0); // a trace that records no motion time
+    recorded.trace->metadata.set(model::meta::kMotionTimeS, 1.25);
+    EXPECT_EQ(motionTimeS(recorded, plan), 1.25);
+    EXPECT_EQ(motionTimeS(recorded, noPlan), 1.25);
+    EXPECT_EQ(motionTimeS(recorded), 1.25);
+    TestRun garbled;
+    garbled.trace.emplace();
+    garbled.trace->metadata.set("motion_time_s", model::MetadataValue("soon"));
+    EXPECT_EQ(motionTimeS(garbled, plan), 2.0);
+    EXPECT_EQ(motionTimeS(garbled), 0.0);
 }
