@@ -231,13 +231,17 @@ protected:
                     if (second == m_axis)
                         continue;
                     r.circle().secondAxis = second;
-                    if (m_drive->planTest(r))
+                    if (auto p = m_drive->planTest(r))
                         return r;
+                    else
+                        m_lastPlanError = errorText(p.error());
                 }
                 return std::nullopt;
             }
-            if (m_drive->planTest(r))
+            if (auto p = m_drive->planTest(r))
                 return r;
+            else
+                m_lastPlanError = errorText(p.error());
             if (auto* s = std::get_if<StepTest>(&r.test)) {
                 s->velocityRadS *= 0.5;
                 s->position *= 0.5;
@@ -253,6 +257,7 @@ protected:
         return GetParam() == "hal" || GetParam() == "linuxcnc";
     }
 
+    std::string m_lastPlanError; ///< requestFor: why the drive refused the last request it planned
     std::string m_uri;
     std::string m_halScript; ///< hal: the test machine's script, stopped after the rule
     std::unique_ptr<axistune::testing::HalMachineLock>
@@ -451,7 +456,8 @@ TEST_P(DriveConformance, EveryAdvertisedTestRunsToCompletionAsPlanned)
             std::string(testTypeName(t)) + (t == TestType::Frf ? std::string(" ") + frfMethodName(method) : "");
         SCOPED_TRACE(what);
         auto r = requestFor(t, method);
-        ASSERT_TRUE(r.has_value()) << "no request within the drive's limits for " << what;
+        ASSERT_TRUE(r.has_value()) << "no request within the drive's limits for " << what
+                                   << "; the drive's last refusal: " << m_lastPlanError;
         auto plan = m_drive->planTest(*r);
         ASSERT_TRUE(plan.ok()) << errorText(plan.error());
         EXPECT_GT(plan->motionTimeS, 0.0);
