@@ -2,6 +2,7 @@
 // Amplitude dependence map and reversal backlash (AmplitudeMap.h; docs/tuning.md "Amplitude map and backlash").
 #include "core/autotune/AmplitudeMap.h"
 
+#include "core/device/MultisineTest.h"
 #include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
 #include "core/model/ResultJson.h"
@@ -166,11 +167,7 @@ Result<AmplitudeMap> measureAmplitudeMap(device::Drive& drive, const AmplitudeMa
         if (const auto* pk = md.find(model::meta::kPeakNm))
             if (auto x = pk->number())
                 ar.peakNm = *x;
-        // Samples at the voltage limit, a whole number; one that is not reads as limited (never a clean run by doubt).
-        if (md.contains(model::meta::kVoltageClampedSamples.name)) {
-            const auto clamped = md.integer(model::meta::kVoltageClampedSamples);
-            ar.voltageLimited = !clamped.ok() || *clamped > 0;
-        }
+        ar.voltageLimited = device::voltageLimitReached(md);
         map.motionTimeS += m.motionTimeS;
         if (a == 0)
             for (std::size_t k = 0; k < m.frf.size(); ++k) {

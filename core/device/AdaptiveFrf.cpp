@@ -3,6 +3,7 @@
 #include "core/device/AdaptiveFrf.h"
 
 #include "core/device/FrfRequestPlan.h"
+#include "core/device/MultisineTest.h"
 #include "core/dsp/Multisine.h"
 #include "core/model/MetadataKeys.h"
 #include "core/model/Number.h"
@@ -417,11 +418,7 @@ Result<AdaptiveFrfResult> runAdaptiveFrf(Drive& drive, const TestRequest& first,
         rec.shaped = !rf.multisineShape.empty();
         rec.limitedBy = limitedBy;
         rec.voltagePredictedV = predictedV;
-        // Samples at the voltage limit, a whole number; one that is not reads as reached (never a clean pass by doubt).
-        if (m.frf.metadata.contains(model::meta::kVoltageClampedSamples.name)) {
-            const auto clamped = m.frf.metadata.integer(model::meta::kVoltageClampedSamples);
-            rec.voltageReached = !clamped.ok() || *clamped > 0;
-        }
+        rec.voltageReached = voltageLimitReached(m.frf.metadata);
         // The voltage per torque of the excited lines, from the trace (when it has the voltage).
         const auto* volt = run->trace ? run->trace->channel("voltage_V") : nullptr;
         const auto* inj = run->trace ? run->trace->channel("injection_Nm") : nullptr;

@@ -121,4 +121,12 @@ Result<FrfMeasurement> evaluateMultisineTrace(const MultisinePlan& plan, const m
     return out;
 }
 
+bool voltageLimitReached(const model::Metadata& frfMetadata)
+{
+    if (!frfMetadata.contains(model::meta::kVoltageClampedSamples.name))
+        return false;
+    const auto clamped = frfMetadata.integer(model::meta::kVoltageClampedSamples);
+    return !clamped.ok() || *clamped > 0;
+}
+
 } // namespace axistune::device

@@ -68,4 +68,9 @@ double multisineExcitation(const MultisinePlan& plan, std::int64_t tick);
 /// traced voltage reached the limit during the record.
 Result<FrfMeasurement> evaluateMultisineTrace(const MultisinePlan& plan, const model::Capture& trace);
 
+/// Whether a multisine FRF's metadata say the current loop reached its voltage limit (voltage_clamped_samples > 0, as
+/// evaluateMultisineTrace writes it). A count that is not a whole number (a foreign drive's text) counts as reached:
+/// such a run is left out, never trusted. No count at all: false.
+bool voltageLimitReached(const model::Metadata& frfMetadata);
+
 } // namespace axistune::device

@@ -11,6 +11,7 @@
 #include "core/dsp/FrequencyResponse.h"
 #include "core/dsp/InjectionHold.h"
 #include "core/model/Constants.h"
+#include "core/model/MetadataKeys.h"
 
 #include <chrono>
 #include <cmath>
@@ -247,4 +248,20 @@ TEST(ModbusMultisine, FrfOverModbusIsTheEmbeddedFrf)
     EXPECT_NE(refused.error().detail.find("cannot be sent over Modbus"), std::string::npos);
     (*server)->requestStop();
     serving.join();
+}
+
+// voltageLimitReached: the count evaluateMultisineTrace writes (voltage_clamped_samples); none is not reached, 0 is
+// not, any positive count is, and a count that is not a whole number is taken as reached (never trusted).
+TEST(MultisineTest, VoltageLimitReachedReadsTheClampedSamplesAsAWholeNumber)
+{
+    model::Metadata md;
+    EXPECT_FALSE(device::voltageLimitReached(md));
+    md.set(model::meta::kVoltageClampedSamples, 0);
+    EXPECT_FALSE(device::voltageLimitReached(md));
+    md.set(model::meta::kVoltageClampedSamples, 3);
+    EXPECT_TRUE(device::voltageLimitReached(md));
+    md.set("voltage_clamped_samples", model::MetadataValue("0.0"));
+    EXPECT_TRUE(device::voltageLimitReached(md));
+    md.set("voltage_clamped_samples", model::MetadataValue("many"));
+    EXPECT_TRUE(device::voltageLimitReached(md));
 }
